@@ -1,0 +1,139 @@
+/* hfx.h: the hfx runtime. Load Direct3D 9 effects (.fx or .hfxo) and drive OpenGL with them,
+ * the way XNA's Effect drives Direct3D. Every handle is opaque; every call that can fail
+ * returns HFX_OK (0) or an error code, and hfx_device_last_error() says why. No global state:
+ * everything hangs off an hfx_device, one per GL context. */
+#ifndef HFX_HFX_H
+#define HFX_HFX_H
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct hfx_device hfx_device;
+typedef struct hfx_effect hfx_effect;
+typedef struct hfx_param hfx_param;
+typedef struct hfx_technique hfx_technique;
+typedef struct hfx_pass hfx_pass;
+typedef struct hfx_annotation hfx_annotation;
+
+/* Return codes. */
+enum {
+    HFX_OK = 0,
+    HFX_ERR_NULL = -1,      /* a NULL handle or pointer */
+    HFX_ERR_TYPE = -2,      /* wrong type for this parameter */
+    HFX_ERR_COUNT = -3,     /* wrong number of values */
+    HFX_ERR_NOT_FOUND = -4, /* unknown name or index */
+    HFX_ERR_GL = -5,        /* OpenGL refused (compile, link, missing entry point) */
+    HFX_ERR_LOAD = -6,      /* the effect did not compile or the file is not valid */
+    HFX_ERR_MEMORY = -7
+};
+
+/* Parameter classes and types: XNA's EffectParameterClass / EffectParameterType (D3DX's). */
+typedef enum {
+    HFX_CLASS_SCALAR, HFX_CLASS_VECTOR, HFX_CLASS_MATRIX, HFX_CLASS_OBJECT, HFX_CLASS_STRUCT
+} hfx_param_class;
+
+typedef enum {
+    HFX_TYPE_VOID, HFX_TYPE_BOOL, HFX_TYPE_INT, HFX_TYPE_FLOAT, HFX_TYPE_STRING,
+    HFX_TYPE_TEXTURE, HFX_TYPE_TEXTURE1D, HFX_TYPE_TEXTURE2D, HFX_TYPE_TEXTURE3D, HFX_TYPE_TEXTURECUBE,
+    HFX_TYPE_SAMPLER, HFX_TYPE_SAMPLER1D, HFX_TYPE_SAMPLER2D, HFX_TYPE_SAMPLER3D, HFX_TYPE_SAMPLERCUBE,
+    HFX_TYPE_PIXELSHADER, HFX_TYPE_VERTEXSHADER
+} hfx_param_type;
+
+/* Shader languages a compiled effect may carry. */
+typedef enum {
+    HFX_TARGET_GLSL330, HFX_TARGET_GLSLES300, HFX_TARGET_GLSL110, HFX_TARGET_SPIRV, HFX_TARGET_COUNT
+} hfx_target;
+
+typedef void *(*hfx_gl_loader)(const char *name); /* glfwGetProcAddress, OSMesaGetProcAddress... */
+
+typedef struct hfx_load_options {
+    const char *const *defines;      /* "NAME" or "NAME=VALUE", like fxc /D */
+    size_t define_count;
+    const char *const *include_dirs; /* searched after the including file's folder and the root's */
+    size_t include_dir_count;
+    hfx_target target;               /* GLSL flavour to use; 0 = GLSL 330 */
+} hfx_load_options;
+
+/* Device: one per GL context, which must be current on every call. */
+hfx_device *hfx_device_create_gl(hfx_gl_loader load);            /* loads its own GL function table */
+void hfx_device_destroy(hfx_device *dev);                        /* effects must be destroyed first */
+const char *hfx_device_last_error(const hfx_device *dev);        /* message of the last failed call */
+void hfx_free(void *p);                                          /* frees strings hfx hands out */
+
+/* Effects. */
+hfx_effect *hfx_effect_load(hfx_device *dev, const char *path, const hfx_load_options *opt, char **errors);
+hfx_effect *hfx_effect_load_memory(hfx_device *dev, const void *data, size_t size, const char *name,
+                                   const hfx_load_options *opt, char **errors);
+hfx_effect *hfx_effect_clone(const hfx_effect *fx);              /* same code, independent values */
+void hfx_effect_destroy(hfx_effect *fx);
+const char *hfx_effect_warnings(const hfx_effect *fx);           /* load-time notes (unsupported states) or "" */
+int hfx_effect_begin(hfx_effect *fx);                            /* save the GL state the effect touches */
+int hfx_effect_end(hfx_effect *fx);                              /* restore what begin saved */
+
+/* Parameters: Parameters["name"], Elements[i], StructureMembers["name"]. */
+hfx_param *hfx_effect_param(hfx_effect *fx, const char *name);
+hfx_param *hfx_effect_param_by_semantic(hfx_effect *fx, const char *semantic); /* case-insensitive */
+size_t hfx_effect_param_count(const hfx_effect *fx);
+hfx_param *hfx_effect_param_at(hfx_effect *fx, size_t i);
+hfx_param *hfx_param_member(hfx_param *p, const char *name);
+hfx_param *hfx_param_member_at(hfx_param *p, size_t i);
+hfx_param *hfx_param_element(hfx_param *p, size_t i);
+const char *hfx_param_name(const hfx_param *p);
+const char *hfx_param_semantic(const hfx_param *p);            /* "" when none */
+hfx_param_class hfx_param_get_class(const hfx_param *p);
+hfx_param_type hfx_param_get_type(const hfx_param *p);
+size_t hfx_param_rows(const hfx_param *p);
+size_t hfx_param_columns(const hfx_param *p);
+size_t hfx_param_elements(const hfx_param *p);                 /* array length; 0 when not an array */
+size_t hfx_param_member_count(const hfx_param *p);
+
+int hfx_param_set_bool(hfx_param *p, int v);
+int hfx_param_set_int(hfx_param *p, int v);
+int hfx_param_set_float(hfx_param *p, float v);
+int hfx_param_set_floats(hfx_param *p, const float *v, size_t count); /* vectors, arrays, matrices as stored */
+int hfx_param_set_ints(hfx_param *p, const int *v, size_t count);
+int hfx_param_set_matrix(hfx_param *p, const float m[16]);           /* XNA order: row-major, translation in m[12..14] */
+int hfx_param_set_matrix_transpose(hfx_param *p, const float m[16]);
+int hfx_param_set_texture(hfx_param *p, unsigned int gl_texture);    /* target from the parameter's type */
+int hfx_param_get_bool(const hfx_param *p, int *out);
+int hfx_param_get_int(const hfx_param *p, int *out);
+int hfx_param_get_float(const hfx_param *p, float *out);
+int hfx_param_get_floats(const hfx_param *p, float *out, size_t count);
+int hfx_param_get_ints(const hfx_param *p, int *out, size_t count);
+int hfx_param_get_matrix(const hfx_param *p, float out[16]);
+int hfx_param_get_texture(const hfx_param *p, unsigned int *out);
+
+/* Techniques and passes. */
+hfx_technique *hfx_effect_technique(hfx_effect *fx, const char *name);
+hfx_technique *hfx_effect_technique_at(hfx_effect *fx, size_t i);
+size_t hfx_effect_technique_count(const hfx_effect *fx);
+void hfx_effect_set_current_technique(hfx_effect *fx, hfx_technique *t);
+hfx_technique *hfx_effect_current_technique(hfx_effect *fx);
+const char *hfx_technique_name(const hfx_technique *t);
+size_t hfx_technique_pass_count(const hfx_technique *t);
+hfx_pass *hfx_technique_pass(hfx_technique *t, size_t i);
+hfx_pass *hfx_technique_pass_by_name(hfx_technique *t, const char *name);
+const char *hfx_pass_name(const hfx_pass *p);
+int hfx_pass_apply(hfx_pass *p);                                       /* Passes[i].Apply() */
+int hfx_pass_attribute_location(const hfx_pass *p, const char *semantic); /* "POSITION0" -> 0; -1 if unused */
+
+/* Annotations on parameters, techniques and passes. */
+hfx_annotation *hfx_param_annotation(hfx_param *p, const char *name);
+hfx_annotation *hfx_technique_annotation(hfx_technique *t, const char *name);
+hfx_annotation *hfx_pass_annotation(hfx_pass *p, const char *name);
+size_t hfx_param_annotation_count(const hfx_param *p);
+hfx_annotation *hfx_param_annotation_at(hfx_param *p, size_t i);
+const char *hfx_annotation_name(const hfx_annotation *a);
+hfx_param_type hfx_annotation_type(const hfx_annotation *a);
+const char *hfx_annotation_string(const hfx_annotation *a);            /* NULL unless a string */
+int hfx_annotation_float(const hfx_annotation *a, float *out);         /* first component, converted */
+int hfx_annotation_floats(const hfx_annotation *a, float *out, size_t count);
+int hfx_annotation_int(const hfx_annotation *a, int *out);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

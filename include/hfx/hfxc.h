@@ -1,0 +1,59 @@
+/* hfxc.h: the hfx compiler library. Compiles Direct3D 9 effect files (.fx, fx_2_0) to GLSL
+ * (and SPIR-V) plus everything the runtime needs. It never prints and never exits: every
+ * message comes back in the result, as `file(line,col): error X####: message`. */
+#ifndef HFX_HFXC_H
+#define HFX_HFXC_H
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct hfxc_result hfxc_result;
+struct hfx_fx_effect; /* common/effect.h: the compiled effect as plain data */
+
+typedef enum { HFXC_ERROR, HFXC_WARNING, HFXC_NOTE } hfxc_severity;
+
+typedef struct hfxc_diag {
+    hfxc_severity severity;
+    const char *file;      /* as the user named it */
+    unsigned line, col;    /* 1-based; col counts bytes of the line */
+    unsigned code;         /* fxc's number: 3000 for X3000 */
+    const char *message;
+} hfxc_diag;
+
+enum { /* hfxc_options.flags */
+    HFXC_WERROR = 1u << 0,      /* warnings are errors */
+    HFXC_NO_WARNINGS = 1u << 1, /* drop warnings */
+    HFXC_CARET = 1u << 2,       /* formatted text adds the source line and a caret */
+    HFXC_PARSE_ONLY = 1u << 3   /* stop after the AST */
+};
+
+typedef struct hfxc_options {
+    const char *const *defines;      /* "NAME" or "NAME=VALUE" */
+    size_t define_count;
+    const char *const *include_dirs;
+    size_t include_dir_count;
+    unsigned targets;                /* bit (1 << hfx_target); 0 = GLSL 330 and GLSL ES 300 */
+    unsigned flags;
+    const char *entry;               /* with a shader profile: compile one entry point, like fxc /E */
+    const char *profile;             /* "fx_2_0" (default), or "vs_3_0", "ps_2_0"... for /T */
+} hfxc_options;
+
+hfxc_result *hfxc_compile_file(const char *path, const hfxc_options *opt);      /* opt may be NULL */
+hfxc_result *hfxc_compile_memory(const char *src, size_t size, const char *name, const hfxc_options *opt);
+void hfxc_result_free(hfxc_result *r);
+int hfxc_result_ok(const hfxc_result *r);                        /* 1 when there is no error */
+size_t hfxc_diag_count(const hfxc_result *r);
+const hfxc_diag *hfxc_diag_at(const hfxc_result *r, size_t i);
+char *hfxc_diagnostics_text(const hfxc_result *r);               /* all messages, one a line; free() it */
+const struct hfx_fx_effect *hfxc_result_effect(const hfxc_result *r); /* NULL when compilation failed */
+struct hfx_fx_effect *hfxc_result_take_effect(hfxc_result *r);   /* caller owns it now */
+char *hfxc_result_ast_dump(const hfxc_result *r);                /* readable AST; free() it */
+const char *hfxc_version(void);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

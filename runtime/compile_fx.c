@@ -1,0 +1,27 @@
+#include <stdlib.h>
+#include <string.h>
+
+#include "compile.h"
+#include "hfx/hfxc.h"
+
+hfx_fx_effect *hfx_rt_compile_fx(const char *path, const void *data, size_t size, const char *name,
+                                 const hfx_load_options *opt, char **errors) {
+    hfxc_options co;
+    memset(&co, 0, sizeof co);
+    if (opt) {
+        co.defines = opt->defines;
+        co.define_count = opt->define_count;
+        co.include_dirs = opt->include_dirs;
+        co.include_dir_count = opt->include_dir_count;
+        co.targets = 1u << opt->target;
+    }
+    hfxc_result *r = data ? hfxc_compile_memory(data, size, name, &co) : hfxc_compile_file(path, &co);
+    if (!r) {
+        if (errors) *errors = NULL;
+        return NULL;
+    }
+    hfx_fx_effect *fx = hfxc_result_ok(r) ? hfxc_result_take_effect(r) : NULL;
+    if (errors) *errors = hfxc_diagnostics_text(r);
+    hfxc_result_free(r);
+    return fx;
+}

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Installs the Debian packages hfx builds and tests with (as root, or through sudo).
+# Quiet when everything is already there.
+set -euo pipefail
+pkgs=(build-essential cmake pkg-config re2c bison glslang-dev glslang-tools libosmesa6-dev
+      libgl-dev libegl-dev libpng-dev libcjson-dev libstb-dev libglfw3-dev xvfb xauth valgrind)
+missing=()
+for p in "${pkgs[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "hfx: installing ${missing[*]}"
+  SUDO=""
+  [ "$(id -u)" -eq 0 ] || SUDO=sudo
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi

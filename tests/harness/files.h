@@ -1,0 +1,13 @@
+/* files.h: reading test inputs. */
+#ifndef HFX_TEST_FILES_H
+#define HFX_TEST_FILES_H
+
+#include <stddef.h>
+
+char *test_read_file(const char *path, size_t *size);   /* malloc'ed, NUL-terminated; NULL if absent */
+const char *test_seed_dir(void);                        /* ../shared/seed-fx, or NULL when absent */
+char *test_seed_path(const char *file);                 /* malloc'ed; NULL when the corpus is absent */
+void test_require_seeds(void);                          /* skips the test (exit 77) when absent */
+char *test_temp_dir(void);                              /* a fresh folder under /tmp; malloc'ed */
+
+#endif
