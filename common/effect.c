@@ -1,19 +1,36 @@
+/* effect.c: owning and querying the compiled effect (effect.h). */
 #include "effect.h"
 
 #include <stdlib.h>
 #include <string.h>
 
+void hfx_fx_program_clear(hfx_fx_program *p) {
+    if (!p) return;
+    for (int s = 0; s < HFX_STAGE_COUNT; s++)
+        for (int t = 0; t < HFX_TARGET_COUNT; t++) free(p->code[s][t].data);
+    for (uint32_t a = 0; a < p->attribute_count; a++) {
+        free(p->attributes[a].semantic);
+        free(p->attributes[a].glsl_name);
+    }
+    free(p->attributes);
+    for (uint32_t a = 0; a < p->sampler_count; a++) free(p->samplers[a].glsl_name);
+    free(p->samplers);
+    free(p->uniforms);
+    memset(p, 0, sizeof *p);
+}
+
 void hfx_fx_effect_free(hfx_fx_effect *fx) {
     if (!fx) return;
     free(fx->source_name);
-    for (uint32_t i = 0; i < fx->param_count; i++) {
+    for (uint32_t i = 0; fx->params && i < fx->param_count; i++) {
         free(fx->params[i].name);
         free(fx->params[i].semantic);
         free(fx->params[i].glsl_name);
+        free(fx->params[i].string);
     }
     free(fx->params);
     free(fx->values);
-    for (uint32_t i = 0; i < fx->annotation_count; i++) {
+    for (uint32_t i = 0; fx->annotations && i < fx->annotation_count; i++) {
         free(fx->annotations[i].name);
         free(fx->annotations[i].data);
         free(fx->annotations[i].string);
@@ -21,23 +38,11 @@ void hfx_fx_effect_free(hfx_fx_effect *fx) {
     free(fx->annotations);
     free(fx->states);
     free(fx->samplers);
-    for (uint32_t i = 0; i < fx->program_count; i++) {
-        hfx_fx_program *p = &fx->programs[i];
-        for (int s = 0; s < HFX_STAGE_COUNT; s++)
-            for (int t = 0; t < HFX_TARGET_COUNT; t++) free(p->code[s][t].data);
-        for (uint32_t a = 0; a < p->attribute_count; a++) {
-            free(p->attributes[a].semantic);
-            free(p->attributes[a].glsl_name);
-        }
-        free(p->attributes);
-        for (uint32_t a = 0; a < p->sampler_count; a++) free(p->samplers[a].glsl_name);
-        free(p->samplers);
-        free(p->uniforms);
-    }
+    for (uint32_t i = 0; fx->programs && i < fx->program_count; i++) hfx_fx_program_clear(&fx->programs[i]);
     free(fx->programs);
-    for (uint32_t i = 0; i < fx->pass_count; i++) free(fx->passes[i].name);
+    for (uint32_t i = 0; fx->passes && i < fx->pass_count; i++) free(fx->passes[i].name);
     free(fx->passes);
-    for (uint32_t i = 0; i < fx->technique_count; i++) free(fx->techniques[i].name);
+    for (uint32_t i = 0; fx->techniques && i < fx->technique_count; i++) free(fx->techniques[i].name);
     free(fx->techniques);
     free(fx);
 }
@@ -47,4 +52,14 @@ uint32_t hfx_fx_param_find(const hfx_fx_effect *fx, const char *name) {
     for (uint32_t i = 0; i < fx->top_param_count; i++)
         if (fx->params[i].name && strcmp(fx->params[i].name, name) == 0) return i;
     return HFX_NONE;
+}
+
+/* A deep copy is a round trip through the .hfxo form: one code path to trust, not two. */
+hfx_fx_effect *hfx_fx_effect_copy(const hfx_fx_effect *fx) {
+    void *data = NULL;
+    size_t size = 0;
+    if (!fx || hfx_fx_write_hfxo(fx, &data, &size) != 0) return NULL;
+    hfx_fx_effect *copy = hfx_fx_read_hfxo(data, size, NULL, 0);
+    free(data);
+    return copy;
 }

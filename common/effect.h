@@ -11,7 +11,8 @@
  *   vectors N, matrices rows*cols in row-major order (XNA's order; translation of a 4x4 at
  *   12..14), arrays element after element, structs member after member; no padding.
  *   bool and int are int32 (bool 0/1), float is IEEE float. Objects own no words.
- * - annotations, states: contiguous ranges [first, first + count). */
+ * - annotations, states: contiguous ranges [first, first + count). An empty range has
+ *   first <= the array's length (the builder writes 0), so first + count never overflows. */
 #ifndef HFX_COMMON_EFFECT_H
 #define HFX_COMMON_EFFECT_H
 
@@ -52,6 +53,7 @@ typedef struct hfx_fx_param {
     uint32_t first_annotation, annotation_count;
     uint32_t sampler;      /* index into samplers for a sampler parameter, else HFX_NONE */
     uint32_t flags;
+    char *string;          /* a string parameter's initial value (`string s = "..."`); NULL otherwise */
 } hfx_fx_param;
 
 /* How a state's value is given. */
@@ -146,6 +148,8 @@ typedef struct hfx_fx_effect {
 } hfx_fx_effect;
 
 void hfx_fx_effect_free(hfx_fx_effect *fx);                 /* frees fx and everything it owns */
+void hfx_fx_program_clear(hfx_fx_program *p);               /* frees what p owns, zeroes it */
+hfx_fx_effect *hfx_fx_effect_copy(const hfx_fx_effect *fx); /* deep copy; NULL when out of memory */
 uint32_t hfx_fx_param_find(const hfx_fx_effect *fx, const char *name); /* top-level by name, or HFX_NONE */
 
 /* .hfxo: see docs/hfxo-format.md. */

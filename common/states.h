@@ -8,6 +8,17 @@
 
 #include <stdint.h>
 
+#include "state_list.h"
+
+/* hfx_state_info.id: HFX_ST_ZENABLE... from state_list.h; 0 is no state. Stored in .hfxo. */
+typedef enum {
+    HFX_ST_NONE_ = 0,
+#define HFX_STATE_ENUM_(id, name, scope, kind, values, max) HFX_ST_##id,
+    HFX_STATE_LIST(HFX_STATE_ENUM_)
+#undef HFX_STATE_ENUM_
+    HFX_ST_COUNT_
+} hfx_state_id;
+
 typedef enum {
     HFX_SV_BOOL,     /* TRUE / FALSE / 0 / 1 */
     HFX_SV_INT,      /* a DWORD */
@@ -50,5 +61,6 @@ const hfx_state_info *hfx_state_by_id(uint32_t id);                /* NULL if un
 /* Value of a named constant for this state (also TRUE/FALSE for BOOL); 0 on success. */
 int hfx_state_value_lookup(const hfx_state_info *st, const char *name, int32_t *out);
 const char *hfx_state_value_name(const hfx_state_info *st, int32_t value); /* NULL if none */
+uint32_t hfx_state_count(void);                                    /* ids run 1 .. count */
 
 #endif

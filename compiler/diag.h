@@ -44,6 +44,8 @@ enum {
     X_PP_ERROR = 1000,        /* preprocessor errors: X1xxx */
     X_PP_INCLUDE = 1507,      /* failed to open source file */
     X_PP_ERROR_DIRECTIVE = 1003,
+    X_PP_UNTERMINATED_COMMENT = 1001, /* a comment continues past the end of file */
+    X_PP_STRING_EOL = 1005,   /* a string continues past the end of line */
     X_UNSUPPORTED = 3094      /* unsupported construct (asm blocks...) */
 };
 

@@ -43,7 +43,11 @@ static hfxc_result *compile(const char *name, const char *text, size_t size, con
     if (opt && (opt->flags & HFXC_PARSE_ONLY)) return r;
     if (r->diags.errors) return r;
     if (!hfx_check(&r->arena, &r->diags, types, r->ast) || r->diags.errors) return r;
-    r->effect = hfx_build_effect(&r->arena, &r->diags, types, r->ast, name, default_targets(opt));
+    if (opt && opt->entry)  /* fxc /E: one entry point, one profile */
+        r->effect = hfx_build_entry_effect(&r->arena, &r->diags, types, r->ast, name, default_targets(opt),
+                                           opt->entry, opt->profile);
+    else
+        r->effect = hfx_build_effect(&r->arena, &r->diags, types, r->ast, name, default_targets(opt));
     if (r->diags.errors && r->effect) {
         hfx_fx_effect_free(r->effect);
         r->effect = NULL;

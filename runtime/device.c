@@ -1,8 +1,270 @@
-/* device.c: stub until the runtime lands. */
+/* device.c: the device (one per GL context): its GL table, its error message, and the shadow
+ * of the GL state it sets, written through functions that skip calls GL would not notice. */
+#include <stdarg.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
-#include "hfx/hfx.h"
+#include "internal.h"
 
-hfx_device *hfx_device_create_gl(hfx_gl_loader load) { (void)load; return NULL; }
-void hfx_device_destroy(hfx_device *dev) { (void)dev; }
+const char *hfx_gl_load(hfx_gl *gl, hfx_gl_loader load) {
+#define HFX_GL_V_(name, params, args) \
+    if (!(*(void **)&gl->name = load("gl" #name))) return "gl" #name;
+#define HFX_GL_R_(ret, name, params, args) HFX_GL_V_(name, params, args)
+    HFX_GL_FUNCS(HFX_GL_V_, HFX_GL_R_)
+#undef HFX_GL_V_
+#undef HFX_GL_R_
+    return NULL;
+}
+
+int hfx_rt_fail(hfx_device *dev, int code, const char *fmt, ...) {
+    if (!dev) return code;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(dev->error, sizeof dev->error, fmt, ap);
+    va_end(ap);
+    return code;
+}
+
+static int has_extension(hfx_device *dev, const char *name) {
+    GLint n = 0;
+    dev->gl.GetIntegerv(GL_NUM_EXTENSIONS, &n);
+    for (GLint i = 0; i < n; i++) {
+        const char *e = (const char *)dev->gl.GetStringi(GL_EXTENSIONS, (GLuint)i);
+        if (e && strcmp(e, name) == 0) return 1;
+    }
+    return 0;
+}
+
+/* D3D's DepthBias is in depth-buffer units of 0..1; glPolygonOffset's units are the smallest
+ * resolvable difference, 1 / (2^24 - 1) for the 24-bit depth buffers hfx targets (GL core has
+ * no query for the default framebuffer's depth size that every driver answers). */
+static float depth_bias_scale(void) { return 16777215.0f; }
+
+static void read_caps(hfx_device *dev) {
+    GLint major = 0, minor = 0;
+    dev->gl.GetIntegerv(GL_MAJOR_VERSION, &major);
+    dev->gl.GetIntegerv(GL_MINOR_VERSION, &minor);
+    if (major * 10 + minor >= 46 || has_extension(dev, "GL_EXT_texture_filter_anisotropic") ||
+        has_extension(dev, "GL_ARB_texture_filter_anisotropic"))
+        dev->gl.GetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &dev->max_anisotropy);
+    dev->srgb_decode = has_extension(dev, "GL_EXT_texture_sRGB_decode");
+    dev->depth_bias_scale = depth_bias_scale();
+}
+
+/* Reads the bindings the device shadows, so the shadow starts true. */
+static void read_bindings(hfx_device *dev) {
+    GLint v = 0;
+    dev->gl.GetIntegerv(GL_CURRENT_PROGRAM, &v);
+    dev->program = (GLuint)v;
+    dev->gl.GetIntegerv(GL_ACTIVE_TEXTURE, &v);
+    dev->active_unit = (GLenum)v;
+    for (int u = 0; u < HFX_MAX_UNITS; u++) {
+        dev->units[u].texture = 0;
+        dev->units[u].target = 0; /* unknown: the first bind on a unit always happens */
+        dev->units[u].sampler = (GLuint)-1;
+    }
+}
+
+hfx_device *hfx_device_create_gl(hfx_gl_loader load) {
+    if (!load) return NULL;
+    hfx_device *dev = calloc(1, sizeof *dev);
+    if (!dev) return NULL;
+    if (hfx_gl_load(&dev->gl, load) != NULL) {
+        free(dev);
+        return NULL;
+    }
+    while (dev->gl.GetError() != GL_NO_ERROR) {}
+    read_caps(dev);
+    read_bindings(dev);
+    hfx_rt_read_state(dev, &dev->state);
+    hfx_rs_defaults(dev->rs);
+    while (dev->gl.GetError() != GL_NO_ERROR) {}
+    return dev;
+}
+
+void hfx_device_destroy(hfx_device *dev) {
+    if (!dev) return;
+    free(dev->scratch);
+    free(dev);
+}
+
+const char *hfx_device_last_error(const hfx_device *dev) { return dev ? dev->error : "no device"; }
+
 void hfx_free(void *p) { free(p); }
+
+void hfx_rt_use_program(hfx_device *dev, GLuint program) {
+    if (dev->program == program) return;
+    dev->gl.UseProgram(program);
+    dev->program = program;
+}
+
+void hfx_rt_bind_unit(hfx_device *dev, int unit, GLenum target, GLuint texture, GLuint sampler) {
+    hfx_unit_state *u = &dev->units[unit];
+    if (u->texture != texture || u->target != target) {
+        /* Not shadowed: applications switch units for their own uploads all the time. */
+        dev->gl.ActiveTexture(GL_TEXTURE0 + (GLenum)unit);
+        dev->active_unit = GL_TEXTURE0 + (GLenum)unit;
+        /* Unbinding the previous target keeps one texture per unit, as D3D has. */
+        if (u->target && u->target != target && u->texture) dev->gl.BindTexture(u->target, 0);
+        dev->gl.BindTexture(target, texture);
+        u->texture = texture;
+        u->target = target;
+    }
+    if (u->sampler != sampler) {
+        dev->gl.BindSampler((GLuint)unit, sampler);
+        u->sampler = sampler;
+    }
+}
+
+static GLboolean enabled(hfx_device *dev, GLenum cap) { return dev->gl.IsEnabled(cap) ? GL_TRUE : GL_FALSE; }
+
+static GLenum get_enum(hfx_device *dev, GLenum pname) {
+    GLint v[4] = {0};
+    dev->gl.GetIntegerv(pname, v);
+    return (GLenum)v[0];
+}
+
+void hfx_rt_read_state(hfx_device *dev, hfx_glstate *s) {
+    hfx_gl *gl = &dev->gl;
+    memset(s, 0, sizeof *s);
+    s->cull = enabled(dev, GL_CULL_FACE);
+    s->cull_face = get_enum(dev, GL_CULL_FACE_MODE);
+    s->front_face = get_enum(dev, GL_FRONT_FACE);
+    s->polygon_mode = get_enum(dev, GL_POLYGON_MODE);
+    s->depth_test = enabled(dev, GL_DEPTH_TEST);
+    GLboolean b[4] = {0};
+    GLint v = 0;
+    gl->GetIntegerv(GL_DEPTH_WRITEMASK, &v);
+    s->depth_mask = v ? GL_TRUE : GL_FALSE;
+    s->depth_func = get_enum(dev, GL_DEPTH_FUNC);
+    s->blend = enabled(dev, GL_BLEND);
+    s->src_rgb = get_enum(dev, GL_BLEND_SRC_RGB);
+    s->dst_rgb = get_enum(dev, GL_BLEND_DST_RGB);
+    s->src_a = get_enum(dev, GL_BLEND_SRC_ALPHA);
+    s->dst_a = get_enum(dev, GL_BLEND_DST_ALPHA);
+    s->eq_rgb = get_enum(dev, GL_BLEND_EQUATION_RGB);
+    s->eq_a = get_enum(dev, GL_BLEND_EQUATION_ALPHA);
+    gl->GetFloatv(GL_BLEND_COLOR, s->blend_color);
+    for (GLuint i = 0; i < 4; i++) {
+        memset(b, 0, sizeof b);
+        gl->GetBooleani_v(GL_COLOR_WRITEMASK, i, b);
+        s->color_mask[i] = (uint8_t)((b[0] ? 1 : 0) | (b[1] ? 2 : 0) | (b[2] ? 4 : 0) | (b[3] ? 8 : 0));
+    }
+    s->stencil = enabled(dev, GL_STENCIL_TEST);
+    static const GLenum q[2][7] = {
+        {GL_STENCIL_FUNC, GL_STENCIL_REF, GL_STENCIL_VALUE_MASK, GL_STENCIL_WRITEMASK, GL_STENCIL_FAIL,
+         GL_STENCIL_PASS_DEPTH_FAIL, GL_STENCIL_PASS_DEPTH_PASS},
+        {GL_STENCIL_BACK_FUNC, GL_STENCIL_BACK_REF, GL_STENCIL_BACK_VALUE_MASK, GL_STENCIL_BACK_WRITEMASK,
+         GL_STENCIL_BACK_FAIL, GL_STENCIL_BACK_PASS_DEPTH_FAIL, GL_STENCIL_BACK_PASS_DEPTH_PASS}};
+    for (int f = 0; f < 2; f++) {
+        s->face[f].func = get_enum(dev, q[f][0]);
+        gl->GetIntegerv(q[f][1], &v);
+        s->face[f].ref = v;
+        s->face[f].mask = get_enum(dev, q[f][2]);
+        s->face[f].write = get_enum(dev, q[f][3]);
+        s->face[f].fail = get_enum(dev, q[f][4]);
+        s->face[f].zfail = get_enum(dev, q[f][5]);
+        s->face[f].pass = get_enum(dev, q[f][6]);
+    }
+    s->scissor = enabled(dev, GL_SCISSOR_TEST);
+    s->offset_fill = enabled(dev, GL_POLYGON_OFFSET_FILL);
+    s->offset_line = enabled(dev, GL_POLYGON_OFFSET_LINE);
+    s->offset_point = enabled(dev, GL_POLYGON_OFFSET_POINT);
+    gl->GetFloatv(GL_POLYGON_OFFSET_FACTOR, &s->offset_factor);
+    gl->GetFloatv(GL_POLYGON_OFFSET_UNITS, &s->offset_units);
+    s->multisample = enabled(dev, GL_MULTISAMPLE);
+    s->srgb = enabled(dev, GL_FRAMEBUFFER_SRGB);
+    s->dither = enabled(dev, GL_DITHER);
+    s->line_smooth = enabled(dev, GL_LINE_SMOOTH);
+    s->sample_mask = enabled(dev, GL_SAMPLE_MASK);
+    GLint mask = 0;
+    gl->GetIntegeri_v(GL_SAMPLE_MASK_VALUE, 0, &mask);
+    s->sample_mask_value = (GLuint)mask;
+    for (int i = 0; i < 6; i++)
+        if (enabled(dev, GL_CLIP_DISTANCE0 + (GLenum)i)) s->clip_planes |= (uint8_t)(1u << i);
+}
+
+static void set_cap(hfx_device *dev, GLenum cap, GLboolean *have, GLboolean want) {
+    if (*have == want) return;
+    if (want) dev->gl.Enable(cap);
+    else dev->gl.Disable(cap);
+    *have = want;
+}
+
+static void write_blend(hfx_device *dev, hfx_glstate *s, const hfx_glstate *w) {
+    set_cap(dev, GL_BLEND, &s->blend, w->blend);
+    if (s->src_rgb != w->src_rgb || s->dst_rgb != w->dst_rgb || s->src_a != w->src_a || s->dst_a != w->dst_a) {
+        dev->gl.BlendFuncSeparate(w->src_rgb, w->dst_rgb, w->src_a, w->dst_a);
+        s->src_rgb = w->src_rgb, s->dst_rgb = w->dst_rgb, s->src_a = w->src_a, s->dst_a = w->dst_a;
+    }
+    if (s->eq_rgb != w->eq_rgb || s->eq_a != w->eq_a) {
+        dev->gl.BlendEquationSeparate(w->eq_rgb, w->eq_a);
+        s->eq_rgb = w->eq_rgb, s->eq_a = w->eq_a;
+    }
+    if (memcmp(s->blend_color, w->blend_color, sizeof s->blend_color) != 0) {
+        dev->gl.BlendColor(w->blend_color[0], w->blend_color[1], w->blend_color[2], w->blend_color[3]);
+        memcpy(s->blend_color, w->blend_color, sizeof s->blend_color);
+    }
+    for (GLuint i = 0; i < 4; i++)
+        if (s->color_mask[i] != w->color_mask[i]) {
+            uint8_t m = w->color_mask[i];
+            dev->gl.ColorMaski(i, (m & 1) != 0, (m & 2) != 0, (m & 4) != 0, (m & 8) != 0);
+            s->color_mask[i] = m;
+        }
+}
+
+static void write_stencil(hfx_device *dev, hfx_glstate *s, const hfx_glstate *w) {
+    static const GLenum faces[2] = {GL_FRONT, GL_BACK};
+    set_cap(dev, GL_STENCIL_TEST, &s->stencil, w->stencil);
+    for (int f = 0; f < 2; f++) {
+        if (s->face[f].func != w->face[f].func || s->face[f].ref != w->face[f].ref ||
+            s->face[f].mask != w->face[f].mask) {
+            dev->gl.StencilFuncSeparate(faces[f], w->face[f].func, w->face[f].ref, w->face[f].mask);
+            s->face[f].func = w->face[f].func, s->face[f].ref = w->face[f].ref, s->face[f].mask = w->face[f].mask;
+        }
+        if (s->face[f].fail != w->face[f].fail || s->face[f].zfail != w->face[f].zfail ||
+            s->face[f].pass != w->face[f].pass) {
+            dev->gl.StencilOpSeparate(faces[f], w->face[f].fail, w->face[f].zfail, w->face[f].pass);
+            s->face[f].fail = w->face[f].fail, s->face[f].zfail = w->face[f].zfail, s->face[f].pass = w->face[f].pass;
+        }
+        if (s->face[f].write != w->face[f].write) {
+            dev->gl.StencilMaskSeparate(faces[f], w->face[f].write);
+            s->face[f].write = w->face[f].write;
+        }
+    }
+}
+
+void hfx_rt_write_state(hfx_device *dev, const hfx_glstate *w) {
+    hfx_glstate *s = &dev->state;
+    set_cap(dev, GL_CULL_FACE, &s->cull, w->cull);
+    if (s->cull_face != w->cull_face) dev->gl.CullFace(s->cull_face = w->cull_face);
+    if (s->front_face != w->front_face) dev->gl.FrontFace(s->front_face = w->front_face);
+    if (s->polygon_mode != w->polygon_mode) dev->gl.PolygonMode(GL_FRONT_AND_BACK, s->polygon_mode = w->polygon_mode);
+    set_cap(dev, GL_DEPTH_TEST, &s->depth_test, w->depth_test);
+    if (s->depth_mask != w->depth_mask) dev->gl.DepthMask(s->depth_mask = w->depth_mask);
+    if (s->depth_func != w->depth_func) dev->gl.DepthFunc(s->depth_func = w->depth_func);
+    write_blend(dev, s, w);
+    write_stencil(dev, s, w);
+    set_cap(dev, GL_SCISSOR_TEST, &s->scissor, w->scissor);
+    set_cap(dev, GL_POLYGON_OFFSET_FILL, &s->offset_fill, w->offset_fill);
+    set_cap(dev, GL_POLYGON_OFFSET_LINE, &s->offset_line, w->offset_line);
+    set_cap(dev, GL_POLYGON_OFFSET_POINT, &s->offset_point, w->offset_point);
+    if (s->offset_factor != w->offset_factor || s->offset_units != w->offset_units) {
+        dev->gl.PolygonOffset(w->offset_factor, w->offset_units);
+        s->offset_factor = w->offset_factor, s->offset_units = w->offset_units;
+    }
+    set_cap(dev, GL_MULTISAMPLE, &s->multisample, w->multisample);
+    set_cap(dev, GL_FRAMEBUFFER_SRGB, &s->srgb, w->srgb);
+    set_cap(dev, GL_DITHER, &s->dither, w->dither);
+    set_cap(dev, GL_LINE_SMOOTH, &s->line_smooth, w->line_smooth);
+    set_cap(dev, GL_SAMPLE_MASK, &s->sample_mask, w->sample_mask);
+    if (s->sample_mask_value != w->sample_mask_value) dev->gl.SampleMaski(0, s->sample_mask_value = w->sample_mask_value);
+    for (int i = 0; i < 6; i++) {
+        GLboolean have = (s->clip_planes >> i) & 1, want = (w->clip_planes >> i) & 1;
+        if (have == want) continue;
+        if (want) dev->gl.Enable(GL_CLIP_DISTANCE0 + (GLenum)i);
+        else dev->gl.Disable(GL_CLIP_DISTANCE0 + (GLenum)i);
+    }
+    s->clip_planes = w->clip_planes;
+}

@@ -1,0 +1,154 @@
+/* bench_apply.c: CPU cost of setting N parameters and applying the pass, against a raw GL
+ * loop making the same glUniform4fv calls, in the same run on the same OSMesa context.
+ * Prints the ratio per N (goal: within 1.1x). Run by hand: ./bench_apply [iterations]
+ * On a loaded machine time is noisy; `./bench_apply ITER hfx N` or `raw N` runs one loop
+ * alone, for `perf stat -e instructions:u` to compare instruction counts instead. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "gl_context.h"
+#include "internal.h"
+
+#define PARAMS 100
+
+static char *dup(const char *s) {
+    char *d = malloc(strlen(s) + 1);
+    strcpy(d, s);
+    return d;
+}
+
+/* One program reading PARAMS float4 uniforms p0..p99. */
+static hfx_fx_effect *build(void) {
+    hfx_fx_effect *fx = calloc(1, sizeof *fx);
+    fx->source_name = dup("bench.fx");
+    fx->targets = 1u << HFX_TARGET_GLSL330;
+    fx->params = calloc(PARAMS, sizeof *fx->params);
+    fx->param_count = fx->top_param_count = PARAMS;
+    fx->values = calloc(PARAMS * 4, sizeof *fx->values);
+    fx->value_words = PARAMS * 4;
+    size_t cap = 64 * PARAMS + 512;
+    char *fs = malloc(cap), name[16];
+    strcpy(fs, "#version 330\nout vec4 o;\n");
+    for (int i = 0; i < PARAMS; i++) {
+        snprintf(name, sizeof name, "p%d", i);
+        hfx_fx_param *p = &fx->params[i];
+        p->name = dup(name);
+        p->glsl_name = dup(name);
+        p->klass = HFX_CLASS_VECTOR;
+        p->type = HFX_TYPE_FLOAT;
+        p->rows = 1, p->cols = 4;
+        p->parent = HFX_NONE;
+        p->offset = (uint32_t)i * 4, p->words = 4;
+        p->sampler = HFX_NONE;
+        snprintf(fs + strlen(fs), cap - strlen(fs), "uniform vec4 p%d;\n", i);
+    }
+    strcat(fs, "void main() { vec4 s = vec4(0.0);\n");
+    for (int i = 0; i < PARAMS; i++) snprintf(fs + strlen(fs), cap - strlen(fs), "s += p%d;\n", i);
+    strcat(fs, "o = s; }\n");
+    fx->programs = calloc(1, sizeof *fx->programs);
+    fx->program_count = 1;
+    hfx_fx_program *prog = &fx->programs[0];
+    const char *vs = "#version 330\nlayout(location = 0) in vec2 P;\nvoid main() { gl_Position = vec4(P, 0.0, 1.0); }\n";
+    prog->code[HFX_STAGE_VERTEX][HFX_TARGET_GLSL330] = (hfx_fx_code){dup(vs), strlen(vs)};
+    prog->code[HFX_STAGE_FRAGMENT][HFX_TARGET_GLSL330] = (hfx_fx_code){fs, strlen(fs)};
+    prog->uniforms = calloc(PARAMS, sizeof *prog->uniforms);
+    prog->uniform_count = PARAMS;
+    for (int i = 0; i < PARAMS; i++) prog->uniforms[i].param = (uint32_t)i;
+    fx->passes = calloc(1, sizeof *fx->passes);
+    fx->pass_count = 1;
+    fx->passes[0].name = dup("P");
+    fx->passes[0].program = 0;
+    fx->techniques = calloc(1, sizeof *fx->techniques);
+    fx->technique_count = 1;
+    fx->techniques[0].name = dup("T");
+    fx->techniques[0].pass_count = 1;
+    return fx;
+}
+
+static double now(void) {
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+int main(int argc, char **argv) {
+    long iters = argc > 1 ? atol(argv[1]) : 20000;
+    test_gl *gl = test_gl_create(16, 16);
+    if (!gl) {
+        fprintf(stderr, "no OSMesa context\n");
+        return 1;
+    }
+    hfx_device *dev = hfx_device_create_gl(test_gl_loader);
+    hfx_effect *fx = hfx_rt_effect_from_fx(dev, build(), NULL, NULL);
+    if (!fx) {
+        fprintf(stderr, "load failed: %s\n", hfx_device_last_error(dev));
+        return 1;
+    }
+    hfx_pass *pass = hfx_technique_pass(hfx_effect_current_technique(fx), 0);
+    hfx_param *params[PARAMS];
+    char name[16];
+    for (int i = 0; i < PARAMS; i++) {
+        snprintf(name, sizeof name, "p%d", i);
+        params[i] = hfx_effect_param(fx, name);
+    }
+    hfx_pass_apply(pass);
+    /* the raw loop: the same program, locations looked up once, the same calls */
+    GLuint prog = dev->program;
+    void(APIENTRYP uniform4fv)(GLint, GLsizei, const GLfloat *) = (void(APIENTRYP)(GLint, GLsizei, const GLfloat *))test_gl_proc("glUniform4fv");
+    GLint(APIENTRYP location)(GLuint, const GLchar *) = (GLint(APIENTRYP)(GLuint, const GLchar *))test_gl_proc("glGetUniformLocation");
+    GLint loc[PARAMS];
+    for (int i = 0; i < PARAMS; i++) {
+        snprintf(name, sizeof name, "p%d", i);
+        loc[i] = location(prog, name);
+    }
+    static float values[PARAMS][4];
+    if (argc > 3) { /* one loop alone */
+        int n = atoi(argv[3]), hfx = strcmp(argv[2], "hfx") == 0;
+        for (long k = 0; k < iters; k++) {
+            for (int i = 0; i < n; i++) {
+                values[i][0] = (float)k;
+                if (hfx) hfx_param_set_floats(params[i], values[i], 4);
+                else uniform4fv(loc[i], 1, values[i]);
+            }
+            if (hfx) hfx_pass_apply(pass);
+        }
+        hfx_effect_destroy(fx);
+        hfx_device_destroy(dev);
+        test_gl_destroy(gl);
+        return 0;
+    }
+    const int counts[3] = {1, 10, 100};
+    printf("%-10s %14s %14s %8s\n", "changed", "hfx ns/iter", "raw ns/iter", "ratio");
+    for (int c = 0; c < 3; c++) {
+        int n = counts[c];
+        double best_hfx = 1e30, best_raw = 1e30;
+        for (int round = 0; round < 5; round++) { /* best of five: noise only ever adds time */
+            double t0 = now();
+            for (long k = 0; k < iters; k++) {
+                for (int i = 0; i < n; i++) {
+                    values[i][0] = (float)k;
+                    hfx_param_set_floats(params[i], values[i], 4);
+                }
+                hfx_pass_apply(pass);
+            }
+            double t1 = now();
+            for (long k = 0; k < iters; k++) {
+                for (int i = 0; i < n; i++) {
+                    values[i][0] = (float)k + 0.5f;
+                    uniform4fv(loc[i], 1, values[i]);
+                }
+            }
+            double t2 = now();
+            if (t1 - t0 < best_hfx) best_hfx = t1 - t0;
+            if (t2 - t1 < best_raw) best_raw = t2 - t1;
+        }
+        printf("%-10d %14.1f %14.1f %8.3f\n", n, best_hfx / (double)iters * 1e9, best_raw / (double)iters * 1e9,
+               best_hfx / best_raw);
+    }
+    hfx_effect_destroy(fx);
+    hfx_device_destroy(dev);
+    test_gl_destroy(gl);
+    return 0;
+}

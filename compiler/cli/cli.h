@@ -1,0 +1,46 @@
+/* cli.h: the parts of the hfxc program (main.c reads the command line, jobs.c compiles the
+ * inputs on a pool of threads and writes what they produce, json.c describes effects). */
+#ifndef HFX_CLI_H
+#define HFX_CLI_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "effect.h"
+#include "hfx/hfxc.h"
+
+enum { EXIT_OK = 0, EXIT_COMPILE = 1, EXIT_USAGE = 2 };
+
+typedef struct cli_options {
+    const char **inputs; size_t input_count;
+    const char **defines; size_t define_count;
+    const char **include_dirs; size_t include_dir_count;
+    const char *output;      /* -o / /Fo: a file for one input, a folder (ending in / or existing) for many */
+    const char *emit_glsl;   /* --emit-glsl DIR */
+    const char *entry;       /* /E */
+    const char *profile;     /* /T */
+    unsigned targets;        /* bits (1 << hfx_target); 0 = the library's default */
+    bool reflect, annotations, ast, werror, quiet, no_warnings;
+    int jobs;                /* 0 = one per core */
+} cli_options;
+
+/* What compiling one input left behind, for main to print in input order. */
+typedef struct cli_job {
+    const char *input;
+    char *diagnostics;       /* fxc-style lines, malloc'ed */
+    char *ast;               /* --ast dump, malloc'ed */
+    char *error;             /* an output that could not be written, malloc'ed */
+    hfx_fx_effect *effect;   /* kept for --reflect / --annotations */
+    bool ok;
+} cli_job;
+
+/* Compiles every input on `jobs` threads (progress on stderr when it is a terminal). */
+void cli_run_jobs(const cli_options *o, cli_job *jobs, size_t count, bool progress);
+/* The JSON document --annotations (reflect = false) or --reflect prints; malloc'ed. */
+char *cli_json(const cli_job *jobs, size_t count, bool reflect);
+/* Where the .hfxo of `input` goes, or NULL when none is asked for; malloc'ed. */
+char *cli_output_path(const cli_options *o, const char *input);
+const char *cli_target_name(int target);
+int cli_target_from_name(const char *name); /* -1 when unknown */
+
+#endif

@@ -1,0 +1,225 @@
+/* jobs.c: compiling the inputs on a pool of threads. The compiler library keeps no global
+ * state, so each thread compiles its own files; the only shared thing is the next-file counter
+ * (and the progress line), under one mutex. Outputs: the .hfxo and --emit-glsl files. */
+#include <errno.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "cli.h"
+
+static const char *const target_names[HFX_TARGET_COUNT] = {"glsl330", "glsles300", "glsl110", "spirv"};
+
+const char *cli_target_name(int target) {
+    return target >= 0 && target < HFX_TARGET_COUNT ? target_names[target] : "?";
+}
+
+int cli_target_from_name(const char *name) {
+    for (int i = 0; i < HFX_TARGET_COUNT; i++)
+        if (strcmp(name, target_names[i]) == 0) return i;
+    return -1;
+}
+
+static char *fmt(const char *f, const char *a, const char *b) {
+    size_t n = strlen(f) + strlen(a) + strlen(b) + 1;
+    char *s = malloc(n);
+    if (s) snprintf(s, n, f, a, b);
+    return s;
+}
+
+/* "dir/name.fx" -> "name" */
+static char *stem(const char *path) {
+    const char *base = strrchr(path, '/');
+    base = base ? base + 1 : path;
+    char *s = strdup(base);
+    char *dot = s ? strrchr(s, '.') : NULL;
+    if (dot && dot != s) *dot = 0;
+    return s;
+}
+
+static bool is_dir(const char *path) {
+    struct stat st;
+    return stat(path, &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+char *cli_output_path(const cli_options *o, const char *input) {
+    if (!o->output) return NULL;
+    size_t n = strlen(o->output);
+    bool folder = o->input_count > 1 || (n && o->output[n - 1] == '/') || is_dir(o->output);
+    if (!folder) return strdup(o->output);
+    char *s = stem(input);
+    char *path = s ? fmt(o->output[n - 1] == '/' ? "%s%s.hfxo" : "%s/%s.hfxo", o->output, s) : NULL;
+    free(s);
+    return path;
+}
+
+/* strerror is not promised to be thread-safe; the workers use this. */
+static const char *error_text(int err, char *buf, size_t size) {
+    if (strerror_r(err, buf, size) != 0) snprintf(buf, size, "error %d", err);
+    return buf;
+}
+
+static bool write_file(const char *path, const void *data, size_t size, char **error) {
+    FILE *f = fopen(path, "wb");
+    bool ok = f && fwrite(data, 1, size, f) == size;
+    if (f && fclose(f) != 0) ok = false;
+    char why[128];
+    if (!ok && !*error) *error = fmt("cannot write '%s': %s", path, error_text(errno, why, sizeof why));
+    return ok;
+}
+
+static void write_hfxo(const cli_options *o, cli_job *job, const hfx_fx_effect *fx) {
+    char *path = cli_output_path(o, job->input);
+    if (!path) return;
+    void *data = NULL;
+    size_t size = 0;
+    if (hfx_fx_write_hfxo(fx, &data, &size) != 0) job->error = fmt("cannot encode '%s'%s", path, "");
+    else if (!write_file(path, data, size, &job->error)) job->ok = false;
+    if (job->error) job->ok = false;
+    free(data);
+    free(path);
+}
+
+/* The first target the effect carries code for, in the user's order of preference. */
+static int emit_target(const cli_options *o, const hfx_fx_effect *fx) {
+    unsigned want = o->targets ? o->targets : fx->targets;
+    for (int t = 0; t < HFX_TARGET_COUNT; t++)
+        if ((want & fx->targets) & (1u << t)) return t;
+    return HFX_TARGET_GLSL330;
+}
+
+static void emit_glsl(const cli_options *o, cli_job *job, const hfx_fx_effect *fx) {
+    if (!o->emit_glsl) return;
+    if (!is_dir(o->emit_glsl) && mkdir(o->emit_glsl, 0777) != 0 && errno != EEXIST) {
+        char why[128];
+        job->error = fmt("cannot create folder '%s': %s", o->emit_glsl, error_text(errno, why, sizeof why));
+        job->ok = false;
+        return;
+    }
+    int target = emit_target(o, fx);
+    char *effect = stem(job->input);
+    static const char *const ext[HFX_STAGE_COUNT] = {"vert", "frag"};
+    for (uint32_t t = 0; effect && t < fx->technique_count; t++) {
+        const hfx_fx_technique *tq = &fx->techniques[t];
+        for (uint32_t p = 0; p < tq->pass_count; p++) {
+            const hfx_fx_pass *pass = &fx->passes[tq->first_pass + p];
+            if (pass->program == HFX_NONE) continue;
+            const hfx_fx_program *prog = &fx->programs[pass->program];
+            for (int s = 0; s < HFX_STAGE_COUNT; s++) {
+                const hfx_fx_code *c = &prog->code[s][target];
+                if (!c->data) continue;
+                char tname[32], pname[32], path[4096];
+                if (!tq->name[0]) snprintf(tname, sizeof tname, "t%u", t);
+                if (!pass->name[0]) snprintf(pname, sizeof pname, "p%u", p);
+                snprintf(path, sizeof path, "%s/%s.%s.%s.%s%s", o->emit_glsl, effect, tq->name[0] ? tq->name : tname,
+                         pass->name[0] ? pass->name : pname, ext[s], target == HFX_TARGET_SPIRV ? ".spv" : "");
+                if (!write_file(path, c->data, c->size, &job->error)) job->ok = false;
+            }
+        }
+    }
+    free(effect);
+}
+
+/* A target asked for that the code generator could not produce is worth a line. */
+static void warn_missing_targets(const cli_options *o, cli_job *job, const hfx_fx_effect *fx) {
+    unsigned missing = fx->program_count ? o->targets & ~fx->targets : 0;
+    for (int t = 0; t < HFX_TARGET_COUNT; t++) {
+        if (!(missing & (1u << t))) continue;
+        char *line = fmt("hfxc: warning: no %s code was generated for '%s'\n", cli_target_name(t), job->input);
+        size_t old = job->diagnostics ? strlen(job->diagnostics) : 0;
+        char *d = line ? realloc(job->diagnostics, old + strlen(line) + 1) : NULL;
+        if (d) {
+            memcpy(d + old, line, strlen(line) + 1);
+            job->diagnostics = d;
+        }
+        free(line);
+    }
+}
+
+static void compile_one(const cli_options *o, cli_job *job) {
+    hfxc_options opt;
+    memset(&opt, 0, sizeof opt);
+    opt.defines = o->defines;
+    opt.define_count = o->define_count;
+    opt.include_dirs = o->include_dirs;
+    opt.include_dir_count = o->include_dir_count;
+    opt.targets = o->targets;
+    opt.entry = o->entry;
+    opt.profile = o->profile;
+    opt.flags = (o->werror ? HFXC_WERROR : 0) | (o->no_warnings ? HFXC_NO_WARNINGS : 0) | (o->ast ? HFXC_PARSE_ONLY : 0);
+    hfxc_result *r = hfxc_compile_file(job->input, &opt);
+    if (!r) {
+        job->error = fmt("out of memory compiling '%s'%s", job->input, "");
+        return;
+    }
+    job->diagnostics = hfxc_diagnostics_text(r);
+    job->ok = hfxc_result_ok(r) != 0;
+    if (o->ast) {
+        job->ast = hfxc_result_ast_dump(r);
+    } else if (job->ok) {
+        job->effect = hfxc_result_take_effect(r);
+        if (!job->effect) {
+            job->ok = false;
+            job->error = fmt("'%s': the compiler produced no effect%s", job->input, "");
+        } else {
+            warn_missing_targets(o, job, job->effect);
+            write_hfxo(o, job, job->effect);
+            emit_glsl(o, job, job->effect);
+        }
+    }
+    hfxc_result_free(r);
+    if (!o->reflect && !o->annotations) {
+        hfx_fx_effect_free(job->effect);
+        job->effect = NULL;
+    }
+}
+
+typedef struct pool {
+    const cli_options *o;
+    cli_job *jobs;
+    size_t count, next, done;
+    bool progress;
+    pthread_mutex_t lock;
+} pool;
+
+static void *worker(void *arg) {
+    pool *p = arg;
+    for (;;) {
+        pthread_mutex_lock(&p->lock);
+        size_t i = p->next < p->count ? p->next++ : p->count;
+        pthread_mutex_unlock(&p->lock);
+        if (i == p->count) return NULL;
+        compile_one(p->o, &p->jobs[i]);
+        pthread_mutex_lock(&p->lock);
+        p->done++;
+        if (p->progress) {
+            fprintf(stderr, "\r[%zu/%zu] %s\033[K", p->done, p->count, p->jobs[i].input);
+            fflush(stderr);
+        }
+        pthread_mutex_unlock(&p->lock);
+    }
+}
+
+void cli_run_jobs(const cli_options *o, cli_job *jobs, size_t count, bool progress) {
+    long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    size_t threads = o->jobs > 0 ? (size_t)o->jobs : cores > 0 ? (size_t)cores : 1;
+    if (threads > count) threads = count;
+    pool p = {.o = o, .jobs = jobs, .count = count, .progress = progress};
+    pthread_mutex_init(&p.lock, NULL);
+    pthread_t *ids = threads > 1 ? calloc(threads, sizeof *ids) : NULL;
+    size_t started = 0;
+    pthread_attr_t attr;
+    pthread_attr_init(&attr);
+    pthread_attr_setstacksize(&attr, 16u << 20); /* deeply nested input recurses in the checker */
+    for (size_t t = 0; ids && t < threads; t++)
+        if (pthread_create(&ids[started], &attr, worker, &p) == 0) started++;
+    pthread_attr_destroy(&attr);
+    if (!started) worker(&p); /* one job, one core, or no threads: this thread does the work */
+    for (size_t t = 0; t < started; t++) pthread_join(ids[t], NULL);
+    free(ids);
+    pthread_mutex_destroy(&p.lock);
+    if (progress) fprintf(stderr, "\r\033[K");
+}

@@ -1,0 +1,237 @@
+/* main.c: hfxc, the command line. Takes fxc's spelling (/T fx_2_0 /Fo out.hfxo /D N=V /I dir
+ * /E main /nologo) and the GNU one (-o, -D, -I, --target, --emit-glsl, --reflect...). Exit 0 on
+ * success, 1 when a file fails to compile, 2 on bad usage (one line on stderr saying why). */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "cli.h"
+
+static const char usage_text[] =
+    "usage: hfxc [options] file.fx...\n"
+    "Compiles Direct3D 9 effect files (.fx) to .hfxo (GLSL programs + effect data).\n"
+    "\n"
+    "  -o, /Fo PATH          output file (one input) or folder (several inputs, or PATH ending in /)\n"
+    "  -D, /D NAME[=VALUE]   define a macro\n"
+    "  -I, /I DIR            add an include folder\n"
+    "  /T PROFILE            fx_2_0 (default), or vs_3_0, ps_2_0... with /E\n"
+    "  /E NAME               compile one entry point with the /T profile\n"
+    "  --target T            glsl330, glsles300, glsl110, spirv (repeat or comma-separate)\n"
+    "  --emit-glsl DIR       write each pass's shaders: <effect>.<technique>.<pass>.vert/.frag\n"
+    "  --reflect             print the effect and its compiled interface as JSON\n"
+    "  --annotations         print parameters, annotations, techniques and states as JSON\n"
+    "  --ast                 print the syntax tree and stop\n"
+    "  --werror, /WX         treat warnings as errors\n"
+    "  --no-warnings         drop warnings\n"
+    "  -j, --jobs N          compile N files at a time (default: one per core)\n"
+    "  --quiet               no progress line and no summary\n"
+    "  /nologo               accepted for fxc compatibility\n"
+    "  --help, /?            this text\n"
+    "  --version             the version\n";
+
+static int usage_error(const char *fmt, const char *arg) {
+    fprintf(stderr, "hfxc: error: ");
+    fprintf(stderr, fmt, arg);
+    fprintf(stderr, " (hfxc --help for usage)\n");
+    return EXIT_USAGE;
+}
+
+static int push(const char ***list, size_t *count, const char *s) {
+    const char **l = realloc(*list, sizeof *l * (*count + 1));
+    if (!l) return -1;
+    l[(*count)++] = s;
+    *list = l;
+    return 0;
+}
+
+static int add_targets(cli_options *o, const char *spec) {
+    char buf[256];
+    snprintf(buf, sizeof buf, "%s", spec);
+    for (char *save = NULL, *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+        int target = cli_target_from_name(t);
+        if (target < 0) return usage_error("unknown target '%s' (glsl330, glsles300, glsl110, spirv)", t);
+        o->targets |= 1u << target;
+    }
+    return EXIT_OK;
+}
+
+static bool exists(const char *path) {
+    struct stat st;
+    return stat(path, &st) == 0;
+}
+
+/* An option taking a value: `-o x`, `-ox`, `/Fo x`, `/Fox`, `--target=x`, `--target x`.
+ * Returns the value (advancing *i) or NULL when arg is not this option. */
+static const char *value_of(const char *arg, const char *name, int argc, char **argv, int *i, bool *missing) {
+    size_t n = strlen(name);
+    if (strncmp(arg, name, n) != 0) return NULL;
+    if (arg[n] == 0) {
+        if (*i + 1 >= argc) {
+            *missing = true;
+            return NULL;
+        }
+        return argv[++*i];
+    }
+    if (strncmp(name, "--", 2) == 0) return arg[n] == '=' ? arg + n + 1 : NULL;
+    return arg + n;
+}
+
+typedef enum { OPT_OUTPUT, OPT_DEFINE, OPT_INCLUDE, OPT_PROFILE, OPT_ENTRY, OPT_TARGET, OPT_EMIT, OPT_JOBS } opt_kind;
+
+static const struct {
+    const char *name;
+    opt_kind kind;
+} valued[] = {
+    {"--output", OPT_OUTPUT}, {"--target", OPT_TARGET}, {"--emit-glsl", OPT_EMIT}, {"--jobs", OPT_JOBS},
+    {"--define", OPT_DEFINE}, {"--include", OPT_INCLUDE},
+    {"-o", OPT_OUTPUT}, {"-D", OPT_DEFINE}, {"-I", OPT_INCLUDE}, {"-T", OPT_PROFILE}, {"-E", OPT_ENTRY},
+    {"-j", OPT_JOBS}, {"-Fo", OPT_OUTPUT},
+    {"/Fo", OPT_OUTPUT}, {"/D", OPT_DEFINE}, {"/I", OPT_INCLUDE}, {"/T", OPT_PROFILE}, {"/E", OPT_ENTRY},
+};
+
+static int set_valued(cli_options *o, opt_kind kind, const char *v) {
+    switch (kind) {
+    case OPT_OUTPUT: o->output = v; break;
+    case OPT_DEFINE: if (push(&o->defines, &o->define_count, v)) return EXIT_USAGE; break;
+    case OPT_INCLUDE: if (push(&o->include_dirs, &o->include_dir_count, v)) return EXIT_USAGE; break;
+    case OPT_PROFILE: o->profile = v; break;
+    case OPT_ENTRY: o->entry = v; break;
+    case OPT_TARGET: return add_targets(o, v);
+    case OPT_EMIT: o->emit_glsl = v; break;
+    case OPT_JOBS: {
+        char *end;
+        long n = strtol(v, &end, 10);
+        if (*end || n < 1 || n > 1024) return usage_error("bad job count '%s'", v);
+        o->jobs = (int)n;
+        break;
+    }
+    }
+    return EXIT_OK;
+}
+
+static int flag(cli_options *o, const char *a, bool *handled) {
+    *handled = true;
+    if (!strcmp(a, "--reflect")) o->reflect = true;
+    else if (!strcmp(a, "--annotations")) o->annotations = true;
+    else if (!strcmp(a, "--ast")) o->ast = true;
+    else if (!strcmp(a, "--werror") || !strcmp(a, "/WX") || !strcmp(a, "-WX")) o->werror = true;
+    else if (!strcmp(a, "--no-warnings")) o->no_warnings = true;
+    else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) o->quiet = true;
+    else if (!strcmp(a, "/nologo") || !strcmp(a, "-nologo")) {
+    } else if (!strcmp(a, "/Zi") || !strcmp(a, "/Od") || !strcmp(a, "/Gec") || !strcmp(a, "/Gfp") ||
+               (a[0] == '/' && a[1] == 'O' && a[2] >= '0' && a[2] <= '3' && !a[3])) {
+        /* fxc's debug and optimisation switches change nothing here. */
+    } else *handled = false;
+    return EXIT_OK;
+}
+
+/* Parses argv into o. Returns -1 to go on, or an exit code (help, version, usage error). */
+static int parse_args(int argc, char **argv, cli_options *o) {
+    bool only_files = false;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        /* A path such as /work/x.fx looks like an fxc switch: an existing file wins. */
+        bool option = !only_files && (a[0] == '-' || a[0] == '/') && a[1] && !(a[0] == '/' && exists(a));
+        if (!option) {
+            if (push(&o->inputs, &o->input_count, a)) return EXIT_USAGE;
+            continue;
+        }
+        if (!strcmp(a, "--")) { only_files = true; continue; }
+        if (!strcmp(a, "--help") || !strcmp(a, "-h") || !strcmp(a, "/?") || !strcmp(a, "-?")) {
+            fputs(usage_text, stdout);
+            return EXIT_OK;
+        }
+        if (!strcmp(a, "--version")) {
+            printf("%s\n", hfxc_version());
+            return EXIT_OK;
+        }
+        bool handled;
+        flag(o, a, &handled);
+        if (handled) continue;
+        for (size_t k = 0; k < sizeof valued / sizeof *valued && !handled; k++) {
+            bool missing = false;
+            const char *v = value_of(a, valued[k].name, argc, argv, &i, &missing);
+            if (missing) return usage_error("option '%s' needs a value", a);
+            if (!v) continue;
+            handled = true;
+            int rc = set_valued(o, valued[k].kind, v);
+            if (rc != EXIT_OK) return rc;
+        }
+        if (!handled) return usage_error(a[0] == '/' ? "no such file or option '%s'" : "unknown option '%s'", a);
+    }
+    return -1;
+}
+
+static int check_inputs(const cli_options *o) {
+    if (o->input_count == 0) return usage_error("%s", "no input file");
+    for (size_t i = 0; i < o->input_count; i++) {
+        FILE *f = fopen(o->inputs[i], "rb");
+        if (!f) {
+            fprintf(stderr, "hfxc: error: cannot open '%s': %s\n", o->inputs[i], strerror(errno));
+            return EXIT_USAGE;
+        }
+        fclose(f);
+    }
+    size_t n = o->output ? strlen(o->output) : 0;
+    bool folder = n && (o->output[n - 1] == '/' || o->input_count > 1);
+    struct stat st;
+    if (folder && stat(o->output, &st) != 0 && mkdir(o->output, 0777) != 0) {
+        fprintf(stderr, "hfxc: error: cannot create folder '%s': %s\n", o->output, strerror(errno));
+        return EXIT_USAGE;
+    }
+    if (o->profile && strcmp(o->profile, "fx_2_0") != 0 && !o->entry)
+        return usage_error("profile '%s' needs an entry point (/E)", o->profile);
+    return EXIT_OK;
+}
+
+static void print_results(const cli_options *o, cli_job *jobs, size_t n, size_t *failed) {
+    *failed = 0;
+    for (size_t i = 0; i < n; i++) {
+        if (jobs[i].diagnostics && jobs[i].diagnostics[0]) fputs(jobs[i].diagnostics, stderr);
+        if (jobs[i].error) fprintf(stderr, "hfxc: error: %s\n", jobs[i].error);
+        if (jobs[i].ast) fputs(jobs[i].ast, stdout);
+        if (!jobs[i].ok) (*failed)++;
+    }
+    if ((o->reflect || o->annotations) && !o->ast) {
+        char *json = cli_json(jobs, n, o->reflect);
+        if (json) {
+            puts(json);
+            free(json);
+        }
+    }
+    if (n > 1 && !o->quiet) printf("%zu compiled, %zu failed\n", n - *failed, *failed);
+}
+
+int main(int argc, char **argv) {
+    cli_options o;
+    memset(&o, 0, sizeof o);
+    int rc = parse_args(argc, argv, &o);
+    if (rc < 0) rc = check_inputs(&o);
+    else goto done;
+    if (rc != EXIT_OK) goto done;
+    cli_job *jobs = calloc(o.input_count, sizeof *jobs);
+    if (!jobs) {
+        rc = EXIT_USAGE;
+        goto done;
+    }
+    for (size_t i = 0; i < o.input_count; i++) jobs[i].input = o.inputs[i];
+    cli_run_jobs(&o, jobs, o.input_count, !o.quiet && o.input_count > 1 && isatty(STDERR_FILENO));
+    size_t failed;
+    print_results(&o, jobs, o.input_count, &failed);
+    rc = failed ? EXIT_COMPILE : EXIT_OK;
+    for (size_t i = 0; i < o.input_count; i++) {
+        free(jobs[i].diagnostics);
+        free(jobs[i].ast);
+        free(jobs[i].error);
+        hfx_fx_effect_free(jobs[i].effect);
+    }
+    free(jobs);
+done:
+    free(o.inputs);
+    free(o.defines);
+    free(o.include_dirs);
+    return rc;
+}

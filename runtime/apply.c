@@ -1,0 +1,171 @@
+/* apply.c: techniques, passes and Apply, plus begin / end. Apply binds the pass's program,
+ * uploads the parameters that changed since that program last saw them, binds textures and
+ * sampler objects, and sets render states; everything goes through the device's shadow, so
+ * an Apply with nothing changed makes no GL call. */
+#include <ctype.h>
+#include <string.h>
+#include <strings.h>
+
+#include "internal.h"
+
+hfx_technique *hfx_effect_technique(hfx_effect *fx, const char *name) {
+    if (!fx) return NULL;
+    if (!name) return hfx_rt_fail(fx->dev, HFX_ERR_NULL, "NULL technique name"), NULL;
+    for (uint32_t i = 0; i < fx->sh->fx->technique_count; i++)
+        if (fx->sh->fx->techniques[i].name && strcmp(fx->sh->fx->techniques[i].name, name) == 0) return &fx->techniques[i];
+    return hfx_rt_fail(fx->dev, HFX_ERR_NOT_FOUND, "no technique named '%s'", name), NULL;
+}
+
+hfx_technique *hfx_effect_technique_at(hfx_effect *fx, size_t i) {
+    if (!fx) return NULL;
+    if (i >= fx->sh->fx->technique_count) return hfx_rt_fail(fx->dev, HFX_ERR_NOT_FOUND, "no technique %zu", i), NULL;
+    return &fx->techniques[i];
+}
+
+size_t hfx_effect_technique_count(const hfx_effect *fx) { return fx ? fx->sh->fx->technique_count : 0; }
+
+void hfx_effect_set_current_technique(hfx_effect *fx, hfx_technique *t) {
+    if (!fx) return;
+    if (!t || t->fx != fx) {
+        hfx_rt_fail(fx->dev, t ? HFX_ERR_NOT_FOUND : HFX_ERR_NULL, "technique does not belong to this effect");
+        return;
+    }
+    fx->current = t->index;
+}
+
+hfx_technique *hfx_effect_current_technique(hfx_effect *fx) {
+    if (!fx || fx->current >= fx->sh->fx->technique_count) return NULL;
+    return &fx->techniques[fx->current];
+}
+
+const char *hfx_technique_name(const hfx_technique *t) {
+    return t && t->fx->sh->fx->techniques[t->index].name ? t->fx->sh->fx->techniques[t->index].name : "";
+}
+
+size_t hfx_technique_pass_count(const hfx_technique *t) { return t ? t->fx->sh->fx->techniques[t->index].pass_count : 0; }
+
+hfx_pass *hfx_technique_pass(hfx_technique *t, size_t i) {
+    if (!t) return NULL;
+    const hfx_fx_technique *ft = &t->fx->sh->fx->techniques[t->index];
+    if (i >= ft->pass_count) return hfx_rt_fail(t->fx->dev, HFX_ERR_NOT_FOUND, "no pass %zu", i), NULL;
+    return &t->fx->passes[ft->first_pass + i];
+}
+
+hfx_pass *hfx_technique_pass_by_name(hfx_technique *t, const char *name) {
+    if (!t) return NULL;
+    if (!name) return hfx_rt_fail(t->fx->dev, HFX_ERR_NULL, "NULL pass name"), NULL;
+    const hfx_fx_technique *ft = &t->fx->sh->fx->techniques[t->index];
+    for (uint32_t i = 0; i < ft->pass_count; i++) {
+        const char *n = t->fx->sh->fx->passes[ft->first_pass + i].name;
+        if (n && strcmp(n, name) == 0) return &t->fx->passes[ft->first_pass + i];
+    }
+    return hfx_rt_fail(t->fx->dev, HFX_ERR_NOT_FOUND, "no pass named '%s'", name), NULL;
+}
+
+const char *hfx_pass_name(const hfx_pass *p) {
+    return p && p->fx->sh->fx->passes[p->index].name ? p->fx->sh->fx->passes[p->index].name : "";
+}
+
+/* "POSITION" means "POSITION0"; case does not matter. */
+static int same_semantic(const char *canonical, const char *s) {
+    size_t n = strlen(s);
+    if (strcasecmp(canonical, s) == 0) return 1;
+    return n && !isdigit((unsigned char)s[n - 1]) && strncasecmp(canonical, s, n) == 0 && strcmp(canonical + n, "0") == 0;
+}
+
+int hfx_pass_attribute_location(const hfx_pass *p, const char *semantic) {
+    if (!p || !semantic) return -1;
+    uint32_t prog = p->fx->sh->passes[p->index].program;
+    if (prog == HFX_NONE) return -1;
+    const hfx_fx_program *fp = &p->fx->sh->fx->programs[prog];
+    for (uint32_t i = 0; i < fp->attribute_count; i++)
+        if (fp->attributes[i].semantic && same_semantic(fp->attributes[i].semantic, semantic)) return fp->attributes[i].location;
+    return -1;
+}
+
+static void bind_textures(hfx_effect *fx, const hfx_rt_pass *rp) {
+    for (uint32_t i = 0; i < rp->binding_count; i++) {
+        const hfx_rt_binding *b = &rp->bindings[i];
+        GLuint tex = b->texture_param != HFX_NONE ? fx->textures[b->texture_param] : 0;
+        if (!tex && b->sampler_param != HFX_NONE) tex = fx->textures[b->sampler_param];
+        GLuint sampler = 0;
+        if (b->sampler != HFX_NONE) {
+            hfx_rt_sampler *s = &fx->sh->samplers[b->sampler];
+            hfx_rt_sampler_update(fx, s);
+            sampler = s->object;
+        }
+        if (b->texture_param == HFX_NONE && b->sampler_param == HFX_NONE) {
+            /* only sampler states for this stage (MinFilter[3] = ...): the texture stays */
+            hfx_unit_state *u = &fx->dev->units[b->unit];
+            if (u->sampler != sampler) fx->dev->gl.BindSampler((GLuint)b->unit, u->sampler = sampler);
+            continue;
+        }
+        hfx_rt_bind_unit(fx->dev, b->unit, b->target, tex, sampler);
+    }
+}
+
+int hfx_pass_apply(hfx_pass *p) {
+    if (!p) return HFX_ERR_NULL;
+    hfx_effect *fx = p->fx;
+    const hfx_rt_pass *rp = &fx->sh->passes[p->index];
+    if (rp->render_state_count) hfx_rs_apply(fx, rp); /* first: the alpha test reads these states */
+    if (rp->program != HFX_NONE) {
+        hfx_rt_program *prog = &fx->sh->programs[rp->program];
+        hfx_rt_use_program(fx->dev, prog->object);
+        hfx_rt_upload_uniforms(fx, prog);
+        if (prog->alpha_func_loc >= 0 || prog->alpha_ref_loc >= 0) hfx_rs_alpha_test(fx->dev, prog);
+    }
+    if (rp->binding_count) bind_textures(fx, rp);
+    return HFX_OK;
+}
+
+/* begin / end: save the GL state the effect touches and put it back, leaving the shadow
+ * equal to what GL holds (so state changed by the application between frames is seen). */
+
+static const GLenum unit_targets[4] = {GL_TEXTURE_BINDING_1D, GL_TEXTURE_BINDING_2D, GL_TEXTURE_BINDING_3D,
+                                       GL_TEXTURE_BINDING_CUBE_MAP};
+static const GLenum bind_targets[4] = {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP};
+
+int hfx_effect_begin(hfx_effect *fx) {
+    if (!fx) return HFX_ERR_NULL;
+    hfx_device *dev = fx->dev;
+    hfx_saved *s = &fx->saved;
+    hfx_rt_read_state(dev, &s->state);
+    dev->state = s->state;
+    dev->gl.GetIntegerv(GL_CURRENT_PROGRAM, &s->program);
+    dev->program = (GLuint)s->program;
+    dev->gl.GetIntegerv(GL_ACTIVE_TEXTURE, &s->active_unit);
+    for (int u = 0; u < HFX_MAX_UNITS; u++) {
+        if (!(fx->sh->unit_mask & (1u << u))) continue;
+        dev->gl.ActiveTexture(GL_TEXTURE0 + (GLenum)u);
+        for (int t = 0; t < 4; t++) dev->gl.GetIntegerv(unit_targets[t], &s->units[u].tex[t]);
+        dev->gl.GetIntegerv(GL_SAMPLER_BINDING, &s->units[u].sampler);
+        dev->units[u].target = 0; /* unknown: rebind on first use */
+        dev->units[u].sampler = (GLuint)s->units[u].sampler;
+    }
+    dev->gl.ActiveTexture((GLenum)s->active_unit);
+    dev->active_unit = (GLenum)s->active_unit;
+    s->active = 1;
+    return HFX_OK;
+}
+
+int hfx_effect_end(hfx_effect *fx) {
+    if (!fx) return HFX_ERR_NULL;
+    hfx_device *dev = fx->dev;
+    hfx_saved *s = &fx->saved;
+    if (!s->active) return hfx_rt_fail(dev, HFX_ERR_NOT_FOUND, "hfx_effect_end without hfx_effect_begin");
+    hfx_rt_write_state(dev, &s->state);
+    hfx_rt_use_program(dev, (GLuint)s->program);
+    for (int u = 0; u < HFX_MAX_UNITS; u++) {
+        if (!(fx->sh->unit_mask & (1u << u))) continue;
+        dev->gl.ActiveTexture(GL_TEXTURE0 + (GLenum)u);
+        for (int t = 0; t < 4; t++) dev->gl.BindTexture(bind_targets[t], (GLuint)s->units[u].tex[t]);
+        dev->gl.BindSampler((GLuint)u, (GLuint)s->units[u].sampler);
+        dev->units[u].target = 0;
+        dev->units[u].sampler = (GLuint)s->units[u].sampler;
+    }
+    dev->gl.ActiveTexture((GLenum)s->active_unit);
+    dev->active_unit = (GLenum)s->active_unit;
+    s->active = 0;
+    return HFX_OK;
+}

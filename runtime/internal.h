@@ -1,0 +1,231 @@
+/* internal.h: the runtime's objects. An effect is a per-instance part (parameter values, the
+ * current technique, handles) over a shared, reference-counted part (the compiled effect, its
+ * GL programs and sampler objects) that clones share. The device shadows every GL state it
+ * sets so that an Apply with nothing changed issues no GL call. */
+#ifndef HFX_RUNTIME_INTERNAL_H
+#define HFX_RUNTIME_INTERNAL_H
+
+#include <stdint.h>
+
+#include "effect.h"
+#include "gl.h"
+#include "hfx/hfx.h"
+#include "states.h"
+
+#define HFX_MAX_UNITS 32
+
+/* The GL state the device sets, as GL holds it. */
+typedef struct hfx_glstate {
+    GLboolean cull;
+    GLenum cull_face, front_face, polygon_mode;
+    GLboolean depth_test, depth_mask;
+    GLenum depth_func;
+    GLboolean blend;
+    GLenum src_rgb, dst_rgb, src_a, dst_a, eq_rgb, eq_a;
+    float blend_color[4];
+    uint8_t color_mask[4]; /* RGBA bits 1,2,4,8 (D3D's order) per draw buffer */
+    GLboolean stencil;
+    struct { GLenum func; GLint ref; GLuint mask, write; GLenum fail, zfail, pass; } face[2]; /* front, back */
+    GLboolean scissor, offset_fill, offset_line, offset_point;
+    float offset_factor, offset_units;
+    GLboolean multisample, srgb, dither, line_smooth, sample_mask;
+    GLuint sample_mask_value;
+    uint8_t clip_planes;
+} hfx_glstate;
+
+/* A texture unit as GL holds it. */
+typedef struct hfx_unit_state {
+    GLuint texture, sampler;
+    GLenum target;
+} hfx_unit_state;
+
+/* A render state's current D3D value (ints, or floats for FLOAT and COLOR states). */
+typedef struct hfx_rs_value {
+    int32_t i;
+    float f[4];
+} hfx_rs_value;
+
+struct hfx_device {
+    hfx_gl gl;
+    char error[1024];
+    uint64_t stamp;                /* last parameter version handed out */
+    GLuint program;                /* bound program */
+    GLenum active_unit;            /* glActiveTexture's unit */
+    hfx_unit_state units[HFX_MAX_UNITS];
+    hfx_glstate state;             /* shadow of GL */
+    hfx_rs_value rs[HFX_ST_COUNT_];/* D3D render states as the passes set them */
+    float depth_bias_scale;        /* DepthBias (0..1 depth units) to glPolygonOffset units */
+    float max_anisotropy;          /* 0 without anisotropic filtering */
+    int srgb_decode;               /* EXT_texture_sRGB_decode */
+    float *scratch;                /* for uploads that convert int <-> float */
+    size_t scratch_size;
+};
+
+/* D3D9's sampler state for one sampler stage. */
+typedef struct hfx_sampler_desc {
+    int32_t address[3], mag, min, mip, max_mip_level, max_anisotropy, srgb;
+    float lod_bias, border[4];
+    int srgb_set; /* SRGBTexture written explicitly */
+} hfx_sampler_desc;
+
+/* A GL sampler object made from a sampler_state block, maybe with pass overrides and
+ * states that read parameters at apply time. */
+typedef struct hfx_rt_sampler {
+    GLuint object;
+    hfx_sampler_desc base, current;        /* base: constant states; current: what GL holds */
+    const hfx_fx_state **dynamic;          /* PARAM-valued states, applied over base */
+    uint32_t dynamic_count;
+} hfx_rt_sampler;
+
+enum { /* hfx_upload.fn */
+    UP_F1, UP_F2, UP_F3, UP_F4, UP_I1, UP_I2, UP_I3, UP_I4,
+    UP_M2, UP_M3, UP_M4, UP_M2x3, UP_M3x2, UP_M2x4, UP_M4x2, UP_M3x4, UP_M4x3
+};
+
+/* One glUniform* call that uploads (part of) a top-level parameter. */
+typedef struct hfx_upload {
+    GLint location;
+    uint16_t fn, convert;   /* convert: the GLSL type's base differs from the data's (int <-> float) */
+    uint32_t count;         /* array elements */
+    uint32_t offset, words; /* in the value buffer */
+} hfx_upload;
+
+typedef struct hfx_rt_uniform {
+    uint32_t param;         /* top-level parameter */
+    uint32_t first_upload, upload_count;
+} hfx_rt_uniform;
+
+typedef struct hfx_rt_program {
+    GLuint object;
+    hfx_rt_uniform *uniforms; uint32_t uniform_count;
+    uint64_t *uploaded;     /* per uniform: stamp of the value GL holds (0: none) */
+    hfx_upload *uploads; uint32_t upload_count;
+    uint32_t *uniform_of;   /* per top-level parameter: index into uniforms, HFX_NONE if unread */
+    uint64_t memo_effect;   /* the effect instance (id) whose change log this program follows */
+    uint32_t memo_epoch, memo_seen;
+    GLint alpha_func_loc, alpha_ref_loc;
+    int32_t alpha_func;     /* values GL holds (-1: unknown) */
+    float alpha_ref;
+} hfx_rt_program;
+
+/* What a pass binds on one texture unit. */
+typedef struct hfx_rt_binding {
+    int32_t unit;
+    uint32_t sampler;       /* index into shared samplers (GL sampler object) or HFX_NONE */
+    uint32_t texture_param; /* param whose texture is bound; HFX_NONE: use sampler_param */
+    uint32_t sampler_param; /* a sampler param set with hfx_param_set_texture, or HFX_NONE */
+    GLenum target;
+} hfx_rt_binding;
+
+typedef struct hfx_rt_pass {
+    uint32_t program;       /* index into shared programs, HFX_NONE: leave the bound one */
+    uint32_t *render_states; uint32_t render_state_count; /* indices into fx->states */
+    uint32_t groups;        /* GL state groups the pass's render states touch */
+    hfx_rt_binding *bindings; uint32_t binding_count;
+} hfx_rt_pass;
+
+/* The shared part of an effect. */
+typedef struct hfx_shared {
+    int refs;
+    hfx_device *dev;
+    hfx_fx_effect *fx;
+    hfx_rt_program *programs;
+    hfx_rt_sampler *samplers; uint32_t sampler_count; /* fx samplers first, then pass overrides */
+    hfx_rt_pass *passes;
+    uint32_t groups;        /* union of the passes' groups */
+    uint32_t unit_mask;     /* units any pass binds */
+    char *warnings;
+    size_t warnings_len;
+    struct hfx_annotation *annotations;
+} hfx_shared;
+
+struct hfx_annotation {
+    hfx_shared *sh;
+    const hfx_fx_annotation *a;
+};
+
+struct hfx_param {
+    hfx_effect *fx;
+    const hfx_fx_param *info; /* fx->sh->fx->params[index], kept at hand for the set path */
+    uint32_t index, root;     /* root: the top-level parameter that holds it */
+};
+
+struct hfx_technique {
+    hfx_effect *fx;
+    uint32_t index;
+};
+
+struct hfx_pass {
+    hfx_effect *fx;
+    uint32_t index;
+};
+
+/* What hfx_effect_begin saved. */
+typedef struct hfx_saved {
+    int active;
+    hfx_glstate state;
+    GLint program, active_unit;
+    struct { GLint tex[4], sampler; } units[HFX_MAX_UNITS]; /* 1D, 2D, 3D, cube */
+} hfx_saved;
+
+struct hfx_effect {
+    hfx_shared *sh;
+    hfx_device *dev;
+    uint32_t *values;       /* copy of fx->values */
+    uint64_t *stamps;       /* per top-level parameter */
+    GLuint *textures;       /* per parameter (objects) */
+    hfx_param *params;
+    hfx_technique *techniques;
+    hfx_pass *passes;
+    uint32_t current;       /* technique index */
+    hfx_saved saved;
+    /* Change log, so Apply visits only the parameters changed since a program last looked:
+     * top-level indices in change order; compacted (epoch + 1) when full. */
+    uint64_t id;            /* unique per instance on the device */
+    uint32_t *log, log_len, log_cap, epoch, high_water;
+    uint32_t *last_logged;  /* per top-level parameter: its latest log position + 1, 0 if none */
+};
+
+/* device.c */
+int hfx_rt_fail(hfx_device *dev, int code, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+void hfx_rt_read_state(hfx_device *dev, hfx_glstate *s);
+void hfx_rt_write_state(hfx_device *dev, const hfx_glstate *want);
+void hfx_rt_bind_unit(hfx_device *dev, int unit, GLenum target, GLuint texture, GLuint sampler);
+void hfx_rt_use_program(hfx_device *dev, GLuint program);
+
+/* program.c */
+int hfx_rt_program_build(hfx_shared *sh, uint32_t index, hfx_target target);
+void hfx_rt_program_free(hfx_device *dev, hfx_rt_program *p);
+void hfx_rt_upload_uniforms(hfx_effect *fx, hfx_rt_program *p);
+
+/* sampler.c */
+void hfx_sampler_desc_default(hfx_sampler_desc *d);
+void hfx_sampler_desc_apply(hfx_sampler_desc *d, uint32_t id, const hfx_rs_value *v);
+int hfx_rt_sampler_create(hfx_shared *sh, hfx_rt_sampler *s, const hfx_sampler_desc *base,
+                          const hfx_fx_state *const *dyn, uint32_t dyn_count);
+void hfx_rt_sampler_update(hfx_effect *fx, hfx_rt_sampler *s);
+void hfx_rt_sampler_free(hfx_device *dev, hfx_rt_sampler *s);
+
+/* render_states.c */
+enum { /* GL state groups */
+    G_CULL = 1u << 0, G_FILL = 1u << 1, G_DEPTH = 1u << 2, G_BLEND = 1u << 3, G_COLORMASK = 1u << 4,
+    G_STENCIL = 1u << 5, G_SCISSOR = 1u << 6, G_DEPTHBIAS = 1u << 7, G_MSAA = 1u << 8, G_SRGB = 1u << 9,
+    G_DITHER = 1u << 10, G_LINESMOOTH = 1u << 11, G_SAMPLEMASK = 1u << 12, G_CLIP = 1u << 13,
+    G_ALPHATEST = 1u << 14
+};
+void hfx_rs_defaults(hfx_rs_value *rs);
+uint32_t hfx_rs_group(uint32_t id);
+void hfx_rs_resolve(const hfx_effect *fx, const hfx_fx_state *st, hfx_rs_value *out);
+void hfx_rs_check(hfx_shared *sh, const hfx_fx_state *st, uint32_t program);
+void hfx_rs_apply(hfx_effect *fx, const hfx_rt_pass *pass);
+void hfx_rs_alpha_test(hfx_device *dev, hfx_rt_program *p);
+
+/* params.c */
+void hfx_rt_param_changed(hfx_effect *fx, uint32_t root);
+
+/* load.c */
+/* Loads a compiled effect built by hand (tests, tools); takes fx, even on failure. */
+hfx_effect *hfx_rt_effect_from_fx(hfx_device *dev, hfx_fx_effect *fx, const hfx_load_options *opt, char **errors);
+void hfx_shared_warn(hfx_shared *sh, const hfx_fx_state *st, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+
+#endif

@@ -1,0 +1,322 @@
+/* program.c: one GL program per compiled pass program: compile, link, bind attribute
+ * locations, point sampler uniforms at their units, and resolve every parameter the program
+ * reads into glUniform* calls (struct members and array elements by their GLSL names). The
+ * call for each uniform follows the GLSL type GL reports, so the upload always matches the
+ * declaration; matrices go up row-major with transpose = GL_FALSE, which is the layout the
+ * generated GLSL is written for (a HLSL RxC matrix is a GLSL matRxC holding its transpose). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "internal.h"
+
+typedef struct active_uniform {
+    char name[256];
+    GLenum type;
+    GLint size;
+} active_uniform;
+
+typedef struct build {
+    hfx_shared *sh;
+    hfx_rt_program *p;
+    active_uniform *active;
+    GLint active_count;
+    uint32_t upload_cap;
+} build;
+
+static GLuint compile_stage(hfx_shared *sh, GLenum type, const char *src, const char *what) {
+    hfx_gl *gl = &sh->dev->gl;
+    GLuint s = gl->CreateShader(type);
+    if (!s) return 0;
+    gl->ShaderSource(s, 1, &src, NULL);
+    gl->CompileShader(s);
+    GLint ok = 0, len = 0;
+    gl->GetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (ok) return s;
+    gl->GetShaderiv(s, GL_INFO_LOG_LENGTH, &len);
+    char log[768] = "";
+    gl->GetShaderInfoLog(s, sizeof log, NULL, log);
+    hfx_rt_fail(sh->dev, HFX_ERR_GL, "%s: GL refused the %s shader: %s", sh->fx->source_name ? sh->fx->source_name : "effect",
+                what, log);
+    gl->DeleteShader(s);
+    return 0;
+}
+
+static int link_program(hfx_shared *sh, hfx_rt_program *p, const hfx_fx_program *fp, GLuint vs, GLuint fs) {
+    hfx_gl *gl = &sh->dev->gl;
+    p->object = gl->CreateProgram();
+    if (!p->object) return hfx_rt_fail(sh->dev, HFX_ERR_GL, "glCreateProgram failed");
+    gl->AttachShader(p->object, vs);
+    gl->AttachShader(p->object, fs);
+    /* GLSL 330 carries layout qualifiers; GLSL 110 needs the locations bound before linking. */
+    for (uint32_t a = 0; a < fp->attribute_count; a++)
+        if (fp->attributes[a].glsl_name && fp->attributes[a].location >= 0)
+            gl->BindAttribLocation(p->object, (GLuint)fp->attributes[a].location, fp->attributes[a].glsl_name);
+    gl->LinkProgram(p->object);
+    gl->DetachShader(p->object, vs);
+    gl->DetachShader(p->object, fs);
+    GLint ok = 0;
+    gl->GetProgramiv(p->object, GL_LINK_STATUS, &ok);
+    if (ok) return HFX_OK;
+    char log[768] = "";
+    gl->GetProgramInfoLog(p->object, sizeof log, NULL, log);
+    return hfx_rt_fail(sh->dev, HFX_ERR_GL, "%s: GL refused to link a program: %s",
+                       sh->fx->source_name ? sh->fx->source_name : "effect", log);
+}
+
+static int read_active(build *b) {
+    hfx_gl *gl = &b->sh->dev->gl;
+    gl->GetProgramiv(b->p->object, GL_ACTIVE_UNIFORMS, &b->active_count);
+    if (b->active_count <= 0) return HFX_OK;
+    b->active = calloc((size_t)b->active_count, sizeof *b->active);
+    if (!b->active) return HFX_ERR_MEMORY;
+    for (GLint i = 0; i < b->active_count; i++) {
+        active_uniform *u = &b->active[i];
+        gl->GetActiveUniform(b->p->object, (GLuint)i, sizeof u->name, NULL, &u->size, &u->type, u->name);
+        char *bracket = strstr(u->name, "[0]");
+        if (bracket && bracket[3] == '\0') *bracket = '\0'; /* arrays report "name[0]" */
+    }
+    return HFX_OK;
+}
+
+static const active_uniform *find_active(const build *b, const char *name) {
+    for (GLint i = 0; i < b->active_count; i++)
+        if (strcmp(b->active[i].name, name) == 0) return &b->active[i];
+    return NULL;
+}
+
+/* The glUniform* for a GLSL type, and how many components one element has. */
+static int upload_fn(GLenum type, uint16_t *fn, uint32_t *comps, int *is_int) {
+    *is_int = 0;
+    switch (type) {
+    case GL_FLOAT: *fn = UP_F1, *comps = 1; return 1;
+    case GL_FLOAT_VEC2: *fn = UP_F2, *comps = 2; return 1;
+    case GL_FLOAT_VEC3: *fn = UP_F3, *comps = 3; return 1;
+    case GL_FLOAT_VEC4: *fn = UP_F4, *comps = 4; return 1;
+    case GL_INT: case GL_BOOL: *fn = UP_I1, *comps = 1, *is_int = 1; return 1;
+    case GL_INT_VEC2: case GL_BOOL_VEC2: *fn = UP_I2, *comps = 2, *is_int = 1; return 1;
+    case GL_INT_VEC3: case GL_BOOL_VEC3: *fn = UP_I3, *comps = 3, *is_int = 1; return 1;
+    case GL_INT_VEC4: case GL_BOOL_VEC4: *fn = UP_I4, *comps = 4, *is_int = 1; return 1;
+    case GL_FLOAT_MAT2: *fn = UP_M2, *comps = 4; return 1;
+    case GL_FLOAT_MAT3: *fn = UP_M3, *comps = 9; return 1;
+    case GL_FLOAT_MAT4: *fn = UP_M4, *comps = 16; return 1;
+    case GL_FLOAT_MAT2x3: *fn = UP_M2x3, *comps = 6; return 1;
+    case GL_FLOAT_MAT3x2: *fn = UP_M3x2, *comps = 6; return 1;
+    case GL_FLOAT_MAT2x4: *fn = UP_M2x4, *comps = 8; return 1;
+    case GL_FLOAT_MAT4x2: *fn = UP_M4x2, *comps = 8; return 1;
+    case GL_FLOAT_MAT3x4: *fn = UP_M3x4, *comps = 12; return 1;
+    case GL_FLOAT_MAT4x3: *fn = UP_M4x3, *comps = 12; return 1;
+    default: return 0;
+    }
+}
+
+static int add_upload(build *b, const char *name, const hfx_fx_param *p, uint32_t count) {
+    const active_uniform *u = find_active(b, name);
+    if (!u) return HFX_OK; /* optimised out by GL */
+    hfx_upload up;
+    memset(&up, 0, sizeof up);
+    uint32_t comps;
+    int is_int;
+    uint32_t elem_words = p->elements ? p->words / p->elements : p->words;
+    if (!upload_fn(u->type, &up.fn, &comps, &is_int) || comps != elem_words) {
+        hfx_shared_warn(b->sh, NULL, "uniform '%s': its GLSL type does not match parameter '%s'; not uploaded", name,
+                        p->name ? p->name : "");
+        return HFX_OK;
+    }
+    char loc_name[300];
+    snprintf(loc_name, sizeof loc_name, "%s%s", name, u->size > 1 || p->elements ? "[0]" : "");
+    up.location = b->sh->dev->gl.GetUniformLocation(b->p->object, loc_name);
+    if (up.location < 0) up.location = b->sh->dev->gl.GetUniformLocation(b->p->object, name);
+    if (up.location < 0) return HFX_OK;
+    up.count = count < (uint32_t)u->size ? count : (uint32_t)u->size;
+    up.offset = p->offset;
+    up.words = up.count * comps;
+    up.convert = (uint16_t)(is_int != (p->type != HFX_TYPE_FLOAT));
+    if (b->p->upload_count == b->upload_cap) {
+        uint32_t cap = b->upload_cap ? b->upload_cap * 2 : 8;
+        hfx_upload *n = realloc(b->p->uploads, cap * sizeof *n);
+        if (!n) return HFX_ERR_MEMORY;
+        b->p->uploads = n;
+        b->upload_cap = cap;
+    }
+    b->p->uploads[b->p->upload_count++] = up;
+    if (up.convert && up.words > b->sh->dev->scratch_size) {
+        float *s = realloc(b->sh->dev->scratch, up.words * sizeof *s);
+        if (!s) return HFX_ERR_MEMORY;
+        b->sh->dev->scratch = s;
+        b->sh->dev->scratch_size = up.words;
+    }
+    return HFX_OK;
+}
+
+static int add_param(build *b, uint32_t index, const char *path);
+
+static int add_struct(build *b, const hfx_fx_param *s, const char *path) {
+    for (uint32_t m = 0; m < s->child_count; m++) {
+        const hfx_fx_param *member = &b->sh->fx->params[s->first_child + m];
+        char sub[300];
+        snprintf(sub, sizeof sub, "%s.%s", path, member->glsl_name ? member->glsl_name : member->name);
+        int rc = add_param(b, s->first_child + m, sub);
+        if (rc) return rc;
+    }
+    return HFX_OK;
+}
+
+/* A parameter's uploads: one call for a value or an array of values, one per leaf of a struct. */
+static int add_param(build *b, uint32_t index, const char *path) {
+    const hfx_fx_param *p = &b->sh->fx->params[index];
+    if (p->klass == HFX_CLASS_OBJECT) return HFX_OK;
+    if (p->elements && p->child_count && b->sh->fx->params[p->first_child].klass == HFX_CLASS_STRUCT) {
+        for (uint32_t e = 0; e < p->child_count; e++) {
+            char sub[300];
+            snprintf(sub, sizeof sub, "%s[%u]", path, (unsigned)e);
+            int rc = add_struct(b, &b->sh->fx->params[p->first_child + e], sub);
+            if (rc) return rc;
+        }
+        return HFX_OK;
+    }
+    if (p->klass == HFX_CLASS_STRUCT) return add_struct(b, p, path);
+    return add_upload(b, path, p, p->elements ? p->elements : 1);
+}
+
+static int resolve_uniforms(build *b, const hfx_fx_program *fp) {
+    hfx_rt_program *p = b->p;
+    uint32_t tops = b->sh->fx->top_param_count;
+    p->uniforms = calloc(fp->uniform_count ? fp->uniform_count : 1, sizeof *p->uniforms);
+    p->uploaded = calloc(fp->uniform_count ? fp->uniform_count : 1, sizeof *p->uploaded);
+    p->uniform_of = malloc((tops ? tops : 1) * sizeof *p->uniform_of);
+    if (!p->uniforms || !p->uploaded || !p->uniform_of) return HFX_ERR_MEMORY;
+    for (uint32_t i = 0; i < tops; i++) p->uniform_of[i] = HFX_NONE;
+    for (uint32_t i = 0; i < fp->uniform_count; i++) {
+        uint32_t param = fp->uniforms[i].param;
+        if (param >= b->sh->fx->top_param_count || !b->sh->fx->params[param].glsl_name) continue;
+        if (p->uniform_of[param] != HFX_NONE) continue; /* listed twice */
+        p->uniform_of[param] = p->uniform_count;
+        hfx_rt_uniform *u = &p->uniforms[p->uniform_count++];
+        u->param = param;
+        u->first_upload = p->upload_count;
+        int rc = add_param(b, param, b->sh->fx->params[param].glsl_name);
+        if (rc) return rc;
+        u->upload_count = p->upload_count - u->first_upload;
+    }
+    return HFX_OK;
+}
+
+/* Sampler uniforms never change unit: set once, with the program bound briefly. */
+static void set_sampler_units(hfx_shared *sh, hfx_rt_program *p, const hfx_fx_program *fp) {
+    hfx_gl *gl = &sh->dev->gl;
+    GLint current = 0;
+    gl->GetIntegerv(GL_CURRENT_PROGRAM, &current);
+    gl->UseProgram(p->object);
+    for (uint32_t i = 0; i < fp->sampler_count; i++) {
+        if (!fp->samplers[i].glsl_name) continue;
+        GLint loc = gl->GetUniformLocation(p->object, fp->samplers[i].glsl_name);
+        if (loc >= 0) gl->Uniform1i(loc, fp->samplers[i].unit);
+    }
+    p->alpha_func_loc = gl->GetUniformLocation(p->object, "hfx_alpha_func");
+    p->alpha_ref_loc = gl->GetUniformLocation(p->object, "hfx_alpha_ref");
+    p->alpha_func = -1;
+    p->alpha_ref = -1.0f;
+    gl->UseProgram((GLuint)current);
+}
+
+int hfx_rt_program_build(hfx_shared *sh, uint32_t index, hfx_target target) {
+    const hfx_fx_program *fp = &sh->fx->programs[index];
+    hfx_rt_program *p = &sh->programs[index];
+    const char *vs_src = fp->code[HFX_STAGE_VERTEX][target].data;
+    const char *fs_src = fp->code[HFX_STAGE_FRAGMENT][target].data;
+    if (!vs_src || !fs_src)
+        return hfx_rt_fail(sh->dev, HFX_ERR_LOAD, "%s: program %u has no code for the requested GLSL target",
+                           sh->fx->source_name ? sh->fx->source_name : "effect", (unsigned)index);
+    GLuint vs = compile_stage(sh, GL_VERTEX_SHADER, vs_src, "vertex");
+    GLuint fs = vs ? compile_stage(sh, GL_FRAGMENT_SHADER, fs_src, "fragment") : 0;
+    int rc = vs && fs ? link_program(sh, p, fp, vs, fs) : HFX_ERR_GL;
+    if (vs) sh->dev->gl.DeleteShader(vs);
+    if (fs) sh->dev->gl.DeleteShader(fs);
+    if (rc) return rc;
+    build b = {sh, p, NULL, 0, 0};
+    rc = read_active(&b);
+    if (!rc) rc = resolve_uniforms(&b, fp);
+    free(b.active);
+    if (rc) return rc == HFX_ERR_MEMORY ? hfx_rt_fail(sh->dev, rc, "out of memory") : rc;
+    set_sampler_units(sh, p, fp);
+    return HFX_OK;
+}
+
+void hfx_rt_program_free(hfx_device *dev, hfx_rt_program *p) {
+    if (p->object) dev->gl.DeleteProgram(p->object);
+    free(p->uniforms);
+    free(p->uploaded);
+    free(p->uniform_of);
+    free(p->uploads);
+    memset(p, 0, sizeof *p);
+}
+
+static const void *upload_data(hfx_device *dev, const hfx_upload *up, const uint32_t *src) {
+    if (!up->convert) return src;
+    /* GLSL declared int where the data is float, or the reverse: convert through scratch. */
+    int to_int = up->fn >= UP_I1 && up->fn <= UP_I4;
+    for (uint32_t i = 0; i < up->words; i++) {
+        if (to_int) {
+            float f;
+            memcpy(&f, &src[i], sizeof f);
+            int32_t v = (int32_t)f;
+            memcpy(&dev->scratch[i], &v, sizeof v);
+        } else {
+            dev->scratch[i] = (float)(int32_t)src[i];
+        }
+    }
+    return dev->scratch;
+}
+
+static void upload(hfx_device *dev, const hfx_upload *up, const uint32_t *values) {
+    hfx_gl *gl = &dev->gl;
+    const void *d = upload_data(dev, up, values + up->offset);
+    GLsizei n = (GLsizei)up->count;
+    switch (up->fn) {
+    case UP_F1: gl->Uniform1fv(up->location, n, d); break;
+    case UP_F2: gl->Uniform2fv(up->location, n, d); break;
+    case UP_F3: gl->Uniform3fv(up->location, n, d); break;
+    case UP_F4: gl->Uniform4fv(up->location, n, d); break;
+    case UP_I1: gl->Uniform1iv(up->location, n, d); break;
+    case UP_I2: gl->Uniform2iv(up->location, n, d); break;
+    case UP_I3: gl->Uniform3iv(up->location, n, d); break;
+    case UP_I4: gl->Uniform4iv(up->location, n, d); break;
+    case UP_M2: gl->UniformMatrix2fv(up->location, n, GL_FALSE, d); break;
+    case UP_M3: gl->UniformMatrix3fv(up->location, n, GL_FALSE, d); break;
+    case UP_M4: gl->UniformMatrix4fv(up->location, n, GL_FALSE, d); break;
+    case UP_M2x3: gl->UniformMatrix2x3fv(up->location, n, GL_FALSE, d); break;
+    case UP_M3x2: gl->UniformMatrix3x2fv(up->location, n, GL_FALSE, d); break;
+    case UP_M2x4: gl->UniformMatrix2x4fv(up->location, n, GL_FALSE, d); break;
+    case UP_M4x2: gl->UniformMatrix4x2fv(up->location, n, GL_FALSE, d); break;
+    case UP_M3x4: gl->UniformMatrix3x4fv(up->location, n, GL_FALSE, d); break;
+    case UP_M4x3: gl->UniformMatrix4x3fv(up->location, n, GL_FALSE, d); break;
+    default: break;
+    }
+}
+
+/* Uploads the parameters whose version differs from the one this program last received.
+ * Versions are device-wide stamps, so clones sharing the program stay correct. */
+static void upload_if_changed(hfx_effect *fx, hfx_rt_program *p, uint32_t i) {
+    const hfx_rt_uniform *u = &p->uniforms[i];
+    uint64_t stamp = fx->stamps[u->param];
+    if (p->uploaded[i] == stamp) return;
+    for (uint32_t k = 0; k < u->upload_count; k++) upload(fx->dev, &p->uploads[u->first_upload + k], fx->values);
+    p->uploaded[i] = stamp;
+}
+
+void hfx_rt_upload_uniforms(hfx_effect *fx, hfx_rt_program *p) {
+    if (p->memo_effect == fx->id && p->memo_epoch == fx->epoch) {
+        /* the same instance as last time: only what its log added since */
+        for (uint32_t k = p->memo_seen; k < fx->log_len; k++) {
+            uint32_t i = p->uniform_of[fx->log[k]];
+            if (i != HFX_NONE) upload_if_changed(fx, p, i);
+        }
+    } else {
+        for (uint32_t i = 0; i < p->uniform_count; i++) upload_if_changed(fx, p, i);
+    }
+    p->memo_effect = fx->id;
+    p->memo_epoch = fx->epoch;
+    p->memo_seen = fx->log_len;
+    if (fx->log_len > fx->high_water) fx->high_water = fx->log_len;
+}

@@ -1,0 +1,123 @@
+/* sampler.c: D3D9 sampler states as GL sampler objects.
+ *
+ * - MinFilter + MipFilter make GL_TEXTURE_MIN_FILTER (MipFilter None: no mipmapping);
+ *   Anisotropic filters linearly and sets GL_TEXTURE_MAX_ANISOTROPY to MaxAnisotropy when
+ *   the context has anisotropic filtering; PyramidalQuad / GaussianQuad filter linearly.
+ * - MaxMipLevel is D3D's most detailed mip level used (0 = the largest), which is a clamp of
+ *   the level of detail from below: GL_TEXTURE_MIN_LOD, not GL_TEXTURE_MAX_LEVEL.
+ * - SRGBTexture: GL decodes sRGB per texture format, not per sampler. With
+ *   EXT_texture_sRGB_decode the sampler sets GL_TEXTURE_SRGB_DECODE_EXT (DECODE for TRUE,
+ *   SKIP_DECODE for FALSE), so an sRGB-format texture behaves as D3D9 asks; a texture with a
+ *   linear format is never decoded, so SRGBTexture = TRUE needs the application to create
+ *   its textures with an sRGB internal format (GL_SRGB8_ALPHA8). */
+#include <stdlib.h>
+#include <string.h>
+
+#include "internal.h"
+
+void hfx_sampler_desc_default(hfx_sampler_desc *d) {
+    memset(d, 0, sizeof *d);
+    d->address[0] = d->address[1] = d->address[2] = 1; /* Wrap */
+    d->mag = d->min = 1;                               /* Point */
+    d->mip = 0;                                        /* None */
+    d->max_anisotropy = 1;
+}
+
+void hfx_sampler_desc_apply(hfx_sampler_desc *d, uint32_t id, const hfx_rs_value *v) {
+    switch (id) {
+    case HFX_ST_ADDRESSU: d->address[0] = v->i; break;
+    case HFX_ST_ADDRESSV: d->address[1] = v->i; break;
+    case HFX_ST_ADDRESSW: d->address[2] = v->i; break;
+    case HFX_ST_MAGFILTER: d->mag = v->i; break;
+    case HFX_ST_MINFILTER: d->min = v->i; break;
+    case HFX_ST_MIPFILTER: d->mip = v->i; break;
+    case HFX_ST_MAXMIPLEVEL: d->max_mip_level = v->i; break;
+    case HFX_ST_MAXANISOTROPY: d->max_anisotropy = v->i; break;
+    case HFX_ST_SRGBTEXTURE: d->srgb = v->i != 0, d->srgb_set = 1; break;
+    case HFX_ST_MIPMAPLODBIAS: d->lod_bias = v->f[0]; break;
+    case HFX_ST_BORDERCOLOR: memcpy(d->border, v->f, sizeof d->border); break;
+    default: break;
+    }
+}
+
+static GLint gl_address(int32_t d3d) {
+    switch (d3d) {
+    case 2: return GL_MIRRORED_REPEAT;
+    case 3: return GL_CLAMP_TO_EDGE;
+    case 4: return GL_CLAMP_TO_BORDER;
+    case 5: return GL_MIRROR_CLAMP_TO_EDGE;
+    default: return GL_REPEAT;
+    }
+}
+
+static int linear(int32_t f) { return f >= 2; } /* Linear, Anisotropic, PyramidalQuad, GaussianQuad... */
+
+static GLint gl_min_filter(int32_t min, int32_t mip) {
+    if (mip == 0) return linear(min) ? GL_LINEAR : GL_NEAREST;
+    if (mip == 1) return linear(min) ? GL_LINEAR_MIPMAP_NEAREST : GL_NEAREST_MIPMAP_NEAREST;
+    return linear(min) ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST_MIPMAP_LINEAR;
+}
+
+static float anisotropy(const hfx_device *dev, const hfx_sampler_desc *d) {
+    if (d->min != 3 && d->mag != 3) return 1.0f;
+    float a = d->max_anisotropy < 1 ? 1.0f : (float)d->max_anisotropy;
+    return a > dev->max_anisotropy ? dev->max_anisotropy : a;
+}
+
+/* Sets the GL parameters where want differs from have (all of them when have is NULL). */
+static void write_desc(hfx_device *dev, GLuint s, const hfx_sampler_desc *have, const hfx_sampler_desc *want) {
+    static const GLenum wrap[3] = {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R};
+    hfx_gl *gl = &dev->gl;
+    for (int i = 0; i < 3; i++)
+        if (!have || have->address[i] != want->address[i]) gl->SamplerParameteri(s, wrap[i], gl_address(want->address[i]));
+    if (!have || have->mag != want->mag) gl->SamplerParameteri(s, GL_TEXTURE_MAG_FILTER, linear(want->mag) ? GL_LINEAR : GL_NEAREST);
+    if (!have || have->min != want->min || have->mip != want->mip)
+        gl->SamplerParameteri(s, GL_TEXTURE_MIN_FILTER, gl_min_filter(want->min, want->mip));
+    if (dev->max_anisotropy > 0 && (!have || anisotropy(dev, have) != anisotropy(dev, want)))
+        gl->SamplerParameterf(s, GL_TEXTURE_MAX_ANISOTROPY, anisotropy(dev, want));
+    if (!have || have->max_mip_level != want->max_mip_level)
+        gl->SamplerParameterf(s, GL_TEXTURE_MIN_LOD, (float)want->max_mip_level);
+    if (!have || have->lod_bias != want->lod_bias) gl->SamplerParameterf(s, GL_TEXTURE_LOD_BIAS, want->lod_bias);
+    if (!have || memcmp(have->border, want->border, sizeof want->border) != 0)
+        gl->SamplerParameterfv(s, GL_TEXTURE_BORDER_COLOR, want->border);
+    if (dev->srgb_decode && want->srgb_set && (!have || have->srgb != want->srgb || !have->srgb_set))
+        gl->SamplerParameteri(s, GL_TEXTURE_SRGB_DECODE_EXT, want->srgb ? GL_DECODE_EXT : GL_SKIP_DECODE_EXT);
+}
+
+int hfx_rt_sampler_create(hfx_shared *sh, hfx_rt_sampler *s, const hfx_sampler_desc *base,
+                          const hfx_fx_state *const *dyn, uint32_t dyn_count) {
+    hfx_device *dev = sh->dev;
+    memset(s, 0, sizeof *s);
+    s->base = *base;
+    s->current = *base;
+    if (dyn_count) {
+        s->dynamic = malloc(dyn_count * sizeof *s->dynamic);
+        if (!s->dynamic) return HFX_ERR_MEMORY;
+        memcpy(s->dynamic, dyn, dyn_count * sizeof *s->dynamic);
+        s->dynamic_count = dyn_count;
+    }
+    dev->gl.GenSamplers(1, &s->object);
+    if (!s->object) return HFX_ERR_GL;
+    write_desc(dev, s->object, NULL, base);
+    return HFX_OK;
+}
+
+/* States that read parameters: recompute from the base and write what changed. */
+void hfx_rt_sampler_update(hfx_effect *fx, hfx_rt_sampler *s) {
+    if (!s->dynamic_count) return;
+    hfx_sampler_desc want = s->base;
+    for (uint32_t i = 0; i < s->dynamic_count; i++) {
+        hfx_rs_value v;
+        hfx_rs_resolve(fx, s->dynamic[i], &v);
+        hfx_sampler_desc_apply(&want, s->dynamic[i]->id, &v);
+    }
+    if (memcmp(&want, &s->current, sizeof want) == 0) return;
+    write_desc(fx->dev, s->object, &s->current, &want);
+    s->current = want;
+}
+
+void hfx_rt_sampler_free(hfx_device *dev, hfx_rt_sampler *s) {
+    if (s->object) dev->gl.DeleteSamplers(1, &s->object);
+    free(s->dynamic);
+    memset(s, 0, sizeof *s);
+}

@@ -1,0 +1,284 @@
+/* The decorated tree the checker hands to codegen (ast.h's invariants): types, implicit
+ * casts, resolved calls and overloads, swizzle components, flattened initializers. The
+ * expected dumps are worked out by hand from HLSL's rules. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "check_util.h"
+#include "test.h"
+
+/* The dump of statement i of function fn in src, which must check without error. */
+static char *stmt_of(const char *src, const char *fn, unsigned i) {
+    ckt_result *r = ckt_run(src);
+    if (!r->ok) {
+        char *t = ckt_text(r);
+        fprintf(stderr, "unexpected diagnostics:\n%s", t);
+        free(t);
+    }
+    char *s = ckt_dump_stmt(r, fn, i);
+    ckt_free(r);
+    return s;
+}
+
+#define EXPECT_STMT(src, fn, i, expected) do { char *s_ = stmt_of(src, fn, i); CHECK_STR(s_, expected); free(s_); } while (0)
+
+static const char *MUL_SRC =
+    "float4x4 M; float3x4 N; float4x3 P; float3 v3; float4 v4; float s;\n"
+    "float4 f1() { return mul(v3, M); }\n"
+    "float3 f2() { return mul(v4, P); }\n"
+    "float3 f3() { return mul(N, v4); }\n"
+    "float f4() { return mul(v3, v3); }\n"
+    "float4 f5() { return mul(s, v4); }\n"
+    "float3x3 f6() { return mul(N, P); }\n"
+    "float4 f7() { return mul(v4, N); }\n"
+    "float3x4 f8() { return mul(2, N); }\n"
+    "float4x4 f9() { return mul(M, M); }\n";
+
+static void mul_shapes(void) {
+    /* float3 * float4x4: the matrix is clamped to its first three rows, the result has 4 columns */
+    EXPECT_STMT(MUL_SRC, "f1", 0, "(#mul:float4 v3:float3 (implicit:float3x4 M:float4x4))");
+    EXPECT_STMT(MUL_SRC, "f2", 0, "(#mul:float3 v4:float4 P:float4x3)");
+    EXPECT_STMT(MUL_SRC, "f3", 0, "(#mul:float3 N:float3x4 v4:float4)");
+    EXPECT_STMT(MUL_SRC, "f4", 0, "(#mul:float v3:float3 v3:float3)");
+    EXPECT_STMT(MUL_SRC, "f5", 0, "(#mul:float4 s:float v4:float4)");
+    EXPECT_STMT(MUL_SRC, "f6", 0, "(#mul:float3x3 N:float3x4 P:float4x3)");
+    /* float4 * float3x4: the vector is clamped to float3 */
+    EXPECT_STMT(MUL_SRC, "f7", 0, "(#mul:float4 (implicit:float3 v4:float4) N:float3x4)");
+    EXPECT_STMT(MUL_SRC, "f8", 0, "(#mul:float3x4 (implicit:float 2:int) N:float3x4)");
+    EXPECT_STMT(MUL_SRC, "f9", 0, "(#mul:float4x4 M:float4x4 M:float4x4)");
+    /* the seeds' pattern: mul into a float3 warns once, for the assignment */
+    char *d = ckt_diags("float4x4 World;\nfloat3 f(float3 n) { float3 r = mul(n, World); return r; }\n");
+    CHECK_STR(d, "t.fx(2,33): warning X3206: implicit truncation of vector type\n");
+    free(d);
+    EXPECT_STMT("float4x4 World;\nfloat3 f(float3 n) { float3 r = mul(n, World); return r; }\n", "f", 0,
+                "(implicit:float3 (#mul:float4 n:float3 (implicit:float3x4 World:float4x4)))");
+}
+
+static const char *OPS_SRC =
+    "float3 a; float4 b; int i;\n"
+    "float3 g1() { return a - b; }\n"
+    "float4 g2() { return b * 2; }\n"
+    "float g3() { return i + 1.5; }\n"
+    "bool3 g4() { return a < 1; }\n"
+    "float4 g5() { return b.x ? b : 0; }\n"
+    "bool g6() { return a.x && i; }\n"
+    "float3 g7() { return -a; }\n"
+    "int g8() { return -true; }\n"
+    "float4 g9() { return b < 0.5 ? 0 : b; }\n"
+    "int g10() { return i << 2; }\n";
+
+static void operators(void) {
+    EXPECT_STMT(OPS_SRC, "g1", 0, "(-:float3 a:float3 (implicit:float3 b:float4))");
+    EXPECT_STMT(OPS_SRC, "g2", 0, "(*:float4 b:float4 (implicit:float4 2:int))");
+    EXPECT_STMT(OPS_SRC, "g3", 0, "(+:float (implicit:float i:int) 1.5:float)");
+    EXPECT_STMT(OPS_SRC, "g4", 0, "(<:bool3 a:float3 (implicit:float3 1:int))");
+    EXPECT_STMT(OPS_SRC, "g5", 0, "(?:float4 (implicit:bool (.0:float b:float4)) b:float4 (implicit:float4 0:int))");
+    EXPECT_STMT(OPS_SRC, "g6", 0, "(&&:bool (implicit:bool (.0:float a:float3)) (implicit:bool i:int))");
+    EXPECT_STMT(OPS_SRC, "g7", 0, "(neg:float3 a:float3)");
+    EXPECT_STMT(OPS_SRC, "g8", 0, "(neg:int (implicit:int true:bool))");
+    /* a componentwise ternary: the condition is a bool4 */
+    EXPECT_STMT(OPS_SRC, "g9", 0,
+                "(?:float4 (<:bool4 b:float4 (implicit:float4 0.5:float)) (implicit:float4 0:int) b:float4)");
+    EXPECT_STMT(OPS_SRC, "g10", 0, "(<<:int i:int 2:int)");
+}
+
+static const char *MEMBER_SRC =
+    "struct S { float3 p; float4 c[2]; };\n"
+    "S s; float4x4 m; float4 v;\n"
+    "float3 h1() { return s.p; }\n"
+    "float4 h2() { return s.c[1]; }\n"
+    "float4 h3() { return m[2]; }\n"
+    "float h4() { return m._m12; }\n"
+    "float2 h5() { return m._11_44; }\n"
+    "float4 h6() { return v.wzyx; }\n"
+    "float h7() { return v[3]; }\n"
+    "float3 h8() { return v.rgb; }\n"
+    "float h9() { return m[1][2]; }\n";
+
+static void members_and_indexing(void) {
+    EXPECT_STMT(MEMBER_SRC, "h1", 0, "(.f0:float3 s:S)");
+    EXPECT_STMT(MEMBER_SRC, "h2", 0, "([]:float4 (.f1:float4[2] s:S) 1:int)");
+    EXPECT_STMT(MEMBER_SRC, "h3", 0, "([]:float4 m:float4x4 2:int)");          /* a row */
+    EXPECT_STMT(MEMBER_SRC, "h4", 0, "(.6:float m:float4x4)");                 /* row 1, col 2 */
+    EXPECT_STMT(MEMBER_SRC, "h5", 0, "(.0,15:float2 m:float4x4)");             /* one-based */
+    EXPECT_STMT(MEMBER_SRC, "h6", 0, "(.3,2,1,0:float4 v:float4)");
+    EXPECT_STMT(MEMBER_SRC, "h7", 0, "([]:float v:float4 3:int)");
+    EXPECT_STMT(MEMBER_SRC, "h8", 0, "(.0,1,2:float3 v:float4)");
+    EXPECT_STMT(MEMBER_SRC, "h9", 0, "([]:float ([]:float4 m:float4x4 1:int) 2:int)");
+}
+
+static const char *CALL_SRC =
+    "float f(float x) { return x; }\n"
+    "float f(float4 x) { return x.x; }\n"
+    "float k(float a, float b = 2) { return a + b; }\n"
+    "sampler s;\n"
+    "float u1() { return f(1.0); }\n"
+    "float u2() { return f(float4(1, 2, 3, 4.0)); }\n"
+    "float u3() { return f(1); }\n"
+    "float u4() { return k(1); }\n"
+    "float4 u5(float2 uv) { return tex2D(s, uv); }\n"
+    "float u6(float3 n) { return length(n) + dot(n, 2); }\n"
+    "float3 u7(float3 a, float3 b) { return lerp(a, b, 0.5); }\n"
+    "float u8(float x) { return pow(x, 2); }\n";
+
+static void calls_and_overloads(void) {
+    EXPECT_STMT(CALL_SRC, "u1", 0, "(f(float):float 1:float)");
+    EXPECT_STMT(CALL_SRC, "u2", 0,
+                "(f(float4):float (float4:float4 (implicit:float 1:int) (implicit:float 2:int) (implicit:float 3:int) 4:float))");
+    /* int -> float beats int -> float4 (a splat) */
+    EXPECT_STMT(CALL_SRC, "u3", 0, "(f(float):float (implicit:float 1:int))");
+    /* a defaulted parameter may be left out */
+    EXPECT_STMT(CALL_SRC, "u4", 0, "(k(float,float):float (implicit:float 1:int))");
+    /* a generic sampler feeds tex2D as it is */
+    EXPECT_STMT(CALL_SRC, "u5", 0, "(#tex2D:float4 s:sampler uv:float2)");
+    EXPECT_STMT(CALL_SRC, "u6", 0, "(+:float (#length:float n:float3) (#dot:float n:float3 (implicit:float3 2:int)))");
+    EXPECT_STMT(CALL_SRC, "u7", 0, "(#lerp:float3 a:float3 b:float3 (implicit:float3 0.5:float))");
+    EXPECT_STMT(CALL_SRC, "u8", 0, "(#pow:float x:float (implicit:float 2:int))");
+    /* a float3 argument picks f(float) (a truncation) since float3 -> float4 is impossible */
+    char *d = ckt_diags("float f(float x) { return x; }\nfloat f(float4 x) { return x.x; }\nfloat g(float3 v) { return f(v); }\n");
+    CHECK_STR(d, "t.fx(3,30): warning X3206: implicit truncation of vector type\n");
+    free(d);
+}
+
+static void sampler_parameters(void) {
+    /* a generic sampler passed to a sampler2D parameter stays as it is (no cast node) */
+    const char *src = "sampler s;\nfloat4 look(sampler2D t, float2 uv) { return tex2D(t, uv); }\n"
+                      "float4 f(float2 uv) { return look(s, uv); }\n";
+    EXPECT_STMT(src, "f", 0, "(look(sampler2D,float2):float4 s:sampler uv:float2)");
+    ckt_result *r = ckt_run(src);
+    char why[256];
+    CHECK_INT(ckt_invariants(r, why, sizeof why), 0);
+    ckt_free(r);
+}
+
+static void initializers(void) {
+    ckt_result *r = ckt_run(
+        "float4 c = {0.07F, 0.07F, 0.07F, 1};\n"
+        "float ks = {0.05F};\n"
+        "float2x2 m2 = {float2(1, 2), 3, 4};\n"
+        "float a[] = {1, 2, 3};\n"
+        "struct L { float3 d; int on; };\n"
+        "L lights[2] = {{1, 2, 3, true}, {4, 5, 6, 0}};\n"
+        "float4 z = 0;\n");
+    CHECK(r->ok);
+    char *s = ckt_dump(ckt_find(r, "c")->init);
+    CHECK_STR(s, "({}:float4 0.07:float 0.07:float 0.07:float (implicit:float 1:int))");
+    free(s);
+    s = ckt_dump(ckt_find(r, "ks")->init);
+    CHECK_STR(s, "({}:float 0.05:float)");
+    free(s);
+    s = ckt_dump(ckt_find(r, "m2")->init);
+    CHECK_STR(s, "({}:float2x2 (.0:float (float2:float2 (implicit:float 1:int) (implicit:float 2:int))) "
+                 "(.1:float (float2:float2 (implicit:float 1:int) (implicit:float 2:int))) "
+                 "(implicit:float 3:int) (implicit:float 4:int))");
+    free(s);
+    hfx_decl *a = ckt_find(r, "a");
+    CHECK_INT(a->type->kind, TY_ARRAY);
+    CHECK_INT(a->type->array_len, 3);
+    s = ckt_dump(ckt_find(r, "lights")->init);
+    CHECK_STR(s, "({}:L[2] (implicit:float 1:int) (implicit:float 2:int) (implicit:float 3:int) (implicit:int true:bool) "
+                 "(implicit:float 4:int) (implicit:float 5:int) (implicit:float 6:int) 0:int)");
+    free(s);
+    s = ckt_dump(ckt_find(r, "z")->init);
+    CHECK_STR(s, "(implicit:float4 0:int)");
+    free(s);
+    ckt_free(r);
+}
+
+static void array_sizes(void) {
+    ckt_result *r = ckt_run("static const int N = 3;\nfloat a[N * 2];\n#define MAX 5\nfloat b[MAX];\n");
+    CHECK(r->ok);
+    CHECK_INT(ckt_find(r, "a")->type->array_len, 6);
+    CHECK_INT(ckt_find(r, "b")->type->array_len, 5);
+    ckt_free(r);
+}
+
+static void statements(void) {
+    const char *src =
+        "int i; float4 v;\n"
+        "float4 f()\n"
+        "{\n"
+        "    if (i) return v;\n"
+        "    for (int k = 0; k < i; k++) v += 1;\n"
+        "    while (v.x) v.x -= 1;\n"
+        "    return 1;\n"
+        "}\n";
+    ckt_result *r = ckt_run(src);
+    CHECK(r->ok);
+    char *s = ckt_dump(ckt_stmt(r, "f", 0)->expr);
+    CHECK_STR(s, "(implicit:bool i:int)");
+    free(s);
+    hfx_stmt *loop = ckt_stmt(r, "f", 1);
+    s = ckt_dump(loop->expr);
+    CHECK_STR(s, "(<:bool k:int i:int)"); /* already a bool: no cast */
+    free(s);
+    s = ckt_dump(loop->then_stmt->expr);
+    CHECK_STR(s, "(+=:float4 v:float4 (implicit:float4 1:int))");
+    free(s);
+    s = ckt_dump(ckt_stmt(r, "f", 2)->expr);
+    CHECK_STR(s, "(implicit:bool (.0:float v:float4))");
+    free(s);
+    s = ckt_dump(ckt_stmt(r, "f", 3)->expr);
+    CHECK_STR(s, "(implicit:float4 1:int)");
+    free(s);
+    /* the global written by a shader is marked */
+    CHECK(ckt_find(r, "v")->assigned);
+    CHECK(!ckt_find(r, "i")->assigned);
+    CHECK(ckt_find(r, "v")->is_global);
+    CHECK_INT(ckt_find(r, "i")->index, 0);
+    CHECK_INT(ckt_find(r, "v")->index, 1);
+    ckt_free(r);
+}
+
+static void entry_points_and_states(void) {
+    ckt_result *r = ckt_run(
+        "texture DiffuseTexture;\n"
+        "sampler DiffuseSampler = sampler_state { Texture = (DiffuseTexture); AddressU = CLAMP; };\n"
+        "struct O { float4 p : POSITION; };\n"
+        "O vs() { O o = (O)0; return o; }\n"
+        "float4 ps(uniform bool t) : COLOR { return t; }\n"
+        "technique T { pass P { VertexShader = compile vs_2_0 vs(); PixelShader = compile ps_2_0 ps(1); } }\n");
+    CHECK(r->ok);
+    hfx_expr *ss = ckt_find(r, "DiffuseSampler")->init;
+    CHECK_INT(ss->kind, EX_SAMPLER_STATE);
+    char *s = ckt_dump(ss->states[0].value);
+    CHECK_STR(s, "DiffuseTexture:texture");
+    free(s);
+    s = ckt_dump(ss->states[1].value);
+    CHECK_STR(s, "CLAMP:void!"); /* a state constant, left for the builder */
+    free(s);
+    hfx_pass_ast *p = &ckt_find(r, "T")->technique->passes[0];
+    s = ckt_dump(p->states[1].value);
+    CHECK_STR(s, "(compile ps_2_0 ps:pixelshader (implicit:bool 1:int))");
+    free(s);
+    CHECK(p->states[1].value->fn == ckt_find(r, "ps")->func);
+    CHECK(p->states[0].value->fn == ckt_find(r, "vs")->func);
+    s = ckt_dump_stmt(r, "vs", 0);
+    CHECK_STR(s, "(cast:O 0:int)");
+    free(s);
+    ckt_free(r);
+}
+
+static void prototypes_resolve(void) {
+    ckt_result *r = ckt_run("float g(float x);\nfloat f() { return g(1.0); }\nfloat g(float x) { return x * 2; }\n");
+    CHECK(r->ok);
+    hfx_expr *call = ckt_stmt(r, "f", 0)->expr;
+    CHECK(call->fn != NULL);
+    CHECK(call->fn->definition == ckt_find(r, "g")->func);
+    CHECK(ckt_find(r, "g")->func->definition == ckt_find(r, "g")->func);
+    ckt_free(r);
+}
+
+int main(void) {
+    RUN(mul_shapes);
+    RUN(operators);
+    RUN(members_and_indexing);
+    RUN(calls_and_overloads);
+    RUN(sampler_parameters);
+    RUN(initializers);
+    RUN(array_sizes);
+    RUN(statements);
+    RUN(entry_points_and_states);
+    RUN(prototypes_resolve);
+    return test_summary();
+}

@@ -1,0 +1,73 @@
+/* test_glsl_errors.c: what GLSL cannot express is a located error, never a crash; and the
+ * entry point's interface rules (missing semantics) follow fxc. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "effect.h"
+#include "hfx/hfxc.h"
+#include "test.h"
+
+static char *diagnostics(const char *src) {
+    hfxc_result *r = hfxc_compile_memory(src, strlen(src), "e.fx", NULL);
+    char *d = hfxc_diagnostics_text(r);
+    CHECK(!hfxc_result_ok(r));
+    hfxc_result_free(r);
+    return d;
+}
+
+#define VS "float4 vs(float4 p : POSITION) : POSITION { return p; }\n"
+
+static void noise_is_reported(void) {
+    char *d = diagnostics(VS "float4 ps(float2 uv : TEXCOORD0) : COLOR { return noise(uv); }\n"
+                          "technique T { pass P { VertexShader = compile vs_3_0 vs(); PixelShader = compile ps_3_0 ps(); } }\n");
+    CHECK_CONTAINS(d, "e.fx(2,51): error X3094: 'noise': intrinsic is not supported in shaders");
+    free(d);
+}
+
+static void asm_block_is_reported(void) {
+    char *d = diagnostics(VS "float4 ps() : COLOR { asm { mov r0, c0 }; return 1; }\n"
+                          "technique T { pass P { VertexShader = compile vs_3_0 vs(); PixelShader = compile ps_3_0 ps(); } }\n");
+    CHECK_CONTAINS(d, "e.fx(2,23): error X3094: asm blocks are not supported");
+    free(d);
+}
+
+static void missing_input_semantic(void) {
+    char *d = diagnostics(VS "float4 ps(float2 uv) : COLOR { return uv.xyxy; }\n"
+                          "technique T { pass P { VertexShader = compile vs_3_0 vs(); PixelShader = compile ps_3_0 ps(); } }\n");
+    CHECK_CONTAINS(d, "e.fx(2,18): error X3502: 'ps': input parameter 'uv' missing semantics");
+    free(d);
+}
+
+static void missing_return_semantic(void) {
+    char *d = diagnostics(VS "float4 ps() { return 1; }\n"
+                          "technique T { pass P { VertexShader = compile vs_3_0 vs(); PixelShader = compile ps_3_0 ps(); } }\n");
+    CHECK_CONTAINS(d, "e.fx(2,8): error X3502: 'ps': function return value missing semantics");
+    free(d);
+}
+
+/* A pass without a pixel shader (fixed function) still gets a program that links. */
+static void fixed_function_pixel_stage(void) {
+    const char *src = "struct V { float4 p : POSITION; float4 c : COLOR0; };\n"
+                      "V vs(float4 p : POSITION) { V o; o.p = p; o.c = float4(1, 0, 0, 1); return o; }\n"
+                      "technique T { pass P { VertexShader = compile vs_2_0 vs(); } }\n";
+    hfxc_result *r = hfxc_compile_memory(src, strlen(src), "f.fx", NULL);
+    const hfx_fx_effect *fx = hfxc_result_effect(r);
+    CHECK(fx && fx->program_count == 1);
+    if (fx && fx->program_count == 1) {
+        const char *fs = fx->programs[0].code[HFX_STAGE_FRAGMENT][HFX_TARGET_GLSL330].data;
+        const char *vs = fx->programs[0].code[HFX_STAGE_VERTEX][HFX_TARGET_GLSL330].data;
+        CHECK_CONTAINS(fs, "hfx_o_COLOR0 = hfx_v_COLOR0;");
+        /* vs_2_0 colour outputs saturate like oD0 */
+        CHECK_CONTAINS(vs, "hfx_v_COLOR0 = clamp(hfx_ret.c, 0.0, 1.0);");
+    }
+    hfxc_result_free(r);
+}
+
+int main(void) {
+    RUN(noise_is_reported);
+    RUN(asm_block_is_reported);
+    RUN(missing_input_semantic);
+    RUN(missing_return_semantic);
+    RUN(fixed_function_pixel_stage);
+    return test_summary();
+}

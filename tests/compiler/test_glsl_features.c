@@ -1,0 +1,185 @@
+/* test_glsl_features.c: a sweep of HLSL constructs (every intrinsic, matrix shapes, structs,
+ * arrays, control flow) through hfx; glslang must accept the GLSL of every target. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "effect.h"
+#include "glsl_check.h"
+#include "hfx/hfxc.h"
+#include "test.h"
+
+#define VS "float4 vs(float4 p : POSITION) : POSITION { return p; }\n"
+#define TECH "technique T { pass P { VertexShader = compile vs_3_0 vs(); PixelShader = compile ps_3_0 ps(); } }\n"
+
+static int links(const char *body, unsigned targets) {
+    size_t n = strlen(body) + 512;
+    char *src = malloc(n);
+    snprintf(src, n, "%s%s%s", VS, body, TECH);
+    hfxc_options o = {0};
+    o.targets = targets;
+    hfxc_result *r = hfxc_compile_memory(src, strlen(src), "f.fx", &o);
+    const hfx_fx_effect *fx = hfxc_result_effect(r);
+    int ok = fx && fx->program_count == 1;
+    if (!fx) {
+        char *d = hfxc_diagnostics_text(r);
+        fprintf(stderr, "compile failed:\n%s%s\n", d, src);
+        free(d);
+    }
+    for (int t = 0; ok && t < HFX_TARGET_COUNT; t++) {
+        if (!(targets & (1u << t))) continue;
+        char *log = NULL;
+        const char *vs = fx->programs[0].code[0][t].data, *fs = fx->programs[0].code[1][t].data;
+        if (!test_glsl_link(vs, fs, &log)) {
+            fprintf(stderr, "target %d rejected:\n%s\n%s\n", t, log ? log : "", fs);
+            ok = 0;
+        }
+        free(log);
+    }
+    hfxc_result_free(r);
+    free(src);
+    return ok;
+}
+
+static const unsigned ALL = (1u << HFX_TARGET_GLSL330) | (1u << HFX_TARGET_GLSLES300) | (1u << HFX_TARGET_GLSL110);
+static const unsigned MODERN = (1u << HFX_TARGET_GLSL330) | (1u << HFX_TARGET_GLSLES300);
+
+static void float_intrinsics(void) {
+    CHECK(links("float4 v; float s;\n"
+                "float4 ps() : COLOR {\n"
+                "  float4 r = abs(v) + acos(v) + asin(v) + atan(v) + atan2(v, v) + ceil(v) + clamp(v, 0, 1);\n"
+                "  r += cos(v) + cosh(v) + degrees(v) + exp(v) + exp2(v) + floor(v) + fmod(v, 2) + frac(v);\n"
+                "  r += lerp(v, v, 0.5) + log(v) + log10(v) + log2(v) + max(v, s) + min(v, s) + pow(v, 2);\n"
+                "  r += radians(v) + round(v) + rsqrt(v) + saturate(v) + sign(v) + sin(v) + sinh(v);\n"
+                "  r += smoothstep(0, 1, v) + sqrt(v) + step(0.5, v) + tan(v) + tanh(v) + trunc(v);\n"
+                "  r += ddx(v) + ddy(v) + fwidth(v) + ldexp(v, 2);\n"
+                "  r.x += length(v) + distance(v, v) + dot(v, v) + determinant(float2x2(v));\n"
+                "  r.xyz += cross(v.xyz, v.yzx) + normalize(v.xyz) + reflect(v.xyz, v.zyx) + refract(v.xyz, v.zyx, 0.5);\n"
+                "  r.xyz += faceforward(v.xyz, v.xyz, v.xyz);\n"
+                "  r += lit(v.x, v.y, v.z);\n"
+                "  float sn, cs; sincos(s, sn, cs); r.x += sn * cs;\n"
+                "  float4 ip; r += modf(v, ip) + ip;\n"
+                "  if (any(v) && all(v.xy) && !isnan(s) && !isinf(s)) r.y += 1;\n"
+                "  clip(v); clip(s);\n"
+                "  return r; }\n", ALL));
+}
+
+static void integer_and_bool_ops(void) {
+    CHECK(links("int4 iv; int i; uint u; bool b; bool3 bv;\n"
+                "float4 ps() : COLOR {\n"
+                "  int4 q = iv / 3 + iv % 3 - abs(iv) * sign(iv) + max(iv, i) + min(iv, 2) + clamp(iv, 0, 4);\n"
+                "  int k = (i << 2) >> 1 | (i & 3) ^ ~i; k++; --k; k += 2; k %= 3; k *= i;\n"
+                "  bool3 c = bv && !bv || (iv.xyz > 2);\n"
+                "  float3 sel = c ? float3(1, 2, 3) : float3(4, 5, 6);\n"
+                "  int3 isel = c ? iv.xyz : int3(1, 2, 3);\n"
+                "  float f = b ? 1.0 : 0.5;\n"
+                "  return float4(sel + isel, f + k + q.x + dot(iv, iv)); }\n", MODERN));
+}
+
+static void matrices(void) {
+    CHECK(links("float4x4 M; float3x3 N; float4x3 R; float3x4 C; float2x2 T;\n"
+                "float4 ps(float4 v : TEXCOORD0) : COLOR {\n"
+                "  float4 r = mul(v, M) + mul(M, v) + float4(mul(v.xyz, N), 1) + float4(mul(N, v.xyz), 0);\n"
+                "  r.xyz += mul(v, R); r += mul(R, v.xyz).xyzz; r += mul(v.xyz, C); r.xyz += mul(C, v);\n"
+                "  float4x4 P = mul(M, M) * 2 + M * M - M / 3; float3x3 Q = (float3x3)M; float4x3 S = mul(M, R);\n"
+                "  float3x4 Ct = transpose(R);\n"
+                "  r += P[2] + Q[1].xyzx + S._m00_m11_m22_m32 + Ct[0] + M._11_22_33_44 + T._m01;\n"
+                "  P[1] = v; P._m23 = 2; P[2].x = 1;\n"
+                "  float2x2 t2 = float2x2(v.xy, v.zw); t2 += T; t2 *= 2;\n"
+                "  float2x2 z = 0; z = 1;\n"
+                "  return r + P[1] + mul(v.xy, t2).xyxy + mul(z, v.xy).xyxy + determinant(M) + determinant(N); }\n", MODERN));
+}
+
+static void structs_arrays_functions(void) {
+    CHECK(links("struct Light { float3 dir; float4 color; int on; };\n"
+                "struct Pair { Light a; Light b[2]; };\n"
+                "Light lights[3]; Pair pair; int count;\n"
+                "static const float weights[3] = { 0.25, 0.5, 0.25 };\n"
+                "static float2 offsets[2] = { float2(1, 2), float2(3, 4) };\n"
+                "float4 shade(Light l, float3 n) { return l.color * max(dot(l.dir, n), 0); }\n"
+                "void accumulate(inout float4 acc, in Light l, float3 n, out int used) { acc += shade(l, n); used = l.on; }\n"
+                "Light pick(int i) { return lights[i]; }\n"
+                "float4 ps(float3 n : TEXCOORD0, float4 c : COLOR0, float2 vp : VPOS, float face : VFACE) : COLOR {\n"
+                "  float4 acc = 0; int used = 0; float local[4] = { 1, 2, 3, 4 };\n"
+                "  [unroll] for (int i = 0; i < 3; i++) { accumulate(acc, lights[i], n, used); acc *= weights[i]; }\n"
+                "  [loop] for (int j = 0; j < count; j++) { if (lights[j].on == 0) continue; acc += lights[j].color * local[j]; }\n"
+                "  acc += shade(pair.a, n) + shade(pair.b[count], n) + pick(1).color;\n"
+                "  Light copy = lights[count]; copy.color.rgb = 1; lights[0].color = copy.color;\n"
+                "  int k = 0; while (k < 2) { k++; if (k > 5) break; } do { k--; } while (k > 0);\n"
+                "  switch (count) { case 0: acc.x = 1; break; case 1: case 2: acc.y = 2; break; default: acc.z = 3; }\n"
+                "  return acc + c + used + offsets[1].xyxy + vp.xyxy + face; }\n", MODERN));
+}
+
+static void texture_forms(void) {
+    CHECK(links("texture t2; texture t3; texture tc;\n"
+                "sampler2D s2 = sampler_state { Texture = <t2>; };\n"
+                "sampler3D s3 = sampler_state { Texture = <t3>; };\n"
+                "samplerCUBE sc = sampler_state { Texture = <tc>; };\n"
+                "sampler gen;\n"
+                "float4 ps(float4 uv : TEXCOORD0) : COLOR {\n"
+                "  float4 r = tex2D(s2, uv.xy) + tex2Dlod(s2, uv) + tex2Dbias(s2, uv) + tex2Dproj(s2, uv)\n"
+                "           + tex2Dgrad(s2, uv.xy, ddx(uv.xy), ddy(uv.xy)) + tex2D(s2, uv.xy, uv.zw, uv.wz);\n"
+                "  r += tex3D(s3, uv.xyz) + tex3Dlod(s3, uv) + tex3Dbias(s3, uv) + tex3Dproj(s3, uv);\n"
+                "  r += texCUBE(sc, uv.xyz) + texCUBElod(sc, uv) + texCUBEbias(sc, uv) + texCUBEproj(sc, uv);\n"
+                "  r += tex2D(gen, uv.xy);\n"
+                "  return r; }\n", MODERN));
+}
+
+static void sampler_parameters_and_odd_shapes(void) {
+    CHECK(links("texture t; sampler2D s = sampler_state { Texture = <t>; }; uint u; float1 one;\n"
+                "float4 fetch(sampler2D from, float2 uv) { return tex2D(from, uv); }\n"
+                "float4 ps(float2 uv : TEXCOORD0) : COLOR {\n"
+                "  float4 r = fetch(s, uv);\n"
+                "  switch (u) { case 1u: r.x = one[0]; break; default: r.y = one.x; }\n"
+                "  float1x4 row = float1x4(r); float4x1 col = float4x1(r);\n"
+                "  r += row[0] + col._m10 + row._m03;\n"
+                "  return r; }\n", MODERN));
+}
+
+static void vertex_texture_fetch_and_outputs(void) {
+    const char *src =
+        "texture h; sampler2D hs = sampler_state { Texture = <h>; };\n"
+        "struct VOut { float4 pos : POSITION; float4 c : COLOR1; float psize : PSIZE; float fog : FOG; float2 uv : TEXCOORD3; };\n"
+        "VOut vs(float3 p : POSITION, float4 bw : BLENDWEIGHT, int4 bi : BLENDINDICES, float3 t : TANGENT, float3 b : BINORMAL)\n"
+        "{ VOut o; o.pos = float4(p, 1) + tex2Dlod(hs, float4(p.xy, 0, 0)) + bw + bi; o.c = float4(t + b, 1);\n"
+        "  o.psize = 1; o.fog = 0; o.uv = p.xy; return o; }\n"
+        "void ps(float4 c : COLOR1, float2 uv : TEXCOORD3, float4 unwritten : TEXCOORD5, out float4 o0 : COLOR0,\n"
+        "        out float4 o1 : COLOR1, out float d : DEPTH) { o0 = c + unwritten; o1 = uv.xyxy; d = 0.5; }\n"
+        "technique T { pass P { VertexShader = compile vs_3_0 vs(); PixelShader = compile ps_3_0 ps(); } }\n";
+    hfxc_options o = {0};
+    o.targets = ALL & ~(1u << HFX_TARGET_GLSL110);
+    hfxc_result *r = hfxc_compile_memory(src, strlen(src), "v.fx", &o);
+    const hfx_fx_effect *fx = hfxc_result_effect(r);
+    CHECK(fx && fx->program_count == 1);
+    if (fx && fx->program_count == 1) {
+        const hfx_fx_program *p = &fx->programs[0];
+        char *log = NULL;
+        int ok = test_glsl_link(p->code[0][HFX_TARGET_GLSL330].data, p->code[1][HFX_TARGET_GLSL330].data, &log);
+        if (!ok) fprintf(stderr, "%s\n%s\n", log, p->code[0][HFX_TARGET_GLSL330].data);
+        CHECK(ok);
+        free(log);
+        /* Cg locations: POSITION0 0, BLENDWEIGHT0 1, BLENDINDICES0 7, TANGENT0 14, BINORMAL0 15 */
+        CHECK_INT(p->attribute_count, 5);
+        static const char *const sem[] = { "POSITION0", "BLENDWEIGHT0", "BLENDINDICES0", "TANGENT0", "BINORMAL0" };
+        static const int loc[] = { 0, 1, 7, 14, 15 };
+        for (uint32_t i = 0; i < p->attribute_count && i < 5; i++) {
+            CHECK_STR(p->attributes[i].semantic, sem[i]);
+            CHECK_INT(p->attributes[i].location, loc[i]);
+        }
+        CHECK_CONTAINS(p->code[0][HFX_TARGET_GLSL330].data, "hfx_v_TEXCOORD5 = vec4(0.0);");
+        CHECK_CONTAINS(p->code[0][HFX_TARGET_GLSL330].data, "gl_PointSize = float(hfx_ret.psize);");
+        CHECK_CONTAINS(p->code[1][HFX_TARGET_GLSL330].data, "gl_FragDepth = float(hfx_arg5);");
+        CHECK_INT(p->sampler_count, 1);
+    }
+    hfxc_result_free(r);
+}
+
+int main(void) {
+    RUN(float_intrinsics);
+    RUN(integer_and_bool_ops);
+    RUN(matrices);
+    RUN(structs_arrays_functions);
+    RUN(texture_forms);
+    RUN(sampler_parameters_and_odd_shapes);
+    RUN(vertex_texture_fetch_and_outputs);
+    return test_summary();
+}

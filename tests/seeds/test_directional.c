@@ -1,0 +1,238 @@
+/* directional.fx and directional_specular.fx (003 Código 7-3, with 7-6 / 7-7): a directional
+ * light, Lambert diffuse on the interpolated world normal, which the author does not
+ * renormalise (a scaled World scales the light; a sphere's normals shrink between vertices):
+ *   L = normalize(direccionLuz); rd = max(dot(-L, N), 0)
+ *   color = ambient + difuso * rd
+ *   [modIluEsp]  R = normalize(2 N max(dot(-L, N), 0) + L); V = normalize(cam - P)
+ *                color += ks * max(dot(R, V), 0)^n * especular * rd
+ *   [Texturizado] color *= tex (WRAP, LINEAR);  color.a = 1 */
+#include "scene.h"
+
+#include "files.h"
+
+static seed_scene *S;
+
+typedef struct dir_ref {
+    v3 dir, cam;
+    rgba ambient, diffuse, specular;
+    double ks, n;
+    int textured, spec_on;
+    const seed_texture *tex;
+} dir_ref;
+
+static rgba directional_shade(const seed_surface *s, const void *user) {
+    const dir_ref *r = user;
+    v3 l = v3_normalize(r->dir), n = v3_normalize(s->normal);
+    double rd = maxd(v3_dot(v3_neg(l), n), 0);
+    rgba c = rgba_add(r->ambient, rgba_scale(r->diffuse, rd));
+    if (r->spec_on) {
+        v3 refl = v3_normalize(v3_add(v3_scale(n, 2 * maxd(v3_dot(v3_neg(l), n), 0)), l));
+        v3 view = v3_normalize(v3_sub(r->cam, s->pos));
+        double is = hlsl_pow(maxd(v3_dot(refl, view), 0), r->n);
+        c = rgba_add(c, rgba_scale(r->specular, r->ks * is * rd));
+    }
+    if (r->textured) c = rgba_mul(c, seed_texture_sample(r->tex, s->u, s->v, SEED_WRAP));
+    c.a = 1;
+    return c;
+}
+
+/* The initializers of both files: ambient {0.05...}, difuso {0.24, 0.34, 0.39, 1}; and of the
+ * specular one: ks {0.05F}, n 5, especular white. */
+static dir_ref defaults(const seed_texture *tex) {
+    dir_ref r;
+    r.dir = v3_make(1, -2, 0.5);
+    r.cam = v3_make(0, 3, 1);
+    r.ambient = rgba_make(0.05, 0.05, 0.05, 1);
+    r.diffuse = rgba_make(0.24, 0.34, 0.39, 1);
+    r.specular = rgba_make(1, 1, 1, 1);
+    r.ks = 0.05;
+    r.n = 5;
+    r.textured = r.spec_on = 0;
+    r.tex = tex;
+    return r;
+}
+
+typedef struct dir_scene {
+    const char *file;
+    hfx_effect *fx;
+    seed_mesh *mesh;
+    seed_object obj;
+    unsigned char texels[64];
+    seed_texture tex;
+} dir_scene;
+
+/* The floor seen from the top camera, World = `world` (NULL: identity). */
+static int open_floor(dir_scene *d, const char *file, double half, const float *world) {
+    d->file = file;
+    d->fx = seed_load(S, file);
+    seed_smooth_texels(d->texels);
+    d->tex = seed_texture_make(S, 4, 4, d->texels);
+    d->mesh = seed_mesh_floor(S, half);
+    d->obj = seed_object_at(d->mesh, world);
+    seed_camera_top(S, 2);
+    if (d->fx) seed_set_transforms(S, d->fx, "world", "view", "projection", d->obj.world);
+    return d->fx != NULL;
+}
+
+static void close_scene(dir_scene *d) {
+    CHECK(d->fx != NULL);
+    if (d->fx) hfx_effect_destroy(d->fx);
+    seed_texture_free(S, &d->tex);
+    seed_mesh_free(S, d->mesh);
+    CHECK_SCENE(S);
+}
+
+static void draw_and_probe(dir_scene *d, const dir_ref *r, const char *technique, const char *label) {
+    seed_set_v3(S, d->fx, "direccionLuz", r->dir);
+    seed_set_texture(S, d->fx, "texturaModelo", r->tex);
+    seed_clear(S, rgba_make(0, 0, 0, 0));
+    CHECK_INT(seed_draw(S, d->fx, technique, d->mesh, SEED_BLEND_NONE), 1);
+    for (int y = 7; y < 128; y += 20)
+        for (int x = 5; x < 128; x += 21) {
+            seed_surface surf;
+            if (seed_pick(S, &d->obj, 1, x, y, &surf) < 0) continue;
+            CHECK_PROBE(seed_probe(S, d->file, label, &d->obj, x, y, directional_shade, r));
+        }
+}
+
+static void material_with_default_colours(void) {
+    dir_scene d = {0};
+    if (open_floor(&d, "directional.fx", 2, NULL)) {
+        dir_ref r = defaults(&d.tex);
+        draw_and_probe(&d, &r, "Material", "Material");
+        /* By hand: L = (1,-2,.5)/2.2913, rd = 2/2.2913 = .87287: .05 + (.24,.34,.39) rd. */
+        double rd = 2 / sqrt(5.25);
+        CHECK_PROBE(seed_expect(S, d.file, "Material by hand", 64, 64,
+                                rgba_make(0.05 + 0.24 * rd, 0.05 + 0.34 * rd, 0.05 + 0.39 * rd, 1)));
+        /* `direccionLuz = normalize(direccionLuz)` in the shader leaves the parameter alone. */
+        float after[3] = {0};
+        hfx_param *p = hfx_effect_param(d.fx, "direccionLuz");
+        CHECK(p && hfx_param_get_floats(p, after, 3) == HFX_OK);
+        CHECK_NEAR(after[0], 1, 1e-6);
+        CHECK_NEAR(after[1], -2, 1e-6);
+        CHECK_NEAR(after[2], 0.5, 1e-6);
+    }
+    close_scene(&d);
+}
+
+static void textured_technique(void) {
+    dir_scene d = {0};
+    if (open_floor(&d, "directional.fx", 2, NULL)) {
+        dir_ref r = defaults(&d.tex);
+        r.textured = 1;
+        r.dir = v3_make(-0.4, -1, -0.2);
+        seed_set_rgba(S, d.fx, "colorMaterialDifuso", r.diffuse = rgba_make(0.6, 0.5, 0.3, 1));
+        draw_and_probe(&d, &r, "Texturizado", "Texturizado");
+    }
+    close_scene(&d);
+}
+
+/* World = scale 0.5: the world normal is (0, 0.5, 0) and nobody renormalises it, so the
+ * diffuse term is half of what a unit normal gives. */
+static void scaled_world_scales_the_light(void) {
+    float world[16];
+    xm_scale(world, 0.5, 0.5, 0.5);
+    dir_scene d = {0};
+    if (open_floor(&d, "directional.fx", 4, world)) {
+        dir_ref r = defaults(&d.tex);
+        r.dir = v3_make(0, -1, 0);
+        draw_and_probe(&d, &r, "Material", "World scaled by 0.5");
+        CHECK_PROBE(seed_expect(S, d.file, "half the diffuse, by hand", 64, 64,
+                                rgba_make(0.05 + 0.12, 0.05 + 0.17, 0.05 + 0.195, 1)));
+    }
+    close_scene(&d);
+}
+
+/* A sphere in perspective: the interpolated normals are shorter than 1 inside each triangle. */
+static void sphere_normals_are_not_renormalised(void) {
+    dir_scene d = {0};
+    d.file = "directional.fx";
+    d.fx = seed_load(S, d.file);
+    seed_smooth_texels(d.texels);
+    d.tex = seed_texture_make(S, 4, 4, d.texels);
+    d.mesh = seed_mesh_sphere(S, 1, 12, 8); /* coarse: the normals shrink by up to 4% */
+    d.obj = seed_object_at(d.mesh, NULL);
+    float view[16], proj[16];
+    xm_look_at(view, v3_make(0.5, 1.5, 3.5), v3_make(0, 0, 0), v3_make(0, 1, 0));
+    xm_perspective_fov(proj, SEED_PI / 3, 1, 0.5, 30);
+    seed_camera(S, view, proj);
+    if (d.fx) {
+        seed_set_transforms(S, d.fx, "world", "view", "projection", NULL);
+        dir_ref r = defaults(&d.tex);
+        r.dir = v3_make(-1, -1, -1);
+        seed_set_rgba(S, d.fx, "colorMaterialDifuso", r.diffuse = rgba_make(0.9, 0.8, 0.7, 1));
+        seed_set_v3(S, d.fx, "direccionLuz", r.dir);
+        seed_clear(S, rgba_make(0, 0, 0, 0));
+        CHECK_INT(seed_draw(S, d.fx, "Material", d.mesh, SEED_BLEND_NONE), 1);
+        for (int y = 16; y < 112; y += 8)
+            for (int x = 16; x < 112; x += 8) {
+                seed_surface a;
+                if (seed_pick_offset(S, &d.obj, 1, x, y, -1.5, -1.5, &a) < 0 ||
+                    seed_pick_offset(S, &d.obj, 1, x, y, 1.5, 1.5, &a) < 0 ||
+                    seed_pick_offset(S, &d.obj, 1, x, y, 1.5, -1.5, &a) < 0 ||
+                    seed_pick_offset(S, &d.obj, 1, x, y, -1.5, 1.5, &a) < 0)
+                    continue;
+                CHECK_PROBE(seed_probe(S, d.file, "sphere, short normals", &d.obj, x, y, directional_shade, &r));
+            }
+    }
+    close_scene(&d);
+}
+
+/* directional_specular.fx with modIluEsp false (its initializer): exactly directional.fx. */
+static void specular_off_is_the_diffuse_model(void) {
+    dir_scene d = {0};
+    if (open_floor(&d, "directional_specular.fx", 2, NULL)) {
+        dir_ref r = defaults(&d.tex);
+        seed_set_v3(S, d.fx, "posicionCamara", r.cam);
+        seed_set_float(S, d.fx, "ks", 1);
+        draw_and_probe(&d, &r, "Material", "modIluEsp false");
+        r.textured = 1;
+        draw_and_probe(&d, &r, "Texturizado", "modIluEsp false, Texturizado");
+    }
+    close_scene(&d);
+}
+
+static void specular_on(void) {
+    dir_scene d = {0};
+    if (open_floor(&d, "directional_specular.fx", 2, NULL)) {
+        dir_ref r = defaults(&d.tex);
+        r.spec_on = 1;
+        seed_set_bool(S, d.fx, "modIluEsp", 1);
+        seed_set_v3(S, d.fx, "posicionCamara", r.cam);
+        draw_and_probe(&d, &r, "Material", "modIluEsp, default ks 0.05");
+        r.ks = 1;
+        r.n = 12;
+        r.dir = v3_make(1, -1, 0);
+        r.cam = v3_make(0.5, 1.5, 0.2);
+        seed_set_float(S, d.fx, "ks", r.ks);
+        seed_set_float(S, d.fx, "n", r.n);
+        seed_set_v3(S, d.fx, "posicionCamara", r.cam);
+        draw_and_probe(&d, &r, "Material", "modIluEsp, ks 1, n 12");
+        /* The highlight: R = (1, 1, 0)/sqrt 2 from every point, so it sits at
+         * P = (cam.x - cam.y, 0, cam.z) = (-1, 0, 0.2). */
+        int x, y;
+        seed_pixel_of(S, v3_make(-1, 0, 0.2), &x, &y);
+        CHECK_PROBE(seed_probe(S, d.file, "highlight", &d.obj, x, y, directional_shade, &r));
+        r.textured = 1;
+        draw_and_probe(&d, &r, "Texturizado", "modIluEsp, Texturizado");
+    }
+    close_scene(&d);
+}
+
+int main(void) {
+    test_require_seeds();
+    S = seed_scene_create(128, 128);
+    if (!S) {
+        fprintf(stderr, "no OSMesa GL 3.3 context\n");
+        return 1;
+    }
+    RUN(material_with_default_colours);
+    RUN(textured_technique);
+    RUN(scaled_world_scales_the_light);
+    RUN(sphere_normals_are_not_renormalised);
+    RUN(specular_off_is_the_diffuse_model);
+    RUN(specular_on);
+    seed_report(S);
+    seed_scene_destroy(S);
+    return test_summary();
+}

@@ -1,0 +1,273 @@
+/* pointlights.fx (001): up to 50 point lights in one pass, from uniform arrays the
+ * application refills every frame, as the tutorial's PointLightShader.Update does. For each of
+ * the activeLights lights:
+ *   att = (1 - saturate(|Lpos - P| / radius))^2
+ *   color += A * Ai + att * Lc * Di * tex * N.L + Si * Sc * (R.V)^n
+ * (the ambient and the specular terms are added once per light and are not attenuated: the
+ * tutorial's equations, so a highlight shows even beyond a light's radius). */
+#include "scene.h"
+
+#include "files.h"
+
+#define FILE_ "pointlights.fx"
+#define MAX_LIGHTS 50
+
+static seed_scene *S;
+
+typedef struct point_light {
+    v3 pos;
+    rgba colour;
+    double radius;
+} point_light;
+
+typedef struct lights_ref {
+    int active;
+    point_light lights[MAX_LIGHTS];
+    v3 cam;
+    rgba specular_colour, ambient_colour;
+    double specular_power, specular_intensity, ambient_intensity, diffuse_intensity;
+    const seed_texture *tex;
+} lights_ref;
+
+static rgba pointlights_shade(const seed_surface *s, const void *user) {
+    const lights_ref *p = user;
+    rgba tex = seed_texture_sample(p->tex, s->u, s->v, SEED_CLAMP);
+    rgba sum = rgba_make(0, 0, 0, 0);
+    for (int i = 0; i < p->active; i++) {
+        const point_light *l = &p->lights[i];
+        v3 n = v3_normalize(s->normal);
+        v3 to_light = v3_sub(l->pos, s->pos);
+        double k = 1 - saturate(v3_length(to_light) / l->radius);
+        double att = k * k;
+        v3 ld = v3_normalize(to_light);
+        v3 view = v3_normalize(v3_sub(p->cam, s->pos));
+        double diff = saturate(v3_dot(n, ld));
+        v3 r = v3_normalize(v3_sub(v3_scale(n, 2 * diff), ld));
+        double spec = hlsl_pow(saturate(v3_dot(r, view)), p->specular_power);
+        sum = rgba_add(sum, rgba_scale(p->ambient_colour, p->ambient_intensity));
+        sum = rgba_add(sum, rgba_scale(rgba_mul(l->colour, tex), att * p->diffuse_intensity * diff));
+        sum = rgba_add(sum, rgba_scale(p->specular_colour, att * p->specular_intensity * spec));
+    }
+    return sum;
+}
+
+static const unsigned char TEXELS[2 * 2 * 4] = {220, 200, 180, 255, 220, 200, 180, 255,
+                                                 220, 200, 180, 255, 220, 200, 180, 255};
+
+/* The tutorial's material (PointLightShader's constructor): white specular of power 50 and
+ * intensity 1, no ambient, diffuse intensity 1. */
+static void tutorial_material(lights_ref *r, const seed_texture *tex) {
+    r->cam = v3_make(-3, 2, 0);
+    r->specular_colour = rgba_make(1, 1, 1, 1);
+    r->ambient_colour = rgba_make(1, 1, 1, 1);
+    r->specular_power = 50;
+    r->specular_intensity = 1;
+    r->ambient_intensity = 0;
+    r->diffuse_intensity = 1;
+    r->tex = tex;
+}
+
+static void set_material(hfx_effect *fx, const lights_ref *r) {
+    seed_set_v3(S, fx, "camPosition", r->cam);
+    seed_set_rgba(S, fx, "SpecularColor", r->specular_colour);
+    seed_set_float(S, fx, "SpecularPower", r->specular_power);
+    seed_set_float(S, fx, "SpecularIntensity", r->specular_intensity);
+    seed_set_rgba(S, fx, "AmbientColor", r->ambient_colour);
+    seed_set_float(S, fx, "AmbientIntensity", r->ambient_intensity);
+    seed_set_float(S, fx, "DiffuseIntensity", r->diffuse_intensity);
+    seed_set_texture(S, fx, "DiffuseTexture", r->tex);
+}
+
+/* As the tutorial does: LightPosition.ToArray() etc., arrays only as long as the active
+ * lights, handed to the whole array parameter. */
+static void fill_whole_arrays(hfx_effect *fx, const lights_ref *r) {
+    float pos[MAX_LIGHTS * 3], col[MAX_LIGHTS * 4], rad[MAX_LIGHTS];
+    for (int i = 0; i < r->active; i++) {
+        const point_light *l = &r->lights[i];
+        pos[i * 3] = (float)l->pos.x, pos[i * 3 + 1] = (float)l->pos.y, pos[i * 3 + 2] = (float)l->pos.z;
+        col[i * 4] = (float)l->colour.r, col[i * 4 + 1] = (float)l->colour.g;
+        col[i * 4 + 2] = (float)l->colour.b, col[i * 4 + 3] = (float)l->colour.a;
+        rad[i] = (float)l->radius;
+    }
+    seed_set_int(S, fx, "activeLights", r->active);
+    hfx_param *p = hfx_effect_param(fx, "LightPosition");
+    CHECK(p && hfx_param_set_floats(p, pos, (size_t)r->active * 3) == HFX_OK);
+    p = hfx_effect_param(fx, "LightColor");
+    CHECK(p && hfx_param_set_floats(p, col, (size_t)r->active * 4) == HFX_OK);
+    p = hfx_effect_param(fx, "LightRadius");
+    CHECK(p && hfx_param_set_floats(p, rad, (size_t)r->active) == HFX_OK);
+}
+
+/* Parameters["LightPosition"].Elements[i].SetValue(...) for each light. */
+static void fill_by_element(hfx_effect *fx, const lights_ref *r) {
+    seed_set_int(S, fx, "activeLights", r->active);
+    hfx_param *pos = hfx_effect_param(fx, "LightPosition"), *col = hfx_effect_param(fx, "LightColor"),
+              *rad = hfx_effect_param(fx, "LightRadius");
+    CHECK(pos && col && rad);
+    if (!pos || !col || !rad) return;
+    CHECK_INT(hfx_param_elements(pos), MAX_LIGHTS);
+    for (int i = 0; i < r->active; i++) {
+        seed_param_v3(S, hfx_param_element(pos, (size_t)i), "LightPosition[i]", r->lights[i].pos);
+        seed_param_rgba(S, hfx_param_element(col, (size_t)i), "LightColor[i]", r->lights[i].colour);
+        seed_param_float(S, hfx_param_element(rad, (size_t)i), "LightRadius[i]", r->lights[i].radius);
+    }
+}
+
+typedef struct frame_scene {
+    hfx_effect *fx;
+    seed_mesh *floor;
+    seed_object obj;
+    seed_texture tex;
+} frame_scene;
+
+static int scene_open(frame_scene *f) {
+    f->fx = seed_load(S, FILE_);
+    f->tex = seed_texture_make(S, 2, 2, TEXELS);
+    f->floor = seed_mesh_floor(S, 2);
+    f->obj = seed_object_at(f->floor, NULL);
+    seed_camera_top(S, 2);
+    if (f->fx) seed_set_transforms(S, f->fx, "World", "View", "Projection", NULL);
+    return f->fx != NULL;
+}
+
+static void scene_close(frame_scene *f) {
+    if (f->fx) hfx_effect_destroy(f->fx);
+    seed_texture_free(S, &f->tex);
+    seed_mesh_free(S, f->floor);
+    CHECK_SCENE(S);
+}
+
+static void draw_frame(frame_scene *f, const lights_ref *r, const char *label) {
+    set_material(f->fx, r);
+    seed_clear(S, rgba_make(0, 0, 0, 0));
+    CHECK_INT(seed_draw(S, f->fx, "PointLights", f->floor, SEED_BLEND_NONE), 1);
+    for (int y = 6; y < 128; y += 23)
+        for (int x = 9; x < 128; x += 22) CHECK_PROBE(seed_probe(S, FILE_, label, &f->obj, x, y, pointlights_shade, r));
+}
+
+/* One light at (1, 0.5, 0), radius 0.8, the camera at (-3, 2, 0). The highlight is where the
+ * line from the light to the camera's mirror image (-3, -2, 0) meets the floor: (0.2, 0, 0),
+ * 0.94 from the light, beyond its radius: no diffuse there, the full specular. Under the
+ * light (1, 0, 0) diffuse is (1 - 0.5 / 0.8)^2 = 0.140625 of Lc * tex. */
+static void one_light(void) {
+    frame_scene f = {0};
+    if (scene_open(&f)) {
+        static lights_ref r;
+        tutorial_material(&r, &f.tex);
+        r.active = 1;
+        r.lights[0] = (point_light){v3_make(1, 0.5, 0), rgba_make(0.9, 0.7, 0.5, 1), 0.8};
+        fill_whole_arrays(f.fx, &r);
+        draw_frame(&f, &r, "1 light");
+        int x, y;
+        seed_pixel_of(S, v3_make(0.2, 0, 0), &x, &y);
+        CHECK_PROBE(seed_probe(S, FILE_, "highlight beyond the radius", &f.obj, x, y, pointlights_shade, &r));
+        CHECK(seed_pixel(S, x, y).r > 0.9); /* the specular of intensity 1 is there */
+        seed_pixel_of(S, v3_make(1, 0, 0), &x, &y);
+        CHECK_PROBE(seed_probe(S, FILE_, "under the light", &f.obj, x, y, pointlights_shade, &r));
+        seed_pixel_of(S, v3_make(1.6, 0, 0.3), &x, &y);
+        CHECK_PROBE(seed_expect(S, FILE_, "beyond the radius, no highlight", x, y, rgba_make(0, 0, 0, 0)));
+    }
+    CHECK(f.fx != NULL);
+    scene_close(&f);
+}
+
+static void ring_of_lights(lights_ref *r, int n, double ring, double height, double radius, double strength) {
+    r->active = n;
+    for (int i = 0; i < n; i++) {
+        double a = 2 * SEED_PI * i / n;
+        r->lights[i].pos = v3_make(ring * cos(a), height, ring * sin(a));
+        r->lights[i].colour = rgba_make(strength * (0.5 + 0.5 * cos(a)), strength * (0.5 + 0.5 * sin(a)),
+                                        strength * (1 - 0.3 * (i % 3)), 1);
+        r->lights[i].radius = radius;
+    }
+}
+
+static void grid_of_lights(lights_ref *r, int n) {
+    r->active = n;
+    for (int i = 0; i < n; i++) {
+        int gx = i % 7, gz = i / 7;
+        r->lights[i].pos = v3_make(-1.8 + 0.6 * gx, 0.3 + 0.05 * (i % 4), -1.8 + 0.5 * gz);
+        r->lights[i].colour = rgba_make(0.05 + 0.002 * gx, 0.04 + 0.003 * gz, 0.06 - 0.001 * (i % 5), 0.02);
+        r->lights[i].radius = 0.9 + 0.02 * (i % 6);
+    }
+}
+
+/* Ten lights on a ring, the arrays handed over whole (10 of 50 elements), a faint specular. */
+static void ten_lights(void) {
+    frame_scene f = {0};
+    if (scene_open(&f)) {
+        static lights_ref r;
+        tutorial_material(&r, &f.tex);
+        r.cam = v3_make(0, 4, 0);
+        r.specular_intensity = 0.1;
+        ring_of_lights(&r, 10, 1.1, 0.6, 1.6, 0.25);
+        fill_whole_arrays(f.fx, &r);
+        draw_frame(&f, &r, "10 lights");
+    }
+    CHECK(f.fx != NULL);
+    scene_close(&f);
+}
+
+/* Fifty lights on a grid, set element by element, with a little ambient (added 50 times). */
+static void fifty_lights(void) {
+    frame_scene f = {0};
+    if (scene_open(&f)) {
+        static lights_ref r;
+        tutorial_material(&r, &f.tex);
+        r.cam = v3_make(0.5, 3, -0.5);
+        r.specular_intensity = 0.004;
+        r.ambient_colour = rgba_make(0.1, 0.2, 0.3, 1);
+        r.ambient_intensity = 0.01;
+        grid_of_lights(&r, MAX_LIGHTS);
+        fill_by_element(f.fx, &r);
+        draw_frame(&f, &r, "50 lights");
+    }
+    CHECK(f.fx != NULL);
+    scene_close(&f);
+}
+
+/* One effect, frames with 1, 10, 50, then 1 light again: the arrays keep the stale lights
+ * past activeLights, which the loop must not read. */
+static void frames_with_changing_light_counts(void) {
+    frame_scene f = {0};
+    if (scene_open(&f)) {
+        static lights_ref r;
+        tutorial_material(&r, &f.tex);
+        r.cam = v3_make(0, 4, 0);
+        r.specular_intensity = 0.05;
+        r.active = 1;
+        r.lights[0] = (point_light){v3_make(-0.5, 0.7, 0.5), rgba_make(0.6, 0.8, 0.4, 1), 2.2};
+        fill_by_element(f.fx, &r);
+        draw_frame(&f, &r, "frame 1: 1 light");
+        ring_of_lights(&r, 10, 1.3, 0.5, 1.4, 0.2);
+        fill_whole_arrays(f.fx, &r);
+        draw_frame(&f, &r, "frame 2: 10 lights");
+        grid_of_lights(&r, MAX_LIGHTS);
+        r.specular_intensity = 0.004;
+        fill_whole_arrays(f.fx, &r);
+        draw_frame(&f, &r, "frame 3: 50 lights");
+        r.active = 1;
+        r.lights[0] = (point_light){v3_make(0.8, 0.6, -0.8), rgba_make(0.3, 0.9, 0.9, 1), 1.9};
+        r.specular_intensity = 0.05;
+        fill_whole_arrays(f.fx, &r);
+        draw_frame(&f, &r, "frame 4: 1 light again");
+    }
+    CHECK(f.fx != NULL);
+    scene_close(&f);
+}
+
+int main(void) {
+    test_require_seeds();
+    S = seed_scene_create(128, 128);
+    if (!S) {
+        fprintf(stderr, "no OSMesa GL 3.3 context\n");
+        return 1;
+    }
+    RUN(one_light);
+    RUN(ten_lights);
+    RUN(fifty_lights);
+    RUN(frames_with_changing_light_counts);
+    seed_report(S);
+    seed_scene_destroy(S);
+    return test_summary();
+}

@@ -1,0 +1,25 @@
+/* view_support.h: for tests that run hfxview and the examples as programs and look at the
+ * images they write (read back with stb_image, independently of the writer, libpng). */
+#ifndef HFX_VIEW_SUPPORT_H
+#define HFX_VIEW_SUPPORT_H
+
+#include <stddef.h>
+
+typedef struct view_png {
+    int width, height;
+    unsigned char *rgba;
+} view_png;
+
+/* $HFX_BUILD_DIR/relative if that file exists (malloc'ed), else NULL. */
+char *view_build_path(const char *relative);
+/* Runs a shell command with stdout and stderr captured into *output (malloc'ed, may be
+ * NULL); returns the exit status, or -1 if it could not run. */
+int view_run(const char *command, char **output);
+int view_png_read(view_png *img, const char *path);     /* 0, or -1 */
+void view_png_free(view_png *img);
+const unsigned char *view_png_at(const view_png *img, int x, int y); /* RGBA at column x, row y from the top */
+/* |pixel - rgb| <= tol per channel; prints the pixel when it is not. */
+int view_pixel_near(const view_png *img, int x, int y, int r, int g, int b, int tol);
+char *view_format(const char *fmt, ...) __attribute__((format(printf, 1, 2))); /* malloc'ed */
+
+#endif

@@ -1,0 +1,524 @@
+/* The hfxc program, run as a user would ($HFX_BUILD_DIR/compiler/hfxc): both spellings on
+ * every seed (the outputs are read back with the .hfxo reader and must be byte-identical),
+ * exit codes, the located error of multilights.fx, one-line usage errors, many files in one
+ * call, --emit-glsl files, and --annotations / --reflect parsed back with cJSON. */
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "effect.h"
+#include "files.h"
+#include "test.h"
+
+#ifdef HFX_HAVE_CJSON
+#include <cjson/cJSON.h>
+#endif
+
+static char hfxc[4096];
+static char *tmp;
+
+typedef struct run_result {
+    int status;
+    char *out, *err;
+} run_result;
+
+/* Runs `hfxc <args>` through the shell, capturing stdout and stderr in files. */
+static run_result run(const char *args) {
+    char out[1024], err[1024], cmd[16384];
+    snprintf(out, sizeof out, "%s/stdout.txt", tmp);
+    snprintf(err, sizeof err, "%s/stderr.txt", tmp);
+    snprintf(cmd, sizeof cmd, "'%s' %s >'%s' 2>'%s'", hfxc, args, out, err);
+    int st = system(cmd);
+    run_result r = {WIFEXITED(st) ? WEXITSTATUS(st) : -1, test_read_file(out, NULL), test_read_file(err, NULL)};
+    if (!r.out) r.out = strdup("");
+    if (!r.err) r.err = strdup("");
+    return r;
+}
+
+static void run_free(run_result *r) {
+    free(r->out);
+    free(r->err);
+}
+
+static int count_lines(const char *s) {
+    int n = 0;
+    for (; *s; s++) n += *s == '\n';
+    return n;
+}
+
+static const char *const good[] = {"tutorial0.fx", "phong.fx", "pointlights.fx", "ambient.fx",
+                                   "ambient_textured.fx", "directional.fx", "point.fx", "spot.fx",
+                                   "directional_specular.fx", "point_specular.fx", "spot_specular.fx",
+                                   "multilights_repaired.fx", "fxcomposer_empty.fx"};
+
+static hfx_fx_effect *read_hfxo(const char *path, size_t *size_out, char **bytes) {
+    size_t size = 0;
+    char *data = test_read_file(path, &size);
+    if (!data) return NULL;
+    char err[256];
+    hfx_fx_effect *fx = hfx_fx_read_hfxo(data, size, err, sizeof err);
+    if (!fx) fprintf(stderr, "%s: %s\n", path, err);
+    if (bytes) *bytes = data;
+    else free(data);
+    if (size_out) *size_out = size;
+    return fx;
+}
+
+static void both_spellings_on_every_seed(void) {
+    for (size_t i = 0; i < sizeof good / sizeof *good; i++) {
+        char *seed = test_seed_path(good[i]);
+        char args[16384], a[1024], b[1024];
+        snprintf(a, sizeof a, "%s/fxc_%s.hfxo", tmp, good[i]);
+        snprintf(b, sizeof b, "%s/gnu_%s.hfxo", tmp, good[i]);
+        snprintf(args, sizeof args, "/T fx_2_0 /Fo '%s' /nologo '%s'", a, seed);
+        run_result r = run(args);
+        CHECK_INT(r.status, 0);
+        run_free(&r);
+        snprintf(args, sizeof args, "-o '%s' '%s'", b, seed);
+        r = run(args);
+        CHECK_INT(r.status, 0);
+        CHECK_STR(r.out, "");
+        run_free(&r);
+        size_t sa = 0, sb = 0;
+        char *da = NULL, *db = NULL;
+        hfx_fx_effect *fa = read_hfxo(a, &sa, &da), *fb = read_hfxo(b, &sb, &db);
+        CHECK(fa != NULL && fb != NULL);
+        CHECK(sa == sb && da && db && memcmp(da, db, sa) == 0);
+        if (fa) {
+            CHECK(fa->technique_count >= 1);
+            CHECK(fa->program_count >= 1);
+            CHECK(fa->programs[0].code[0][0].data != NULL);
+        }
+        hfx_fx_effect_free(fa);
+        hfx_fx_effect_free(fb);
+        free(da);
+        free(db);
+        free(seed);
+    }
+}
+
+static void multilights_fails_with_its_line(void) {
+    char *seed = test_seed_path("multilights.fx");
+    char args[16384], expected[2048], out[1024];
+    snprintf(out, sizeof out, "%s/multi.hfxo", tmp);
+    snprintf(args, sizeof args, "-o '%s' '%s'", out, seed);
+    run_result r = run(args);
+    CHECK_INT(r.status, 1);
+    snprintf(expected, sizeof expected, "%s(204,20): error X3013: 'Phong': no matching 4 parameter function\n", seed);
+    CHECK_CONTAINS(r.err, expected);
+    CHECK(access(out, F_OK) != 0); /* no output for a failed compile */
+    run_free(&r);
+    /* The fxc spelling fails the same way. */
+    snprintf(args, sizeof args, "/T fx_2_0 /Fo '%s' '%s'", out, seed);
+    r = run(args);
+    CHECK_INT(r.status, 1);
+    CHECK_CONTAINS(r.err, expected);
+    run_free(&r);
+    free(seed);
+}
+
+static void bad_usage_is_one_line(void) {
+    char *seed = test_seed_path("ambient.fx");
+    char args[16384];
+    run_result r = run("--frobnicate x.fx");
+    CHECK_INT(r.status, 2);
+    CHECK_STR(r.err, "hfxc: error: unknown option '--frobnicate' (hfxc --help for usage)\n");
+    run_free(&r);
+    r = run("/nonexistent/dir/missing.fx");
+    CHECK_INT(r.status, 2);
+    CHECK_INT(count_lines(r.err), 1);
+    run_free(&r);
+    r = run("missing_file.fx");
+    CHECK_INT(r.status, 2);
+    CHECK_STR(r.err, "hfxc: error: cannot open 'missing_file.fx': No such file or directory\n");
+    run_free(&r);
+    snprintf(args, sizeof args, "--target glsl999 '%s'", seed);
+    r = run(args);
+    CHECK_INT(r.status, 2);
+    CHECK_STR(r.err, "hfxc: error: unknown target 'glsl999' (glsl330, glsles300, glsl110, spirv) (hfxc --help for usage)\n");
+    run_free(&r);
+    r = run("");
+    CHECK_INT(r.status, 2);
+    CHECK_STR(r.err, "hfxc: error: no input file (hfxc --help for usage)\n");
+    run_free(&r);
+    snprintf(args, sizeof args, "'%s' -o", seed);
+    r = run(args);
+    CHECK_INT(r.status, 2);
+    CHECK_STR(r.err, "hfxc: error: option '-o' needs a value (hfxc --help for usage)\n");
+    run_free(&r);
+    r = run("--help");
+    CHECK_INT(r.status, 0);
+    CHECK_CONTAINS(r.out, "usage: hfxc");
+    run_free(&r);
+    r = run("--version");
+    CHECK_INT(r.status, 0);
+    CHECK_CONTAINS(r.out, "hfxc ");
+    run_free(&r);
+    free(seed);
+}
+
+static void many_files_in_one_call(void) {
+    char args[16384], dir[1024];
+    snprintf(dir, sizeof dir, "%s/many/", tmp);
+    mkdir(dir, 0777);
+    size_t n = snprintf(args, sizeof args, "-j 3 -o '%s'", dir);
+    for (size_t i = 0; i < sizeof good / sizeof *good; i++) {
+        char *seed = test_seed_path(good[i]);
+        n += snprintf(args + n, sizeof args - n, " '%s'", seed);
+        free(seed);
+    }
+    char *bad = test_seed_path("multilights.fx");
+    snprintf(args + n, sizeof args - n, " '%s'", bad);
+    free(bad);
+    run_result r = run(args);
+    CHECK_INT(r.status, 1);
+    CHECK_STR(r.out, "13 compiled, 1 failed\n");
+    CHECK_CONTAINS(r.err, "error X3013");
+    run_free(&r);
+    for (size_t i = 0; i < sizeof good / sizeof *good; i++) {
+        char path[2048];
+        snprintf(path, sizeof path, "%s%.*s.hfxo", dir, (int)(strlen(good[i]) - 3), good[i]);
+        hfx_fx_effect *fx = read_hfxo(path, NULL, NULL);
+        CHECK(fx != NULL);
+        hfx_fx_effect_free(fx);
+    }
+    char path[2048];
+    snprintf(path, sizeof path, "%smultilights.hfxo", dir);
+    CHECK(access(path, F_OK) != 0);
+}
+
+static void emit_glsl_writes_each_stage(void) {
+    char *seed = test_seed_path("multilights_repaired.fx");
+    char args[16384], dir[1024];
+    snprintf(dir, sizeof dir, "%s/glsl", tmp);
+    snprintf(args, sizeof args, "--emit-glsl '%s' '%s'", dir, seed);
+    run_result r = run(args);
+    CHECK_INT(r.status, 0);
+    run_free(&r);
+    static const char *const files[] = {"Texturizado.Ambiental", "Texturizado.MultiLuces", "Material.Ambiental",
+                                        "Material.MultiLuces"};
+    for (int i = 0; i < 4; i++)
+        for (int s = 0; s < 2; s++) {
+            char path[2048];
+            snprintf(path, sizeof path, "%s/multilights_repaired.%s.%s", dir, files[i], s ? "frag" : "vert");
+            char *text = test_read_file(path, NULL);
+            CHECK(text != NULL);
+            if (text) CHECK(strncmp(text, "#version 330", 12) == 0);
+            free(text);
+        }
+    snprintf(args, sizeof args, "--target glsles300 --emit-glsl '%s/es' '%s'", tmp, seed);
+    r = run(args);
+    CHECK_INT(r.status, 0);
+    run_free(&r);
+    char path[2048];
+    snprintf(path, sizeof path, "%s/es/multilights_repaired.Material.Ambiental.frag", tmp);
+    char *text = test_read_file(path, NULL);
+    CHECK(text && strncmp(text, "#version 300 es", 15) == 0);
+    free(text);
+    free(seed);
+}
+
+static void one_entry_point(void) {
+    char *seed = test_seed_path("ambient.fx");
+    char args[16384], out[1024];
+    snprintf(out, sizeof out, "%s/entry.hfxo", tmp);
+    snprintf(args, sizeof args, "/T ps_3_0 /E mainPS /Fo '%s' '%s'", out, seed);
+    run_result r = run(args);
+    CHECK_INT(r.status, 0);
+    run_free(&r);
+    hfx_fx_effect *fx = read_hfxo(out, NULL, NULL);
+    CHECK(fx != NULL);
+    if (fx) {
+        CHECK_INT(fx->top_param_count, 4);
+        CHECK_INT(fx->technique_count, 1);
+        CHECK_STR(fx->techniques[0].name, "mainPS");
+        CHECK_INT(fx->pass_count, 1);
+        CHECK_STR(fx->passes[0].name, "p0");
+        CHECK_INT(fx->program_count, 1);
+        CHECK(fx->programs[0].code[HFX_STAGE_FRAGMENT][HFX_TARGET_GLSL330].data != NULL);
+    }
+    hfx_fx_effect_free(fx);
+    snprintf(args, sizeof args, "-T vs_3_0 -E nope '%s'", seed);
+    r = run(args);
+    CHECK_INT(r.status, 1);
+    char expected[2048];
+    snprintf(expected, sizeof expected, "%s(1,1): error X3501: 'nope': entrypoint not found\n", seed);
+    CHECK_STR(r.err, expected);
+    run_free(&r);
+    snprintf(args, sizeof args, "/T ps_3_0 '%s'", seed);
+    r = run(args);
+    CHECK_INT(r.status, 2);
+    CHECK_STR(r.err, "hfxc: error: profile 'ps_3_0' needs an entry point (/E) (hfxc --help for usage)\n");
+    run_free(&r);
+    free(seed);
+}
+
+static void ast_werror_and_targets(void) {
+    char *seed = test_seed_path("fxcomposer_empty.fx");
+    char args[16384];
+    snprintf(args, sizeof args, "--ast '%s'", seed);
+    run_result r = run(args);
+    CHECK_INT(r.status, 0);
+    CHECK_CONTAINS(r.out, "WorldViewProj");
+    run_free(&r);
+    free(seed);
+    /* phong.fx has two X3206 warnings (float3 = float4): --werror makes them errors. */
+    seed = test_seed_path("phong.fx");
+    snprintf(args, sizeof args, "'%s'", seed);
+    r = run(args);
+    CHECK_INT(r.status, 0);
+    CHECK_CONTAINS(r.err, "warning X3206: implicit truncation of vector type");
+    run_free(&r);
+    snprintf(args, sizeof args, "--werror '%s'", seed);
+    r = run(args);
+    CHECK_INT(r.status, 1);
+    CHECK_CONTAINS(r.err, "error X3206: implicit truncation of vector type");
+    run_free(&r);
+    snprintf(args, sizeof args, "--no-warnings '%s'", seed);
+    r = run(args);
+    CHECK_INT(r.status, 0);
+    CHECK_STR(r.err, "");
+    run_free(&r);
+    /* GLSL 1.10 only: the .hfxo carries that target and no other. */
+    char out[1024];
+    snprintf(out, sizeof out, "%s/phong110.hfxo", tmp);
+    snprintf(args, sizeof args, "--no-warnings --target glsl110 -o '%s' '%s'", out, seed);
+    r = run(args);
+    CHECK_INT(r.status, 0);
+    run_free(&r);
+    hfx_fx_effect *fx = read_hfxo(out, NULL, NULL);
+    CHECK(fx != NULL);
+    if (fx) {
+        CHECK_INT(fx->targets, 1u << HFX_TARGET_GLSL110);
+        CHECK(fx->programs[0].code[HFX_STAGE_VERTEX][HFX_TARGET_GLSL110].data != NULL);
+        CHECK(fx->programs[0].code[HFX_STAGE_VERTEX][HFX_TARGET_GLSL330].data == NULL);
+    }
+    hfx_fx_effect_free(fx);
+    free(seed);
+}
+
+static void write_text(const char *path, const char *text) {
+    FILE *f = fopen(path, "w");
+    CHECK(f != NULL);
+    if (!f) return;
+    fputs(text, f);
+    fclose(f);
+}
+
+/* -D / /D / -DNAME=V and -I / /I reach the preprocessor in both spellings. */
+static void defines_and_include_dirs(void) {
+    char dir[1024], path[2048], inc[2048], args[16384], out[2048];
+    snprintf(dir, sizeof dir, "%s/inc", tmp);
+    mkdir(dir, 0777);
+    snprintf(inc, sizeof inc, "%s/common.fxh", dir);
+    write_text(inc, "float extra = EXTRA;\n");
+    snprintf(path, sizeof path, "%s/defs.fx", tmp);
+    write_text(path, "#include \"common.fxh\"\nfloat4 c = float4(COLOR_R, 0, 0, 1);\n");
+    snprintf(out, sizeof out, "%s/defs.hfxo", tmp);
+    static const char *const spellings[] = {"-I '%s' -D COLOR_R=0.5 -DEXTRA=2 -o '%s' '%s'",
+                                            "/I '%s' /D COLOR_R=0.5 /D EXTRA=2 /Fo '%s' '%s'"};
+    for (int k = 0; k < 2; k++) {
+        remove(out);
+        snprintf(args, sizeof args, spellings[k], dir, out, path);
+        run_result r = run(args);
+        CHECK_INT(r.status, 0);
+        CHECK_STR(r.err, "");
+        run_free(&r);
+        hfx_fx_effect *fx = read_hfxo(out, NULL, NULL);
+        CHECK(fx != NULL);
+        if (!fx) continue;
+        CHECK_INT(fx->top_param_count, 2);
+        uint32_t e = hfx_fx_param_find(fx, "extra"), c = hfx_fx_param_find(fx, "c");
+        CHECK(e != HFX_NONE && c != HFX_NONE);
+        if (e != HFX_NONE && c != HFX_NONE) {
+            float f[2];
+            memcpy(&f[0], &fx->values[fx->params[e].offset], 4);
+            memcpy(&f[1], &fx->values[fx->params[c].offset], 4);
+            CHECK_NEAR(f[0], 2.0, 0);
+            CHECK_NEAR(f[1], 0.5, 0);
+        }
+        hfx_fx_effect_free(fx);
+    }
+    /* Without the folder, the include fails with fxc's located X1507. */
+    snprintf(args, sizeof args, "-D COLOR_R=1 -D EXTRA=1 '%s'", path);
+    run_result r = run(args);
+    CHECK_INT(r.status, 1);
+    CHECK_CONTAINS(r.err, "error X1507");
+    run_free(&r);
+}
+
+#ifdef HFX_HAVE_CJSON
+static cJSON *json_of(const char *flag, const char *seed_name) {
+    char *seed = test_seed_path(seed_name);
+    char args[16384];
+    snprintf(args, sizeof args, "%s '%s'", flag, seed);
+    run_result r = run(args);
+    CHECK_INT(r.status, 0);
+    cJSON *j = cJSON_Parse(r.out);
+    CHECK(j != NULL);
+    run_free(&r);
+    free(seed);
+    return j;
+}
+
+static cJSON *named(const cJSON *array, const char *name) {
+    const cJSON *it;
+    cJSON_ArrayForEach(it, array) {
+        const cJSON *n = cJSON_GetObjectItemCaseSensitive(it, "name");
+        if (cJSON_IsString(n) && strcmp(n->valuestring, name) == 0) return (cJSON *)it;
+    }
+    fprintf(stderr, "no '%s' in the JSON\n", name);
+    return NULL;
+}
+
+static const char *str_of(const cJSON *o, const char *key) {
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
+    return cJSON_IsString(v) ? v->valuestring : NULL;
+}
+
+static double num_of(const cJSON *o, const char *key) {
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
+    return cJSON_IsNumber(v) ? v->valuedouble : -12345;
+}
+
+static void annotations_json_ambient(void) {
+    cJSON *j = json_of("--annotations", "ambient.fx");
+    if (!j) return;
+    const cJSON *params = cJSON_GetObjectItemCaseSensitive(j, "parameters");
+    CHECK_INT(cJSON_GetArraySize(params), 4);
+    const cJSON *world = named(params, "world");
+    CHECK_STR(str_of(world, "semantic"), "World");
+    CHECK_STR(str_of(world, "class"), "matrix");
+    CHECK_STR(str_of(world, "type"), "float");
+    CHECK_NEAR(num_of(world, "rows"), 4, 0);
+    CHECK_NEAR(num_of(world, "columns"), 4, 0);
+    const cJSON *c = named(params, "colorMaterialAmbiental");
+    CHECK(c != NULL);
+    CHECK_STR(str_of(c, "class"), "vector");
+    CHECK_NEAR(num_of(c, "rows"), 1, 0);
+    CHECK_NEAR(num_of(c, "columns"), 4, 0);
+    CHECK_NEAR(num_of(c, "elements"), 0, 0);
+    CHECK(cJSON_IsNull(cJSON_GetObjectItemCaseSensitive(c, "semantic")));
+    const cJSON *def = cJSON_GetObjectItemCaseSensitive(c, "default");
+    CHECK_INT(cJSON_GetArraySize(def), 4);
+    static const double want[] = {0.05, 0.05, 0.05, 1};
+    for (int i = 0; i < 4; i++) {
+        const cJSON *v = cJSON_GetArrayItem(def, i);
+        CHECK(cJSON_IsNumber(v));
+        if (v) CHECK_NEAR(v->valuedouble, want[i], 0); /* printed as the shortest decimal: exactly 0.05 */
+    }
+    const cJSON *anns = cJSON_GetObjectItemCaseSensitive(c, "annotations");
+    CHECK_INT(cJSON_GetArraySize(anns), 2);
+    const cJSON *ui = named(anns, "UIName");
+    CHECK_STR(str_of(ui, "type"), "string");
+    CHECK_STR(str_of(ui, "value"), "Color Ambiental");
+    CHECK_STR(str_of(named(anns, "UIWidget"), "value"), "Color");
+    const cJSON *tech = cJSON_GetArrayItem(cJSON_GetObjectItemCaseSensitive(j, "techniques"), 0);
+    CHECK_STR(str_of(tech, "name"), "ModeloAmbiental");
+    const cJSON *pass = cJSON_GetArrayItem(cJSON_GetObjectItemCaseSensitive(tech, "passes"), 0);
+    CHECK_STR(str_of(pass, "name"), "p0");
+    CHECK(cJSON_GetObjectItemCaseSensitive(pass, "program") == NULL); /* only --reflect has it */
+    cJSON_Delete(j);
+}
+
+static void annotations_json_spot_specular(void) {
+    cJSON *j = json_of("--annotations", "spot_specular.fx");
+    if (!j) return;
+    const cJSON *params = cJSON_GetObjectItemCaseSensitive(j, "parameters");
+    CHECK_INT(cJSON_GetArraySize(params), 22);
+    const cJSON *ks = named(params, "ks");
+    CHECK_STR(str_of(ks, "class"), "scalar");
+    const cJSON *def = cJSON_GetObjectItemCaseSensitive(ks, "default");
+    CHECK_INT(cJSON_GetArraySize(def), 1);
+    CHECK_NEAR(cJSON_GetArrayItem(def, 0)->valuedouble, 0.05, 0);
+    const cJSON *anns = cJSON_GetObjectItemCaseSensitive(ks, "annotations");
+    CHECK_INT(cJSON_GetArraySize(anns), 5);
+    CHECK_STR(str_of(named(anns, "UIWidget"), "value"), "slider");
+    const cJSON *mn = named(anns, "UIMin"), *mx = named(anns, "UIMax"), *st = named(anns, "UIStep");
+    CHECK_STR(str_of(mn, "type"), "float");
+    CHECK_STR(str_of(mn, "class"), "scalar");
+    CHECK_NEAR(num_of(mn, "value"), 0, 0);
+    CHECK_NEAR(num_of(mx, "value"), 10, 0);
+    CHECK_NEAR(num_of(st, "value"), 0.05, 0);
+    CHECK_STR(str_of(named(anns, "UIName"), "value"), "Coeficiente de reflexi\xc3\xb3n especular");
+    const cJSON *at = named(params, "atenuado");
+    CHECK_STR(str_of(at, "type"), "bool");
+    CHECK(cJSON_IsFalse(cJSON_GetArrayItem(cJSON_GetObjectItemCaseSensitive(at, "default"), 0)));
+    /* The sampler: texture and states by name. */
+    const cJSON *s = cJSON_GetArrayItem(cJSON_GetObjectItemCaseSensitive(j, "samplers"), 0);
+    CHECK_STR(str_of(s, "name"), "modeloTexturaMuestra");
+    CHECK_STR(str_of(s, "texture"), "texturaModelo");
+    const cJSON *states = cJSON_GetObjectItemCaseSensitive(s, "states");
+    CHECK_INT(cJSON_GetArraySize(states), 5);
+    CHECK_STR(str_of(named(states, "MinFilter"), "value"), "Linear");
+    CHECK_NEAR(num_of(named(states, "AddressU"), "number"), 1, 0);
+    const cJSON *techs = cJSON_GetObjectItemCaseSensitive(j, "techniques");
+    CHECK_INT(cJSON_GetArraySize(techs), 2);
+    CHECK(named(techs, "Material") != NULL);
+    cJSON_Delete(j);
+}
+
+static void reflect_json_interface(void) {
+    cJSON *j = json_of("--reflect", "tutorial0.fx");
+    if (!j) return;
+    const cJSON *params = cJSON_GetObjectItemCaseSensitive(j, "parameters");
+    CHECK_STR(str_of(named(params, "World"), "glsl_name"), "World");
+    const cJSON *tech = cJSON_GetArrayItem(cJSON_GetObjectItemCaseSensitive(j, "techniques"), 0);
+    const cJSON *pass = cJSON_GetArrayItem(cJSON_GetObjectItemCaseSensitive(tech, "passes"), 0);
+    const cJSON *prog = cJSON_GetObjectItemCaseSensitive(pass, "program");
+    CHECK(cJSON_IsObject(prog));
+    const cJSON *attrs = cJSON_GetObjectItemCaseSensitive(prog, "attributes");
+    CHECK_INT(cJSON_GetArraySize(attrs), 2);
+    const cJSON *it;
+    int found = 0;
+    cJSON_ArrayForEach(it, attrs) {
+        const char *sem = str_of(it, "semantic");
+        /* The NVIDIA aliasing convention: POSITION 0, TEXCOORD0 8. */
+        if (sem && !strcmp(sem, "POSITION0")) {
+            CHECK_NEAR(num_of(it, "location"), 0, 0);
+            found++;
+        }
+        if (sem && !strcmp(sem, "TEXCOORD0")) {
+            CHECK_NEAR(num_of(it, "location"), 8, 0);
+            found++;
+        }
+    }
+    CHECK_INT(found, 2);
+    const cJSON *samplers = cJSON_GetObjectItemCaseSensitive(prog, "samplers");
+    CHECK_INT(cJSON_GetArraySize(samplers), 1);
+    CHECK_STR(str_of(cJSON_GetArrayItem(samplers, 0), "sampler"), "diffuseSampler");
+    CHECK_NEAR(num_of(cJSON_GetArrayItem(samplers, 0), "unit"), 0, 0);
+    const cJSON *uniforms = cJSON_GetObjectItemCaseSensitive(prog, "uniforms");
+    CHECK_INT(cJSON_GetArraySize(uniforms), 3);
+    cJSON_Delete(j);
+}
+#endif
+
+int main(void) {
+    test_require_seeds();
+    const char *build = getenv("HFX_BUILD_DIR");
+    if (!build) test_skip("HFX_BUILD_DIR is not set (run through ctest)");
+    snprintf(hfxc, sizeof hfxc, "%s/compiler/hfxc", build);
+    if (access(hfxc, X_OK) != 0) test_skip("hfxc is not built");
+    tmp = test_temp_dir();
+    RUN(both_spellings_on_every_seed);
+    RUN(multilights_fails_with_its_line);
+    RUN(bad_usage_is_one_line);
+    RUN(many_files_in_one_call);
+    RUN(emit_glsl_writes_each_stage);
+    RUN(one_entry_point);
+    RUN(defines_and_include_dirs);
+    RUN(ast_werror_and_targets);
+#ifdef HFX_HAVE_CJSON
+    RUN(annotations_json_ambient);
+    RUN(annotations_json_spot_specular);
+    RUN(reflect_json_interface);
+#endif
+    char cmd[1024];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp);
+    if (system(cmd) != 0) fprintf(stderr, "could not remove %s\n", tmp);
+    free(tmp);
+    return test_summary();
+}

@@ -1,0 +1,40 @@
+/* bind.h: filling an effect's parameters without code, the way FX Composer does: matrices by
+ * semantic or name (World, View, Projection, WorldViewProjection, their Inverse / Transpose /
+ * InverseTranspose forms, ViewInverse...), the camera position, and light and material
+ * parameters the seed tutorials use (LightDirection, direccionLuz, posicionLuz, LightPosition[],
+ * structs of lights...). Lights and materials are only given values when the effect left them
+ * at zero (no initializer), so an effect's own defaults always win. */
+#ifndef HFXVIEW_BIND_H
+#define HFXVIEW_BIND_H
+
+#include <stddef.h>
+
+#include "hfx/hfx.h"
+#include "options.h"
+#include "vmath.h"
+
+typedef struct hv_scene {
+    float world[16], view[16], projection[16];
+    hv_vec3 eye, at;
+    hv_vec3 light_position, light_direction; /* direction: where the light travels */
+    float light_color[3];
+    int width, height;
+} hv_scene;
+
+void hv_scene_from_options(hv_scene *s, const hv_options *o);
+
+/* Which matrix a name or semantic asks for ("WorldViewProj", "ViewInverse", "matWorldIT",
+ * "WorldITXf"...): 1 with out filled, or 0 when it names none. */
+int hv_scene_matrix(const hv_scene *s, const char *name, int is_semantic, float out[16]);
+
+/* Sets every matrix, camera, light and material parameter it recognises; the count set. */
+int hv_bind_scene(hfx_effect *fx, const hv_scene *s);
+
+/* --set NAME=VALUES: NAME may be "a", "a[2]", "a[1].Member"; VALUES are comma-separated
+ * numbers, or true / false. 0, or -1 with a message. */
+int hv_set_param(hfx_effect *fx, const char *name, const char *values, char *err, size_t errlen);
+
+/* The parameter a path like "lights[1].Color" names, or NULL. */
+hfx_param *hv_find_param(hfx_effect *fx, const char *path);
+
+#endif

@@ -1,0 +1,227 @@
+/* main.c: hfxview, render a Direct3D 9 effect to a PNG (headless on OSMesa) or a window.
+ * Exit status: 0 ok, 1 the effect failed to load or draw, 2 usage. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bind.h"
+#include "context.h"
+#include "hfx/hfx.h"
+#include "image.h"
+#include "mesh.h"
+#include "options.h"
+#include "render.h"
+#include "textures.h"
+
+enum { EXIT_OK = 0, EXIT_EFFECT = 1, EXIT_USAGE = 2 };
+
+typedef struct viewer {
+    hv_options opt;
+    hv_mesh mesh;
+    hv_context *ctx;
+    const hv_gl *gl;
+    hfx_device *dev;
+    hfx_effect *fx;
+    hv_gpu_mesh gpu;
+    hv_textures textures;
+    hfx_technique *technique;
+    char err[1024];
+} viewer;
+
+static int usage_error(const char *msg) {
+    fprintf(stderr, "hfxview: %s\n%s", msg, hv_usage());
+    return EXIT_USAGE;
+}
+
+/* "dir/name.fx" -> "name.png", in the current folder like fxc's default outputs. */
+static char *default_output(const char *input) {
+    const char *base = strrchr(input, '/');
+    base = base ? base + 1 : input;
+    size_t n = strcspn(base, ".");
+    char *out = malloc(n + 5);
+    if (out) snprintf(out, n + 5, "%.*s.png", (int)n, base);
+    return out;
+}
+
+static int load_effect(viewer *v) {
+    hfx_load_options lo = {0};
+    lo.defines = v->opt.defines;
+    lo.define_count = v->opt.define_count;
+    lo.include_dirs = v->opt.include_dirs;
+    lo.include_dir_count = v->opt.include_dir_count;
+    char *errors = NULL;
+    v->fx = hfx_effect_load(v->dev, v->opt.input, &lo, &errors);
+    if (errors && *errors) fputs(errors, stderr); /* the compiler's own file(line,col): lines */
+    if (errors && *errors && errors[strlen(errors) - 1] != '\n') fputc('\n', stderr);
+    if (!v->fx && !(errors && strstr(errors, "error")))
+        fprintf(stderr, "%s: error: cannot load the effect: %s\n", v->opt.input, hfx_device_last_error(v->dev));
+    hfx_free(errors);
+    if (v->fx && hfx_effect_warnings(v->fx) && *hfx_effect_warnings(v->fx))
+        fprintf(stderr, "%s", hfx_effect_warnings(v->fx));
+    return v->fx ? EXIT_OK : EXIT_EFFECT;
+}
+
+static void list_effect(hfx_effect *fx) {
+    for (size_t i = 0; i < hfx_effect_technique_count(fx); i++) {
+        hfx_technique *t = hfx_effect_technique_at(fx, i);
+        printf("technique %s\n", hfx_technique_name(t));
+        for (size_t k = 0; k < hfx_technique_pass_count(t); k++)
+            printf("  pass %zu %s\n", k, hfx_pass_name(hfx_technique_pass(t, k)));
+    }
+    for (size_t i = 0; i < hfx_effect_param_count(fx); i++) {
+        hfx_param *p = hfx_effect_param_at(fx, i);
+        const char *sem = hfx_param_semantic(p);
+        printf("parameter %s", hfx_param_name(p));
+        if (hfx_param_elements(p)) printf("[%zu]", hfx_param_elements(p));
+        if (sem && *sem) printf(" : %s", sem);
+        printf("\n");
+    }
+}
+
+static int pick_technique(viewer *v) {
+    hfx_effect *fx = v->fx;
+    size_t count = hfx_effect_technique_count(fx);
+    const char *want = v->opt.technique;
+    if (!want) v->technique = count ? hfx_effect_technique_at(fx, 0) : NULL;
+    else if (!(v->technique = hfx_effect_technique(fx, want))) {
+        char *end;
+        unsigned long i = strtoul(want, &end, 10);
+        if (*want && !*end && i < count) v->technique = hfx_effect_technique_at(fx, i);
+    }
+    if (!v->technique) {
+        fprintf(stderr, "hfxview: %s has no technique '%s'; it has:", v->opt.input, want ? want : "");
+        for (size_t i = 0; i < count; i++) fprintf(stderr, " %s", hfx_technique_name(hfx_effect_technique_at(fx, i)));
+        fprintf(stderr, "\n");
+        return want ? EXIT_USAGE : EXIT_EFFECT;
+    }
+    size_t passes = hfx_technique_pass_count(v->technique);
+    if (v->opt.pass >= 0 && (size_t)v->opt.pass >= passes) {
+        fprintf(stderr, "hfxview: technique %s has %zu pass%s; no pass %d\n", hfx_technique_name(v->technique), passes,
+                passes == 1 ? "" : "es", v->opt.pass);
+        return EXIT_USAGE;
+    }
+    return EXIT_OK;
+}
+
+static int apply_options(viewer *v) {
+    hv_scene scene;
+    hv_scene_from_options(&scene, &v->opt);
+    hv_bind_scene(v->fx, &scene);
+    for (size_t i = 0; i < v->opt.set_count; i++) {
+        char name[256];
+        size_t n = (size_t)(v->opt.sets[i].value - 1 - v->opt.sets[i].name);
+        snprintf(name, sizeof name, "%.*s", (int)n, v->opt.sets[i].name);
+        if (hv_set_param(v->fx, name, v->opt.sets[i].value, v->err, sizeof v->err) != 0) return usage_error(v->err);
+    }
+    if (hv_bind_textures(&v->textures, v->gl, v->fx, v->opt.textures, v->opt.texture_count, v->err, sizeof v->err))
+        return usage_error(v->err);
+    return EXIT_OK;
+}
+
+static int draw(viewer *v) {
+    size_t failed = 0;
+    hv_clear(v->gl, v->opt.width, v->opt.height, v->opt.background);
+    int rc = hv_draw_technique(v->gl, &v->gpu, v->technique, v->opt.pass, v->opt.blend_add, &failed);
+    if (rc != HFX_OK) {
+        fprintf(stderr, "%s: error: technique %s, pass %zu: %s\n", v->opt.input, hfx_technique_name(v->technique), failed,
+                hfx_device_last_error(v->dev));
+        return EXIT_EFFECT;
+    }
+    return EXIT_OK;
+}
+
+static int save_png(viewer *v) {
+    hv_image img;
+    char *path = v->opt.output ? NULL : default_output(v->opt.input);
+    const char *out = v->opt.output ? v->opt.output : path;
+    int rc = EXIT_OK;
+    if (!out || hv_read_image(v->gl, v->opt.width, v->opt.height, &img) != 0) {
+        fprintf(stderr, "hfxview: out of memory\n");
+        rc = EXIT_EFFECT;
+    } else {
+        if (hv_image_write_png(&img, out) != 0) {
+            fprintf(stderr, "hfxview: cannot write '%s'\n", out);
+            rc = EXIT_USAGE;
+        }
+        hv_image_free(&img);
+    }
+    free(path);
+    return rc;
+}
+
+/* The window loop: T cycles techniques, Left / Right turn the mesh, Escape quits. */
+static int show_window(viewer *v) {
+    while (!hv_context_should_close(v->ctx)) {
+        if (draw(v) != EXIT_OK) return EXIT_EFFECT;
+        hv_context_present(v->ctx);
+        if (hv_context_key_pressed(v->ctx, 'T')) {
+            size_t n = hfx_effect_technique_count(v->fx), i = 0;
+            while (i < n && hfx_effect_technique_at(v->fx, i) != v->technique) i++;
+            v->technique = hfx_effect_technique_at(v->fx, (i + 1) % n);
+            printf("technique %s\n", hfx_technique_name(v->technique));
+        }
+        int turn = hv_context_key_pressed(v->ctx, 262) - hv_context_key_pressed(v->ctx, 263); /* GLFW arrows */
+        if (turn) {
+            v->opt.yaw_degrees += 15.0f * (float)turn;
+            hv_scene scene;
+            hv_scene_from_options(&scene, &v->opt);
+            hv_bind_scene(v->fx, &scene);
+        }
+    }
+    return EXIT_OK;
+}
+
+static int run(viewer *v) {
+    int rc;
+    if (hv_mesh_load(&v->mesh, v->opt.mesh, v->err, sizeof v->err) != 0) return usage_error(v->err);
+    v->ctx = hv_context_create(v->opt.width, v->opt.height, v->opt.window, v->err, sizeof v->err);
+    if (v->err[0]) fprintf(stderr, "hfxview: %s\n", v->err);
+    if (!v->ctx) return EXIT_EFFECT;
+    v->gl = hv_context_gl(v->ctx);
+    v->dev = hfx_device_create_gl(hv_context_loader(v->ctx));
+    if (!v->dev) {
+        fprintf(stderr, "hfxview: the hfx runtime cannot start on this OpenGL context\n");
+        return EXIT_EFFECT;
+    }
+    if ((rc = load_effect(v)) != EXIT_OK) return rc;
+    if (v->opt.list) {
+        list_effect(v->fx);
+        return EXIT_OK;
+    }
+    if ((rc = pick_technique(v)) != EXIT_OK) return rc;
+    if (hv_gpu_mesh_upload(v->gl, &v->gpu, &v->mesh) != 0) {
+        fprintf(stderr, "hfxview: cannot upload the mesh\n");
+        return EXIT_EFFECT;
+    }
+    if ((rc = apply_options(v)) != EXIT_OK) return rc;
+    if (hv_context_is_window(v->ctx)) {
+        if ((rc = show_window(v)) != EXIT_OK) return rc;
+        return v->opt.output ? save_png(v) : EXIT_OK;
+    }
+    if ((rc = draw(v)) != EXIT_OK) return rc;
+    return save_png(v);
+}
+
+static void cleanup(viewer *v) {
+    if (v->gl) {
+        hv_textures_release(&v->textures, v->gl);
+        hv_gpu_mesh_release(v->gl, &v->gpu);
+    }
+    hfx_effect_destroy(v->fx);
+    hfx_device_destroy(v->dev);
+    hv_context_destroy(v->ctx);
+    hv_mesh_free(&v->mesh);
+}
+
+int main(int argc, char **argv) {
+    viewer *v = calloc(1, sizeof *v);
+    if (!v) return EXIT_EFFECT;
+    hv_options_defaults(&v->opt);
+    int rc;
+    if (hv_options_parse(&v->opt, argc, argv, v->err, sizeof v->err) != 0) rc = usage_error(v->err);
+    else if (v->opt.help) rc = (fputs(hv_usage(), stdout), EXIT_OK);
+    else rc = run(v);
+    cleanup(v);
+    free(v);
+    return rc;
+}

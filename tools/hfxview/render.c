@@ -1,0 +1,178 @@
+/* render.c: vertex buffers, states and draw calls (see render.h). */
+#include "render.h"
+
+#include <stddef.h>
+#include <stdlib.h>
+#include <string.h>
+
+int hv_gpu_mesh_upload(const hv_gl *gl, hv_gpu_mesh *g, const hv_mesh *m) {
+    memset(g, 0, sizeof *g);
+    if (!m->vcount || !m->icount) return -1;
+    gl->GenVertexArrays(1, &g->vao);
+    gl->BindVertexArray(g->vao);
+    gl->GenBuffers(1, &g->vbo);
+    gl->BindBuffer(GL_ARRAY_BUFFER, g->vbo);
+    gl->BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(m->vcount * sizeof *m->v), m->v, GL_STATIC_DRAW);
+    gl->GenBuffers(1, &g->ibo);
+    gl->BindBuffer(GL_ELEMENT_ARRAY_BUFFER, g->ibo); /* remembered by the VAO */
+    gl->BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)(m->icount * sizeof *m->idx), m->idx, GL_STATIC_DRAW);
+    gl->BindVertexArray(0);
+    g->index_count = (int)m->icount;
+    return gl->GetError() == GL_NO_ERROR ? 0 : -1;
+}
+
+void hv_gpu_mesh_release(const hv_gl *gl, hv_gpu_mesh *g) {
+    if (g->ibo) gl->DeleteBuffers(1, &g->ibo);
+    if (g->vbo) gl->DeleteBuffers(1, &g->vbo);
+    if (g->vao) gl->DeleteVertexArrays(1, &g->vao);
+    memset(g, 0, sizeof *g);
+}
+
+typedef struct { const char *semantic; size_t offset; int size; } vertex_stream;
+
+static const vertex_stream streams[] = {
+    {"POSITION0", offsetof(hv_vertex, pos), 3},
+    {"NORMAL0", offsetof(hv_vertex, normal), 3},
+    {"TEXCOORD0", offsetof(hv_vertex, uv), 2},
+    {"TANGENT0", offsetof(hv_vertex, tangent), 3},
+    {"BINORMAL0", offsetof(hv_vertex, binormal), 3},
+};
+
+/* Inputs a mesh never has; the fixed-function values D3D9 would supply. */
+static const struct { const char *semantic; float v[4]; } constants[] = {
+    {"COLOR0", {1, 1, 1, 1}}, {"COLOR1", {0, 0, 0, 0}}, {"BLENDWEIGHT0", {1, 0, 0, 0}},
+    {"BLENDINDICES0", {0, 0, 0, 0}}, {"PSIZE0", {1, 0, 0, 0}},
+};
+
+void hv_bind_attributes(const hv_gl *gl, const hv_gpu_mesh *g, const hfx_pass *pass) {
+    gl->BindVertexArray(g->vao);
+    gl->BindBuffer(GL_ARRAY_BUFFER, g->vbo);
+    for (GLuint i = 0; i < 16; i++) gl->DisableVertexAttribArray(i);
+    for (size_t i = 0; i < sizeof streams / sizeof streams[0]; i++) {
+        int loc = hfx_pass_attribute_location(pass, streams[i].semantic);
+        if (loc < 0) continue;
+        gl->VertexAttribPointer((GLuint)loc, streams[i].size, GL_FLOAT, GL_FALSE, sizeof(hv_vertex),
+                                (const void *)streams[i].offset);
+        gl->EnableVertexAttribArray((GLuint)loc);
+    }
+    for (size_t i = 0; i < sizeof constants / sizeof constants[0]; i++) {
+        int loc = hfx_pass_attribute_location(pass, constants[i].semantic);
+        if (loc >= 0) gl->VertexAttrib4f((GLuint)loc, constants[i].v[0], constants[i].v[1], constants[i].v[2], constants[i].v[3]);
+    }
+    /* Other texture coordinate sets reuse the first, as a single-UV model would in XNA. */
+    for (int set = 1; set < 8; set++) {
+        char name[16] = "TEXCOORD0";
+        name[8] = (char)('0' + set);
+        int loc = hfx_pass_attribute_location(pass, name);
+        if (loc < 0) continue;
+        gl->VertexAttribPointer((GLuint)loc, 2, GL_FLOAT, GL_FALSE, sizeof(hv_vertex), (const void *)offsetof(hv_vertex, uv));
+        gl->EnableVertexAttribArray((GLuint)loc);
+    }
+}
+
+void hv_draw_mesh(const hv_gl *gl, const hv_gpu_mesh *g, const hfx_pass *pass) {
+    hv_bind_attributes(gl, g, pass);
+    gl->DrawElements(GL_TRIANGLES, g->index_count, GL_UNSIGNED_INT, NULL);
+}
+
+void hv_set_default_states(const hv_gl *gl) {
+    gl->Enable(GL_DEPTH_TEST);
+    gl->DepthFunc(GL_LEQUAL);
+    gl->DepthMask(GL_TRUE);
+    /* D3D culls by winding as seen on screen; clockwise is front, as in XNA. */
+    gl->Enable(GL_CULL_FACE);
+    gl->FrontFace(GL_CW);
+    gl->CullFace(GL_BACK);
+    gl->Disable(GL_BLEND);
+    gl->ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+void hv_clear(const hv_gl *gl, int width, int height, const float rgba[4]) {
+    gl->Viewport(0, 0, width, height);
+    gl->ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    gl->DepthMask(GL_TRUE);
+    gl->ClearColor(rgba[0], rgba[1], rgba[2], rgba[3]);
+    gl->ClearDepth(1.0);
+    gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+}
+
+int hv_draw_technique(const hv_gl *gl, const hv_gpu_mesh *g, hfx_technique *t, int pass, int blend_add,
+                      size_t *failed_pass) {
+    size_t count = hfx_technique_pass_count(t);
+    for (size_t i = 0; i < count; i++) {
+        if (pass >= 0 && (size_t)pass != i) continue;
+        hfx_pass *p = hfx_technique_pass(t, i);
+        hv_set_default_states(gl);
+        if (blend_add && i > 0) { /* the application's job in XNA multi-pass lighting */
+            gl->Enable(GL_BLEND);
+            gl->BlendEquation(GL_FUNC_ADD);
+            gl->BlendFunc(GL_ONE, GL_ONE);
+            gl->DepthMask(GL_FALSE);
+        }
+        int rc = hfx_pass_apply(p);
+        if (rc != HFX_OK) {
+            if (failed_pass) *failed_pass = i;
+            return rc;
+        }
+        hv_draw_mesh(gl, g, p);
+    }
+    gl->BindVertexArray(0);
+    return HFX_OK;
+}
+
+int hv_read_image(const hv_gl *gl, int width, int height, hv_image *out) {
+    size_t row = (size_t)width * 4;
+    unsigned char *px = malloc(row * (size_t)height);
+    if (!px) return -1;
+    gl->Finish();
+    gl->PixelStorei(GL_PACK_ALIGNMENT, 1);
+    gl->ReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    for (int y = 0; y < height / 2; y++) { /* GL's rows go bottom up; PNG's top down */
+        unsigned char *a = px + (size_t)y * row, *b = px + (size_t)(height - 1 - y) * row;
+        for (size_t k = 0; k < row; k++) {
+            unsigned char s = a[k];
+            a[k] = b[k];
+            b[k] = s;
+        }
+    }
+    out->width = width;
+    out->height = height;
+    out->rgba = px;
+    return 0;
+}
+
+static void texture_params(const hv_gl *gl, GLenum target) {
+    gl->TexParameteri(target, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    gl->TexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl->TexParameteri(target, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    gl->TexParameteri(target, GL_TEXTURE_WRAP_T, GL_REPEAT);
+}
+
+unsigned int hv_texture_2d(const hv_gl *gl, const hv_image *img) {
+    GLuint tex = 0;
+    gl->GenTextures(1, &tex);
+    gl->ActiveTexture(GL_TEXTURE0);
+    gl->BindTexture(GL_TEXTURE_2D, tex);
+    gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    /* Row 0 of the image is texture row t = 0, which is Direct3D's v = 0: no flip needed. */
+    gl->TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, img->width, img->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, img->rgba);
+    gl->GenerateMipmap(GL_TEXTURE_2D);
+    texture_params(gl, GL_TEXTURE_2D);
+    gl->BindTexture(GL_TEXTURE_2D, 0);
+    return tex;
+}
+
+unsigned int hv_texture_cube(const hv_gl *gl, const hv_image *img) {
+    GLuint tex = 0;
+    gl->GenTextures(1, &tex);
+    gl->ActiveTexture(GL_TEXTURE0);
+    gl->BindTexture(GL_TEXTURE_CUBE_MAP, tex);
+    gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    for (int face = 0; face < 6; face++)
+        gl->TexImage2D((GLenum)(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face), 0, GL_RGBA8, img->width, img->height, 0,
+                       GL_RGBA, GL_UNSIGNED_BYTE, img->rgba);
+    gl->GenerateMipmap(GL_TEXTURE_CUBE_MAP);
+    texture_params(gl, GL_TEXTURE_CUBE_MAP);
+    gl->BindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    return tex;
+}
