@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { DUMP_MAX_DEPTH = 6000 };
+enum { DUMP_MAX_DEPTH = 4500 }; /* just above the parser's own limits (ast.h trees from hfx_parse) */
 
 typedef struct dump {
     char *buf;
@@ -143,8 +143,7 @@ static void dump_operator(dump *d, const hfx_expr *e, int depth) {
     case EX_COMMA:
         dump_expr(d, a, depth + 1);
         if (e->kind == EX_COMMA) puts_(d, ", ");
-        else putf(d, " %s%s ", e->kind == EX_ASSIGN ? op_text(e->op) : op_text(e->op),
-                  e->kind == EX_ASSIGN ? "=" : "");
+        else putf(d, " %s%s ", op_text(e->op), e->kind == EX_ASSIGN ? "=" : "");
         dump_expr(d, b, depth + 1);
         break;
     case EX_TERNARY:

@@ -76,7 +76,7 @@ static int pick_overload(hfx_decl **cands, uint32_t n, const hfx_expr *e, hfx_de
 static void convert_args(check_ctx *c, hfx_expr *e, const hfx_type *const *params, const bool *outs, bool warn) {
     for (uint32_t i = 0; i < e->arg_count; i++) {
         if (outs[i]) ck_lvalue(c, e->args[i]);
-        else e->args[i] = ck_convert(c, e->args[i], params[i], warn);
+        else e->args[i] = ck_convert_arg(c, e->args[i], params[i], warn, e);
     }
 }
 
@@ -108,7 +108,29 @@ static const hfx_type *call_intrinsic(check_ctx *c, hfx_expr *e, int id) {
     return set_type(e, m.ret);
 }
 
+/* technique10/11 pass syntax: `SetVertexShader(CompileShader(vs_4_0, VS(1)))`. CompileShader
+ * becomes an EX_COMPILE like `compile vs_4_0 VS(1)`; Set*Shader and Set*State calls keep
+ * their (state-checked) arguments for the builder and take the type of the first one. */
+static const hfx_type *state_call(check_ctx *c, hfx_expr *e) {
+    if (strcmp(e->name, "CompileShader") == 0 && e->arg_count == 2 && e->args[0]->kind == EX_IDENT &&
+        e->args[1]->kind == EX_CALL) {
+        hfx_expr *entry = e->args[1];
+        e->kind = EX_COMPILE;
+        e->loc = entry->loc; /* errors about the entry point at its name */
+        e->profile = e->args[0]->name;
+        e->name = entry->name;
+        e->args = entry->args;
+        e->arg_count = entry->arg_count;
+        return ck_compile(c, e);
+    }
+    check_args(c, e);
+    return set_type(e, e->arg_count ? e->args[0]->type : hfx_type_void(c->types));
+}
+
 const hfx_type *ck_call(check_ctx *c, hfx_expr *e) {
+    if (!e->name) return set_type(e, c->err);
+    if (c->in_state && !ck_lookup_funcs(c, e->name, (hfx_decl *[1]){0}, 1) && hfx_intrinsic_find(e->name) < 0)
+        return state_call(c, e);
     bool args_ok = check_args(c, e);
     hfx_decl *cands[MAX_OVERLOADS];
     uint32_t n = ck_lookup_funcs(c, e->name, cands, MAX_OVERLOADS);
@@ -226,7 +248,7 @@ const hfx_type *ck_compile(check_ctx *c, hfx_expr *e) {
     uint32_t k = 0;
     for (uint32_t i = 0; i < f->param_count; i++)
         if (f->params[i]->mods & MOD_UNIFORM) {
-            e->args[k] = ck_convert(c, e->args[k], f->params[i]->type, true);
+            e->args[k] = ck_convert_arg(c, e->args[k], f->params[i]->type, true, e);
             k++;
         }
     return set_type(e, t);

@@ -89,6 +89,9 @@ const hfx_type *ck_expr(check_ctx *c, hfx_expr *e);           /* sets and return
  * returns e typed as the error type), X3206 at the expression's start when it truncates and
  * `warn` is set. */
 hfx_expr *ck_convert(check_ctx *c, hfx_expr *e, const hfx_type *to, bool warn);
+/* The same for an argument of `call` (EX_CALL / EX_COMPILE): X3206 names the function and
+ * points at the call, as fxc does. */
+hfx_expr *ck_convert_arg(check_ctx *c, hfx_expr *e, const hfx_type *to, bool warn, const hfx_expr *call);
 hfx_expr *ck_implicit_cast(check_ctx *c, hfx_expr *e, const hfx_type *to);
 void ck_cond(check_ctx *c, hfx_expr **pe, const char *what);  /* a bool scalar condition */
 bool ck_lvalue(check_ctx *c, hfx_expr *e);                    /* reports X3025; marks globals assigned */

@@ -55,7 +55,7 @@ hfx_expr *ck_implicit_cast(check_ctx *c, hfx_expr *e, const hfx_type *to) {
     return cast;
 }
 
-hfx_expr *ck_convert(check_ctx *c, hfx_expr *e, const hfx_type *to, bool warn) {
+hfx_expr *ck_convert_arg(check_ctx *c, hfx_expr *e, const hfx_type *to, bool warn, const hfx_expr *call) {
     if (!e || ck_is_err(c, e->type) || ck_is_err(c, to)) return e;
     hfx_conv conv = hfx_conv_classify(e->type, to, false);
     if (!conv.ok) {
@@ -64,9 +64,19 @@ hfx_expr *ck_convert(check_ctx *c, hfx_expr *e, const hfx_type *to, bool warn) {
         e->type = c->err;
         return e;
     }
-    if (conv.truncates && warn)
-        hfx_warning(c->diags, ck_start(e), X_IMPLICIT_TRUNCATION, "implicit truncation of vector type");
+    if (conv.truncates && warn) {
+        /* fxc names the function and points at the call for a truncated argument */
+        if (call)
+            hfx_warning(c->diags, call->loc, X_IMPLICIT_TRUNCATION, "'%s': implicit truncation of vector type",
+                        call->name ? call->name : "");
+        else
+            hfx_warning(c->diags, ck_start(e), X_IMPLICIT_TRUNCATION, "implicit truncation of vector type");
+    }
     return ck_implicit_cast(c, e, to);
+}
+
+hfx_expr *ck_convert(check_ctx *c, hfx_expr *e, const hfx_type *to, bool warn) {
+    return ck_convert_arg(c, e, to, warn, NULL);
 }
 
 void ck_cond(check_ctx *c, hfx_expr **pe, const char *what) {

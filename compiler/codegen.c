@@ -190,6 +190,16 @@ static int copy_attributes(const glsl_iface *io, hfx_fx_program *out) {
     return 0;
 }
 
+/* The pixel stage carries the alpha test when it writes COLOR0 (the stand-in always does). */
+static bool writes_color0(hfx_codegen *cg, const ir_shader *ps) {
+    if (!ps) return true;
+    ir_leaf *l;
+    int n = ir_entry_leaves(&cg->c, ps->entry, true, &l);
+    for (int i = 0; i < n; i++)
+        if (strcmp(l[i].semantic, "COLOR0") == 0) return true;
+    return false;
+}
+
 int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps, hfx_fx_program *out) {
     memset(out, 0, sizeof *out);
     uint32_t errors = cg->c.diags->errors;
@@ -208,7 +218,7 @@ int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps,
             out->code[s][t].size = strlen(text);
         }
     }
-    out->flags |= HFX_FX_PROGRAM_ALPHA_TEST;
+    if (writes_color0(cg, sh[1])) out->flags |= HFX_FX_PROGRAM_ALPHA_TEST;
     return 0;
 oom:
     hfx_error(cg->c.diags, vs ? vs->loc : ps ? ps->loc : (hfx_loc){0, 0, 0}, X_UNSUPPORTED, "out of memory");

@@ -105,6 +105,7 @@ const char *glsl_type(gp *p, const hfx_type *t) {
         if (t->rows == 1 && t->cols == 1) return scalar_name(p, t->base);
         if (t->rows == 1 || t->cols == 1)
             return hfx_arena_printf(a, "%svec%u", vec_prefix(p, t->base), t->rows * t->cols);
+        if (t->rows != t->cols && p->legacy) p->nonsquare = true; /* reported once, by glsl_print */
         return t->rows == t->cols ? hfx_arena_printf(a, "mat%u", t->rows) : hfx_arena_printf(a, "mat%ux%u", t->rows, t->cols);
     case TY_ARRAY: return glsl_type(p, t->elem);
     case TY_STRUCT: {
@@ -154,7 +155,10 @@ static void put_float(gp *p, double v) {
 static void put_scalar(gp *p, hfx_base b, double v) {
     switch (b) {
     case B_BOOL: sb_put(p->out, v != 0 ? "true" : "false"); break;
-    case B_INT: sb_printf(p->out, "%lld", (long long)v); break;
+    case B_INT:
+        if (v <= -2147483648.0) sb_put(p->out, "(-2147483647 - 1)"); /* 2147483648 is no int literal */
+        else sb_printf(p->out, "%lld", (long long)v);
+        break;
     case B_UINT: sb_printf(p->out, p->legacy ? "%lld" : "%lldu", (long long)v); break;
     default: put_float(p, v);
     }
@@ -356,6 +360,10 @@ static void print_binary(gp *p, const ir_expr *e, int max) {
         [OP_EQ] = {"==", PREC_EQ}, [OP_NE] = {"!=", PREC_EQ}, [OP_AND] = {"&&", PREC_AND}, [OP_OR] = {"||", PREC_OR},
     };
     if (op >= sizeof ops / sizeof *ops || !ops[op].s) { glsl_error(p, e->loc, "unknown operator"); return; }
+    if (p->legacy && op >= OP_SHL && op <= OP_BITXOR) {
+        glsl_error(p, e->loc, "integer bit operations are not available in GLSL 110");
+        return;
+    }
     if (op >= OP_ADD && op <= OP_DIV) { /* GLSL mixes scalars and vectors here: drop the splat */
         if (is_splat(y) && !is_splat(x)) y = y->a[0];
         else if (is_splat(x) && !is_splat(y)) x = x->a[0];

@@ -28,6 +28,7 @@ typedef struct gp {
     ir_leaf *in, *outv;       /* the entry's interface (NULL for a fixed-function stand-in) */
     int in_count, out_count;
     bool uses_fixup;          /* the pixel shader reads hfx_pos_fixup (ddy, VPOS) */
+    bool nonsquare;           /* GLSL 110 met a non-square matrix type */
 } gp;
 
 /* Expression precedence, GLSL's: lower binds tighter. */

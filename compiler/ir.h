@@ -45,6 +45,7 @@ struct ir_var {
     hfx_dim dim;             /* SAMPLER: dimension as sampled */
     bool written, used;      /* set by lower/uses.c */
     bool hoisted;            /* for-init variable used after its loop: declared before it */
+    ir_expr *konst;          /* const variable whose initialiser folded to a constant (fold.c) */
     ir_expr *bound;          /* PARAM of the entry bound by a compile argument (specialise) */
 };
 

@@ -52,6 +52,11 @@ static void walk(ir_ctx *c, leaves *l, const hfx_type *ty, const char *sem, cons
         l->bad = true;
         return;
     }
+    if (ty->kind == TY_MATRIX && ty->rows > 1 && ty->cols > 1) { /* would span several registers */
+        hfx_error(c->diags, loc, X_UNSUPPORTED, "'%s': %s: matrix-typed semantics are not supported", fn, what);
+        l->bad = true;
+        return;
+    }
     if (!hfx_type_is_numeric(ty)) {
         hfx_error(c->diags, loc, X_UNSUPPORTED, "'%s': %s of this type cannot carry a semantic", fn, what);
         l->bad = true;

@@ -90,6 +90,7 @@ typedef struct parse_ctx {
     uint32_t error_count;
     parse_vec globals;
     hfx_struct *pending_struct; /* the struct body just parsed, for the next parse_specs */
+    uint32_t pack_mods;         /* MOD_ROW_MAJOR / MOD_COLUMN_MAJOR from #pragma pack_matrix, or 0 */
     parse_expr_node *oom_expr;  /* handed out when the arena fails, so actions never see NULL */
     parse_stmt_node *oom_stmt;
     parse_specs *oom_specs;
@@ -140,6 +141,7 @@ hfx_expr *pb_paren(hfx_expr *e);
 const hfx_type *pb_generic_vector(parse_ctx *ctx, const hfx_type *scalar, const char *n, hfx_loc loc);
 const hfx_type *pb_generic_matrix(parse_ctx *ctx, const hfx_type *scalar, const char *r, const char *c, hfx_loc loc);
 const hfx_type *pb_array_type(parse_ctx *ctx, const hfx_type *elem, parse_vec dims);
+const hfx_type *pb_template(parse_ctx *ctx, const hfx_type *object, const hfx_type *elem, hfx_loc loc);
 const hfx_type *pb_typename(parse_ctx *ctx, const parse_tok *t, hfx_loc loc);
 const hfx_type *pb_struct(parse_ctx *ctx, const char *name, parse_vec fields, hfx_loc loc);
 const hfx_type *pb_struct_ref(parse_ctx *ctx, const char *name, hfx_loc loc);

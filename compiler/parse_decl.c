@@ -188,6 +188,11 @@ static hfx_attribute *attribute_array(parse_ctx *ctx, parse_vec v, uint32_t *cou
 hfx_decl *pb_function_body(parse_ctx *ctx, hfx_decl *fn, parse_vec attrs, hfx_stmt *body) {
     if (!fn) return NULL;
     fn->func->body = body;
+    /* a prototype may leave parameters unnamed (as C does); a definition may not */
+    for (uint32_t i = 0; body && i < fn->func->param_count; i++)
+        if (!fn->func->params[i]->name)
+            hfx_error(ctx->diags, fn->func->params[i]->loc, X_SYNTAX, "'%s': parameter %u has no name", fn->name,
+                      i + 1);
     fn->func->attrs = attribute_array(ctx, attrs, &fn->func->attr_count);
     return fn;
 }

@@ -305,6 +305,14 @@ const hfx_type *pb_typename(parse_ctx *ctx, const parse_tok *t, hfx_loc loc) {
     return hfx_type_scalar(ctx->types, B_FLOAT);
 }
 
+/* `Texture2D<float4>` (SM4 spelling): the element type is dropped, D3D9 textures have none. */
+const hfx_type *pb_template(parse_ctx *ctx, const hfx_type *object, const hfx_type *elem, hfx_loc loc) {
+    (void)elem;
+    if (object->kind == TY_TEXTURE) return object;
+    hfx_error(ctx->diags, loc, X_SYNTAX, "syntax error: unexpected token '<'");
+    return object;
+}
+
 /* Folds a constant integer expression (array sizes); false when it is not one. */
 static bool fold_int(const hfx_expr *e, int64_t *out) {
     int64_t a, b;
@@ -379,6 +387,10 @@ parse_specs *pb_specs(parse_ctx *ctx, uint32_t mods, const hfx_type *type, hfx_l
     s->mods = mods;
     s->type = type;
     s->loc = loc;
+    const hfx_type *elem = type;
+    while (elem && elem->kind == TY_ARRAY) elem = elem->elem;
+    /* #pragma pack_matrix: the default for matrices that name no majorness themselves */
+    if (elem && elem->kind == TY_MATRIX && !(mods & (MOD_ROW_MAJOR | MOD_COLUMN_MAJOR))) s->mods |= ctx->pack_mods;
     if (type && type->kind == TY_STRUCT && ctx->pending_struct == type->st) {
         s->defines = type->st; /* `struct S {...} x;` also declares S */
         ctx->pending_struct = NULL;

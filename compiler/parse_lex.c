@@ -207,9 +207,10 @@ static bool starts_type(parse_ctx *ctx, const hfx_token *t) {
 /* The effect-layer keywords in another case (`Technique`, `Pass`, `SAMPLER_STATE`, `Compile`),
  * as XNA and MonoGame accept them: keywords only where they start their construct, so such
  * spellings stay free as names elsewhere. */
-static int effect_keyword_any_case(const hfx_token *t) {
+static int effect_keyword_any_case(const parse_ctx *ctx, const hfx_token *t) {
     char c = (char)(t->text[0] | 0x20);
     if (c != 't' && c != 'p' && c != 's' && c != 'c') return 0;
+    if (ctx->prev_code == PASS || ctx->prev_code == TECHNIQUE) return 0; /* `pass Pass {` names it */
     const hfx_token *n = t->next;
     bool named_block = n && (n->kind == TK_IDENT || is_punct(n, P_LBRACE) || is_punct(n, P_LT));
     if (named_block && (strcasecmp(t->text, "technique") == 0 || strcasecmp(t->text, "technique10") == 0 ||
@@ -250,7 +251,7 @@ static int classify_ident(parse_ctx *ctx, const hfx_token *t, parse_tok *val) {
         val->mods = k->mods;
         return k->code;
     }
-    int tp = effect_keyword_any_case(t);
+    int tp = effect_keyword_any_case(ctx, t);
     if (tp) return tp;
     parse_typename *e = parse_find_typename(ctx, t->text);
     const hfx_type *builtin = e ? NULL : builtin_type(ctx->types, t->text);
@@ -392,7 +393,21 @@ static int token_code(parse_ctx *ctx, hfx_token *t, parse_tok *val) {
     }
 }
 
+/* `#pragma pack_matrix(row_major)` reaches us as `__hfx_pack_matrix ( row_major )` (token.h):
+ * it sets the majorness of the matrix declarations that follow; consumed here. */
+static bool take_pack_matrix(parse_ctx *ctx, hfx_token *t) {
+    if (t->kind != TK_IDENT || strcmp(t->text, "__hfx_pack_matrix") != 0) return false;
+    hfx_token *open = t->next, *arg = open ? open->next : NULL, *close = arg ? arg->next : NULL;
+    if (!is_punct(open, P_LPAREN) || !arg || arg->kind != TK_IDENT || !is_punct(close, P_RPAREN)) return false;
+    if (strcmp(arg->text, "row_major") == 0) ctx->pack_mods = MOD_ROW_MAJOR;
+    else if (strcmp(arg->text, "column_major") == 0) ctx->pack_mods = MOD_COLUMN_MAJOR;
+    else return false;
+    ctx->next = close->next;
+    return true;
+}
+
 int parse_lex(YYSTYPE *lval, hfx_loc *lloc, parse_ctx *ctx) {
+    while (ctx->next && !ctx->fatal && take_pack_matrix(ctx, ctx->next)) continue;
     hfx_token *t = ctx->next;
     memset(&lval->tok, 0, sizeof lval->tok);
     if (ctx->fatal || !t) {

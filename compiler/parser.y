@@ -110,6 +110,8 @@ type_spec
 
 ctor_type
     : TYPE_NAME                              { $$ = pb_typename(ctx, &$1, @1); }
+    | TYPE_NAME '<' ctor_type '>'            { $$ = pb_template(ctx, pb_typename(ctx, &$1, @1), $3, @2); }
+    | TYPE_NAME '<' ctor_type ',' INTCONST '>' { $$ = pb_template(ctx, pb_typename(ctx, &$1, @1), $3, @2); }
     | VECTOR                                 { $$ = pb_generic_vector(ctx, NULL, NULL, @1); }
     | VECTOR '<' TYPE_NAME ',' INTCONST '>'  { $$ = pb_generic_vector(ctx, $3.type, $5.text, @3); }
     | MATRIX                                 { $$ = pb_generic_matrix(ctx, NULL, NULL, NULL, @1); }
@@ -119,6 +121,7 @@ ctor_type
 struct_spec
     : STRUCT IDENT '{' fields '}'            { $$ = pb_struct(ctx, $2.text, $4, @2); }
     | STRUCT '{' fields '}'                  { $$ = pb_struct(ctx, NULL, $3, @1); }
+    | STRUCT IDENT '{' fields error '}'      { $$ = pb_struct(ctx, $2.text, $4, @2); }
     | STRUCT IDENT                           { $$ = pb_struct_ref(ctx, $2.text, @2); }
     ;
 
@@ -157,6 +160,7 @@ declarator
     : decl_post
     | decl_post '=' initializer              { $$ = pb_decl_init($1, $3); }
     | decl_post '{' states '}'               { $$ = pb_decl_init($1, pb_sampler_state(ctx, $3, @2)); }
+    | decl_post '{' states error '}'         { $$ = pb_decl_init($1, pb_sampler_state(ctx, $3, @2)); }
     ;
 
 initializer
@@ -174,6 +178,7 @@ init_items
 
 annotations
     : '<' anno_list '>'                      { $$ = $2; }
+    | '<' anno_list error '>'                { $$ = $2; }
     ;
 
 anno_list
@@ -234,6 +239,7 @@ attr
 technique
     : TECHNIQUE name_opt '{' passes '}'             { $$ = pb_technique(ctx, $1.text, $2.text, parse_vec_new(), $4, @2); }
     | TECHNIQUE name_opt annotations '{' passes '}' { $$ = pb_technique(ctx, $1.text, $2.text, $3, $5, @2); }
+    | TECHNIQUE name_opt '{' passes error '}'       { $$ = pb_technique(ctx, $1.text, $2.text, parse_vec_new(), $4, @2); }
     ;
 
 name_opt
@@ -250,6 +256,8 @@ passes
 pass
     : PASS name_opt '{' states '}'             { $$ = pb_pass(ctx, $2.text, parse_vec_new(), $4, @2); }
     | PASS name_opt annotations '{' states '}' { $$ = pb_pass(ctx, $2.text, $3, $5, @2); }
+    | PASS name_opt '{' states error '}'       { $$ = pb_pass(ctx, $2.text, parse_vec_new(), $4, @2); }
+    | PASS name_opt annotations '{' states error '}' { $$ = pb_pass(ctx, $2.text, $3, $5, @2); }
     ;
 
 states
@@ -341,6 +349,7 @@ primary
     | COMPILE IDENT IDENT '(' args_opt ')'   { $$ = pb_compile(ctx, $2.text, $3.text, $5, @1); }
     | COMPILE IDENT IDENT                    { $$ = pb_compile(ctx, $2.text, $3.text, parse_vec_new(), @1); }
     | SAMPLER_STATE '{' states '}'           { $$ = pb_sampler_state(ctx, $3, @1); }
+    | SAMPLER_STATE '{' states error '}'     { $$ = pb_sampler_state(ctx, $3, @1); }
     | NULL_KW                                { $$ = pb_expr(ctx, EX_NULL, @1); }
     ;
 

@@ -64,6 +64,7 @@ static int push_sampler(hfx_shared *sh, uint32_t *cap, const hfx_sampler_desc *b
 
 /* Adds a state to a sampler being built: constants into the description, PARAM ones to dyn. */
 static void add_sampler_state(const hfx_fx_state *st, hfx_sampler_desc *d, const hfx_fx_state **dyn, uint32_t *n) {
+    if (st->kind == HFX_FX_VALUE_UNSUPPORTED) return; /* reported by check_sampler_state */
     if (st->kind == HFX_FX_VALUE_PARAM) {
         if (*n < 32) dyn[(*n)++] = st;
         return;
@@ -85,8 +86,25 @@ static void sampler_desc_of(const hfx_fx_effect *fx, uint32_t sampler, hfx_sampl
     }
 }
 
+/* Reports, once at load, a sampler state GL honours only in part. */
+static void check_sampler_state(hfx_shared *sh, const hfx_fx_state *st) {
+    const hfx_state_info *info = hfx_state_by_id(st->id);
+    const char *name = info ? info->name : "?";
+    if (st->kind == HFX_FX_VALUE_UNSUPPORTED) {
+        hfx_shared_warn(sh, st, "'%s': this value cannot be expressed in GL; ignored", name);
+    } else if ((st->id == HFX_ST_MINFILTER || st->id == HFX_ST_MAGFILTER || st->id == HFX_ST_MIPFILTER) &&
+               st->kind == HFX_FX_VALUE_INT && st->i > 3) {
+        hfx_shared_warn(sh, st, "'%s': %s filtering is not available in GL; filtering linearly", name,
+                        info ? hfx_state_value_name(info, st->i) : "this");
+    } else if (st->id == HFX_ST_SRGBTEXTURE && st->kind == HFX_FX_VALUE_INT && st->i && !sh->dev->srgb_decode) {
+        hfx_shared_warn(sh, st, "'%s': without EXT_texture_sRGB_decode, only textures with an sRGB format are decoded", name);
+    }
+}
+
 static int make_samplers(hfx_shared *sh, uint32_t *cap) {
     for (uint32_t i = 0; i < sh->fx->sampler_count; i++) {
+        const hfx_fx_sampler *fs = &sh->fx->samplers[i];
+        for (uint32_t k = 0; k < fs->state_count; k++) check_sampler_state(sh, &sh->fx->states[fs->first_state + k]);
         hfx_sampler_desc d;
         const hfx_fx_state *dyn[32];
         uint32_t n, index;
@@ -159,7 +177,12 @@ static int build_pass(hfx_shared *sh, uint32_t *cap, uint32_t index) {
     for (uint32_t i = 0; i < fp->state_count && fp->first_state + i < fx->state_count; i++) {
         const hfx_fx_state *st = &fx->states[fp->first_state + i];
         const hfx_state_info *info = hfx_state_by_id(st->id);
-        if (info && info->scope == HFX_SS_RENDER && st->kind != HFX_FX_VALUE_UNSUPPORTED) {
+        if (!info || st->kind == HFX_FX_VALUE_UNSUPPORTED) {
+            hfx_rs_check(sh, st, rp->program);
+            continue;
+        }
+        if (info->scope == HFX_SS_SAMPLER) check_sampler_state(sh, st);
+        if (info && info->scope == HFX_SS_RENDER) {
             rp->render_states[rp->render_state_count++] = fp->first_state + i;
             rp->groups |= hfx_rs_group(st->id);
         }
@@ -228,11 +251,29 @@ static int check_effect(hfx_device *dev, const hfx_fx_effect *fx, hfx_target tar
         if ((uint64_t)p->offset + p->words > fx->value_words || (uint64_t)p->first_child + p->child_count > fx->param_count)
             return hfx_rt_fail(dev, HFX_ERR_LOAD, "%s: parameter %u lies outside the effect's data", name, (unsigned)i);
     }
+    if (fx->top_param_count > fx->param_count)
+        return hfx_rt_fail(dev, HFX_ERR_LOAD, "%s: more top-level parameters than parameters", name);
+    for (uint32_t i = 0; i < fx->param_count; i++) {
+        const hfx_fx_param *p = &fx->params[i];
+        if ((uint64_t)p->first_annotation + p->annotation_count > fx->annotation_count)
+            return hfx_rt_fail(dev, HFX_ERR_LOAD, "%s: parameter %u lies outside the effect's data", name, (unsigned)i);
+    }
+    for (uint32_t i = 0; i < fx->state_count; i++)
+        if (fx->states[i].kind == HFX_FX_VALUE_PARAM && fx->states[i].ref >= fx->param_count)
+            return hfx_rt_fail(dev, HFX_ERR_LOAD, "%s: state %u names no parameter", name, (unsigned)i);
+    for (uint32_t i = 0; i < fx->sampler_count; i++) {
+        const hfx_fx_sampler *sm = &fx->samplers[i];
+        if (sm->param >= fx->param_count || (sm->texture_param != HFX_NONE && sm->texture_param >= fx->param_count) ||
+            (uint64_t)sm->first_state + sm->state_count > fx->state_count)
+            return hfx_rt_fail(dev, HFX_ERR_LOAD, "%s: sampler %u lies outside the effect's data", name, (unsigned)i);
+    }
     for (uint32_t i = 0; i < fx->pass_count; i++)
-        if ((uint64_t)fx->passes[i].first_state + fx->passes[i].state_count > fx->state_count)
+        if ((uint64_t)fx->passes[i].first_state + fx->passes[i].state_count > fx->state_count ||
+            (uint64_t)fx->passes[i].first_annotation + fx->passes[i].annotation_count > fx->annotation_count)
             return hfx_rt_fail(dev, HFX_ERR_LOAD, "%s: pass %u lies outside the effect's data", name, (unsigned)i);
     for (uint32_t i = 0; i < fx->technique_count; i++)
-        if ((uint64_t)fx->techniques[i].first_pass + fx->techniques[i].pass_count > fx->pass_count)
+        if ((uint64_t)fx->techniques[i].first_pass + fx->techniques[i].pass_count > fx->pass_count ||
+            (uint64_t)fx->techniques[i].first_annotation + fx->techniques[i].annotation_count > fx->annotation_count)
             return hfx_rt_fail(dev, HFX_ERR_LOAD, "%s: technique %u lies outside the effect's data", name, (unsigned)i);
     if (target == HFX_TARGET_SPIRV)
         return hfx_rt_fail(dev, HFX_ERR_LOAD, "%s: SPIR-V is not loaded by the GL runtime", name);

@@ -15,20 +15,8 @@ static int fail(const hfx_param *p, int code, const char *what) {
     return hfx_rt_fail(dev_of(p), code, "parameter '%s': %s", i->name ? i->name : "", what);
 }
 
-/* Writes words into the value buffer; a new version only when something changed. */
-static int store(hfx_param *p, uint32_t offset, const void *words, size_t n) {
-    uint32_t *dst = p->fx->values + info(p)->offset + offset;
-    const uint32_t *src = words;
-    size_t k = 0;
-    while (k < n && dst[k] == src[k]) k++; /* bitwise, as GL would see it; short, so no library calls */
-    if (k == n) return HFX_OK;
-    for (; k < n; k++) dst[k] = src[k];
-    hfx_rt_param_changed(p->fx, p->root);
-    return HFX_OK;
-}
-
 /* A new version for a top-level parameter, logged unless an unread entry already says so. */
-void hfx_rt_param_changed(hfx_effect *fx, uint32_t root) {
+static inline void param_changed(hfx_effect *fx, uint32_t root) {
     if (root >= fx->sh->fx->top_param_count) return;
     fx->stamps[root] = ++fx->dev->stamp;
     uint32_t last = fx->last_logged[root];
@@ -42,6 +30,21 @@ void hfx_rt_param_changed(hfx_effect *fx, uint32_t root) {
     fx->last_logged[root] = fx->log_len;
 }
 
+void hfx_rt_param_changed(hfx_effect *fx, uint32_t root) { param_changed(fx, root); }
+
+/* Writes words into the value buffer; a new version only when something changed. */
+static inline int store(hfx_param *p, uint32_t offset, const void *words, size_t n) {
+    uint32_t *dst = p->fx->values + info(p)->offset + offset;
+    const uint32_t *src = words;
+    size_t k = 0;
+    while (k < n && dst[k] == src[k]) k++; /* bitwise, as GL would see it; short, so no library calls */
+    if (k == n) return HFX_OK;
+    for (; k < n; k++) dst[k] = src[k];
+    param_changed(p->fx, p->root);
+    return HFX_OK;
+}
+
+
 static int is_numeric(const hfx_fx_param *i) {
     return i->klass == HFX_CLASS_SCALAR || i->klass == HFX_CLASS_VECTOR || i->klass == HFX_CLASS_MATRIX;
 }
@@ -54,7 +57,7 @@ static int check_scalar(const hfx_param *p, hfx_param_type type, const char *wan
 
 /* Arrays take a whole number of elements, up to their length (XNA sets a prefix of an
  * array, e.g. fewer bones than the shader holds); everything else takes exactly its size. */
-static int check_count(const hfx_param *p, size_t count) {
+static inline int check_count(const hfx_param *p, size_t count) {
     const hfx_fx_param *i = info(p);
     if (i->elements) {
         uint32_t elem = i->words / i->elements;

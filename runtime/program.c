@@ -252,7 +252,7 @@ void hfx_rt_program_free(hfx_device *dev, hfx_rt_program *p) {
     memset(p, 0, sizeof *p);
 }
 
-static const void *upload_data(hfx_device *dev, const hfx_upload *up, const uint32_t *src) {
+static inline const void *upload_data(hfx_device *dev, const hfx_upload *up, const uint32_t *src) {
     if (!up->convert) return src;
     /* GLSL declared int where the data is float, or the reverse: convert through scratch. */
     int to_int = up->fn >= UP_I1 && up->fn <= UP_I4;
@@ -269,7 +269,7 @@ static const void *upload_data(hfx_device *dev, const hfx_upload *up, const uint
     return dev->scratch;
 }
 
-static void upload(hfx_device *dev, const hfx_upload *up, const uint32_t *values) {
+static inline void upload(hfx_device *dev, const hfx_upload *up, const uint32_t *values) {
     hfx_gl *gl = &dev->gl;
     const void *d = upload_data(dev, up, values + up->offset);
     GLsizei n = (GLsizei)up->count;
@@ -297,7 +297,7 @@ static void upload(hfx_device *dev, const hfx_upload *up, const uint32_t *values
 
 /* Uploads the parameters whose version differs from the one this program last received.
  * Versions are device-wide stamps, so clones sharing the program stay correct. */
-static void upload_if_changed(hfx_effect *fx, hfx_rt_program *p, uint32_t i) {
+static inline void upload_if_changed(hfx_effect *fx, hfx_rt_program *p, uint32_t i) {
     const hfx_rt_uniform *u = &p->uniforms[i];
     uint64_t stamp = fx->stamps[u->param];
     if (p->uploaded[i] == stamp) return;

@@ -139,7 +139,43 @@ static void warn_missing_targets(const cli_options *o, cli_job *job, const hfx_f
     }
 }
 
+/* A compiled .hfxo given as input: read, not compiled (for --reflect, --emit-glsl, copying). */
+static bool load_hfxo(cli_job *job) {
+    FILE *f = fopen(job->input, "rb");
+    unsigned char head[8];
+    bool is = f && fread(head, 1, sizeof head, f) == sizeof head && hfx_fx_is_hfxo(head, sizeof head);
+    if (!is) {
+        if (f) fclose(f);
+        return false;
+    }
+    char *data = NULL;
+    size_t size = 0;
+    if (fseek(f, 0, SEEK_END) == 0) {
+        long n = ftell(f);
+        data = n > 0 ? malloc((size_t)n) : NULL;
+        if (data && fseek(f, 0, SEEK_SET) == 0 && fread(data, 1, (size_t)n, f) == (size_t)n) size = (size_t)n;
+    }
+    fclose(f);
+    char err[256] = "hfxo: cannot read the file";
+    job->effect = size ? hfx_fx_read_hfxo(data, size, err, sizeof err) : NULL;
+    free(data);
+    job->ok = job->effect != NULL;
+    if (!job->ok) job->error = fmt("%s: %s", job->input, err);
+    return true;
+}
+
 static void compile_one(const cli_options *o, cli_job *job) {
+    if (!o->ast && load_hfxo(job)) {
+        if (job->ok) {
+            write_hfxo(o, job, job->effect);
+            emit_glsl(o, job, job->effect);
+        }
+        if (!o->reflect && !o->annotations) {
+            hfx_fx_effect_free(job->effect);
+            job->effect = NULL;
+        }
+        return;
+    }
     hfxc_options opt;
     memset(&opt, 0, sizeof opt);
     opt.defines = o->defines;

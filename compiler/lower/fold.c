@@ -163,7 +163,38 @@ static void fold_one(ir_ctx *c, ir_expr **slot, void *data) {
     }
 }
 
+static bool is_const_var(const ir_var *v) {
+    return v->decl && (v->decl->mods & MOD_CONST) && hfx_type_is_numeric(v->type) &&
+           (v->kind == IRV_LOCAL || (v->kind == IRV_PRIVATE && !v->copy_of));
+}
+
+/* `const` locals and `static const` globals whose initialiser folded: their value. */
+static void find_const_locals(ir_stmt *s) {
+    if (!s) return;
+    if (s->kind == IS_DECL && ir_is_const(s->expr) && is_const_var(s->var)) s->var->konst = s->expr;
+    if (s->init) find_const_locals(s->init);
+    for (uint32_t i = 0; i < s->count; i++) find_const_locals(s->body[i]);
+    find_const_locals(s->then_s);
+    find_const_locals(s->else_s);
+}
+
+static void propagate(ir_ctx *c, ir_expr **slot, void *data) {
+    ir_expr *e = *slot;
+    if (e->kind == IE_VAR && e->var->konst) *slot = ir_clone_expr(c, e->var->konst);
+    else fold_one(c, slot, data);
+}
+
 void ir_pass_fold(ir_ctx *c, ir_shader *sh) {
-    for (uint32_t i = 0; i < sh->func_count; i++) ir_walk_stmt_exprs(c, sh->funcs[i]->body, fold_one, NULL);
-    for (uint32_t i = 0; i < sh->global_count; i++) ir_walk_expr(c, &sh->globals[i]->init, fold_one, NULL);
+    for (uint32_t i = 0; i < sh->global_count; i++) {
+        ir_var *g = sh->globals[i];
+        ir_walk_expr(c, &g->init, fold_one, NULL);
+        if (ir_is_const(g->init) && is_const_var(g)) g->konst = g->init;
+    }
+    for (uint32_t i = 0; i < sh->func_count; i++) {
+        ir_walk_stmt_exprs(c, sh->funcs[i]->body, fold_one, NULL);
+        find_const_locals(sh->funcs[i]->body);
+    }
+    /* constants flow into their uses (so `static const bool on = false; if (on)` dies), and
+     * what they make constant folds in the same walk */
+    for (uint32_t i = 0; i < sh->func_count; i++) ir_walk_stmt_exprs(c, sh->funcs[i]->body, propagate, NULL);
 }

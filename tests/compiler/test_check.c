@@ -61,8 +61,8 @@ static void ambiguous_call(void) {
 }
 
 static void truncation_warnings(void) {
-    /* assignment, initializer, return, argument and binary operator: each at the start of the
-     * truncated expression */
+    /* assignment, initializer, return and binary operator: each at the start of the truncated
+     * expression; an argument: at the call, naming the function (fxc's wording) */
     const char *src =
         "float4 w;\n"
         "float h(float2 a) { return a.x; }\n"
@@ -77,13 +77,17 @@ static void truncation_warnings(void) {
     EXPECT_DIAGS(src,
                  "t.fx(5,16): warning X3206: implicit truncation of vector type\n"
                  "t.fx(6,9): warning X3206: implicit truncation of vector type\n"
-                 "t.fx(7,17): warning X3206: implicit truncation of vector type\n"
+                 "t.fx(7,15): warning X3206: 'h': implicit truncation of vector type\n"
                  "t.fx(8,16): warning X3206: implicit truncation of vector type\n"
                  "t.fx(9,12): warning X3206: implicit truncation of vector type\n");
     /* explicit casts and swizzles do not warn; matrices truncate too */
     EXPECT_DIAGS("float4x4 m;\nfloat4 w;\nfloat3 f() { float3x3 n = (float3x3)m; float3 v = (float3)w; return w.xyz; }\n", "");
     EXPECT_DIAGS("float4x4 m;\nfloat3x3 f() { return m; }\n",
                  "t.fx(2,23): warning X3206: implicit truncation of vector type\n");
+    /* intrinsic arguments too; mul clamps its inner dimension silently */
+    EXPECT_DIAGS("sampler s;\nfloat4 f(float3 a, float4 b) { return dot(a, b) + tex2D(s, a) + mul(a, (float4x4)0); }\n",
+                 "t.fx(2,39): warning X3206: 'dot': implicit truncation of vector type\n"
+                 "t.fx(2,51): warning X3206: 'tex2D': implicit truncation of vector type\n");
 }
 
 static void cannot_convert(void) {
@@ -190,6 +194,17 @@ static void state_values(void) {
                  "t.fx(1,40): error X3004: undeclared identifier 'missing'\n");
 }
 
+static void technique10_passes(void) {
+    /* SM4 pass syntax is accepted (the builder decides what to do with it) */
+    EXPECT_DIAGS("float4 VS(float4 p : POSITION, uniform float k) : POSITION { return p * k; }\n"
+                 "float4 PS() : COLOR { return 1; }\n"
+                 "technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS(2))); SetGeometryShader(NULL);\n"
+                 "    SetPixelShader(CompileShader(ps_4_0, PS())); } }\n",
+                 "");
+    EXPECT_DIAGS("technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, Missing())); } }\n",
+                 "t.fx(1,64): error X3004: undeclared identifier 'Missing'\n");
+}
+
 static void initializer_errors(void) {
     EXPECT_DIAGS("float4 v = {1, 2, 3};\n", "t.fx(1,12): error X3017: 'v': cannot implicitly convert from 'float3' to 'float4'\n");
     EXPECT_DIAGS("float4 v = {1, 2, 3, 4};\nfloat2x2 m = {v};\nfloat a[] = {1, 2, 3};\nfloat ks = {0.05F};\n", "");
@@ -251,6 +266,7 @@ int main(void) {
     RUN(indexing_errors);
     RUN(entry_points);
     RUN(state_values);
+    RUN(technique10_passes);
     RUN(initializer_errors);
     return test_summary();
 }

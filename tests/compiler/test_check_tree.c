@@ -136,7 +136,7 @@ static void calls_and_overloads(void) {
     EXPECT_STMT(CALL_SRC, "u8", 0, "(#pow:float x:float (implicit:float 2:int))");
     /* a float3 argument picks f(float) (a truncation) since float3 -> float4 is impossible */
     char *d = ckt_diags("float f(float x) { return x; }\nfloat f(float4 x) { return x.x; }\nfloat g(float3 v) { return f(v); }\n");
-    CHECK_STR(d, "t.fx(3,30): warning X3206: implicit truncation of vector type\n");
+    CHECK_STR(d, "t.fx(3,28): warning X3206: 'f': implicit truncation of vector type\n");
     free(d);
 }
 

@@ -63,11 +63,29 @@ static void fixed_function_pixel_stage(void) {
     hfxc_result_free(r);
 }
 
+/* GLSL 110 has no non-square matrices and no integer bit operations: asked for that target,
+ * such a shader is a located error instead of GLSL that does not compile. */
+static void glsl110_limits_are_reported(void) {
+    hfxc_options o = {0};
+    o.targets = 1u << HFX_TARGET_GLSL110;
+    const char *src = VS "float3x4 M; int k;\n"
+                      "float4 ps(float3 v : TEXCOORD0) : COLOR { return mul(M, float4(v, 1)).xyzz + (k << 1); }\n"
+                      "technique T { pass P { VertexShader = compile vs_3_0 vs(); PixelShader = compile ps_3_0 ps(); } }\n";
+    hfxc_result *r = hfxc_compile_memory(src, strlen(src), "l.fx", &o);
+    char *d = hfxc_diagnostics_text(r);
+    CHECK(!hfxc_result_ok(r));
+    CHECK_CONTAINS(d, "l.fx(3,81): error X3094: integer bit operations are not available in GLSL 110");
+    CHECK_CONTAINS(d, "l.fx(3,8): error X3094: 'ps': non-square matrices are not available in GLSL 110");
+    free(d);
+    hfxc_result_free(r);
+}
+
 int main(void) {
     RUN(noise_is_reported);
     RUN(asm_block_is_reported);
     RUN(missing_input_semantic);
     RUN(missing_return_semantic);
     RUN(fixed_function_pixel_stage);
+    RUN(glsl110_limits_are_reported);
     return test_summary();
 }

@@ -385,6 +385,18 @@ static void pos_fixup_gives_d3d9_centres(void) {
     CHECK_NEAR(px[3], 7.0 / 8, TOL);
 }
 
+/* D3D9's alpha test, carried by the pixel shader: GREATER (5) against 0.5 keeps alpha 0.75
+ * and discards alpha 0.25; function 0 (unset) keeps everything. */
+static void alpha_test_in_shader(void) {
+    const char *src = "float a;\n" VS_PASS "float4 ps() : COLOR { return float4(1, 1, 1, a); }\n" TECH("ps()");
+    const uval keep[] = { {"a", 'f', 1, {0.75f}, {0}}, {"hfx_alpha_func", 'i', 1, {0}, {5}}, {"hfx_alpha_ref", 'f', 1, {0.5f}, {0}} };
+    const uval drop[] = { {"a", 'f', 1, {0.25f}, {0}}, {"hfx_alpha_func", 'i', 1, {0}, {5}}, {"hfx_alpha_ref", 'f', 1, {0.5f}, {0}} };
+    const uval off[] = { {"a", 'f', 1, {0.25f}, {0}} };
+    check_pixel(src, keep, 3, 1, 1, 1, 0.75f);
+    check_pixel(src, drop, 3, 0, 0, 0, 0);
+    check_pixel(src, off, 1, 1, 1, 1, 0.25f);
+}
+
 static void clip_discards(void) {
     /* clip(-1) discards: the cleared (0,0,0,0) pixel stays */
     const char *src = "float k;\n" VS_PASS
@@ -526,6 +538,7 @@ int main(void) {
     RUN(d3dcolor_sincos);
     RUN(orientation_and_ddy);
     RUN(pos_fixup_gives_d3d9_centres);
+    RUN(alpha_test_in_shader);
     RUN(clip_discards);
     RUN(struct_uniform_array);
     RUN(more_intrinsics);

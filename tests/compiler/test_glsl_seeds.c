@@ -98,6 +98,7 @@ static void specialisation_differs(void) {
             CHECK_CONTAINS(ft, "texture(modeloTexturaMuestra, ");
             CHECK(fm && !strstr(fm, "texture("));
             CHECK(fm && !strstr(fm, "sampler2D"));
+            CHECK(tex->flags & HFX_FX_PROGRAM_ALPHA_TEST);
             CHECK_INT(tex->sampler_count, 1);
             CHECK_INT(mat->sampler_count, 0);
             if (tex->sampler_count) {

@@ -111,16 +111,16 @@ static void written_global_gets_private_copy(void) {
         "}\n";
     char *t = lowered(src, "vs", 0, NULL, 0);
     /* dir is written: every use reads its private copy (which needs the uniform); the static
-     * initialiser folds to 2; the statement after return is gone; helper precedes vs */
+     * const folds to 2 and replaces its uses (the global goes); the statement after return is
+     * gone; helper precedes vs */
     CHECK_STR(t,
         "shader vertex vs\n"
         "global uniform float3 dir\n"
         "global private float3 hfx_priv_dir\n"
-        "global private float hfx_static_k\n"
         "function helper : float3\n"
         "  param float3 v\n"
         "  block\n"
-        "    return (* (param v) (convert float3 (private k)))\n"
+        "    return (* (param v) (const float3 2 2 2))\n"
         "function vs : float4\n"
         "  param float4 p\n"
         "  block\n"
@@ -163,9 +163,34 @@ static void folds_with_hlsl_arithmetic(void) {
     free(t);
 }
 
+/* `static const` globals and `const` locals with constant values flow into their uses, so
+ * the branch they switch off and its sampler disappear. */
+static void constants_propagate(void) {
+    const char *src =
+        "sampler s;\n"
+        "static const bool useTexture = false;\n"
+        "static const float scale = 0.5 * 3;\n"
+        "float4 ps(float2 uv : TEXCOORD0) : COLOR\n"
+        "{\n"
+        "    const int steps = 2 + 2;\n"
+        "    if (useTexture) return tex2D(s, uv);\n"
+        "    return float4(uv * scale, steps, 1);\n"
+        "}\n";
+    char *t = lowered(src, "ps", 0, NULL, 1);
+    CHECK_STR(t,
+        "shader pixel ps\n"
+        "function ps : float4\n"
+        "  param float2 uv\n"
+        "  block\n"
+        "    decl int steps (const int 4)\n"
+        "    return (construct float4 (* (param uv) (const float2 1.5 1.5)) (const float 4) (const float 1))\n");
+    free(t);
+}
+
 int main(void) {
     RUN(specialised_branch_folds_away);
     RUN(written_global_gets_private_copy);
     RUN(folds_with_hlsl_arithmetic);
+    RUN(constants_propagate);
     return test_summary();
 }

@@ -194,6 +194,44 @@ static void typedefs(void) {
     tp_free(r);
 }
 
+static void typedef_of_generic_types(void) {
+    expect_dump("typedef vector<float, 3> v3;\n"
+                "typedef matrix<half, 2, 2> m2, m2b[2];\n"
+                "typedef const float CF;\n"
+                "v3 a; m2 b; m2b c; CF d = 1;\n",
+                "typedef float3 v3\n"
+                "typedef half2x2 m2\n"
+                "typedef half2x2[2] m2b\n"
+                "typedef const float CF\n"
+                "var float3 a\n"
+                "var half2x2 b\n"
+                "var half2x2[2] c\n"
+                "var float d = 1\n");
+}
+
+/* The preprocessor hands `#pragma pack_matrix` over as `__hfx_pack_matrix ( x )` (token.h);
+ * it becomes the majorness of later matrix declarations that name none. */
+static void pragma_pack_matrix(void) {
+    expect_dump("float4x4 a;\n"
+                "#pragma pack_matrix(row_major)\n"
+                "float4x4 b; float4 v; column_major float3x3 c;\n"
+                "struct S { float2x2 m; };\n"
+                "void f(float4x4 p) { float4x4 l = p; }\n"
+                "#pragma pack_matrix(column_major)\n"
+                "float4x4 d[2];\n",
+                "var float4x4 a\n"
+                "var row_major float4x4 b\n"
+                "var float4 v\n"
+                "var column_major float3x3 c\n"
+                "struct S\n"
+                "  field row_major float2x2 m\n"
+                "function void f\n"
+                "  param row_major float4x4 p\n"
+                "  block\n"
+                "    var row_major float4x4 l = p\n"
+                "var column_major float4x4[2] d\n");
+}
+
 static void structs(void) {
     tp_result *r = tp_parse("struct V {\n"
                             "  linear float4 p : POSITION;\n"
@@ -281,6 +319,13 @@ static void objects(void) {
     hfx_decl *ps = tp_find(r, "PSArray");
     CHECK(ps && ps->type->kind == TY_ARRAY && ps->type->array_len == 2 && ps->type->elem->kind == TY_PIXELSHADER);
     tp_free(r);
+    /* SM4 spellings of textures with an element type */
+    r = tp_parse("Texture2D<float4> tt; TextureCube<float4> tcu;\nfloat<int> bad;\n");
+    CHECK_STR(r->errors, "t.fx(2,6): error X3000: syntax error: unexpected token '<'\n");
+    hfx_decl *tt = tp_find(r, "tt"), *tcu = tp_find(r, "tcu");
+    CHECK(tt && tt->type->kind == TY_TEXTURE && tt->type->dim == DIM_2D);
+    CHECK(tcu && tcu->type->kind == TY_TEXTURE && tcu->type->dim == DIM_CUBE);
+    tp_free(r);
 }
 
 static void functions(void) {
@@ -338,6 +383,8 @@ int main(void) {
     RUN(arrays);
     RUN(type_spellings);
     RUN(typedefs);
+    RUN(typedef_of_generic_types);
+    RUN(pragma_pack_matrix);
     RUN(structs);
     RUN(struct_scopes);
     RUN(objects);

@@ -9,7 +9,8 @@ static void technique_spellings(void) {
                             "technique10 C { pass { SetVertexShader(CompileShader(vs_4_0, VS())); } }\n"
                             "technique11 D { }\n"
                             "technique { pass { } }\n"
-                            "TECHNIQUE E < string Group = \"g\"; > { PASS x < int order = 2; > { } }\n");
+                            "TECHNIQUE E < string Group = \"g\"; > { PASS x < int order = 2; > { } }\n"
+                            "technique Technique { pass Pass { } }\n");
     CHECK_STR(r->errors, "");
     CHECK_STR(r->dump, "technique A\n"
                        "  pass p0\n"
@@ -25,8 +26,10 @@ static void technique_spellings(void) {
                        "technique E (TECHNIQUE)\n"
                        "  annotation string Group = \"g\"\n"
                        "  pass x\n"
-                       "    annotation int order = 2\n");
-    CHECK_INT(r->ast->decl_count, 6);
+                       "    annotation int order = 2\n"
+                       "technique Technique\n"
+                       "  pass Pass\n");
+    CHECK_INT(r->ast->decl_count, 7);
     hfx_decl *anon = r->ast->decls[4];
     CHECK_INT(anon->kind, DECL_TECHNIQUE);
     CHECK(anon->name == NULL && anon->technique->name == NULL);

@@ -64,6 +64,48 @@ static void every_error_reported(void) {
     tp_free(r);
 }
 
+/* Recovery inside struct bodies and annotations keeps the rest of the declaration. */
+static void recovery_in_structs_and_annotations(void) {
+    tp_result *r = tp_parse("struct S { float a b; float c; };\n"
+                            "float x < string n = ; int k = 1; > = 1;\n"
+                            "float y;\n");
+    CHECK_STR(r->errors, "t.fx(1,20): error X3000: syntax error: unexpected token 'b'\n"
+                         "t.fx(2,22): error X3000: syntax error: unexpected token ';'\n");
+    hfx_decl *s = tp_find(r, "S"), *x = tp_find(r, "x");
+    CHECK(s && s->type->st->field_count == 1 && strcmp(s->type->st->fields[0].name, "c") == 0);
+    CHECK(x && x->annotation_count == 1 && strcmp(x->annotations[0].name, "k") == 0);
+    CHECK(x && x->init && x->init->ival == 1);
+    CHECK(tp_find(r, "y") != NULL);
+    tp_free(r);
+}
+
+static void unnamed_parameter_in_definition(void) {
+    expect_errors("float f(float, int);\nfloat g(float a, int) { return a; }\n",
+                  "t.fx(2,18): error X3000: 'g': parameter 2 has no name\n");
+}
+
+/* A missing ';' before a closing brace: the block still closes and what follows is kept. */
+static void recovery_at_closing_braces(void) {
+    tp_result *r = tp_parse("technique T { pass P { CullMode = None } }\nfloat ok;\n");
+    CHECK_STR(r->errors, "t.fx(1,40): error X3000: syntax error: unexpected token '}'\n");
+    hfx_decl *t = tp_find(r, "T");
+    CHECK(t && t->kind == DECL_TECHNIQUE && t->technique->pass_count == 1);
+    CHECK(tp_find(r, "ok") != NULL);
+    tp_free(r);
+    r = tp_parse("sampler s = sampler_state { Texture = <t> };\nfloat ok;\n");
+    CHECK_STR(r->errors, "t.fx(1,43): error X3000: syntax error: unexpected token '}'\n");
+    hfx_decl *s = tp_find(r, "s");
+    CHECK(s && s->init && s->init->kind == EX_SAMPLER_STATE && s->init->state_count == 0);
+    CHECK(tp_find(r, "ok") != NULL);
+    tp_free(r);
+    r = tp_parse("struct S { float a; float b }; float ok;\n");
+    CHECK_STR(r->errors, "t.fx(1,29): error X3000: syntax error: unexpected token '}'\n");
+    hfx_decl *st = tp_find(r, "S");
+    CHECK(st && st->kind == DECL_STRUCT && st->type->st->field_count == 1);
+    CHECK(tp_find(r, "ok") != NULL);
+    tp_free(r);
+}
+
 static void struct_redefinition(void) {
     expect_errors("struct S { float a; };\nstruct S { int b; };\nstruct F;\nstruct F { float c; };\n",
                   "t.fx(2,8): error X3003: redefinition of 'S'\n");
@@ -169,6 +211,9 @@ int main(void) {
     RUN(every_error_reported);
     RUN(unbalanced_braces);
     RUN(struct_redefinition);
+    RUN(recovery_at_closing_braces);
+    RUN(unnamed_parameter_in_definition);
+    RUN(recovery_in_structs_and_annotations);
     RUN(deep_nesting_is_an_error);
     RUN(long_but_shallow_is_fine);
     RUN(hundred_thousand_lines);

@@ -19,6 +19,7 @@ static const char *const splices[] = {
     "struct ", "typedef ", "technique ", "pass ", "asm {", "sampler_state", "compile ", "[unroll] ",
     "#define X (\n", "#if 1\n", "float4x4 ", "return ", "else ", "case 1:", "0x", "1e", "@", "\\\n",
     "register(", "vector<float,", "linear ", "in out ", "NULL", "<t>", "Texture = ", "{{{{", "))))",
+    "\n#pragma pack_matrix(row_major)\n", "__hfx_pack_matrix (", "Texture2D<", "pass Pass {", "x.sample",
 };
 
 /* One mutation of text: delete, duplicate or insert at a random place. malloc'ed. */

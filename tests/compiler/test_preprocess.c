@@ -331,6 +331,21 @@ static void if_expression_errors(void) {
     done(&r);
 }
 
+static void deep_if_expression_is_an_error(void) {
+    char text[4200];
+    size_t n = (size_t)snprintf(text, sizeof text, "#if ");
+    for (int i = 0; i < 2000; i++) text[n++] = '(';
+    text[n++] = '1';
+    for (int i = 0; i < 2000; i++) text[n++] = ')';
+    snprintf(text + n, sizeof text - n, "\nno\n#endif\nyes");
+    pp_run r;
+    pp(&r, text);
+    /* Each '(' nests two levels (conditional, then operand): the 129th goes past 256. */
+    CHECK_STR(r.diag, "t.fx(1,133): error X1518: preprocessor expression nested too deeply\n");
+    CHECK_STR(r.out, "yes");
+    done(&r);
+}
+
 static void conditional_structure_errors(void) {
     pp_run r;
     pp(&r, "#endif\n#else\n#elif 1\n#if 1\na\n#else\nb\n#else\nc\n#endif\n#ifdef\n#endif\n  #if 1\nd\n");
@@ -509,6 +524,7 @@ int main(void) {
     RUN(if_expressions);
     RUN(if_expression_errors);
     RUN(conditional_structure_errors);
+    RUN(deep_if_expression_is_an_error);
     RUN(error_directive);
     RUN(line_directive);
     RUN(file_and_line_macros);

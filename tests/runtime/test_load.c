@@ -86,6 +86,12 @@ static void test_corrupt_effect(void) {
     CHECK_STR(errors, "test.fx: pass 0 lies outside the effect's data");
     hfx_free(errors);
     fx = one_pass(tb_vs_pos, tb_fs_color);
+    tb_state_p(fx, "Texture", 0, 99);
+    fx->passes[0].state_count = 1;
+    CHECK(hfx_rt_effect_from_fx(dev, fx, NULL, &errors) == NULL);
+    CHECK_STR(errors, "test.fx: state 0 names no parameter");
+    hfx_free(errors);
+    fx = one_pass(tb_vs_pos, tb_fs_color);
     fx->techniques[0].pass_count = 2;
     CHECK(hfx_rt_effect_from_fx(dev, fx, NULL, &errors) == NULL);
     CHECK_STR(errors, "test.fx: technique 0 lies outside the effect's data");

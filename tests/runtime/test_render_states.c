@@ -392,6 +392,9 @@ static void add_unsupported(hfx_fx_effect *fx) {
     tb_state_e(fx, "ZEnable", 0, "UseW");            /* 15 */
     tb_state_e(fx, "AlphaTestEnable", 0, "TRUE");    /* 16 */
     tb_state_e(fx, "CullMode", 0, "None");           /* 17: fine */
+    tb_state_e(fx, "MinFilter", 1, "GaussianQuad");  /* 18 */
+    uint32_t vs = tb_state_i(fx, "VertexShader", 0, 0); /* 19: say, an asm shader */
+    fx->states[vs].kind = HFX_FX_VALUE_UNSUPPORTED;
 }
 
 static void test_unsupported_states_reported_once(void) {
@@ -405,7 +408,9 @@ static void test_unsupported_states_reported_once(void) {
               "test.fx(13,5): warning: 'FogEnable': fixed-function fog is not available in GL core; ignored\n"
               "test.fx(14,5): warning: 'ColorOp': texture-stage state is fixed-function; it has no effect with shaders\n"
               "test.fx(15,5): warning: 'ZEnable': ZEnable = UseW (w-buffering) is not available in GL; using a z-buffer\n"
-              "test.fx(16,5): warning: 'AlphaTestEnable': alpha test needs the pass's pixel shader to carry it (no hfx_alpha_func uniform); ignored\n");
+              "test.fx(16,5): warning: 'AlphaTestEnable': alpha test needs the pass's pixel shader to carry it (no hfx_alpha_func uniform); ignored\n"
+              "test.fx(18,5): warning: 'MinFilter': GaussianQuad filtering is not available in GL; filtering linearly\n"
+              "test.fx(19,5): warning: 'VertexShader': this value cannot be expressed in GL; ignored\n");
     apply(fx);
     apply(fx);
     CHECK_STR(hfx_effect_warnings(fx), w); /* Apply adds nothing */

@@ -167,6 +167,112 @@ static void test_multilights_struct_array(void) {
     hfx_effect_destroy(fx);
 }
 
+static GLuint bound_program(void) {
+    GLint p = 0;
+    g.GetIntegerv(GL_CURRENT_PROGRAM, &p);
+    return (GLuint)p;
+}
+
+/* tutorial0: World * View * Projection, then tex2D with Clamp / Linear on a 2x2 texture. */
+static void test_tutorial0_samples_its_texture(void) {
+    hfx_effect *fx = load_seed("tutorial0.fx", NULL);
+    CHECK(fx != NULL);
+    if (!fx) return;
+    const char *names[3] = {"World", "View", "Projection"};
+    for (int i = 0; i < 3; i++) CHECK_INT(hfx_param_set_matrix(hfx_effect_param(fx, names[i]), identity), HFX_OK);
+    GLuint tex;
+    g.GenTextures(1, &tex);
+    g.BindTexture(GL_TEXTURE_2D, tex);
+    /* memory row 0 (v = 0 in D3D and GL alike): red, green; row 1: blue, white */
+    const unsigned char texels[16] = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255};
+    g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+    g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    g.BindTexture(GL_TEXTURE_2D, 0);
+    CHECK_INT(hfx_param_set_texture(hfx_effect_param(fx, "diffuseTexture"), tex), HFX_OK);
+    hfx_pass *pass = hfx_technique_pass(hfx_effect_technique(fx, "Tut0"), 0);
+    int pos = hfx_pass_attribute_location(pass, "POSITION0"), uv = hfx_pass_attribute_location(pass, "TEXCOORD0");
+    CHECK(pos >= 0 && uv >= 0 && pos != uv);
+    /* x, y, z, w, u, v: texture coordinates follow the position, (-1, -1) -> (0, 0) */
+    static const float verts[36] = {-1, -1, 0, 1, 0, 0, 1, -1, 0, 1, 1, 0, 1, 1, 0, 1, 1, 1,
+                                    -1, -1, 0, 1, 0, 0, 1, 1, 0, 1, 1, 1, -1, 1, 0, 1, 0, 1};
+    GLuint vao, vbo;
+    g.GenVertexArrays(1, &vao);
+    g.BindVertexArray(vao);
+    g.GenBuffers(1, &vbo);
+    g.BindBuffer(GL_ARRAY_BUFFER, vbo);
+    g.BufferData(GL_ARRAY_BUFFER, sizeof verts, verts, GL_STATIC_DRAW);
+    if (pos >= 0 && uv >= 0) {
+        g.VertexAttribPointer((GLuint)pos, 4, GL_FLOAT, GL_FALSE, 6 * sizeof(float), NULL);
+        g.EnableVertexAttribArray((GLuint)pos);
+        g.VertexAttribPointer((GLuint)uv, 2, GL_FLOAT, GL_FALSE, 6 * sizeof(float), (void *)(4 * sizeof(float)));
+        g.EnableVertexAttribArray((GLuint)uv);
+    }
+    g.ClearColor(0, 0, 0, 0);
+    g.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    hfx_effect_begin(fx);
+    CHECK_INT(hfx_pass_apply(pass), HFX_OK);
+    GLint sampler = 0;
+    g.GetIntegerv(GL_SAMPLER_BINDING, &sampler); /* unit 0 is active after the bind */
+    GLint v = 0;
+    g.GetSamplerParameteriv((GLuint)sampler, GL_TEXTURE_MIN_FILTER, &v);
+    CHECK_INT(v, GL_LINEAR_MIPMAP_LINEAR);
+    g.GetSamplerParameteriv((GLuint)sampler, GL_TEXTURE_WRAP_S, &v);
+    CHECK_INT(v, GL_CLAMP_TO_EDGE);
+    g.DrawArrays(GL_TRIANGLES, 0, 6);
+    hfx_effect_end(fx);
+    check_pixel(0, H - 1, 255, 0, 0, 255);  /* bottom-left: u, v near 0 */
+    check_pixel(W - 1, 0, 255, 255, 255, 255); /* top-right: u, v near 1 */
+    CHECK_INT(g.GetError(), GL_NO_ERROR);
+    g.DeleteBuffers(1, &vbo);
+    g.DeleteVertexArrays(1, &vao);
+    g.DeleteTextures(1, &tex);
+    hfx_effect_destroy(fx);
+}
+
+/* pointlights: arrays of 50 uploaded in one call; multilights: struct array members. */
+static void test_seed_arrays_reach_gl(void) {
+    hfx_effect *fx = load_seed("pointlights.fx", NULL);
+    CHECK(fx != NULL);
+    if (fx) {
+        float colors[200];
+        for (int i = 0; i < 200; i++) colors[i] = (float)i / 200.0f;
+        CHECK_INT(hfx_param_set_floats(hfx_effect_param(fx, "LightColor"), colors, 200), HFX_OK);
+        CHECK_INT(hfx_param_set_int(hfx_effect_param(fx, "activeLights"), 50), HFX_OK);
+        hfx_effect_begin(fx);
+        CHECK_INT(hfx_pass_apply(hfx_technique_pass(hfx_effect_technique_at(fx, 0), 0)), HFX_OK);
+        GLuint prog = bound_program();
+        float c[4] = {0};
+        GLint loc = g.GetUniformLocation(prog, "LightColor[49]");
+        CHECK(loc >= 0);
+        g.GetUniformfv(prog, loc, c);
+        CHECK_NEAR(c[0], 196 / 200.0, 1e-6);
+        CHECK_NEAR(c[3], 199 / 200.0, 1e-6);
+        hfx_effect_end(fx);
+        hfx_effect_destroy(fx);
+    }
+    fx = load_seed("multilights_repaired.fx", NULL);
+    CHECK(fx != NULL);
+    if (!fx) return;
+    hfx_param *s1 = hfx_param_element(hfx_effect_param(fx, "spots"), 1);
+    CHECK_INT(hfx_param_set_floats(hfx_param_member(s1, "Posicion"), (float[3]){1, 2, 3}, 3), HFX_OK);
+    CHECK_INT(hfx_param_set_floats(hfx_param_member(s1, "Color"), (float[4]){0.5f, 0.25f, 1, 1}, 4), HFX_OK);
+    hfx_effect_begin(fx);
+    CHECK_INT(hfx_pass_apply(hfx_technique_pass_by_name(hfx_effect_technique(fx, "Texturizado"), "MultiLuces")), HFX_OK);
+    GLuint prog = bound_program();
+    float p[4] = {0};
+    GLint loc = g.GetUniformLocation(prog, "spots[1].Posicion");
+    CHECK(loc >= 0);
+    g.GetUniformfv(prog, loc, p);
+    CHECK_NEAR(p[1], 2, 0);
+    loc = g.GetUniformLocation(prog, "spots[1].Color");
+    CHECK(loc >= 0);
+    g.GetUniformfv(prog, loc, p);
+    CHECK_NEAR(p[1], 0.25, 0);
+    hfx_effect_end(fx);
+    CHECK_STR(hfx_effect_warnings(fx), "");
+    hfx_effect_destroy(fx);
+}
+
 int main(void) {
     test_require_seeds();
     gl = test_gl_create(W, H);
@@ -190,6 +296,8 @@ int main(void) {
     RUN(test_ambient_annotations_and_colour);
     RUN(test_multilights_bug_is_reported);
     RUN(test_multilights_struct_array);
+    RUN(test_tutorial0_samples_its_texture);
+    RUN(test_seed_arrays_reach_gl);
     hfx_device_destroy(dev);
     test_gl_destroy(gl);
     return test_summary();

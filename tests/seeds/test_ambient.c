@@ -158,6 +158,14 @@ static void material_technique(void) {
     CHECK_SCENE(S);
 }
 
+/* Every test, once with the .fx loaded directly and once through .hfxo. */
+static void run_all(void) {
+    RUN(ambient_default_colour);
+    RUN(ambient_set_colour_and_world);
+    RUN(textured_technique);
+    RUN(material_technique);
+}
+
 int main(void) {
     test_require_seeds();
     S = seed_scene_create(128, 128);
@@ -165,10 +173,10 @@ int main(void) {
         fprintf(stderr, "no OSMesa GL 3.3 context\n");
         return 1;
     }
-    RUN(ambient_default_colour);
-    RUN(ambient_set_colour_and_world);
-    RUN(textured_technique);
-    RUN(material_technique);
+    run_all();
+    printf("== the same, loading the effects from .hfxo bytes (hfxc, then hfx_effect_load_memory)\n");
+    seed_use_hfxo(S, 1);
+    run_all();
     seed_report(S);
     seed_scene_destroy(S);
     return test_summary();

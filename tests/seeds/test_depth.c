@@ -148,6 +148,41 @@ static void near_plane_cuts_a_crossing_object(void) {
     close_scene(&d);
 }
 
+/* A sphere sunk into a floor, seen from above at an angle: where they cross, the per-pixel
+ * depths decide, not the drawing order. */
+static void interpenetrating_sphere_and_floor(void) {
+    depth_scene d = {0};
+    if (open_scene(&d)) {
+        seed_mesh *sphere = seed_mesh_sphere(S, 1, 24, 16), *floor = seed_mesh_floor(S, 2);
+        float view[16], proj[16], world[16];
+        xm_look_at(view, v3_make(0.5, 2.5, 3.5), v3_make(0, 0, 0), v3_make(0, 1, 0));
+        xm_perspective_fov(proj, SEED_PI / 3, 1, 1, 50);
+        seed_camera(S, view, proj);
+        xm_translation(world, 0.2, 0.3, -0.1);
+        seed_object objs[2] = {seed_object_at(floor, NULL), seed_object_at(sphere, world)};
+        rgba colours[2] = {GREY, RED};
+        seed_set_rgba(S, d.fx, "colorMaterialAmbiental", RED);
+        seed_clear(S, CLEAR);
+        seed_set_transforms(S, d.fx, "world", "view", "projection", world);
+        CHECK_INT(seed_draw(S, d.fx, "ModeloAmbiental", sphere, SEED_BLEND_NONE), 1);
+        seed_set_transforms(S, d.fx, "world", "view", "projection", NULL);
+        seed_set_rgba(S, d.fx, "colorMaterialAmbiental", GREY);
+        CHECK_INT(seed_draw(S, d.fx, "ModeloAmbiental", floor, SEED_BLEND_NONE), 1);
+        compare_image("sphere sunk into the floor", objs, colours, 2);
+        seed_mesh_free(S, sphere);
+        seed_mesh_free(S, floor);
+    }
+    close_scene(&d);
+}
+
+/* Every test, once with the .fx loaded directly and once through .hfxo. */
+static void run_all(void) {
+    RUN(nearer_object_wins_in_either_order);
+    RUN(near_and_far_planes_clip);
+    RUN(near_plane_cuts_a_crossing_object);
+    RUN(interpenetrating_sphere_and_floor);
+}
+
 int main(void) {
     test_require_seeds();
     S = seed_scene_create(128, 128);
@@ -155,9 +190,10 @@ int main(void) {
         fprintf(stderr, "no OSMesa GL 3.3 context\n");
         return 1;
     }
-    RUN(nearer_object_wins_in_either_order);
-    RUN(near_and_far_planes_clip);
-    RUN(near_plane_cuts_a_crossing_object);
+    run_all();
+    printf("== the same, loading the effects from .hfxo bytes (hfxc, then hfx_effect_load_memory)\n");
+    seed_use_hfxo(S, 1);
+    run_all();
     seed_report(S);
     seed_scene_destroy(S);
     return test_summary();

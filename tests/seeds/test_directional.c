@@ -22,7 +22,7 @@ typedef struct dir_ref {
 
 static rgba directional_shade(const seed_surface *s, const void *user) {
     const dir_ref *r = user;
-    v3 l = v3_normalize(r->dir), n = v3_normalize(s->normal);
+    v3 l = v3_normalize(r->dir), n = s->normal;
     double rd = maxd(v3_dot(v3_neg(l), n), 0);
     rgba c = rgba_add(r->ambient, rgba_scale(r->diffuse, rd));
     if (r->spec_on) {
@@ -219,6 +219,16 @@ static void specular_on(void) {
     close_scene(&d);
 }
 
+/* Every test, once with the .fx loaded directly and once through .hfxo. */
+static void run_all(void) {
+    RUN(material_with_default_colours);
+    RUN(textured_technique);
+    RUN(scaled_world_scales_the_light);
+    RUN(sphere_normals_are_not_renormalised);
+    RUN(specular_off_is_the_diffuse_model);
+    RUN(specular_on);
+}
+
 int main(void) {
     test_require_seeds();
     S = seed_scene_create(128, 128);
@@ -226,12 +236,10 @@ int main(void) {
         fprintf(stderr, "no OSMesa GL 3.3 context\n");
         return 1;
     }
-    RUN(material_with_default_colours);
-    RUN(textured_technique);
-    RUN(scaled_world_scales_the_light);
-    RUN(sphere_normals_are_not_renormalised);
-    RUN(specular_off_is_the_diffuse_model);
-    RUN(specular_on);
+    run_all();
+    printf("== the same, loading the effects from .hfxo bytes (hfxc, then hfx_effect_load_memory)\n");
+    seed_use_hfxo(S, 1);
+    run_all();
     seed_report(S);
     seed_scene_destroy(S);
     return test_summary();

@@ -317,6 +317,54 @@ static void reference_sampler_matches_gl(void) {
     CHECK_SCENE(S);
 }
 
+/* tutorial0's pixel-centre expectation, met by a renderer that does move content by half a
+ * pixel the Direct3D 9 way (this file's shader): pixel x shows the mean of texels x - 1 and x. */
+static double period3(int i) {
+    static const double p[3] = {0, 128, 255};
+    return p[((i % 3) + 3) % 3];
+}
+
+static void half_pixel_emulation_blurs_as_d3d9(void) {
+    unsigned prog = make_program();
+    CHECK(prog != 0);
+    if (!prog) return;
+    static unsigned char texels[96 * 96 * 4];
+    for (int y = 0; y < 96; y++)
+        for (int x = 0; x < 96; x++) {
+            unsigned char *p = texels + (y * 96 + x) * 4;
+            p[0] = (unsigned char)period3(x);
+            p[1] = (unsigned char)period3(y);
+            p[2] = 0;
+            p[3] = 255;
+        }
+    seed_texture tex = seed_texture_make(S, 96, 96, texels);
+    seed_mesh *floor = seed_mesh_floor(S, 2);
+    float world[16];
+    xm_identity(world);
+    seed_camera_top(S, 2);
+    G.ActiveTexture(GL_TEXTURE0);
+    G.BindTexture(GL_TEXTURE_2D, tex.gl);
+    G.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    G.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    G.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    G.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    seed_clear(S, rgba_make(0, 0, 0, 0));
+    draw_own(prog, floor, world, 3, 1);
+    int wrong = 0;
+    for (int y = 1; y < 96; y++)
+        for (int x = 1; x < 96; x++) {
+            rgba g = seed_pixel(S, x, y);
+            double r = (period3(x - 1) + period3(x)) / 2, gg = (period3(y - 1) + period3(y)) / 2;
+            if (fabs(g.r * 255 - r) > 1 || fabs(g.g * 255 - gg) > 1) wrong++;
+        }
+    CHECK_INT(wrong, 0);
+    G.BindTexture(GL_TEXTURE_2D, 0);
+    seed_texture_free(S, &tex);
+    seed_mesh_free(S, floor);
+    G.DeleteProgram(prog);
+    CHECK_SCENE(S);
+}
+
 int main(void) {
     RUN(matrices_match_xna);
     S = seed_scene_create(96, 96);
@@ -326,6 +374,7 @@ int main(void) {
     }
     RUN(probes_find_what_gl_rasterizes);
     RUN(reference_sampler_matches_gl);
+    RUN(half_pixel_emulation_blurs_as_d3d9);
     seed_scene_destroy(S);
     return test_summary();
 }

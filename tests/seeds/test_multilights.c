@@ -81,7 +81,7 @@ static rgba multilights_shade(const seed_surface *s, const void *user) {
             if (pt->attenuate) c = rgba_scale(c, distance_att(s->pos, pt->pos, pt->range, pt->c1, pt->c2, pt->c3));
             sum = rgba_add(sum, c);
         }
-        if (r->spots[i].on) sum = rgba_add(sum, spot(r, &r->spots[0], s->pos, s->normal, m));
+        if (r->spots[i].on) sum = rgba_add(sum, spot(r, &r->spots[i], s->pos, s->normal, m));
     }
     sum.a = 1;
     return clamp01(rgba_add(clamp01(pass1), clamp01(sum)));
@@ -329,6 +329,15 @@ static void broken_listing_fails_and_device_survives(void) {
     CHECK_SCENE(S);
 }
 
+/* Every test, once with the .fx loaded directly and once through .hfxo. */
+static void run_all(void) {
+    RUN(lights_off_leave_the_ambient_pass);
+    RUN(each_light_alone);
+    RUN(six_lights_and_switching);
+    RUN(loop_bound_past_the_arrays);
+    RUN(broken_listing_fails_and_device_survives);
+}
+
 int main(void) {
     test_require_seeds();
     S = seed_scene_create(128, 128);
@@ -336,11 +345,10 @@ int main(void) {
         fprintf(stderr, "no OSMesa GL 3.3 context\n");
         return 1;
     }
-    RUN(lights_off_leave_the_ambient_pass);
-    RUN(each_light_alone);
-    RUN(six_lights_and_switching);
-    RUN(loop_bound_past_the_arrays);
-    RUN(broken_listing_fails_and_device_survives);
+    run_all();
+    printf("== the same, loading the effects from .hfxo bytes (hfxc, then hfx_effect_load_memory)\n");
+    seed_use_hfxo(S, 1);
+    run_all();
     seed_report(S);
     seed_scene_destroy(S);
     return test_summary();

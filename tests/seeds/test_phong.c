@@ -232,6 +232,15 @@ static void sphere_in_perspective(void) {
     CHECK_SCENE(S);
 }
 
+/* Every test, once with the .fx loaded directly and once through .hfxo. */
+static void run_all(void) {
+    RUN(ambient_term);
+    RUN(diffuse_term);
+    RUN(all_three_terms);
+    RUN(highlight_follows_the_camera);
+    RUN(sphere_in_perspective);
+}
+
 int main(void) {
     test_require_seeds();
     S = seed_scene_create(128, 128);
@@ -239,11 +248,10 @@ int main(void) {
         fprintf(stderr, "no OSMesa GL 3.3 context\n");
         return 1;
     }
-    RUN(ambient_term);
-    RUN(diffuse_term);
-    RUN(all_three_terms);
-    RUN(highlight_follows_the_camera);
-    RUN(sphere_in_perspective);
+    run_all();
+    printf("== the same, loading the effects from .hfxo bytes (hfxc, then hfx_effect_load_memory)\n");
+    seed_use_hfxo(S, 1);
+    run_all();
     seed_report(S);
     seed_scene_destroy(S);
     return test_summary();

@@ -195,6 +195,14 @@ static void specular_off_and_on(void) {
     close_scene(&p);
 }
 
+/* Every test, once with the .fx loaded directly and once through .hfxo. */
+static void run_all(void) {
+    RUN(unattenuated_by_default);
+    RUN(attenuation_and_range_cut_off);
+    RUN(textured_technique);
+    RUN(specular_off_and_on);
+}
+
 int main(void) {
     test_require_seeds();
     S = seed_scene_create(128, 128);
@@ -202,10 +210,10 @@ int main(void) {
         fprintf(stderr, "no OSMesa GL 3.3 context\n");
         return 1;
     }
-    RUN(unattenuated_by_default);
-    RUN(attenuation_and_range_cut_off);
-    RUN(textured_technique);
-    RUN(specular_off_and_on);
+    run_all();
+    printf("== the same, loading the effects from .hfxo bytes (hfxc, then hfx_effect_load_memory)\n");
+    seed_use_hfxo(S, 1);
+    run_all();
     seed_report(S);
     seed_scene_destroy(S);
     return test_summary();

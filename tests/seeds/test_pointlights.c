@@ -46,7 +46,7 @@ static rgba pointlights_shade(const seed_surface *s, const void *user) {
         double spec = hlsl_pow(saturate(v3_dot(r, view)), p->specular_power);
         sum = rgba_add(sum, rgba_scale(p->ambient_colour, p->ambient_intensity));
         sum = rgba_add(sum, rgba_scale(rgba_mul(l->colour, tex), att * p->diffuse_intensity * diff));
-        sum = rgba_add(sum, rgba_scale(p->specular_colour, att * p->specular_intensity * spec));
+        sum = rgba_add(sum, rgba_scale(p->specular_colour, p->specular_intensity * spec));
     }
     return sum;
 }
@@ -171,6 +171,39 @@ static void one_light(void) {
     scene_close(&f);
 }
 
+/* The attenuation profile alone (specular off): a light 0.5 above the floor with radius 1.5.
+ * At distance d the floor gets Lc * tex * (0.5 / d) * (1 - d / 1.5)^2, which reaches zero at
+ * the radius and stays there. */
+static void attenuation_reaches_zero_at_the_radius(void) {
+    frame_scene f = {0};
+    if (scene_open(&f)) {
+        static lights_ref r;
+        tutorial_material(&r, &f.tex);
+        r.specular_intensity = 0;
+        r.active = 1;
+        r.lights[0] = (point_light){v3_make(0, 0.5, 0), rgba_make(1, 1, 1, 1), 1.5};
+        fill_by_element(f.fx, &r);
+        draw_frame(&f, &r, "attenuation profile");
+        static const double ds[] = {0.5, 0.6, 0.9, 1.2, 1.4, 1.5, 1.6, 2.0};
+        for (size_t i = 0; i < sizeof ds / sizeof ds[0]; i++) {
+            double d = ds[i];
+            int x, y;
+            seed_pixel_of(S, v3_make(-sqrt(d * d - 0.25), 0, 0.2), &x, &y);
+            char label[48];
+            snprintf(label, sizeof label, "attenuation near d = %.2f", d);
+            /* The closed form at the pixel's own distance checks the reference. */
+            seed_surface surf;
+            CHECK(seed_pick(S, &f.obj, 1, x, y, &surf) == 0);
+            double dd = v3_distance(surf.pos, r.lights[0].pos), k = dd < 1.5 ? 1 - dd / 1.5 : 0;
+            CHECK_NEAR(pointlights_shade(&surf, &r).r, 220 / 255.0 * (0.5 / dd) * k * k, 1e-9);
+            CHECK_PROBE(seed_probe(S, FILE_, label, &f.obj, x, y, pointlights_shade, &r));
+            if (d >= 1.5) CHECK_PROBE(seed_expect(S, FILE_, "beyond the radius: black", x, y, rgba_make(0, 0, 0, 0)));
+        }
+    }
+    CHECK(f.fx != NULL);
+    scene_close(&f);
+}
+
 static void ring_of_lights(lights_ref *r, int n, double ring, double height, double radius, double strength) {
     r->active = n;
     for (int i = 0; i < n; i++) {
@@ -256,6 +289,15 @@ static void frames_with_changing_light_counts(void) {
     scene_close(&f);
 }
 
+/* Every test, once with the .fx loaded directly and once through .hfxo. */
+static void run_all(void) {
+    RUN(one_light);
+    RUN(attenuation_reaches_zero_at_the_radius);
+    RUN(ten_lights);
+    RUN(fifty_lights);
+    RUN(frames_with_changing_light_counts);
+}
+
 int main(void) {
     test_require_seeds();
     S = seed_scene_create(128, 128);
@@ -263,10 +305,10 @@ int main(void) {
         fprintf(stderr, "no OSMesa GL 3.3 context\n");
         return 1;
     }
-    RUN(one_light);
-    RUN(ten_lights);
-    RUN(fifty_lights);
-    RUN(frames_with_changing_light_counts);
+    run_all();
+    printf("== the same, loading the effects from .hfxo bytes (hfxc, then hfx_effect_load_memory)\n");
+    seed_use_hfxo(S, 1);
+    run_all();
     seed_report(S);
     seed_scene_destroy(S);
     return test_summary();

@@ -144,11 +144,17 @@ static void clamp_holds_the_border_texels(void) {
     CHECK_SCENE(S);
 }
 
-/* Direct3D 9 samples pixel (x, y) at screen point (x, y), GL at (x + 0.5, y + 0.5): with a
- * 128-texel texture mapped one texel per pixel, every Direct3D 9 pixel lands on the border
- * between two texels and LINEAR returns their mean (the blur every XNA developer met),
- * where GL would return each texel. Alternating black and white columns make the two
- * conventions 127 steps apart. */
+/* Direct3D 9 samples pixel (x, y) at screen point (x, y), GL at (x + 0.5, y + 0.5). With a
+ * 128 x 128 texture mapped one texel per pixel, every Direct3D 9 pixel lands on the border
+ * between two texels and LINEAR returns their mean (the blur every XNA developer met), where
+ * GL returns the texel itself. Red repeats 0, 128, 255 along u and green along v, so the mean
+ * of texels x - 1 and x tells Direct3D 9's centres from GL's (the texel) and from a shift the
+ * wrong way (texels x and x + 1), in both directions. */
+static double period3(int i) {
+    static const double p[3] = {0, 128, 255};
+    return p[((i % 3) + 3) % 3];
+}
+
 static void pixel_centres_follow_direct3d9(void) {
     hfx_effect *fx = seed_load(S, FILE_);
     CHECK(fx != NULL);
@@ -156,26 +162,41 @@ static void pixel_centres_follow_direct3d9(void) {
         CHECK_SCENE(S);
         return;
     }
-    unsigned char texels[128 * 2 * 4];
-    for (int y = 0; y < 2; y++)
+    static unsigned char texels[128 * 128 * 4];
+    for (int y = 0; y < 128; y++)
         for (int x = 0; x < 128; x++) {
             unsigned char *p = texels + (y * 128 + x) * 4;
-            p[0] = p[1] = p[2] = (x & 1) ? 255 : 0;
+            p[0] = (unsigned char)period3(x);
+            p[1] = (unsigned char)period3(y);
+            p[2] = 0;
             p[3] = 255;
         }
-    seed_texture tex = seed_texture_make(S, 128, 2, texels);
+    seed_texture tex = seed_texture_make(S, 128, 128, texels);
     seed_mesh *floor = seed_mesh_floor(S, 2);
     seed_camera_top(S, 2);
     seed_set_transforms(S, fx, "World", "View", "Projection", NULL);
     seed_set_texture(S, fx, "diffuseTexture", &tex);
     seed_clear(S, rgba_make(0, 0, 0, 0));
     CHECK_INT(seed_draw(S, fx, "Tut0", floor, SEED_BLEND_NONE), 1);
-    rgba grey = rgba_make(127.5 / 255, 127.5 / 255, 127.5 / 255, 1);
-    for (int x = 5; x < 128; x += 17) CHECK_PROBE(seed_expect(S, FILE_, "d3d9 centre: texel mean", x, 64, grey));
+    static const int xs[6] = {30, 31, 32, 70, 98, 121}, ys[3] = {40, 77, 102};
+    for (int j = 0; j < 3; j++)
+        for (int i = 0; i < 6; i++) {
+            int x = xs[i], y = ys[j];
+            rgba mean = rgba_make((period3(x - 1) + period3(x)) / 2 / 255, (period3(y - 1) + period3(y)) / 2 / 255, 0, 1);
+            CHECK_PROBE(seed_expect(S, "tutorial0.fx (centres)", "d3d9 centre: mean of 2 texels", x, y, mean));
+        }
     seed_texture_free(S, &tex);
     seed_mesh_free(S, floor);
     hfx_effect_destroy(fx);
     CHECK_SCENE(S);
+}
+
+/* Every test, once with the .fx loaded directly and once through .hfxo. */
+static void run_all(void) {
+    RUN(texels_appear_at_their_centres);
+    RUN(linear_filter_blends_neighbours);
+    RUN(clamp_holds_the_border_texels);
+    RUN(pixel_centres_follow_direct3d9);
 }
 
 int main(void) {
@@ -185,10 +206,10 @@ int main(void) {
         fprintf(stderr, "no OSMesa GL 3.3 context\n");
         return 1;
     }
-    RUN(texels_appear_at_their_centres);
-    RUN(linear_filter_blends_neighbours);
-    RUN(clamp_holds_the_border_texels);
-    RUN(pixel_centres_follow_direct3d9);
+    run_all();
+    printf("== the same, loading the effects from .hfxo bytes (hfxc, then hfx_effect_load_memory)\n");
+    seed_use_hfxo(S, 1);
+    run_all();
     seed_report(S);
     seed_scene_destroy(S);
     return test_summary();

@@ -11,7 +11,10 @@ static char *exe;
 
 static void window_screenshot(void) {
     char *tmp = test_temp_dir(), *png = view_format("%s/window.png", tmp), *out = NULL;
-    char *cmd = view_format("xvfb-run -a -s '-screen 0 640x480x24' %s %s --frames 5 --technique BlinnPhong", exe, png);
+    /* The X server's GL driver (swrast via GLX) leaks on unload, in frames LeakSanitizer
+     * cannot even name; the headless run in test_examples checks this program's own leaks. */
+    char *cmd = view_format("ASAN_OPTIONS=\"$ASAN_OPTIONS:detect_leaks=0\" xvfb-run -a -s '-screen 0 640x480x24' "
+                            "%s %s --frames 5 --technique BlinnPhong", exe, png);
     int rc = view_run(cmd, &out);
     if (rc != 0) fprintf(stderr, "$ %s\nexit %d:\n%s\n", cmd, rc, out ? out : "");
     CHECK_INT(rc, 0);

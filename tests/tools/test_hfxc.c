@@ -460,6 +460,51 @@ static void annotations_json_spot_specular(void) {
     cJSON_Delete(j);
 }
 
+/* A .hfxo describes itself exactly as its source does. */
+static void hfxo_input_reflects_like_source(void) {
+    char *seed = test_seed_path("spot_specular.fx");
+    char args[16384], out[1024];
+    snprintf(out, sizeof out, "%s/self.hfxo", tmp);
+    snprintf(args, sizeof args, "--no-warnings --reflect -o '%s' '%s'", out, seed);
+    run_result a = run(args);
+    CHECK_INT(a.status, 0);
+    snprintf(args, sizeof args, "--reflect '%s'", out);
+    run_result b = run(args);
+    CHECK_INT(b.status, 0);
+    cJSON *ja = cJSON_Parse(a.out), *jb = cJSON_Parse(b.out);
+    CHECK(ja && jb);
+    if (ja && jb) {
+        /* Everything but the "file" key is the same. */
+        cJSON_DeleteItemFromObjectCaseSensitive(ja, "file");
+        cJSON_DeleteItemFromObjectCaseSensitive(jb, "file");
+        CHECK(cJSON_Compare(ja, jb, 1));
+    }
+    cJSON_Delete(ja);
+    cJSON_Delete(jb);
+    run_free(&a);
+    run_free(&b);
+    /* A damaged one is refused with the reader's message. */
+    char *data = NULL;
+    size_t size = 0;
+    data = test_read_file(out, &size);
+    CHECK(data && size > 100);
+    if (data) {
+        data[100] ^= 1;
+        FILE *f = fopen(out, "wb");
+        if (f) {
+            fwrite(data, 1, size, f);
+            fclose(f);
+        }
+    }
+    free(data);
+    snprintf(args, sizeof args, "--reflect '%s'", out);
+    run_result c = run(args);
+    CHECK_INT(c.status, 1);
+    CHECK_CONTAINS(c.err, "hfxo: checksum mismatch (the file is corrupted)");
+    run_free(&c);
+    free(seed);
+}
+
 static void reflect_json_interface(void) {
     cJSON *j = json_of("--reflect", "tutorial0.fx");
     if (!j) return;
@@ -515,6 +560,7 @@ int main(void) {
     RUN(annotations_json_ambient);
     RUN(annotations_json_spot_specular);
     RUN(reflect_json_interface);
+    RUN(hfxo_input_reflects_like_source);
 #endif
     char cmd[1024];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp);

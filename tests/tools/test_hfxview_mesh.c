@@ -2,6 +2,8 @@
  * clockwise front faces (XNA's convention) checked on screen, and the OBJ reader. */
 #include "test.h"
 
+#include <unistd.h>
+
 #include "files.h"
 
 #include "../../tools/hfxview/mesh.c"
@@ -147,6 +149,8 @@ static void obj_square_without_normals(void) {
         if (m.v[i].pos[0] < 0 && m.v[i].pos[1] < 0) CHECK_NEAR(m.v[i].uv[1], 1, 1e-6);
     }
     hv_mesh_free(&m);
+    remove(path);
+    rmdir(dir);
     free(path);
     free(dir);
 }
@@ -163,6 +167,8 @@ static void obj_negative_indices_normals_and_sharing(void) {
     CHECK_INT(m.icount, 6);
     check_mesh("tri.obj", &m);
     hv_mesh_free(&m);
+    remove(path);
+    rmdir(dir);
     free(path);
     free(dir);
 }
@@ -181,6 +187,9 @@ static void obj_errors(void) {
     CHECK_STR(err, want);
     CHECK_INT(hv_mesh_load(&m, "/nonexistent/x.obj", err, sizeof err), -1);
     CHECK_STR(err, "cannot open mesh '/nonexistent/x.obj' (not a built-in mesh name either)");
+    remove(bad);
+    remove(none);
+    rmdir(dir);
     free(bad);
     free(none);
     free(dir);

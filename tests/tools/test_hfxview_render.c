@@ -201,6 +201,26 @@ static void effect_errors(void) {
     free(fx);
 }
 
+/* A compiled effect from hfxc renders the same as its source. */
+static void renders_hfxo(void) {
+    char *hfxc = view_build_path("compiler/hfxc");
+    if (!hfxc) {
+        printf("  (hfxc is not built: .hfxo not tried)\n");
+        return;
+    }
+    char *out = NULL, *cmd = view_format("%s " FX "ambient.fx -o %s/ambient.hfxo", hfxc, tmp);
+    CHECK_INT(view_run(cmd, &out), 0);
+    char *args = view_format("%s/ambient.hfxo --technique Material --size 64x64", tmp);
+    view_png img;
+    if (render(args, "hfxo.png", &img)) CHECK(view_pixel_near(&img, 32, 32, 89, 89, 102, 1));
+    else CHECK(0);
+    view_png_free(&img);
+    free(args);
+    free(out);
+    free(cmd);
+    free(hfxc);
+}
+
 int main(void) {
     hfxview = view_build_path("tools/hfxview/hfxview");
     if (!hfxview) test_skip("hfxview is not built (it needs the runtime)");
@@ -213,6 +233,7 @@ int main(void) {
     RUN(passes);
     RUN(exit_codes_and_messages);
     RUN(effect_errors);
+    RUN(renders_hfxo);
     char *rm = view_format("rm -rf %s", tmp);
     view_run(rm, NULL);
     free(rm);

@@ -23,6 +23,7 @@ void hv_scene_from_options(hv_scene *s, const hv_options *o) {
     s->light_direction = hv_vec3_normalize(o->light_direction_given ? o->light_direction
                                                                     : hv_vec3_sub(o->at, o->light_position));
     memcpy(s->light_color, o->light_color, sizeof s->light_color);
+    s->light_given = o->light_given;
 }
 
 static void lower_copy(char *out, size_t cap, const char *in) {
@@ -213,9 +214,14 @@ static int bind_array(hfx_param *p, role r, const hv_scene *s) {
     return set > 0;
 }
 
+static int is_light_role(role r) {
+    return r == R_LIGHT_DIR || r == R_LIGHT_POS || r == R_LIGHT_COLOR || r == R_TARGET;
+}
+
 static int bind_role(hfx_param *p, role r, float v, const hv_scene *s) {
     float vec[4] = {0, 0, 0, 1};
-    if (r == R_NONE || !param_is_zero(p)) return 0;
+    int forced = r == R_CAMERA || (s->light_given && is_light_role(r));
+    if (r == R_NONE || (!forced && !param_is_zero(p))) return 0;
     if (hfx_param_elements(p)) return bind_array(p, r, s);
     switch (r) {
     case R_CAMERA: vec[0] = s->eye.x; vec[1] = s->eye.y; vec[2] = s->eye.z; return set_vector(p, vec, 4, 1);

@@ -3,7 +3,8 @@
  * InverseTranspose forms, ViewInverse...), the camera position, and light and material
  * parameters the seed tutorials use (LightDirection, direccionLuz, posicionLuz, LightPosition[],
  * structs of lights...). Lights and materials are only given values when the effect left them
- * at zero (no initializer), so an effect's own defaults always win. */
+ * at zero (no initializer), so an effect's own defaults win, unless --light names the light;
+ * the camera position always follows the camera. */
 #ifndef HFXVIEW_BIND_H
 #define HFXVIEW_BIND_H
 
@@ -18,6 +19,7 @@ typedef struct hv_scene {
     hv_vec3 eye, at;
     hv_vec3 light_position, light_direction; /* direction: where the light travels */
     float light_color[3];
+    int light_given;                         /* --light: override the effect's own light values */
     int width, height;
 } hv_scene;
 

@@ -196,7 +196,9 @@ static int run(viewer *v) {
     if ((rc = apply_options(v)) != EXIT_OK) return rc;
     if (hv_context_is_window(v->ctx)) {
         if ((rc = show_window(v)) != EXIT_OK) return rc;
-        return v->opt.output ? save_png(v) : EXIT_OK;
+        if (!v->opt.output) return EXIT_OK;
+        if ((rc = draw(v)) != EXIT_OK) return rc; /* the swapped buffer is gone: draw once more */
+        return save_png(v);
     }
     if ((rc = draw(v)) != EXIT_OK) return rc;
     return save_png(v);

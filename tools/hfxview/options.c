@@ -193,6 +193,7 @@ int hv_options_parse(hv_options *o, int argc, char **argv, char *err, size_t err
         } else if (TAKE("--light")) {
             if (!parse_keyed(o, v, take_light))
                 return fail(err, errlen, "--light takes position=x,y,z[,direction=x,y,z][,color=r,g,b], not", v);
+            o->light_given = 1;
         } else if (TAKE("--rotate")) {
             if (hv_parse_floats(v, &o->yaw_degrees, 1) != 1) return fail(err, errlen, "--rotate takes degrees, not", v);
         } else if (TAKE("--blend-passes")) {

@@ -24,6 +24,7 @@ typedef struct hv_options {
     hv_vec3 light_position, light_direction;
     float light_color[3];
     int light_direction_given;
+    int light_given;         /* any --light */
     float yaw_degrees;       /* turns the mesh about y */
     int blend_add;           /* --blend-passes add */
     float background[4];

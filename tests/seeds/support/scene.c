@@ -8,7 +8,9 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "effect.h"
 #include "files.h"
+#include "hfx/hfxc.h"
 
 #define SEED_MAX_FILES 32
 
@@ -58,7 +60,10 @@ struct seed_scene {
     seed_gl_fns f;
     int width, height;
     float view[16], proj[16];
+    double inv_vp[16]; /* inverse(view * proj), for unprojecting pixels */
+    int inv_ok;
     int d3d9_centres;
+    int via_hfxo;
     int errors;
     seed_file_report files[SEED_MAX_FILES];
     int file_count;
@@ -128,8 +133,9 @@ seed_scene *seed_scene_create(int width, int height) {
     s->d3d9_centres = 1;
     s->dev = hfx_device_create_gl(test_gl_loader);
     if (!s->dev) fprintf(stderr, "  harness: hfx_device_create_gl returned NULL\n");
-    xm_identity(s->view);
-    xm_identity(s->proj);
+    float id[16];
+    xm_identity(id);
+    seed_camera(s, id, id);
     s->f.Viewport(0, 0, width, height);
     seed_clear(s, rgba_make(0, 0, 0, 0));
     return s;
@@ -179,8 +185,11 @@ void seed_clear(seed_scene *s, rgba c) {
 /* ---- cameras ---- */
 
 void seed_camera(seed_scene *s, const float view[16], const float proj[16]) {
+    float vp[16];
     memcpy(s->view, view, sizeof s->view);
     memcpy(s->proj, proj, sizeof s->proj);
+    xm_mul(vp, s->view, s->proj);
+    s->inv_ok = xm_invert(s->inv_vp, vp);
 }
 
 const float *seed_view(const seed_scene *s) { return s->view; }
@@ -228,6 +237,10 @@ static seed_mesh *upload_mesh(seed_scene *s, seed_vertex *v, int count) {
     }
     m->v = v;
     m->count = count;
+    v3 c = v3_make(0, 0, 0);
+    for (int i = 0; i < count; i++) c = v3_add(c, vertex_pos(&v[i]));
+    m->centre = count ? v3_scale(c, 1.0 / count) : c;
+    for (int i = 0; i < count; i++) m->radius = maxd(m->radius, v3_distance(m->centre, vertex_pos(&v[i])));
     s->f.GenVertexArrays(1, &m->vao);
     s->f.GenBuffers(1, &m->vbo);
     s->f.BindVertexArray(m->vao);
@@ -305,12 +318,44 @@ seed_object seed_object_at(const seed_mesh *m, const float world[16]) {
 
 /* ---- effects ---- */
 
+void seed_use_hfxo(seed_scene *s, int on) { s->via_hfxo = on; }
+
+/* hfxc's library compiles, hfx_fx_write_hfxo serialises, hfx_effect_load_memory loads the bytes
+ * as hfxc's output would be loaded from disk. */
+static hfx_effect *load_via_hfxo(seed_scene *s, const char *seed_file, const char *path) {
+    hfxc_result *r = hfxc_compile_file(path, NULL);
+    const struct hfx_fx_effect *compiled = r ? hfxc_result_effect(r) : NULL;
+    void *data = NULL;
+    size_t size = 0;
+    hfx_effect *fx = NULL;
+    char *errors = NULL;
+    if (!compiled) {
+        char *text = r ? hfxc_diagnostics_text(r) : NULL;
+        note(s, "compiling %s failed: %s", seed_file, text ? text : "");
+        free(text);
+    } else if (hfx_fx_write_hfxo(compiled, &data, &size) != 0) {
+        note(s, "writing %s as .hfxo failed", seed_file);
+    } else {
+        fx = hfx_effect_load_memory(s->dev, data, size, seed_file, NULL, &errors);
+        if (!fx) note(s, "loading %s from .hfxo failed: %s", seed_file, errors && *errors ? errors : hfx_device_last_error(s->dev));
+    }
+    hfx_free(errors);
+    free(data);
+    hfxc_result_free(r);
+    return fx;
+}
+
 hfx_effect *seed_load(seed_scene *s, const char *seed_file) {
     if (!s->dev) {
         note(s, "no hfx device: cannot load %s", seed_file);
         return NULL;
     }
     char *path = test_seed_path(seed_file);
+    if (s->via_hfxo) {
+        hfx_effect *fx = path ? load_via_hfxo(s, seed_file, path) : NULL;
+        free(path);
+        return fx;
+    }
     char *errors = NULL;
     hfx_effect *fx = path ? hfx_effect_load(s->dev, path, NULL, &errors) : NULL;
     if (!fx)
@@ -515,10 +560,8 @@ static void sample_ndc(const seed_scene *s, int x, int y, int d3d9, double *nx, 
 
 /* The world-space segment from the near plane (t = 0) to the far plane (t = 1). */
 static int pixel_ray(const seed_scene *s, double nx, double ny, v3 *origin, v3 *dir) {
-    float vp[16];
-    double inv[16];
-    xm_mul(vp, s->view, s->proj);
-    if (!xm_invert(inv, vp)) return 0;
+    const double *inv = s->inv_vp;
+    if (!s->inv_ok) return 0;
     v3 ends[2];
     for (int k = 0; k < 2; k++) {
         double in[4] = {nx, ny, (double)k, 1}, o[4];
@@ -555,6 +598,22 @@ static int hit_triangle(v3 o, v3 d, v3 a, v3 b, v3 c, double best, double *t, do
     return 1;
 }
 
+/* (p, w) * m for a row-major double matrix, w = 1 for points and 0 for directions. */
+static v3 affine_apply(const double m[16], v3 p, double w) {
+    return v3_make(p.x * m[0] + p.y * m[4] + p.z * m[8] + w * m[12], p.x * m[1] + p.y * m[5] + p.z * m[9] + w * m[13],
+                   p.x * m[2] + p.y * m[6] + p.z * m[10] + w * m[14]);
+}
+
+/* Whether the line o + t d comes within r of c (a cheap reject before the triangles). */
+static int near_sphere(v3 o, v3 d, v3 c, double r) {
+    double dd = v3_dot(d, d);
+    if (dd <= 0) return 0;
+    v3 oc = v3_sub(c, o);
+    double t = v3_dot(oc, d) / dd;
+    v3 closest = v3_sub(oc, v3_scale(d, t));
+    return v3_dot(closest, closest) <= r * r;
+}
+
 static int pick_at(const seed_scene *s, const seed_object *objects, int n, double nx, double ny, seed_surface *out) {
     v3 o, d;
     if (!pixel_ray(s, nx, ny, &o, &d)) return -1;
@@ -562,11 +621,18 @@ static int pick_at(const seed_scene *s, const seed_object *objects, int n, doubl
     int found = -1;
     for (int k = 0; k < n; k++) {
         const seed_mesh *m = objects[k].mesh;
+        /* World is affine: intersect in object space, where t and the barycentrics are the same. */
+        double inv[16];
+        if (!xm_invert(inv, objects[k].world)) continue;
+        v3 oo = affine_apply(inv, o, 1), od = affine_apply(inv, d, 0);
+        if (!near_sphere(oo, od, m->centre, m->radius * 1.001 + 1e-9)) continue;
         for (int i = 0; i + 2 < m->count; i += 3) {
+            double t, b1, b2;
+            if (!hit_triangle(oo, od, vertex_pos(&m->v[i]), vertex_pos(&m->v[i + 1]), vertex_pos(&m->v[i + 2]), best,
+                              &t, &b1, &b2))
+                continue;
             world_vertex w[3];
             for (int j = 0; j < 3; j++) w[j] = to_world(&m->v[i + j], objects[k].world);
-            double t, b1, b2;
-            if (!hit_triangle(o, d, w[0].pos, w[1].pos, w[2].pos, best, &t, &b1, &b2)) continue;
             best = t;
             found = k;
             double b0 = 1 - b1 - b2;
@@ -610,7 +676,9 @@ rgba seed_pixel(seed_scene *s, int x, int y) {
     return rgba_make(p[0] / 255.0, p[1] / 255.0, p[2] / 255.0, p[3] / 255.0);
 }
 
-static void record(seed_scene *s, const char *file, double diff) {
+static void record(seed_scene *s, const char *name, double diff) {
+    char file[64];
+    snprintf(file, sizeof file, "%s%s", name, s->via_hfxo ? " via .hfxo" : "");
     seed_file_report *r = NULL;
     for (int i = 0; i < s->file_count; i++)
         if (strcmp(s->files[i].file, file) == 0) r = &s->files[i];

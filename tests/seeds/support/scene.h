@@ -25,6 +25,8 @@ typedef struct seed_vertex { float pos[3], normal[3], uv[2]; } seed_vertex;
 typedef struct seed_mesh {
     seed_vertex *v; /* triangle list, object space */
     int count;
+    v3 centre;      /* a bounding sphere, object space, for probes to skip meshes a ray misses */
+    double radius;
     unsigned vao, vbo;
 } seed_mesh;
 
@@ -94,6 +96,9 @@ seed_object seed_object_at(const seed_mesh *m, const float world[16]); /* world 
 
 /* Effects. */
 hfx_effect *seed_load(seed_scene *s, const char *seed_file);  /* from the seed corpus; prints errors */
+/* From now on seed_load compiles with hfxc, writes a .hfxo in memory and loads that (probes
+ * are then recorded as "<file> via .hfxo"): the path of an application that ships .hfxo. */
+void seed_use_hfxo(seed_scene *s, int on);
 /* Setters by name that note (and print) any failure: unknown name, wrong type or count. */
 void seed_set_matrix(seed_scene *s, hfx_effect *fx, const char *name, const float m[16]);
 void seed_set_float(seed_scene *s, hfx_effect *fx, const char *name, double v);
