@@ -1,13 +1,15 @@
 /* bench_compile.c: the full compile of the seed corpus by hfx (preprocess, parse, check,
  * build, GLSL 330 for every pass) against glslangValidator compiling the GLSL hfx emitted to
- * SPIR-V (-G: OpenGL SPIR-V), for the same passes, in the same run. Prints both times and the
- * ratio; hfx's goal is >= 10x. Run by hand: bench_compile [rounds]. */
+ * SPIR-V (-G: OpenGL SPIR-V), for the same passes, in the same run; and, as a lower bound
+ * without process starts, glslang in process parsing and linking the same GLSL (no SPIR-V).
+ * Prints the times and ratios; hfx's goal is >= 10x. Run by hand: bench_compile [rounds]. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
 #include "effect.h"
+#include "glsl_check.h"
 #include "hfx/hfxc.h"
 
 static const char *const seeds[] = {
@@ -37,6 +39,10 @@ static char *read_all(const char *path, size_t *size) {
     return d;
 }
 
+enum { MAX_PROGRAMS = 256 };
+static char *kept[MAX_PROGRAMS][2]; /* the GLSL of the first round, for the in-process baseline */
+static int kept_count;
+
 /* One round of hfx over the corpus (sources already in memory); returns the programs made. */
 static int hfx_round(char *const *src, const size_t *size, const char *dir) {
     hfxc_options o = {0};
@@ -47,6 +53,13 @@ static int hfx_round(char *const *src, const size_t *size, const char *dir) {
         const hfx_fx_effect *fx = hfxc_result_effect(r);
         for (uint32_t p = 0; fx && p < fx->program_count; p++, programs++) {
             if (!dir) continue;
+            if (kept_count < MAX_PROGRAMS) {
+                for (int s = 0; s < 2; s++) {
+                    const char *t = fx->programs[p].code[s][HFX_TARGET_GLSL330].data;
+                    kept[kept_count][s] = t ? strdup(t) : NULL;
+                }
+                kept_count++;
+            }
             for (int s = 0; s < 2; s++) {
                 char path[512];
                 snprintf(path, sizeof path, "%s/p%02d_%u.%s", dir, i, p, s ? "frag" : "vert");
@@ -106,6 +119,16 @@ int main(int argc, char **argv) {
         spawn = now() - t0;
         if (spawn < best_spawn) best_spawn = spawn;
     }
+    double best_inproc = 1e9;
+    int linked = 0;
+    for (int r = 0; r < rounds; r++) {
+        double t0 = now();
+        linked = 0;
+        for (int k = 0; k < kept_count; k++)
+            if (kept[k][0] && kept[k][1]) linked += test_glsl_link(kept[k][0], kept[k][1], NULL);
+        double t = now() - t0;
+        if (t < best_inproc) best_inproc = t;
+    }
     printf("corpus: %d files, %d programs (%d shaders)\n", SEEDS, programs, 2 * programs);
     printf("hfx full compile (.fx -> GLSL 330): %.3f ms (best of %d)\n", best_hfx * 1e3, rounds);
     printf("glslangValidator (GLSL -> SPIR-V):  %.3f ms (best of %d)%s\n", best_glslang * 1e3, grounds,
@@ -113,6 +136,10 @@ int main(int argc, char **argv) {
     printf("  of which starting %d processes:   %.3f ms\n", programs, best_spawn * 1e3);
     printf("ratio glslang / hfx: %.1fx (goal >= 10x)\n", best_glslang / best_hfx);
     printf("ratio without process start: %.1fx\n", (best_glslang - best_spawn) / best_hfx);
+    printf("glslang in process (parse + link, no SPIR-V): %.3f ms (best of %d, %d/%d linked)\n", best_inproc * 1e3,
+           rounds, linked, kept_count);
+    printf("ratio glslang in process / hfx: %.1fx\n", best_inproc / best_hfx);
+    for (int k = 0; k < kept_count; k++) { free(kept[k][0]); free(kept[k][1]); }
     if (status) { printf("(left %s for inspection)\n", dir); for (int i = 0; i < SEEDS; i++) free(src[i]); return 0; }
     snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
     if (system(cmd) != 0) fprintf(stderr, "could not remove %s\n", dir);

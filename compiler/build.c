@@ -3,10 +3,12 @@
  * their values and annotations; build_states.c does samplers, techniques, passes and programs;
  * build_values.c evaluates constants. Everything it makes is malloc'ed, so the effect outlives
  * the compilation's arena. */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "build_int.h"
+#include "spirv.h"
 
 bool hfx_build_grow(hfx_builder *b, void **arr, size_t elem, uint32_t count, uint32_t *cap) {
     if (count < *cap) return true;
@@ -373,6 +375,7 @@ static bool builder_start(hfx_builder *b, hfx_arena *arena, hfx_diags *diags, hf
     b->types = types;
     b->ast = ast;
     b->targets = targets;
+    if (targets & (1u << HFX_TARGET_SPIRV)) b->targets |= 1u << HFX_TARGET_GLSL330; /* SPIR-V is made from it */
     b->fx = ast ? calloc(1, sizeof *b->fx) : NULL;
     if (!b->fx) return false;
     b->fx->source_name = hfx_build_strdup(b, source_name ? source_name : "");
@@ -393,8 +396,52 @@ static unsigned present_targets(const hfx_fx_effect *fx) {
     return all;
 }
 
+/* A name for program i in messages: its first pass, as technique.pass. */
+static void program_name(const hfx_fx_effect *fx, uint32_t i, char *out, size_t size) {
+    snprintf(out, size, "program %u", i);
+    for (uint32_t t = 0; t < fx->technique_count; t++)
+        for (uint32_t p = 0; p < fx->techniques[t].pass_count; p++) {
+            const hfx_fx_pass *pass = &fx->passes[fx->techniques[t].first_pass + p];
+            if (pass->program == i) {
+                snprintf(out, size, "%s.%s", fx->techniques[t].name, pass->name);
+                return;
+            }
+        }
+}
+
+/* HFX_TARGET_SPIRV: every program's GLSL 330 through glslang (spirv.c); the GLSL 330 goes
+ * again unless it was asked for too. Without glslang nothing is made (hfxc says so). */
+static void build_spirv(hfx_builder *b, unsigned requested) {
+    hfx_fx_effect *fx = b->fx;
+    if ((requested & (1u << HFX_TARGET_SPIRV)) && fx->program_count && hfx_spirv_available()) {
+        if (!hfx_spirv_begin()) {
+            hfx_error(b->diags, (hfx_loc){0, 1, 1}, X_UNSUPPORTED, "SPIR-V: glslang could not start");
+        } else {
+            for (uint32_t i = 0; i < fx->program_count; i++) {
+                char *log = NULL;
+                if (hfx_spirv_program(fx, &fx->programs[i], &log) != 0) {
+                    char name[256];
+                    program_name(fx, i, name, sizeof name);
+                    hfx_error(b->diags, (hfx_loc){0, 1, 1}, X_UNSUPPORTED, "'%s': SPIR-V generation failed: %s", name,
+                              log ? log : "glslang gave no reason");
+                }
+                free(log);
+            }
+            hfx_spirv_end();
+        }
+    }
+    if (!(requested & (1u << HFX_TARGET_GLSL330)))
+        for (uint32_t i = 0; i < fx->program_count; i++)
+            for (int s = 0; s < HFX_STAGE_COUNT; s++) {
+                free(fx->programs[i].code[s][HFX_TARGET_GLSL330].data);
+                fx->programs[i].code[s][HFX_TARGET_GLSL330].data = NULL;
+                fx->programs[i].code[s][HFX_TARGET_GLSL330].size = 0;
+            }
+}
+
 /* Hands the effect over, or frees it when anything went wrong since `errors`. */
 static hfx_fx_effect *builder_finish(hfx_builder *b, bool ok, uint32_t errors) {
+    if (ok && !b->failed_alloc && b->diags->errors == errors) build_spirv(b, b->fx->targets);
     b->fx->targets = present_targets(b->fx);
     if (b->failed_alloc) hfx_error(b->diags, (hfx_loc){0, 0, 0}, X_UNSUPPORTED, "out of memory building the effect");
     builder_free(b);

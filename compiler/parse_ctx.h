@@ -1,6 +1,8 @@
 /* parse_ctx.h: the state parser.y shares with its helpers: the token cursor and the
  * type-name scopes of the lexer hack (parse_lex.c), growable vectors and the node
- * constructors the grammar actions call (parse_build.c). Everything lives in the arena. */
+ * constructors the grammar actions call (parse_expr.c, parse_decl.c). Everything lives in the
+ * arena. The pb_* functions each build one node kind from what a grammar rule matched; the
+ * loc they take is the node's (operator, first token, or name: see ast.h). */
 #ifndef HFX_PARSE_CTX_H
 #define HFX_PARSE_CTX_H
 
@@ -98,7 +100,8 @@ typedef struct parse_ctx {
 
 /* parse_lex.c */
 union YYSTYPE;
-bool parse_ctx_init(parse_ctx *ctx, hfx_arena *arena, hfx_diags *diags, hfx_types *types, hfx_token *tokens); /* false: out of memory */
+/* Starts a parse over `tokens`; false when out of memory. */
+bool parse_ctx_init(parse_ctx *ctx, hfx_arena *arena, hfx_diags *diags, hfx_types *types, hfx_token *tokens);
 hfx_ast *parse_ctx_finish(parse_ctx *ctx);                     /* the tree of the globals collected */
 int parse_lex(union YYSTYPE *lval, hfx_loc *lloc, parse_ctx *ctx); /* next Bison token */
 void parse_report_syntax(parse_ctx *ctx, bool at_eof, hfx_loc loc); /* X3000 at the lookahead */
@@ -106,12 +109,12 @@ void parse_report_failure(parse_ctx *ctx, hfx_loc loc, const char *msg); /* Biso
 void parse_fatal(parse_ctx *ctx, hfx_loc loc, const char *msg); /* reports once, then ends the token stream */
 parse_typename *parse_find_typename(parse_ctx *ctx, const char *name);
 
-/* parse_build.c: vectors */
+/* parse_expr.c: vectors (by value; push returns the grown vector) */
 parse_vec parse_vec_new(void);
 parse_vec parse_vec_one(parse_ctx *ctx, void *item);
 parse_vec parse_vec_push(parse_ctx *ctx, parse_vec v, void *item);
 
-/* parse_build.c: expressions */
+/* parse_expr.c: expressions */
 hfx_expr *pb_expr(parse_ctx *ctx, hfx_expr_kind kind, hfx_loc loc);
 hfx_expr *pb_int(parse_ctx *ctx, const char *text, hfx_loc loc);
 hfx_expr *pb_float(parse_ctx *ctx, const char *text, hfx_loc loc);
@@ -137,7 +140,7 @@ hfx_expr *pb_state_ref(parse_ctx *ctx, const char *name, hfx_loc loc);
 hfx_expr *pb_asm(parse_ctx *ctx, const char *text, hfx_loc loc);
 hfx_expr *pb_paren(hfx_expr *e);
 
-/* parse_build.c: types */
+/* parse_expr.c: type specifiers (array sizes folded when constant) */
 const hfx_type *pb_generic_vector(parse_ctx *ctx, const hfx_type *scalar, const char *n, hfx_loc loc);
 const hfx_type *pb_generic_matrix(parse_ctx *ctx, const hfx_type *scalar, const char *r, const char *c, hfx_loc loc);
 const hfx_type *pb_array_type(parse_ctx *ctx, const hfx_type *elem, parse_vec dims);
@@ -148,7 +151,7 @@ const hfx_type *pb_struct_ref(parse_ctx *ctx, const char *name, hfx_loc loc);
 parse_vec pb_fields(parse_ctx *ctx, parse_vec fields, parse_specs *specs, parse_vec declarators);
 parse_specs *pb_specs(parse_ctx *ctx, uint32_t mods, const hfx_type *type, hfx_loc loc);
 
-/* parse_build.c: declarations */
+/* parse_decl.c: declarations, one hfx_decl per declarator */
 parse_declarator *pb_declarator(parse_ctx *ctx, const char *name, hfx_loc loc);
 parse_declarator *pb_decl_dims(parse_ctx *ctx, parse_declarator *d, parse_vec dims);
 parse_declarator *pb_decl_semantic(parse_declarator *d, const char *semantic);
@@ -172,7 +175,7 @@ hfx_decl *pb_technique(parse_ctx *ctx, const char *keyword, const char *name, pa
 void pb_global(parse_ctx *ctx, hfx_decl *d);
 void pb_globals(parse_ctx *ctx, parse_vec decls);
 
-/* parse_build.c: statements */
+/* parse_decl.c: statements (depth-limited like expressions) */
 hfx_stmt *pb_stmt(parse_ctx *ctx, hfx_stmt_kind kind, hfx_loc loc);
 hfx_stmt *pb_block(parse_ctx *ctx, parse_vec stmts, hfx_loc loc);
 hfx_stmt *pb_decl_stmt(parse_ctx *ctx, parse_vec decls, hfx_loc loc);

@@ -314,7 +314,8 @@ static void track_state_blocks(parse_ctx *ctx, int code) {
     if (code == PASS || code == SAMPLER_STATE) ctx->state_block_next = true;
     uint32_t *top = ctx->state_block_count ? &ctx->state_blocks[ctx->state_block_count - 1] : NULL;
     if (code == '{') {
-        bool sampler_style = ctx->prev_code == IDENT && ctx->hist_code[0] == TYPE_NAME;
+        /* `sampler2D s {` or, with annotations, `sampler2D s <...> {` */
+        bool sampler_style = (ctx->prev_code == IDENT && ctx->hist_code[0] == TYPE_NAME) || ctx->prev_code == '>';
         /* `pass P <float3 v = {1,2,3};> {`: only the brace after the name or annotations opens it */
         bool after_head = ctx->prev_code == IDENT || ctx->prev_code == PASS || ctx->prev_code == SAMPLER_STATE ||
                           ctx->prev_code == '>';

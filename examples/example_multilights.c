@@ -61,12 +61,14 @@ int main(int argc, char **argv) {
         for (size_t i = 0; i < hfx_technique_pass_count(technique) && rc == 0; i++) {
             hfx_pass *pass = hfx_technique_pass(technique, i);
             ex_additive_blending(&app, i > 0); /* the lights add up on the ambient pass */
+            hfx_effect_begin(effect);              /* so the runtime sees the blending just set */
             if (hfx_pass_apply(pass) != HFX_OK) {
                 fprintf(stderr, "pass %s: %s\n", hfx_pass_name(pass), hfx_device_last_error(app.device));
                 rc = 1;
             } else {
                 ex_draw(&app, pass, &sphere);
             }
+            hfx_effect_end(effect);
         }
         ex_additive_blending(&app, 0);
         if (rc == 0) rc = ex_save_png(&app, argv[1]) == 0 ? 0 : 1;

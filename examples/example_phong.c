@@ -44,6 +44,7 @@ int main(int argc, char **argv) {
         ex_clear(&app, 0, 0, 0);
         hfx_technique *technique = hfx_effect_current_technique(effect);
         rc = 0;
+        hfx_effect_begin(effect);
         for (size_t i = 0; i < hfx_technique_pass_count(technique) && rc == 0; i++) {
             hfx_pass *pass = hfx_technique_pass(technique, i);
             if (hfx_pass_apply(pass) != HFX_OK) {
@@ -53,6 +54,7 @@ int main(int argc, char **argv) {
                 ex_draw(&app, pass, &sphere);
             }
         }
+        hfx_effect_end(effect);
         if (rc == 0) rc = ex_save_png(&app, argv[1]) == 0 ? 0 : 1;
     }
     hv_gpu_mesh_release(app.gl, &sphere);

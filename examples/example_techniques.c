@@ -14,7 +14,7 @@ static int draw_half(ex_app *app, hfx_effect *fx, const char *technique, int rig
     ex_camera(&half, hv_vec3_make(0, 0.8f, 2.8f), hv_vec3_make(0, 0, 0), view, projection);
     ex_set_matrix(fx, "View", view);
     ex_set_matrix(fx, "Projection", projection);
-    app->gl->Viewport(right ? app->width / 2 : 0, 0, app->width / 2, app->height);
+    hfx_device_set_viewport(app->device, right ? app->width / 2 : 0, 0, app->width / 2, app->height);
     hfx_technique *t = hfx_effect_technique(fx, technique);
     if (!t) {
         fprintf(stderr, "no technique %s\n", technique);

@@ -39,12 +39,15 @@ int main(int argc, char **argv) {
 
         ex_clear(&app, 100 / 255.0f, 149 / 255.0f, 237 / 255.0f); /* Color.CornflowerBlue */
         hfx_pass *pass = hfx_technique_pass(hfx_effect_current_technique(effect), 0);
+        hfx_effect_begin(effect);
         if (hfx_pass_apply(pass) == HFX_OK) {
             ex_draw(&app, pass, &quad);
-            rc = ex_save_png(&app, argv[1]) == 0 ? 0 : 1;
+            rc = 0;
         } else {
             fprintf(stderr, "Apply failed: %s\n", hfx_device_last_error(app.device));
         }
+        hfx_effect_end(effect);
+        if (rc == 0) rc = ex_save_png(&app, argv[1]) == 0 ? 0 : 1;
     }
     if (texture) app.gl->DeleteTextures(1, &texture);
     hv_gpu_mesh_release(app.gl, &quad);

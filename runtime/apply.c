@@ -109,10 +109,15 @@ int hfx_pass_apply(hfx_pass *p) {
     hfx_effect *fx = p->fx;
     const hfx_rt_pass *rp = &fx->sh->passes[p->index];
     if (rp->render_state_count) hfx_rs_apply(fx, rp); /* first: the alpha test reads these states */
+    hfx_rs_front_face(fx->dev);
     if (rp->program != HFX_NONE) {
         hfx_rt_program *prog = &fx->sh->programs[rp->program];
         hfx_rt_use_program(fx->dev, prog->object);
         hfx_rt_upload_uniforms(fx, prog);
+        if (prog->pos_fixup_loc >= 0 && memcmp(prog->pos_fixup, fx->dev->pos_fixup, sizeof prog->pos_fixup) != 0) {
+            memcpy(prog->pos_fixup, fx->dev->pos_fixup, sizeof prog->pos_fixup);
+            fx->dev->gl.Uniform4fv(prog->pos_fixup_loc, 1, prog->pos_fixup);
+        }
         if (prog->alpha_func_loc >= 0 || prog->alpha_ref_loc >= 0) hfx_rs_alpha_test(fx->dev, prog);
     }
     if (rp->binding_count) bind_textures(fx, rp);
@@ -132,6 +137,7 @@ int hfx_effect_begin(hfx_effect *fx) {
     hfx_saved *s = &fx->saved;
     hfx_rt_read_state(dev, &s->state);
     dev->state = s->state;
+    hfx_rt_read_target(dev);
     dev->gl.GetIntegerv(GL_CURRENT_PROGRAM, &s->program);
     dev->program = (GLuint)s->program;
     dev->gl.GetIntegerv(GL_ACTIVE_TEXTURE, &s->active_unit);

@@ -66,6 +66,37 @@ static void read_bindings(hfx_device *dev) {
     }
 }
 
+/* docs/conventions.md: D3D9 pixel centres sit half a pixel up-left of GL's; in a framebuffer
+ * object D3D9's first row is the top, so y flips there (and with it the front face). */
+static void compute_fixup(hfx_device *dev, GLint width, GLint height) {
+    if (width <= 0 || height <= 0) {
+        memset(dev->pos_fixup, 0, sizeof dev->pos_fixup);
+        return;
+    }
+    dev->pos_fixup[0] = 1.0f / (float)width;
+    dev->pos_fixup[1] = (dev->flip ? 1.0f : -1.0f) / (float)height;
+    dev->pos_fixup[2] = dev->flip ? 1.0f : 0.0f;
+    dev->pos_fixup[3] = (float)height;
+}
+
+/* Reads the viewport and the draw framebuffer, which the fixup follows. */
+void hfx_rt_read_target(hfx_device *dev) {
+    GLint vp[4] = {0}, fbo = 0;
+    dev->gl.GetIntegerv(GL_VIEWPORT, vp);
+    dev->gl.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
+    dev->flip = fbo != 0;
+    compute_fixup(dev, vp[2], vp[3]);
+}
+
+void hfx_device_set_viewport(hfx_device *dev, int x, int y, int width, int height) {
+    if (!dev) return;
+    dev->gl.Viewport(x, y, width, height);
+    GLint fbo = 0;
+    dev->gl.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
+    dev->flip = fbo != 0;
+    compute_fixup(dev, width, height);
+}
+
 hfx_device *hfx_device_create_gl(hfx_gl_loader load) {
     if (!load) return NULL;
     hfx_device *dev = calloc(1, sizeof *dev);
@@ -77,6 +108,7 @@ hfx_device *hfx_device_create_gl(hfx_gl_loader load) {
     while (dev->gl.GetError() != GL_NO_ERROR) {}
     read_caps(dev);
     read_bindings(dev);
+    hfx_rt_read_target(dev);
     hfx_rt_read_state(dev, &dev->state);
     hfx_rs_defaults(dev->rs);
     while (dev->gl.GetError() != GL_NO_ERROR) {}

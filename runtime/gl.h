@@ -79,7 +79,8 @@
     V(StencilOpSeparate, (GLenum face, GLenum sfail, GLenum dpfail, GLenum dppass), (face, sfail, dpfail, dppass)) \
     V(StencilMaskSeparate, (GLenum face, GLuint mask), (face, mask)) \
     V(PolygonOffset, (GLfloat factor, GLfloat units), (factor, units)) \
-    V(SampleMaski, (GLuint index, GLbitfield mask), (index, mask))
+    V(SampleMaski, (GLuint index, GLbitfield mask), (index, mask)) \
+    V(Viewport, (GLint x, GLint y, GLsizei width, GLsizei height), (x, y, width, height))
 
 #ifndef APIENTRYP
 #define APIENTRYP APIENTRY *

@@ -54,6 +54,8 @@ struct hfx_device {
     hfx_unit_state units[HFX_MAX_UNITS];
     hfx_glstate state;             /* shadow of GL */
     hfx_rs_value rs[HFX_ST_COUNT_];/* D3D render states as the passes set them */
+    float pos_fixup[4];            /* hfx_pos_fixup for the current viewport and target */
+    int flip;                      /* drawing into a framebuffer object: D3D9's row order */
     float depth_bias_scale;        /* DepthBias (0..1 depth units) to glPolygonOffset units */
     float max_anisotropy;          /* 0 without anisotropic filtering */
     int srgb_decode;               /* EXT_texture_sRGB_decode */
@@ -103,6 +105,8 @@ typedef struct hfx_rt_program {
     uint32_t *uniform_of;   /* per top-level parameter: index into uniforms, HFX_NONE if unread */
     uint64_t memo_effect;   /* the effect instance (id) whose change log this program follows */
     uint32_t memo_epoch, memo_seen;
+    GLint pos_fixup_loc;
+    float pos_fixup[4];     /* value GL holds */
     GLint alpha_func_loc, alpha_ref_loc;
     int32_t alpha_func;     /* values GL holds (-1: unknown) */
     float alpha_ref;
@@ -192,6 +196,7 @@ void hfx_rt_read_state(hfx_device *dev, hfx_glstate *s);
 void hfx_rt_write_state(hfx_device *dev, const hfx_glstate *want);
 void hfx_rt_bind_unit(hfx_device *dev, int unit, GLenum target, GLuint texture, GLuint sampler);
 void hfx_rt_use_program(hfx_device *dev, GLuint program);
+void hfx_rt_read_target(hfx_device *dev);
 
 /* program.c */
 int hfx_rt_program_build(hfx_shared *sh, uint32_t index, hfx_target target);
@@ -219,6 +224,7 @@ void hfx_rs_resolve(const hfx_effect *fx, const hfx_fx_state *st, hfx_rs_value *
 void hfx_rs_check(hfx_shared *sh, const hfx_fx_state *st, uint32_t program);
 void hfx_rs_apply(hfx_effect *fx, const hfx_rt_pass *pass);
 void hfx_rs_alpha_test(hfx_device *dev, hfx_rt_program *p);
+void hfx_rs_front_face(hfx_device *dev);
 
 /* params.c */
 void hfx_rt_param_changed(hfx_effect *fx, uint32_t root);

@@ -213,6 +213,8 @@ static void set_sampler_units(hfx_shared *sh, hfx_rt_program *p, const hfx_fx_pr
         GLint loc = gl->GetUniformLocation(p->object, fp->samplers[i].glsl_name);
         if (loc >= 0) gl->Uniform1i(loc, fp->samplers[i].unit);
     }
+    p->pos_fixup_loc = gl->GetUniformLocation(p->object, "hfx_pos_fixup");
+    memset(p->pos_fixup, 0, sizeof p->pos_fixup); /* GL's value for an unset uniform */
     p->alpha_func_loc = gl->GetUniformLocation(p->object, "hfx_alpha_func");
     p->alpha_ref_loc = gl->GetUniformLocation(p->object, "hfx_alpha_ref");
     p->alpha_func = -1;

@@ -5,7 +5,8 @@
  * Winding: the shaders keep D3D's clip space (no y flip), so a triangle looks the same on
  * screen in both APIs and D3D's "clockwise on screen" is GL's GL_CW in window coordinates.
  * D3D's front faces are clockwise, so the device sets glFrontFace(GL_CW) (which also keeps
- * gl_FrontFacing equal to D3D's VFACE) and CullMode = CCW culls GL_BACK. */
+ * gl_FrontFacing equal to D3D's VFACE) and CullMode = CCW culls GL_BACK. Drawing into a
+ * framebuffer object the shaders flip y (D3D9's row order, hfx_pos_fixup.z), so GL_CCW. */
 #include <string.h>
 
 #include "internal.h"
@@ -210,7 +211,7 @@ static void want_groups(const hfx_device *dev, uint32_t groups, hfx_glstate *w) 
     if (groups & G_CULL) {
         int32_t c = rs[HFX_ST_CULLMODE].i;
         w->cull = c == 2 || c == 3;
-        w->front_face = GL_CW;
+        w->front_face = dev->flip ? GL_CCW : GL_CW;
         if (w->cull) w->cull_face = c == 3 ? GL_BACK : GL_FRONT;
     }
     if (groups & G_FILL) {
@@ -261,6 +262,12 @@ void hfx_rs_apply(hfx_effect *fx, const hfx_rt_pass *pass) {
     hfx_glstate want = dev->state;
     want_groups(dev, groups, &want);
     hfx_rt_write_state(dev, &want);
+}
+
+/* D3D's front faces are clockwise; y flipped into a framebuffer object, GL sees them CCW. */
+void hfx_rs_front_face(hfx_device *dev) {
+    GLenum want = dev->flip ? GL_CCW : GL_CW;
+    if (dev->state.front_face != want) dev->gl.FrontFace(dev->state.front_face = want);
 }
 
 /* The codegen's alpha test: hfx_alpha_func is the D3DCMP value (ALWAYS when the test is off),

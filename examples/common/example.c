@@ -102,15 +102,19 @@ int ex_set_floats(hfx_effect *fx, const char *name, const float *v, size_t n) {
 
 int ex_draw_current_technique(ex_app *app, hfx_effect *fx, const hv_gpu_mesh *m) {
     hfx_technique *t = hfx_effect_current_technique(fx);
-    for (size_t i = 0; i < hfx_technique_pass_count(t); i++) {
+    int rc = 0;
+    hfx_effect_begin(fx); /* like ID3DXEffect::Begin: the GL state the passes change is saved */
+    for (size_t i = 0; i < hfx_technique_pass_count(t) && rc == 0; i++) {
         hfx_pass *pass = hfx_technique_pass(t, i);
         if (hfx_pass_apply(pass) != HFX_OK) {
             fprintf(stderr, "pass %zu of %s: %s\n", i, hfx_technique_name(t), hfx_device_last_error(app->device));
-            return -1;
+            rc = -1;
+        } else {
+            ex_draw(app, pass, m);
         }
-        ex_draw(app, pass, m);
     }
-    return 0;
+    hfx_effect_end(fx); /* ... and put back */
+    return rc;
 }
 
 void ex_additive_blending(ex_app *app, int on) {

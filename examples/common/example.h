@@ -37,8 +37,9 @@ void ex_clear(ex_app *app, float r, float g, float b);            /* GraphicsDev
 void ex_draw(ex_app *app, hfx_pass *pass, const hv_gpu_mesh *m);  /* DrawIndexedPrimitives */
 int ex_save_png(ex_app *app, const char *path);                   /* 0, or -1 after printing why */
 
-/* foreach (EffectPass pass in effect.CurrentTechnique.Passes) { pass.Apply(); Draw...; }
- * 0, or -1 after printing why a pass would not apply. */
+/* foreach (EffectPass pass in effect.CurrentTechnique.Passes) { pass.Apply(); Draw...; },
+ * between hfx_effect_begin and hfx_effect_end, which let the runtime see the state the
+ * application set and restore it afterwards. 0, or -1 after printing why a pass failed. */
 int ex_draw_current_technique(ex_app *app, hfx_effect *fx, const hv_gpu_mesh *m);
 
 /* GraphicsDevice.BlendState = BlendState.Additive (on) or BlendState.Opaque (off); additive

@@ -61,6 +61,8 @@ typedef struct hfx_load_options {
 hfx_device *hfx_device_create_gl(hfx_gl_loader load);            /* loads its own GL function table */
 void hfx_device_destroy(hfx_device *dev);                        /* effects must be destroyed first */
 const char *hfx_device_last_error(const hfx_device *dev);        /* message of the last failed call */
+/* glViewport, remembered for D3D9's pixel centres (hfx_pos_fixup); hfx_effect_begin also reads it. */
+void hfx_device_set_viewport(hfx_device *dev, int x, int y, int width, int height);
 void hfx_free(void *p);                                          /* frees strings hfx hands out */
 
 /* Effects. */

@@ -101,6 +101,7 @@ static void sampler_state_forms(void) {
                             "sampler a = sampler_state { Texture = <t>; MipFilter = LINEAR; };\n"
                             "sampler2D b = sampler_state { texture = (t); AddressU[0] = Clamp; BorderColor = 0xFF00FF; };\n"
                             "samplerCUBE c { Texture = <t>; };\n"
+                            "sampler2D f < string n = \"x\"; > { Texture = <t>; BorderColor = Texture; };\n"
                             "sampler d[2] = { sampler_state { Texture = <t>; }, sampler_state { } };\n"
                             "sampler e = sampler_state { };\n");
     CHECK_STR(r->errors, "");
@@ -108,6 +109,8 @@ static void sampler_state_forms(void) {
                        "var sampler a = sampler_state { Texture = <t>; MipFilter = LINEAR; }\n"
                        "var sampler2D b = sampler_state { texture = (t); AddressU[0] = Clamp; BorderColor = 16711935; }\n"
                        "var samplerCUBE c = sampler_state { Texture = <t>; }\n"
+                       "var sampler2D f = sampler_state { Texture = <t>; BorderColor = Texture; }\n"
+                       "  annotation string n = \"x\"\n"
                        "var sampler[2] d = {sampler_state { Texture = <t>; }, sampler_state { }}\n"
                        "var sampler e = sampler_state { }\n");
     hfx_decl *a = tp_find(r, "a");

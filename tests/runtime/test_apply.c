@@ -295,6 +295,82 @@ static void test_clones_share_programs(void) {
     hfx_effect_destroy(b);
 }
 
+static const char *const vs_fixup =
+    "#version 330\n"
+    "layout(location = 0) in vec2 POSITION0;\n"
+    "uniform vec4 hfx_pos_fixup;\n"
+    "void main() {\n"
+    "    gl_Position = vec4(POSITION0, 0.5, 1.0);\n"
+    "    gl_Position.y *= 1.0 - 2.0 * hfx_pos_fixup.z;\n"
+    "    gl_Position.xy += hfx_pos_fixup.xy * gl_Position.w;\n"
+    "}\n";
+
+static void read_fixup(float out[4]) {
+    GLuint prog = current_program();
+    g.GetUniformfv(prog, g.GetUniformLocation(prog, "hfx_pos_fixup"), out);
+}
+
+/* docs/conventions.md: (1/W, -1/H, 0, H) on the default framebuffer, (1/W, 1/H, 1, H) with the
+ * front face flipped in a framebuffer object. */
+static void test_pos_fixup_follows_viewport_and_target(void) {
+    hfx_fx_effect *cfx = tb_new();
+    uint32_t c = tb_param(cfx, "Color", "Color", HFX_CLASS_VECTOR, HFX_TYPE_FLOAT, 1, 4, 0, HFX_NONE, 0, 4);
+    uint32_t prog = tb_program(cfx, vs_fixup, tb_fs_color);
+    tb_uses(cfx, prog, c);
+    tb_technique(cfx, "T");
+    tb_pass(cfx, "P", prog, 0, 0);
+    hfx_effect *fx = load(cfx);
+    hfx_pass *pass = hfx_technique_pass(hfx_effect_current_technique(fx), 0);
+    float f[4];
+    CHECK_INT(hfx_effect_begin(fx), HFX_OK);
+    CHECK_INT(hfx_pass_apply(pass), HFX_OK);
+    read_fixup(f);
+    CHECK_NEAR(f[0], 1.0 / W, 0);
+    CHECK_NEAR(f[1], -1.0 / H, 0);
+    CHECK_NEAR(f[2], 0, 0);
+    CHECK_NEAR(f[3], H, 0);
+    GLint face = 0;
+    g.GetIntegerv(GL_FRONT_FACE, &face);
+    CHECK_INT(face, GL_CW);
+    hfx_device_set_viewport(dev, 0, 0, 8, 4);
+    CHECK_INT(hfx_pass_apply(pass), HFX_OK);
+    read_fixup(f);
+    CHECK_NEAR(f[0], 1.0 / 8, 0);
+    CHECK_NEAR(f[3], 4, 0);
+    GLint vp[4];
+    g.GetIntegerv(GL_VIEWPORT, vp);
+    CHECK_INT(vp[3], 4);
+    CHECK_INT(hfx_effect_end(fx), HFX_OK);
+    /* a framebuffer object: y flips to D3D9's row order, and the front face with it */
+    GLuint tex, fbo;
+    g.GenTextures(1, &tex);
+    g.BindTexture(GL_TEXTURE_2D, tex);
+    g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 4, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    g.BindTexture(GL_TEXTURE_2D, 0);
+    g.GenFramebuffers(1, &fbo);
+    g.BindFramebuffer(GL_FRAMEBUFFER, fbo);
+    g.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, 0);
+    g.Viewport(0, 0, 4, 2);
+    CHECK_INT(hfx_effect_begin(fx), HFX_OK);
+    CHECK_INT(hfx_pass_apply(pass), HFX_OK);
+    read_fixup(f);
+    CHECK_NEAR(f[0], 0.25, 0);
+    CHECK_NEAR(f[1], 0.5, 0);
+    CHECK_NEAR(f[2], 1, 0);
+    CHECK_NEAR(f[3], 2, 0);
+    g.GetIntegerv(GL_FRONT_FACE, &face);
+    CHECK_INT(face, GL_CCW);
+    CHECK_INT(hfx_effect_end(fx), HFX_OK);
+    g.GetIntegerv(GL_FRONT_FACE, &face);
+    CHECK_INT(face, GL_CW); /* what begin found */
+    g.BindFramebuffer(GL_FRAMEBUFFER, 0);
+    g.DeleteFramebuffers(1, &fbo);
+    g.DeleteTextures(1, &tex);
+    hfx_device_set_viewport(dev, 0, 0, W, H);
+    CHECK_INT(g.GetError(), GL_NO_ERROR);
+    hfx_effect_destroy(fx);
+}
+
 int main(void) {
     gl = test_gl_create(W, H);
     if (!gl) test_skip("no OSMesa context");
@@ -309,6 +385,7 @@ int main(void) {
     RUN(test_unchanged_apply_makes_no_gl_call);
     RUN(test_one_changed_float_of_fifty);
     RUN(test_clones_share_programs);
+    RUN(test_pos_fixup_follows_viewport_and_target);
     g.DeleteBuffers(1, &vbo);
     g.DeleteVertexArrays(1, &vao);
     hfx_device_destroy(dev);

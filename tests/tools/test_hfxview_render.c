@@ -29,8 +29,9 @@ static int render(const char *args, const char *png, view_png *img) {
 }
 
 #define FX HFX_SOURCE_DIR "/fx/"
-/* An odd size puts pixel 64's centre exactly on the image's centre. */
-#define FRONT "--camera eye=0,0,3,at=0,0,0 --size 129x129"
+/* D3D9 samples pixel (x, y) at integer coordinates: in a 128 x 128 image pixel 64 sits
+ * exactly on the centre (the runtime reproduces D3D9's pixel centres). */
+#define FRONT "--camera eye=0,0,3,at=0,0,0 --size 128x128"
 
 /* shading_models.fx, camera at (0,0,3): the centre pixel sees (0,0,1), N = V = (0,0,1). In
  * camera space the point is (0,0,-2) and the light (0,1.8,1.3) is at (0,1.8,-1.7), so
@@ -43,8 +44,8 @@ static void phong_and_blinn_phong_centre_pixels(void) {
         CHECK(0);
         return;
     }
-    CHECK_INT(img.width, 129);
-    CHECK_INT(img.height, 129);
+    CHECK_INT(img.width, 128);
+    CHECK_INT(img.height, 128);
     CHECK(view_pixel_near(&img, 64, 64, 80, 0, 0, 2));
     CHECK(view_pixel_near(&img, 1, 1, 100, 149, 237, 0)); /* CornflowerBlue */
     CHECK_INT(view_png_at(&img, 1, 1)[3], 255);
@@ -57,6 +58,17 @@ static void phong_and_blinn_phong_centre_pixels(void) {
     /* Gouraud: the centre is a vertex of the sphere (u = 0, v = 1/2), so it matches Phong there. */
     if (render(FX "shading_models.fx --technique Gouraud " FRONT, "gouraud.png", &img))
         CHECK(view_pixel_near(&img, 64, 64, 80, 0, 0, 3));
+    else
+        CHECK(0);
+    view_png_free(&img);
+}
+
+/* --light overrides the effect's own LightPosition: from (0,3,1) the light grazes the centre
+ * point (0,0,1) (L = (0,1,0), N.L = 0): only the ambient 0.2 red is left -> (51, 0, 0). */
+static void light_option_overrides_the_effect(void) {
+    view_png img;
+    if (render(FX "shading_models.fx --technique Phong --light position=0,3,1 " FRONT, "grazing.png", &img))
+        CHECK(view_pixel_near(&img, 64, 64, 51, 0, 0, 1));
     else
         CHECK(0);
     view_png_free(&img);
@@ -226,6 +238,7 @@ int main(void) {
     if (!hfxview) test_skip("hfxview is not built (it needs the runtime)");
     tmp = test_temp_dir();
     RUN(phong_and_blinn_phong_centre_pixels);
+    RUN(light_option_overrides_the_effect);
     RUN(default_texture_is_a_checker_top_left_first);
     RUN(set_overrides_initializers);
     RUN(texture_from_a_png);

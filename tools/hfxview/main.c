@@ -121,7 +121,7 @@ static int apply_options(viewer *v) {
 static int draw(viewer *v) {
     size_t failed = 0;
     hv_clear(v->gl, v->opt.width, v->opt.height, v->opt.background);
-    int rc = hv_draw_technique(v->gl, &v->gpu, v->technique, v->opt.pass, v->opt.blend_add, &failed);
+    int rc = hv_draw_technique(v->gl, &v->gpu, v->fx, v->technique, v->opt.pass, v->opt.blend_add, &failed);
     if (rc != HFX_OK) {
         fprintf(stderr, "%s: error: technique %s, pass %zu: %s\n", v->opt.input, hfx_technique_name(v->technique), failed,
                 hfx_device_last_error(v->dev));

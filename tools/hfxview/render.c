@@ -96,8 +96,11 @@ void hv_clear(const hv_gl *gl, int width, int height, const float rgba[4]) {
     gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
 }
 
-int hv_draw_technique(const hv_gl *gl, const hv_gpu_mesh *g, hfx_technique *t, int pass, int blend_add,
-                      size_t *failed_pass) {
+/* Each pass starts from XNA's defaults (plus additive blending when asked), which
+ * hfx_effect_begin reads so the runtime's view of GL matches what this file set directly;
+ * hfx_effect_end puts them back, so a pass's states do not leak into the next one. */
+int hv_draw_technique(const hv_gl *gl, const hv_gpu_mesh *g, hfx_effect *fx, hfx_technique *t, int pass,
+                      int blend_add, size_t *failed_pass) {
     size_t count = hfx_technique_pass_count(t);
     for (size_t i = 0; i < count; i++) {
         if (pass >= 0 && (size_t)pass != i) continue;
@@ -109,12 +112,14 @@ int hv_draw_technique(const hv_gl *gl, const hv_gpu_mesh *g, hfx_technique *t, i
             gl->BlendFunc(GL_ONE, GL_ONE);
             gl->DepthMask(GL_FALSE);
         }
+        hfx_effect_begin(fx);
         int rc = hfx_pass_apply(p);
+        if (rc == HFX_OK) hv_draw_mesh(gl, g, p);
+        hfx_effect_end(fx);
         if (rc != HFX_OK) {
             if (failed_pass) *failed_pass = i;
             return rc;
         }
-        hv_draw_mesh(gl, g, p);
     }
     gl->BindVertexArray(0);
     return HFX_OK;

@@ -30,8 +30,8 @@ void hv_clear(const hv_gl *gl, int width, int height, const float rgba[4]);
 
 /* Draws pass `pass` (-1: all in order) of technique t. blend_add: additive blending from the
  * second pass on. Returns HFX_OK or the first hfx error; *failed_pass says which. */
-int hv_draw_technique(const hv_gl *gl, const hv_gpu_mesh *g, hfx_technique *t, int pass, int blend_add,
-                      size_t *failed_pass);
+int hv_draw_technique(const hv_gl *gl, const hv_gpu_mesh *g, hfx_effect *fx, hfx_technique *t, int pass,
+                      int blend_add, size_t *failed_pass);
 
 /* The current colour buffer as an image, top row first. 0, or -1 on allocation failure. */
 int hv_read_image(const hv_gl *gl, int width, int height, hv_image *out);

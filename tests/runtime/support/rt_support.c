@@ -245,7 +245,8 @@ void tgl_load(tgl *g) {
     L(ClearColor); L(Clear); L(Viewport); L(GenVertexArrays); L(BindVertexArray); L(DeleteVertexArrays);
     L(GenBuffers); L(BindBuffer); L(BufferData); L(DeleteBuffers); L(VertexAttribPointer);
     L(EnableVertexAttribArray); L(DrawArrays); L(GenTextures); L(DeleteTextures); L(BindTexture);
-    L(ActiveTexture); L(TexImage2D); L(TexParameteri); L(GetSamplerParameteriv); L(GetSamplerParameterfv); L(GetIntegerv);
+    L(ActiveTexture); L(TexImage2D); L(TexParameteri); L(GenFramebuffers); L(BindFramebuffer); L(FramebufferTexture2D);
+    L(DeleteFramebuffers); L(GetSamplerParameteriv); L(GetSamplerParameterfv); L(GetIntegerv);
     L(GetIntegeri_v); L(GetFloatv); L(GetBooleani_v); L(IsEnabled); L(Enable); L(Disable); L(CullFace);
     L(UseProgram); L(GetUniformLocation); L(GetUniformfv); L(GetUniformiv); L(GetError); L(Finish);
 #undef L

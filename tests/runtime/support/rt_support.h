@@ -60,6 +60,10 @@ typedef struct tgl {
     void(APIENTRYP ActiveTexture)(GLenum);
     void(APIENTRYP TexImage2D)(GLenum, GLint, GLint, GLsizei, GLsizei, GLint, GLenum, GLenum, const void *);
     void(APIENTRYP TexParameteri)(GLenum, GLenum, GLint);
+    void(APIENTRYP GenFramebuffers)(GLsizei, GLuint *);
+    void(APIENTRYP BindFramebuffer)(GLenum, GLuint);
+    void(APIENTRYP FramebufferTexture2D)(GLenum, GLenum, GLenum, GLuint, GLint);
+    void(APIENTRYP DeleteFramebuffers)(GLsizei, const GLuint *);
     void(APIENTRYP GetSamplerParameteriv)(GLuint, GLenum, GLint *);
     void(APIENTRYP GetSamplerParameterfv)(GLuint, GLenum, GLfloat *);
     void(APIENTRYP GetIntegerv)(GLenum, GLint *);

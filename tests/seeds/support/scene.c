@@ -740,7 +740,8 @@ double seed_probe(seed_scene *s, const char *file, const char *label, const seed
     sample_ndc(s, x, y, !s->d3d9_centres, &nx, &ny);
     if (pick_at(s, obj, 1, nx, ny, &other) < 0) return report_probe(s, file, label, x, y, e, NULL);
     rgba e2 = shade(&other, user);
-    return report_probe(s, file, label, x, y, e, &e2);
+    (void)e2;
+    return report_probe(s, file, label, x, y, e, NULL);
 }
 
 void seed_pixel_of(const seed_scene *s, v3 world, int *x, int *y) {
@@ -764,6 +765,6 @@ void seed_save_png(seed_scene *s, const char *name) {
 
 void seed_report(const seed_scene *s) {
     for (int i = 0; i < s->file_count; i++)
-        printf("seed-acceptance: %-24s probes %3d  max difference %.2f/255\n", s->files[i].file,
+        printf("seed-acceptance: %-34s probes %3d  max difference %.2f/255\n", s->files[i].file,
                s->files[i].probes, s->files[i].max_diff);
 }

@@ -1,0 +1,489 @@
+/* spirv.c: the SPIR-V target. See spirv.h; the rules are in docs/conventions.md ("SPIR-V"). */
+#include "spirv.h"
+
+#include <ctype.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#ifdef HFX_HAVE_GLSLANG
+#include <glslang/Include/glslang_c_interface.h>
+#include <glslang/Public/resource_limits_c.h>
+#endif
+
+/* --- uniform locations ---------------------------------------------------------------------- */
+
+/* Locations a parameter takes in GL's default uniform block: one per scalar, vector, matrix or
+ * sampler, array elements and struct members one after the other. Saturates. */
+static uint64_t param_locations(const hfx_fx_effect *fx, uint32_t i, int depth) {
+    if (i >= fx->param_count || depth > 64) return 0;
+    const hfx_fx_param *p = &fx->params[i];
+    if (p->elements) {
+        uint64_t each = p->child_count ? param_locations(fx, p->first_child, depth + 1) : 1;
+        return each * p->elements;
+    }
+    if (p->klass == HFX_CLASS_STRUCT) {
+        uint64_t n = 0;
+        for (uint32_t c = 0; c < p->child_count; c++) n += param_locations(fx, p->first_child + c, depth + 1);
+        return n;
+    }
+    return 1;
+}
+
+static bool is_uniform_param(const hfx_fx_param *p) { return p->glsl_name != NULL; }
+
+int32_t hfx_spirv_param_location(const hfx_fx_effect *fx, uint32_t param) {
+    if (!fx || param >= fx->top_param_count || !is_uniform_param(&fx->params[param])) return -1;
+    uint64_t loc = 0;
+    for (uint32_t i = 0; i < param; i++)
+        if (is_uniform_param(&fx->params[i])) loc += param_locations(fx, i, 0);
+    return loc > INT32_MAX ? -1 : (int32_t)loc;
+}
+
+/* The first location after every parameter's: where the code generator's own uniforms go. */
+static uint64_t internal_base(const hfx_fx_effect *fx) {
+    uint64_t loc = 0;
+    for (uint32_t i = 0; i < fx->top_param_count; i++)
+        if (is_uniform_param(&fx->params[i])) loc += param_locations(fx, i, 0);
+    return loc;
+}
+
+/* --- scanning the GLSL's top-level uniform declarations -------------------------------------- */
+
+typedef struct uniform_decl {
+    const char *line, *end;        /* the declaration's line, without its newline */
+    const char *type; size_t type_len;
+    const char *name; size_t name_len;
+    const char *rest;              /* after the name: array sizes and ';' */
+} uniform_decl;
+
+static bool ident_start(char c) { return isalpha((unsigned char)c) || c == '_'; }
+static bool ident_char(char c) { return isalnum((unsigned char)c) || c == '_'; }
+
+/* Parses `uniform TYPE NAME...;` (no layout, no block) on one line. */
+static bool parse_uniform(const char *s, const char *end, uniform_decl *u) {
+    if ((size_t)(end - s) < 8 || strncmp(s, "uniform", 7) != 0 || (s[7] != ' ' && s[7] != '\t')) return false;
+    if (memchr(s, '{', (size_t)(end - s))) return false;
+    const char *q = s + 7;
+    while (q < end && (*q == ' ' || *q == '\t')) q++;
+    if (q >= end || !ident_start(*q)) return false;
+    u->type = q;
+    while (q < end && ident_char(*q)) q++;
+    u->type_len = (size_t)(q - u->type);
+    while (q < end && (*q == ' ' || *q == '\t')) q++;
+    if (q >= end || !ident_start(*q)) return false;
+    u->name = q;
+    while (q < end && ident_char(*q)) q++;
+    u->name_len = (size_t)(q - u->name);
+    u->rest = q;
+    u->line = s;
+    u->end = end;
+    return true;
+}
+
+typedef void (*uniform_fn)(void *ctx, const uniform_decl *u, const char *line, const char *next);
+
+/* Calls fn for every line of src: u is set for a top-level uniform declaration, else NULL. */
+static void scan_lines(const char *src, uniform_fn fn, void *ctx) {
+    int depth = 0;
+    bool in_comment = false;
+    for (const char *line = src; *line;) {
+        const char *end = strchr(line, '\n');
+        if (!end) end = line + strlen(line);
+        const char *next = *end ? end + 1 : end;
+        uniform_decl u;
+        bool is_uniform = depth == 0 && !in_comment && parse_uniform(line, end, &u);
+        fn(ctx, is_uniform ? &u : NULL, line, next);
+        for (const char *c = line; c < end; c++) {
+            if (in_comment) {
+                if (c[0] == '*' && c + 1 < end && c[1] == '/') in_comment = false, c++;
+            } else if (c[0] == '/' && c + 1 < end && c[1] == '/') {
+                break;
+            } else if (c[0] == '/' && c + 1 < end && c[1] == '*') {
+                in_comment = true;
+                c++;
+            } else if (*c == '{') {
+                depth++;
+            } else if (*c == '}' && depth > 0) {
+                depth--;
+            }
+        }
+        line = next;
+    }
+}
+
+/* --- the code generator's own uniforms (hfx_pos_fixup...) ------------------------------------ */
+
+enum { MAX_INTERNAL = 64 };
+
+typedef struct internal_set {
+    const char *names[MAX_INTERNAL];
+    size_t lens[MAX_INTERNAL];
+    uint32_t count;
+    const hfx_fx_effect *fx;
+} internal_set;
+
+static uint32_t find_param(const hfx_fx_effect *fx, const char *name, size_t len) {
+    for (uint32_t i = 0; i < fx->top_param_count; i++) {
+        const char *g = fx->params[i].glsl_name;
+        if (g && strlen(g) == len && strncmp(g, name, len) == 0) return i;
+    }
+    return HFX_NONE;
+}
+
+static int32_t find_sampler_unit(const hfx_fx_program *p, const char *name, size_t len) {
+    for (uint32_t i = 0; i < p->sampler_count; i++) {
+        const char *g = p->samplers[i].glsl_name;
+        if (g && strlen(g) == len && strncmp(g, name, len) == 0) return p->samplers[i].unit;
+    }
+    return -1;
+}
+
+/* Known ones come first, at fixed places, so every program agrees on them. */
+static const char *const known_internal[] = {"hfx_pos_fixup", "hfx_alpha_func", "hfx_alpha_ref"};
+enum { KNOWN_INTERNAL = sizeof known_internal / sizeof *known_internal };
+
+static int64_t internal_index(const internal_set *s, const char *name, size_t len) {
+    for (uint32_t i = 0; i < KNOWN_INTERNAL; i++)
+        if (strlen(known_internal[i]) == len && strncmp(known_internal[i], name, len) == 0) return i;
+    for (uint32_t i = 0; i < s->count; i++)
+        if (s->lens[i] == len && strncmp(s->names[i], name, len) == 0) return KNOWN_INTERNAL + i;
+    return -1;
+}
+
+static void collect_internal(void *ctx, const uniform_decl *u, const char *line, const char *next) {
+    internal_set *s = ctx;
+    (void)line, (void)next;
+    if (!u || find_param(s->fx, u->name, u->name_len) != HFX_NONE) return;
+    if (internal_index(s, u->name, u->name_len) >= 0 || s->count == MAX_INTERNAL) return;
+    s->names[s->count] = u->name;
+    s->lens[s->count++] = u->name_len;
+}
+
+/* --- the rewrite ------------------------------------------------------------------------------ */
+
+typedef struct sbuf {
+    char *data;
+    size_t len, cap;
+    bool failed;
+} sbuf;
+
+static void sb_add(sbuf *b, const char *s, size_t n) {
+    if (b->failed) return;
+    if (b->len + n + 1 > b->cap) {
+        size_t cap = b->cap ? b->cap : 1024;
+        while (cap < b->len + n + 1) cap *= 2;
+        char *d = realloc(b->data, cap);
+        if (!d) {
+            b->failed = true;
+            return;
+        }
+        b->data = d;
+        b->cap = cap;
+    }
+    memcpy(b->data + b->len, s, n);
+    b->len += n;
+    b->data[b->len] = 0;
+}
+
+static void sb_printf(sbuf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static void sb_printf(sbuf *b, const char *fmt, ...) {
+    char tmp[512];
+    va_list ap;
+    va_start(ap, fmt);
+    int n = vsnprintf(tmp, sizeof tmp, fmt, ap);
+    va_end(ap);
+    if (n < 0 || (size_t)n >= sizeof tmp) {
+        b->failed = true;
+        return;
+    }
+    sb_add(b, tmp, (size_t)n);
+}
+
+typedef struct rewrite {
+    sbuf out;
+    const hfx_fx_effect *fx;
+    const hfx_fx_program *prog;
+    const internal_set *internal;
+    const char *src;
+    uint64_t base;
+} rewrite;
+
+/* Would a macro named `name`, defined at `from`, break anything after it? It would in a field
+ * access (`x.name`) or a declaration (`bool name`, a local or a parameter shadowing it). */
+static bool macro_unsafe(const char *from, const char *name, size_t len) {
+    for (const char *p = strchr(from, name[0]); p; p = strchr(p + 1, name[0])) {
+        if (strncmp(p, name, len) != 0) continue;
+        if (ident_char(p[len]) || (p > from && ident_char(p[-1]))) continue; /* not the whole word */
+        const char *q = p;
+        while (q > from && (q[-1] == ' ' || q[-1] == '\t' || q[-1] == '\n')) q--;
+        if (q > from && q[-1] == '.') return true;
+        if (q > from && ident_char(q[-1])) {
+            const char *w = q;
+            while (w > from && ident_char(w[-1])) w--;
+            size_t n = (size_t)(q - w);
+            if (!(n == 6 && strncmp(w, "return", 6) == 0) && !(n == 4 && strncmp(w, "else", 4) == 0)) return true;
+        }
+    }
+    return false;
+}
+
+/* SPIR-V has no bool in externally visible storage (spirv-val rejects a bool UniformConstant):
+ * a non-array bool / bvecN uniform is declared int / ivecN and read through a macro of its
+ * own name (a macro does not expand itself again). Returns the vector size, 0 if not that case. */
+static int bool_uniform(const rewrite *r, const uniform_decl *u) {
+    if (memchr(u->rest, '[', (size_t)(u->end - u->rest))) return 0;
+    int n = 0;
+    if (u->type_len == 4 && strncmp(u->type, "bool", 4) == 0) n = 1;
+    else if (u->type_len == 5 && strncmp(u->type, "bvec", 4) == 0 && u->type[4] >= '2' && u->type[4] <= '4')
+        n = u->type[4] - '0';
+    if (!n || macro_unsafe(u->end, u->name, u->name_len)) return 0;
+    return n;
+}
+
+static void rewrite_line(void *ctx, const uniform_decl *u, const char *line, const char *next) {
+    rewrite *r = ctx;
+    if (line == r->src && strncmp(line, "#version ", 9) == 0) {
+        sb_printf(&r->out, "#version 450 core\n");
+        return;
+    }
+    if (!u) {
+        sb_add(&r->out, line, (size_t)(next - line));
+        return;
+    }
+    int64_t loc = -1;
+    uint32_t param = find_param(r->fx, u->name, u->name_len);
+    if (param != HFX_NONE) {
+        loc = hfx_spirv_param_location(r->fx, param);
+    } else {
+        int64_t k = internal_index(r->internal, u->name, u->name_len);
+        if (k >= 0) loc = (int64_t)r->base + k;
+    }
+    int32_t unit = find_sampler_unit(r->prog, u->name, u->name_len);
+    if (loc < 0 && unit < 0) { /* not ours to place: glslang's auto-mapping does it */
+        sb_add(&r->out, line, (size_t)(next - line));
+        return;
+    }
+    sb_add(&r->out, "layout(", 7);
+    if (loc >= 0) sb_printf(&r->out, "location = %lld", (long long)loc);
+    if (unit >= 0) sb_printf(&r->out, "%sbinding = %d", loc >= 0 ? ", " : "", (int)unit);
+    sb_add(&r->out, ") ", 2);
+    int bools = bool_uniform(r, u);
+    if (!bools) {
+        sb_add(&r->out, u->line, (size_t)(next - u->line));
+        return;
+    }
+    sb_add(&r->out, "uniform ", 8);
+    sb_add(&r->out, bools == 1 ? "int" : "ivec", bools == 1 ? 3 : 4);
+    if (bools > 1) sb_printf(&r->out, "%d", bools);
+    sb_add(&r->out, " ", 1);
+    sb_add(&r->out, u->name, (size_t)(u->end - u->name));
+    sb_add(&r->out, "\n#define ", 9);
+    sb_add(&r->out, u->name, u->name_len);
+    if (bools == 1) {
+        sb_add(&r->out, " (", 2);
+        sb_add(&r->out, u->name, u->name_len);
+        sb_add(&r->out, " != 0)\n", 7);
+    } else {
+        sb_printf(&r->out, " bvec%d(", bools);
+        sb_add(&r->out, u->name, u->name_len);
+        sb_add(&r->out, ")\n", 2);
+    }
+}
+
+static void collect_all_internal(const hfx_fx_effect *fx, const hfx_fx_program *p, internal_set *s) {
+    memset(s, 0, sizeof *s);
+    s->fx = fx;
+    for (int st = 0; st < HFX_STAGE_COUNT; st++)
+        if (p->code[st][HFX_TARGET_GLSL330].data) scan_lines(p->code[st][HFX_TARGET_GLSL330].data, collect_internal, s);
+}
+
+char *hfx_spirv_glsl(const hfx_fx_effect *fx, const hfx_fx_program *p, int stage) {
+    if (!fx || !p || stage < 0 || stage >= HFX_STAGE_COUNT || !p->code[stage][HFX_TARGET_GLSL330].data) return NULL;
+    internal_set s;
+    collect_all_internal(fx, p, &s);
+    rewrite r;
+    memset(&r, 0, sizeof r);
+    r.fx = fx;
+    r.prog = p;
+    r.internal = &s;
+    r.src = p->code[stage][HFX_TARGET_GLSL330].data;
+    r.base = internal_base(fx);
+    scan_lines(r.src, rewrite_line, &r);
+    if (r.out.failed || !r.out.data) {
+        free(r.out.data);
+        return NULL;
+    }
+    return r.out.data;
+}
+
+/* --- reflection ------------------------------------------------------------------------------- */
+
+enum { OP_NAME = 5, OP_DECORATE = 71, DEC_BINDING = 33, DEC_LOCATION = 30 };
+
+int hfx_spirv_find(const uint32_t *words, size_t count, const char *name, int32_t *location, int32_t *binding) {
+    if (location) *location = -1;
+    if (binding) *binding = -1;
+    if (!words || count < 5 || words[0] != HFX_SPIRV_MAGIC || !name) return -1;
+    size_t len = strlen(name);
+    uint32_t id = 0;
+    for (size_t i = 5; i < count;) { /* OpName first: it precedes every decoration */
+        uint32_t n = words[i] >> 16, op = words[i] & 0xffffu;
+        if (n == 0 || i + n > count) return -1;
+        if (op == OP_NAME && n >= 3) {
+            const char *s = (const char *)&words[i + 2];
+            size_t max = (n - 2) * 4;
+            if (len < max && memcmp(s, name, len) == 0 && s[len] == 0) {
+                id = words[i + 1];
+                break;
+            }
+        }
+        i += n;
+    }
+    if (!id) return 0;
+    for (size_t i = 5; i < count;) {
+        uint32_t n = words[i] >> 16, op = words[i] & 0xffffu;
+        if (n == 0 || i + n > count) return -1;
+        if (op == OP_DECORATE && n >= 4 && words[i + 1] == id) {
+            if (words[i + 2] == DEC_LOCATION && location) *location = (int32_t)words[i + 3];
+            if (words[i + 2] == DEC_BINDING && binding) *binding = (int32_t)words[i + 3];
+        }
+        i += n;
+    }
+    return 1;
+}
+
+/* --- glslang ------------------------------------------------------------------------------------ */
+
+static char *append_log(char *log, const char *what, const char *more) {
+    if (!more || !*more) return log;
+    size_t a = log ? strlen(log) : 0, w = strlen(what), b = strlen(more);
+    char *p = realloc(log, a + w + b + 2);
+    if (!p) return log;
+    memcpy(p + a, what, w);
+    memcpy(p + a + w, more, b + 1);
+    if (b && more[b - 1] != '\n') memcpy(p + a + w + b, "\n", 2);
+    return p;
+}
+
+#ifdef HFX_HAVE_GLSLANG
+
+bool hfx_spirv_available(void) { return true; }
+bool hfx_spirv_begin(void) { return glslang_initialize_process() != 0; }
+void hfx_spirv_end(void) { glslang_finalize_process(); }
+
+static const glslang_stage_t stages[HFX_STAGE_COUNT] = {GLSLANG_STAGE_VERTEX, GLSLANG_STAGE_FRAGMENT};
+static const char *const stage_names[HFX_STAGE_COUNT] = {"vertex", "fragment"};
+
+#define MESSAGES GLSLANG_MSG_SPV_RULES_BIT
+
+static glslang_shader_t *compile_stage(const char *src, int stage, char **log) {
+    glslang_input_t in;
+    memset(&in, 0, sizeof in);
+    in.language = GLSLANG_SOURCE_GLSL;
+    in.stage = stages[stage];
+    in.client = GLSLANG_CLIENT_OPENGL;
+    in.client_version = GLSLANG_TARGET_OPENGL_450;
+    in.target_language = GLSLANG_TARGET_SPV;
+    in.target_language_version = GLSLANG_TARGET_SPV_1_0;
+    in.code = src;
+    in.default_version = 450;
+    in.default_profile = GLSLANG_CORE_PROFILE;
+    in.messages = MESSAGES;
+    in.resource = glslang_default_resource();
+    glslang_shader_t *sh = glslang_shader_create(&in);
+    if (!sh) return NULL;
+    /* Varyings carry no location in the GLSL: glslang gives them matching ones when linking.
+     * Bindings are not auto-mapped: samplers have theirs (the texture unit), and a binding on
+     * a loose non-opaque uniform means nothing to OpenGL. */
+    glslang_shader_set_options(sh, GLSLANG_SHADER_AUTO_MAP_LOCATIONS);
+    if (!glslang_shader_preprocess(sh, &in) || !glslang_shader_parse(sh, &in)) {
+        char what[64];
+        snprintf(what, sizeof what, "%s shader: ", stage_names[stage]);
+        *log = append_log(*log, what, glslang_shader_get_info_log(sh));
+        *log = append_log(*log, what, glslang_shader_get_info_debug_log(sh));
+        glslang_shader_delete(sh);
+        return NULL;
+    }
+    return sh;
+}
+
+int hfx_spirv_program(const hfx_fx_effect *fx, hfx_fx_program *p, char **log) {
+    if (log) *log = NULL;
+    char *dummy = NULL, **lg = log ? log : &dummy;
+    glslang_shader_t *sh[HFX_STAGE_COUNT] = {NULL, NULL};
+    glslang_program_t *prog = glslang_program_create();
+    int rc = prog ? 0 : -1, stages_in = 0;
+    for (int s = 0; s < HFX_STAGE_COUNT && rc == 0; s++) {
+        if (!p->code[s][HFX_TARGET_GLSL330].data) continue;
+        char *src = hfx_spirv_glsl(fx, p, s);
+        if (!src) {
+            *lg = append_log(*lg, "", "out of memory rewriting the GLSL for SPIR-V");
+            rc = -1;
+            break;
+        }
+        sh[s] = compile_stage(src, s, lg);
+        free(src);
+        if (!sh[s]) rc = -1;
+        else glslang_program_add_shader(prog, sh[s]), stages_in++;
+    }
+    if (rc == 0 && !stages_in) {
+        *lg = append_log(*lg, "", "the program has no GLSL 330 to compile");
+        rc = -1;
+    }
+    if (rc == 0 && (!glslang_program_link(prog, MESSAGES) || !glslang_program_map_io(prog))) {
+        *lg = append_log(*lg, "link: ", glslang_program_get_info_log(prog));
+        *lg = append_log(*lg, "link: ", glslang_program_get_info_debug_log(prog));
+        rc = -1;
+    }
+    for (int s = 0; s < HFX_STAGE_COUNT && rc == 0; s++) {
+        if (!sh[s]) continue;
+        /* glslang 12 appends each stage's module to the program's words: take the new tail. */
+        size_t before = glslang_program_SPIRV_get_size(prog);
+        glslang_program_SPIRV_generate(prog, stages[s]);
+        *lg = append_log(*lg, "spirv: ", glslang_program_SPIRV_get_messages(prog));
+        size_t words = glslang_program_SPIRV_get_size(prog);
+        const unsigned *w = glslang_program_SPIRV_get_ptr(prog);
+        if (w && before && words > before && w[before] == HFX_SPIRV_MAGIC) {
+            w += before;
+            words -= before;
+        }
+        char *data = words && w ? malloc(words * 4 + 1) : NULL; /* +1: code stays NUL-terminated */
+        if (!data) {
+            *lg = append_log(*lg, "", "SPIR-V generation failed");
+            rc = -1;
+            break;
+        }
+        memcpy(data, w, words * 4);
+        data[words * 4] = 0;
+        free(p->code[s][HFX_TARGET_SPIRV].data);
+        p->code[s][HFX_TARGET_SPIRV].data = data;
+        p->code[s][HFX_TARGET_SPIRV].size = words * 4;
+    }
+    if (prog) glslang_program_delete(prog);
+    for (int s = 0; s < HFX_STAGE_COUNT; s++)
+        if (sh[s]) glslang_shader_delete(sh[s]);
+    if (rc != 0)
+        for (int s = 0; s < HFX_STAGE_COUNT; s++) {
+            free(p->code[s][HFX_TARGET_SPIRV].data);
+            p->code[s][HFX_TARGET_SPIRV].data = NULL;
+            p->code[s][HFX_TARGET_SPIRV].size = 0;
+        }
+    free(dummy);
+    return rc;
+}
+
+#else /* built without glslang */
+
+bool hfx_spirv_available(void) { return false; }
+bool hfx_spirv_begin(void) { return false; }
+void hfx_spirv_end(void) {}
+
+int hfx_spirv_program(const hfx_fx_effect *fx, hfx_fx_program *p, char **log) {
+    (void)fx, (void)p;
+    if (log) *log = append_log(NULL, "", "hfx was built without glslang: no SPIR-V");
+    return -1;
+}
+
+#endif
