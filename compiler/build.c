@@ -409,6 +409,21 @@ static void program_name(const hfx_fx_effect *fx, uint32_t i, char *out, size_t 
         }
 }
 
+/* A uniform holding a bool inside (a struct with bool members) stays bool in the SPIR-V, which
+ * strict validators reject: worth a warning, once per name. */
+static void warn_bool_uniforms(hfx_builder *b, const hfx_fx_program *p) {
+    char names[2][128] = {"", ""};
+    for (int s = 0; s < HFX_STAGE_COUNT; s++) {
+        const hfx_fx_code *c = &p->code[s][HFX_TARGET_SPIRV];
+        if (!c->data || hfx_spirv_bool_uniform((const uint32_t *)(const void *)c->data, c->size / 4, names[s],
+                                               sizeof names[s]) != 1)
+            continue;
+        if (s == 1 && strcmp(names[0], names[1]) == 0) continue;
+        hfx_warning(b->diags, (hfx_loc){0, 1, 1}, X_UNSUPPORTED,
+                    "'%s': a uniform with bool members stays bool in SPIR-V, which spirv-val rejects", names[s]);
+    }
+}
+
 /* HFX_TARGET_SPIRV: every program's GLSL 330 through glslang (spirv.c); the GLSL 330 goes
  * again unless it was asked for too. Without glslang nothing is made (hfxc says so). */
 static void build_spirv(hfx_builder *b, unsigned requested) {
@@ -426,6 +441,7 @@ static void build_spirv(hfx_builder *b, unsigned requested) {
                               log ? log : "glslang gave no reason");
                 }
                 free(log);
+                warn_bool_uniforms(b, &fx->programs[i]);
             }
             hfx_spirv_end();
         }

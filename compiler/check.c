@@ -217,65 +217,101 @@ static void check_undefined(check_ctx *c) {
     }
 }
 
-/* The index of f in the function table (appended when new); -1 when out of memory. */
-static int32_t func_index(hfx_func ***table, uint32_t *n, hfx_func *f) {
-    for (uint32_t i = 0; i < *n; i++)
-        if ((*table)[i] == f) return (int32_t)i;
-    hfx_func **t = realloc(*table, sizeof *t * (*n + 1));
-    if (!t) return -1;
-    *table = t;
-    t[*n] = f;
-    return (int32_t)(*n)++;
+/* The call graph in compressed rows: node i calls dst[first[i] .. first[i + 1]). Nodes are
+ * function definitions, found through a pointer hash (no field in hfx_func to number them). */
+typedef struct call_graph {
+    hfx_func **keys; uint32_t *ids; uint32_t cap;  /* open addressing, cap a power of two */
+    uint32_t nodes;
+    uint32_t *first, *dst, *edge;                  /* edge: the index in c->edges of each dst */
+} call_graph;
+
+static uint32_t node_of(call_graph *g, hfx_func *f) {
+    uint32_t h = (uint32_t)(((uintptr_t)f >> 4) * 2654435761u) & (g->cap - 1);
+    while (g->keys[h] && g->keys[h] != f) h = (h + 1) & (g->cap - 1);
+    if (!g->keys[h]) {
+        g->keys[h] = f;
+        g->ids[h] = g->nodes++;
+    }
+    return g->ids[h];
 }
 
-/* Marks in `seen` every function reachable from `from` through one or more calls. */
-static void reach_from(const uint32_t *src, const uint32_t *dst, uint32_t ne, uint32_t from, unsigned char *seen,
-                       uint32_t *stack) {
-    uint32_t top = 0;
-    stack[top++] = from;
-    while (top) {
-        uint32_t f = stack[--top];
-        for (uint32_t i = 0; i < ne; i++)
-            if (src[i] == f && !seen[dst[i]]) {
-                seen[dst[i]] = 1;
-                stack[top++] = dst[i];
+static bool build_graph(check_ctx *c, call_graph *g, uint32_t *src, uint32_t *to) {
+    uint32_t ne = c->edge_count;
+    g->cap = 16;
+    while (g->cap < ne * 4 + 16) g->cap *= 2;
+    g->keys = calloc(g->cap, sizeof *g->keys);
+    g->ids = calloc(g->cap, sizeof *g->ids);
+    g->first = calloc(ne * 2 + 2, sizeof *g->first);
+    g->dst = malloc(sizeof *g->dst * (ne + 1));
+    g->edge = malloc(sizeof *g->edge * (ne + 1));
+    if (!g->keys || !g->ids || !g->first || !g->dst || !g->edge) return false;
+    for (uint32_t i = 0; i < ne; i++) {
+        src[i] = c->edges[i].from ? node_of(g, defined(c->edges[i].from)) : UINT32_MAX;
+        to[i] = node_of(g, defined(c->edges[i].to));
+        if (src[i] != UINT32_MAX) g->first[src[i] + 1]++;
+    }
+    for (uint32_t i = 0; i < g->nodes; i++) g->first[i + 1] += g->first[i];
+    uint32_t *fill = calloc(g->nodes + 1, sizeof *fill);
+    if (!fill) return false;
+    for (uint32_t i = 0; i < ne; i++) {
+        if (src[i] == UINT32_MAX) continue;
+        uint32_t k = g->first[src[i]] + fill[src[i]]++;
+        g->dst[k] = to[i];
+        g->edge[k] = i;
+    }
+    free(fill);
+    return true;
+}
+
+/* Depth-first search from every node; a call to a function still on the stack closes a
+ * cycle and is reported (once per calling function). O(functions + calls). */
+static void find_cycles(check_ctx *c, const call_graph *g) {
+    enum { WHITE, GREY, BLACK };
+    unsigned char *color = calloc(g->nodes + 1, 1), *reported = calloc(g->nodes + 1, 1);
+    uint32_t *stack = malloc(sizeof *stack * (g->nodes + 1)), *cursor = malloc(sizeof *cursor * (g->nodes + 1));
+    for (uint32_t root = 0; color && reported && stack && cursor && root < g->nodes; root++) {
+        if (color[root] != WHITE) continue;
+        uint32_t top = 0;
+        stack[top++] = root;
+        cursor[root] = g->first[root];
+        color[root] = GREY;
+        while (top) {
+            uint32_t n = stack[top - 1];
+            if (cursor[n] == g->first[n + 1]) {
+                color[n] = BLACK;
+                top--;
+                continue;
             }
-    }
-}
-
-/* Reports, once per function, a call that leads back to the caller. */
-static void check_recursion(check_ctx *c) {
-    uint32_t ne = c->edge_count, nf = 0;
-    hfx_func **funcs = NULL;
-    uint32_t *src = malloc(sizeof *src * (ne + 1)), *dst = malloc(sizeof *dst * (ne + 1));
-    bool ok = src && dst;
-    for (uint32_t i = 0; ok && i < ne; i++) {
-        if (!c->edges[i].from) { /* a compile or a global initializer: no caller */
-            src[i] = dst[i] = UINT32_MAX;
-            continue;
+            uint32_t k = cursor[n]++, m = g->dst[k];
+            if (color[m] == GREY && !reported[n]) {
+                const check_edge *e = &c->edges[g->edge[k]];
+                reported[n] = 1;
+                hfx_error(c->diags, e->loc, X_RECURSION, "'%s': recursive function calls are not allowed", e->to->name);
+            } else if (color[m] == WHITE) {
+                color[m] = GREY;
+                cursor[m] = g->first[m];
+                stack[top++] = m;
+            }
         }
-        int32_t a = func_index(&funcs, &nf, defined(c->edges[i].from));
-        int32_t b = func_index(&funcs, &nf, defined(c->edges[i].to));
-        ok = a >= 0 && b >= 0;
-        if (ok) src[i] = (uint32_t)a, dst[i] = (uint32_t)b;
     }
-    unsigned char *seen = ok ? calloc(nf + 1, 1) : NULL, *reported = ok ? calloc(nf + 1, 1) : NULL;
-    uint32_t *stack = ok ? malloc(sizeof *stack * (nf * 2 + ne + 1)) : NULL;
-    for (uint32_t i = 0; seen && reported && stack && i < ne; i++) {
-        if (src[i] == UINT32_MAX || reported[src[i]]) continue;
-        memset(seen, 0, nf);
-        reach_from(src, dst, ne, dst[i], seen, stack);
-        if (dst[i] != src[i] && !seen[src[i]]) continue;
-        reported[src[i]] = 1;
-        hfx_error(c->diags, c->edges[i].loc, X_RECURSION, "'%s': recursive function calls are not allowed",
-                  c->edges[i].to->name);
-    }
-    free(funcs);
-    free(src);
-    free(dst);
-    free(seen);
+    free(color);
     free(reported);
     free(stack);
+    free(cursor);
+}
+
+static void check_recursion(check_ctx *c) {
+    call_graph g;
+    memset(&g, 0, sizeof g);
+    uint32_t *src = malloc(sizeof *src * (c->edge_count + 1)), *to = malloc(sizeof *to * (c->edge_count + 1));
+    if (src && to && build_graph(c, &g, src, to)) find_cycles(c, &g);
+    free(src);
+    free(to);
+    free(g.keys);
+    free(g.ids);
+    free(g.first);
+    free(g.dst);
+    free(g.edge);
 }
 
 /* ---- top-level declarations ---- */

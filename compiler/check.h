@@ -31,7 +31,13 @@
  * - state values (passes, sampler_state): names that are no variable are EX_IDENT with sym NULL
  *   and void type (CLAMP, None...), operators over them are void too; names that are variables
  *   resolve (Texture = (tex)); EX_STATE_REF always resolves;
- * - no recursion (X3500), no call of a function without a body (X3501). */
+ * - technique10 passes: `CompileShader(vs_4_0, VS(args))` is rewritten to an EX_COMPILE (loc at
+ *   the entry's name); other unknown calls in state values (SetVertexShader(...),
+ *   SetBlendState(...)) keep their state-checked arguments and take the first one's type;
+ * - no recursion (X3500), no call of a function without a body (X3501).
+ * Diagnostics point at the start of the offending expression (a binary operator's left
+ * operand, an assignment's right-hand side); a truncated argument warns at the call, naming
+ * the function ("'dot': implicit truncation of vector type"), as fxc does. */
 #ifndef HFX_CHECK_H
 #define HFX_CHECK_H
 

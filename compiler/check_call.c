@@ -108,6 +108,19 @@ static const hfx_type *call_intrinsic(check_ctx *c, hfx_expr *e, int id) {
     return set_type(e, m.ret);
 }
 
+/* A user function named like an intrinsic competes with it: the intrinsic wins only when it
+ * matches strictly better (saturate(float) against a user saturate(float3)). */
+static bool intrinsic_beats(check_ctx *c, int id, const hfx_func *f, const hfx_expr *e) {
+    const hfx_type *args[4] = {0};
+    unsigned user[4], intr[4];
+    hfx_intrinsic_match m;
+    if (e->arg_count > 4) return false;
+    for (uint32_t i = 0; i < e->arg_count; i++) args[i] = e->args[i]->type;
+    if (!hfx_intrinsic_match_args(c->types, id, args, e->arg_count, &m) || !candidate_costs(f, e, user)) return false;
+    for (uint32_t i = 0; i < e->arg_count; i++) intr[i] = hfx_conv_cost(hfx_conv_classify(args[i], m.params[i], false));
+    return dominates(intr, user, e->arg_count);
+}
+
 /* technique10/11 pass syntax: `SetVertexShader(CompileShader(vs_4_0, VS(1)))`. CompileShader
  * becomes an EX_COMPILE like `compile vs_4_0 VS(1)`; Set*Shader and Set*State calls keep
  * their (state-checked) arguments for the builder and take the type of the first one. */
@@ -143,7 +156,8 @@ const hfx_type *ck_call(check_ctx *c, hfx_expr *e) {
     if (n) {
         hfx_decl *best = NULL;
         int r = pick_overload(cands, n, e, &best);
-        if (r == 1) return call_user(c, e, best);
+        if (r == 1 && !(id >= 0 && intrinsic_beats(c, id, best->func, e))) return call_user(c, e, best);
+        if (r == 1) return call_intrinsic(c, e, id);
         if (r == 2) {
             hfx_error(c->diags, e->loc, X_AMBIGUOUS, "'%s': ambiguous function call", e->name);
             return set_type(e, c->err);

@@ -26,7 +26,8 @@ enum {
     X_BAD_JUMP = 3518,           /* break/continue outside a loop */
     X_RECURSION = 3500,          /* recursive calls */
     X_UNDEFINED = 3501,          /* entrypoint not found / declared but not defined */
-    X_LOOP_VAR_CONFLICT = 3078   /* warning: a for-init variable hides an earlier one */
+    X_LOOP_VAR_CONFLICT = 3078,  /* warning: a for-init variable hides an earlier one */
+    X_SIGNED_UNSIGNED = 3203     /* warning: signed/unsigned mismatch, unsigned assumed */
 };
 
 /* A call from a function body (or a compile, from == NULL) to a user function. */

@@ -163,6 +163,13 @@ static bool require_numeric(check_ctx *c, hfx_expr *operand) {
     return false;
 }
 
+/* int with uint where neither is a literal (literals take the other side's type quietly). */
+static bool signed_unsigned_mix(const hfx_expr *a, const hfx_expr *b) {
+    hfx_base x = a->type->base, y = b->type->base;
+    bool mix = (x == B_INT && y == B_UINT) || (x == B_UINT && y == B_INT);
+    return mix && a->kind != EX_INT && b->kind != EX_INT;
+}
+
 /* The operand type both sides of a binary operator convert to; NULL after an error. */
 static const hfx_type *binary_operand_type(check_ctx *c, hfx_expr *e, hfx_op op, hfx_expr *a, hfx_expr *b) {
     if (!require_numeric(c, a) || !require_numeric(c, b)) return NULL;
@@ -184,6 +191,8 @@ static const hfx_type *binary_operand_type(check_ctx *c, hfx_expr *e, hfx_op op,
         return NULL;
     }
     if (trunc) hfx_warning(c->diags, ck_start(e), X_IMPLICIT_TRUNCATION, "implicit truncation of vector type");
+    if (signed_unsigned_mix(a, b) && op != OP_SHL && op != OP_SHR && op != OP_AND && op != OP_OR)
+        hfx_warning(c->diags, ck_start(e), X_SIGNED_UNSIGNED, "signed/unsigned mismatch, unsigned assumed");
     return t;
 }
 

@@ -29,6 +29,7 @@ typedef struct parse_typename {
     const hfx_type *type;     /* a typedef's type is filled when the parser reduces it */
     uint32_t depth;           /* brace depth it was declared at */
     hfx_struct *st;           /* structs: the object the definition fills */
+    uint32_t mods;            /* typedefs: `typedef row_major float4x4 M;` carries row_major */
 } parse_typename;
 
 /* The semantic value of every token. */
@@ -85,6 +86,7 @@ typedef struct parse_ctx {
     uint32_t state_blocks[4]; /* brace depths of the open pass / sampler_state blocks (nested) */
     uint32_t state_block_count;
     bool state_block_next;    /* the next '{' opens one */
+    bool technique_next;      /* the next '{' opens a technique body (not a state block) */
     int typedef_depth;        /* brace depth of an open `typedef`, -1 when none */
     uint32_t typedef_parens;  /* ( [ < inside that typedef */
     bool fatal;               /* nesting too deep: stop reporting */
@@ -93,6 +95,8 @@ typedef struct parse_ctx {
     parse_vec globals;
     hfx_struct *pending_struct; /* the struct body just parsed, for the next parse_specs */
     uint32_t pack_mods;         /* MOD_ROW_MAJOR / MOD_COLUMN_MAJOR from #pragma pack_matrix, or 0 */
+    const hfx_type *last_type;  /* the type pb_typename just made, and its typedef's modifiers, */
+    uint32_t last_type_mods;    /* which the decl_specs built from it inherit */
     parse_expr_node *oom_expr;  /* handed out when the arena fails, so actions never see NULL */
     parse_stmt_node *oom_stmt;
     parse_specs *oom_specs;

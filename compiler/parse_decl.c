@@ -111,7 +111,10 @@ parse_vec pb_typedefs(parse_ctx *ctx, parse_specs *specs, parse_vec declarators)
         hfx_decl *d = dt ? var_decl(ctx, DECL_TYPEDEF, specs, dt) : NULL;
         if (!d) continue;
         parse_typename *e = parse_find_typename(ctx, d->name);
-        if (e && !e->type && !e->st) e->type = d->type;
+        if (e && !e->type && !e->st) {
+            e->type = d->type;
+            e->mods = d->mods;
+        }
         out = parse_vec_push(ctx, out, d);
     }
     return out;

@@ -210,12 +210,14 @@ hfx_expr *pb_method(parse_ctx *ctx, hfx_expr *obj, const char *name, parse_vec a
 }
 
 hfx_expr *pb_construct(parse_ctx *ctx, const hfx_type *type, parse_vec args, hfx_loc loc) {
+    ctx->last_type = NULL;
     hfx_expr *e = pb_expr(ctx, EX_CONSTRUCT, loc);
     e->cast_type = type;
     return with_vec(ctx, e, args);
 }
 
 hfx_expr *pb_cast(parse_ctx *ctx, const hfx_type *type, hfx_expr *a, hfx_loc loc) {
+    ctx->last_type = NULL;
     hfx_expr *e = pb_expr(ctx, EX_CAST, loc);
     e->cast_type = type;
     return with_args(ctx, e, a, NULL, NULL);
@@ -288,11 +290,13 @@ static hfx_base generic_base(parse_ctx *ctx, const hfx_type *scalar, hfx_loc loc
 }
 
 const hfx_type *pb_generic_vector(parse_ctx *ctx, const hfx_type *scalar, const char *n, hfx_loc loc) {
+    ctx->last_type = NULL;
     if (!n) return hfx_type_vector(ctx->types, B_FLOAT, 4);
     return hfx_type_vector(ctx->types, generic_base(ctx, scalar, loc), dimension(ctx, n, loc));
 }
 
 const hfx_type *pb_generic_matrix(parse_ctx *ctx, const hfx_type *scalar, const char *r, const char *c, hfx_loc loc) {
+    ctx->last_type = NULL;
     if (!r) return hfx_type_matrix(ctx->types, B_FLOAT, 4, 4);
     hfx_base b = generic_base(ctx, scalar, loc);
     return hfx_type_matrix(ctx->types, b, dimension(ctx, r, loc), dimension(ctx, c, loc));
@@ -300,6 +304,8 @@ const hfx_type *pb_generic_matrix(parse_ctx *ctx, const hfx_type *scalar, const 
 
 const hfx_type *pb_typename(parse_ctx *ctx, const parse_tok *t, hfx_loc loc) {
     const hfx_type *ty = t->entry ? t->entry->type : t->type;
+    ctx->last_type = ty;
+    ctx->last_type_mods = t->entry ? t->entry->mods : 0;
     if (ty) return ty;
     hfx_error(ctx->diags, loc, X_SYNTAX, "'%s': type used in its own definition", t->text);
     return hfx_type_scalar(ctx->types, B_FLOAT);
@@ -384,6 +390,8 @@ const hfx_type *pb_array_type(parse_ctx *ctx, const hfx_type *elem, parse_vec di
 parse_specs *pb_specs(parse_ctx *ctx, uint32_t mods, const hfx_type *type, hfx_loc loc) {
     parse_specs *s = HFX_NEW(ctx->arena, parse_specs);
     if (!s) return ctx->oom_specs;
+    if (type && type == ctx->last_type) mods |= ctx->last_type_mods;
+    ctx->last_type = NULL;
     s->mods = mods;
     s->type = type;
     s->loc = loc;
@@ -413,6 +421,7 @@ static hfx_struct *struct_object(parse_ctx *ctx, const char *name, hfx_loc loc, 
 }
 
 const hfx_type *pb_struct(parse_ctx *ctx, const char *name, parse_vec fields, hfx_loc loc) {
+    ctx->last_type = NULL;
     const hfx_type *type = NULL;
     hfx_struct *st = struct_object(ctx, name, loc, &type);
     if (!st) return hfx_type_scalar(ctx->types, B_FLOAT);
@@ -426,6 +435,7 @@ const hfx_type *pb_struct(parse_ctx *ctx, const char *name, parse_vec fields, hf
 }
 
 const hfx_type *pb_struct_ref(parse_ctx *ctx, const char *name, hfx_loc loc) {
+    ctx->last_type = NULL;
     const hfx_type *type = NULL;
     (void)struct_object(ctx, name, loc, &type);
     return type ? type : hfx_type_scalar(ctx->types, B_FLOAT);

@@ -312,13 +312,18 @@ static bool closes(int code) { return code == ')' || code == ']' || code == '}';
  * identifiers in a row are no unknown type: the syntax error message depends on it. */
 static void track_state_blocks(parse_ctx *ctx, int code) {
     if (code == PASS || code == SAMPLER_STATE) ctx->state_block_next = true;
+    if (code == TECHNIQUE) ctx->technique_next = true;
     uint32_t *top = ctx->state_block_count ? &ctx->state_blocks[ctx->state_block_count - 1] : NULL;
     if (code == '{') {
-        /* `sampler2D s {` or, with annotations, `sampler2D s <...> {` */
-        bool sampler_style = (ctx->prev_code == IDENT && ctx->hist_code[0] == TYPE_NAME) || ctx->prev_code == '>';
         /* `pass P <float3 v = {1,2,3};> {`: only the brace after the name or annotations opens it */
         bool after_head = ctx->prev_code == IDENT || ctx->prev_code == PASS || ctx->prev_code == SAMPLER_STATE ||
-                          ctx->prev_code == '>';
+                          ctx->prev_code == TECHNIQUE || ctx->prev_code == '>';
+        if (ctx->technique_next && after_head) { /* a technique's body holds passes, not states */
+            ctx->technique_next = false;
+            return;
+        }
+        /* `sampler2D s {` or, with annotations, `sampler2D s <...> {` */
+        bool sampler_style = (ctx->prev_code == IDENT && ctx->hist_code[0] == TYPE_NAME) || ctx->prev_code == '>';
         bool opens_block = (ctx->state_block_next && after_head) || sampler_style;
         if (opens_block && ctx->state_block_count < 4) ctx->state_blocks[ctx->state_block_count++] = ctx->brace_depth;
         if (opens_block) ctx->state_block_next = false;

@@ -31,22 +31,55 @@ static uint64_t param_locations(const hfx_fx_effect *fx, uint32_t i, int depth) 
     return 1;
 }
 
-static bool is_uniform_param(const hfx_fx_param *p) { return p->glsl_name != NULL; }
-
-int32_t hfx_spirv_param_location(const hfx_fx_effect *fx, uint32_t param) {
-    if (!fx || param >= fx->top_param_count || !is_uniform_param(&fx->params[param])) return -1;
-    uint64_t loc = 0;
-    for (uint32_t i = 0; i < param; i++)
-        if (is_uniform_param(&fx->params[i])) loc += param_locations(fx, i, 0);
-    return loc > INT32_MAX ? -1 : (int32_t)loc;
+/* The program's uniform parameter reading GLSL name `name` (len bytes): its index in p->uniforms,
+ * and its location in *loc (the locations of the uniforms before it). -1 when none. */
+static int64_t program_uniform(const hfx_fx_effect *fx, const hfx_fx_program *p, const char *name, size_t len,
+                               uint64_t *loc) {
+    uint64_t at = 0;
+    for (uint32_t k = 0; k < p->uniform_count; k++) {
+        uint32_t param = p->uniforms[k].param;
+        if (param >= fx->param_count) continue;
+        const char *g = fx->params[param].glsl_name;
+        if (g && strlen(g) == len && strncmp(g, name, len) == 0) {
+            *loc = at;
+            return k;
+        }
+        at += param_locations(fx, param, 0);
+    }
+    *loc = at; /* the end of the uniforms: where the samplers start */
+    return -1;
 }
 
-/* The first location after every parameter's: where the code generator's own uniforms go. */
-static uint64_t internal_base(const hfx_fx_effect *fx) {
-    uint64_t loc = 0;
-    for (uint32_t i = 0; i < fx->top_param_count; i++)
-        if (is_uniform_param(&fx->params[i])) loc += param_locations(fx, i, 0);
-    return loc;
+static int64_t program_sampler(const hfx_fx_program *p, const char *name, size_t len) {
+    for (uint32_t k = 0; k < p->sampler_count; k++) {
+        const char *g = p->samplers[k].glsl_name;
+        if (g && strlen(g) == len && strncmp(g, name, len) == 0) return k;
+    }
+    return -1;
+}
+
+/* Known internal uniforms come first after the samplers, at fixed places. */
+static const char *const known_internal[] = {"hfx_pos_fixup", "hfx_alpha_func", "hfx_alpha_ref"};
+enum { KNOWN_INTERNAL = sizeof known_internal / sizeof *known_internal };
+
+static int64_t known_index(const char *name, size_t len) {
+    for (uint32_t i = 0; i < KNOWN_INTERNAL; i++)
+        if (strlen(known_internal[i]) == len && strncmp(known_internal[i], name, len) == 0) return i;
+    return -1;
+}
+
+int32_t hfx_spirv_location(const hfx_fx_effect *fx, const hfx_fx_program *p, const char *glsl_name) {
+    if (!fx || !p || !glsl_name) return -1;
+    size_t len = strlen(glsl_name);
+    uint64_t loc;
+    int64_t k = program_uniform(fx, p, glsl_name, len, &loc);
+    if (k < 0) {
+        int64_t smp = program_sampler(p, glsl_name, len), known = known_index(glsl_name, len);
+        if (smp >= 0) loc += (uint64_t)smp;
+        else if (known >= 0) loc += p->sampler_count + (uint64_t)known;
+        else return -1;
+    }
+    return loc > INT32_MAX ? -1 : (int32_t)loc;
 }
 
 /* --- scanning the GLSL's top-level uniform declarations -------------------------------------- */
@@ -113,50 +146,34 @@ static void scan_lines(const char *src, uniform_fn fn, void *ctx) {
     }
 }
 
-/* --- the code generator's own uniforms (hfx_pos_fixup...) ------------------------------------ */
+/* --- the code generator's own uniforms (hfx_pos_fixup...) and any other ------------------------ */
 
-enum { MAX_INTERNAL = 64 };
+enum { MAX_OTHER = 64 };
 
-typedef struct internal_set {
-    const char *names[MAX_INTERNAL];
-    size_t lens[MAX_INTERNAL];
+/* Uniforms that are neither the program's parameters nor its samplers nor known internal ones,
+ * in order of first appearance (vertex shader first): they follow the known ones. */
+typedef struct other_set {
+    const char *names[MAX_OTHER];
+    size_t lens[MAX_OTHER];
     uint32_t count;
     const hfx_fx_effect *fx;
-} internal_set;
+    const hfx_fx_program *prog;
+} other_set;
 
-static uint32_t find_param(const hfx_fx_effect *fx, const char *name, size_t len) {
-    for (uint32_t i = 0; i < fx->top_param_count; i++) {
-        const char *g = fx->params[i].glsl_name;
-        if (g && strlen(g) == len && strncmp(g, name, len) == 0) return i;
-    }
-    return HFX_NONE;
-}
-
-static int32_t find_sampler_unit(const hfx_fx_program *p, const char *name, size_t len) {
-    for (uint32_t i = 0; i < p->sampler_count; i++) {
-        const char *g = p->samplers[i].glsl_name;
-        if (g && strlen(g) == len && strncmp(g, name, len) == 0) return p->samplers[i].unit;
-    }
-    return -1;
-}
-
-/* Known ones come first, at fixed places, so every program agrees on them. */
-static const char *const known_internal[] = {"hfx_pos_fixup", "hfx_alpha_func", "hfx_alpha_ref"};
-enum { KNOWN_INTERNAL = sizeof known_internal / sizeof *known_internal };
-
-static int64_t internal_index(const internal_set *s, const char *name, size_t len) {
-    for (uint32_t i = 0; i < KNOWN_INTERNAL; i++)
-        if (strlen(known_internal[i]) == len && strncmp(known_internal[i], name, len) == 0) return i;
+static int64_t other_index(const other_set *s, const char *name, size_t len) {
     for (uint32_t i = 0; i < s->count; i++)
-        if (s->lens[i] == len && strncmp(s->names[i], name, len) == 0) return KNOWN_INTERNAL + i;
+        if (s->lens[i] == len && strncmp(s->names[i], name, len) == 0) return i;
     return -1;
 }
 
-static void collect_internal(void *ctx, const uniform_decl *u, const char *line, const char *next) {
-    internal_set *s = ctx;
+static void collect_other(void *ctx, const uniform_decl *u, const char *line, const char *next) {
+    other_set *s = ctx;
+    uint64_t loc;
     (void)line, (void)next;
-    if (!u || find_param(s->fx, u->name, u->name_len) != HFX_NONE) return;
-    if (internal_index(s, u->name, u->name_len) >= 0 || s->count == MAX_INTERNAL) return;
+    if (!u || program_uniform(s->fx, s->prog, u->name, u->name_len, &loc) >= 0 ||
+        program_sampler(s->prog, u->name, u->name_len) >= 0 || known_index(u->name, u->name_len) >= 0)
+        return;
+    if (other_index(s, u->name, u->name_len) >= 0 || s->count == MAX_OTHER) return;
     s->names[s->count] = u->name;
     s->lens[s->count++] = u->name_len;
 }
@@ -189,25 +206,28 @@ static void sb_add(sbuf *b, const char *s, size_t n) {
 
 static void sb_printf(sbuf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 static void sb_printf(sbuf *b, const char *fmt, ...) {
-    char tmp[512];
     va_list ap;
     va_start(ap, fmt);
-    int n = vsnprintf(tmp, sizeof tmp, fmt, ap);
+    int n = vsnprintf(NULL, 0, fmt, ap);
     va_end(ap);
-    if (n < 0 || (size_t)n >= sizeof tmp) {
+    char *tmp = n >= 0 ? malloc((size_t)n + 1) : NULL;
+    if (!tmp) {
         b->failed = true;
         return;
     }
+    va_start(ap, fmt);
+    vsnprintf(tmp, (size_t)n + 1, fmt, ap);
+    va_end(ap);
     sb_add(b, tmp, (size_t)n);
+    free(tmp);
 }
 
 typedef struct rewrite {
     sbuf out;
     const hfx_fx_effect *fx;
     const hfx_fx_program *prog;
-    const internal_set *internal;
+    const other_set *other;
     const char *src;
-    uint64_t base;
 } rewrite;
 
 /* Would a macro named `name`, defined at `from`, break anything after it? It would in a field
@@ -229,17 +249,47 @@ static bool macro_unsafe(const char *from, const char *name, size_t len) {
     return false;
 }
 
-/* SPIR-V has no bool in externally visible storage (spirv-val rejects a bool UniformConstant):
- * a non-array bool / bvecN uniform is declared int / ivecN and read through a macro of its
- * own name (a macro does not expand itself again). Returns the vector size, 0 if not that case. */
-static int bool_uniform(const rewrite *r, const uniform_decl *u) {
-    if (memchr(u->rest, '[', (size_t)(u->end - u->rest))) return 0;
+/* SPIR-V has no bool in externally visible storage (spirv-val rejects a bool UniformConstant).
+ * A bool / bvecN uniform, or a one-dimensional array of them, is declared int / ivecN under its
+ * own name and read through a macro of that name (a macro does not expand itself again): a
+ * conversion for one value, a function building the bool array for an array. Returns the vector
+ * size (1 for bool), 0 when the uniform is not such a case; *elements gets the array length. */
+static int bool_uniform(const uniform_decl *u, unsigned long *elements) {
     int n = 0;
     if (u->type_len == 4 && strncmp(u->type, "bool", 4) == 0) n = 1;
     else if (u->type_len == 5 && strncmp(u->type, "bvec", 4) == 0 && u->type[4] >= '2' && u->type[4] <= '4')
         n = u->type[4] - '0';
-    if (!n || macro_unsafe(u->end, u->name, u->name_len)) return 0;
+    if (!n) return 0;
+    *elements = 0;
+    const char *q = u->rest;
+    if (*q == '[') {
+        char *end;
+        *elements = strtoul(q + 1, &end, 10);
+        if (end == q + 1 || *end != ']' || !*elements || *elements > 65536) return 0;
+        q = end + 1;
+    }
+    if (*q != ';' || macro_unsafe(u->end, u->name, u->name_len)) return 0;
     return n;
+}
+
+static void write_bool_uniform(sbuf *out, const uniform_decl *u, int n, unsigned long elements) {
+    int len = (int)u->name_len;
+    const char *name = u->name;
+    char btype[8], itype[8];
+    snprintf(btype, sizeof btype, n == 1 ? "bool" : "bvec%d", n);
+    snprintf(itype, sizeof itype, n == 1 ? "int" : "ivec%d", n);
+    if (!elements) {
+        sb_printf(out, "uniform %s %.*s;\n", itype, len, name);
+        if (n == 1) sb_printf(out, "#define %.*s (%.*s != 0)\n", len, name, len, name);
+        else sb_printf(out, "#define %.*s %s(%.*s)\n", len, name, btype, len, name);
+        return;
+    }
+    sb_printf(out, "uniform %s %.*s[%lu];\n", itype, len, name, elements);
+    sb_printf(out, "%s[%lu] hfx_bools_%.*s() { %s r[%lu]; for (int i = 0; i < %lu; i++) r[i] = ", btype, elements, len,
+              name, btype, elements, elements);
+    if (n == 1) sb_printf(out, "%.*s[i] != 0;", len, name);
+    else sb_printf(out, "%s(%.*s[i]);", btype, len, name);
+    sb_printf(out, " return r; }\n#define %.*s hfx_bools_%.*s()\n", len, name, len, name);
 }
 
 static void rewrite_line(void *ctx, const uniform_decl *u, const char *line, const char *next) {
@@ -252,64 +302,48 @@ static void rewrite_line(void *ctx, const uniform_decl *u, const char *line, con
         sb_add(&r->out, line, (size_t)(next - line));
         return;
     }
-    int64_t loc = -1;
-    uint32_t param = find_param(r->fx, u->name, u->name_len);
-    if (param != HFX_NONE) {
-        loc = hfx_spirv_param_location(r->fx, param);
-    } else {
-        int64_t k = internal_index(r->internal, u->name, u->name_len);
-        if (k >= 0) loc = (int64_t)r->base + k;
+    /* Uniforms, then samplers, then the known internal ones, then any other: see spirv.h. */
+    uint64_t end;
+    int64_t loc = -1, k = program_uniform(r->fx, r->prog, u->name, u->name_len, &end), unit = -1;
+    if (k >= 0) {
+        loc = (int64_t)end;
+    } else if ((k = program_sampler(r->prog, u->name, u->name_len)) >= 0) {
+        loc = (int64_t)end + k;
+        unit = r->prog->samplers[k].unit;
+    } else if ((k = known_index(u->name, u->name_len)) >= 0) {
+        loc = (int64_t)(end + r->prog->sampler_count) + k;
+    } else if ((k = other_index(r->other, u->name, u->name_len)) >= 0) {
+        loc = (int64_t)(end + r->prog->sampler_count + KNOWN_INTERNAL) + k;
     }
-    int32_t unit = find_sampler_unit(r->prog, u->name, u->name_len);
+    if (loc > INT32_MAX) loc = -1;
     if (loc < 0 && unit < 0) { /* not ours to place: glslang's auto-mapping does it */
         sb_add(&r->out, line, (size_t)(next - line));
         return;
     }
     sb_add(&r->out, "layout(", 7);
     if (loc >= 0) sb_printf(&r->out, "location = %lld", (long long)loc);
-    if (unit >= 0) sb_printf(&r->out, "%sbinding = %d", loc >= 0 ? ", " : "", (int)unit);
+    if (unit >= 0) sb_printf(&r->out, "%sbinding = %lld", loc >= 0 ? ", " : "", (long long)unit);
     sb_add(&r->out, ") ", 2);
-    int bools = bool_uniform(r, u);
-    if (!bools) {
-        sb_add(&r->out, u->line, (size_t)(next - u->line));
-        return;
-    }
-    sb_add(&r->out, "uniform ", 8);
-    sb_add(&r->out, bools == 1 ? "int" : "ivec", bools == 1 ? 3 : 4);
-    if (bools > 1) sb_printf(&r->out, "%d", bools);
-    sb_add(&r->out, " ", 1);
-    sb_add(&r->out, u->name, (size_t)(u->end - u->name));
-    sb_add(&r->out, "\n#define ", 9);
-    sb_add(&r->out, u->name, u->name_len);
-    if (bools == 1) {
-        sb_add(&r->out, " (", 2);
-        sb_add(&r->out, u->name, u->name_len);
-        sb_add(&r->out, " != 0)\n", 7);
-    } else {
-        sb_printf(&r->out, " bvec%d(", bools);
-        sb_add(&r->out, u->name, u->name_len);
-        sb_add(&r->out, ")\n", 2);
-    }
-}
-
-static void collect_all_internal(const hfx_fx_effect *fx, const hfx_fx_program *p, internal_set *s) {
-    memset(s, 0, sizeof *s);
-    s->fx = fx;
-    for (int st = 0; st < HFX_STAGE_COUNT; st++)
-        if (p->code[st][HFX_TARGET_GLSL330].data) scan_lines(p->code[st][HFX_TARGET_GLSL330].data, collect_internal, s);
+    unsigned long elements = 0;
+    int bools = bool_uniform(u, &elements);
+    if (bools) write_bool_uniform(&r->out, u, bools, elements);
+    else sb_add(&r->out, u->line, (size_t)(next - u->line));
 }
 
 char *hfx_spirv_glsl(const hfx_fx_effect *fx, const hfx_fx_program *p, int stage) {
     if (!fx || !p || stage < 0 || stage >= HFX_STAGE_COUNT || !p->code[stage][HFX_TARGET_GLSL330].data) return NULL;
-    internal_set s;
-    collect_all_internal(fx, p, &s);
+    other_set other;
+    memset(&other, 0, sizeof other);
+    other.fx = fx;
+    other.prog = p;
+    for (int st = 0; st < HFX_STAGE_COUNT; st++)
+        if (p->code[st][HFX_TARGET_GLSL330].data) scan_lines(p->code[st][HFX_TARGET_GLSL330].data, collect_other, &other);
     rewrite r;
     memset(&r, 0, sizeof r);
     r.fx = fx;
     r.prog = p;
-    r.internal = &s;
+    r.other = &other;
     r.src = p->code[stage][HFX_TARGET_GLSL330].data;
-    r.base = internal_base(fx);
     scan_lines(r.src, rewrite_line, &r);
     if (r.out.failed || !r.out.data) {
         free(r.out.data);
@@ -352,6 +386,69 @@ int hfx_spirv_find(const uint32_t *words, size_t count, const char *name, int32_
         i += n;
     }
     return 1;
+}
+
+/* Does a UniformConstant variable hold a bool somewhere (a struct member, say)? Strict
+ * validators reject that; glslang emits it for a uniform struct with bool members. */
+enum { OP_TYPE_BOOL = 20, OP_TYPE_VECTOR = 23, OP_TYPE_MATRIX = 24, OP_TYPE_ARRAY = 28, OP_TYPE_STRUCT = 30,
+       OP_TYPE_POINTER = 32, OP_VARIABLE = 59, STORAGE_UNIFORM_CONSTANT = 0 };
+
+/* The OpType* instruction defining `id` (types have their result id in word 1). */
+static const uint32_t *type_def(const uint32_t *w, size_t count, uint32_t id) {
+    for (size_t i = 5; i < count;) {
+        uint32_t n = w[i] >> 16, op = w[i] & 0xffffu;
+        if (n == 0 || i + n > count) return NULL;
+        if (op >= 19 && op <= 39 && n >= 2 && w[i + 1] == id) return &w[i];
+        i += n;
+    }
+    return NULL;
+}
+
+static bool type_has_bool(const uint32_t *w, size_t count, uint32_t type, int depth) {
+    const uint32_t *d = depth < 16 ? type_def(w, count, type) : NULL;
+    if (!d) return false;
+    uint32_t n = d[0] >> 16, op = d[0] & 0xffffu;
+    switch (op) {
+    case OP_TYPE_BOOL: return true;
+    case OP_TYPE_VECTOR: case OP_TYPE_MATRIX: case OP_TYPE_ARRAY:
+        return n >= 3 && type_has_bool(w, count, d[2], depth + 1);
+    case OP_TYPE_STRUCT:
+        for (uint32_t m = 2; m < n; m++)
+            if (type_has_bool(w, count, d[m], depth + 1)) return true;
+        return false;
+    default: return false;
+    }
+}
+
+static void name_of(const uint32_t *w, size_t count, uint32_t id, char *out, size_t size) {
+    snprintf(out, size, "%%%u", id);
+    for (size_t i = 5; i < count;) {
+        uint32_t n = w[i] >> 16, op = w[i] & 0xffffu;
+        if (n == 0 || i + n > count) return;
+        if (op == OP_NAME && n >= 3 && w[i + 1] == id) {
+            snprintf(out, size, "%.*s", (int)((n - 2) * 4), (const char *)&w[i + 2]);
+            return;
+        }
+        i += n;
+    }
+}
+
+int hfx_spirv_bool_uniform(const uint32_t *words, size_t count, char *name, size_t name_size) {
+    if (!words || count < 5 || words[0] != HFX_SPIRV_MAGIC) return -1;
+    for (size_t i = 5; i < count;) {
+        uint32_t n = words[i] >> 16, op = words[i] & 0xffffu;
+        if (n == 0 || i + n > count) return -1;
+        if (op == OP_VARIABLE && n >= 4 && words[i + 3] == STORAGE_UNIFORM_CONSTANT) {
+            const uint32_t *ptr = type_def(words, count, words[i + 1]);
+            if (ptr && (ptr[0] & 0xffffu) == OP_TYPE_POINTER && (ptr[0] >> 16) >= 4 &&
+                type_has_bool(words, count, ptr[3], 0)) {
+                if (name && name_size) name_of(words, count, words[i + 2], name, name_size);
+                return 1;
+            }
+        }
+        i += n;
+    }
+    return 0;
 }
 
 /* --- glslang ------------------------------------------------------------------------------------ */

@@ -32,12 +32,20 @@ char *hfx_spirv_glsl(const hfx_fx_effect *fx, const hfx_fx_program *p, int stage
  * glslang's messages in *log (malloc'ed, may be NULL). */
 int hfx_spirv_program(const hfx_fx_effect *fx, hfx_fx_program *p, char **log);
 
-/* The uniform location the SPIR-V gives top-level parameter `param` (HFX_NONE-free rule, the
- * same in every program of the effect), or -1 when it is not a uniform. */
-int32_t hfx_spirv_param_location(const hfx_fx_effect *fx, uint32_t param);
+/* The location the SPIR-V of program p gives the uniform `glsl_name`: p->uniforms in their order
+ * (sorted by parameter) take GL's locations one after the other (1 per scalar, vector, matrix;
+ * arrays and structs 1 per element / member), then p->samplers in unit order (1 each, binding =
+ * unit), then hfx_pos_fixup, hfx_alpha_func, hfx_alpha_ref. -1 for any other name (the rare
+ * other uniform follows those, in first-appearance order; hfx_spirv_find reads it). */
+int32_t hfx_spirv_location(const hfx_fx_effect *fx, const hfx_fx_program *p, const char *glsl_name);
 
 /* Reflection: the Location and Binding decorations (-1 when absent) of the variable OpName'd
  * `name` in a module. Returns 1 when found, 0 when not, -1 when `words` is not SPIR-V. */
 int hfx_spirv_find(const uint32_t *words, size_t count, const char *name, int32_t *location, int32_t *binding);
+
+/* 1 (and the variable's name) when a UniformConstant variable of the module holds a bool: a
+ * uniform struct with bool members, which the rewrite leaves alone and strict validators
+ * (spirv-val) reject; 0 when none does, -1 when `words` is not SPIR-V. */
+int hfx_spirv_bool_uniform(const uint32_t *words, size_t count, char *name, size_t name_size);
 
 #endif

@@ -27,9 +27,11 @@ void hfx_shared_warn(hfx_shared *sh, const hfx_fx_state *st, const char *fmt, ..
     sh->warnings_len += n;
 }
 
+/* 1D textures are 2D textures of height 1 (docs/conventions.md: the GLSL samples them so,
+ * and GL ES has no 1D textures). */
 static GLenum dim_target(hfx_fx_dim dim) {
     switch (dim) {
-    case HFX_FX_DIM_1D: return GL_TEXTURE_1D;
+    case HFX_FX_DIM_1D: return GL_TEXTURE_2D;
     case HFX_FX_DIM_3D: return GL_TEXTURE_3D;
     case HFX_FX_DIM_CUBE: return GL_TEXTURE_CUBE_MAP;
     default: return GL_TEXTURE_2D;
@@ -40,7 +42,7 @@ static GLenum dim_target(hfx_fx_dim dim) {
 static GLenum param_target(const hfx_fx_effect *fx, uint32_t param, hfx_fx_dim dim) {
     if (param >= fx->param_count) return dim_target(dim);
     switch (fx->params[param].type) {
-    case HFX_TYPE_TEXTURE1D: case HFX_TYPE_SAMPLER1D: return GL_TEXTURE_1D;
+    case HFX_TYPE_TEXTURE1D: case HFX_TYPE_SAMPLER1D:
     case HFX_TYPE_TEXTURE2D: case HFX_TYPE_SAMPLER2D: return GL_TEXTURE_2D;
     case HFX_TYPE_TEXTURE3D: case HFX_TYPE_SAMPLER3D: return GL_TEXTURE_3D;
     case HFX_TYPE_TEXTURECUBE: case HFX_TYPE_SAMPLERCUBE: return GL_TEXTURE_CUBE_MAP;

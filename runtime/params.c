@@ -39,7 +39,7 @@ static inline int store(hfx_param *p, uint32_t offset, const void *words, size_t
     size_t k = 0;
     while (k < n && dst[k] == src[k]) k++; /* bitwise, as GL would see it; short, so no library calls */
     if (k == n) return HFX_OK;
-    for (; k < n; k++) dst[k] = src[k];
+    memcpy(dst + k, src + k, (n - k) * sizeof *dst);
     param_changed(p->fx, p->root);
     return HFX_OK;
 }

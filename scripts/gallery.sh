@@ -73,9 +73,10 @@ render fx "$root/fx/spot.fx" "Textured Material" -- $above
 render fx "$root/fx/shading_models.fx" "Gouraud GouraudBlinn Phong BlinnPhong" -- --mesh sphere
 render fx "$root/fx/point_lights.fx" - -- --mesh sphere
 render fx "$root/fx/multipass.fx" - -- --mesh torus
+render fx "$root/fx/sas_blinn.fx" - -- --mesh teapot
 for f in "$root"/fx/*.fx; do # effects added later still show up, with default options
   case $(basename "$f") in
-    textured.fx|ambient.fx|directional.fx|point.fx|spot.fx|shading_models.fx|point_lights.fx|multipass.fx) ;;
+    textured.fx|ambient.fx|directional.fx|point.fx|spot.fx|shading_models.fx|point_lights.fx|multipass.fx|sas_blinn.fx) ;;
     *) render fx "$f" - -- ;;
   esac
 done

@@ -140,6 +140,27 @@ static void calls_and_overloads(void) {
     free(d);
 }
 
+static const char *RANK_SRC =
+    "float p(half x) { return x; }\n"
+    "float p(int x) { return x; }\n"
+    "float q(float a, float4 b) { return a; }\n"
+    "float q(float4 a, float b) { return b; }\n"
+    "float3 saturate(float3 x) { return x * 0.5; }\n"
+    "float r1(float x) { return p(x); }\n"
+    "float r2(float4 v, float s) { return q(s, v) + q(v, s); }\n"
+    "float3 r3(float3 v) { return saturate(v); }\n"
+    "float r4(float s) { return saturate(s); }\n";
+
+static void overload_ranking(void) {
+    /* float -> half is a promotion, float -> int a conversion: half wins */
+    EXPECT_STMT(RANK_SRC, "r1", 0, "(p(half):float (implicit:half x:float))");
+    /* each call matches one overload exactly */
+    EXPECT_STMT(RANK_SRC, "r2", 0, "(+:float (q(float,float4):float s:float v:float4) (q(float4,float):float v:float4 s:float))");
+    /* a user function named like an intrinsic competes with it: each takes what it matches best */
+    EXPECT_STMT(RANK_SRC, "r3", 0, "(saturate(float3):float3 v:float3)");
+    EXPECT_STMT(RANK_SRC, "r4", 0, "(#saturate:float s:float)");
+}
+
 static void sampler_parameters(void) {
     /* a generic sampler passed to a sampler2D parameter stays as it is (no cast node) */
     const char *src = "sampler s;\nfloat4 look(sampler2D t, float2 uv) { return tex2D(t, uv); }\n"
@@ -274,6 +295,7 @@ int main(void) {
     RUN(operators);
     RUN(members_and_indexing);
     RUN(calls_and_overloads);
+    RUN(overload_ranking);
     RUN(sampler_parameters);
     RUN(initializers);
     RUN(array_sizes);

@@ -198,7 +198,9 @@ static void typedef_of_generic_types(void) {
     expect_dump("typedef vector<float, 3> v3;\n"
                 "typedef matrix<half, 2, 2> m2, m2b[2];\n"
                 "typedef const float CF;\n"
-                "v3 a; m2 b; m2b c; CF d = 1;\n",
+                "v3 a; m2 b; m2b c; CF d = 1;\n"
+                "typedef row_major float4x4 RM;\n"
+                "RM e; static RM f; matrix g; float h = (CF)d;\n",
                 "typedef float3 v3\n"
                 "typedef half2x2 m2\n"
                 "typedef half2x2[2] m2b\n"
@@ -206,7 +208,12 @@ static void typedef_of_generic_types(void) {
                 "var float3 a\n"
                 "var half2x2 b\n"
                 "var half2x2[2] c\n"
-                "var float d = 1\n");
+                "var const float d = 1\n"
+                "typedef row_major float4x4 RM\n"
+                "var row_major float4x4 e\n"
+                "var static row_major float4x4 f\n"
+                "var float4x4 g\n"
+                "var float h = (float)d\n");
 }
 
 /* The preprocessor hands `#pragma pack_matrix` over as `__hfx_pack_matrix ( x )` (token.h);

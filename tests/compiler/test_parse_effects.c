@@ -178,11 +178,65 @@ static void fixed_function_states(void) {
     tp_free(r);
 }
 
+/* Shapes from FX Composer's templates and the DirectX SDK samples (written from memory of
+ * their style): SAS annotations, semantics with annotations and initializers, uniform
+ * parameters bound by compile, loops over light arrays. */
+static void sdk_and_composer_styles(void) {
+    tp_result *r = tp_parse(
+        "float Script : STANDARDSGLOBAL < string UIWidget = \"none\"; string ScriptClass = \"object\";\n"
+        "  string Script = \"Technique=Main;\"; > = 0.8;\n"
+        "float4x4 WorldITXf : WorldInverseTranspose < string UIWidget = \"None\"; >;\n"
+        "float3 Lamp0Pos : Position < string Object = \"PointLight0\"; string Space = \"World\"; > = {-0.5f,2.0f,1.25f};\n"
+        "texture ColorTexture : DIFFUSE < string ResourceName = \"default_color.dds\"; string ResourceType = \"2D\"; >;\n"
+        "sampler2D ColorSampler = sampler_state { Texture = <ColorTexture>; FILTER = MIN_MAG_MIP_LINEAR;\n"
+        "  AddressU = Wrap; AddressV = Wrap; };\n"
+        "float3 g_LightDir[3]; float4 g_LightDiffuse[3];\n"
+        "struct VS_OUTPUT { float4 Position : POSITION; float4 Diffuse : COLOR0; float2 TextureUV : TEXCOORD0; };\n"
+        "VS_OUTPUT RenderSceneVS(float4 vPos : POSITION, float3 vNormal : NORMAL, float2 vTexCoord0 : TEXCOORD0,\n"
+        "                        uniform int nNumLights, uniform bool bTexture, uniform bool bAnimate) {\n"
+        "  VS_OUTPUT Output; float3 vTotalLightDiffuse = float3(0,0,0);\n"
+        "  for(int i=0; i<nNumLights; i++ )\n"
+        "    vTotalLightDiffuse += g_LightDiffuse[i] * max(0,dot(vNormal, g_LightDir[i]));\n"
+        "  Output.Position = vPos; Output.Diffuse.rgb = vTotalLightDiffuse; Output.Diffuse.a = 1.0f;\n"
+        "  if( bTexture ) Output.TextureUV = vTexCoord0; else Output.TextureUV = 0;\n"
+        "  return Output; }\n"
+        "float4 RenderScenePS(VS_OUTPUT In, uniform bool bTexture) : COLOR0 {\n"
+        "  return bTexture ? tex2D(ColorSampler, In.TextureUV) * In.Diffuse : In.Diffuse; }\n"
+        "technique Main < string Script = \"Pass=p0;\"; > {\n"
+        "  pass p0 < string Script = \"Draw=geometry;\"; > {\n"
+        "    VertexShader = compile vs_2_0 RenderSceneVS(1, true, true);\n"
+        "    ZEnable = true; ZWriteEnable = true; ZFunc = LessEqual; AlphaBlendEnable = false; CullMode = None;\n"
+        "    PixelShader = compile ps_2_0 RenderScenePS(true);\n"
+        "  }\n"
+        "}\n");
+    CHECK_STR(r->errors, "");
+    hfx_decl *lamp = tp_find(r, "Lamp0Pos");
+    CHECK(lamp && lamp->semantic && strcmp(lamp->semantic, "Position") == 0);
+    CHECK(lamp && lamp->annotation_count == 2 && lamp->init && lamp->init->arg_count == 3);
+    if (lamp && lamp->init && lamp->init->arg_count == 3) {
+        CHECK_INT(lamp->init->args[0]->kind, EX_UNARY); /* -0.5f */
+        CHECK_NEAR(lamp->init->args[2]->fval, 1.25, 1e-12);
+    }
+    hfx_decl *vs = tp_find(r, "RenderSceneVS");
+    CHECK(vs && vs->func->param_count == 6 && vs->func->params[5]->mods == MOD_UNIFORM);
+    hfx_decl *t = tp_find(r, "Main");
+    CHECK(t && t->technique->annotation_count == 1 && t->technique->pass_count == 1);
+    if (t && t->technique->pass_count == 1) {
+        hfx_pass_ast *p = &t->technique->passes[0];
+        CHECK_INT(p->annotation_count, 1);
+        CHECK_STR(p->annotations[0].value->sval, "Draw=geometry;");
+        CHECK_INT(p->state_count, 7);
+        CHECK_INT(p->states[0].value->arg_count, 3);
+    }
+    tp_free(r);
+}
+
 int main(void) {
     RUN(technique_spellings);
     RUN(state_values);
     RUN(sampler_state_forms);
     RUN(effect_keywords_in_any_case);
     RUN(fixed_function_states);
+    RUN(sdk_and_composer_styles);
     return test_summary();
 }

@@ -118,6 +118,9 @@ static void every_seed_pass_validates(void) {
                         snprintf(what, sizeof what, "%s %s.%s stage %d", good_seeds[i], fx->techniques[t].name,
                                  pass->name, s);
                         check_module(&p->code[s][HFX_TARGET_SPIRV], s, what);
+                        size_t nw;
+                        const uint32_t *w = words_of(&p->code[s][HFX_TARGET_SPIRV], &nw);
+                        CHECK_INT(hfx_spirv_bool_uniform(w, nw, NULL, 0), 0);
                         CHECK(p->code[s][HFX_TARGET_GLSL330].data == NULL);
                         modules++;
                     }
@@ -161,7 +164,8 @@ static void locations_follow_the_rules(void) {
                     int32_t loc, binding;
                     if (hfx_spirv_find(w[s], n[s], name, &loc, &binding) != 1) continue;
                     found = 1;
-                    CHECK_INT(loc, hfx_spirv_param_location(fx, param));
+                    CHECK_INT(loc, hfx_spirv_location(fx, p, name));
+                    CHECK(loc >= 0);
                     uniforms++;
                 }
                 CHECK(found);
@@ -173,6 +177,7 @@ static void locations_follow_the_rules(void) {
                     if (hfx_spirv_find(w[s], n[s], p->samplers[k].glsl_name, &loc, &binding) != 1) continue;
                     found = 1;
                     CHECK_INT(binding, p->samplers[k].unit);
+                    CHECK_INT(loc, hfx_spirv_location(fx, p, p->samplers[k].glsl_name));
                     CHECK(loc >= 0);
                     samplers++;
                 }
@@ -198,30 +203,68 @@ static void locations_follow_the_rules(void) {
 }
 
 /* Known values from multilights_repaired.fx: world, view, projection are its first three
- * parameters (locations 0, 1, 2); the vertex shader's hfx_pos_fixup follows every parameter. */
+ * parameters (locations 0, 1, 2 in the vertex shader); hfx_pos_fixup follows the program's
+ * uniforms and samplers. */
 static void multilights_locations(void) {
     hfxc_result *r = compile_seed("multilights_repaired.fx", SPIRV);
     const hfx_fx_effect *fx = hfxc_result_effect(r);
     CHECK(fx != NULL);
     if (fx) {
-        CHECK_INT(hfx_spirv_param_location(fx, hfx_fx_param_find(fx, "world")), 0);
-        CHECK_INT(hfx_spirv_param_location(fx, hfx_fx_param_find(fx, "view")), 1);
-        CHECK_INT(hfx_spirv_param_location(fx, hfx_fx_param_find(fx, "projection")), 2);
-        CHECK_INT(hfx_spirv_param_location(fx, HFX_NONE), -1);
+        const hfx_fx_program *p = &fx->programs[0];
+        CHECK_INT(hfx_spirv_location(fx, p, "world"), 0);
+        CHECK_INT(hfx_spirv_location(fx, p, "view"), 1);
+        CHECK_INT(hfx_spirv_location(fx, p, "projection"), 2);
+        CHECK_INT(hfx_spirv_location(fx, p, "no_such_name"), -1);
+        CHECK_INT(hfx_spirv_location(fx, NULL, "world"), -1);
         size_t n;
-        const uint32_t *w = words_of(&fx->programs[0].code[HFX_STAGE_VERTEX][HFX_TARGET_SPIRV], &n);
+        const uint32_t *w = words_of(&p->code[HFX_STAGE_VERTEX][HFX_TARGET_SPIRV], &n);
         int32_t loc, world;
         CHECK_INT(hfx_spirv_find(w, n, "world", &world, NULL), 1);
         CHECK_INT(world, 0);
         CHECK_INT(hfx_spirv_find(w, n, "hfx_pos_fixup", &loc, NULL), 1);
+        CHECK_INT(loc, hfx_spirv_location(fx, p, "hfx_pos_fixup"));
         int32_t after = 0;
-        for (uint32_t i = 0; i < fx->top_param_count; i++) {
-            int32_t l = hfx_spirv_param_location(fx, i);
+        for (uint32_t u = 0; u < p->uniform_count; u++) {
+            int32_t l = hfx_spirv_location(fx, p, fx->params[p->uniforms[u].param].glsl_name);
             if (l >= after) after = l + 1;
         }
-        CHECK(loc >= after);
+        CHECK_INT(loc, after + (int32_t)p->sampler_count);
         CHECK_INT(hfx_spirv_find(w, n, "no_such_name", &loc, NULL), 0);
         CHECK_INT(loc, -1);
+    }
+    hfxc_result_free(r);
+}
+
+/* A large parameter another program reads does not push this program's locations up. */
+static void locations_are_per_program(void) {
+    const char *src = "float4 big1[3000];\nfloat4 big2[3000];\nfloat4 x;\n"
+                      "float4 VS(float4 p : POSITION) : POSITION { return p * x; }\n"
+                      "float4 VS1(float4 p : POSITION) : POSITION { return p * big1[3]; }\n"
+                      "float4 VS2(float4 p : POSITION) : POSITION { return p * big2[3]; }\n"
+                      "float4 PS() : COLOR { return x; }\n"
+                      "technique t { pass a { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); }\n"
+                      "  pass b { VertexShader = compile vs_3_0 VS1(); PixelShader = compile ps_3_0 PS(); }\n"
+                      "  pass c { VertexShader = compile vs_3_0 VS2(); PixelShader = compile ps_3_0 PS(); } }\n";
+    hfxc_options o = {0};
+    o.targets = SPIRV;
+    hfxc_result *r = hfxc_compile_memory(src, strlen(src), "big.fx", &o);
+    const hfx_fx_effect *fx = hfxc_result_effect(r);
+    if (!fx) {
+        char *d = hfxc_diagnostics_text(r);
+        fprintf(stderr, "%s\n", d);
+        free(d);
+    }
+    CHECK(fx != NULL);
+    if (fx) {
+        CHECK_INT(fx->program_count, 3);
+        CHECK_INT(hfx_spirv_location(fx, &fx->programs[0], "x"), 0);
+        CHECK_INT(hfx_spirv_location(fx, &fx->programs[2], "big2"), 0);
+        CHECK_INT(hfx_spirv_location(fx, &fx->programs[2], "x"), 3000);
+        size_t n;
+        const uint32_t *w = words_of(&fx->programs[0].code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV], &n);
+        int32_t loc;
+        CHECK_INT(hfx_spirv_find(w, n, "x", &loc, NULL), 1);
+        CHECK_INT(loc, 0);
     }
     hfxc_result_free(r);
 }
@@ -266,6 +309,9 @@ static void glsl_rewrite(void) {
     memset(&p, 0, sizeof p);
     p.samplers = &use;
     p.sampler_count = 1;
+    hfx_fx_uniform_use uses[2] = {{0}, {1}};
+    p.uniforms = uses;
+    p.uniform_count = 2;
     char fs[] = "#version 330 core\n"
                 "struct S { bool on; };\n"
                 "uniform mat4 m[3];\n"
@@ -319,6 +365,9 @@ static void bool_field_keeps_bool(void) {
     fx.param_count = fx.top_param_count = 1;
     hfx_fx_program p;
     memset(&p, 0, sizeof p);
+    hfx_fx_uniform_use use = {0};
+    p.uniforms = &use;
+    p.uniform_count = 1;
     char fs[] = "#version 330 core\nstruct S { bool on; };\nuniform bool on;\nvoid main() { S x; x.on = on; }\n";
     p.code[HFX_STAGE_FRAGMENT][HFX_TARGET_GLSL330].data = fs;
     char *g = hfx_spirv_glsl(&fx, &p, HFX_STAGE_FRAGMENT);
@@ -336,6 +385,74 @@ static void bool_field_keeps_bool(void) {
     g = hfx_spirv_glsl(&fx, &p, HFX_STAGE_FRAGMENT);
     CHECK_CONTAINS(g, "uniform int on;\n#define on (on != 0)\n");
     free(g);
+}
+
+static hfxc_result *compile_source(const char *src, unsigned targets) {
+    hfxc_options o = {0};
+    o.targets = targets;
+    return hfxc_compile_memory(src, strlen(src), "bools.fx", &o);
+}
+
+static uint32_t count_warnings(const hfxc_result *r, const char *needle) {
+    uint32_t n = 0;
+    for (size_t i = 0; i < hfxc_diag_count(r); i++) {
+        const hfxc_diag *d = hfxc_diag_at(r, i);
+        if (d->severity == HFXC_WARNING && strstr(d->message, needle)) n++;
+    }
+    return n;
+}
+
+/* bool, bool2 and bool arrays become int in the SPIR-V (valid); a struct with a bool member
+ * cannot, and says so in a warning. */
+static void bool_uniforms(void) {
+    const char *common = "bool flags[3];\nbool2 bb;\nbool one;\nsampler2D samp;\n"
+                         "float4 VS(float4 p : POSITION) : POSITION { return p; }\n";
+    const char *tail = "technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }\n";
+    char src[2048];
+    snprintf(src, sizeof src, "%sfloat4 PS(float2 uv : TEXCOORD0) : COLOR {\n"
+                              "  float4 c = tex2D(samp, uv);\n"
+                              "  if (flags[2] && bb.y && one) c *= 2;\n  return c;\n}\n%s", common, tail);
+    hfxc_result *r = compile_source(src, SPIRV);
+    const hfx_fx_effect *fx = hfxc_result_effect(r);
+    CHECK(fx != NULL);
+    CHECK_INT(count_warnings(r, "bool"), 0);
+    if (fx) {
+        const hfx_fx_code *c = &fx->programs[0].code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV];
+        check_module(c, HFX_STAGE_FRAGMENT, "bool uniforms");
+        size_t n;
+        const uint32_t *w = words_of(c, &n);
+        CHECK_INT(hfx_spirv_bool_uniform(w, n, NULL, 0), 0);
+        int32_t loc;
+        const hfx_fx_program *p = &fx->programs[0];
+        CHECK_INT(hfx_spirv_find(w, n, "flags", &loc, NULL), 1);
+        CHECK_INT(loc, 0);
+        CHECK_INT(hfx_spirv_location(fx, p, "bb"), 3); /* after flags[3] */
+        CHECK_INT(hfx_spirv_location(fx, p, "one"), 4);
+        CHECK_INT(hfx_spirv_location(fx, p, "samp"), 5);
+        CHECK_INT(hfx_spirv_find(w, n, "one", &loc, NULL), 1);
+        CHECK_INT(loc, 4);
+    }
+    hfxc_result_free(r);
+
+    snprintf(src, sizeof src, "%sstruct L { bool on; float3 c; };\nL lights[2];\n"
+                              "float4 PS(float2 uv : TEXCOORD0) : COLOR {\n"
+                              "  float4 c = tex2D(samp, uv);\n"
+                              "  if (lights[1].on) c *= 2;\n  return c;\n}\n%s", common, tail);
+    r = compile_source(src, SPIRV);
+    fx = hfxc_result_effect(r);
+    CHECK(fx != NULL);
+    CHECK_INT(count_warnings(r, "'lights': a uniform with bool members stays bool in SPIR-V"), 1);
+    if (fx) {
+        const hfx_fx_code *c = &fx->programs[0].code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV];
+        size_t n;
+        const uint32_t *w = words_of(c, &n);
+        char name[64] = "";
+        CHECK_INT(hfx_spirv_bool_uniform(w, n, name, sizeof name), 1);
+        CHECK_STR(name, "lights");
+    }
+    hfxc_result_free(r);
+    uint32_t junk[6] = {1, 2, 3, 4, 5, 6};
+    CHECK_INT(hfx_spirv_bool_uniform(junk, 6, NULL, 0), -1);
 }
 
 /* Broken GLSL gives -1, a log naming the problem, and no code; garbage is not SPIR-V. */
@@ -383,10 +500,12 @@ int main(void) {
     RUN(glsl_rewrite);
     RUN(bool_field_keeps_bool);
     RUN(bad_inputs);
+    RUN(bool_uniforms);
     test_require_seeds();
     RUN(every_seed_pass_validates);
     RUN(locations_follow_the_rules);
     RUN(multilights_locations);
+    RUN(locations_are_per_program);
     RUN(glsl330_kept_when_asked);
     return test_summary();
 }

@@ -570,6 +570,39 @@ static void test_pass_stage_states(void) {
     fresh();
 }
 
+/* A 1D texture is a 2D texture of height 1 (the GLSL samples it with a sampler2D). */
+static void test_1d_textures_bind_as_2d(void) {
+    fresh();
+    hfx_fx_effect *cfx = tb_new();
+    uint32_t tex = tb_param(cfx, "ramp", NULL, HFX_CLASS_OBJECT, HFX_TYPE_TEXTURE1D, 0, 0, 0, HFX_NONE, 0, 0);
+    uint32_t sp = tb_param(cfx, "s", "s", HFX_CLASS_OBJECT, HFX_TYPE_SAMPLER1D, 0, 0, 0, HFX_NONE, 0, 0);
+    uint32_t sm = tb_sampler(cfx, sp, tex, HFX_FX_DIM_1D);
+    uint32_t prog = tb_program(cfx, tb_vs_pos,
+                               "#version 330\nuniform sampler2D s;\nout vec4 o;\n"
+                               "void main() { o = texture(s, vec2(0.9, 0.5)); }\n");
+    tb_sampler_use(cfx, prog, "s", sm, 0);
+    tb_technique(cfx, "T");
+    tb_pass(cfx, "P", prog, 0, 0);
+    hfx_effect *fx = hfx_rt_effect_from_fx(dev, cfx, NULL, NULL);
+    CHECK(fx != NULL);
+    GLuint t;
+    g.GenTextures(1, &t);
+    g.BindTexture(GL_TEXTURE_2D, t);
+    const unsigned char texels[8] = {0, 0, 0, 255, 255, 128, 0, 255};
+    g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 2, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+    g.BindTexture(GL_TEXTURE_2D, 0);
+    CHECK_INT(hfx_param_set_texture(hfx_effect_param(fx, "ramp"), t), HFX_OK);
+    CHECK_INT(apply(fx), HFX_OK);
+    g.ActiveTexture(GL_TEXTURE0);
+    CHECK_INT(geti(GL_TEXTURE_BINDING_2D), t);
+    clear(0, 0, 0, 0);
+    draw(full, 6);
+    check_pixel(8, 8, 255, 128, 0, 255); /* u = 0.9: the second texel (Point filtering by default) */
+    hfx_effect_destroy(fx);
+    g.DeleteTextures(1, &t);
+    fresh();
+}
+
 int main(void) {
     gl = test_gl_create(W, H);
     if (!gl) test_skip("no OSMesa context");
@@ -586,6 +619,7 @@ int main(void) {
     RUN(test_unsupported_states_reported_once);
     RUN(test_sampler_states);
     RUN(test_pass_stage_states);
+    RUN(test_1d_textures_bind_as_2d);
     hfx_device_destroy(dev);
     test_gl_destroy(gl);
     return test_summary();

@@ -21,7 +21,7 @@ static void set_wvp(hfx_effect *fx, const float world[16]) {
 }
 
 /* Every pixel of a sphere in perspective: white inside its silhouette, the clear colour out
- * (pixels the silhouette crosses, under either pixel-centre convention, are left out). */
+ * (pixels whose sample point lies within a tenth of a pixel of the silhouette are left out). */
 static void white_silhouette(void) {
     hfx_effect *fx = seed_load(S, FILE_);
     CHECK(fx != NULL);

@@ -232,6 +232,37 @@ static void sphere_in_perspective(void) {
     CHECK_SCENE(S);
 }
 
+/* Effect.Clone(): the clone shares the code and starts from the original's values, and from
+ * then on each keeps its own (XNA's semantics). */
+static void clones_keep_their_own_values(void) {
+    floor_scene f = {0};
+    if (floor_open(&f)) {
+        phong_ref a = default_ref(&f.tex), b = default_ref(&f.tex);
+        seed_set_transforms(S, f.fx, "World", "View", "Projection", NULL);
+        set_params(f.fx, &a);
+        hfx_effect *clone = hfx_effect_clone(f.fx);
+        CHECK(clone != NULL);
+        if (clone) {
+            b.light_colour = rgba_make(0.2, 0.9, 0.4, 1);
+            b.cam = v3_make(-1, 1.5, 0.5);
+            seed_set_rgba(S, clone, "LightColor", b.light_colour);
+            seed_set_v3(S, clone, "camPosition", b.cam);
+            seed_clear(S, rgba_make(0, 0, 0, 0));
+            CHECK_INT(seed_draw(S, clone, "Phong", f.floor, SEED_BLEND_NONE), 1);
+            probe_grid(&f, &b, "clone, own values");
+            seed_clear(S, rgba_make(0, 0, 0, 0));
+            CHECK_INT(seed_draw(S, f.fx, "Phong", f.floor, SEED_BLEND_NONE), 1);
+            probe_grid(&f, &a, "original after the clone changed");
+            hfx_effect_destroy(clone);
+            seed_clear(S, rgba_make(0, 0, 0, 0));
+            CHECK_INT(seed_draw(S, f.fx, "Phong", f.floor, SEED_BLEND_NONE), 1);
+            probe_grid(&f, &a, "original after the clone is gone");
+        }
+    }
+    CHECK(f.fx != NULL);
+    floor_close(&f);
+}
+
 /* Every test, once with the .fx loaded directly and once through .hfxo. */
 static void run_all(void) {
     RUN(ambient_term);
@@ -239,6 +270,7 @@ static void run_all(void) {
     RUN(all_three_terms);
     RUN(highlight_follows_the_camera);
     RUN(sphere_in_perspective);
+    RUN(clones_keep_their_own_values);
 }
 
 int main(void) {

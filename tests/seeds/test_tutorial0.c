@@ -69,8 +69,7 @@ static rgba texel_colour(const tut0 *t, int x, int y) {
 }
 
 /* A value worked out by hand: the reference gives it at the probe's Direct3D 9 sample point
- * (checking the reasoning), and the pixel matches the reference (at either pixel-centre
- * convention's sample point: pixel_centres_follow_direct3d9 judges that question). */
+ * (checking the reasoning), and the pixel matches the reference there. */
 static void hand_probe(tut0 *t, const char *label, int x, int y, rgba hand) {
     sample_ref ref = {&t->tex, SEED_CLAMP};
     seed_surface s;

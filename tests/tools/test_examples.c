@@ -148,7 +148,7 @@ static void window_example_headless(void) {
 
 int main(void) {
     char *any = view_build_path("examples/example_phong");
-    if (!any) test_skip("the examples are not built (they need the runtime)");
+    if (!any) test_skip("the examples are not built (they need OSMesa, libpng and stb)");
     free(any);
     tmp = test_temp_dir();
     RUN(textured_quad);

@@ -39,7 +39,7 @@ static void window_screenshot(void) {
 
 int main(void) {
     exe = view_build_path("examples/example_window");
-    if (!exe) test_skip("example_window is not built (it needs the runtime)");
+    if (!exe) test_skip("example_window is not built (it needs OSMesa, libpng and stb)");
     if (view_run("command -v xvfb-run && command -v Xvfb", NULL) != 0)
         test_skip("xvfb-run / Xvfb is not installed (Debian: apt-get install xvfb)");
     RUN(window_screenshot);

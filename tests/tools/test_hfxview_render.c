@@ -74,6 +74,20 @@ static void light_option_overrides_the_effect(void) {
     view_png_free(&img);
 }
 
+/* sas_blinn.fx binds everything by semantic (WorldViewProjection, WorldInverseTranspose,
+ * ViewInverse for the eye). Centre: N = L = V = H = (0,0,1) with the lamp at (0,0,10):
+ * ambient 0.1 + surface (0.8,0.2,0.2) + Ks 0.4 -> (1.3, 0.7, 0.7) -> (255, 178.5, 178.5). */
+static void fx_composer_semantics(void) {
+    view_png img;
+    if (render(FX "sas_blinn.fx " FRONT, "sas.png", &img)) {
+        CHECK(view_pixel_near(&img, 64, 64, 255, 178, 178, 2));
+        CHECK(view_pixel_near(&img, 0, 0, 100, 149, 237, 0));
+    } else {
+        CHECK(0);
+    }
+    view_png_free(&img);
+}
+
 /* textured.fx on the quad (2 x 2 at z = 0) from (0,0,3.2), 256 x 256, 45 degrees: the view
  * spans 3.2 tan(22.5) = 1.3255 either side, so the quad runs from pixel 31.4 to 224.6 and its
  * 8 x 8 checker cells are 24.1 pixels wide. Cell (0,0) of the default checker, at the top left
@@ -235,10 +249,11 @@ static void renders_hfxo(void) {
 
 int main(void) {
     hfxview = view_build_path("tools/hfxview/hfxview");
-    if (!hfxview) test_skip("hfxview is not built (it needs the runtime)");
+    if (!hfxview) test_skip("hfxview is not built (it needs OSMesa, libpng and stb)");
     tmp = test_temp_dir();
     RUN(phong_and_blinn_phong_centre_pixels);
     RUN(light_option_overrides_the_effect);
+    RUN(fx_composer_semantics);
     RUN(default_texture_is_a_checker_top_left_first);
     RUN(set_overrides_initializers);
     RUN(texture_from_a_png);

@@ -146,7 +146,7 @@ static void every_seed_renders_lit(void) {
 int main(void) {
     test_require_seeds();
     hfxview = view_build_path("tools/hfxview/hfxview");
-    if (!hfxview) test_skip("hfxview is not built (it needs the runtime)");
+    if (!hfxview) test_skip("hfxview is not built (it needs OSMesa, libpng and stb)");
     tmp = test_temp_dir();
     RUN(fxcomposer_empty_is_a_white_silhouette);
     RUN(multilights_fails_with_its_error);

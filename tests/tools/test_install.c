@@ -135,7 +135,7 @@ int main(void) {
     if (view_run("command -v cmake && command -v pkg-config && command -v cc", NULL) != 0)
         test_skip("cmake, pkg-config or cc is missing");
     char *hfxview = view_build_path("tools/hfxview/hfxview");
-    if (!hfxview) test_skip("hfxview is not built yet (it needs the runtime), so there is nothing whole to install");
+    if (!hfxview) test_skip("hfxview is not built (it needs OSMesa, libpng and stb), so there is nothing whole to install");
     free(hfxview);
     char *grep = view_format("grep -q '^HFX_SANITIZE:BOOL=ON' %s/CMakeCache.txt", build);
     sanitized = view_run(grep, NULL) == 0; /* the libraries carry ASan calls: the program must too */

@@ -137,18 +137,17 @@ int seed_pick(seed_scene *s, const seed_object *objects, int n, int x, int y, se
 /* The same at a point (dx, dy) pixels away from pixel (x, y)'s sample point. */
 int seed_pick_offset(seed_scene *s, const seed_object *objects, int n, int x, int y, double dx, double dy,
                      seed_surface *out);
-/* The object under pixel (x, y) when that does not depend on where in the pixel one looks:
- * the same at both conventions' sample points and a tenth of a pixel around them; -2 when it
- * does (a silhouette or an edge crosses the pixel), else as seed_pick. */
+/* The object under pixel (x, y) when a tenth of a pixel around the sample point sees the same
+ * one; -2 when not (a silhouette or an edge passes right by the sample point), else as seed_pick. */
 int seed_pick_certain(seed_scene *s, const seed_object *objects, int n, int x, int y, seed_surface *out);
 /* Compares the pixel with an expected colour (clamped to [0,1] as the framebuffer does),
  * prints both and the difference, records the difference under `file`, returns it in 1/255
  * steps (the largest over the four channels). */
 double seed_expect(seed_scene *s, const char *file, const char *label, int x, int y, rgba expected);
-/* Picks the object under the pixel, shades it with the reference and compares. Either pixel
- * centre convention's sample point is accepted (the closer wins, and the line says so): these
- * probes judge the equations; tutorial0's pixel_centres_follow_direct3d9 judges the centres.
- * Returns the difference, or 999 when the ray misses the object (a test design error). */
+/* Picks the object under the pixel, shades it with the reference and compares (as
+ * seed_expect). On a failure, notes whether the other pixel-centre convention's sample point
+ * would have matched. Returns the difference, or 999 when the ray misses the object (a test
+ * design error). */
 double seed_probe(seed_scene *s, const char *file, const char *label, const seed_object *obj, int x, int y,
                   seed_shade_fn shade, const void *user);
 /* The pixel as read back, in [0,1]. */
