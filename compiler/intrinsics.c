@@ -14,8 +14,8 @@ static const hfx_intrinsic_info table[HFX_INTR_COUNT] = {
 };
 
 int hfx_intrinsic_find(const char *name) {
-    for (int i = 0; i < HFX_INTR_COUNT; i++)
-        if (strcmp(table[i].name, name) == 0) return i;
+    for (int i = 0; i < HFX_INTR_COUNT; i++) /* the first byte rules out almost every entry cheaply */
+        if (table[i].name[0] == name[0] && strcmp(table[i].name, name) == 0) return i;
     return -1;
 }
 

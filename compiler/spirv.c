@@ -15,7 +15,8 @@
 /* --- uniform locations ---------------------------------------------------------------------- */
 
 /* Locations a parameter takes in GL's default uniform block: one per scalar, vector, matrix or
- * sampler, array elements and struct members one after the other. Saturates. */
+ * sampler, array elements and struct members one after the other (small: the builder caps
+ * parameters at 2^20 values and 2^16 elements and members). */
 static uint64_t param_locations(const hfx_fx_effect *fx, uint32_t i, int depth) {
     if (i >= fx->param_count || depth > 64) return 0;
     const hfx_fx_param *p = &fx->params[i];
