@@ -44,7 +44,7 @@ typedef struct check_entry {
     int32_t next;                /* the previous entry in the same bucket, -1 at the end */
 } check_entry;
 
-enum { CHECK_BUCKETS = 512 };
+enum { CHECK_BUCKETS = 4096 };
 
 typedef struct check_ctx {
     hfx_arena *arena;

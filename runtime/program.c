@@ -124,7 +124,8 @@ static int add_upload(build *b, const char *name, const hfx_fx_param *p, uint32_
         return HFX_OK;
     }
     char loc_name[300];
-    snprintf(loc_name, sizeof loc_name, "%s%s", name, u->size > 1 || p->elements ? "[0]" : "");
+    int n = snprintf(loc_name, sizeof loc_name, "%s%s", name, u->size > 1 || p->elements ? "[0]" : "");
+    if (n < 0 || (size_t)n >= sizeof loc_name) return HFX_OK;
     up.location = b->sh->dev->gl.GetUniformLocation(b->p->object, loc_name);
     if (up.location < 0) up.location = b->sh->dev->gl.GetUniformLocation(b->p->object, name);
     if (up.location < 0) return HFX_OK;
@@ -155,7 +156,8 @@ static int add_struct(build *b, const hfx_fx_param *s, const char *path) {
     for (uint32_t m = 0; m < s->child_count; m++) {
         const hfx_fx_param *member = &b->sh->fx->params[s->first_child + m];
         char sub[300];
-        snprintf(sub, sizeof sub, "%s.%s", path, member->glsl_name ? member->glsl_name : member->name);
+        int n = snprintf(sub, sizeof sub, "%s.%s", path, member->glsl_name ? member->glsl_name : member->name);
+        if (n < 0 || (size_t)n >= sizeof sub) continue; /* longer than any name GL reports */
         int rc = add_param(b, s->first_child + m, sub);
         if (rc) return rc;
     }
@@ -169,7 +171,8 @@ static int add_param(build *b, uint32_t index, const char *path) {
     if (p->elements && p->child_count && b->sh->fx->params[p->first_child].klass == HFX_CLASS_STRUCT) {
         for (uint32_t e = 0; e < p->child_count; e++) {
             char sub[300];
-            snprintf(sub, sizeof sub, "%s[%u]", path, (unsigned)e);
+            int n = snprintf(sub, sizeof sub, "%s[%u]", path, (unsigned)e);
+            if (n < 0 || (size_t)n >= sizeof sub) continue; /* longer than any name GL reports */
             int rc = add_struct(b, &b->sh->fx->params[p->first_child + e], sub);
             if (rc) return rc;
         }

@@ -33,6 +33,12 @@ static int usage_error(const char *msg) {
     return EXIT_USAGE;
 }
 
+/* A well-formed command line that does not fit this effect or these files: no usage text. */
+static int input_error(const char *msg) {
+    fprintf(stderr, "hfxview: %s\n", msg);
+    return EXIT_USAGE;
+}
+
 /* "dir/name.fx" -> "name.png", in the current folder like fxc's default outputs. */
 static char *default_output(const char *input) {
     const char *base = strrchr(input, '/');
@@ -111,10 +117,10 @@ static int apply_options(viewer *v) {
         char name[256];
         size_t n = (size_t)(v->opt.sets[i].value - 1 - v->opt.sets[i].name);
         snprintf(name, sizeof name, "%.*s", (int)n, v->opt.sets[i].name);
-        if (hv_set_param(v->fx, name, v->opt.sets[i].value, v->err, sizeof v->err) != 0) return usage_error(v->err);
+        if (hv_set_param(v->fx, name, v->opt.sets[i].value, v->err, sizeof v->err) != 0) return input_error(v->err);
     }
     if (hv_bind_textures(&v->textures, v->gl, v->fx, v->opt.textures, v->opt.texture_count, v->err, sizeof v->err))
-        return usage_error(v->err);
+        return input_error(v->err);
     return EXIT_OK;
 }
 
@@ -173,7 +179,7 @@ static int show_window(viewer *v) {
 
 static int run(viewer *v) {
     int rc;
-    if (hv_mesh_load(&v->mesh, v->opt.mesh, v->err, sizeof v->err) != 0) return usage_error(v->err);
+    if (hv_mesh_load(&v->mesh, v->opt.mesh, v->err, sizeof v->err) != 0) return input_error(v->err);
     v->ctx = hv_context_create(v->opt.width, v->opt.height, v->opt.window, v->err, sizeof v->err);
     if (v->err[0]) fprintf(stderr, "hfxview: %s\n", v->err);
     if (!v->ctx) return EXIT_EFFECT;
