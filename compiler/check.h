@@ -14,6 +14,9 @@
  *   are converted to the entry's uniform parameters, in order;
  * - EX_CONSTRUCT arguments keep their shape but take the constructed element type;
  * - EX_CAST (explicit) from a scalar to a struct or array: `(VS_OUT)0` fills every component;
+ *   numeric casts (explicit or implicit) keep the leading components in row-major order
+ *   (float4x4 -> float3x3 keeps the top-left block; (float3)m keeps m._11_12_13) and reshape
+ *   equal counts row-major (float4 <-> float2x2); a scalar source splats;
  * - EX_INIT_LIST args are the scalar leaves in memory order (row-major), each converted to its
  *   leaf's scalar type; a vector/matrix/struct item is split into EX_SWIZZLE/EX_FIELD/EX_INDEX
  *   nodes sharing the item (so it is evaluated once per component: items are pure values);

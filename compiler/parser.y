@@ -346,8 +346,8 @@ primary
     | '(' expr ')'                           { $$ = pb_paren($2); }
     | IDENT '(' args_opt ')'                 { $$ = pb_call(ctx, $1.text, $3, @1); }
     | ctor_type '(' args_opt ')'             { $$ = pb_construct(ctx, $1, $3, @1); }
-    | COMPILE IDENT IDENT '(' args_opt ')'   { $$ = pb_compile(ctx, $2.text, $3.text, $5, @1); }
-    | COMPILE IDENT IDENT                    { $$ = pb_compile(ctx, $2.text, $3.text, parse_vec_new(), @1); }
+    | COMPILE IDENT IDENT '(' args_opt ')'   { $$ = pb_compile(ctx, $2.text, $3.text, $5, @3); }
+    | COMPILE IDENT IDENT                    { $$ = pb_compile(ctx, $2.text, $3.text, parse_vec_new(), @3); }
     | SAMPLER_STATE '{' states '}'           { $$ = pb_sampler_state(ctx, $3, @1); }
     | SAMPLER_STATE '{' states error '}'     { $$ = pb_sampler_state(ctx, $3, @1); }
     | NULL_KW                                { $$ = pb_expr(ctx, EX_NULL, @1); }

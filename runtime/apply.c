@@ -107,18 +107,18 @@ static void bind_textures(hfx_effect *fx, const hfx_rt_pass *rp) {
 int hfx_pass_apply(hfx_pass *p) {
     if (!p) return HFX_ERR_NULL;
     hfx_effect *fx = p->fx;
-    const hfx_rt_pass *rp = &fx->sh->passes[p->index];
+    hfx_device *dev = fx->dev;
+    const hfx_rt_pass *rp = p->rt;
     if (rp->render_state_count) hfx_rs_apply(fx, rp); /* first: the alpha test reads these states */
-    hfx_rs_front_face(fx->dev);
-    if (rp->program != HFX_NONE) {
-        hfx_rt_program *prog = &fx->sh->programs[rp->program];
-        hfx_rt_use_program(fx->dev, prog->object);
+    GLenum front = dev->flip ? GL_CCW : GL_CW;         /* hfx_rs_front_face */
+    if (dev->state.front_face != front) dev->gl.FrontFace(dev->state.front_face = front);
+    hfx_rt_program *prog = rp->prog;
+    if (prog) {
+        hfx_rt_use_program(dev, prog->object);
         hfx_rt_upload_uniforms(fx, prog);
-        if (prog->pos_fixup_loc >= 0 && memcmp(prog->pos_fixup, fx->dev->pos_fixup, sizeof prog->pos_fixup) != 0) {
-            memcpy(prog->pos_fixup, fx->dev->pos_fixup, sizeof prog->pos_fixup);
-            fx->dev->gl.Uniform4fv(prog->pos_fixup_loc, 1, prog->pos_fixup);
-        }
-        if (prog->alpha_func_loc >= 0 || prog->alpha_ref_loc >= 0) hfx_rs_alpha_test(fx->dev, prog);
+        if ((prog->pos_fixup_loc >= 0 && prog->pos_fixup_serial != dev->pos_fixup_serial) || prog->alpha_func_loc >= 0 ||
+            prog->alpha_ref_loc >= 0)
+            hfx_rt_program_extras(dev, prog);
     }
     if (rp->binding_count) bind_textures(fx, rp);
     return HFX_OK;

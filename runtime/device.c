@@ -69,14 +69,16 @@ static void read_bindings(hfx_device *dev) {
 /* docs/conventions.md: D3D9 pixel centres sit half a pixel up-left of GL's; in a framebuffer
  * object D3D9's first row is the top, so y flips there (and with it the front face). */
 static void compute_fixup(hfx_device *dev, GLint width, GLint height) {
-    if (width <= 0 || height <= 0) {
-        memset(dev->pos_fixup, 0, sizeof dev->pos_fixup);
-        return;
+    float f[4] = {0, 0, 0, 0};
+    if (width > 0 && height > 0) {
+        f[0] = 1.0f / (float)width;
+        f[1] = (dev->flip ? 1.0f : -1.0f) / (float)height;
+        f[2] = dev->flip ? 1.0f : 0.0f;
+        f[3] = (float)height;
     }
-    dev->pos_fixup[0] = 1.0f / (float)width;
-    dev->pos_fixup[1] = (dev->flip ? 1.0f : -1.0f) / (float)height;
-    dev->pos_fixup[2] = dev->flip ? 1.0f : 0.0f;
-    dev->pos_fixup[3] = (float)height;
+    if (memcmp(f, dev->pos_fixup, sizeof f) == 0) return;
+    memcpy(dev->pos_fixup, f, sizeof f);
+    dev->pos_fixup_serial++; /* programs compare their copy on their next Apply */
 }
 
 /* Reads the viewport and the draw framebuffer, which the fixup follows. */
@@ -101,6 +103,7 @@ hfx_device *hfx_device_create_gl(hfx_gl_loader load) {
     if (!load) return NULL;
     hfx_device *dev = calloc(1, sizeof *dev);
     if (!dev) return NULL;
+    dev->pos_fixup_serial = 1; /* programs start at 0: they compare on their first Apply */
     if (hfx_gl_load(&dev->gl, load) != NULL) {
         free(dev);
         return NULL;
@@ -124,12 +127,6 @@ void hfx_device_destroy(hfx_device *dev) {
 const char *hfx_device_last_error(const hfx_device *dev) { return dev ? dev->error : "no device"; }
 
 void hfx_free(void *p) { free(p); }
-
-void hfx_rt_use_program(hfx_device *dev, GLuint program) {
-    if (dev->program == program) return;
-    dev->gl.UseProgram(program);
-    dev->program = program;
-}
 
 void hfx_rt_bind_unit(hfx_device *dev, int unit, GLenum target, GLuint texture, GLuint sampler) {
     hfx_unit_state *u = &dev->units[unit];

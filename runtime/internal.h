@@ -55,6 +55,7 @@ struct hfx_device {
     hfx_glstate state;             /* shadow of GL */
     hfx_rs_value rs[HFX_ST_COUNT_];/* D3D render states as the passes set them */
     float pos_fixup[4];            /* hfx_pos_fixup for the current viewport and target */
+    uint64_t pos_fixup_serial;     /* bumped when pos_fixup changes; programs compare it first */
     int flip;                      /* drawing into a framebuffer object: D3D9's row order */
     float depth_bias_scale;        /* DepthBias (0..1 depth units) to glPolygonOffset units */
     float max_anisotropy;          /* 0 without anisotropic filtering */
@@ -84,28 +85,45 @@ enum { /* hfx_upload.fn */
     UP_M2, UP_M3, UP_M4, UP_M2x3, UP_M3x2, UP_M2x4, UP_M4x2, UP_M3x4, UP_M4x3
 };
 
-/* One glUniform* call that uploads (part of) a top-level parameter. */
+enum { /* hfx_upload.kind: how Apply calls it, decided at load */
+    UK_FLOAT,   /* glUniform{1,2,3,4}fv on the words as they are */
+    UK_MATRIX,  /* glUniformMatrix*fv(transpose = GL_FALSE) */
+    UK_INT,     /* glUniform{1,2,3,4}iv */
+    UK_CONVERT  /* the GLSL type's base differs from the data's (int <-> float): through scratch */
+};
+
+typedef void(APIENTRYP hfx_uniform_f)(GLint, GLsizei, const GLfloat *);
+typedef void(APIENTRYP hfx_uniform_i)(GLint, GLsizei, const GLint *);
+typedef void(APIENTRYP hfx_uniform_m)(GLint, GLsizei, GLboolean, const GLfloat *);
+
+/* One glUniform* call that uploads (part of) a top-level parameter, with the GL entry point
+ * resolved at load so Apply makes the call without looking at the type. */
 typedef struct hfx_upload {
+    union { hfx_uniform_f f; hfx_uniform_i i; hfx_uniform_m m; } call; /* unused for UK_CONVERT */
     GLint location;
-    uint16_t fn, convert;   /* convert: the GLSL type's base differs from the data's (int <-> float) */
-    uint32_t count;         /* array elements */
-    uint32_t offset, words; /* in the value buffer */
+    GLsizei count;          /* array elements */
+    uint32_t offset;        /* in the value buffer */
+    uint16_t kind, fn;      /* UK_*, UP_* */
+    uint32_t words;
 } hfx_upload;
 
-typedef struct hfx_rt_uniform {
-    uint32_t param;         /* top-level parameter */
-    uint32_t first_upload, upload_count;
-} hfx_rt_uniform;
+/* Per program, per top-level parameter (one more for parameters outside any): its uploads and
+ * the version of the value GL holds. */
+typedef struct hfx_slot {
+    uint64_t held;          /* stamp of the value GL holds (0: none) */
+    uint32_t first, count;  /* uploads[first .. first + count); count 0: the program does not read it */
+} hfx_slot;
 
 typedef struct hfx_rt_program {
     GLuint object;
-    hfx_rt_uniform *uniforms; uint32_t uniform_count;
-    uint64_t *uploaded;     /* per uniform: stamp of the value GL holds (0: none) */
+    hfx_slot *slots;        /* per top-level parameter + 1 */
+    uint32_t *reads;        /* the top-level parameters the program reads, for a full scan */
+    uint32_t read_count;
     hfx_upload *uploads; uint32_t upload_count;
-    uint32_t *uniform_of;   /* per top-level parameter: index into uniforms, HFX_NONE if unread */
     uint64_t memo_effect;   /* the effect instance (id) whose change log this program follows */
-    uint32_t memo_epoch, memo_seen;
+    uint64_t memo_seen;     /* that log's length when the program last looked */
     GLint pos_fixup_loc;
+    uint64_t pos_fixup_serial; /* the device's serial when pos_fixup was last compared */
     float pos_fixup[4];     /* value GL holds */
     GLint alpha_func_loc, alpha_ref_loc;
     int32_t alpha_func;     /* values GL holds (-1: unknown) */
@@ -123,6 +141,7 @@ typedef struct hfx_rt_binding {
 
 typedef struct hfx_rt_pass {
     uint32_t program;       /* index into shared programs, HFX_NONE: leave the bound one */
+    hfx_rt_program *prog;   /* &programs[program], NULL when none */
     uint32_t *render_states; uint32_t render_state_count; /* indices into fx->states */
     uint32_t groups;        /* GL state groups the pass's render states touch */
     hfx_rt_binding *bindings; uint32_t binding_count;
@@ -148,10 +167,28 @@ struct hfx_annotation {
     const hfx_fx_annotation *a;
 };
 
+/* What a parameter accepts, computed at load (hfx_param.accept): the set functions test one
+ * mask and the count against words, and only a refusal or an array prefix takes the long way. */
+enum {
+    ACC_BOOL = 1u << 0,    /* a bool scalar (set_bool / get_bool) */
+    ACC_INT = 1u << 1,     /* an int scalar */
+    ACC_FLOAT = 1u << 2,   /* a float scalar */
+    ACC_FLOATS = 1u << 3,  /* float-valued scalar, vector, matrix or array of them */
+    ACC_INTS = 1u << 4,    /* int- or bool-valued ... */
+    ACC_RAW_INTS = 1u << 5,/* int-valued: set_ints stores the words as given (bools become 0/1) */
+    ACC_MATRIX = 1u << 6,  /* a float matrix up to 4x4, not an array */
+    ACC_TEXTURE = 1u << 7, /* a texture or sampler, not an array */
+    ACC_WHOLE = 1u << 8    /* count == words is a valid count */
+};
+
 struct hfx_param {
+    uint32_t *value;          /* the instance's words for this parameter */
     hfx_effect *fx;
-    const hfx_fx_param *info; /* fx->sh->fx->params[index], kept at hand for the set path */
-    uint32_t index, root;     /* root: the top-level parameter that holds it */
+    uint32_t words;           /* info->words */
+    uint32_t root;            /* the top-level parameter that holds it (top_param_count: none) */
+    uint32_t accept;          /* ACC_* */
+    uint32_t index;
+    const hfx_fx_param *info; /* fx->sh->fx->params[index] */
 };
 
 struct hfx_technique {
@@ -161,6 +198,7 @@ struct hfx_technique {
 
 struct hfx_pass {
     hfx_effect *fx;
+    const hfx_rt_pass *rt;    /* &fx->sh->passes[index] */
     uint32_t index;
 };
 
@@ -173,35 +211,85 @@ typedef struct hfx_saved {
 } hfx_saved;
 
 struct hfx_effect {
+    /* Change log, so Apply visits only the parameters changed since a program last looked:
+     * top-level indices in change order, in a ring of log_mask + 1 entries; a program that fell
+     * more than a ring behind (or last followed another instance) scans all it reads. */
+    uint32_t *log;
+    uint64_t log_len;       /* entries ever written */
+    uint64_t *stamps;       /* per top-level parameter + 1: version of its value */
+    uint64_t *stamp;        /* &dev->stamp: last version handed out (device-wide) */
+    uint32_t log_mask;
+    uint64_t id;            /* unique per instance on the device */
     hfx_shared *sh;
     hfx_device *dev;
     uint32_t *values;       /* copy of fx->values */
-    uint64_t *stamps;       /* per top-level parameter */
     GLuint *textures;       /* per parameter (objects) */
     hfx_param *params;
     hfx_technique *techniques;
     hfx_pass *passes;
     uint32_t current;       /* technique index */
     hfx_saved saved;
-    /* Change log, so Apply visits only the parameters changed since a program last looked:
-     * top-level indices in change order; compacted (epoch + 1) when full. */
-    uint64_t id;            /* unique per instance on the device */
-    uint32_t *log, log_len, log_cap, epoch, high_water;
-    uint32_t *last_logged;  /* per top-level parameter: its latest log position + 1, 0 if none */
 };
+
+/* A top-level parameter's value changed: a new version, and an entry in the change log. */
+static inline void hfx_rt_mark_changed(hfx_effect *fx, uint32_t root) {
+    fx->stamps[root] = ++*fx->stamp;
+    fx->log[fx->log_len++ & fx->log_mask] = root;
+}
+
+static inline void hfx_rt_use_program(hfx_device *dev, GLuint program) {
+    if (dev->program == program) return;
+    dev->gl.UseProgram(program);
+    dev->program = program;
+}
 
 /* device.c */
 int hfx_rt_fail(hfx_device *dev, int code, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 void hfx_rt_read_state(hfx_device *dev, hfx_glstate *s);
 void hfx_rt_write_state(hfx_device *dev, const hfx_glstate *want);
 void hfx_rt_bind_unit(hfx_device *dev, int unit, GLenum target, GLuint texture, GLuint sampler);
-void hfx_rt_use_program(hfx_device *dev, GLuint program);
 void hfx_rt_read_target(hfx_device *dev);
 
 /* program.c */
 int hfx_rt_program_build(hfx_shared *sh, uint32_t index, hfx_target target);
 void hfx_rt_program_free(hfx_device *dev, hfx_rt_program *p);
-void hfx_rt_upload_uniforms(hfx_effect *fx, hfx_rt_program *p);
+void hfx_rt_upload_all(hfx_effect *fx, hfx_rt_program *p);
+void hfx_rt_upload_slow(hfx_device *dev, const hfx_upload *up, const uint32_t *values);
+void hfx_rt_program_extras(hfx_device *dev, hfx_rt_program *p);
+
+/* Uploads the parameters whose version differs from the one this program holds, visiting only
+ * the log entries written since the program last looked when it follows this instance. */
+static inline void hfx_rt_upload_slot(hfx_effect *fx, hfx_rt_program *p, hfx_slot *s, uint64_t stamp) {
+    s->held = stamp;
+    const hfx_upload *up = &p->uploads[s->first], *end = up + s->count;
+    const uint32_t *values = fx->values;
+    for (; up != end; up++) {
+        const void *d = values + up->offset;
+        if (up->kind == UK_FLOAT) up->call.f(up->location, up->count, d);
+        else if (up->kind == UK_MATRIX) up->call.m(up->location, up->count, GL_FALSE, d);
+        else hfx_rt_upload_slow(fx->dev, up, values);
+    }
+}
+
+static inline void hfx_rt_upload_uniforms(hfx_effect *fx, hfx_rt_program *p) {
+    uint64_t seen = p->memo_seen, len = fx->log_len;
+    if (p->memo_effect != fx->id || len - seen > (uint64_t)fx->log_mask + 1) {
+        hfx_rt_upload_all(fx, p);
+        return;
+    }
+    if (seen == len) return;
+    const uint32_t *log = fx->log;
+    const uint64_t *stamps = fx->stamps;
+    uint32_t mask = fx->log_mask;
+    for (; seen != len; seen++) {
+        uint32_t r = log[seen & mask];
+        hfx_slot *s = &p->slots[r];
+        if (!s->count) continue;
+        uint64_t stamp = stamps[r];
+        if (s->held != stamp) hfx_rt_upload_slot(fx, p, s, stamp);
+    }
+    p->memo_seen = len;
+}
 
 /* sampler.c */
 void hfx_sampler_desc_default(hfx_sampler_desc *d);
@@ -228,6 +316,7 @@ void hfx_rs_front_face(hfx_device *dev);
 
 /* params.c */
 void hfx_rt_param_changed(hfx_effect *fx, uint32_t root);
+uint32_t hfx_rt_param_accept(const hfx_fx_param *i);
 
 /* load.c */
 /* Loads a compiled effect built by hand (tests, tools); takes fx, even on failure. */

@@ -165,6 +165,7 @@ static int build_pass(hfx_shared *sh, uint32_t *cap, uint32_t index) {
     const hfx_fx_pass *fp = &fx->passes[index];
     hfx_rt_pass *rp = &sh->passes[index];
     rp->program = fp->program < fx->program_count ? fp->program : HFX_NONE;
+    rp->prog = rp->program != HFX_NONE ? &sh->programs[rp->program] : NULL;
     rp->render_states = calloc(fp->state_count ? fp->state_count : 1, sizeof *rp->render_states);
     rp->bindings = calloc(HFX_MAX_UNITS, sizeof *rp->bindings);
     if (!rp->render_states || !rp->bindings) return hfx_rt_fail(sh->dev, HFX_ERR_MEMORY, "out of memory");
@@ -319,7 +320,7 @@ static uint32_t root_of(const hfx_fx_effect *fx, uint32_t i) {
 
 static void instance_free(hfx_effect *e) {
     free(e->values), free(e->stamps), free(e->textures), free(e->params), free(e->techniques), free(e->passes);
-    free(e->log), free(e->last_logged);
+    free(e->log);
     free(e);
 }
 
@@ -331,27 +332,33 @@ static hfx_effect *instance_create(hfx_shared *sh, const hfx_effect *src) {
     e->sh = sh;
     e->dev = sh->dev;
     e->values = calloc(fx->value_words ? fx->value_words : 1, sizeof *e->values);
-    e->stamps = calloc(fx->top_param_count ? fx->top_param_count : 1, sizeof *e->stamps);
+    e->stamps = calloc((size_t)fx->top_param_count + 1, sizeof *e->stamps); /* + 1: outside any */
     e->textures = calloc(fx->param_count ? fx->param_count : 1, sizeof *e->textures);
     e->params = calloc(fx->param_count ? fx->param_count : 1, sizeof *e->params);
     e->techniques = calloc(fx->technique_count ? fx->technique_count : 1, sizeof *e->techniques);
     e->passes = calloc(fx->pass_count ? fx->pass_count : 1, sizeof *e->passes);
-    e->log_cap = 4 * fx->top_param_count + 64;
-    e->log = malloc(e->log_cap * sizeof *e->log);
-    e->last_logged = calloc(fx->top_param_count ? fx->top_param_count : 1, sizeof *e->last_logged);
-    if (!e->values || !e->stamps || !e->textures || !e->params || !e->techniques || !e->passes || !e->log ||
-        !e->last_logged) {
+    uint32_t ring = 64; /* at least four changes of every parameter between two looks */
+    while (ring < 4 * (uint64_t)fx->top_param_count + 64 && ring < (1u << 30)) ring *= 2;
+    e->log_mask = ring - 1;
+    e->log = malloc(ring * sizeof *e->log);
+    if (!e->values || !e->stamps || !e->textures || !e->params || !e->techniques || !e->passes || !e->log) {
         instance_free(e);
         return NULL;
     }
+    e->stamp = &sh->dev->stamp;
     e->id = ++sh->dev->stamp;
     const uint32_t *values = src ? src->values : fx->values;
     if (values && fx->value_words) memcpy(e->values, values, fx->value_words * sizeof *e->values);
-    for (uint32_t i = 0; i < fx->top_param_count; i++) e->stamps[i] = src ? src->stamps[i] : ++sh->dev->stamp;
+    for (uint32_t i = 0; i <= fx->top_param_count; i++) e->stamps[i] = src ? src->stamps[i] : ++sh->dev->stamp;
     if (src) memcpy(e->textures, src->textures, fx->param_count * sizeof *e->textures);
-    for (uint32_t i = 0; i < fx->param_count; i++) e->params[i] = (hfx_param){e, &fx->params[i], i, root_of(fx, i)};
+    for (uint32_t i = 0; i < fx->param_count; i++) {
+        const hfx_fx_param *fp = &fx->params[i];
+        uint32_t root = root_of(fx, i);
+        e->params[i] = (hfx_param){e->values + fp->offset, e, fp->words, root < fx->top_param_count ? root : fx->top_param_count,
+                                   hfx_rt_param_accept(fp), i, fp};
+    }
     for (uint32_t i = 0; i < fx->technique_count; i++) e->techniques[i] = (hfx_technique){e, i};
-    for (uint32_t i = 0; i < fx->pass_count; i++) e->passes[i] = (hfx_pass){e, i};
+    for (uint32_t i = 0; i < fx->pass_count; i++) e->passes[i] = (hfx_pass){e, &sh->passes[i], i};
     e->current = src ? src->current : 0;
     return e;
 }
@@ -381,10 +388,11 @@ static hfx_effect *load_compiled(hfx_device *dev, hfx_fx_effect *fx, const hfx_l
 
 /* Diagnostics with only warnings still need to say why the load failed. */
 static char *append_line(char *text, const char *name, const char *msg) {
-    size_t have = text ? strlen(text) : 0, n = have + strlen(name) + strlen(msg) + 4;
+    size_t have = text ? strlen(text) : 0, n = have + strlen(name) + strlen(msg) + 5;
     char *t = realloc(text, n);
     if (!t) return text;
-    snprintf(t + have, n - have, "%s: %s\n", name, msg);
+    /* compile_none.c's message is one line without its newline */
+    snprintf(t + have, n - have, "%s%s: %s\n", have && t[have - 1] != '\n' ? "\n" : "", name, msg);
     return t;
 }
 

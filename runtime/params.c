@@ -15,38 +15,78 @@ static int fail(const hfx_param *p, int code, const char *what) {
     return hfx_rt_fail(dev_of(p), code, "parameter '%s': %s", i->name ? i->name : "", what);
 }
 
-/* A new version for a top-level parameter, logged unless an unread entry already says so. */
-static inline void param_changed(hfx_effect *fx, uint32_t root) {
-    if (root >= fx->sh->fx->top_param_count) return;
-    fx->stamps[root] = ++fx->dev->stamp;
-    uint32_t last = fx->last_logged[root];
-    if (last && last - 1 >= fx->high_water) return;
-    if (fx->log_len == fx->log_cap) { /* full: programs fall back to one full scan */
-        fx->epoch++;
-        fx->log_len = fx->high_water = 0;
-        memset(fx->last_logged, 0, fx->sh->fx->top_param_count * sizeof *fx->last_logged);
-    }
-    fx->log[fx->log_len++] = root;
-    fx->last_logged[root] = fx->log_len;
+void hfx_rt_param_changed(hfx_effect *fx, uint32_t root) {
+    uint32_t tops = fx->sh->fx->top_param_count;
+    hfx_rt_mark_changed(fx, root < tops ? root : tops);
 }
 
-void hfx_rt_param_changed(hfx_effect *fx, uint32_t root) { param_changed(fx, root); }
+/* Copies n words over dst; 1 when something changed (bitwise, as GL would see it). The common
+ * sizes compare and copy with fixed-size code. */
+static inline int copy_changed(uint32_t *dst, const void *src, size_t n) {
+    switch (n) {
+    case 1: {
+        uint32_t w;
+        memcpy(&w, src, sizeof w);
+        if (*dst == w) return 0;
+        *dst = w;
+        return 1;
+    }
+#define FIXED_(words) case words: if (memcmp(dst, src, words * 4) == 0) return 0; memcpy(dst, src, words * 4); return 1;
+    FIXED_(2) FIXED_(3) FIXED_(4) FIXED_(9) FIXED_(12) FIXED_(16)
+#undef FIXED_
+    default: {
+        const uint32_t *w = src;
+        size_t k = 0;
+        while (k < n && dst[k] == w[k]) k++; /* short, so no library calls */
+        if (k == n) return 0;
+        memcpy(dst + k, w + k, (n - k) * sizeof *dst);
+        return 1;
+    }
+    }
+}
 
 /* Writes words into the value buffer; a new version only when something changed. */
 static inline int store(hfx_param *p, uint32_t offset, const void *words, size_t n) {
-    uint32_t *dst = p->fx->values + info(p)->offset + offset;
-    const uint32_t *src = words;
-    size_t k = 0;
-    while (k < n && dst[k] == src[k]) k++; /* bitwise, as GL would see it; short, so no library calls */
-    if (k == n) return HFX_OK;
-    memcpy(dst + k, src + k, (n - k) * sizeof *dst);
-    param_changed(p->fx, p->root);
+    if (copy_changed(p->value + offset, words, n)) hfx_rt_mark_changed(p->fx, p->root);
     return HFX_OK;
 }
 
-
 static int is_numeric(const hfx_fx_param *i) {
     return i->klass == HFX_CLASS_SCALAR || i->klass == HFX_CLASS_VECTOR || i->klass == HFX_CLASS_MATRIX;
+}
+
+static int is_texture_like(const hfx_fx_param *i) {
+    return (i->type >= HFX_TYPE_TEXTURE && i->type <= HFX_TYPE_SAMPLERCUBE) && !i->elements;
+}
+
+/* Arrays take a whole number of elements, up to their length (XNA sets a prefix of an
+ * array, e.g. fewer bones than the shader holds); everything else takes exactly its size. */
+static int count_ok(const hfx_fx_param *i, size_t count) {
+    if (i->elements) {
+        uint32_t elem = i->words / i->elements;
+        return !(count == 0 || count > i->words || (elem && count % elem));
+    }
+    return count == i->words;
+}
+
+/* What the set functions accept, so their common case is one mask test and one compare. */
+uint32_t hfx_rt_param_accept(const hfx_fx_param *i) {
+    uint32_t a = 0;
+    if (i->klass == HFX_CLASS_SCALAR && !i->elements) {
+        if (i->type == HFX_TYPE_BOOL) a |= ACC_BOOL;
+        if (i->type == HFX_TYPE_INT) a |= ACC_INT;
+        if (i->type == HFX_TYPE_FLOAT) a |= ACC_FLOAT;
+    }
+    if (is_numeric(i)) {
+        if (i->type == HFX_TYPE_FLOAT) a |= ACC_FLOATS;
+        if (i->type == HFX_TYPE_INT || i->type == HFX_TYPE_BOOL) a |= ACC_INTS;
+        if (i->type == HFX_TYPE_INT) a |= ACC_RAW_INTS;
+    }
+    if (i->type == HFX_TYPE_FLOAT && i->klass == HFX_CLASS_MATRIX && !i->elements && i->rows <= 4 && i->cols <= 4)
+        a |= ACC_MATRIX;
+    if (is_texture_like(i)) a |= ACC_TEXTURE;
+    if (count_ok(i, i->words)) a |= ACC_WHOLE;
+    return a;
 }
 
 static int check_scalar(const hfx_param *p, hfx_param_type type, const char *want) {
@@ -55,78 +95,79 @@ static int check_scalar(const hfx_param *p, hfx_param_type type, const char *wan
     return HFX_OK;
 }
 
-/* Arrays take a whole number of elements, up to their length (XNA sets a prefix of an
- * array, e.g. fewer bones than the shader holds); everything else takes exactly its size. */
 static inline int check_count(const hfx_param *p, size_t count) {
-    const hfx_fx_param *i = info(p);
-    if (i->elements) {
-        uint32_t elem = i->words / i->elements;
-        if (count == 0 || count > i->words || (elem && count % elem)) return fail(p, HFX_ERR_COUNT, "wrong number of values");
-    } else if (count != i->words) {
-        return fail(p, HFX_ERR_COUNT, "wrong number of values");
-    }
-    return HFX_OK;
+    return count_ok(info(p), count) ? HFX_OK : fail(p, HFX_ERR_COUNT, "wrong number of values");
 }
 
 int hfx_param_set_bool(hfx_param *p, int v) {
     if (!p) return HFX_ERR_NULL;
-    int rc = check_scalar(p, HFX_TYPE_BOOL, "not a bool");
+    if (!(p->accept & ACC_BOOL)) return check_scalar(p, HFX_TYPE_BOOL, "not a bool");
     int32_t w = v != 0;
-    return rc ? rc : store(p, 0, &w, 1);
+    return store(p, 0, &w, 1);
 }
 
 int hfx_param_set_int(hfx_param *p, int v) {
     if (!p) return HFX_ERR_NULL;
-    int rc = check_scalar(p, HFX_TYPE_INT, "not an int");
+    if (!(p->accept & ACC_INT)) return check_scalar(p, HFX_TYPE_INT, "not an int");
     int32_t w = v;
-    return rc ? rc : store(p, 0, &w, 1);
+    return store(p, 0, &w, 1);
 }
 
 int hfx_param_set_float(hfx_param *p, float v) {
     if (!p) return HFX_ERR_NULL;
-    int rc = check_scalar(p, HFX_TYPE_FLOAT, "not a float");
-    return rc ? rc : store(p, 0, &v, 1);
+    if (!(p->accept & ACC_FLOAT)) return check_scalar(p, HFX_TYPE_FLOAT, "not a float");
+    return store(p, 0, &v, 1);
 }
 
-int hfx_param_set_floats(hfx_param *p, const float *v, size_t count) {
+/* The long way: a refusal, or a prefix of an array. */
+static __attribute__((noinline)) int set_floats_checked(hfx_param *p, const float *v, size_t count) {
     if (!p) return HFX_ERR_NULL;
     if (!v) return fail(p, HFX_ERR_NULL, "NULL values");
-    const hfx_fx_param *i = info(p);
-    if (i->type != HFX_TYPE_FLOAT || !is_numeric(i)) return fail(p, HFX_ERR_TYPE, "not float-valued");
+    if (!(p->accept & ACC_FLOATS)) return fail(p, HFX_ERR_TYPE, "not float-valued");
     int rc = check_count(p, count);
     return rc ? rc : store(p, 0, v, count);
 }
 
-int hfx_param_set_ints(hfx_param *p, const int *v, size_t count) {
+int hfx_param_set_floats(hfx_param *p, const float *v, size_t count) {
+    if (p && v && (p->accept & (ACC_FLOATS | ACC_WHOLE)) == (ACC_FLOATS | ACC_WHOLE) && count == p->words)
+        return store(p, 0, v, count);
+    return set_floats_checked(p, v, count);
+}
+
+static __attribute__((noinline)) int set_ints_checked(hfx_param *p, const int *v, size_t count) {
     if (!p) return HFX_ERR_NULL;
     if (!v) return fail(p, HFX_ERR_NULL, "NULL values");
-    const hfx_fx_param *i = info(p);
-    if ((i->type != HFX_TYPE_INT && i->type != HFX_TYPE_BOOL) || !is_numeric(i))
-        return fail(p, HFX_ERR_TYPE, "not int- or bool-valued");
+    if (!(p->accept & ACC_INTS)) return fail(p, HFX_ERR_TYPE, "not int- or bool-valued");
     int rc = check_count(p, count);
     if (rc) return rc;
-    if (i->type == HFX_TYPE_INT) return store(p, 0, v, count);
+    if (p->accept & ACC_RAW_INTS) return store(p, 0, v, count);
+    int changed = 0;
     for (size_t k = 0; k < count; k++) { /* bools are 0/1 */
-        int32_t b = v[k] != 0;
-        store(p, (uint32_t)k, &b, 1);
+        uint32_t b = v[k] != 0;
+        if (p->value[k] != b) p->value[k] = b, changed = 1;
     }
+    if (changed) hfx_rt_mark_changed(p->fx, p->root);
     return HFX_OK;
+}
+
+int hfx_param_set_ints(hfx_param *p, const int *v, size_t count) {
+    if (p && v && (p->accept & (ACC_RAW_INTS | ACC_WHOLE)) == (ACC_RAW_INTS | ACC_WHOLE) && count == p->words)
+        return store(p, 0, v, count);
+    return set_ints_checked(p, v, count);
 }
 
 static int check_matrix(const hfx_param *p) {
-    const hfx_fx_param *i = info(p);
-    if (i->type != HFX_TYPE_FLOAT || i->klass != HFX_CLASS_MATRIX || i->elements || i->rows > 4 || i->cols > 4)
-        return fail(p, HFX_ERR_TYPE, "not a matrix");
-    return HFX_OK;
+    return p->accept & ACC_MATRIX ? HFX_OK : fail(p, HFX_ERR_TYPE, "not a matrix");
 }
 
 /* Smaller matrices take the top-left rows x cols of the 4x4, as XNA does. */
-static int set_matrix(hfx_param *p, const float m[16], int transpose) {
+static inline int set_matrix(hfx_param *p, const float m[16], int transpose) {
     if (!p) return HFX_ERR_NULL;
     if (!m) return fail(p, HFX_ERR_NULL, "NULL matrix");
     int rc = check_matrix(p);
     if (rc) return rc;
     const hfx_fx_param *i = info(p);
+    if (!transpose && i->rows == 4 && i->cols == 4) return store(p, 0, m, 16); /* 4x4: as given */
     float out[16];
     for (uint32_t r = 0; r < i->rows; r++)
         for (uint32_t c = 0; c < i->cols; c++) out[r * i->cols + c] = transpose ? m[c * 4 + r] : m[r * 4 + c];
@@ -136,13 +177,9 @@ static int set_matrix(hfx_param *p, const float m[16], int transpose) {
 int hfx_param_set_matrix(hfx_param *p, const float m[16]) { return set_matrix(p, m, 0); }
 int hfx_param_set_matrix_transpose(hfx_param *p, const float m[16]) { return set_matrix(p, m, 1); }
 
-static int is_texture_like(const hfx_fx_param *i) {
-    return (i->type >= HFX_TYPE_TEXTURE && i->type <= HFX_TYPE_SAMPLERCUBE) && !i->elements;
-}
-
 int hfx_param_set_texture(hfx_param *p, unsigned int tex) {
     if (!p) return HFX_ERR_NULL;
-    if (!is_texture_like(info(p))) return fail(p, HFX_ERR_TYPE, "not a texture or sampler");
+    if (!(p->accept & ACC_TEXTURE)) return fail(p, HFX_ERR_TYPE, "not a texture or sampler");
     p->fx->textures[p->index] = tex;
     return HFX_OK;
 }

@@ -129,10 +129,34 @@ static int add_upload(build *b, const char *name, const hfx_fx_param *p, uint32_
     up.location = b->sh->dev->gl.GetUniformLocation(b->p->object, loc_name);
     if (up.location < 0) up.location = b->sh->dev->gl.GetUniformLocation(b->p->object, name);
     if (up.location < 0) return HFX_OK;
-    up.count = count < (uint32_t)u->size ? count : (uint32_t)u->size;
+    up.count = (GLsizei)(count < (uint32_t)u->size ? count : (uint32_t)u->size);
     up.offset = p->offset;
-    up.words = up.count * comps;
-    up.convert = (uint16_t)(is_int != (p->type != HFX_TYPE_FLOAT));
+    up.words = (uint32_t)up.count * comps;
+    int convert = is_int != (p->type != HFX_TYPE_FLOAT);
+    const hfx_gl *gl = &b->sh->dev->gl;
+    if (convert) up.kind = UK_CONVERT;
+    else if (is_int) up.kind = UK_INT;
+    else if (up.fn >= UP_M2) up.kind = UK_MATRIX;
+    else up.kind = UK_FLOAT;
+    switch (up.fn) {
+    case UP_F1: up.call.f = gl->Uniform1fv; break;
+    case UP_F2: up.call.f = gl->Uniform2fv; break;
+    case UP_F3: up.call.f = gl->Uniform3fv; break;
+    case UP_F4: up.call.f = gl->Uniform4fv; break;
+    case UP_I1: up.call.i = gl->Uniform1iv; break;
+    case UP_I2: up.call.i = gl->Uniform2iv; break;
+    case UP_I3: up.call.i = gl->Uniform3iv; break;
+    case UP_I4: up.call.i = gl->Uniform4iv; break;
+    case UP_M2: up.call.m = gl->UniformMatrix2fv; break;
+    case UP_M3: up.call.m = gl->UniformMatrix3fv; break;
+    case UP_M4: up.call.m = gl->UniformMatrix4fv; break;
+    case UP_M2x3: up.call.m = gl->UniformMatrix2x3fv; break;
+    case UP_M3x2: up.call.m = gl->UniformMatrix3x2fv; break;
+    case UP_M2x4: up.call.m = gl->UniformMatrix2x4fv; break;
+    case UP_M4x2: up.call.m = gl->UniformMatrix4x2fv; break;
+    case UP_M3x4: up.call.m = gl->UniformMatrix3x4fv; break;
+    default: up.call.m = gl->UniformMatrix4x3fv; break;
+    }
     if (b->p->upload_count == b->upload_cap) {
         uint32_t cap = b->upload_cap ? b->upload_cap * 2 : 8;
         hfx_upload *n = realloc(b->p->uploads, cap * sizeof *n);
@@ -141,7 +165,7 @@ static int add_upload(build *b, const char *name, const hfx_fx_param *p, uint32_
         b->upload_cap = cap;
     }
     b->p->uploads[b->p->upload_count++] = up;
-    if (up.convert && up.words > b->sh->dev->scratch_size) {
+    if (convert && up.words > b->sh->dev->scratch_size) {
         float *s = realloc(b->sh->dev->scratch, up.words * sizeof *s);
         if (!s) return HFX_ERR_MEMORY;
         b->sh->dev->scratch = s;
@@ -185,23 +209,22 @@ static int add_param(build *b, uint32_t index, const char *path) {
 static int resolve_uniforms(build *b, const hfx_fx_program *fp) {
     hfx_rt_program *p = b->p;
     uint32_t tops = b->sh->fx->top_param_count;
-    p->uniforms = calloc(fp->uniform_count ? fp->uniform_count : 1, sizeof *p->uniforms);
-    p->uploaded = calloc(fp->uniform_count ? fp->uniform_count : 1, sizeof *p->uploaded);
-    p->uniform_of = malloc((tops ? tops : 1) * sizeof *p->uniform_of);
-    if (!p->uniforms || !p->uploaded || !p->uniform_of) return HFX_ERR_MEMORY;
-    for (uint32_t i = 0; i < tops; i++) p->uniform_of[i] = HFX_NONE;
+    p->slots = calloc((size_t)tops + 1, sizeof *p->slots); /* + 1: parameters outside any top-level one */
+    p->reads = calloc(fp->uniform_count ? fp->uniform_count : 1, sizeof *p->reads);
+    if (!p->slots || !p->reads) return HFX_ERR_MEMORY;
     for (uint32_t i = 0; i < fp->uniform_count; i++) {
         uint32_t param = fp->uniforms[i].param;
-        if (param >= b->sh->fx->top_param_count || !b->sh->fx->params[param].glsl_name) continue;
-        if (p->uniform_of[param] != HFX_NONE) continue; /* listed twice */
-        p->uniform_of[param] = p->uniform_count;
-        hfx_rt_uniform *u = &p->uniforms[p->uniform_count++];
-        u->param = param;
-        u->first_upload = p->upload_count;
+        if (param >= tops || !b->sh->fx->params[param].glsl_name) continue;
+        hfx_slot *slot = &p->slots[param];
+        if (slot->held) continue; /* listed twice */
+        slot->held = 1;
+        slot->first = p->upload_count;
         int rc = add_param(b, param, b->sh->fx->params[param].glsl_name);
         if (rc) return rc;
-        u->upload_count = p->upload_count - u->first_upload;
+        slot->count = p->upload_count - slot->first;
+        if (slot->count) p->reads[p->read_count++] = param;
     }
+    for (uint32_t i = 0; i < tops; i++) p->slots[i].held = 0; /* GL holds no value yet */
     return HFX_OK;
 }
 
@@ -218,6 +241,7 @@ static void set_sampler_units(hfx_shared *sh, hfx_rt_program *p, const hfx_fx_pr
     }
     p->pos_fixup_loc = gl->GetUniformLocation(p->object, "hfx_pos_fixup");
     memset(p->pos_fixup, 0, sizeof p->pos_fixup); /* GL's value for an unset uniform */
+    p->pos_fixup_serial = 0;                      /* the device's starts at 1: compare once */
     p->alpha_func_loc = gl->GetUniformLocation(p->object, "hfx_alpha_func");
     p->alpha_ref_loc = gl->GetUniformLocation(p->object, "hfx_alpha_ref");
     p->alpha_func = -1;
@@ -250,16 +274,29 @@ int hfx_rt_program_build(hfx_shared *sh, uint32_t index, hfx_target target) {
 
 void hfx_rt_program_free(hfx_device *dev, hfx_rt_program *p) {
     if (p->object) dev->gl.DeleteProgram(p->object);
-    free(p->uniforms);
-    free(p->uploaded);
-    free(p->uniform_of);
+    free(p->slots);
+    free(p->reads);
     free(p->uploads);
     memset(p, 0, sizeof *p);
 }
 
-static inline const void *upload_data(hfx_device *dev, const hfx_upload *up, const uint32_t *src) {
-    if (!up->convert) return src;
-    /* GLSL declared int where the data is float, or the reverse: convert through scratch. */
+/* What Apply does not inline: int uniforms, and uploads converting int <-> float through scratch. */
+void hfx_rt_upload_slow(hfx_device *dev, const hfx_upload *up, const uint32_t *values) {
+    const uint32_t *src = values + up->offset;
+    if (up->kind == UK_FLOAT) {
+        up->call.f(up->location, up->count, (const void *)src);
+        return;
+    }
+    if (up->kind == UK_MATRIX) {
+        up->call.m(up->location, up->count, GL_FALSE, (const void *)src);
+        return;
+    }
+    if (up->kind == UK_INT) {
+        up->call.i(up->location, up->count, (const void *)src);
+        return;
+    }
+    /* GLSL declared int where the data is float, or the reverse. */
+    hfx_gl *gl = &dev->gl;
     int to_int = up->fn >= UP_I1 && up->fn <= UP_I4;
     for (uint32_t i = 0; i < up->words; i++) {
         if (to_int) {
@@ -271,13 +308,8 @@ static inline const void *upload_data(hfx_device *dev, const hfx_upload *up, con
             dev->scratch[i] = (float)(int32_t)src[i];
         }
     }
-    return dev->scratch;
-}
-
-static inline void upload(hfx_device *dev, const hfx_upload *up, const uint32_t *values) {
-    hfx_gl *gl = &dev->gl;
-    const void *d = upload_data(dev, up, values + up->offset);
-    GLsizei n = (GLsizei)up->count;
+    const void *d = dev->scratch;
+    GLsizei n = up->count;
     switch (up->fn) {
     case UP_F1: gl->Uniform1fv(up->location, n, d); break;
     case UP_F2: gl->Uniform2fv(up->location, n, d); break;
@@ -300,28 +332,28 @@ static inline void upload(hfx_device *dev, const hfx_upload *up, const uint32_t 
     }
 }
 
-/* Uploads the parameters whose version differs from the one this program last received.
- * Versions are device-wide stamps, so clones sharing the program stay correct. */
-static inline void upload_if_changed(hfx_effect *fx, hfx_rt_program *p, uint32_t i) {
-    const hfx_rt_uniform *u = &p->uniforms[i];
-    uint64_t stamp = fx->stamps[u->param];
-    if (p->uploaded[i] == stamp) return;
-    for (uint32_t k = 0; k < u->upload_count; k++) upload(fx->dev, &p->uploads[u->first_upload + k], fx->values);
-    p->uploaded[i] = stamp;
-}
-
-void hfx_rt_upload_uniforms(hfx_effect *fx, hfx_rt_program *p) {
-    if (p->memo_effect == fx->id && p->memo_epoch == fx->epoch) {
-        /* the same instance as last time: only what its log added since */
-        for (uint32_t k = p->memo_seen; k < fx->log_len; k++) {
-            uint32_t i = p->uniform_of[fx->log[k]];
-            if (i != HFX_NONE) upload_if_changed(fx, p, i);
-        }
-    } else {
-        for (uint32_t i = 0; i < p->uniform_count; i++) upload_if_changed(fx, p, i);
+/* Every parameter the program reads whose version differs from the one GL holds: when the
+ * program last followed another instance (clones share programs; versions are device-wide, so
+ * a clone's unchanged values are not sent again) or fell a whole log ring behind. */
+void hfx_rt_upload_all(hfx_effect *fx, hfx_rt_program *p) {
+    for (uint32_t k = 0; k < p->read_count; k++) {
+        uint32_t r = p->reads[k];
+        hfx_slot *s = &p->slots[r];
+        uint64_t stamp = fx->stamps[r];
+        if (s->held != stamp) hfx_rt_upload_slot(fx, p, s, stamp);
     }
     p->memo_effect = fx->id;
-    p->memo_epoch = fx->epoch;
     p->memo_seen = fx->log_len;
-    if (fx->log_len > fx->high_water) fx->high_water = fx->log_len;
+}
+
+/* hfx_pos_fixup and the alpha test's uniforms, for programs that declare them. */
+void hfx_rt_program_extras(hfx_device *dev, hfx_rt_program *p) {
+    if (p->pos_fixup_loc >= 0 && p->pos_fixup_serial != dev->pos_fixup_serial) {
+        p->pos_fixup_serial = dev->pos_fixup_serial;
+        if (memcmp(p->pos_fixup, dev->pos_fixup, sizeof p->pos_fixup) != 0) {
+            memcpy(p->pos_fixup, dev->pos_fixup, sizeof p->pos_fixup);
+            dev->gl.Uniform4fv(p->pos_fixup_loc, 1, p->pos_fixup);
+        }
+    }
+    if (p->alpha_func_loc >= 0 || p->alpha_ref_loc >= 0) hfx_rs_alpha_test(dev, p);
 }

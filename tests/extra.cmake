@@ -7,3 +7,72 @@ endif()
 if(TARGET tools_test_hfxc AND TARGET hfxc)
   add_dependencies(tools_test_hfxc hfxc) # the test runs the built program
 endif()
+
+# runtime_only: a program linked with hfx_runtime alone (no compiler) loads the .hfxo files hfxc
+# writes and renders the pixels hfx renders from the .fx. hfxo_reference (linked with hfx) draws
+# the same scenes from the .fx first (a fixture) and leaves raw RGBA pictures for the comparison.
+set(HFX_RTONLY_DIR ${CMAKE_CURRENT_SOURCE_DIR}/runtime_only)
+set(HFX_RTONLY_REFS ${CMAKE_CURRENT_BINARY_DIR}/runtime_only/references)
+file(MAKE_DIRECTORY ${HFX_RTONLY_REFS})
+set(HFX_RTONLY_SCENES ${HFX_RTONLY_DIR}/support/rto_scenes.c ${CMAKE_CURRENT_SOURCE_DIR}/seeds/support/seedmath.c)
+set(HFX_RTONLY_INCLUDES ${HFX_RTONLY_DIR}/support ${CMAKE_CURRENT_SOURCE_DIR}/seeds/support)
+
+add_executable(runtime_only_hfxo_reference ${HFX_RTONLY_DIR}/hfxo_reference.c ${HFX_RTONLY_SCENES})
+target_include_directories(runtime_only_hfxo_reference PRIVATE ${HFX_RTONLY_INCLUDES})
+target_link_libraries(runtime_only_hfxo_reference PRIVATE hfx hfx_test_harness m)
+add_test(NAME runtime_only/hfxo_reference COMMAND runtime_only_hfxo_reference ${HFX_RTONLY_REFS}
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties(runtime_only/hfxo_reference PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 600 LABELS runtime_only
+  ENVIRONMENT "HFX_BUILD_DIR=${CMAKE_BINARY_DIR}" FIXTURES_SETUP hfx_rtonly_references)
+
+add_executable(runtime_only_test_hfxo_runtime ${HFX_RTONLY_DIR}/test_hfxo_runtime.c ${HFX_RTONLY_SCENES})
+target_include_directories(runtime_only_test_hfxo_runtime PRIVATE ${HFX_RTONLY_INCLUDES})
+target_link_libraries(runtime_only_test_hfxo_runtime PRIVATE hfx_runtime hfx_test_harness m)
+if(TARGET hfxc)
+  add_dependencies(runtime_only_test_hfxo_runtime hfxc) # the test runs the built program
+endif()
+add_test(NAME runtime_only/test_hfxo_runtime COMMAND runtime_only_test_hfxo_runtime ${HFX_RTONLY_REFS}
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties(runtime_only/test_hfxo_runtime PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 600 LABELS runtime_only
+  ENVIRONMENT "HFX_BUILD_DIR=${CMAKE_BINARY_DIR}" FIXTURES_REQUIRED hfx_rtonly_references)
+
+# The compiler must not reach that program, directly or through a library it links.
+function(hfx_rtonly_assert_no_compiler target)
+  set(seen "")
+  set(todo ${target})
+  while(todo)
+    list(POP_FRONT todo t)
+    if(t IN_LIST seen OR NOT TARGET ${t})
+      continue()
+    endif()
+    list(APPEND seen ${t})
+    if(t STREQUAL "hfx_compiler" OR t STREQUAL "hfx")
+      message(FATAL_ERROR "${target} links ${t}: runtime_only tests must link hfx_runtime alone")
+    endif()
+    get_target_property(libs ${t} LINK_LIBRARIES)
+    get_target_property(ilibs ${t} INTERFACE_LINK_LIBRARIES)
+    foreach(l IN LISTS libs ilibs)
+      string(REGEX REPLACE "^\\$<LINK_ONLY:(.*)>$" "\\1" l "${l}") # static libraries' private deps
+      if(l AND NOT l MATCHES "NOTFOUND$")
+        list(APPEND todo ${l})
+      endif()
+    endforeach()
+  endwhile()
+endfunction()
+hfx_rtonly_assert_no_compiler(runtime_only_test_hfxo_runtime)
+
+# And the linked executable holds no compiler code: nm finds none of libhfx_compiler.a's global
+# symbols defined in it, while it does in hfxo_reference (linked with hfx): the check can see them.
+if(CMAKE_NM)
+  add_test(NAME runtime_only/no_compiler_symbols
+    COMMAND ${CMAKE_COMMAND} -DNM=${CMAKE_NM} -DRUNTIME_ONLY=$<TARGET_FILE:runtime_only_test_hfxo_runtime>
+            -DWITH_COMPILER=$<TARGET_FILE:runtime_only_hfxo_reference> -DCOMPILER_LIB=$<TARGET_FILE:hfx_compiler>
+            -P ${HFX_RTONLY_DIR}/no_compiler_symbols.cmake)
+  set_tests_properties(runtime_only/no_compiler_symbols PROPERTIES LABELS runtime_only)
+endif()
+
+# tests/runtime/test_targets.c draws the same scenes with the GLSL 110 and ES 300 targets.
+if(TARGET runtime_test_targets)
+  target_sources(runtime_test_targets PRIVATE ${HFX_RTONLY_SCENES})
+  target_include_directories(runtime_test_targets PRIVATE ${HFX_RTONLY_INCLUDES})
+endif()

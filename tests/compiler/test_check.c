@@ -183,9 +183,9 @@ static void entry_points(void) {
     snprintf(src, sizeof src, "%stechnique T { pass P { PixelShader = compile ps_2_0 ps(true, 2); } }\n", head);
     EXPECT_DIAGS(src, "");
     snprintf(src, sizeof src, "%stechnique T { pass P { PixelShader = compile ps_2_0 ps(true); } }\n", head);
-    EXPECT_DIAGS(src, "t.fx(2,38): error X3013: 'ps': no matching 1 parameter function\n");
+    EXPECT_DIAGS(src, "t.fx(2,53): error X3013: 'ps': no matching 1 parameter function\n");
     EXPECT_DIAGS("technique T { pass P { VertexShader = compile vs_2_0 nothere(); } }\n",
-                 "t.fx(1,39): error X3004: undeclared identifier 'nothere'\n");
+                 "t.fx(1,54): error X3004: undeclared identifier 'nothere'\n");
     /* an argument of a compile is an expression: unknown names are errors there */
     snprintf(src, sizeof src, "%stechnique T { pass P { PixelShader = compile ps_2_0 ps(true, what); } }\n", head);
     EXPECT_DIAGS(src, "t.fx(2,62): error X3004: undeclared identifier 'what'\n");
@@ -227,7 +227,7 @@ static void recursion(void) {
                  "float4 ps() : COLOR { return g(1); }\nfloat4 vs() : POSITION;\n"
                  "technique T { pass P { VertexShader = compile vs_2_0 vs(); PixelShader = compile ps_2_0 ps(); } }\n",
                  "t.fx(2,27): error X3501: 'h': function is declared but not defined\n"
-                 "t.fx(5,39): error X3501: 'vs': entrypoint not found\n");
+                 "t.fx(5,54): error X3501: 'vs': entrypoint not found\n");
     /* a diamond is no cycle */
     EXPECT_DIAGS("float a(float x) { return x; }\nfloat b(float x) { return a(x); }\nfloat c(float x) { return a(x) + b(x); }\n", "");
 }
