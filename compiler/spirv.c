@@ -7,80 +7,19 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "spirv_loc.h"
+
 #ifdef HFX_HAVE_GLSLANG
 #include <glslang/Include/glslang_c_interface.h>
 #include <glslang/Public/resource_limits_c.h>
 #endif
 
-/* --- uniform locations ---------------------------------------------------------------------- */
+/* --- uniform locations: common/spirv_loc.c, shared with the runtime ----------------------------- */
 
-/* Locations a parameter takes in GL's default uniform block: one per scalar, vector, matrix or
- * sampler, array elements and struct members one after the other (small: the builder caps
- * parameters at 2^20 values and 2^16 elements and members). */
-static uint64_t param_locations(const hfx_fx_effect *fx, uint32_t i, int depth) {
-    if (i >= fx->param_count || depth > 64) return 0;
-    const hfx_fx_param *p = &fx->params[i];
-    if (p->elements) {
-        uint64_t each = p->child_count ? param_locations(fx, p->first_child, depth + 1) : 1;
-        return each * p->elements;
-    }
-    if (p->klass == HFX_CLASS_STRUCT) {
-        uint64_t n = 0;
-        for (uint32_t c = 0; c < p->child_count; c++) n += param_locations(fx, p->first_child + c, depth + 1);
-        return n;
-    }
-    return 1;
-}
-
-/* The program's uniform parameter reading GLSL name `name` (len bytes): its index in p->uniforms,
- * and its location in *loc (the locations of the uniforms before it). -1 when none. */
-static int64_t program_uniform(const hfx_fx_effect *fx, const hfx_fx_program *p, const char *name, size_t len,
-                               uint64_t *loc) {
-    uint64_t at = 0;
-    for (uint32_t k = 0; k < p->uniform_count; k++) {
-        uint32_t param = p->uniforms[k].param;
-        if (param >= fx->param_count) continue;
-        const char *g = fx->params[param].glsl_name;
-        if (g && strlen(g) == len && strncmp(g, name, len) == 0) {
-            *loc = at;
-            return k;
-        }
-        at += param_locations(fx, param, 0);
-    }
-    *loc = at; /* the end of the uniforms: where the samplers start */
-    return -1;
-}
-
-static int64_t program_sampler(const hfx_fx_program *p, const char *name, size_t len) {
-    for (uint32_t k = 0; k < p->sampler_count; k++) {
-        const char *g = p->samplers[k].glsl_name;
-        if (g && strlen(g) == len && strncmp(g, name, len) == 0) return k;
-    }
-    return -1;
-}
-
-/* Known internal uniforms come first after the samplers, at fixed places. */
-static const char *const known_internal[] = {"hfx_pos_fixup", "hfx_alpha_func", "hfx_alpha_ref"};
-enum { KNOWN_INTERNAL = sizeof known_internal / sizeof *known_internal };
-
-static int64_t known_index(const char *name, size_t len) {
-    for (uint32_t i = 0; i < KNOWN_INTERNAL; i++)
-        if (strlen(known_internal[i]) == len && strncmp(known_internal[i], name, len) == 0) return i;
-    return -1;
-}
+enum { KNOWN_INTERNAL = HFX_SPIRV_KNOWN_COUNT };
 
 int32_t hfx_spirv_location(const hfx_fx_effect *fx, const hfx_fx_program *p, const char *glsl_name) {
-    if (!fx || !p || !glsl_name) return -1;
-    size_t len = strlen(glsl_name);
-    uint64_t loc;
-    int64_t k = program_uniform(fx, p, glsl_name, len, &loc);
-    if (k < 0) {
-        int64_t smp = program_sampler(p, glsl_name, len), known = known_index(glsl_name, len);
-        if (smp >= 0) loc += (uint64_t)smp;
-        else if (known >= 0) loc += p->sampler_count + (uint64_t)known;
-        else return -1;
-    }
-    return loc > INT32_MAX ? -1 : (int32_t)loc;
+    return hfx_fx_spirv_location(fx, p, glsl_name);
 }
 
 /* --- scanning the GLSL's top-level uniform declarations -------------------------------------- */
@@ -171,8 +110,8 @@ static void collect_other(void *ctx, const uniform_decl *u, const char *line, co
     other_set *s = ctx;
     uint64_t loc;
     (void)line, (void)next;
-    if (!u || program_uniform(s->fx, s->prog, u->name, u->name_len, &loc) >= 0 ||
-        program_sampler(s->prog, u->name, u->name_len) >= 0 || known_index(u->name, u->name_len) >= 0)
+    if (!u || hfx_fx_spirv_uniform(s->fx, s->prog, u->name, u->name_len, &loc) >= 0 ||
+        hfx_fx_spirv_sampler(s->prog, u->name, u->name_len) >= 0 || hfx_fx_spirv_known(u->name, u->name_len) >= 0)
         return;
     if (other_index(s, u->name, u->name_len) >= 0 || s->count == MAX_OTHER) return;
     s->names[s->count] = u->name;
@@ -305,13 +244,13 @@ static void rewrite_line(void *ctx, const uniform_decl *u, const char *line, con
     }
     /* Uniforms, then samplers, then the known internal ones, then any other: see spirv.h. */
     uint64_t end;
-    int64_t loc = -1, k = program_uniform(r->fx, r->prog, u->name, u->name_len, &end), unit = -1;
+    int64_t loc = -1, k = hfx_fx_spirv_uniform(r->fx, r->prog, u->name, u->name_len, &end), unit = -1;
     if (k >= 0) {
         loc = (int64_t)end;
-    } else if ((k = program_sampler(r->prog, u->name, u->name_len)) >= 0) {
+    } else if ((k = hfx_fx_spirv_sampler(r->prog, u->name, u->name_len)) >= 0) {
         loc = (int64_t)end + k;
         unit = r->prog->samplers[k].unit;
-    } else if ((k = known_index(u->name, u->name_len)) >= 0) {
+    } else if ((k = hfx_fx_spirv_known(u->name, u->name_len)) >= 0) {
         loc = (int64_t)(end + r->prog->sampler_count) + k;
     } else if ((k = other_index(r->other, u->name, u->name_len)) >= 0) {
         loc = (int64_t)(end + r->prog->sampler_count + KNOWN_INTERNAL) + k;

@@ -115,10 +115,8 @@ int hfx_pass_apply(hfx_pass *p) {
     hfx_rt_program *prog = rp->prog;
     if (prog) {
         hfx_rt_use_program(dev, prog->object);
-        hfx_rt_upload_uniforms(fx, prog);
-        if ((prog->pos_fixup_loc >= 0 && prog->pos_fixup_serial != dev->pos_fixup_serial) || prog->alpha_func_loc >= 0 ||
-            prog->alpha_ref_loc >= 0)
-            hfx_rt_program_extras(dev, prog);
+        if (prog->memo_seen != fx->log_len || prog->memo_effect != fx->id) hfx_rt_upload_uniforms(fx, prog);
+        if (prog->pos_fixup_serial != dev->pos_fixup_serial || prog->alpha_test) hfx_rt_program_extras(dev, prog);
     }
     if (rp->binding_count) bind_textures(fx, rp);
     return HFX_OK;

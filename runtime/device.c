@@ -110,6 +110,7 @@ hfx_device *hfx_device_create_gl(hfx_gl_loader load) {
     }
     while (dev->gl.GetError() != GL_NO_ERROR) {}
     read_caps(dev);
+    hfx_rt_spirv_init(dev, load);
     read_bindings(dev);
     hfx_rt_read_target(dev);
     hfx_rt_read_state(dev, &dev->state);

@@ -45,8 +45,19 @@ typedef struct hfx_rs_value {
     float f[4];
 } hfx_rs_value;
 
+/* The entry points loading SPIR-V needs beyond GL 3.3 (ARB_gl_spirv, GL 4.1's glShaderBinary,
+ * GL 4.3's program interface queries), loaded only when the context has them: ok = all there. */
+typedef struct hfx_gl_spirv {
+    int ok;
+    PFNGLSHADERBINARYPROC ShaderBinary;
+    PFNGLSPECIALIZESHADERPROC SpecializeShader; /* glSpecializeShader or glSpecializeShaderARB */
+    PFNGLGETPROGRAMINTERFACEIVPROC GetProgramInterfaceiv;
+    PFNGLGETPROGRAMRESOURCEIVPROC GetProgramResourceiv;
+} hfx_gl_spirv;
+
 struct hfx_device {
     hfx_gl gl;
+    hfx_gl_spirv spirv;            /* runtime/spirv_load.c */
     char error[1024];
     uint64_t stamp;                /* last parameter version handed out */
     GLuint program;                /* bound program */
@@ -107,11 +118,21 @@ typedef struct hfx_upload {
     uint32_t words;
 } hfx_upload;
 
+enum { /* hfx_slot.mode */
+    SLOT_NONE,   /* the program does not read the parameter */
+    SLOT_FLOAT,  /* one UK_FLOAT upload: slot.up */
+    SLOT_MATRIX, /* one UK_MATRIX upload: slot.up */
+    SLOT_OTHER   /* uploads[first .. first + count) */
+};
+
 /* Per program, per top-level parameter (one more for parameters outside any): its uploads and
  * the version of the value GL holds. */
 typedef struct hfx_slot {
     uint64_t held;          /* stamp of the value GL holds (0: none) */
-    uint32_t first, count;  /* uploads[first .. first + count); count 0: the program does not read it */
+    hfx_upload up;          /* the first upload, at hand for the common single-call case */
+    uint32_t mode;          /* SLOT_* */
+    uint32_t first, count;  /* all its uploads */
+    uint32_t pad_;          /* 64 bytes: indexing is a shift */
 } hfx_slot;
 
 typedef struct hfx_rt_program {
@@ -126,6 +147,7 @@ typedef struct hfx_rt_program {
     uint64_t pos_fixup_serial; /* the device's serial when pos_fixup was last compared */
     float pos_fixup[4];     /* value GL holds */
     GLint alpha_func_loc, alpha_ref_loc;
+    int alpha_test;         /* either location is used */
     int32_t alpha_func;     /* values GL holds (-1: unknown) */
     float alpha_ref;
 } hfx_rt_program;
@@ -184,6 +206,7 @@ enum {
 struct hfx_param {
     uint32_t *value;          /* the instance's words for this parameter */
     hfx_effect *fx;
+    size_t floats_n, ints_n;  /* the count set_floats / set_ints take without a second look (else SIZE_MAX) */
     uint32_t words;           /* info->words */
     uint32_t root;            /* the top-level parameter that holds it (top_param_count: none) */
     uint32_t accept;          /* ACC_* */
@@ -256,40 +279,39 @@ void hfx_rt_program_free(hfx_device *dev, hfx_rt_program *p);
 void hfx_rt_upload_all(hfx_effect *fx, hfx_rt_program *p);
 void hfx_rt_upload_slow(hfx_device *dev, const hfx_upload *up, const uint32_t *values);
 void hfx_rt_program_extras(hfx_device *dev, hfx_rt_program *p);
+void hfx_rt_program_ready(hfx_rt_program *p, uint32_t tops); /* after the uploads and extras are resolved */
 
 /* Uploads the parameters whose version differs from the one this program holds, visiting only
  * the log entries written since the program last looked when it follows this instance. */
-static inline void hfx_rt_upload_slot(hfx_effect *fx, hfx_rt_program *p, hfx_slot *s, uint64_t stamp) {
-    s->held = stamp;
-    const hfx_upload *up = &p->uploads[s->first], *end = up + s->count;
-    const uint32_t *values = fx->values;
-    for (; up != end; up++) {
-        const void *d = values + up->offset;
-        if (up->kind == UK_FLOAT) up->call.f(up->location, up->count, d);
-        else if (up->kind == UK_MATRIX) up->call.m(up->location, up->count, GL_FALSE, d);
-        else hfx_rt_upload_slow(fx->dev, up, values);
-    }
-}
+void hfx_rt_upload_slot(hfx_effect *fx, const hfx_rt_program *p, const hfx_slot *s);
 
+/* Uploads the parameters whose version differs from the one this program holds, visiting only
+ * the log entries written since the program last looked when it follows this instance. Fields
+ * are read through fx and p on purpose: the GL calls clobber registers, reloading is cheaper. */
 static inline void hfx_rt_upload_uniforms(hfx_effect *fx, hfx_rt_program *p) {
-    uint64_t seen = p->memo_seen, len = fx->log_len;
-    if (p->memo_effect != fx->id || len - seen > (uint64_t)fx->log_mask + 1) {
+    uint64_t seen = p->memo_seen;
+    if (p->memo_effect != fx->id || fx->log_len - seen > (uint64_t)fx->log_mask + 1) {
         hfx_rt_upload_all(fx, p);
         return;
     }
-    if (seen == len) return;
-    const uint32_t *log = fx->log;
-    const uint64_t *stamps = fx->stamps;
-    uint32_t mask = fx->log_mask;
-    for (; seen != len; seen++) {
-        uint32_t r = log[seen & mask];
+    do {
+        uint32_t r = fx->log[seen & fx->log_mask];
         hfx_slot *s = &p->slots[r];
-        if (!s->count) continue;
-        uint64_t stamp = stamps[r];
-        if (s->held != stamp) hfx_rt_upload_slot(fx, p, s, stamp);
-    }
-    p->memo_seen = len;
+        seen++;
+        if (s->mode == SLOT_NONE || s->held == fx->stamps[r]) continue;
+        s->held = fx->stamps[r];
+        const void *d = fx->values + s->up.offset;
+        if (s->mode == SLOT_FLOAT) s->up.call.f(s->up.location, s->up.count, d);
+        else if (s->mode == SLOT_MATRIX) s->up.call.m(s->up.location, s->up.count, GL_FALSE, d);
+        else hfx_rt_upload_slot(fx, p, s);
+    } while (seen != fx->log_len);
+    p->memo_seen = seen;
 }
+
+/* spirv_load.c: programs from SPIR-V (HFX_TARGET_SPIRV), uniforms by the compiler's locations. */
+void hfx_rt_spirv_init(hfx_device *dev, hfx_gl_loader load); /* at device creation */
+int hfx_rt_spirv_check(hfx_device *dev, const hfx_fx_effect *fx); /* HFX_ERR_GL when GL cannot load SPIR-V */
+int hfx_rt_spirv_program_build(hfx_shared *sh, uint32_t index);
 
 /* sampler.c */
 void hfx_sampler_desc_default(hfx_sampler_desc *d);

@@ -278,9 +278,7 @@ static int check_effect(hfx_device *dev, const hfx_fx_effect *fx, hfx_target tar
         if ((uint64_t)fx->techniques[i].first_pass + fx->techniques[i].pass_count > fx->pass_count ||
             (uint64_t)fx->techniques[i].first_annotation + fx->techniques[i].annotation_count > fx->annotation_count)
             return hfx_rt_fail(dev, HFX_ERR_LOAD, "%s: technique %u lies outside the effect's data", name, (unsigned)i);
-    if (target == HFX_TARGET_SPIRV)
-        return hfx_rt_fail(dev, HFX_ERR_LOAD, "%s: SPIR-V is not loaded by the GL runtime", name);
-    return HFX_OK;
+    return target == HFX_TARGET_SPIRV ? hfx_rt_spirv_check(dev, fx) : HFX_OK;
 }
 
 static hfx_shared *shared_create(hfx_device *dev, hfx_fx_effect *fx, hfx_target target) {
@@ -301,7 +299,8 @@ static hfx_shared *shared_create(hfx_device *dev, hfx_fx_effect *fx, hfx_target 
     for (uint32_t i = 0; i < fx->annotation_count; i++) sh->annotations[i] = (struct hfx_annotation){sh, &fx->annotations[i]};
     uint32_t cap = 0;
     int rc = HFX_OK;
-    for (uint32_t i = 0; i < fx->program_count && !rc; i++) rc = hfx_rt_program_build(sh, i, target);
+    for (uint32_t i = 0; i < fx->program_count && !rc; i++)
+        rc = target == HFX_TARGET_SPIRV ? hfx_rt_spirv_program_build(sh, i) : hfx_rt_program_build(sh, i, target);
     if (!rc) rc = make_samplers(sh, &cap);
     for (uint32_t i = 0; i < fx->pass_count && !rc; i++) rc = build_pass(sh, &cap, i);
     while (dev->gl.GetError() != GL_NO_ERROR) {}
@@ -354,8 +353,11 @@ static hfx_effect *instance_create(hfx_shared *sh, const hfx_effect *src) {
     for (uint32_t i = 0; i < fx->param_count; i++) {
         const hfx_fx_param *fp = &fx->params[i];
         uint32_t root = root_of(fx, i);
-        e->params[i] = (hfx_param){e->values + fp->offset, e, fp->words, root < fx->top_param_count ? root : fx->top_param_count,
-                                   hfx_rt_param_accept(fp), i, fp};
+        uint32_t accept = hfx_rt_param_accept(fp);
+        e->params[i] = (hfx_param){e->values + fp->offset, e,
+                                   (accept & ACC_FLOATS) && (accept & ACC_WHOLE) ? fp->words : SIZE_MAX,
+                                   (accept & ACC_RAW_INTS) && (accept & ACC_WHOLE) ? fp->words : SIZE_MAX, fp->words,
+                                   root < fx->top_param_count ? root : fx->top_param_count, accept, i, fp};
     }
     for (uint32_t i = 0; i < fx->technique_count; i++) e->techniques[i] = (hfx_technique){e, i};
     for (uint32_t i = 0; i < fx->pass_count; i++) e->passes[i] = (hfx_pass){e, &sh->passes[i], i};

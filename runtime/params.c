@@ -23,6 +23,16 @@ void hfx_rt_param_changed(hfx_effect *fx, uint32_t root) {
 /* Copies n words over dst; 1 when something changed (bitwise, as GL would see it). The common
  * sizes compare and copy with fixed-size code. */
 static inline int copy_changed(uint32_t *dst, const void *src, size_t n) {
+    if (n == 4) { /* float4 first, then the 4x4 matrix */
+        if (memcmp(dst, src, 16) == 0) return 0;
+        memcpy(dst, src, 16);
+        return 1;
+    }
+    if (n == 16) {
+        if (memcmp(dst, src, 64) == 0) return 0;
+        memcpy(dst, src, 64);
+        return 1;
+    }
     switch (n) {
     case 1: {
         uint32_t w;
@@ -32,7 +42,7 @@ static inline int copy_changed(uint32_t *dst, const void *src, size_t n) {
         return 1;
     }
 #define FIXED_(words) case words: if (memcmp(dst, src, words * 4) == 0) return 0; memcpy(dst, src, words * 4); return 1;
-    FIXED_(2) FIXED_(3) FIXED_(4) FIXED_(9) FIXED_(12) FIXED_(16)
+    FIXED_(2) FIXED_(3) FIXED_(9) FIXED_(12)
 #undef FIXED_
     default: {
         const uint32_t *w = src;
@@ -129,8 +139,7 @@ static __attribute__((noinline)) int set_floats_checked(hfx_param *p, const floa
 }
 
 int hfx_param_set_floats(hfx_param *p, const float *v, size_t count) {
-    if (p && v && (p->accept & (ACC_FLOATS | ACC_WHOLE)) == (ACC_FLOATS | ACC_WHOLE) && count == p->words)
-        return store(p, 0, v, count);
+    if (p && v && count == p->floats_n) return store(p, 0, v, count);
     return set_floats_checked(p, v, count);
 }
 
@@ -151,8 +160,7 @@ static __attribute__((noinline)) int set_ints_checked(hfx_param *p, const int *v
 }
 
 int hfx_param_set_ints(hfx_param *p, const int *v, size_t count) {
-    if (p && v && (p->accept & (ACC_RAW_INTS | ACC_WHOLE)) == (ACC_RAW_INTS | ACC_WHOLE) && count == p->words)
-        return store(p, 0, v, count);
+    if (p && v && count == p->ints_n) return store(p, 0, v, count);
     return set_ints_checked(p, v, count);
 }
 

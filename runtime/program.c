@@ -224,8 +224,21 @@ static int resolve_uniforms(build *b, const hfx_fx_program *fp) {
         slot->count = p->upload_count - slot->first;
         if (slot->count) p->reads[p->read_count++] = param;
     }
-    for (uint32_t i = 0; i < tops; i++) p->slots[i].held = 0; /* GL holds no value yet */
     return HFX_OK;
+}
+
+/* What Apply reads, derived once the uploads and the extras' locations are known: shared with
+ * spirv_load.c, which finds the locations its own way. */
+void hfx_rt_program_ready(hfx_rt_program *p, uint32_t tops) {
+    for (uint32_t i = 0; i < tops; i++) {
+        hfx_slot *slot = &p->slots[i];
+        slot->held = 0; /* GL holds no value yet */
+        if (!slot->count) continue;
+        slot->up = p->uploads[slot->first];
+        slot->mode = slot->count > 1 ? SLOT_OTHER : slot->up.kind == UK_FLOAT ? SLOT_FLOAT
+                   : slot->up.kind == UK_MATRIX ? SLOT_MATRIX : SLOT_OTHER;
+    }
+    p->alpha_test = p->alpha_func_loc >= 0 || p->alpha_ref_loc >= 0;
 }
 
 /* Sampler uniforms never change unit: set once, with the program bound briefly. */
@@ -269,6 +282,7 @@ int hfx_rt_program_build(hfx_shared *sh, uint32_t index, hfx_target target) {
     free(b.active);
     if (rc) return rc == HFX_ERR_MEMORY ? hfx_rt_fail(sh->dev, rc, "out of memory") : rc;
     set_sampler_units(sh, p, fp);
+    hfx_rt_program_ready(p, sh->fx->top_param_count);
     return HFX_OK;
 }
 
@@ -339,21 +353,27 @@ void hfx_rt_upload_all(hfx_effect *fx, hfx_rt_program *p) {
     for (uint32_t k = 0; k < p->read_count; k++) {
         uint32_t r = p->reads[k];
         hfx_slot *s = &p->slots[r];
-        uint64_t stamp = fx->stamps[r];
-        if (s->held != stamp) hfx_rt_upload_slot(fx, p, s, stamp);
+        if (s->held == fx->stamps[r]) continue;
+        s->held = fx->stamps[r];
+        hfx_rt_upload_slot(fx, p, s);
     }
     p->memo_effect = fx->id;
     p->memo_seen = fx->log_len;
 }
 
+/* All the uploads of one parameter (one per leaf of a struct). */
+void hfx_rt_upload_slot(hfx_effect *fx, const hfx_rt_program *p, const hfx_slot *s) {
+    for (uint32_t k = 0; k < s->count; k++) hfx_rt_upload_slow(fx->dev, &p->uploads[s->first + k], fx->values);
+}
+
 /* hfx_pos_fixup and the alpha test's uniforms, for programs that declare them. */
 void hfx_rt_program_extras(hfx_device *dev, hfx_rt_program *p) {
-    if (p->pos_fixup_loc >= 0 && p->pos_fixup_serial != dev->pos_fixup_serial) {
+    if (p->pos_fixup_serial != dev->pos_fixup_serial) {
         p->pos_fixup_serial = dev->pos_fixup_serial;
-        if (memcmp(p->pos_fixup, dev->pos_fixup, sizeof p->pos_fixup) != 0) {
+        if (p->pos_fixup_loc >= 0 && memcmp(p->pos_fixup, dev->pos_fixup, sizeof p->pos_fixup) != 0) {
             memcpy(p->pos_fixup, dev->pos_fixup, sizeof p->pos_fixup);
             dev->gl.Uniform4fv(p->pos_fixup_loc, 1, p->pos_fixup);
         }
     }
-    if (p->alpha_func_loc >= 0 || p->alpha_ref_loc >= 0) hfx_rs_alpha_test(dev, p);
+    if (p->alpha_test) hfx_rs_alpha_test(dev, p);
 }

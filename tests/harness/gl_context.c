@@ -11,10 +11,12 @@ struct test_gl {
     int width, height;
 };
 
-test_gl *test_gl_create(int width, int height) {
-    static const int attrs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_STENCIL_BITS, 8,
-                                OSMESA_PROFILE, OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 3,
-                                OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
+test_gl *test_gl_create(int width, int height) { return test_gl_create_version(width, height, 3, 3); }
+
+test_gl *test_gl_create_version(int width, int height, int major, int minor) {
+    const int attrs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_STENCIL_BITS, 8,
+                         OSMESA_PROFILE, OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, major,
+                         OSMESA_CONTEXT_MINOR_VERSION, minor, 0};
     test_gl *gl = calloc(1, sizeof *gl);
     if (!gl) return NULL;
     gl->ctx = OSMesaCreateContextAttribs(attrs, NULL);

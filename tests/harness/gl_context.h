@@ -5,6 +5,8 @@
 typedef struct test_gl test_gl;
 
 test_gl *test_gl_create(int width, int height);   /* made current; NULL if OSMesa refuses */
+/* The same with another core profile version (4.5: ARB_gl_spirv on llvmpipe). */
+test_gl *test_gl_create_version(int width, int height, int major, int minor);
 void test_gl_destroy(test_gl *gl);
 void *test_gl_loader(const char *name);           /* an hfx_gl_loader */
 void *test_gl_proc(const char *name);             /* same, for calling GL from a test */

@@ -1,10 +1,17 @@
-/* context.c: OSMesa (always) and GLFW (when HFX_HAVE_GLFW) contexts. */
+/* context.c: OSMesa (always), EGL (when HFX_HAVE_EGL) and GLFW (when HFX_HAVE_GLFW) contexts. */
 #include "context.h"
 
 #include <GL/osmesa.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#ifdef HFX_HAVE_EGL
+#define EGL_NO_X11 /* no Xlib types in eglplatform.h: only headless platforms are used */
+#define MESA_EGL_NO_X11_HEADERS
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+#endif
 
 #ifdef HFX_HAVE_GLFW
 #define GLFW_INCLUDE_NONE
@@ -14,6 +21,11 @@
 struct hv_context {
     OSMesaContext osmesa;
     unsigned char *pixels; /* OSMesa's colour buffer */
+#ifdef HFX_HAVE_EGL
+    EGLDisplay egl_display;
+    EGLContext egl_context;
+    GLuint fbo, renderbuffers[2]; /* colour RGBA8, depth24 / stencil8 */
+#endif
 #ifdef HFX_HAVE_GLFW
     GLFWwindow *window;
     unsigned char keys[GLFW_KEY_LAST + 1]; /* 1 = went down, not yet reported */
@@ -47,6 +59,102 @@ static int create_osmesa(hv_context *c, int width, int height, char *err, size_t
     }
     return 1;
 }
+
+#ifdef HFX_HAVE_EGL
+static void *egl_loader(const char *name) {
+    __eglMustCastToProperFunctionPointerType p = eglGetProcAddress(name);
+    void *q;
+    memcpy(&q, &p, sizeof q);
+    return q;
+}
+
+/* `name` is one of the space-separated words of `list`. */
+static int has_extension(const char *list, const char *name) {
+    size_t n = strlen(name);
+    for (const char *p = list; p && (p = strstr(p, name)) != NULL; p += n)
+        if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return 1;
+    return 0;
+}
+
+/* EGL_MESA_platform_surfaceless first; else the first device of EGL_EXT_device_enumeration
+ * (Mesa lists its software device there too). Initialised, or EGL_NO_DISPLAY. */
+static EGLDisplay open_egl_display(void) {
+    const char *client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    PFNEGLGETPLATFORMDISPLAYEXTPROC get_display = (PFNEGLGETPLATFORMDISPLAYEXTPROC)egl_loader("eglGetPlatformDisplayEXT");
+    if (!client || !get_display) return EGL_NO_DISPLAY;
+    EGLDisplay d = EGL_NO_DISPLAY;
+    if (has_extension(client, "EGL_MESA_platform_surfaceless")) {
+        d = get_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, NULL);
+        if (d != EGL_NO_DISPLAY && eglInitialize(d, NULL, NULL)) return d;
+    }
+    PFNEGLQUERYDEVICESEXTPROC query_devices = (PFNEGLQUERYDEVICESEXTPROC)egl_loader("eglQueryDevicesEXT");
+    if (query_devices && has_extension(client, "EGL_EXT_platform_device")) {
+        EGLDeviceEXT devices[16];
+        EGLint count = 0;
+        if (query_devices(16, devices, &count))
+            for (EGLint i = 0; i < count; i++) {
+                d = get_display(EGL_PLATFORM_DEVICE_EXT, devices[i], NULL);
+                if (d != EGL_NO_DISPLAY && eglInitialize(d, NULL, NULL)) return d;
+            }
+    }
+    return EGL_NO_DISPLAY;
+}
+
+static int create_egl(hv_context *c, char *err, size_t errlen) {
+    c->egl_display = open_egl_display();
+    if (c->egl_display == EGL_NO_DISPLAY) {
+        snprintf(err, errlen, "EGL: no headless display (neither EGL_MESA_platform_surfaceless nor an "
+                              "EGL_EXT_device_enumeration device could be initialised)");
+        return 0;
+    }
+    const char *ext = eglQueryString(c->egl_display, EGL_EXTENSIONS);
+    if (!has_extension(ext, "EGL_KHR_surfaceless_context") || !eglBindAPI(EGL_OPENGL_API)) {
+        snprintf(err, errlen, "EGL: the display has no surfaceless desktop OpenGL contexts");
+        return 0;
+    }
+    static const EGLint config_attrs[] = {EGL_SURFACE_TYPE, 0, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+    EGLConfig config = NULL;
+    EGLint configs = 0;
+    if (!has_extension(ext, "EGL_KHR_no_config_context") &&
+        (!eglChooseConfig(c->egl_display, config_attrs, &config, 1, &configs) || configs < 1)) {
+        snprintf(err, errlen, "EGL: no configuration for desktop OpenGL");
+        return 0;
+    }
+    static const EGLint context_attrs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
+                                           EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                           EGL_NONE};
+    c->egl_context = eglCreateContext(c->egl_display, config, EGL_NO_CONTEXT, context_attrs);
+    if (c->egl_context == EGL_NO_CONTEXT ||
+        !eglMakeCurrent(c->egl_display, EGL_NO_SURFACE, EGL_NO_SURFACE, c->egl_context)) {
+        snprintf(err, errlen, "EGL cannot create an OpenGL 3.3 core context (error 0x%x)", (unsigned)eglGetError());
+        return 0;
+    }
+    return 1;
+}
+
+/* The framebuffer object an EGL context draws into (no surface, so no default framebuffer). */
+static int create_fbo(hv_context *c, int width, int height, char *err, size_t errlen) {
+    const hv_gl *gl = &c->gl;
+    gl->GenRenderbuffers(2, c->renderbuffers);
+    gl->BindRenderbuffer(GL_RENDERBUFFER, c->renderbuffers[0]);
+    gl->RenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+    gl->BindRenderbuffer(GL_RENDERBUFFER, c->renderbuffers[1]);
+    gl->RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
+    gl->BindRenderbuffer(GL_RENDERBUFFER, 0);
+    gl->GenFramebuffers(1, &c->fbo);
+    gl->BindFramebuffer(GL_FRAMEBUFFER, c->fbo); /* drawing and reading */
+    gl->FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, c->renderbuffers[0]);
+    gl->FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, c->renderbuffers[1]);
+    GLenum status = gl->CheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE || gl->GetError() != GL_NO_ERROR) {
+        snprintf(err, errlen, "EGL: cannot make a complete %dx%d framebuffer object (status 0x%x)", width, height,
+                 (unsigned)status);
+        return 0;
+    }
+    gl->Viewport(0, 0, width, height);
+    return 1;
+}
+#endif
 
 #ifdef HFX_HAVE_GLFW
 static void *glfw_loader(const char *name) {
@@ -85,14 +193,25 @@ static int create_window(hv_context *c, int width, int height, char *err, size_t
 }
 #endif
 
-hv_context *hv_context_create(int width, int height, int window, char *err, size_t errlen) {
+hv_context *hv_context_create(int width, int height, int kind, char *err, size_t errlen) {
     hv_context *c = calloc(1, sizeof *c);
     if (!c) return NULL;
     int ok = 0;
-#ifdef HFX_HAVE_GLFW
-    if (window) ok = create_window(c, width, height, err, errlen);
+    if (kind == HV_CONTEXT_EGL) {
+#ifdef HFX_HAVE_EGL
+        ok = create_egl(c, err, errlen);
 #else
-    if (window) snprintf(err, errlen, "built without GLFW: drawing headless");
+        snprintf(err, errlen, "built without EGL: --egl is not available");
+#endif
+        if (!ok) {
+            hv_context_destroy(c);
+            return NULL;
+        }
+    }
+#ifdef HFX_HAVE_GLFW
+    if (kind == HV_CONTEXT_WINDOW) ok = create_window(c, width, height, err, errlen);
+#else
+    if (kind == HV_CONTEXT_WINDOW) snprintf(err, errlen, "built without GLFW: drawing headless");
 #endif
     if (!ok && !create_osmesa(c, width, height, err, errlen)) {
         hv_context_destroy(c);
@@ -104,11 +223,29 @@ hv_context *hv_context_create(int width, int height, int window, char *err, size
         hv_context_destroy(c);
         return NULL;
     }
+#ifdef HFX_HAVE_EGL
+    if (c->egl_context && !create_fbo(c, width, height, err, errlen)) {
+        hv_context_destroy(c);
+        return NULL;
+    }
+#endif
     return c;
 }
 
 void hv_context_destroy(hv_context *c) {
     if (!c) return;
+#ifdef HFX_HAVE_EGL
+    if (c->egl_context) {
+        if (c->fbo) c->gl.DeleteFramebuffers(1, &c->fbo);
+        if (c->renderbuffers[0]) c->gl.DeleteRenderbuffers(2, c->renderbuffers);
+        eglMakeCurrent(c->egl_display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        eglDestroyContext(c->egl_display, c->egl_context);
+    }
+    if (c->egl_display) {
+        eglTerminate(c->egl_display);
+        eglReleaseThread();
+    }
+#endif
 #ifdef HFX_HAVE_GLFW
     if (c->window) {
         glfwDestroyWindow(c->window);
@@ -124,6 +261,9 @@ void hv_context_destroy(hv_context *c) {
 }
 
 hv_gl_loader hv_context_loader(const hv_context *c) {
+#ifdef HFX_HAVE_EGL
+    if (c->egl_context) return egl_loader;
+#endif
 #ifdef HFX_HAVE_GLFW
     if (c->window) return glfw_loader;
 #endif
@@ -136,6 +276,15 @@ int hv_context_is_window(const hv_context *c) {
 #ifdef HFX_HAVE_GLFW
     return c->window != NULL;
 #else
+    return 0;
+#endif
+}
+
+int hv_context_is_egl(const hv_context *c) {
+#ifdef HFX_HAVE_EGL
+    return c->egl_context != NULL;
+#else
+    (void)c;
     return 0;
 #endif
 }

@@ -1,5 +1,6 @@
 /* gl.h: the OpenGL 3.3 core entry points hfxview calls, loaded through a loader function
- * (OSMesaGetProcAddress, glfwGetProcAddress) into a table, so nothing links libGL directly. */
+ * (OSMesaGetProcAddress, eglGetProcAddress, glfwGetProcAddress) into a table, so nothing links
+ * libGL directly. */
 #ifndef HFXVIEW_GL_H
 #define HFXVIEW_GL_H
 
@@ -22,7 +23,12 @@
     X(PFNGLTEXIMAGE2DPROC, TexImage2D) X(PFNGLTEXPARAMETERIPROC, TexParameteri) \
     X(PFNGLGENERATEMIPMAPPROC, GenerateMipmap) X(PFNGLDELETETEXTURESPROC, DeleteTextures) \
     X(PFNGLPIXELSTOREIPROC, PixelStorei) X(PFNGLREADPIXELSPROC, ReadPixels) X(PFNGLFINISHPROC, Finish) \
-    X(PFNGLUSEPROGRAMPROC, UseProgram)
+    X(PFNGLUSEPROGRAMPROC, UseProgram) X(PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers) \
+    X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer) X(PFNGLDELETEFRAMEBUFFERSPROC, DeleteFramebuffers) \
+    X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus) X(PFNGLGENRENDERBUFFERSPROC, GenRenderbuffers) \
+    X(PFNGLBINDRENDERBUFFERPROC, BindRenderbuffer) X(PFNGLDELETERENDERBUFFERSPROC, DeleteRenderbuffers) \
+    X(PFNGLRENDERBUFFERSTORAGEPROC, RenderbufferStorage) \
+    X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, FramebufferRenderbuffer)
 
 typedef struct hv_gl {
 #define HV_GL_MEMBER(type, name) type name;

@@ -1,4 +1,4 @@
-/* main.c: hfxview, render a Direct3D 9 effect to a PNG (headless on OSMesa) or a window.
+/* main.c: hfxview, render a Direct3D 9 effect to a PNG (headless on OSMesa or EGL) or a window.
  * Exit status: 0 ok, 1 the effect failed to load or draw, 2 usage. */
 #include <stdio.h>
 #include <stdlib.h>
@@ -180,7 +180,8 @@ static int show_window(viewer *v) {
 static int run(viewer *v) {
     int rc;
     if (hv_mesh_load(&v->mesh, v->opt.mesh, v->err, sizeof v->err) != 0) return input_error(v->err);
-    v->ctx = hv_context_create(v->opt.width, v->opt.height, v->opt.window, v->err, sizeof v->err);
+    int kind = v->opt.window ? HV_CONTEXT_WINDOW : v->opt.egl ? HV_CONTEXT_EGL : HV_CONTEXT_OSMESA;
+    v->ctx = hv_context_create(v->opt.width, v->opt.height, kind, v->err, sizeof v->err);
     if (v->err[0]) fprintf(stderr, "hfxview: %s\n", v->err);
     if (!v->ctx) return EXIT_EFFECT;
     v->gl = hv_context_gl(v->ctx);

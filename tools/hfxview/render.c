@@ -96,33 +96,42 @@ void hv_clear(const hv_gl *gl, int width, int height, const float rgba[4]) {
     gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
 }
 
-/* Each pass starts from XNA's defaults (plus additive blending when asked), which
- * hfx_effect_begin reads so the runtime's view of GL matches what this file set directly;
- * hfx_effect_end puts them back, so a pass's states do not leak into the next one. */
+/* As an XNA Draw method with D3D9 underneath: the device starts from XNA's defaults, set here
+ * before hfx_effect_begin, which reads them back so the runtime's shadow matches GL. Between
+ * the passes nothing is restored: a pass's render states stay set for the next one, as in
+ * D3D9 (states a pass does not name keep the previous pass's values). hfx_effect_end after
+ * the last pass restores what begin saved.
+ *
+ * blend_add is the application changing GL state between two Applies (additive blending
+ * and no depth writes, once, before the second pass): docs/runtime.md asks for
+ * hfx_effect_begin after such a change, which reads the GL state back into the shadow. That
+ * second begin also takes a new snapshot for end (the first pass's states plus the blending),
+ * so the defaults are put back after end. */
 int hv_draw_technique(const hv_gl *gl, const hv_gpu_mesh *g, hfx_effect *fx, hfx_technique *t, int pass,
                       int blend_add, size_t *failed_pass) {
     size_t count = hfx_technique_pass_count(t);
-    for (size_t i = 0; i < count; i++) {
+    int rc = HFX_OK, resynced = 0;
+    hv_set_default_states(gl);
+    hfx_effect_begin(fx);
+    for (size_t i = 0; i < count && rc == HFX_OK; i++) {
         if (pass >= 0 && (size_t)pass != i) continue;
         hfx_pass *p = hfx_technique_pass(t, i);
-        hv_set_default_states(gl);
-        if (blend_add && i > 0) { /* the application's job in XNA multi-pass lighting */
+        if (blend_add && i > 0 && !resynced) { /* the application's job in XNA multi-pass lighting */
             gl->Enable(GL_BLEND);
             gl->BlendEquation(GL_FUNC_ADD);
             gl->BlendFunc(GL_ONE, GL_ONE);
             gl->DepthMask(GL_FALSE);
+            hfx_effect_begin(fx); /* the documented resync */
+            resynced = 1;
         }
-        hfx_effect_begin(fx);
-        int rc = hfx_pass_apply(p);
+        rc = hfx_pass_apply(p);
         if (rc == HFX_OK) hv_draw_mesh(gl, g, p);
-        hfx_effect_end(fx);
-        if (rc != HFX_OK) {
-            if (failed_pass) *failed_pass = i;
-            return rc;
-        }
+        else if (failed_pass) *failed_pass = i;
     }
+    hfx_effect_end(fx);
+    if (resynced) hv_set_default_states(gl);
     gl->BindVertexArray(0);
-    return HFX_OK;
+    return rc;
 }
 
 int hv_read_image(const hv_gl *gl, int width, int height, hv_image *out) {
@@ -132,7 +141,12 @@ int hv_read_image(const hv_gl *gl, int width, int height, hv_image *out) {
     gl->Finish();
     gl->PixelStorei(GL_PACK_ALIGNMENT, 1);
     gl->ReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, px);
-    for (int y = 0; y < height / 2; y++) { /* GL's rows go bottom up; PNG's top down */
+    /* The default framebuffer's rows go bottom up, PNG's top down. In a framebuffer object the
+     * runtime draws in D3D9's row order (hfx_pos_fixup.z, docs/conventions.md): the first row
+     * read is already the top. */
+    GLint fbo = 0;
+    gl->GetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &fbo);
+    for (int y = 0; !fbo && y < height / 2; y++) {
         unsigned char *a = px + (size_t)y * row, *b = px + (size_t)(height - 1 - y) * row;
         for (size_t k = 0; k < row; k++) {
             unsigned char s = a[k];

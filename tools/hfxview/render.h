@@ -28,12 +28,16 @@ void hv_draw_mesh(const hv_gl *gl, const hv_gpu_mesh *g, const hfx_pass *pass);
 void hv_set_default_states(const hv_gl *gl);
 void hv_clear(const hv_gl *gl, int width, int height, const float rgba[4]);
 
-/* Draws pass `pass` (-1: all in order) of technique t. blend_add: additive blending from the
- * second pass on. Returns HFX_OK or the first hfx error; *failed_pass says which. */
+/* Draws pass `pass` (-1: all in order) of technique t between one hfx_effect_begin / end, so
+ * render states carry from pass to pass as in D3D9. blend_add: the application switches to
+ * additive blending without depth writes before the second pass. Returns HFX_OK or the first
+ * hfx error; *failed_pass says which. */
 int hv_draw_technique(const hv_gl *gl, const hv_gpu_mesh *g, hfx_effect *fx, hfx_technique *t, int pass,
                       int blend_add, size_t *failed_pass);
 
-/* The current colour buffer as an image, top row first. 0, or -1 on allocation failure. */
+/* The current colour buffer as an image, top row first (rows flipped for the default
+ * framebuffer; a bound framebuffer object holds D3D9's row order already). 0, or -1 on
+ * allocation failure. */
 int hv_read_image(const hv_gl *gl, int width, int height, hv_image *out);
 
 /* A mipmapped RGBA8 2D texture (or each face of a cube map) from an image; 0 on failure. */

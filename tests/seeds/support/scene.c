@@ -64,6 +64,7 @@ struct seed_scene {
     int inv_ok;
     int d3d9_centres;
     int via_hfxo;
+    hfx_target target; /* what seed_load asks for (not via .hfxo) */
     int errors;
     seed_file_report files[SEED_MAX_FILES];
     int file_count;
@@ -120,10 +121,12 @@ static int load_gl(seed_scene *s) {
     return missing == 0;
 }
 
-seed_scene *seed_scene_create(int width, int height) {
+seed_scene *seed_scene_create(int width, int height) { return seed_scene_create_version(width, height, 3, 3); }
+
+seed_scene *seed_scene_create_version(int width, int height, int major, int minor) {
     seed_scene *s = calloc(1, sizeof *s);
     if (!s) return NULL;
-    s->gl = test_gl_create(width, height);
+    s->gl = test_gl_create_version(width, height, major, minor);
     if (!s->gl || !load_gl(s)) {
         seed_scene_destroy(s);
         return NULL;
@@ -149,6 +152,7 @@ void seed_scene_destroy(seed_scene *s) {
 }
 
 hfx_device *seed_device(seed_scene *s) { return s->dev; }
+void seed_use_target(seed_scene *s, hfx_target target) { s->target = target; }
 int seed_width(const seed_scene *s) { return s->width; }
 int seed_height(const seed_scene *s) { return s->height; }
 void *seed_gl(seed_scene *s, const char *name) { (void)s; return test_gl_proc(name); }
@@ -357,7 +361,10 @@ hfx_effect *seed_load(seed_scene *s, const char *seed_file) {
         return fx;
     }
     char *errors = NULL;
-    hfx_effect *fx = path ? hfx_effect_load(s->dev, path, NULL, &errors) : NULL;
+    hfx_load_options opt;
+    memset(&opt, 0, sizeof opt);
+    opt.target = s->target;
+    hfx_effect *fx = path ? hfx_effect_load(s->dev, path, &opt, &errors) : NULL;
     if (!fx)
         note(s, "loading %s failed: %s%s", seed_file, errors && *errors ? errors : "",
              errors && *errors ? "" : hfx_device_last_error(s->dev));

@@ -59,6 +59,7 @@ typedef enum { SEED_BLEND_NONE, SEED_BLEND_ADD_AFTER_FIRST } seed_blend;
 /* Context, GL functions, device. NULL only when OSMesa refuses (the device may be NULL:
  * seed_device says so and tests fail). */
 seed_scene *seed_scene_create(int width, int height);
+seed_scene *seed_scene_create_version(int width, int height, int major, int minor); /* another core GL */
 void seed_scene_destroy(seed_scene *s);
 hfx_device *seed_device(seed_scene *s);
 int seed_width(const seed_scene *s);
@@ -99,6 +100,8 @@ hfx_effect *seed_load(seed_scene *s, const char *seed_file);  /* from the seed c
 /* From now on seed_load compiles with hfxc, writes a .hfxo in memory and loads that (probes
  * are then recorded as "<file> via .hfxo"): the path of an application that ships .hfxo. */
 void seed_use_hfxo(seed_scene *s, int on);
+/* The shader target seed_load (not via .hfxo) asks for; default HFX_TARGET_GLSL330. */
+void seed_use_target(seed_scene *s, hfx_target target);
 /* Setters by name that note (and print) any failure: unknown name, wrong type or count. */
 void seed_set_matrix(seed_scene *s, hfx_effect *fx, const char *name, const float m[16]);
 void seed_set_float(seed_scene *s, hfx_effect *fx, const char *name, double v);

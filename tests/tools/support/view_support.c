@@ -93,3 +93,25 @@ int view_pixel_near(const view_png *img, int x, int y, int r, int g, int b, int 
     if (!ok) fprintf(stderr, "  pixel (%d, %d) = (%d, %d, %d), expected (%d, %d, %d) +- %d\n", x, y, p[0], p[1], p[2], r, g, b, tol);
     return ok;
 }
+
+int view_png_max_difference(const view_png *a, const view_png *b, int *count_over_1) {
+    if (!a->rgba || !b->rgba || a->width != b->width || a->height != b->height) {
+        fprintf(stderr, "  images differ in size: %dx%d and %dx%d\n", a->width, a->height, b->width, b->height);
+        return -1;
+    }
+    int worst = 0, over = 0;
+    for (int y = 0; y < a->height; y++)
+        for (int x = 0; x < a->width; x++) {
+            const unsigned char *p = view_png_at(a, x, y), *q = view_png_at(b, x, y);
+            int d = 0;
+            for (int k = 0; k < 4; k++)
+                if (abs(p[k] - q[k]) > d) d = abs(p[k] - q[k]);
+            if (d > worst) worst = d;
+            if (d <= 1) continue;
+            if (over++ < 5)
+                fprintf(stderr, "  pixel (%d, %d): (%d, %d, %d, %d) against (%d, %d, %d, %d)\n", x, y, p[0], p[1], p[2], p[3],
+                        q[0], q[1], q[2], q[3]);
+        }
+    if (count_over_1) *count_over_1 = over;
+    return worst;
+}

@@ -20,6 +20,9 @@ void view_png_free(view_png *img);
 const unsigned char *view_png_at(const view_png *img, int x, int y); /* RGBA at column x, row y from the top */
 /* |pixel - rgb| <= tol per channel; prints the pixel when it is not. */
 int view_pixel_near(const view_png *img, int x, int y, int r, int g, int b, int tol);
+/* The largest difference of any channel of any pixel (RGBA), or -1 when the sizes differ;
+ * prints the first few pixels that differ by more than 1, and counts them in *count_over_1. */
+int view_png_max_difference(const view_png *a, const view_png *b, int *count_over_1);
 char *view_format(const char *fmt, ...) __attribute__((format(printf, 1, 2))); /* malloc'ed */
 
 #endif

@@ -1,0 +1,304 @@
+/* spirv_load.c: GL programs from the SPIR-V target (HFX_TARGET_SPIRV) through ARB_gl_spirv.
+ * Each stage is a glShaderBinary(GL_SHADER_BINARY_FORMAT_SPIR_V) specialised at "main"; the
+ * attribute locations are in the modules already. A SPIR-V program has no uniform names to look
+ * up, so every uniform is driven at the location the compiler gave it: the rule of
+ * docs/conventions.md ("SPIR-V"), computed by common/spirv_loc.c, the code the compiler itself
+ * places them with. GL's program interface query says which locations are active and with what
+ * type, so the glUniform* call follows the declaration as on the GLSL path (program.c). Samplers
+ * carry binding = unit: no glUniform1i. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "internal.h"
+#include "spirv_loc.h"
+
+static int has_extension(hfx_device *dev, const char *name) {
+    GLint n = 0;
+    dev->gl.GetIntegerv(GL_NUM_EXTENSIONS, &n);
+    for (GLint i = 0; i < n; i++) {
+        const char *e = (const char *)dev->gl.GetStringi(GL_EXTENSIONS, (GLuint)i);
+        if (e && strcmp(e, name) == 0) return 1;
+    }
+    return 0;
+}
+
+void hfx_rt_spirv_init(hfx_device *dev, hfx_gl_loader load) {
+    hfx_gl_spirv *s = &dev->spirv;
+    memset(s, 0, sizeof *s);
+    GLint major = 0, minor = 0;
+    dev->gl.GetIntegerv(GL_MAJOR_VERSION, &major);
+    dev->gl.GetIntegerv(GL_MINOR_VERSION, &minor);
+    int core = major * 10 + minor >= 46;
+    if (!core && !has_extension(dev, "GL_ARB_gl_spirv")) return;
+    *(void **)&s->ShaderBinary = load("glShaderBinary");
+    *(void **)&s->SpecializeShader = load(core ? "glSpecializeShader" : "glSpecializeShaderARB");
+    if (!s->SpecializeShader) *(void **)&s->SpecializeShader = load(core ? "glSpecializeShaderARB" : "glSpecializeShader");
+    *(void **)&s->GetProgramInterfaceiv = load("glGetProgramInterfaceiv");
+    *(void **)&s->GetProgramResourceiv = load("glGetProgramResourceiv");
+    s->ok = s->ShaderBinary && s->SpecializeShader && s->GetProgramInterfaceiv && s->GetProgramResourceiv;
+}
+
+int hfx_rt_spirv_check(hfx_device *dev, const hfx_fx_effect *fx) {
+    if (dev->spirv.ok) return HFX_OK;
+    return hfx_rt_fail(dev, HFX_ERR_GL,
+                       "%s: this GL cannot load SPIR-V (it has neither OpenGL 4.6 nor GL_ARB_gl_spirv with "
+                       "glShaderBinary and the program interface queries); load the effect with a GLSL target",
+                       fx->source_name ? fx->source_name : "effect");
+}
+
+static const char *name_of(const hfx_shared *sh) { return sh->fx->source_name ? sh->fx->source_name : "effect"; }
+
+static GLuint specialize_stage(hfx_shared *sh, GLenum type, const hfx_fx_code *code, const char *what) {
+    hfx_gl *gl = &sh->dev->gl;
+    if (!code->data || code->size < 20 || code->size % 4 || code->size > 0x7fffffff) {
+        hfx_rt_fail(sh->dev, HFX_ERR_LOAD, "%s: the %s shader's SPIR-V is missing or truncated", name_of(sh), what);
+        return 0;
+    }
+    GLuint s = gl->CreateShader(type);
+    if (!s) {
+        hfx_rt_fail(sh->dev, HFX_ERR_GL, "glCreateShader failed");
+        return 0;
+    }
+    sh->dev->spirv.ShaderBinary(1, &s, GL_SHADER_BINARY_FORMAT_SPIR_V, code->data, (GLsizei)code->size);
+    sh->dev->spirv.SpecializeShader(s, "main", 0, NULL, NULL);
+    GLint ok = 0;
+    gl->GetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (ok) return s;
+    char log[768] = "";
+    gl->GetShaderInfoLog(s, sizeof log, NULL, log);
+    hfx_rt_fail(sh->dev, HFX_ERR_GL, "%s: GL refused the %s shader's SPIR-V: %s", name_of(sh), what, log);
+    gl->DeleteShader(s);
+    return 0;
+}
+
+static int link_spirv(hfx_shared *sh, hfx_rt_program *p, GLuint vs, GLuint fs) {
+    hfx_gl *gl = &sh->dev->gl;
+    p->object = gl->CreateProgram();
+    if (!p->object) return hfx_rt_fail(sh->dev, HFX_ERR_GL, "glCreateProgram failed");
+    gl->AttachShader(p->object, vs);
+    gl->AttachShader(p->object, fs);
+    gl->LinkProgram(p->object);
+    gl->DetachShader(p->object, vs);
+    gl->DetachShader(p->object, fs);
+    GLint ok = 0;
+    gl->GetProgramiv(p->object, GL_LINK_STATUS, &ok);
+    if (ok) return HFX_OK;
+    char log[768] = "";
+    gl->GetProgramInfoLog(p->object, sizeof log, NULL, log);
+    return hfx_rt_fail(sh->dev, HFX_ERR_GL, "%s: GL refused to link a SPIR-V program: %s", name_of(sh), log);
+}
+
+/* An active uniform as the program interface reports it: locations [location, location + size). */
+typedef struct active_loc {
+    GLint location, size;
+    GLenum type;
+} active_loc;
+
+typedef struct build {
+    hfx_shared *sh;
+    hfx_rt_program *p;
+    active_loc *active;
+    GLint active_count;
+    uint32_t upload_cap;
+} build;
+
+static int read_active(build *b) {
+    const hfx_gl_spirv *s = &b->sh->dev->spirv;
+    GLint n = 0;
+    s->GetProgramInterfaceiv(b->p->object, GL_UNIFORM, GL_ACTIVE_RESOURCES, &n);
+    if (n <= 0) return HFX_OK;
+    b->active = calloc((size_t)n, sizeof *b->active);
+    if (!b->active) return HFX_ERR_MEMORY;
+    static const GLenum props[3] = {GL_LOCATION, GL_TYPE, GL_ARRAY_SIZE};
+    for (GLint i = 0; i < n; i++) {
+        GLint v[3] = {-1, 0, 0};
+        s->GetProgramResourceiv(b->p->object, GL_UNIFORM, (GLuint)i, 3, props, 3, NULL, v);
+        if (v[0] < 0) continue; /* in a block, or an atomic counter: not ours */
+        b->active[b->active_count++] = (active_loc){v[0], v[2] > 0 ? v[2] : 1, (GLenum)v[1]};
+    }
+    return HFX_OK;
+}
+
+/* The active uniform holding location loc, or NULL (GL dropped it: nothing reads it). */
+static const active_loc *find_active(const build *b, uint64_t loc) {
+    for (GLint i = 0; i < b->active_count; i++) {
+        const active_loc *a = &b->active[i];
+        if ((uint64_t)a->location <= loc && loc < (uint64_t)a->location + (uint64_t)a->size) return a;
+    }
+    return NULL;
+}
+
+/* The glUniform* for a GLSL type, and how many components one element has (as program.c). */
+static int upload_fn(GLenum type, uint16_t *fn, uint32_t *comps, int *is_int) {
+    *is_int = 0;
+    switch (type) {
+    case GL_FLOAT: *fn = UP_F1, *comps = 1; return 1;
+    case GL_FLOAT_VEC2: *fn = UP_F2, *comps = 2; return 1;
+    case GL_FLOAT_VEC3: *fn = UP_F3, *comps = 3; return 1;
+    case GL_FLOAT_VEC4: *fn = UP_F4, *comps = 4; return 1;
+    case GL_INT: case GL_BOOL: *fn = UP_I1, *comps = 1, *is_int = 1; return 1;
+    case GL_INT_VEC2: case GL_BOOL_VEC2: *fn = UP_I2, *comps = 2, *is_int = 1; return 1;
+    case GL_INT_VEC3: case GL_BOOL_VEC3: *fn = UP_I3, *comps = 3, *is_int = 1; return 1;
+    case GL_INT_VEC4: case GL_BOOL_VEC4: *fn = UP_I4, *comps = 4, *is_int = 1; return 1;
+    case GL_FLOAT_MAT2: *fn = UP_M2, *comps = 4; return 1;
+    case GL_FLOAT_MAT3: *fn = UP_M3, *comps = 9; return 1;
+    case GL_FLOAT_MAT4: *fn = UP_M4, *comps = 16; return 1;
+    case GL_FLOAT_MAT2x3: *fn = UP_M2x3, *comps = 6; return 1;
+    case GL_FLOAT_MAT3x2: *fn = UP_M3x2, *comps = 6; return 1;
+    case GL_FLOAT_MAT2x4: *fn = UP_M2x4, *comps = 8; return 1;
+    case GL_FLOAT_MAT4x2: *fn = UP_M4x2, *comps = 8; return 1;
+    case GL_FLOAT_MAT3x4: *fn = UP_M3x4, *comps = 12; return 1;
+    case GL_FLOAT_MAT4x3: *fn = UP_M4x3, *comps = 12; return 1;
+    default: return 0;
+    }
+}
+
+static void set_call(const hfx_gl *gl, hfx_upload *up) {
+    switch (up->fn) {
+    case UP_F1: up->call.f = gl->Uniform1fv; break;
+    case UP_F2: up->call.f = gl->Uniform2fv; break;
+    case UP_F3: up->call.f = gl->Uniform3fv; break;
+    case UP_F4: up->call.f = gl->Uniform4fv; break;
+    case UP_I1: up->call.i = gl->Uniform1iv; break;
+    case UP_I2: up->call.i = gl->Uniform2iv; break;
+    case UP_I3: up->call.i = gl->Uniform3iv; break;
+    case UP_I4: up->call.i = gl->Uniform4iv; break;
+    case UP_M2: up->call.m = gl->UniformMatrix2fv; break;
+    case UP_M3: up->call.m = gl->UniformMatrix3fv; break;
+    case UP_M4: up->call.m = gl->UniformMatrix4fv; break;
+    case UP_M2x3: up->call.m = gl->UniformMatrix2x3fv; break;
+    case UP_M3x2: up->call.m = gl->UniformMatrix3x2fv; break;
+    case UP_M2x4: up->call.m = gl->UniformMatrix2x4fv; break;
+    case UP_M4x2: up->call.m = gl->UniformMatrix4x2fv; break;
+    case UP_M3x4: up->call.m = gl->UniformMatrix3x4fv; break;
+    default: up->call.m = gl->UniformMatrix4x3fv; break;
+    }
+}
+
+/* One call for a value or an array of values at location loc (count elements from the
+ * parameter's first word). */
+static int add_upload(build *b, const hfx_fx_param *p, uint64_t loc, uint32_t count) {
+    const active_loc *a = find_active(b, loc);
+    if (!a) return HFX_OK;
+    hfx_upload up;
+    memset(&up, 0, sizeof up);
+    uint32_t comps;
+    int is_int;
+    uint32_t elem_words = p->elements ? p->words / p->elements : p->words;
+    if (!upload_fn(a->type, &up.fn, &comps, &is_int) || comps != elem_words) {
+        hfx_shared_warn(b->sh, NULL, "SPIR-V uniform at location %llu: its type does not match parameter '%s'; not uploaded",
+                        (unsigned long long)loc, p->name ? p->name : "");
+        return HFX_OK;
+    }
+    uint64_t room = (uint64_t)a->location + (uint64_t)a->size - loc;
+    up.location = (GLint)loc;
+    up.count = (GLsizei)(count < room ? count : room);
+    up.offset = p->offset;
+    up.words = (uint32_t)up.count * comps;
+    int convert = is_int != (p->type != HFX_TYPE_FLOAT);
+    if (convert) up.kind = UK_CONVERT;
+    else if (is_int) up.kind = UK_INT;
+    else if (up.fn >= UP_M2) up.kind = UK_MATRIX;
+    else up.kind = UK_FLOAT;
+    set_call(&b->sh->dev->gl, &up);
+    if (b->p->upload_count == b->upload_cap) {
+        uint32_t cap = b->upload_cap ? b->upload_cap * 2 : 8;
+        hfx_upload *n = realloc(b->p->uploads, cap * sizeof *n);
+        if (!n) return HFX_ERR_MEMORY;
+        b->p->uploads = n;
+        b->upload_cap = cap;
+    }
+    b->p->uploads[b->p->upload_count++] = up;
+    hfx_device *dev = b->sh->dev;
+    if (convert && up.words > dev->scratch_size) {
+        float *s = realloc(dev->scratch, up.words * sizeof *s);
+        if (!s) return HFX_ERR_MEMORY;
+        dev->scratch = s;
+        dev->scratch_size = up.words;
+    }
+    return HFX_OK;
+}
+
+/* A parameter's uploads from location loc on: struct members and the elements of an array of
+ * structs one after the other, as common/spirv_loc.c counts them. */
+static int add_param(build *b, uint32_t index, uint64_t loc, int depth) {
+    const hfx_fx_effect *fx = b->sh->fx;
+    if (index >= fx->param_count || depth > 64) return HFX_OK;
+    const hfx_fx_param *p = &fx->params[index];
+    if (p->klass == HFX_CLASS_OBJECT) return HFX_OK;
+    if (p->elements && p->child_count && fx->params[p->first_child].klass == HFX_CLASS_STRUCT) {
+        for (uint32_t e = 0; e < p->child_count; e++) {
+            int rc = add_param(b, p->first_child + e, loc, depth + 1);
+            if (rc) return rc;
+            loc += hfx_fx_param_locations(fx, p->first_child + e);
+        }
+        return HFX_OK;
+    }
+    if (p->klass == HFX_CLASS_STRUCT) {
+        for (uint32_t m = 0; m < p->child_count; m++) {
+            int rc = add_param(b, p->first_child + m, loc, depth + 1);
+            if (rc) return rc;
+            loc += hfx_fx_param_locations(fx, p->first_child + m);
+        }
+        return HFX_OK;
+    }
+    return add_upload(b, p, loc, p->elements ? p->elements : 1);
+}
+
+static int resolve_uniforms(build *b, const hfx_fx_program *fp) {
+    hfx_rt_program *p = b->p;
+    const hfx_fx_effect *fx = b->sh->fx;
+    uint32_t tops = fx->top_param_count;
+    p->slots = calloc((size_t)tops + 1, sizeof *p->slots);
+    p->reads = calloc(fp->uniform_count ? fp->uniform_count : 1, sizeof *p->reads);
+    if (!p->slots || !p->reads) return HFX_ERR_MEMORY;
+    for (uint32_t i = 0; i < fp->uniform_count; i++) {
+        uint32_t param = fp->uniforms[i].param;
+        if (param >= tops || !fx->params[param].glsl_name) continue;
+        hfx_slot *slot = &p->slots[param];
+        if (slot->held) continue; /* listed twice */
+        int32_t loc = hfx_fx_spirv_location(fx, fp, fx->params[param].glsl_name);
+        if (loc < 0) continue;
+        slot->held = 1;
+        slot->first = p->upload_count;
+        int rc = add_param(b, param, (uint64_t)loc, 0);
+        if (rc) return rc;
+        slot->count = p->upload_count - slot->first;
+        if (slot->count) p->reads[p->read_count++] = param;
+    }
+    return HFX_OK;
+}
+
+/* hfx_pos_fixup, hfx_alpha_func, hfx_alpha_ref: at their places after the samplers, when active. */
+static GLint known_location(const build *b, const hfx_fx_program *fp, const char *name) {
+    int32_t loc = hfx_fx_spirv_location(b->sh->fx, fp, name);
+    return loc >= 0 && find_active(b, (uint64_t)loc) ? loc : -1;
+}
+
+int hfx_rt_spirv_program_build(hfx_shared *sh, uint32_t index) {
+    const hfx_fx_program *fp = &sh->fx->programs[index];
+    hfx_rt_program *p = &sh->programs[index];
+    if (!sh->dev->spirv.ok) return hfx_rt_spirv_check(sh->dev, sh->fx);
+    GLuint vs = specialize_stage(sh, GL_VERTEX_SHADER, &fp->code[HFX_STAGE_VERTEX][HFX_TARGET_SPIRV], "vertex");
+    GLuint fs = vs ? specialize_stage(sh, GL_FRAGMENT_SHADER, &fp->code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV], "fragment")
+                   : 0;
+    int rc = vs && fs ? link_spirv(sh, p, vs, fs) : HFX_ERR_GL;
+    if (vs) sh->dev->gl.DeleteShader(vs);
+    if (fs) sh->dev->gl.DeleteShader(fs);
+    if (rc) return rc;
+    build b = {sh, p, NULL, 0, 0};
+    rc = read_active(&b);
+    if (!rc) rc = resolve_uniforms(&b, fp);
+    if (!rc) {
+        p->pos_fixup_loc = known_location(&b, fp, "hfx_pos_fixup");
+        memset(p->pos_fixup, 0, sizeof p->pos_fixup); /* GL's value for an unset uniform */
+        p->pos_fixup_serial = 0;                      /* the device's starts at 1: compare once */
+        p->alpha_func_loc = known_location(&b, fp, "hfx_alpha_func");
+        p->alpha_ref_loc = known_location(&b, fp, "hfx_alpha_ref");
+        p->alpha_func = -1;
+        p->alpha_ref = -1.0f;
+        hfx_rt_program_ready(p, sh->fx->top_param_count);
+    }
+    free(b.active);
+    return rc == HFX_ERR_MEMORY ? hfx_rt_fail(sh->dev, rc, "out of memory") : rc;
+}
