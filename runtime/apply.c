@@ -104,21 +104,34 @@ static void bind_textures(hfx_effect *fx, const hfx_rt_pass *rp) {
     }
 }
 
+/* Front face (D3D's clockwise, flipped in a framebuffer object), program, its position fixup
+ * and alpha-test uniforms. */
+static inline void apply_program(hfx_device *dev, hfx_rt_program *prog) {
+    GLenum front = dev->flip ? GL_CCW : GL_CW; /* hfx_rs_front_face */
+    if (dev->state.front_face != front) dev->gl.FrontFace(dev->state.front_face = front);
+    if (!prog) return;
+    hfx_rt_use_program(dev, prog->object);
+    if (prog->pos_fixup_serial != dev->pos_fixup_serial || prog->alpha_test) hfx_rt_program_extras(dev, prog);
+}
+
+/* A pass with render states or texture bindings. */
+static __attribute__((noinline)) int apply_full(hfx_effect *fx, const hfx_rt_pass *rp) {
+    if (rp->render_state_count) hfx_rs_apply(fx, rp); /* first: the alpha test reads these states */
+    hfx_rt_program *prog = rp->prog;
+    apply_program(fx->dev, prog);
+    if (prog && (prog->memo_seen != fx->log_len || prog->memo_effect != fx->id)) hfx_rt_upload_changed(fx, prog);
+    if (rp->binding_count) bind_textures(fx, rp);
+    return HFX_OK;
+}
+
 int hfx_pass_apply(hfx_pass *p) {
     if (!p) return HFX_ERR_NULL;
     hfx_effect *fx = p->fx;
-    hfx_device *dev = fx->dev;
     const hfx_rt_pass *rp = p->rt;
-    if (rp->render_state_count) hfx_rs_apply(fx, rp); /* first: the alpha test reads these states */
-    GLenum front = dev->flip ? GL_CCW : GL_CW;         /* hfx_rs_front_face */
-    if (dev->state.front_face != front) dev->gl.FrontFace(dev->state.front_face = front);
     hfx_rt_program *prog = rp->prog;
-    if (prog) {
-        hfx_rt_use_program(dev, prog->object);
-        if (prog->memo_seen != fx->log_len || prog->memo_effect != fx->id) hfx_rt_upload_uniforms(fx, prog);
-        if (prog->pos_fixup_serial != dev->pos_fixup_serial || prog->alpha_test) hfx_rt_program_extras(dev, prog);
-    }
-    if (rp->binding_count) bind_textures(fx, rp);
+    if (rp->render_state_count || rp->binding_count || !prog) return apply_full(fx, rp);
+    apply_program(fx->dev, prog);
+    if (prog->memo_seen != fx->log_len || prog->memo_effect != fx->id) return hfx_rt_upload_changed(fx, prog);
     return HFX_OK;
 }
 

@@ -282,36 +282,9 @@ void hfx_rt_program_extras(hfx_device *dev, hfx_rt_program *p);
 void hfx_rt_program_ready(hfx_rt_program *p, uint32_t tops); /* after the uploads and extras are resolved */
 
 /* Uploads the parameters whose version differs from the one this program holds, visiting only
- * the log entries written since the program last looked when it follows this instance. */
-void hfx_rt_upload_slot(hfx_effect *fx, const hfx_rt_program *p, const hfx_slot *s);
-
-/* Uploads the parameters whose version differs from the one this program holds, visiting only
- * the log entries written since the program last looked when it follows this instance. Fields
- * are read through fx and p on purpose: the GL calls clobber registers, reloading is cheaper. */
-static inline void hfx_rt_upload_uniforms(hfx_effect *fx, hfx_rt_program *p) {
-    uint64_t seen = p->memo_seen;
-    if (p->memo_effect != fx->id || fx->log_len - seen > (uint64_t)fx->log_mask + 1) {
-        hfx_rt_upload_all(fx, p);
-        return;
-    }
-    do {
-        uint32_t r = fx->log[seen & fx->log_mask];
-        hfx_slot *s = &p->slots[r];
-        seen++;
-        if (s->mode == SLOT_NONE || s->held == fx->stamps[r]) continue;
-        s->held = fx->stamps[r];
-        const void *d = fx->values + s->up.offset;
-        if (s->mode == SLOT_FLOAT) s->up.call.f(s->up.location, s->up.count, d);
-        else if (s->mode == SLOT_MATRIX) s->up.call.m(s->up.location, s->up.count, GL_FALSE, d);
-        else hfx_rt_upload_slot(fx, p, s);
-    } while (seen != fx->log_len);
-    p->memo_seen = seen;
-}
-
-/* spirv_load.c: programs from SPIR-V (HFX_TARGET_SPIRV), uniforms by the compiler's locations. */
-void hfx_rt_spirv_init(hfx_device *dev, hfx_gl_loader load); /* at device creation */
-int hfx_rt_spirv_check(hfx_device *dev, const hfx_fx_effect *fx); /* HFX_ERR_GL when GL cannot load SPIR-V */
-int hfx_rt_spirv_program_build(hfx_shared *sh, uint32_t index);
+ * the log entries written since the program last looked when it follows this instance; returns
+ * HFX_OK (so Apply can end in it). */
+int hfx_rt_upload_changed(hfx_effect *fx, hfx_rt_program *p);
 
 /* sampler.c */
 void hfx_sampler_desc_default(hfx_sampler_desc *d);

@@ -366,6 +366,29 @@ void hfx_rt_upload_slot(hfx_effect *fx, const hfx_rt_program *p, const hfx_slot 
     for (uint32_t k = 0; k < s->count; k++) hfx_rt_upload_slow(fx->dev, &p->uploads[s->first + k], fx->values);
 }
 
+/* Fields are read through fx and p on purpose: the GL calls clobber registers, and reloading
+ * costs less than keeping copies across them. */
+int hfx_rt_upload_changed(hfx_effect *fx, hfx_rt_program *p) {
+    uint64_t seen = p->memo_seen;
+    if (p->memo_effect != fx->id || fx->log_len - seen > (uint64_t)fx->log_mask + 1) {
+        hfx_rt_upload_all(fx, p);
+        return HFX_OK;
+    }
+    while (seen != fx->log_len) {
+        uint32_t r = fx->log[seen & fx->log_mask];
+        hfx_slot *s = &p->slots[r];
+        seen++;
+        if (s->mode == SLOT_NONE || s->held == fx->stamps[r]) continue;
+        s->held = fx->stamps[r];
+        const void *d = fx->values + s->up.offset;
+        if (s->mode == SLOT_FLOAT) s->up.call.f(s->up.location, s->up.count, d);
+        else if (s->mode == SLOT_MATRIX) s->up.call.m(s->up.location, s->up.count, GL_FALSE, d);
+        else hfx_rt_upload_slot(fx, p, s);
+    }
+    p->memo_seen = seen;
+    return HFX_OK;
+}
+
 /* hfx_pos_fixup and the alpha test's uniforms, for programs that declare them. */
 void hfx_rt_program_extras(hfx_device *dev, hfx_rt_program *p) {
     if (p->pos_fixup_serial != dev->pos_fixup_serial) {

@@ -64,7 +64,7 @@ struct seed_scene {
     int inv_ok;
     int d3d9_centres;
     int via_hfxo;
-    hfx_target target; /* what seed_load asks for (not via .hfxo) */
+    hfx_target target; /* what seed_load compiles for and loads */
     int errors;
     seed_file_report files[SEED_MAX_FILES];
     int file_count;
@@ -327,7 +327,13 @@ void seed_use_hfxo(seed_scene *s, int on) { s->via_hfxo = on; }
 /* hfxc's library compiles, hfx_fx_write_hfxo serialises, hfx_effect_load_memory loads the bytes
  * as hfxc's output would be loaded from disk. */
 static hfx_effect *load_via_hfxo(seed_scene *s, const char *seed_file, const char *path) {
-    hfxc_result *r = hfxc_compile_file(path, NULL);
+    hfxc_options co;
+    memset(&co, 0, sizeof co);
+    co.targets = 1u << s->target;
+    hfx_load_options opt;
+    memset(&opt, 0, sizeof opt);
+    opt.target = s->target;
+    hfxc_result *r = hfxc_compile_file(path, s->target == HFX_TARGET_GLSL330 ? NULL : &co);
     const struct hfx_fx_effect *compiled = r ? hfxc_result_effect(r) : NULL;
     void *data = NULL;
     size_t size = 0;
@@ -340,7 +346,7 @@ static hfx_effect *load_via_hfxo(seed_scene *s, const char *seed_file, const cha
     } else if (hfx_fx_write_hfxo(compiled, &data, &size) != 0) {
         note(s, "writing %s as .hfxo failed", seed_file);
     } else {
-        fx = hfx_effect_load_memory(s->dev, data, size, seed_file, NULL, &errors);
+        fx = hfx_effect_load_memory(s->dev, data, size, seed_file, &opt, &errors);
         if (!fx) note(s, "loading %s from .hfxo failed: %s", seed_file, errors && *errors ? errors : hfx_device_last_error(s->dev));
     }
     hfx_free(errors);

@@ -100,7 +100,7 @@ hfx_effect *seed_load(seed_scene *s, const char *seed_file);  /* from the seed c
 /* From now on seed_load compiles with hfxc, writes a .hfxo in memory and loads that (probes
  * are then recorded as "<file> via .hfxo"): the path of an application that ships .hfxo. */
 void seed_use_hfxo(seed_scene *s, int on);
-/* The shader target seed_load (not via .hfxo) asks for; default HFX_TARGET_GLSL330. */
+/* The shader target seed_load compiles for and loads; default HFX_TARGET_GLSL330. */
 void seed_use_target(seed_scene *s, hfx_target target);
 /* Setters by name that note (and print) any failure: unknown name, wrong type or count. */
 void seed_set_matrix(seed_scene *s, hfx_effect *fx, const char *name, const float m[16]);
