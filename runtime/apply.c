@@ -128,8 +128,8 @@ int hfx_pass_apply(hfx_pass *p) {
     if (!p) return HFX_ERR_NULL;
     hfx_effect *fx = p->fx;
     const hfx_rt_pass *rp = p->rt;
+    if (!rp->direct) return apply_full(fx, rp);
     hfx_rt_program *prog = rp->prog;
-    if (rp->render_state_count || rp->binding_count || !prog) return apply_full(fx, rp);
     apply_program(fx->dev, prog);
     if (prog->memo_seen != fx->log_len || prog->memo_effect != fx->id) return hfx_rt_upload_changed(fx, prog);
     return HFX_OK;

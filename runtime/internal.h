@@ -132,7 +132,7 @@ typedef struct hfx_slot {
     hfx_upload up;          /* the first upload, at hand for the common single-call case */
     uint32_t mode;          /* SLOT_* */
     uint32_t first, count;  /* all its uploads */
-    uint32_t pad_;          /* 64 bytes: indexing is a shift */
+    uint32_t pad_[3];       /* 64 bytes: indexing is a shift */
 } hfx_slot;
 
 typedef struct hfx_rt_program {
@@ -164,6 +164,7 @@ typedef struct hfx_rt_binding {
 typedef struct hfx_rt_pass {
     uint32_t program;       /* index into shared programs, HFX_NONE: leave the bound one */
     hfx_rt_program *prog;   /* &programs[program], NULL when none */
+    int direct;             /* a program, no render states, no texture bindings: Apply's short way */
     uint32_t *render_states; uint32_t render_state_count; /* indices into fx->states */
     uint32_t groups;        /* GL state groups the pass's render states touch */
     hfx_rt_binding *bindings; uint32_t binding_count;
@@ -278,6 +279,7 @@ int hfx_rt_program_build(hfx_shared *sh, uint32_t index, hfx_target target);
 void hfx_rt_program_free(hfx_device *dev, hfx_rt_program *p);
 void hfx_rt_upload_all(hfx_effect *fx, hfx_rt_program *p);
 void hfx_rt_upload_slow(hfx_device *dev, const hfx_upload *up, const uint32_t *values);
+void hfx_rt_upload_slot(hfx_effect *fx, const hfx_rt_program *p, const hfx_slot *s); /* all of a parameter's uploads */
 void hfx_rt_program_extras(hfx_device *dev, hfx_rt_program *p);
 void hfx_rt_program_ready(hfx_rt_program *p, uint32_t tops); /* after the uploads and extras are resolved */
 
@@ -285,6 +287,11 @@ void hfx_rt_program_ready(hfx_rt_program *p, uint32_t tops); /* after the upload
  * the log entries written since the program last looked when it follows this instance; returns
  * HFX_OK (so Apply can end in it). */
 int hfx_rt_upload_changed(hfx_effect *fx, hfx_rt_program *p);
+
+/* spirv_load.c: programs from SPIR-V (HFX_TARGET_SPIRV), uniforms by the compiler's locations. */
+void hfx_rt_spirv_init(hfx_device *dev, hfx_gl_loader load); /* at device creation */
+int hfx_rt_spirv_check(hfx_device *dev, const hfx_fx_effect *fx); /* HFX_ERR_GL when GL cannot load SPIR-V */
+int hfx_rt_spirv_program_build(hfx_shared *sh, uint32_t index);
 
 /* sampler.c */
 void hfx_sampler_desc_default(hfx_sampler_desc *d);

@@ -216,6 +216,7 @@ static int build_pass(hfx_shared *sh, uint32_t *cap, uint32_t index) {
         sh->unit_mask |= 1u << b->unit;
     }
     sh->groups |= rp->groups;
+    rp->direct = rp->prog && !rp->render_state_count && !rp->binding_count;
     return HFX_OK;
 }
 

@@ -20,6 +20,16 @@ void hfx_rt_param_changed(hfx_effect *fx, uint32_t root) {
     hfx_rt_mark_changed(fx, root < tops ? root : tops);
 }
 
+/* Out of line, so the common sizes' path keeps no registers across a call. */
+static __attribute__((noinline)) int copy_changed_long(uint32_t *dst, const void *src, size_t n) {
+    const uint32_t *w = src;
+    size_t k = 0;
+    while (k < n && dst[k] == w[k]) k++;
+    if (k == n) return 0;
+    memcpy(dst + k, w + k, (n - k) * sizeof *dst);
+    return 1;
+}
+
 /* Copies n words over dst; 1 when something changed (bitwise, as GL would see it). The common
  * sizes compare and copy with fixed-size code. */
 static inline int copy_changed(uint32_t *dst, const void *src, size_t n) {
@@ -44,14 +54,7 @@ static inline int copy_changed(uint32_t *dst, const void *src, size_t n) {
 #define FIXED_(words) case words: if (memcmp(dst, src, words * 4) == 0) return 0; memcpy(dst, src, words * 4); return 1;
     FIXED_(2) FIXED_(3) FIXED_(9) FIXED_(12)
 #undef FIXED_
-    default: {
-        const uint32_t *w = src;
-        size_t k = 0;
-        while (k < n && dst[k] == w[k]) k++; /* short, so no library calls */
-        if (k == n) return 0;
-        memcpy(dst + k, w + k, (n - k) * sizeof *dst);
-        return 1;
-    }
+    default: return copy_changed_long(dst, src, n);
     }
 }
 
@@ -138,9 +141,18 @@ static __attribute__((noinline)) int set_floats_checked(hfx_param *p, const floa
     return rc ? rc : store(p, 0, v, count);
 }
 
+/* Any whole value, out of line so the float4 path below keeps no registers across a call. */
+static __attribute__((noinline)) int store_whole(hfx_param *p, const void *v, size_t count) {
+    return store(p, 0, v, count);
+}
+
 int hfx_param_set_floats(hfx_param *p, const float *v, size_t count) {
-    if (p && v && count == p->floats_n) return store(p, 0, v, count);
-    return set_floats_checked(p, v, count);
+    if (!p || !v || count != p->floats_n) return set_floats_checked(p, v, count);
+    if (count != 4) return store_whole(p, v, count);
+    if (memcmp(p->value, v, 16) == 0) return HFX_OK; /* float4: the common case, compared in place */
+    memcpy(p->value, v, 16);
+    hfx_rt_mark_changed(p->fx, p->root);
+    return HFX_OK;
 }
 
 static __attribute__((noinline)) int set_ints_checked(hfx_param *p, const int *v, size_t count) {

@@ -378,12 +378,17 @@ int hfx_rt_upload_changed(hfx_effect *fx, hfx_rt_program *p) {
         uint32_t r = fx->log[seen & fx->log_mask];
         hfx_slot *s = &p->slots[r];
         seen++;
-        if (s->mode == SLOT_NONE || s->held == fx->stamps[r]) continue;
-        s->held = fx->stamps[r];
-        const void *d = fx->values + s->up.offset;
-        if (s->mode == SLOT_FLOAT) s->up.call.f(s->up.location, s->up.count, d);
-        else if (s->mode == SLOT_MATRIX) s->up.call.m(s->up.location, s->up.count, GL_FALSE, d);
-        else hfx_rt_upload_slot(fx, p, s);
+        if (s->held == fx->stamps[r]) continue; /* also never true for SLOT_NONE: held stays 0 */
+        if (s->mode == SLOT_FLOAT) {
+            s->held = fx->stamps[r];
+            s->up.call.f(s->up.location, s->up.count, (const void *)(fx->values + s->up.offset));
+        } else if (s->mode == SLOT_MATRIX) {
+            s->held = fx->stamps[r];
+            s->up.call.m(s->up.location, s->up.count, GL_FALSE, (const void *)(fx->values + s->up.offset));
+        } else if (s->mode == SLOT_OTHER) {
+            s->held = fx->stamps[r];
+            hfx_rt_upload_slot(fx, p, s);
+        }
     }
     p->memo_seen = seen;
     return HFX_OK;

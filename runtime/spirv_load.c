@@ -32,7 +32,8 @@ void hfx_rt_spirv_init(hfx_device *dev, hfx_gl_loader load) {
     if (!core && !has_extension(dev, "GL_ARB_gl_spirv")) return;
     *(void **)&s->ShaderBinary = load("glShaderBinary");
     *(void **)&s->SpecializeShader = load(core ? "glSpecializeShader" : "glSpecializeShaderARB");
-    if (!s->SpecializeShader) *(void **)&s->SpecializeShader = load(core ? "glSpecializeShaderARB" : "glSpecializeShader");
+    if (!s->SpecializeShader)
+        *(void **)&s->SpecializeShader = load(core ? "glSpecializeShaderARB" : "glSpecializeShader");
     *(void **)&s->GetProgramInterfaceiv = load("glGetProgramInterfaceiv");
     *(void **)&s->GetProgramResourceiv = load("glGetProgramResourceiv");
     s->ok = s->ShaderBinary && s->SpecializeShader && s->GetProgramInterfaceiv && s->GetProgramResourceiv;
@@ -186,7 +187,8 @@ static int add_upload(build *b, const hfx_fx_param *p, uint64_t loc, uint32_t co
     int is_int;
     uint32_t elem_words = p->elements ? p->words / p->elements : p->words;
     if (!upload_fn(a->type, &up.fn, &comps, &is_int) || comps != elem_words) {
-        hfx_shared_warn(b->sh, NULL, "SPIR-V uniform at location %llu: its type does not match parameter '%s'; not uploaded",
+        hfx_shared_warn(b->sh, NULL,
+                        "SPIR-V uniform at location %llu: its type does not match parameter '%s'; not uploaded",
                         (unsigned long long)loc, p->name ? p->name : "");
         return HFX_OK;
     }
@@ -279,9 +281,10 @@ int hfx_rt_spirv_program_build(hfx_shared *sh, uint32_t index) {
     const hfx_fx_program *fp = &sh->fx->programs[index];
     hfx_rt_program *p = &sh->programs[index];
     if (!sh->dev->spirv.ok) return hfx_rt_spirv_check(sh->dev, sh->fx);
-    GLuint vs = specialize_stage(sh, GL_VERTEX_SHADER, &fp->code[HFX_STAGE_VERTEX][HFX_TARGET_SPIRV], "vertex");
-    GLuint fs = vs ? specialize_stage(sh, GL_FRAGMENT_SHADER, &fp->code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV], "fragment")
-                   : 0;
+    const hfx_fx_code *vcode = &fp->code[HFX_STAGE_VERTEX][HFX_TARGET_SPIRV];
+    const hfx_fx_code *fcode = &fp->code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV];
+    GLuint vs = specialize_stage(sh, GL_VERTEX_SHADER, vcode, "vertex");
+    GLuint fs = vs ? specialize_stage(sh, GL_FRAGMENT_SHADER, fcode, "fragment") : 0;
     int rc = vs && fs ? link_spirv(sh, p, vs, fs) : HFX_ERR_GL;
     if (vs) sh->dev->gl.DeleteShader(vs);
     if (fs) sh->dev->gl.DeleteShader(fs);

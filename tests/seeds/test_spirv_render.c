@@ -267,6 +267,94 @@ static void render_both_targets(void) {
     for (size_t i = 0; i < sizeof CASES / sizeof *CASES; i++) run_case(&CASES[i]);
 }
 
+/* Beyond the seeds: a struct, a bool, an array element, a sampler and the alpha test's uniforms
+ * (hfx_alpha_func / hfx_alpha_ref), all by location in the SPIR-V. */
+static const char ALPHA_FX[] =
+    "float4x4 World, View, Projection;\n"
+    "struct Mat { float4 colour; float k; };\n"
+    "Mat mat;\n"
+    "bool invert;\n"
+    "float4 tint[3];\n"
+    "texture tex;\n"
+    "sampler smp = sampler_state { Texture = <tex>; MinFilter = Point; MagFilter = Point; };\n"
+    "void vs(float4 p : POSITION0, float2 uv : TEXCOORD0, out float4 o : POSITION0, out float2 ouv : TEXCOORD0) {\n"
+    "    o = mul(mul(mul(p, World), View), Projection); ouv = uv; }\n"
+    "float4 ps(float2 uv : TEXCOORD0) : COLOR0 {\n"
+    "    float4 c = mat.colour * mat.k + tint[2] * tex2D(smp, uv);\n"
+    "    if (invert) c.rgb = 1 - c.rgb;\n"
+    "    c.a = uv.x; return c; }\n"
+    "technique T { pass P { AlphaTestEnable = true; AlphaFunc = Greater; AlphaRef = 100;\n"
+    "    VertexShader = compile vs_2_0 vs(); PixelShader = compile ps_2_0 ps(); } }\n";
+
+static hfx_effect *load_alpha(hfx_target target) {
+    hfx_load_options opt;
+    memset(&opt, 0, sizeof opt);
+    opt.target = target;
+    char *errors = NULL;
+    hfx_effect *fx = hfx_effect_load_memory(seed_device(S), ALPHA_FX, sizeof ALPHA_FX - 1, "alpha.fx", &opt, &errors);
+    if (!fx) printf("  alpha.fx: %s%s\n", errors ? errors : "", hfx_device_last_error(seed_device(S)));
+    hfx_free(errors);
+    return fx;
+}
+
+static void alpha_set(hfx_effect *fx, const seed_texture *tex) {
+    seed_set_transforms(S, fx, "World", "View", "Projection", NULL);
+    hfx_param *mat = hfx_effect_param(fx, "mat");
+    seed_param_rgba(S, hfx_param_member(mat, "colour"), "mat.colour", rgba_make(0.2, 0.1, 0.4, 1));
+    seed_param_float(S, hfx_param_member(mat, "k"), "mat.k", 0.5);
+    hfx_param *t = hfx_effect_param(fx, "tint");
+    seed_param_rgba(S, t ? hfx_param_element(t, 2) : NULL, "tint[2]", rgba_make(0.9, 0.8, 0.3, 1));
+    seed_set_texture(S, fx, "tex", tex);
+}
+static void alpha_update(hfx_effect *fx) {
+    seed_set_bool(S, fx, "invert", 1);
+    hfx_param *t = hfx_effect_param(fx, "tint");
+    seed_param_rgba(S, t ? hfx_param_element(t, 2) : NULL, "tint[2]", rgba_make(0.1, 0.5, 0.9, 1));
+}
+
+static void struct_bool_alpha_test(void) {
+    spv_case c = {"alpha.fx", "T", 1, SEED_BLEND_NONE, 0, alpha_set, alpha_update};
+    unsigned char texels[64];
+    seed_smooth_texels(texels);
+    seed_texture tex = seed_texture_make(S, 4, 4, texels);
+    seed_mesh *mesh = seed_mesh_floor(S, 2);
+    seed_camera_top(S, 2);
+    hfx_effect *glsl = load_alpha(HFX_TARGET_GLSL330), *spv = load_alpha(HFX_TARGET_SPIRV);
+    CHECK(glsl != NULL);
+    CHECK(spv != NULL);
+    size_t bytes = (size_t)W * H * 4;
+    unsigned char *a = malloc(bytes), *b = malloc(bytes), *b0 = malloc(bytes);
+    if (glsl && spv && a && b && b0) {
+        for (int round = 0; round < 2; round++) {
+            if (round) {
+                memcpy(b0, b, bytes);
+                alpha_update(glsl);
+                alpha_update(spv);
+            } else {
+                alpha_set(glsl, &tex);
+                alpha_set(spv, &tex);
+            }
+            draw(glsl, &c, mesh);
+            grab(a);
+            draw(spv, &c, mesh);
+            grab(b);
+            compare(c.file, round ? "after an update" : "first frame", a, b);
+            /* The alpha test keeps u > 100/255: the left part of the floor stays clear. */
+            CHECK(b[(64 * W + 5) * 4 + 0] == 0 && b[(64 * W + 5) * 4 + 3] == 0);
+            CHECK(b[(64 * W + 120) * 4 + 3] > 200);
+        }
+        int changed;
+        image_diff(b0, b, &changed);
+        CHECK(changed > 100);
+    }
+    free(a), free(b), free(b0);
+    if (glsl) hfx_effect_destroy(glsl);
+    if (spv) hfx_effect_destroy(spv);
+    seed_texture_free(S, &tex);
+    seed_mesh_free(S, mesh);
+    CHECK_SCENE(S);
+}
+
 /* A GL without ARB_gl_spirv, as a device sees it: the loader has no glSpecializeShader. (OSMesa
  * gives llvmpipe's 4.5 core context even when asked for 3.3, so the lack is made here.) */
 static void *loader_without_spirv(const char *name) {
@@ -331,6 +419,7 @@ int main(void) {
     seed_use_hfxo(S, 1);
     RUN(render_both_targets);
     seed_use_hfxo(S, 0);
+    RUN(struct_bool_alpha_test);
     RUN(refused_without_gl_spirv);
     seed_scene_destroy(S);
     return test_summary();
