@@ -373,6 +373,18 @@ static char *dup_string(const char *s) {
     return d;
 }
 
+/* Diagnostics with only warnings still need to say why the load failed: the reason goes on a
+ * line of its own after them (name may be NULL when msg names its file already). */
+static char *append_line(char *text, const char *name, const char *msg) {
+    size_t have = text ? strlen(text) : 0, n = have + (name ? strlen(name) : 0) + strlen(msg) + 5;
+    char *t = realloc(text, n);
+    if (!t) return text;
+    /* compile_none.c's message is one line without its newline */
+    snprintf(t + have, n - have, "%s%s%s%s\n", have && t[have - 1] != '\n' ? "\n" : "", name ? name : "",
+             name ? ": " : "", msg);
+    return t;
+}
+
 /* Loads a compiled effect (taking it); on failure frees it and reports in dev and *errors. */
 static hfx_effect *load_compiled(hfx_device *dev, hfx_fx_effect *fx, const hfx_load_options *opt, char **errors) {
     hfx_target target = opt ? opt->target : HFX_TARGET_GLSL330;
@@ -383,20 +395,10 @@ static hfx_effect *load_compiled(hfx_device *dev, hfx_fx_effect *fx, const hfx_l
         if (sh) shared_free(sh);
         else hfx_fx_effect_free(fx);
         if (!dev->error[0]) hfx_rt_fail(dev, HFX_ERR_MEMORY, "out of memory");
-        if (errors && !*errors) *errors = dup_string(dev->error);
+        if (errors) *errors = *errors ? append_line(*errors, NULL, dev->error) : dup_string(dev->error);
         return NULL;
     }
     return e;
-}
-
-/* Diagnostics with only warnings still need to say why the load failed. */
-static char *append_line(char *text, const char *name, const char *msg) {
-    size_t have = text ? strlen(text) : 0, n = have + strlen(name) + strlen(msg) + 5;
-    char *t = realloc(text, n);
-    if (!t) return text;
-    /* compile_none.c's message is one line without its newline */
-    snprintf(t + have, n - have, "%s%s: %s\n", have && t[have - 1] != '\n' ? "\n" : "", name, msg);
-    return t;
 }
 
 static hfx_effect *load(hfx_device *dev, const char *path, const void *data, size_t size, const char *name,
