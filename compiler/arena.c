@@ -14,7 +14,11 @@ struct hfx_arena_block {
 
 enum { BLOCK_SIZE = 64 * 1024 };
 
-void hfx_arena_init(hfx_arena *a) { a->head = NULL; a->total = 0; }
+void hfx_arena_init(hfx_arena *a) {
+    a->head = NULL;
+    a->cur = a->end = NULL;
+    a->total = 0;
+}
 
 void hfx_arena_free(hfx_arena *a) {
     hfx_arena_block *b = a->head;
@@ -23,27 +27,29 @@ void hfx_arena_free(hfx_arena *a) {
         free(b);
         b = next;
     }
-    a->head = NULL;
-    a->total = 0;
+    hfx_arena_init(a);
 }
 
-void *hfx_arena_alloc(hfx_arena *a, size_t size) {
+/* Zeroes only what is handed out: most compilations use a small part of their last block. */
+void *hfx_arena_alloc_slow(hfx_arena *a, size_t size) {
     size = (size + 15) & ~(size_t)15;
-    hfx_arena_block *b = a->head;
-    if (!b || b->size - b->used < size) {
-        size_t cap = size > BLOCK_SIZE ? size : BLOCK_SIZE;
-        b = malloc(sizeof *b + cap);
-        if (!b) return NULL;
-        b->size = cap;
-        b->used = 0;
+    size_t cap = size > BLOCK_SIZE ? size : BLOCK_SIZE;
+    hfx_arena_block *b = malloc(sizeof *b + cap);
+    if (!b) return NULL;
+    b->size = cap;
+    if (size > BLOCK_SIZE / 4 && a->head) {
+        /* a big allocation gets a block of its own behind the current one, keeping its free space */
+        b->next = a->head->next;
+        a->head->next = b;
+    } else {
         b->next = a->head;
         a->head = b;
+        a->cur = b->data + size;
+        a->end = b->data + cap;
     }
-    void *p = b->data + b->used;
-    b->used += size;
+    b->used = size;
     a->total += size;
-    memset(p, 0, size);
-    return p;
+    return memset(b->data, 0, size);
 }
 
 char *hfx_arena_strndup(hfx_arena *a, const char *s, size_t n) {

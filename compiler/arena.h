@@ -4,16 +4,31 @@
 #define HFX_ARENA_H
 
 #include <stddef.h>
+#include <string.h>
 
 typedef struct hfx_arena_block hfx_arena_block;
 typedef struct hfx_arena {
     hfx_arena_block *head;
+    unsigned char *cur, *end; /* free space of the head block */
     size_t total;
 } hfx_arena;
 
 void hfx_arena_init(hfx_arena *a);
 void hfx_arena_free(hfx_arena *a);
-void *hfx_arena_alloc(hfx_arena *a, size_t size);            /* zeroed, 16-byte aligned; NULL only if out of memory */
+void *hfx_arena_alloc_slow(hfx_arena *a, size_t size);       /* a new block; use hfx_arena_alloc */
+
+/* Zeroed, 16-byte aligned; NULL only if out of memory. Inline because the lexer and parser
+ * allocate a node or a token at a time. */
+static inline void *hfx_arena_alloc(hfx_arena *a, size_t size) {
+    size = (size + 15) & ~(size_t)15;
+    if ((size_t)(a->end - a->cur) >= size) {
+        void *p = a->cur;
+        a->cur += size;
+        a->total += size;
+        return memset(p, 0, size);
+    }
+    return hfx_arena_alloc_slow(a, size);
+}
 char *hfx_arena_strdup(hfx_arena *a, const char *s);
 char *hfx_arena_strndup(hfx_arena *a, const char *s, size_t n);
 char *hfx_arena_printf(hfx_arena *a, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
