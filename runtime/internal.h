@@ -282,6 +282,9 @@ void hfx_rt_upload_slow(hfx_device *dev, const hfx_upload *up, const uint32_t *v
 void hfx_rt_upload_slot(hfx_effect *fx, const hfx_rt_program *p, const hfx_slot *s); /* all of a parameter's uploads */
 void hfx_rt_program_extras(hfx_device *dev, hfx_rt_program *p);
 void hfx_rt_program_ready(hfx_rt_program *p, uint32_t tops); /* after the uploads and extras are resolved */
+/* Picks the glUniform* call for a uniform of GL type `type` holding p; 0 when they do not match. */
+int hfx_rt_upload_setup(const hfx_gl *gl, GLenum type, const hfx_fx_param *p, hfx_upload *up, uint32_t *comps);
+int hfx_rt_upload_add(hfx_device *dev, hfx_rt_program *p, uint32_t *cap, const hfx_upload *up); /* appends to p */
 
 /* Uploads the parameters whose version differs from the one this program holds, visiting only
  * the log entries written since the program last looked when it follows this instance; returns

@@ -85,7 +85,6 @@ static const active_uniform *find_active(const build *b, const char *name) {
     return NULL;
 }
 
-/* The glUniform* for a GLSL type, and how many components one element has. */
 static int upload_fn(GLenum type, uint16_t *fn, uint32_t *comps, int *is_int) {
     *is_int = 0;
     switch (type) {
@@ -110,15 +109,66 @@ static int upload_fn(GLenum type, uint16_t *fn, uint32_t *comps, int *is_int) {
     }
 }
 
+static void set_call(const hfx_gl *gl, hfx_upload *up) {
+    switch (up->fn) {
+    case UP_F1: up->call.f = gl->Uniform1fv; break;
+    case UP_F2: up->call.f = gl->Uniform2fv; break;
+    case UP_F3: up->call.f = gl->Uniform3fv; break;
+    case UP_F4: up->call.f = gl->Uniform4fv; break;
+    case UP_I1: up->call.i = gl->Uniform1iv; break;
+    case UP_I2: up->call.i = gl->Uniform2iv; break;
+    case UP_I3: up->call.i = gl->Uniform3iv; break;
+    case UP_I4: up->call.i = gl->Uniform4iv; break;
+    case UP_M2: up->call.m = gl->UniformMatrix2fv; break;
+    case UP_M3: up->call.m = gl->UniformMatrix3fv; break;
+    case UP_M4: up->call.m = gl->UniformMatrix4fv; break;
+    case UP_M2x3: up->call.m = gl->UniformMatrix2x3fv; break;
+    case UP_M3x2: up->call.m = gl->UniformMatrix3x2fv; break;
+    case UP_M2x4: up->call.m = gl->UniformMatrix2x4fv; break;
+    case UP_M4x2: up->call.m = gl->UniformMatrix4x2fv; break;
+    case UP_M3x4: up->call.m = gl->UniformMatrix3x4fv; break;
+    default: up->call.m = gl->UniformMatrix4x3fv; break;
+    }
+}
+
+int hfx_rt_upload_setup(const hfx_gl *gl, GLenum type, const hfx_fx_param *p, hfx_upload *up, uint32_t *comps) {
+    int is_int;
+    uint32_t elem_words = p->elements ? p->words / p->elements : p->words;
+    if (!upload_fn(type, &up->fn, comps, &is_int) || *comps != elem_words) return 0;
+    if (is_int != (p->type != HFX_TYPE_FLOAT)) up->kind = UK_CONVERT;
+    else if (is_int) up->kind = UK_INT;
+    else if (up->fn >= UP_M2) up->kind = UK_MATRIX;
+    else up->kind = UK_FLOAT;
+    set_call(gl, up);
+    return 1;
+}
+
+int hfx_rt_upload_add(hfx_device *dev, hfx_rt_program *p, uint32_t *cap, const hfx_upload *up) {
+    if (p->upload_count == *cap) {
+        uint32_t n = *cap ? *cap * 2 : 8;
+        hfx_upload *grown = realloc(p->uploads, n * sizeof *grown);
+        if (!grown) return HFX_ERR_MEMORY;
+        p->uploads = grown;
+        *cap = n;
+    }
+    p->uploads[p->upload_count++] = *up;
+    if (up->kind == UK_CONVERT && up->words > dev->scratch_size) {
+        float *s = realloc(dev->scratch, up->words * sizeof *s);
+        if (!s) return HFX_ERR_MEMORY;
+        dev->scratch = s;
+        dev->scratch_size = up->words;
+    }
+    return HFX_OK;
+}
+
 static int add_upload(build *b, const char *name, const hfx_fx_param *p, uint32_t count) {
     const active_uniform *u = find_active(b, name);
     if (!u) return HFX_OK; /* optimised out by GL */
     hfx_upload up;
     memset(&up, 0, sizeof up);
     uint32_t comps;
-    int is_int;
-    uint32_t elem_words = p->elements ? p->words / p->elements : p->words;
-    if (!upload_fn(u->type, &up.fn, &comps, &is_int) || comps != elem_words) {
+    const hfx_gl *gl = &b->sh->dev->gl;
+    if (!hfx_rt_upload_setup(gl, u->type, p, &up, &comps)) {
         hfx_shared_warn(b->sh, NULL, "uniform '%s': its GLSL type does not match parameter '%s'; not uploaded", name,
                         p->name ? p->name : "");
         return HFX_OK;
@@ -126,52 +176,13 @@ static int add_upload(build *b, const char *name, const hfx_fx_param *p, uint32_
     char loc_name[300];
     int n = snprintf(loc_name, sizeof loc_name, "%s%s", name, u->size > 1 || p->elements ? "[0]" : "");
     if (n < 0 || (size_t)n >= sizeof loc_name) return HFX_OK;
-    up.location = b->sh->dev->gl.GetUniformLocation(b->p->object, loc_name);
-    if (up.location < 0) up.location = b->sh->dev->gl.GetUniformLocation(b->p->object, name);
+    up.location = gl->GetUniformLocation(b->p->object, loc_name);
+    if (up.location < 0) up.location = gl->GetUniformLocation(b->p->object, name);
     if (up.location < 0) return HFX_OK;
     up.count = (GLsizei)(count < (uint32_t)u->size ? count : (uint32_t)u->size);
     up.offset = p->offset;
     up.words = (uint32_t)up.count * comps;
-    int convert = is_int != (p->type != HFX_TYPE_FLOAT);
-    const hfx_gl *gl = &b->sh->dev->gl;
-    if (convert) up.kind = UK_CONVERT;
-    else if (is_int) up.kind = UK_INT;
-    else if (up.fn >= UP_M2) up.kind = UK_MATRIX;
-    else up.kind = UK_FLOAT;
-    switch (up.fn) {
-    case UP_F1: up.call.f = gl->Uniform1fv; break;
-    case UP_F2: up.call.f = gl->Uniform2fv; break;
-    case UP_F3: up.call.f = gl->Uniform3fv; break;
-    case UP_F4: up.call.f = gl->Uniform4fv; break;
-    case UP_I1: up.call.i = gl->Uniform1iv; break;
-    case UP_I2: up.call.i = gl->Uniform2iv; break;
-    case UP_I3: up.call.i = gl->Uniform3iv; break;
-    case UP_I4: up.call.i = gl->Uniform4iv; break;
-    case UP_M2: up.call.m = gl->UniformMatrix2fv; break;
-    case UP_M3: up.call.m = gl->UniformMatrix3fv; break;
-    case UP_M4: up.call.m = gl->UniformMatrix4fv; break;
-    case UP_M2x3: up.call.m = gl->UniformMatrix2x3fv; break;
-    case UP_M3x2: up.call.m = gl->UniformMatrix3x2fv; break;
-    case UP_M2x4: up.call.m = gl->UniformMatrix2x4fv; break;
-    case UP_M4x2: up.call.m = gl->UniformMatrix4x2fv; break;
-    case UP_M3x4: up.call.m = gl->UniformMatrix3x4fv; break;
-    default: up.call.m = gl->UniformMatrix4x3fv; break;
-    }
-    if (b->p->upload_count == b->upload_cap) {
-        uint32_t cap = b->upload_cap ? b->upload_cap * 2 : 8;
-        hfx_upload *n = realloc(b->p->uploads, cap * sizeof *n);
-        if (!n) return HFX_ERR_MEMORY;
-        b->p->uploads = n;
-        b->upload_cap = cap;
-    }
-    b->p->uploads[b->p->upload_count++] = up;
-    if (convert && up.words > b->sh->dev->scratch_size) {
-        float *s = realloc(b->sh->dev->scratch, up.words * sizeof *s);
-        if (!s) return HFX_ERR_MEMORY;
-        b->sh->dev->scratch = s;
-        b->sh->dev->scratch_size = up.words;
-    }
-    return HFX_OK;
+    return hfx_rt_upload_add(b->sh->dev, b->p, &b->upload_cap, &up);
 }
 
 static int add_param(build *b, uint32_t index, const char *path);

@@ -129,53 +129,6 @@ static const active_loc *find_active(const build *b, uint64_t loc) {
     return NULL;
 }
 
-/* The glUniform* for a GLSL type, and how many components one element has (as program.c). */
-static int upload_fn(GLenum type, uint16_t *fn, uint32_t *comps, int *is_int) {
-    *is_int = 0;
-    switch (type) {
-    case GL_FLOAT: *fn = UP_F1, *comps = 1; return 1;
-    case GL_FLOAT_VEC2: *fn = UP_F2, *comps = 2; return 1;
-    case GL_FLOAT_VEC3: *fn = UP_F3, *comps = 3; return 1;
-    case GL_FLOAT_VEC4: *fn = UP_F4, *comps = 4; return 1;
-    case GL_INT: case GL_BOOL: *fn = UP_I1, *comps = 1, *is_int = 1; return 1;
-    case GL_INT_VEC2: case GL_BOOL_VEC2: *fn = UP_I2, *comps = 2, *is_int = 1; return 1;
-    case GL_INT_VEC3: case GL_BOOL_VEC3: *fn = UP_I3, *comps = 3, *is_int = 1; return 1;
-    case GL_INT_VEC4: case GL_BOOL_VEC4: *fn = UP_I4, *comps = 4, *is_int = 1; return 1;
-    case GL_FLOAT_MAT2: *fn = UP_M2, *comps = 4; return 1;
-    case GL_FLOAT_MAT3: *fn = UP_M3, *comps = 9; return 1;
-    case GL_FLOAT_MAT4: *fn = UP_M4, *comps = 16; return 1;
-    case GL_FLOAT_MAT2x3: *fn = UP_M2x3, *comps = 6; return 1;
-    case GL_FLOAT_MAT3x2: *fn = UP_M3x2, *comps = 6; return 1;
-    case GL_FLOAT_MAT2x4: *fn = UP_M2x4, *comps = 8; return 1;
-    case GL_FLOAT_MAT4x2: *fn = UP_M4x2, *comps = 8; return 1;
-    case GL_FLOAT_MAT3x4: *fn = UP_M3x4, *comps = 12; return 1;
-    case GL_FLOAT_MAT4x3: *fn = UP_M4x3, *comps = 12; return 1;
-    default: return 0;
-    }
-}
-
-static void set_call(const hfx_gl *gl, hfx_upload *up) {
-    switch (up->fn) {
-    case UP_F1: up->call.f = gl->Uniform1fv; break;
-    case UP_F2: up->call.f = gl->Uniform2fv; break;
-    case UP_F3: up->call.f = gl->Uniform3fv; break;
-    case UP_F4: up->call.f = gl->Uniform4fv; break;
-    case UP_I1: up->call.i = gl->Uniform1iv; break;
-    case UP_I2: up->call.i = gl->Uniform2iv; break;
-    case UP_I3: up->call.i = gl->Uniform3iv; break;
-    case UP_I4: up->call.i = gl->Uniform4iv; break;
-    case UP_M2: up->call.m = gl->UniformMatrix2fv; break;
-    case UP_M3: up->call.m = gl->UniformMatrix3fv; break;
-    case UP_M4: up->call.m = gl->UniformMatrix4fv; break;
-    case UP_M2x3: up->call.m = gl->UniformMatrix2x3fv; break;
-    case UP_M3x2: up->call.m = gl->UniformMatrix3x2fv; break;
-    case UP_M2x4: up->call.m = gl->UniformMatrix2x4fv; break;
-    case UP_M4x2: up->call.m = gl->UniformMatrix4x2fv; break;
-    case UP_M3x4: up->call.m = gl->UniformMatrix3x4fv; break;
-    default: up->call.m = gl->UniformMatrix4x3fv; break;
-    }
-}
-
 /* One call for a value or an array of values at location loc (count elements from the
  * parameter's first word). */
 static int add_upload(build *b, const hfx_fx_param *p, uint64_t loc, uint32_t count) {
@@ -184,9 +137,7 @@ static int add_upload(build *b, const hfx_fx_param *p, uint64_t loc, uint32_t co
     hfx_upload up;
     memset(&up, 0, sizeof up);
     uint32_t comps;
-    int is_int;
-    uint32_t elem_words = p->elements ? p->words / p->elements : p->words;
-    if (!upload_fn(a->type, &up.fn, &comps, &is_int) || comps != elem_words) {
+    if (!hfx_rt_upload_setup(&b->sh->dev->gl, a->type, p, &up, &comps)) {
         hfx_shared_warn(b->sh, NULL,
                         "SPIR-V uniform at location %llu: its type does not match parameter '%s'; not uploaded",
                         (unsigned long long)loc, p->name ? p->name : "");
@@ -197,28 +148,7 @@ static int add_upload(build *b, const hfx_fx_param *p, uint64_t loc, uint32_t co
     up.count = (GLsizei)(count < room ? count : room);
     up.offset = p->offset;
     up.words = (uint32_t)up.count * comps;
-    int convert = is_int != (p->type != HFX_TYPE_FLOAT);
-    if (convert) up.kind = UK_CONVERT;
-    else if (is_int) up.kind = UK_INT;
-    else if (up.fn >= UP_M2) up.kind = UK_MATRIX;
-    else up.kind = UK_FLOAT;
-    set_call(&b->sh->dev->gl, &up);
-    if (b->p->upload_count == b->upload_cap) {
-        uint32_t cap = b->upload_cap ? b->upload_cap * 2 : 8;
-        hfx_upload *n = realloc(b->p->uploads, cap * sizeof *n);
-        if (!n) return HFX_ERR_MEMORY;
-        b->p->uploads = n;
-        b->upload_cap = cap;
-    }
-    b->p->uploads[b->p->upload_count++] = up;
-    hfx_device *dev = b->sh->dev;
-    if (convert && up.words > dev->scratch_size) {
-        float *s = realloc(dev->scratch, up.words * sizeof *s);
-        if (!s) return HFX_ERR_MEMORY;
-        dev->scratch = s;
-        dev->scratch_size = up.words;
-    }
-    return HFX_OK;
+    return hfx_rt_upload_add(b->sh->dev, b->p, &b->upload_cap, &up);
 }
 
 /* A parameter's uploads from location loc on: struct members and the elements of an array of
