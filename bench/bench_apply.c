@@ -20,6 +20,7 @@
 
 #include "gl_context.h"
 #include "internal.h"
+#include "bench.h"
 
 #define PARAMS 100
 
@@ -75,12 +76,6 @@ static hfx_fx_effect *build(void) {
     fx->techniques[0].name = dup("T");
     fx->techniques[0].pass_count = 1;
     return fx;
-}
-
-static double now(void) {
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
 }
 
 int main(int argc, char **argv) {

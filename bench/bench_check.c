@@ -13,24 +13,7 @@
 #include "files.h"
 #include "token.h"
 #include "types.h"
-
-typedef struct source {
-    const char *name;
-    char *text;
-    uint32_t size, lines;
-} source;
-
-static double now(void) {
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
-}
-
-static uint32_t count_lines(const char *s, uint32_t n) {
-    uint32_t lines = 1;
-    for (uint32_t i = 0; i < n; i++) lines += s[i] == '\n';
-    return lines;
-}
+#include "bench.h"
 
 /* One pass over every source; returns diagnostics seen (kept so nothing is optimised away). */
 static size_t run(const source *srcs, int count, int check) {

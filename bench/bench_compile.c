@@ -8,9 +8,12 @@
 #include <string.h>
 #include <time.h>
 
+#include "files.h"
+
 #include "effect.h"
 #include "glsl_check.h"
 #include "hfx/hfxc.h"
+#include "bench.h"
 
 static const char *const seeds[] = {
     "ambient.fx", "ambient_textured.fx", "directional.fx", "directional_specular.fx", "fxcomposer_empty.fx",
@@ -18,26 +21,6 @@ static const char *const seeds[] = {
     "spot_specular.fx", "tutorial0.fx",
 };
 enum { SEEDS = sizeof seeds / sizeof *seeds };
-
-static double now(void) {
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + ts.tv_nsec * 1e-9;
-}
-
-static char *read_all(const char *path, size_t *size) {
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *d = malloc((size_t)n + 1);
-    if (d && fread(d, 1, (size_t)n, f) != (size_t)n) { free(d); d = NULL; }
-    if (d) d[n] = 0;
-    fclose(f);
-    *size = (size_t)n;
-    return d;
-}
 
 enum { MAX_PROGRAMS = 256 };
 static char *kept[MAX_PROGRAMS][2]; /* the GLSL of the first round, for the in-process baseline */
@@ -80,7 +63,7 @@ int main(int argc, char **argv) {
     for (int i = 0; i < SEEDS; i++) {
         char path[1024];
         snprintf(path, sizeof path, "%s/%s", HFX_SEED_DIR, seeds[i]);
-        if (!(src[i] = read_all(path, &size[i]))) { fprintf(stderr, "no seed corpus at %s\n", HFX_SEED_DIR); return 1; }
+        if (!(src[i] = test_read_file(path, &size[i]))) { fprintf(stderr, "no seed corpus at %s\n", HFX_SEED_DIR); return 1; }
     }
     char dir[] = "/tmp/hfx_bench_XXXXXX";
     if (!mkdtemp(dir)) { perror("mkdtemp"); return 1; }

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "files.h"
+#include "bench.h"
 
 /* An effect in the seeds' style, made different per index so nothing can be shared. */
 static void write_effect(const char *dir, int i) {
@@ -50,12 +51,6 @@ static void write_effect(const char *dir, int i) {
             "technique Plain { pass P0 { VertexShader = compile vs_3_0 mainVS(); PixelShader = compile ps_3_0 mainPS(false); } }\n",
             lights, lights, 5 + i % 20, i % 100, i, i % 100, 1 + i % 4, lights, 2 + i % 30);
     fclose(f);
-}
-
-static double now(void) {
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
 }
 
 static double child_cpu(void) {

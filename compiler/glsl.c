@@ -14,6 +14,17 @@ static void line_start(gp *p) {
 
 static void print_stmt(gp *p, const ir_stmt *s);
 
+/* `{ statements }` on lines of their own: blocks and switch bodies. */
+static void print_braced(gp *p, const ir_stmt *s) {
+    line_start(p);
+    sb_put(p->out, "{\n");
+    p->indent++;
+    for (uint32_t i = 0; i < s->count; i++) print_stmt(p, s->body[i]);
+    p->indent--;
+    line_start(p);
+    sb_put(p->out, "}\n");
+}
+
 static void print_body(gp *p, const ir_stmt *s) {
     if (s && s->kind == IS_BLOCK) { print_stmt(p, s); return; }
     line_start(p);
@@ -83,13 +94,7 @@ static void print_stmt(gp *p, const ir_stmt *s) {
     }
     switch (s->kind) {
     case IS_BLOCK:
-        line_start(p);
-        sb_put(p->out, "{\n");
-        p->indent++;
-        for (uint32_t i = 0; i < s->count; i++) print_stmt(p, s->body[i]);
-        p->indent--;
-        line_start(p);
-        sb_put(p->out, "}\n");
+        print_braced(p, s);
         return;
     case IS_DECL: line_start(p); print_decl(p, s->var, s->expr, true, ";\n"); return;
     case IS_EXPR: line_start(p); glsl_expr(p, s->expr, PREC_COMMA); sb_put(p->out, ";\n"); return;
@@ -117,13 +122,7 @@ static void print_stmt(gp *p, const ir_stmt *s) {
         if (s->expr->type->base != B_INT) sb_put(p->out, "int(");
         glsl_expr(p, s->expr, PREC_COMMA);
         sb_put(p->out, s->expr->type->base != B_INT ? "))\n" : ")\n");
-        line_start(p);
-        sb_put(p->out, "{\n");
-        p->indent++;
-        for (uint32_t i = 0; i < s->count; i++) print_stmt(p, s->body[i]);
-        p->indent--;
-        line_start(p);
-        sb_put(p->out, "}\n");
+        print_braced(p, s);
         return;
     case IS_CASE:
         p->indent--;

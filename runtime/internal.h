@@ -276,6 +276,8 @@ void hfx_rt_read_target(hfx_device *dev);
 
 /* program.c */
 int hfx_rt_program_build(hfx_shared *sh, uint32_t index, hfx_target target);
+/* Links vs + fs into p->object (fp's attribute locations bound first; NULL for SPIR-V). */
+int hfx_rt_program_link(hfx_shared *sh, hfx_rt_program *p, const hfx_fx_program *fp, GLuint vs, GLuint fs);
 void hfx_rt_program_free(hfx_device *dev, hfx_rt_program *p);
 void hfx_rt_upload_all(hfx_effect *fx, hfx_rt_program *p);
 void hfx_rt_upload_slow(hfx_device *dev, const hfx_upload *up, const uint32_t *values);

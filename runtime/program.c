@@ -42,14 +42,15 @@ static GLuint compile_stage(hfx_shared *sh, GLenum type, const char *src, const 
     return 0;
 }
 
-static int link_program(hfx_shared *sh, hfx_rt_program *p, const hfx_fx_program *fp, GLuint vs, GLuint fs) {
+int hfx_rt_program_link(hfx_shared *sh, hfx_rt_program *p, const hfx_fx_program *fp, GLuint vs, GLuint fs) {
     hfx_gl *gl = &sh->dev->gl;
     p->object = gl->CreateProgram();
     if (!p->object) return hfx_rt_fail(sh->dev, HFX_ERR_GL, "glCreateProgram failed");
     gl->AttachShader(p->object, vs);
     gl->AttachShader(p->object, fs);
-    /* GLSL 330 carries layout qualifiers; GLSL 110 needs the locations bound before linking. */
-    for (uint32_t a = 0; a < fp->attribute_count; a++)
+    /* GLSL 330 carries layout qualifiers; GLSL 110 needs the locations bound before linking.
+     * SPIR-V (fp NULL) has its locations in the module. */
+    for (uint32_t a = 0; fp && a < fp->attribute_count; a++)
         if (fp->attributes[a].glsl_name && fp->attributes[a].location >= 0)
             gl->BindAttribLocation(p->object, (GLuint)fp->attributes[a].location, fp->attributes[a].glsl_name);
     gl->LinkProgram(p->object);
@@ -283,7 +284,7 @@ int hfx_rt_program_build(hfx_shared *sh, uint32_t index, hfx_target target) {
                            sh->fx->source_name ? sh->fx->source_name : "effect", (unsigned)index);
     GLuint vs = compile_stage(sh, GL_VERTEX_SHADER, vs_src, "vertex");
     GLuint fs = vs ? compile_stage(sh, GL_FRAGMENT_SHADER, fs_src, "fragment") : 0;
-    int rc = vs && fs ? link_program(sh, p, fp, vs, fs) : HFX_ERR_GL;
+    int rc = vs && fs ? hfx_rt_program_link(sh, p, fp, vs, fs) : HFX_ERR_GL;
     if (vs) sh->dev->gl.DeleteShader(vs);
     if (fs) sh->dev->gl.DeleteShader(fs);
     if (rc) return rc;

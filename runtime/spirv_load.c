@@ -72,23 +72,6 @@ static GLuint specialize_stage(hfx_shared *sh, GLenum type, const hfx_fx_code *c
     return 0;
 }
 
-static int link_spirv(hfx_shared *sh, hfx_rt_program *p, GLuint vs, GLuint fs) {
-    hfx_gl *gl = &sh->dev->gl;
-    p->object = gl->CreateProgram();
-    if (!p->object) return hfx_rt_fail(sh->dev, HFX_ERR_GL, "glCreateProgram failed");
-    gl->AttachShader(p->object, vs);
-    gl->AttachShader(p->object, fs);
-    gl->LinkProgram(p->object);
-    gl->DetachShader(p->object, vs);
-    gl->DetachShader(p->object, fs);
-    GLint ok = 0;
-    gl->GetProgramiv(p->object, GL_LINK_STATUS, &ok);
-    if (ok) return HFX_OK;
-    char log[768] = "";
-    gl->GetProgramInfoLog(p->object, sizeof log, NULL, log);
-    return hfx_rt_fail(sh->dev, HFX_ERR_GL, "%s: GL refused to link a SPIR-V program: %s", name_of(sh), log);
-}
-
 /* An active uniform as the program interface reports it: locations [location, location + size). */
 typedef struct active_loc {
     GLint location, size;
@@ -215,7 +198,7 @@ int hfx_rt_spirv_program_build(hfx_shared *sh, uint32_t index) {
     const hfx_fx_code *fcode = &fp->code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV];
     GLuint vs = specialize_stage(sh, GL_VERTEX_SHADER, vcode, "vertex");
     GLuint fs = vs ? specialize_stage(sh, GL_FRAGMENT_SHADER, fcode, "fragment") : 0;
-    int rc = vs && fs ? link_spirv(sh, p, vs, fs) : HFX_ERR_GL;
+    int rc = vs && fs ? hfx_rt_program_link(sh, p, NULL, vs, fs) : HFX_ERR_GL;
     if (vs) sh->dev->gl.DeleteShader(vs);
     if (fs) sh->dev->gl.DeleteShader(fs);
     if (rc) return rc;
