@@ -54,6 +54,16 @@ uint32_t hfx_fx_param_find(const hfx_fx_effect *fx, const char *name) {
     return HFX_NONE;
 }
 
+uint32_t hfx_fx_param_packable(const hfx_fx_effect *fx, uint32_t i) {
+    if (!fx || i >= fx->top_param_count || i >= fx->param_count) return 0;
+    const hfx_fx_param *p = &fx->params[i];
+    if (p->parent != HFX_NONE || p->elements || p->type != HFX_TYPE_FLOAT || !p->glsl_name) return 0;
+    if (p->klass != HFX_CLASS_SCALAR && p->klass != HFX_CLASS_VECTOR && p->klass != HFX_CLASS_MATRIX) return 0;
+    if (p->rows < 1 || p->rows > 4 || p->cols < 1 || p->cols > 4) return 0;
+    if (p->klass != HFX_CLASS_MATRIX && p->rows != 1) return 0;
+    return p->klass == HFX_CLASS_MATRIX ? p->rows : 1;
+}
+
 /* A deep copy is a round trip through the .hfxo form: one code path to trust, not two. */
 hfx_fx_effect *hfx_fx_effect_copy(const hfx_fx_effect *fx) {
     void *data = NULL;

@@ -97,8 +97,17 @@ typedef struct hfx_fx_sampler_use {
     int32_t unit;           /* texture unit this program samples it on */
 } hfx_fx_sampler_use;
 
+/* HFXC_PACK_UNIFORMS: the program's packable parameters (hfx_fx_param_packable) live in one
+ * `uniform vec4 hfx_c[reg_count];`, as D3D9's constant registers, so a runtime sets all the
+ * changed ones with one glUniform4fv. A scalar or vector takes one register (.x, .xy, .xyz,
+ * .xyzw); a floatRxC matrix R registers, register reg + i holding HLSL row i in its first C
+ * components (the parameter's row-major words, row after row, each row padded to 4). */
+#define HFX_FX_REGS_NAME "hfx_c"
+#define HFX_FX_MAX_REGS 4096u    /* what a reader accepts; the compiler packs at most 256 */
+
 typedef struct hfx_fx_uniform_use {
     uint32_t param;         /* top-level parameter the program reads */
+    uint32_t reg;           /* its first register in hfx_c; HFX_NONE: its own GLSL uniform */
 } hfx_fx_uniform_use;
 
 typedef struct hfx_fx_code {
@@ -119,6 +128,7 @@ typedef struct hfx_fx_program {
     hfx_fx_sampler_use *samplers; uint32_t sampler_count;
     hfx_fx_uniform_use *uniforms; uint32_t uniform_count;
     uint32_t flags;
+    uint32_t reg_count;     /* vec4 registers of hfx_c (0: nothing packed) */
 } hfx_fx_program;
 
 typedef struct hfx_fx_pass {
@@ -151,6 +161,13 @@ void hfx_fx_effect_free(hfx_fx_effect *fx);                 /* frees fx and ever
 void hfx_fx_program_clear(hfx_fx_program *p);               /* frees what p owns, zeroes it */
 hfx_fx_effect *hfx_fx_effect_copy(const hfx_fx_effect *fx); /* deep copy; NULL when out of memory */
 uint32_t hfx_fx_param_find(const hfx_fx_effect *fx, const char *name); /* top-level by name, or HFX_NONE */
+/* Registers parameter i would take in hfx_c (rows for a matrix, else 1); 0 when it cannot be
+ * packed: only a top-level, non-array float scalar, vector or matrix (up to 4x4) with a GLSL name. */
+uint32_t hfx_fx_param_packable(const hfx_fx_effect *fx, uint32_t i);
+/* Whether program p reads use u from hfx_c (a register inside reg_count) rather than its own uniform. */
+static inline int hfx_fx_use_packed(const hfx_fx_program *p, const hfx_fx_uniform_use *u) {
+    return u->reg != HFX_NONE && u->reg < p->reg_count;
+}
 
 /* .hfxo: see docs/hfxo-format.md. */
 int hfx_fx_write_hfxo(const hfx_fx_effect *fx, void **out, size_t *out_size); /* 0 on success */

@@ -10,7 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define HFXO_VERSION 1u
+#define HFXO_VERSION 2u /* 2: registers of HFXC_PACK_UNIFORMS */
 #define HFXO_HEADER 20u /* magic 8, version, checksum, total size; then the section count */
 #define NO_STRING 0xffffffffu
 
@@ -28,11 +28,12 @@ enum {
     SEC_CODE = FOURCC('C', 'O', 'D', 'E')
 };
 
-/* Words per record in version 1 (readers accept longer records and ignore the tail). */
+/* Words per record in version 2 (readers accept longer records and ignore the tail). */
 enum {
     R_EFFECT = 3, R_PARAM = 18, R_ANNOTATION = 8, R_STATE = 12, R_SAMPLER = 5,
-    R_PROGRAM = 7 + 2 * HFX_STAGE_COUNT * HFX_TARGET_COUNT, R_ATTRIBUTE = 3, R_SAMPLER_USE = 3,
-    R_UNIFORM_USE = 1, R_PASS = 6, R_TECHNIQUE = 5
+    P_CODE = 7, P_REG_COUNT = P_CODE + 2 * HFX_STAGE_COUNT * HFX_TARGET_COUNT, /* program record fields */
+    R_PROGRAM = P_REG_COUNT + 1, R_ATTRIBUTE = 3, R_SAMPLER_USE = 3,
+    R_UNIFORM_USE = 2, R_PASS = 6, R_TECHNIQUE = 5
 };
 
 /* CRC-32 (IEEE 802.3, as zlib), four bits at a time from a 16-entry table. */
@@ -240,6 +241,7 @@ static void write_programs(writer *w, const hfx_fx_effect *fx) {
                 put32(&w->out, has ? (uint32_t)c->size : 0);
                 if (has) put_bytes(&w->code, c->data, c->size);
             }
+        put32(&w->out, p->reg_count);
         attrs += p->attribute_count;
         samplers += p->sampler_count;
         uniforms += p->uniform_count;
@@ -265,7 +267,10 @@ static void write_programs(writer *w, const hfx_fx_effect *fx) {
     section_end(w);
     table_begin(w, SEC_UNIFORM_USES, uniforms, R_UNIFORM_USE);
     for (uint32_t i = 0; i < fx->program_count; i++)
-        for (uint32_t a = 0; a < fx->programs[i].uniform_count; a++) put32(&w->out, fx->programs[i].uniforms[a].param);
+        for (uint32_t a = 0; a < fx->programs[i].uniform_count; a++) {
+            put32(&w->out, fx->programs[i].uniforms[a].param);
+            put32(&w->out, fx->programs[i].uniforms[a].reg);
+        }
     section_end(w);
 }
 
@@ -441,6 +446,8 @@ static bool read_header(reader *r) {
     if (memcmp(d, magic, m) != 0) return fail(r, "not an .hfxo file (bad magic number)");
     if (r->size < HFXO_HEADER + 4) return fail(r, "file is %zu bytes, too short for the header (truncated?)", r->size);
     uint32_t version = rd32(d + 8);
+    if (version < HFXO_VERSION) /* nothing was released before version 2: no conversion */
+        return fail(r, "format version %u is older than this reader's %u: compile the .fx again", version, HFXO_VERSION);
     if (version != HFXO_VERSION) return fail(r, "format version %u is not supported (this reader knows %u)", version, HFXO_VERSION);
     if (rd32(d + 16) != r->size) return fail(r, "file is %zu bytes but its header says %u (truncated?)", r->size, rd32(d + 16));
     if (crc32_of(d + 16, r->size - 16) != rd32(d + 12)) return fail(r, "checksum mismatch (the file is corrupted)");
@@ -588,7 +595,7 @@ static bool read_program(reader *r, hfx_fx_program *p, uint32_t i) {
     if (!range_ok(af, an, r->t_attributes.count) || !range_ok(sf, sn, r->t_sampler_uses.count) ||
         !range_ok(uf, un, r->t_uniform_uses.count))
         return fail(r, "program %u refers to records that do not exist", i);
-    for (uint32_t s = 0, k = 7; s < HFX_STAGE_COUNT; s++)
+    for (uint32_t s = 0, k = P_CODE; s < HFX_STAGE_COUNT; s++)
         for (uint32_t g = 0; g < HFX_TARGET_COUNT; g++, k += 2)
             if (!read_code(r, field(t, i, k), field(t, i, k + 1), &p->code[s][g])) return false;
     if (!(p->attributes = alloc_array(r, an, sizeof *p->attributes))) return false;
@@ -610,7 +617,11 @@ static bool read_program(reader *r, hfx_fx_program *p, uint32_t i) {
     }
     if (!(p->uniforms = alloc_array(r, un, sizeof *p->uniforms))) return false;
     p->uniform_count = un;
-    for (uint32_t a = 0; a < un; a++) p->uniforms[a].param = field(&r->t_uniform_uses, uf + a, 0);
+    for (uint32_t a = 0; a < un; a++) {
+        p->uniforms[a].param = field(&r->t_uniform_uses, uf + a, 0);
+        p->uniforms[a].reg = field(&r->t_uniform_uses, uf + a, 1);
+    }
+    p->reg_count = field(t, i, P_REG_COUNT);
     return true;
 }
 
@@ -709,6 +720,20 @@ static bool check_state(reader *r, const hfx_fx_effect *fx, const hfx_fx_state *
     }
 }
 
+/* HFXC_PACK_UNIFORMS: a runtime writes a packed parameter's rows into hfx_c without looking. */
+static bool check_registers(reader *r, const hfx_fx_effect *fx, const hfx_fx_program *p, uint32_t i) {
+    if (p->reg_count > HFX_FX_MAX_REGS) return fail(r, "program %u has %u registers (at most %u)", i, p->reg_count, HFX_FX_MAX_REGS);
+    for (uint32_t k = 0; k < p->uniform_count; k++) {
+        const hfx_fx_uniform_use *u = &p->uniforms[k];
+        if (u->reg == HFX_NONE) continue;
+        uint32_t n = hfx_fx_param_packable(fx, u->param);
+        if (!n) return fail(r, "program %u packs parameter %u, which cannot be packed", i, u->param);
+        if (u->reg >= p->reg_count || n > p->reg_count - u->reg)
+            return fail(r, "program %u puts parameter %u outside its %u registers", i, u->param, p->reg_count);
+    }
+    return true;
+}
+
 static bool check_effect(reader *r, const hfx_fx_effect *fx) {
     if (fx->top_param_count > fx->param_count) return fail(r, "more top-level parameters than parameters");
     for (uint32_t i = 0; i < fx->param_count; i++)
@@ -729,6 +754,7 @@ static bool check_effect(reader *r, const hfx_fx_effect *fx) {
             if (p->samplers[k].sampler >= fx->sampler_count) return fail(r, "program %u uses a missing sampler", i);
         for (uint32_t k = 0; k < p->uniform_count; k++)
             if (p->uniforms[k].param >= fx->top_param_count) return fail(r, "program %u uses a missing parameter", i);
+        if (!check_registers(r, fx, p, i)) return false;
     }
     for (uint32_t i = 0; i < fx->pass_count; i++) {
         const hfx_fx_pass *p = &fx->passes[i];

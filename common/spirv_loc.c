@@ -21,12 +21,13 @@ static uint64_t param_locations(const hfx_fx_effect *fx, uint32_t i, int depth) 
 
 uint64_t hfx_fx_param_locations(const hfx_fx_effect *fx, uint32_t i) { return fx ? param_locations(fx, i, 0) : 0; }
 
+/* Packed parameters (HFXC_PACK_UNIFORMS) take no location of their own: hfx_c holds them. */
 int64_t hfx_fx_spirv_uniform(const hfx_fx_effect *fx, const hfx_fx_program *p, const char *name, size_t len,
                              uint64_t *loc) {
     uint64_t at = 0;
     for (uint32_t k = 0; k < p->uniform_count; k++) {
         uint32_t param = p->uniforms[k].param;
-        if (param >= fx->param_count) continue;
+        if (param >= fx->param_count || hfx_fx_use_packed(p, &p->uniforms[k])) continue;
         const char *g = fx->params[param].glsl_name;
         if (g && strlen(g) == len && strncmp(g, name, len) == 0) {
             *loc = at;
@@ -34,8 +35,19 @@ int64_t hfx_fx_spirv_uniform(const hfx_fx_effect *fx, const hfx_fx_program *p, c
         }
         at += param_locations(fx, param, 0);
     }
-    *loc = at;
+    *loc = at + p->reg_count;
     return -1;
+}
+
+uint64_t hfx_fx_spirv_regs_location(const hfx_fx_effect *fx, const hfx_fx_program *p) {
+    if (!fx || !p) return 0;
+    uint64_t end;
+    hfx_fx_spirv_uniform(fx, p, "", 0, &end); /* no GLSL name is empty */
+    return end - p->reg_count;
+}
+
+int hfx_fx_spirv_is_regs(const hfx_fx_program *p, const char *name, size_t len) {
+    return p->reg_count && len == strlen(HFX_FX_REGS_NAME) && strncmp(name, HFX_FX_REGS_NAME, len) == 0;
 }
 
 int64_t hfx_fx_spirv_sampler(const hfx_fx_program *p, const char *name, size_t len) {
@@ -59,7 +71,9 @@ int32_t hfx_fx_spirv_location(const hfx_fx_effect *fx, const hfx_fx_program *p, 
     size_t len = strlen(glsl_name);
     uint64_t loc;
     int64_t k = hfx_fx_spirv_uniform(fx, p, glsl_name, len, &loc);
-    if (k < 0) {
+    if (k < 0 && hfx_fx_spirv_is_regs(p, glsl_name, len)) {
+        loc = hfx_fx_spirv_regs_location(fx, p);
+    } else if (k < 0) {
         int64_t smp = hfx_fx_spirv_sampler(p, glsl_name, len), known = hfx_fx_spirv_known(glsl_name, len);
         if (smp >= 0) loc += (uint64_t)smp;
         else if (known >= 0) loc += p->sampler_count + (uint64_t)known;

@@ -13,14 +13,21 @@
 /* The known internal uniforms, in their order after the samplers. */
 enum { HFX_SPIRV_POS_FIXUP, HFX_SPIRV_ALPHA_FUNC, HFX_SPIRV_ALPHA_REF, HFX_SPIRV_KNOWN_COUNT };
 
+/* Order: p->uniforms not packed, hfx_c (p->reg_count), samplers, known internal, any other. */
+
 /* Locations parameter i takes in GL's default uniform block: 1 per scalar, vector, matrix or
  * sampler; array elements and struct members one after the other. */
 uint64_t hfx_fx_param_locations(const hfx_fx_effect *fx, uint32_t i);
 
 /* The index in p->uniforms of the uniform parameter whose GLSL name is name[0..len), with its
- * location in *loc; -1 when none, and *loc = the end of the uniforms (where samplers start). */
+ * location in *loc; -1 when none, and *loc = the end of the uniforms (where samplers start).
+ * Packed parameters (HFXC_PACK_UNIFORMS) are skipped: they take no location; hfx_c takes
+ * p->reg_count locations right after the unpacked ones, so the end counts them too. */
 int64_t hfx_fx_spirv_uniform(const hfx_fx_effect *fx, const hfx_fx_program *p, const char *name, size_t len,
                              uint64_t *loc);
+uint64_t hfx_fx_spirv_regs_location(const hfx_fx_effect *fx, const hfx_fx_program *p); /* location of hfx_c[0] */
+/* 1 when name[0..len) is hfx_c and p packs parameters into it. */
+int hfx_fx_spirv_is_regs(const hfx_fx_program *p, const char *name, size_t len);
 /* The index in p->samplers of the sampler named name[0..len), or -1. */
 int64_t hfx_fx_spirv_sampler(const hfx_fx_program *p, const char *name, size_t len);
 /* HFX_SPIRV_POS_FIXUP... for a known internal uniform's name, or -1. */

@@ -280,7 +280,9 @@ static uint32_t program_for(hfx_builder *b, const hfx_expr *vs, const hfx_expr *
     hfx_fx_effect *fx = b->fx;
     for (uint32_t i = 0; i < fx->program_count; i++)
         if (same_compile(b, b->keys[i].vs, vs) && same_compile(b, b->keys[i].ps, ps)) return i;
-    if (!b->cg) b->cg = hfx_codegen_new(b->arena, b->diags, b->types, b->ast, fx, b->targets);
+    if (!b->cg)
+        b->cg = hfx_codegen_new(b->arena, b->diags, b->types, b->ast, fx, b->targets,
+                                (b->diags->flags & HFXC_PACK_UNIFORMS) != 0); /* the diags carry hfxc_options.flags */
     if (!b->cg) {
         hfx_error(b->diags, loc, X_UNSUPPORTED, "the code generator could not start");
         return HFX_NONE;

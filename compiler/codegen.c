@@ -11,14 +11,16 @@
 struct hfx_codegen {
     ir_ctx c;
     unsigned targets;
+    bool pack;
 };
 
 hfx_codegen *hfx_codegen_new(hfx_arena *arena, hfx_diags *diags, hfx_types *types, hfx_ast *ast,
-                             hfx_fx_effect *fx, unsigned targets) {
+                             hfx_fx_effect *fx, unsigned targets, bool pack) {
     hfx_codegen *cg = HFX_NEW(arena, hfx_codegen);
     if (!cg) return NULL;
     cg->c = (ir_ctx){ arena, diags, types, ast, fx };
     cg->targets = targets;
+    cg->pack = pack;
     return cg;
 }
 
@@ -134,7 +136,7 @@ static int record_uses(hfx_codegen *cg, ir_shader *const sh[2], hfx_fx_program *
             } else {
                 bool seen = false;
                 for (uint32_t k = 0; k < out->uniform_count; k++) seen |= out->uniforms[k].param == v->param;
-                if (!seen) out->uniforms[out->uniform_count++].param = v->param;
+                if (!seen) out->uniforms[out->uniform_count++] = (hfx_fx_uniform_use){ v->param, HFX_NONE };
             }
         }
     }
@@ -144,6 +146,22 @@ static int record_uses(hfx_codegen *cg, ir_shader *const sh[2], hfx_fx_program *
 static int cmp_uniform(const void *a, const void *b) {
     uint32_t x = ((const hfx_fx_uniform_use *)a)->param, y = ((const hfx_fx_uniform_use *)b)->param;
     return x < y ? -1 : x > y;
+}
+
+/* D3D9's vs_3_0 has 256 float constant registers; past them the rest stay separate uniforms,
+ * so a program reading more than that still links wherever it did before. */
+enum { MAX_PACKED_REGS = 256 };
+
+/* HFXC_PACK_UNIFORMS: registers in the order of the uniform table, from 0, until one does not fit. */
+static void assign_registers(const hfx_fx_effect *fx, hfx_fx_program *p) {
+    bool full = false;
+    for (uint32_t k = 0; k < p->uniform_count; k++) {
+        uint32_t n = hfx_fx_param_packable(fx, p->uniforms[k].param);
+        if (full || !n) continue;
+        if (p->reg_count + n > MAX_PACKED_REGS) { full = true; continue; }
+        p->uniforms[k].reg = p->reg_count;
+        p->reg_count += n;
+    }
 }
 
 static int build_interface(hfx_codegen *cg, ir_shader *vs, ir_shader *ps, glsl_iface *io) {
@@ -209,6 +227,10 @@ int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps,
     if (build_interface(cg, sh[0], sh[1], &io) != 0) return -1;
     if (copy_attributes(&io, out) != 0 || record_uses(cg, sh, out) != 0) goto oom;
     qsort(out->uniforms, out->uniform_count, sizeof *out->uniforms, cmp_uniform);
+    if (cg->pack) assign_registers(cg->c.fx, out);
+    io.uniforms = out->uniforms;
+    io.uniform_count = out->uniform_count;
+    io.reg_count = out->reg_count;
     for (int t = 0; t < HFX_TARGET_COUNT; t++) {
         if (!(cg->targets & (1u << t)) || t == HFX_TARGET_SPIRV) continue;
         for (int s = 0; s < 2; s++) {

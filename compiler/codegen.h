@@ -12,8 +12,9 @@
 
 typedef struct hfx_codegen hfx_codegen;
 
+/* pack: HFXC_PACK_UNIFORMS (effect.h, "hfx_c"). */
 hfx_codegen *hfx_codegen_new(hfx_arena *arena, hfx_diags *diags, hfx_types *types, hfx_ast *ast,
-                             hfx_fx_effect *fx, unsigned targets);
+                             hfx_fx_effect *fx, unsigned targets, bool pack);
 /* vs, ps: the pass's VertexShader / PixelShader values (EX_COMPILE; NULL when not set).
  * Fills *out (malloc'ed members, freed with the effect); may set fx->samplers[i].dim.
  * Returns 0, or -1 with errors in diags. */

@@ -27,7 +27,7 @@ typedef struct hfx_diags {
     hfx_source *files; uint32_t file_count, file_cap;
     hfxc_diag *items; uint32_t count, cap;
     uint32_t errors, warnings;
-    unsigned flags;   /* HFXC_WERROR, HFXC_NO_WARNINGS */
+    unsigned flags;   /* hfxc_options.flags: HFXC_WERROR, HFXC_NO_WARNINGS here; HFXC_PACK_UNIFORMS for the builder */
 } hfx_diags;
 
 /* Common fxc error numbers. */

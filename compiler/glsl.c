@@ -313,6 +313,7 @@ static void print_main(gp *p) {
     int nin = p->in_count, nout = p->out_count;
     sb_put(p->out, "void main()\n{\n");
     p->indent = 1;
+    glsl_init_packed(p); /* before the privates: their initialisers may read them */
     init_privates(p);
     for (uint32_t i = 0; i < f->param_count; i++) {
         line_start(p);
@@ -376,9 +377,13 @@ static void print_fixed_main(gp *p) {
 }
 
 static void declare_globals(gp *p) {
+    glsl_declare_regs(p);
     for (uint32_t i = 0; i < p->sh->global_count; i++) {
         const ir_var *v = p->sh->globals[i];
-        if (v->kind == IRV_SAMPLER) {
+        uint32_t reg = glsl_packed_reg(p, v);
+        if (reg != HFX_NONE) {
+            glsl_declare_packed(p, v, reg);
+        } else if (v->kind == IRV_SAMPLER) {
             sb_printf(p->out, "uniform %s %s;\n", v->dim == DIM_CUBE ? "samplerCube" : v->dim == DIM_3D ? "sampler3D" : "sampler2D", v->glsl);
         } else if (v->kind == IRV_UNIFORM) {
             sb_printf(p->out, "uniform %s;\n", glsl_decl(p, v->type, v->glsl));

@@ -45,4 +45,10 @@ void glsl_lvalue(gp *p, const ir_expr *e, int max_prec); /* an expression that i
 bool glsl_helper(gp *p, const char *key);               /* true when key is new: print its text into p->helpers */
 void glsl_error(gp *p, hfx_loc loc, const char *msg);
 
+/* glsl_pack.c: HFXC_PACK_UNIFORMS (packed parameters read from `uniform vec4 hfx_c[K]`). */
+uint32_t glsl_packed_reg(const gp *p, const ir_var *v); /* v's first register, or HFX_NONE */
+void glsl_declare_regs(gp *p);                          /* hfx_c, when the stage reads a packed parameter */
+void glsl_declare_packed(gp *p, const ir_var *v, uint32_t reg); /* its private global */
+void glsl_init_packed(gp *p);                           /* main's first lines: each from its registers */
+
 #endif

@@ -192,6 +192,8 @@ typedef struct glsl_iface {
     const char **vs_writes; uint32_t vs_write_count; /* varyings the vertex shader writes */
     const hfx_fx_attribute *attrs; uint32_t attr_count;
     bool clamp_vs_colors;    /* vs_1_1 / vs_2_x COLOR outputs saturate as D3D9's oD0/oD1 */
+    const hfx_fx_uniform_use *uniforms; uint32_t uniform_count; /* the program's, with their registers */
+    uint32_t reg_count;      /* HFXC_PACK_UNIFORMS: size of hfx_c in both stages (0: nothing packed) */
 } glsl_iface;
 
 /* Prints one stage for one target (sh NULL: the fixed-function stand-in); malloc'ed text,

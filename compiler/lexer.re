@@ -18,8 +18,17 @@ typedef struct lexer {
     uint32_t size;         /* bytes in buf (a NUL follows them) */
     const hfx_loc *fixed;  /* every token gets this loc (re-lexing pasted text), or NULL */
     bool defer_strings;    /* flag unterminated strings instead of reporting them */
-    /* line tracking over orig: offsets asked for only grow, so one pass suffices */
-    uint32_t line, line_start, scanned;
+    /* Lines are counted where the rules meet a '\n' (see newline_at), so the current line and
+     * the orig offset it starts at are always those of the scan position. A removed
+     * backslash-newline ended a line too: cont_at[i] is the buf offset it was removed before,
+     * cont_end[i] the orig offset after its '\n'; cont_next is the first one not counted yet. */
+    uint32_t line, line_start;
+    const uint32_t *cont_at, *cont_end;
+    uint32_t cont_count, cont_next;
+    /* Token spellings point into text, a copy of buf where each one gets a NUL after it;
+     * text_end is where the last such NUL went (UINT32_MAX: none yet). */
+    char *text;
+    uint32_t text_end;
     hfx_token head, *tail;
 } lexer;
 
@@ -27,17 +36,29 @@ enum { /* what scan() found besides real tokens */
     S_SPACE = 100, S_NEWLINE, S_LINE_COMMENT, S_BLOCK_COMMENT, S_STRING, S_NUL, S_UTF8
 };
 
-/* The location of byte `off` of buf. */
+static uint32_t orig_offset(const lexer *lx, uint32_t off) { return lx->map ? lx->map[off] : off; }
+
+/* Counts the removed backslash-newlines that come before buf offset `off`. */
+static void pass_continuations(lexer *lx, uint32_t off) {
+    while (lx->cont_next < lx->cont_count && lx->cont_at[lx->cont_next] <= off) {
+        lx->line++;
+        lx->line_start = lx->cont_end[lx->cont_next++];
+    }
+}
+
+/* The '\n' at buf offset `off` ends a line: the next one starts after it. */
+static void newline_at(lexer *lx, uint32_t off) {
+    pass_continuations(lx, off);
+    lx->line++;
+    lx->line_start = orig_offset(lx, off) + 1;
+}
+
+/* The location of byte `off` of buf, which is on the current line: every '\n' before it has
+ * gone through newline_at. Columns are bytes of the file's line, continuations included. */
 static hfx_loc loc_at(lexer *lx, uint32_t off) {
     if (lx->fixed) return *lx->fixed;
-    uint32_t o = lx->map ? lx->map[off] : off;
-    while (lx->scanned < o) {
-        if (lx->orig[lx->scanned++] == '\n') {
-            lx->line++;
-            lx->line_start = lx->scanned;
-        }
-    }
-    return (hfx_loc){lx->file, lx->line, o - lx->line_start + 1};
+    if (lx->cont_count) pass_continuations(lx, off);
+    return (hfx_loc){lx->file, lx->line, orig_offset(lx, off) - lx->line_start + 1};
 }
 
 /* Whether text at p is a backslash followed by a line end; returns its length or 0. */
@@ -48,7 +69,21 @@ static uint32_t continuation_len(const char *p, const char *end) {
     return 0;
 }
 
-/* Builds buf without backslash-newlines, and the map back to the original offsets. */
+/* Number of backslash-newlines in orig from `hit` (the first one) on. */
+static uint32_t count_continuations(const char *hit, const char *end) {
+    uint32_t n = 0;
+    for (const char *q = hit; q < end && (q = memchr(q, '\\', (size_t)(end - q))); q++) {
+        uint32_t c = continuation_len(q, end);
+        if (c) {
+            n++;
+            q += c - 1;
+        }
+    }
+    return n;
+}
+
+/* Builds buf without backslash-newlines, the map back to the original offsets, and the list of
+ * the line ends removed (see lexer.cont_at). */
 static void splice_lines(lexer *lx, uint32_t start, uint32_t size) {
     const char *p = lx->orig, *end = lx->orig + size;
     const char *hit = NULL;
@@ -59,12 +94,20 @@ static void splice_lines(lexer *lx, uint32_t start, uint32_t size) {
         lx->size = size;
         return;
     }
+    uint32_t conts = count_continuations(hit, end);
     char *out = hfx_arena_alloc(lx->arena, (size_t)size + 1);
     uint32_t *map = HFX_NEW_ARRAY(lx->arena, uint32_t, (size_t)size + 1);
-    uint32_t n = 0;
+    uint32_t *cont_at = HFX_NEW_ARRAY(lx->arena, uint32_t, conts);
+    uint32_t *cont_end = HFX_NEW_ARRAY(lx->arena, uint32_t, conts);
+    uint32_t n = 0, k = 0;
     for (uint32_t i = 0; i < size;) {
         uint32_t c = continuation_len(p + i, end);
-        if (c) { i += c; continue; }
+        if (c) {
+            i += c;
+            cont_at[k] = n;
+            cont_end[k++] = i;
+            continue;
+        }
         map[n] = i;
         out[n++] = p[i++];
     }
@@ -73,6 +116,9 @@ static void splice_lines(lexer *lx, uint32_t start, uint32_t size) {
     lx->buf = out;
     lx->map = map;
     lx->size = n;
+    lx->cont_at = cont_at;
+    lx->cont_end = cont_end;
+    lx->cont_count = k;
 }
 
 /* Punctuators' spellings, by hfx_punct: they need no copy. */
@@ -82,15 +128,38 @@ static const char *const punct_text[] = {
     "^=", "<<=", ">>=", "++", "--", "::", "->", "..."};
 _Static_assert(sizeof punct_text / sizeof punct_text[0] == P_ELLIPSIS + 1, "one spelling per hfx_punct");
 
-static hfx_token *emit(lexer *lx, hfx_token_kind kind, uint32_t punct, uint32_t start, uint32_t end,
-                       uint32_t flags) {
-    hfx_token *t = HFX_NEW(lx->arena, hfx_token);
+/* The spelling of the token at [start, end) of buf: in place in lx->text, NUL-terminated there.
+ * A token that starts where the previous one's NUL went (`1.xxx`, `"a"b`) gets its own copy. */
+static const char *spelling(lexer *lx, uint32_t start, uint32_t end) {
+    if (start == lx->text_end) return hfx_arena_strndup(lx->arena, lx->buf + start, end - start);
+    lx->text[end] = 0;
+    lx->text_end = end;
+    return lx->text + start;
+}
+
+/* Spellings that need no copy: punctuators by hfx_punct, and the ones of '#' and '##' (a '#'
+ * is right before its directive's name, so an in-place NUL would cost that name a copy). */
+static const char *fixed_spelling(hfx_token_kind kind, uint32_t punct, uint32_t len) {
+    if (kind == TK_PUNCT) return punct_text[punct];
+    if (kind == TK_HASH) return len == 1 ? "#" : "%:";
+    if (kind == TK_HASHHASH) return len == 2 ? "##" : "%:%:";
+    if (kind == TK_EOF) return "";
+    return NULL;
+}
+
+/* Inline: it runs once per token, and the call cost as much as the work. */
+static inline hfx_token *emit(lexer *lx, hfx_token_kind kind, uint32_t punct, uint32_t start, uint32_t end,
+                              uint32_t flags) {
+    hfx_token *t = hfx_arena_alloc_raw(lx->arena, sizeof *t);
+    const char *text = fixed_spelling(kind, punct, end - start);
     t->kind = kind;
     t->punct = punct;
     t->flags = flags;
-    t->text = kind == TK_PUNCT ? punct_text[punct] : hfx_arena_strndup(lx->arena, lx->buf + start, end - start);
+    t->text = text ? text : spelling(lx, start, end);
     t->len = end - start;
     t->loc = t->spelling = loc_at(lx, start);
+    t->next = NULL;
+    t->hideset = NULL;
     lx->tail->next = t;
     lx->tail = t;
     return t;
@@ -210,9 +279,19 @@ static uint32_t finish_long_token(lexer *lx, int kind, uint32_t start, bool *unt
     return (uint32_t)(e - lx->buf);
 }
 
+/* The line ends inside [from, to) of buf: a block comment is the only token that holds any. */
+static void count_newlines(lexer *lx, uint32_t from, uint32_t to) {
+    const char *p = lx->buf + from, *end = lx->buf + to;
+    while ((p = memchr(p, '\n', (size_t)(end - p)))) newline_at(lx, (uint32_t)(p++ - lx->buf));
+}
+
 /* Lexes all of buf, appending tokens and a final TK_EOF. */
 static void run(lexer *lx, uint32_t pos) {
     uint32_t flags = TF_BOL;
+    lx->text = hfx_arena_alloc_raw(lx->arena, (size_t)lx->size + 1);
+    memcpy(lx->text, lx->buf, lx->size);
+    lx->text[lx->size] = 0;
+    lx->text_end = UINT32_MAX;
     const unsigned char *base = (const unsigned char *)lx->buf;
     for (;;) {
         const unsigned char *endp;
@@ -222,10 +301,17 @@ static void run(lexer *lx, uint32_t pos) {
         bool unterminated = false;
         switch (kind) {
         case S_SPACE: flags |= TF_SPACE; break;
-        case S_NEWLINE: flags = TF_BOL; break;
+        case S_NEWLINE:
+            newline_at(lx, pos);
+            flags = TF_BOL;
+            break;
         case S_LINE_COMMENT:
+            end = finish_long_token(lx, kind, pos, &unterminated);
+            flags |= TF_SPACE;
+            break;
         case S_BLOCK_COMMENT:
             end = finish_long_token(lx, kind, pos, &unterminated);
+            count_newlines(lx, pos, end);
             flags |= TF_SPACE;
             break;
         case S_STRING:
@@ -271,7 +357,7 @@ static hfx_token *tokenize_file(hfx_arena *arena, hfx_diags *diags, uint32_t fil
     if (size >= 3 && memcmp(lx.orig, "\xEF\xBB\xBF", 3) == 0) {
         /* A byte-order mark is no part of line 1: columns count from after it. */
         start = 3;
-        lx.line_start = lx.scanned = 3;
+        lx.line_start = 3;
     }
     splice_lines(&lx, start, size);
     run(&lx, start);

@@ -89,6 +89,9 @@ typedef struct hfx_pp {
     hfx_diags *diags;
     const hfx_pp_options *opt;
     pp_macro *macros[PP_MACRO_BUCKETS];
+    /* One bit per (first, second) byte pair that some macro name ever started with (#undef
+     * leaves it set): most identifiers are no macro, and this tells so without hashing them. */
+    uint64_t macro_starts[128 * 128 / 64];
     pp_file_info *files; uint32_t files_cap;
     pp_frame *frames; uint32_t frame_count, frame_cap;
     pp_cond *conds; uint32_t cond_count, cond_cap;

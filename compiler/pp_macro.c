@@ -17,7 +17,15 @@ static unsigned hash_name(const char *s) {
     return h % PP_MACRO_BUCKETS;
 }
 
+/* The bit of macro_starts for a name (an identifier's bytes are ASCII; others share bits). */
+static uint32_t start_bit(const char *name) {
+    uint32_t a = (unsigned char)name[0] & 127u, b = a ? (unsigned char)name[1] & 127u : 0;
+    return a * 128 + b;
+}
+
 pp_macro *pp_find_macro(hfx_pp *pp, const char *name) {
+    uint32_t bit = start_bit(name);
+    if (!(pp->macro_starts[bit / 64] >> (bit % 64) & 1)) return NULL;
     for (pp_macro *m = pp->macros[hash_name(name)]; m; m = m->next)
         if (strcmp(m->name, name) == 0) return m;
     return NULL;
@@ -34,6 +42,8 @@ void pp_undef(hfx_pp *pp, const char *name) {
 
 static void add_macro(hfx_pp *pp, pp_macro *m) {
     pp_undef(pp, m->name);
+    uint32_t bit = start_bit(m->name);
+    pp->macro_starts[bit / 64] |= (uint64_t)1 << (bit % 64);
     unsigned h = hash_name(m->name);
     m->next = pp->macros[h];
     pp->macros[h] = m;

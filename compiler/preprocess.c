@@ -57,15 +57,13 @@ void pp_check_string(hfx_pp *pp, hfx_token *t) {
 }
 
 hfx_token *pp_new_eof(hfx_pp *pp, hfx_loc loc) {
-    hfx_token *t = HFX_NEW(pp->arena, hfx_token);
-    t->kind = TK_EOF;
-    t->text = "";
-    t->loc = t->spelling = loc;
+    hfx_token *t = hfx_arena_alloc_raw(pp->arena, sizeof *t);
+    *t = (hfx_token){.kind = TK_EOF, .text = "", .loc = loc, .spelling = loc};
     return t;
 }
 
 hfx_token *pp_copy_token(hfx_pp *pp, const hfx_token *t) {
-    hfx_token *c = HFX_NEW(pp->arena, hfx_token);
+    hfx_token *c = hfx_arena_alloc_raw(pp->arena, sizeof *c);
     *c = *t;
     c->next = NULL;
     return c;
@@ -459,8 +457,8 @@ static hfx_token *run(hfx_pp *pp, hfx_token *tok) {
             continue;
         }
         if (!tok->hideset) pp->expansion_tokens = 0;
-        pp_check_string(pp, tok);
-        if (pp_expand_macro(pp, &tok, tok)) continue;
+        if (tok->flags & TF_UNTERMINATED) pp_check_string(pp, tok);
+        if (tok->kind == TK_IDENT && pp_expand_macro(pp, &tok, tok)) continue;
         cur = cur->next = tok;
         tok = tok->next;
     }

@@ -111,6 +111,7 @@ static void collect_other(void *ctx, const uniform_decl *u, const char *line, co
     uint64_t loc;
     (void)line, (void)next;
     if (!u || hfx_fx_spirv_uniform(s->fx, s->prog, u->name, u->name_len, &loc) >= 0 ||
+        hfx_fx_spirv_is_regs(s->prog, u->name, u->name_len) ||
         hfx_fx_spirv_sampler(s->prog, u->name, u->name_len) >= 0 || hfx_fx_spirv_known(u->name, u->name_len) >= 0)
         return;
     if (other_index(s, u->name, u->name_len) >= 0 || s->count == MAX_OTHER) return;
@@ -247,6 +248,8 @@ static void rewrite_line(void *ctx, const uniform_decl *u, const char *line, con
     int64_t loc = -1, k = hfx_fx_spirv_uniform(r->fx, r->prog, u->name, u->name_len, &end), unit = -1;
     if (k >= 0) {
         loc = (int64_t)end;
+    } else if (hfx_fx_spirv_is_regs(r->prog, u->name, u->name_len)) {
+        loc = (int64_t)hfx_fx_spirv_regs_location(r->fx, r->prog);
     } else if ((k = hfx_fx_spirv_sampler(r->prog, u->name, u->name_len)) >= 0) {
         loc = (int64_t)end + k;
         unit = r->prog->samplers[k].unit;

@@ -34,7 +34,8 @@ int hfx_spirv_program(const hfx_fx_effect *fx, hfx_fx_program *p, char **log);
 
 /* The location the SPIR-V of program p gives the uniform `glsl_name`: p->uniforms in their order
  * (sorted by parameter) take GL's locations one after the other (1 per scalar, vector, matrix;
- * arrays and structs 1 per element / member), then p->samplers in unit order (1 each, binding =
+ * arrays and structs 1 per element / member; none for a packed one), then hfx_c (p->reg_count
+ * locations, HFXC_PACK_UNIFORMS), then p->samplers in unit order (1 each, binding =
  * unit), then hfx_pos_fixup, hfx_alpha_func, hfx_alpha_ref. -1 for any other name (the rare
  * other uniform follows those, in first-appearance order; hfx_spirv_find reads it). */
 int32_t hfx_spirv_location(const hfx_fx_effect *fx, const hfx_fx_program *p, const char *glsl_name);

@@ -124,14 +124,38 @@ static __attribute__((noinline)) int apply_full(hfx_effect *fx, const hfx_rt_pas
     return HFX_OK;
 }
 
+/* A pass other than the last one applied: front face, program, its extras, then uploads. */
+static __attribute__((noinline)) int apply_first(hfx_pass *p) {
+    hfx_effect *fx = p->fx;
+    hfx_device *dev = fx->dev;
+    const hfx_rt_pass *rp = p->rt;
+    dev->applied = NULL;
+    if (!rp->direct) return apply_full(fx, rp);
+    hfx_rt_program *prog = rp->prog;
+    apply_program(dev, prog);
+    if (prog->memo_seen != fx->log_len || prog->memo_effect != fx->id) hfx_rt_upload_changed(fx, prog);
+    dev->applied = p;
+    return HFX_OK;
+}
+
+/* The same program-only pass again, with no other state set since, only uploads what the
+ * parameters' log holds past what its program saw: the per-draw path of a game loop. */
 int hfx_pass_apply(hfx_pass *p) {
     if (!p) return HFX_ERR_NULL;
     hfx_effect *fx = p->fx;
-    const hfx_rt_pass *rp = p->rt;
-    if (!rp->direct) return apply_full(fx, rp);
-    hfx_rt_program *prog = rp->prog;
-    apply_program(fx->dev, prog);
-    if (prog->memo_seen != fx->log_len || prog->memo_effect != fx->id) return hfx_rt_upload_changed(fx, prog);
+    if (fx->dev->applied != p) return apply_first(p);
+    hfx_rt_program *prog = p->rt->prog;
+    uint64_t seen = prog->memo_seen;
+    if (seen == fx->log_len) return HFX_OK;
+    if (seen + 1 != fx->log_len) return hfx_rt_upload_log(fx, prog);
+    /* one change since the last Apply (a per-object World, say): no loop, no saved registers */
+    uint32_t r = fx->log[seen & fx->log_mask];
+    hfx_slot *s = &prog->slots[r];
+    if (s->held == fx->stamps[r] || (s->mode != SLOT_FLOAT && s->mode != SLOT_REG)) return hfx_rt_upload_log(fx, prog);
+    prog->memo_seen = seen + 1;
+    s->held = fx->stamps[r];
+    if (s->mode == SLOT_REG) return hfx_rt_upload_reg(fx, prog, s);
+    s->up.call.f(s->up.location, s->up.count, (const void *)(fx->values + s->up.offset));
     return HFX_OK;
 }
 
@@ -146,6 +170,9 @@ int hfx_effect_begin(hfx_effect *fx) {
     if (!fx) return HFX_ERR_NULL;
     hfx_device *dev = fx->dev;
     hfx_saved *s = &fx->saved;
+    if (s->active) /* a second snapshot would make end restore the effect's own states */
+        return hfx_rt_fail(dev, HFX_ERR_NOT_FOUND, "hfx_effect_begin twice without hfx_effect_end (hfx_device_sync re-reads GL state)");
+    dev->applied = NULL;
     hfx_rt_read_state(dev, &s->state);
     dev->state = s->state;
     hfx_rt_read_target(dev);
@@ -171,6 +198,7 @@ int hfx_effect_end(hfx_effect *fx) {
     hfx_device *dev = fx->dev;
     hfx_saved *s = &fx->saved;
     if (!s->active) return hfx_rt_fail(dev, HFX_ERR_NOT_FOUND, "hfx_effect_end without hfx_effect_begin");
+    dev->applied = NULL;
     hfx_rt_write_state(dev, &s->state);
     hfx_rt_use_program(dev, (GLuint)s->program);
     for (int u = 0; u < HFX_MAX_UNITS; u++) {

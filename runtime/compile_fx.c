@@ -8,6 +8,8 @@ hfx_fx_effect *hfx_rt_compile_fx(const char *path, const void *data, size_t size
                                  const hfx_load_options *opt, char **errors) {
     hfxc_options co;
     memset(&co, 0, sizeof co);
+    /* D3D9's register model: every changed float parameter of a program goes up in one call */
+    if (!opt || !opt->separate_uniforms) co.flags |= HFXC_PACK_UNIFORMS;
     if (opt) {
         co.defines = opt->defines;
         co.define_count = opt->define_count;

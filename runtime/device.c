@@ -84,6 +84,7 @@ static void compute_fixup(hfx_device *dev, GLint width, GLint height) {
 /* Reads the viewport and the draw framebuffer, which the fixup follows. */
 void hfx_rt_read_target(hfx_device *dev) {
     GLint vp[4] = {0}, fbo = 0;
+    dev->applied = NULL;
     dev->gl.GetIntegerv(GL_VIEWPORT, vp);
     dev->gl.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
     dev->flip = fbo != 0;
@@ -92,11 +93,23 @@ void hfx_rt_read_target(hfx_device *dev) {
 
 void hfx_device_set_viewport(hfx_device *dev, int x, int y, int width, int height) {
     if (!dev) return;
+    dev->applied = NULL; /* the front face and hfx_pos_fixup may change */
     dev->gl.Viewport(x, y, width, height);
     GLint fbo = 0;
     dev->gl.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
     dev->flip = fbo != 0;
     compute_fixup(dev, width, height);
+}
+
+/* The application set GL state itself: the shadow forgets what it believed. Texture units are
+ * marked unknown (rebound on first use) rather than read back: 32 units x 4 targets of queries
+ * would cost more than the binds they could save. */
+void hfx_device_sync(hfx_device *dev) {
+    if (!dev) return;
+    dev->applied = NULL;
+    hfx_rt_read_state(dev, &dev->state);
+    hfx_rt_read_target(dev);
+    read_bindings(dev);
 }
 
 hfx_device *hfx_device_create_gl(hfx_gl_loader load) {

@@ -6,6 +6,7 @@
 #define HFX_RUNTIME_INTERNAL_H
 
 #include <stdint.h>
+#include <string.h>
 
 #include "effect.h"
 #include "gl.h"
@@ -60,6 +61,10 @@ struct hfx_device {
     hfx_gl_spirv spirv;            /* runtime/spirv_load.c */
     char error[1024];
     uint64_t stamp;                /* last parameter version handed out */
+    /* The pass whose Apply ran last, when it was a program-only pass and hfx has set no other
+     * GL state since: applying it again only needs the parameters changed since. Anything that
+     * changes the device's state (another pass, begin / end, the viewport) clears it. */
+    const struct hfx_pass *applied;
     GLuint program;                /* bound program */
     GLenum active_unit;            /* glActiveTexture's unit */
     hfx_unit_state units[HFX_MAX_UNITS];
@@ -122,7 +127,8 @@ enum { /* hfx_slot.mode */
     SLOT_NONE,   /* the program does not read the parameter */
     SLOT_FLOAT,  /* one UK_FLOAT upload: slot.up */
     SLOT_MATRIX, /* one UK_MATRIX upload: slot.up */
-    SLOT_OTHER   /* uploads[first .. first + count) */
+    SLOT_OTHER,  /* uploads[first .. first + count) */
+    SLOT_REG     /* packed into the program's registers (hfx_c): reg, reg_rows, reg_cols, up.offset */
 };
 
 /* Per program, per top-level parameter (one more for parameters outside any): its uploads and
@@ -132,7 +138,9 @@ typedef struct hfx_slot {
     hfx_upload up;          /* the first upload, at hand for the common single-call case */
     uint32_t mode;          /* SLOT_* */
     uint32_t first, count;  /* all its uploads */
-    uint32_t pad_[3];       /* 64 bytes: indexing is a shift */
+    uint32_t reg;           /* SLOT_REG: first register */
+    uint16_t reg_rows, reg_cols; /* SLOT_REG: registers, and the components used in each */
+    uint32_t pad_;          /* 64 bytes: indexing is a shift */
 } hfx_slot;
 
 typedef struct hfx_rt_program {
@@ -141,6 +149,12 @@ typedef struct hfx_rt_program {
     uint32_t *reads;        /* the top-level parameters the program reads, for a full scan */
     uint32_t read_count;
     hfx_upload *uploads; uint32_t upload_count;
+    /* Packed parameters (HFXC_PACK_UNIFORMS): Apply copies changed ones into regs, the image of
+     * hfx_c GL holds, and sends the changed range with one glUniform4fv. */
+    float *regs;            /* reg_size * 4 */
+    GLint *reg_locs;        /* location of hfx_c[i], for the reg_active elements GL kept */
+    uint32_t reg_size, reg_active;
+    hfx_uniform_f reg_call; /* glUniform4fv */
     uint64_t memo_effect;   /* the effect instance (id) whose change log this program follows */
     uint64_t memo_seen;     /* that log's length when the program last looked */
     GLint pos_fixup_loc;
@@ -288,10 +302,48 @@ void hfx_rt_program_ready(hfx_rt_program *p, uint32_t tops); /* after the upload
 int hfx_rt_upload_setup(const hfx_gl *gl, GLenum type, const hfx_fx_param *p, hfx_upload *up, uint32_t *comps);
 int hfx_rt_upload_add(hfx_device *dev, hfx_rt_program *p, uint32_t *cap, const hfx_upload *up); /* appends to p */
 
+/* Packed registers: a slot for use u (hfx_fx_use_packed), and the image with its locations;
+ * loc_of gives hfx_c[i]'s location (GLSL names or SPIR-V's rule), -1 past what GL kept. */
+void hfx_rt_slot_pack(hfx_slot *slot, const hfx_fx_effect *fx, const hfx_fx_uniform_use *u);
+int hfx_rt_regs_setup(hfx_device *dev, hfx_rt_program *p, uint32_t size, GLint (*loc_of)(void *ctx, uint32_t i), void *ctx);
+
+/* A range of registers to send; empty ({UINT32_MAX, 0}) while lo > hi. */
+typedef struct hfx_reg_range { uint32_t lo, hi; } hfx_reg_range;
+
+/* Copies a packed parameter's words into its registers, rows padded to 4 components. */
+static inline void hfx_rt_reg_copy(hfx_rt_program *p, const hfx_slot *s, const uint32_t *values, hfx_reg_range *r) {
+    const uint32_t *src = values + s->up.offset;
+    float *dst = p->regs + 4 * (size_t)s->reg;
+    if (s->reg_cols == 4 && s->reg_rows == 1) { /* float4 and 4x4 first, in fixed-size copies */
+        memcpy(dst, src, 16);
+    } else if (s->reg_cols == 4 && s->reg_rows == 4) {
+        memcpy(dst, src, 64);
+    } else if (s->reg_cols == 4) {
+        memcpy(dst, src, 16 * (size_t)s->reg_rows);
+    } else {
+        for (uint32_t i = 0; i < s->reg_rows; i++) memcpy(dst + 4 * i, src + i * s->reg_cols, 4 * (size_t)s->reg_cols);
+    }
+    uint32_t last = s->reg + s->reg_rows - 1u;
+    if (s->reg < r->lo) r->lo = s->reg;
+    if (last > r->hi) r->hi = last;
+}
+
+/* Sends registers [lo, hi] that GL kept. */
+static inline void hfx_rt_reg_send(hfx_rt_program *p, hfx_reg_range r) {
+    if (r.lo > r.hi || r.lo >= p->reg_active) return;
+    uint32_t hi = r.hi < p->reg_active ? r.hi : p->reg_active - 1;
+    p->reg_call(p->reg_locs[r.lo], (GLsizei)(hi - r.lo + 1), p->regs + 4 * (size_t)r.lo);
+}
+
+/* One changed packed parameter: its registers alone; returns HFX_OK (Apply ends in it). */
+int hfx_rt_upload_reg(hfx_effect *fx, hfx_rt_program *p, const hfx_slot *s);
+
 /* Uploads the parameters whose version differs from the one this program holds, visiting only
  * the log entries written since the program last looked when it follows this instance; returns
  * HFX_OK (so Apply can end in it). */
 int hfx_rt_upload_changed(hfx_effect *fx, hfx_rt_program *p);
+/* The same for a program known to follow fx's log (the pass was the last one applied). */
+int hfx_rt_upload_log(hfx_effect *fx, hfx_rt_program *p);
 
 /* spirv_load.c: programs from SPIR-V (HFX_TARGET_SPIRV), uniforms by the compiler's locations. */
 void hfx_rt_spirv_init(hfx_device *dev, hfx_gl_loader load); /* at device creation */

@@ -500,9 +500,12 @@ hfx_effect *hfx_effect_clone(const hfx_effect *src) {
 
 void hfx_effect_destroy(hfx_effect *e) {
     if (!e) return;
+    if (e->dev->applied && e->dev->applied->fx == e) e->dev->applied = NULL; /* its address may come back */
     if (--e->sh->refs == 0) shared_free(e->sh);
     instance_free(e);
 }
+
+hfx_device *hfx_effect_device(const hfx_effect *e) { return e ? e->dev : NULL; }
 
 const char *hfx_effect_warnings(const hfx_effect *e) {
     return e && e->sh->warnings ? e->sh->warnings : "";

@@ -230,6 +230,11 @@ static int resolve_uniforms(build *b, const hfx_fx_program *fp) {
         hfx_slot *slot = &p->slots[param];
         if (slot->held) continue; /* listed twice */
         slot->held = 1;
+        if (hfx_fx_use_packed(fp, &fp->uniforms[i])) {
+            hfx_rt_slot_pack(slot, b->sh->fx, &fp->uniforms[i]);
+            p->reads[p->read_count++] = param;
+            continue;
+        }
         slot->first = p->upload_count;
         int rc = add_param(b, param, b->sh->fx->params[param].glsl_name);
         if (rc) return rc;
@@ -239,13 +244,41 @@ static int resolve_uniforms(build *b, const hfx_fx_program *fp) {
     return HFX_OK;
 }
 
+void hfx_rt_slot_pack(hfx_slot *slot, const hfx_fx_effect *fx, const hfx_fx_uniform_use *u) {
+    const hfx_fx_param *p = &fx->params[u->param];
+    slot->mode = SLOT_REG;
+    slot->reg = u->reg;
+    slot->reg_rows = (uint16_t)hfx_fx_param_packable(fx, u->param);
+    slot->reg_cols = (uint16_t)p->cols;
+    slot->up.offset = p->offset;
+}
+
+int hfx_rt_regs_setup(hfx_device *dev, hfx_rt_program *p, uint32_t size, GLint (*loc_of)(void *ctx, uint32_t i), void *ctx) {
+    if (!size) return HFX_OK;
+    p->regs = calloc((size_t)size * 4, sizeof *p->regs);
+    p->reg_locs = calloc(size, sizeof *p->reg_locs);
+    if (!p->regs || !p->reg_locs) return HFX_ERR_MEMORY;
+    p->reg_size = size;
+    p->reg_call = dev->gl.Uniform4fv;
+    /* GL keeps the elements up to the last one a shader reads; the rest are never sent */
+    while (p->reg_active < size && (p->reg_locs[p->reg_active] = loc_of(ctx, p->reg_active)) >= 0) p->reg_active++;
+    return HFX_OK;
+}
+
+static GLint glsl_reg_location(void *ctx, uint32_t i) {
+    build *b = ctx;
+    char name[32];
+    snprintf(name, sizeof name, "%s[%u]", HFX_FX_REGS_NAME, (unsigned)i);
+    return b->sh->dev->gl.GetUniformLocation(b->p->object, name);
+}
+
 /* What Apply reads, derived once the uploads and the extras' locations are known: shared with
  * spirv_load.c, which finds the locations its own way. */
 void hfx_rt_program_ready(hfx_rt_program *p, uint32_t tops) {
     for (uint32_t i = 0; i < tops; i++) {
         hfx_slot *slot = &p->slots[i];
         slot->held = 0; /* GL holds no value yet */
-        if (!slot->count) continue;
+        if (!slot->count || slot->mode == SLOT_REG) continue;
         slot->up = p->uploads[slot->first];
         slot->mode = slot->count > 1 ? SLOT_OTHER : slot->up.kind == UK_FLOAT ? SLOT_FLOAT
                    : slot->up.kind == UK_MATRIX ? SLOT_MATRIX : SLOT_OTHER;
@@ -291,6 +324,7 @@ int hfx_rt_program_build(hfx_shared *sh, uint32_t index, hfx_target target) {
     build b = {sh, p, NULL, 0, 0};
     rc = read_active(&b);
     if (!rc) rc = resolve_uniforms(&b, fp);
+    if (!rc) rc = hfx_rt_regs_setup(sh->dev, p, fp->reg_count, glsl_reg_location, &b);
     free(b.active);
     if (rc) return rc == HFX_ERR_MEMORY ? hfx_rt_fail(sh->dev, rc, "out of memory") : rc;
     set_sampler_units(sh, p, fp);
@@ -303,6 +337,8 @@ void hfx_rt_program_free(hfx_device *dev, hfx_rt_program *p) {
     free(p->slots);
     free(p->reads);
     free(p->uploads);
+    free(p->regs);
+    free(p->reg_locs);
     memset(p, 0, sizeof *p);
 }
 
@@ -362,13 +398,16 @@ void hfx_rt_upload_slow(hfx_device *dev, const hfx_upload *up, const uint32_t *v
  * program last followed another instance (clones share programs; versions are device-wide, so
  * a clone's unchanged values are not sent again) or fell a whole log ring behind. */
 void hfx_rt_upload_all(hfx_effect *fx, hfx_rt_program *p) {
+    hfx_reg_range regs = {UINT32_MAX, 0};
     for (uint32_t k = 0; k < p->read_count; k++) {
         uint32_t r = p->reads[k];
         hfx_slot *s = &p->slots[r];
         if (s->held == fx->stamps[r]) continue;
         s->held = fx->stamps[r];
-        hfx_rt_upload_slot(fx, p, s);
+        if (s->mode == SLOT_REG) hfx_rt_reg_copy(p, s, fx->values, &regs);
+        else hfx_rt_upload_slot(fx, p, s);
     }
+    hfx_rt_reg_send(p, regs);
     p->memo_effect = fx->id;
     p->memo_seen = fx->log_len;
 }
@@ -378,31 +417,54 @@ void hfx_rt_upload_slot(hfx_effect *fx, const hfx_rt_program *p, const hfx_slot 
     for (uint32_t k = 0; k < s->count; k++) hfx_rt_upload_slow(fx->dev, &p->uploads[s->first + k], fx->values);
 }
 
-/* Fields are read through fx and p on purpose: the GL calls clobber registers, and reloading
- * costs less than keeping copies across them. */
 int hfx_rt_upload_changed(hfx_effect *fx, hfx_rt_program *p) {
-    uint64_t seen = p->memo_seen;
-    if (p->memo_effect != fx->id || fx->log_len - seen > (uint64_t)fx->log_mask + 1) {
+    if (p->memo_effect != fx->id) {
         hfx_rt_upload_all(fx, p);
         return HFX_OK;
     }
-    while (seen != fx->log_len) {
-        uint32_t r = fx->log[seen & fx->log_mask];
-        hfx_slot *s = &p->slots[r];
-        seen++;
-        if (s->held == fx->stamps[r]) continue; /* also never true for SLOT_NONE: held stays 0 */
-        if (s->mode == SLOT_FLOAT) {
-            s->held = fx->stamps[r];
-            s->up.call.f(s->up.location, s->up.count, (const void *)(fx->values + s->up.offset));
-        } else if (s->mode == SLOT_MATRIX) {
-            s->held = fx->stamps[r];
-            s->up.call.m(s->up.location, s->up.count, GL_FALSE, (const void *)(fx->values + s->up.offset));
-        } else if (s->mode == SLOT_OTHER) {
-            s->held = fx->stamps[r];
-            hfx_rt_upload_slot(fx, p, s);
-        }
+    return hfx_rt_upload_log(fx, p);
+}
+
+/* Visits the log entries written since the program last looked; an entry whose parameter the
+ * program already holds at its latest version (changed twice, or not read) costs no call.
+ * The fields the loop reads are copied first: the GL calls could, as far as the compiler
+ * knows, write through fx and p. */
+int hfx_rt_upload_log(hfx_effect *fx, hfx_rt_program *p) {
+    uint64_t seen = p->memo_seen, len = fx->log_len;
+    if (len - seen > (uint64_t)fx->log_mask + 1) { /* fell a whole ring behind */
+        hfx_rt_upload_all(fx, p);
+        return HFX_OK;
     }
-    p->memo_seen = seen;
+    const uint32_t *log = fx->log, *values = fx->values;
+    const uint64_t *stamps = fx->stamps;
+    uint32_t mask = fx->log_mask;
+    hfx_slot *slots = p->slots;
+    hfx_reg_range regs = {UINT32_MAX, 0};
+    p->memo_seen = len;
+    for (; seen != len; seen++) {
+        uint32_t r = log[seen & mask];
+        hfx_slot *s = &slots[r];
+        if (s->held == stamps[r]) continue;
+        s->held = stamps[r];
+        if (s->mode == SLOT_FLOAT)
+            s->up.call.f(s->up.location, s->up.count, (const void *)(values + s->up.offset));
+        else if (s->mode == SLOT_MATRIX)
+            s->up.call.m(s->up.location, s->up.count, GL_FALSE, (const void *)(values + s->up.offset));
+        else if (s->mode == SLOT_REG)
+            hfx_rt_reg_copy(p, s, values, &regs);
+        else if (s->mode == SLOT_OTHER)
+            hfx_rt_upload_slot(fx, p, s);
+    }
+    hfx_rt_reg_send(p, regs);
+    return HFX_OK;
+}
+
+int hfx_rt_upload_reg(hfx_effect *fx, hfx_rt_program *p, const hfx_slot *s) {
+    hfx_reg_range regs = {UINT32_MAX, 0};
+    hfx_rt_reg_copy(p, s, fx->values, &regs);
+    if (s->reg >= p->reg_active) return HFX_OK;
+    uint32_t rows = p->reg_active - s->reg < s->reg_rows ? p->reg_active - s->reg : s->reg_rows;
+    p->reg_call(p->reg_locs[s->reg], (GLsizei)rows, p->regs + 4 * (size_t)s->reg);
     return HFX_OK;
 }
 

@@ -172,6 +172,12 @@ static int resolve_uniforms(build *b, const hfx_fx_program *fp) {
         if (param >= tops || !fx->params[param].glsl_name) continue;
         hfx_slot *slot = &p->slots[param];
         if (slot->held) continue; /* listed twice */
+        if (hfx_fx_use_packed(fp, &fp->uniforms[i])) {
+            slot->held = 1;
+            hfx_rt_slot_pack(slot, fx, &fp->uniforms[i]);
+            p->reads[p->read_count++] = param;
+            continue;
+        }
         int32_t loc = hfx_fx_spirv_location(fx, fp, fx->params[param].glsl_name);
         if (loc < 0) continue;
         slot->held = 1;
@@ -182,6 +188,15 @@ static int resolve_uniforms(build *b, const hfx_fx_program *fp) {
         if (slot->count) p->reads[p->read_count++] = param;
     }
     return HFX_OK;
+}
+
+/* hfx_c[i] sits at hfx_c[0]'s location + i, as SPIR-V's explicit locations lay out arrays. */
+typedef struct reg_ctx { const build *b; uint64_t first; } reg_ctx;
+
+static GLint spirv_reg_location(void *ctx, uint32_t i) {
+    const reg_ctx *r = ctx;
+    uint64_t loc = r->first + i;
+    return loc <= INT32_MAX && find_active(r->b, loc) ? (GLint)loc : -1;
 }
 
 /* hfx_pos_fixup, hfx_alpha_func, hfx_alpha_ref: at their places after the samplers, when active. */
@@ -205,6 +220,8 @@ int hfx_rt_spirv_program_build(hfx_shared *sh, uint32_t index) {
     build b = {sh, p, NULL, 0, 0};
     rc = read_active(&b);
     if (!rc) rc = resolve_uniforms(&b, fp);
+    reg_ctx regs = {&b, hfx_fx_spirv_regs_location(sh->fx, fp)};
+    if (!rc) rc = hfx_rt_regs_setup(sh->dev, p, fp->reg_count, spirv_reg_location, &regs);
     if (!rc) {
         p->pos_fixup_loc = known_location(&b, fp, "hfx_pos_fixup");
         memset(p->pos_fixup, 0, sizeof p->pos_fixup); /* GL's value for an unset uniform */

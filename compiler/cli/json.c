@@ -186,6 +186,7 @@ static cJSON *program_json(const hfx_fx_effect *fx, uint32_t index) {
         cJSON *e = cJSON_CreateObject();
         cJSON_AddStringToObject(e, "parameter", q->name);
         if (q->glsl_name) cJSON_AddStringToObject(e, "glsl_name", q->glsl_name);
+        if (hfx_fx_use_packed(p, &p->uniforms[i])) cJSON_AddNumberToObject(e, "register", p->uniforms[i].reg);
         cJSON_AddItemToArray(u, e);
     }
     cJSON *a = cJSON_AddArrayToObject(o, "attributes");
@@ -209,6 +210,7 @@ static cJSON *program_json(const hfx_fx_effect *fx, uint32_t index) {
         if (p->code[HFX_STAGE_VERTEX][k].data || p->code[HFX_STAGE_FRAGMENT][k].data)
             cJSON_AddItemToArray(t, cJSON_CreateString(cli_target_name(k)));
     cJSON_AddBoolToObject(o, "alpha_test", (p->flags & HFX_FX_PROGRAM_ALPHA_TEST) != 0);
+    if (p->reg_count) cJSON_AddNumberToObject(o, "registers", p->reg_count);
     return o;
 }
 

@@ -24,6 +24,8 @@ static const char usage_text[] =
     "  --reflect             print the effect and its compiled interface as JSON\n"
     "  --annotations         print parameters, annotations, techniques and states as JSON\n"
     "  --ast                 print the syntax tree and stop\n"
+    "  --separate-uniforms   one GLSL uniform per parameter; by default float parameters\n"
+    "                        share one vec4 array per program (D3D9 registers, one upload)\n"
     "  --werror, /WX         treat warnings as errors\n"
     "  --no-warnings         drop warnings\n"
     "  -j, --jobs N          compile N files at a time (default: one per core)\n"
@@ -119,6 +121,8 @@ static int flag(cli_options *o, const char *a, bool *handled) {
     else if (!strcmp(a, "--ast")) o->ast = true;
     else if (!strcmp(a, "--werror") || !strcmp(a, "/WX") || !strcmp(a, "-WX")) o->werror = true;
     else if (!strcmp(a, "--no-warnings")) o->no_warnings = true;
+    else if (!strcmp(a, "--pack-uniforms")) o->pack_uniforms = true; /* the default; kept for scripts */
+    else if (!strcmp(a, "--separate-uniforms")) o->pack_uniforms = false;
     else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) o->quiet = true;
     else if (!strcmp(a, "/nologo") || !strcmp(a, "-nologo")) {
     } else if (!strcmp(a, "/Zi") || !strcmp(a, "/Od") || !strcmp(a, "/Gec") || !strcmp(a, "/Gfp") ||
@@ -208,6 +212,7 @@ static void print_results(const cli_options *o, cli_job *jobs, size_t n, size_t 
 int main(int argc, char **argv) {
     cli_options o;
     memset(&o, 0, sizeof o);
+    o.pack_uniforms = true; /* what the runtime does when it compiles a .fx itself */
     int rc = parse_args(argc, argv, &o);
     if (rc < 0) rc = check_inputs(&o);
     else goto done;

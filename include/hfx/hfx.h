@@ -55,6 +55,8 @@ typedef struct hfx_load_options {
     const char *const *include_dirs; /* searched after the including file's folder and the root's */
     size_t include_dir_count;
     hfx_target target;               /* GLSL flavour to use; 0 = GLSL 330 */
+    int separate_uniforms;           /* .fx only: 1 = one GLSL uniform per parameter; 0 = float parameters
+                                        packed in vec4 registers, sent in one call per Apply (default) */
 } hfx_load_options;
 
 /* Device: one per GL context, which must be current on every call. */
@@ -63,6 +65,7 @@ void hfx_device_destroy(hfx_device *dev);                        /* effects must
 const char *hfx_device_last_error(const hfx_device *dev);        /* message of the last failed call */
 /* glViewport, remembered for D3D9's pixel centres (hfx_pos_fixup); hfx_effect_begin also reads it. */
 void hfx_device_set_viewport(hfx_device *dev, int x, int y, int width, int height);
+void hfx_device_sync(hfx_device *dev);  /* re-read GL state the application changed behind hfx's back */
 void hfx_free(void *p);                                          /* frees strings hfx hands out */
 
 /* Effects. */
@@ -71,8 +74,9 @@ hfx_effect *hfx_effect_load_memory(hfx_device *dev, const void *data, size_t siz
                                    const hfx_load_options *opt, char **errors);
 hfx_effect *hfx_effect_clone(const hfx_effect *fx);              /* same code, independent values */
 void hfx_effect_destroy(hfx_effect *fx);
+hfx_device *hfx_effect_device(const hfx_effect *fx);              /* Effect.GraphicsDevice */
 const char *hfx_effect_warnings(const hfx_effect *fx);           /* load-time notes (unsupported states) or "" */
-int hfx_effect_begin(hfx_effect *fx);                            /* save the GL state the effect touches */
+int hfx_effect_begin(hfx_effect *fx);                            /* sync, and save the GL state the effect touches */
 int hfx_effect_end(hfx_effect *fx);                              /* restore what begin saved */
 
 /* Parameters: Parameters["name"], Elements[i], StructureMembers["name"]. */

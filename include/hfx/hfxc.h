@@ -27,7 +27,8 @@ enum { /* hfxc_options.flags */
     HFXC_WERROR = 1u << 0,      /* warnings are errors */
     HFXC_NO_WARNINGS = 1u << 1, /* drop warnings */
     HFXC_CARET = 1u << 2,       /* formatted text adds the source line and a caret */
-    HFXC_PARSE_ONLY = 1u << 3   /* stop after the AST */
+    HFXC_PARSE_ONLY = 1u << 3,  /* stop after the AST */
+    HFXC_PACK_UNIFORMS = 1u << 4 /* float parameters share one vec4 array per program (D3D9 registers): one upload for many changes */
 };
 
 typedef struct hfxc_options {

@@ -100,8 +100,9 @@ static hfx_fx_effect *sample_effect(void) {
     pr->samplers[0] = (hfx_fx_sampler_use){dup("s"), 0, 2};
     pr->uniform_count = 2;
     pr->uniforms = calloc(2, sizeof *pr->uniforms);
-    pr->uniforms[0].param = 0;
-    pr->uniforms[1].param = 2;
+    pr->uniforms[0] = (hfx_fx_uniform_use){0, 0};        /* world: packed, registers 0..3 */
+    pr->uniforms[1] = (hfx_fx_uniform_use){2, HFX_NONE}; /* lights: its own uniform */
+    pr->reg_count = 4;
     pr->flags = HFX_FX_PROGRAM_ALPHA_TEST;
 
     fx->pass_count = 2;
@@ -179,6 +180,7 @@ static void compare_effects(const hfx_fx_effect *a, const hfx_fx_effect *b) {
     for (uint32_t i = 0; i < a->program_count && i < b->program_count; i++) {
         const hfx_fx_program *x = &a->programs[i], *y = &b->programs[i];
         CHECK_INT(x->flags, y->flags);
+        CHECK_INT(x->reg_count, y->reg_count);
         for (int s = 0; s < HFX_STAGE_COUNT; s++)
             for (int t = 0; t < HFX_TARGET_COUNT; t++) {
                 CHECK_INT(x->code[s][t].size, y->code[s][t].size);
@@ -199,8 +201,10 @@ static void compare_effects(const hfx_fx_effect *a, const hfx_fx_effect *b) {
             CHECK_INT(x->samplers[k].unit, y->samplers[k].unit);
         }
         CHECK_INT(x->uniform_count, y->uniform_count);
-        for (uint32_t k = 0; k < x->uniform_count && k < y->uniform_count; k++)
+        for (uint32_t k = 0; k < x->uniform_count && k < y->uniform_count; k++) {
             CHECK_INT(x->uniforms[k].param, y->uniforms[k].param);
+            CHECK_INT(x->uniforms[k].reg, y->uniforms[k].reg);
+        }
     }
     CHECK_INT(a->pass_count, b->pass_count);
     for (uint32_t i = 0; i < a->pass_count && i < b->pass_count; i++) {
@@ -244,7 +248,7 @@ static void round_trip(void) {
     const uint8_t *b = data;
     CHECK_INT(b[0], 0x89);
     CHECK(memcmp(b + 1, "HFXO", 4) == 0);
-    CHECK_INT(get32(b + 8), 1);                         /* version */
+    CHECK_INT(get32(b + 8), 2);                         /* version */
     CHECK_INT(get32(b + 16), size);                     /* total size */
     CHECK_INT(get32(b + 12), crc32_bitwise(b + 16, size - 16));
     char err[256] = "untouched";
@@ -346,9 +350,13 @@ static void every_flipped_byte_is_refused(void) {
     CHECK_STR(err, "hfxo: not an .hfxo file (bad magic number)");
     CHECK(!hfx_fx_is_hfxo(copy, size));
     memcpy(copy, data, size);
-    put32(copy + 8, 2);
+    put32(copy + 8, 3);
     CHECK(hfx_fx_read_hfxo(copy, size, err, sizeof err) == NULL);
-    CHECK_STR(err, "hfxo: format version 2 is not supported (this reader knows 1)");
+    CHECK_STR(err, "hfxo: format version 3 is not supported (this reader knows 2)");
+    memcpy(copy, data, size);
+    put32(copy + 8, 1);
+    CHECK(hfx_fx_read_hfxo(copy, size, err, sizeof err) == NULL);
+    CHECK_STR(err, "hfxo: format version 1 is older than this reader's 2: compile the .fx again");
     memcpy(copy, data, size);
     copy[size - 1] ^= 1;
     CHECK(hfx_fx_read_hfxo(copy, size, err, sizeof err) == NULL);
@@ -412,7 +420,24 @@ static void hostile_contents_are_refused(void) {
     /* Shader code whose size runs past its section. */
     CHECK_STR(read_patched(data, size, prog + 8 + 7 * 4 + 4, 0xfffffff0u, err, sizeof err),
               "hfxo: shader code lies outside its section");
-    /* Records too short for version 1. */
+    /* Registers (HFXC_PACK_UNIFORMS): too many, a packed parameter reaching past them, a
+     * register on a parameter that cannot be packed (the struct array). */
+    uint32_t uuse = section_at(b, "UUSE");
+    CHECK(uuse != 0);
+    CHECK_INT(get32(b + prog + 8 + 23 * 4), 4); /* reg_count, after the code fields */
+    CHECK_INT(get32(b + uuse + 4), 8);          /* param, reg */
+    CHECK_STR(read_patched(data, size, prog + 8 + 23 * 4, 4097, err, sizeof err),
+              "hfxo: program 0 has 4097 registers (at most 4096)");
+    CHECK_STR(read_patched(data, size, prog + 8 + 23 * 4, 3, err, sizeof err),
+              "hfxo: program 0 puts parameter 0 outside its 3 registers");
+    CHECK_STR(read_patched(data, size, uuse + 8 + 4, 1, err, sizeof err),
+              "hfxo: program 0 puts parameter 0 outside its 4 registers");
+    CHECK_STR(read_patched(data, size, uuse + 8 + 4, 0xfffffffeu, err, sizeof err),
+              "hfxo: program 0 puts parameter 0 outside its 4 registers");
+    CHECK_STR(read_patched(data, size, uuse + 8 + 8 + 4, 0, err, sizeof err),
+              "hfxo: program 0 packs parameter 2, which cannot be packed");
+    CHECK_STR(read_patched(data, size, prog + 8 + 23 * 4, 4096, err, sizeof err), "accepted");
+    /* Records too short for version 2. */
     CHECK_STR(read_patched(data, size, parm + 4, 8, err, sizeof err), "hfxo: section PARM has records of 8 bytes");
     /* A section claimed to lie beyond the end of the file. */
     CHECK_STR(read_patched(data, size, 24 + 4, (uint32_t)size + 4, err, sizeof err),

@@ -22,6 +22,24 @@ static char *stmt_of(const char *src, const char *fn, unsigned i) {
 
 #define EXPECT_STMT(src, fn, i, expected) do { char *s_ = stmt_of(src, fn, i); CHECK_STR(s_, expected); free(s_); } while (0)
 
+/* The first statement of function fn of a snippet, and its expected dump. */
+typedef struct stmt_case {
+    const char *fn, *expected;
+} stmt_case;
+
+static void expect_first_stmts(const char *src, const stmt_case *cases, size_t n) {
+    for (size_t i = 0; i < n; i++) EXPECT_STMT(src, cases[i].fn, 0, cases[i].expected);
+}
+
+#define EXPECT_FIRST_STMTS(src, cases) expect_first_stmts(src, cases, sizeof cases / sizeof cases[0])
+
+/* Compares the dump of e, and frees it. */
+static void expect_dump(const hfx_expr *e, const char *expected) {
+    char *s = ckt_dump(e);
+    CHECK_STR(s, expected);
+    free(s);
+}
+
 static const char *MUL_SRC =
     "float4x4 M; float3x4 N; float4x3 P; float3 v3; float4 v4; float s;\n"
     "float4 f1() { return mul(v3, M); }\n"
@@ -34,18 +52,22 @@ static const char *MUL_SRC =
     "float3x4 f8() { return mul(2, N); }\n"
     "float4x4 f9() { return mul(M, M); }\n";
 
-static void mul_shapes(void) {
+static const stmt_case MUL_SHAPES[] = {
     /* float3 * float4x4: the matrix is clamped to its first three rows, the result has 4 columns */
-    EXPECT_STMT(MUL_SRC, "f1", 0, "(#mul:float4 v3:float3 (implicit:float3x4 M:float4x4))");
-    EXPECT_STMT(MUL_SRC, "f2", 0, "(#mul:float3 v4:float4 P:float4x3)");
-    EXPECT_STMT(MUL_SRC, "f3", 0, "(#mul:float3 N:float3x4 v4:float4)");
-    EXPECT_STMT(MUL_SRC, "f4", 0, "(#mul:float v3:float3 v3:float3)");
-    EXPECT_STMT(MUL_SRC, "f5", 0, "(#mul:float4 s:float v4:float4)");
-    EXPECT_STMT(MUL_SRC, "f6", 0, "(#mul:float3x3 N:float3x4 P:float4x3)");
+    {"f1", "(#mul:float4 v3:float3 (implicit:float3x4 M:float4x4))"},
+    {"f2", "(#mul:float3 v4:float4 P:float4x3)"},
+    {"f3", "(#mul:float3 N:float3x4 v4:float4)"},
+    {"f4", "(#mul:float v3:float3 v3:float3)"},
+    {"f5", "(#mul:float4 s:float v4:float4)"},
+    {"f6", "(#mul:float3x3 N:float3x4 P:float4x3)"},
     /* float4 * float3x4: the vector is clamped to float3 */
-    EXPECT_STMT(MUL_SRC, "f7", 0, "(#mul:float4 (implicit:float3 v4:float4) N:float3x4)");
-    EXPECT_STMT(MUL_SRC, "f8", 0, "(#mul:float3x4 (implicit:float 2:int) N:float3x4)");
-    EXPECT_STMT(MUL_SRC, "f9", 0, "(#mul:float4x4 M:float4x4 M:float4x4)");
+    {"f7", "(#mul:float4 (implicit:float3 v4:float4) N:float3x4)"},
+    {"f8", "(#mul:float3x4 (implicit:float 2:int) N:float3x4)"},
+    {"f9", "(#mul:float4x4 M:float4x4 M:float4x4)"},
+};
+
+static void mul_shapes(void) {
+    EXPECT_FIRST_STMTS(MUL_SRC, MUL_SHAPES);
     /* the seeds' pattern: mul into a float3 warns once, for the assignment */
     char *d = ckt_diags("float4x4 World;\nfloat3 f(float3 n) { float3 r = mul(n, World); return r; }\n");
     CHECK_STR(d, "t.fx(2,33): warning X3206: implicit truncation of vector type\n");
@@ -67,19 +89,22 @@ static const char *OPS_SRC =
     "float4 g9() { return b < 0.5 ? 0 : b; }\n"
     "int g10() { return i << 2; }\n";
 
-static void operators(void) {
-    EXPECT_STMT(OPS_SRC, "g1", 0, "(-:float3 a:float3 (implicit:float3 b:float4))");
-    EXPECT_STMT(OPS_SRC, "g2", 0, "(*:float4 b:float4 (implicit:float4 2:int))");
-    EXPECT_STMT(OPS_SRC, "g3", 0, "(+:float (implicit:float i:int) 1.5:float)");
-    EXPECT_STMT(OPS_SRC, "g4", 0, "(<:bool3 a:float3 (implicit:float3 1:int))");
-    EXPECT_STMT(OPS_SRC, "g5", 0, "(?:float4 (implicit:bool (.0:float b:float4)) b:float4 (implicit:float4 0:int))");
-    EXPECT_STMT(OPS_SRC, "g6", 0, "(&&:bool (implicit:bool (.0:float a:float3)) (implicit:bool i:int))");
-    EXPECT_STMT(OPS_SRC, "g7", 0, "(neg:float3 a:float3)");
-    EXPECT_STMT(OPS_SRC, "g8", 0, "(neg:int (implicit:int true:bool))");
+static const stmt_case OPERATORS[] = {
+    {"g1", "(-:float3 a:float3 (implicit:float3 b:float4))"},
+    {"g2", "(*:float4 b:float4 (implicit:float4 2:int))"},
+    {"g3", "(+:float (implicit:float i:int) 1.5:float)"},
+    {"g4", "(<:bool3 a:float3 (implicit:float3 1:int))"},
+    {"g5", "(?:float4 (implicit:bool (.0:float b:float4)) b:float4 (implicit:float4 0:int))"},
+    {"g6", "(&&:bool (implicit:bool (.0:float a:float3)) (implicit:bool i:int))"},
+    {"g7", "(neg:float3 a:float3)"},
+    {"g8", "(neg:int (implicit:int true:bool))"},
     /* a componentwise ternary: the condition is a bool4 */
-    EXPECT_STMT(OPS_SRC, "g9", 0,
-                "(?:float4 (<:bool4 b:float4 (implicit:float4 0.5:float)) (implicit:float4 0:int) b:float4)");
-    EXPECT_STMT(OPS_SRC, "g10", 0, "(<<:int i:int 2:int)");
+    {"g9", "(?:float4 (<:bool4 b:float4 (implicit:float4 0.5:float)) (implicit:float4 0:int) b:float4)"},
+    {"g10", "(<<:int i:int 2:int)"},
+};
+
+static void operators(void) {
+    EXPECT_FIRST_STMTS(OPS_SRC, OPERATORS);
 }
 
 static const char *MEMBER_SRC =
@@ -95,16 +120,20 @@ static const char *MEMBER_SRC =
     "float3 h8() { return v.rgb; }\n"
     "float h9() { return m[1][2]; }\n";
 
+static const stmt_case MEMBERS_AND_INDEXING[] = {
+    {"h1", "(.f0:float3 s:S)"},
+    {"h2", "([]:float4 (.f1:float4[2] s:S) 1:int)"},
+    {"h3", "([]:float4 m:float4x4 2:int)"}, /* a row */
+    {"h4", "(.6:float m:float4x4)"},        /* row 1, col 2 */
+    {"h5", "(.0,15:float2 m:float4x4)"},    /* one-based */
+    {"h6", "(.3,2,1,0:float4 v:float4)"},
+    {"h7", "([]:float v:float4 3:int)"},
+    {"h8", "(.0,1,2:float3 v:float4)"},
+    {"h9", "([]:float ([]:float4 m:float4x4 1:int) 2:int)"},
+};
+
 static void members_and_indexing(void) {
-    EXPECT_STMT(MEMBER_SRC, "h1", 0, "(.f0:float3 s:S)");
-    EXPECT_STMT(MEMBER_SRC, "h2", 0, "([]:float4 (.f1:float4[2] s:S) 1:int)");
-    EXPECT_STMT(MEMBER_SRC, "h3", 0, "([]:float4 m:float4x4 2:int)");          /* a row */
-    EXPECT_STMT(MEMBER_SRC, "h4", 0, "(.6:float m:float4x4)");                 /* row 1, col 2 */
-    EXPECT_STMT(MEMBER_SRC, "h5", 0, "(.0,15:float2 m:float4x4)");             /* one-based */
-    EXPECT_STMT(MEMBER_SRC, "h6", 0, "(.3,2,1,0:float4 v:float4)");
-    EXPECT_STMT(MEMBER_SRC, "h7", 0, "([]:float v:float4 3:int)");
-    EXPECT_STMT(MEMBER_SRC, "h8", 0, "(.0,1,2:float3 v:float4)");
-    EXPECT_STMT(MEMBER_SRC, "h9", 0, "([]:float ([]:float4 m:float4x4 1:int) 2:int)");
+    EXPECT_FIRST_STMTS(MEMBER_SRC, MEMBERS_AND_INDEXING);
 }
 
 static const char *CALL_SRC =
@@ -121,19 +150,23 @@ static const char *CALL_SRC =
     "float3 u7(float3 a, float3 b) { return lerp(a, b, 0.5); }\n"
     "float u8(float x) { return pow(x, 2); }\n";
 
-static void calls_and_overloads(void) {
-    EXPECT_STMT(CALL_SRC, "u1", 0, "(f(float):float 1:float)");
-    EXPECT_STMT(CALL_SRC, "u2", 0,
-                "(f(float4):float (float4:float4 (implicit:float 1:int) (implicit:float 2:int) (implicit:float 3:int) 4:float))");
+static const stmt_case CALLS_AND_OVERLOADS[] = {
+    {"u1", "(f(float):float 1:float)"},
+    {"u2", "(f(float4):float (float4:float4 (implicit:float 1:int) (implicit:float 2:int) (implicit:float 3:int) "
+           "4:float))"},
     /* int -> float beats int -> float4 (a splat) */
-    EXPECT_STMT(CALL_SRC, "u3", 0, "(f(float):float (implicit:float 1:int))");
+    {"u3", "(f(float):float (implicit:float 1:int))"},
     /* a defaulted parameter may be left out */
-    EXPECT_STMT(CALL_SRC, "u4", 0, "(k(float,float):float (implicit:float 1:int))");
+    {"u4", "(k(float,float):float (implicit:float 1:int))"},
     /* a generic sampler feeds tex2D as it is */
-    EXPECT_STMT(CALL_SRC, "u5", 0, "(#tex2D:float4 s:sampler uv:float2)");
-    EXPECT_STMT(CALL_SRC, "u6", 0, "(+:float (#length:float n:float3) (#dot:float n:float3 (implicit:float3 2:int)))");
-    EXPECT_STMT(CALL_SRC, "u7", 0, "(#lerp:float3 a:float3 b:float3 (implicit:float3 0.5:float))");
-    EXPECT_STMT(CALL_SRC, "u8", 0, "(#pow:float x:float (implicit:float 2:int))");
+    {"u5", "(#tex2D:float4 s:sampler uv:float2)"},
+    {"u6", "(+:float (#length:float n:float3) (#dot:float n:float3 (implicit:float3 2:int)))"},
+    {"u7", "(#lerp:float3 a:float3 b:float3 (implicit:float3 0.5:float))"},
+    {"u8", "(#pow:float x:float (implicit:float 2:int))"},
+};
+
+static void calls_and_overloads(void) {
+    EXPECT_FIRST_STMTS(CALL_SRC, CALLS_AND_OVERLOADS);
     /* a float3 argument picks f(float) (a truncation) since float3 -> float4 is impossible */
     char *d = ckt_diags("float f(float x) { return x; }\nfloat f(float4 x) { return x.x; }\nfloat g(float3 v) { return f(v); }\n");
     CHECK_STR(d, "t.fx(3,28): warning X3206: 'f': implicit truncation of vector type\n");
@@ -151,14 +184,18 @@ static const char *RANK_SRC =
     "float3 r3(float3 v) { return saturate(v); }\n"
     "float r4(float s) { return saturate(s); }\n";
 
-static void overload_ranking(void) {
+static const stmt_case OVERLOAD_RANKING[] = {
     /* float -> half is a promotion, float -> int a conversion: half wins */
-    EXPECT_STMT(RANK_SRC, "r1", 0, "(p(half):float (implicit:half x:float))");
+    {"r1", "(p(half):float (implicit:half x:float))"},
     /* each call matches one overload exactly */
-    EXPECT_STMT(RANK_SRC, "r2", 0, "(+:float (q(float,float4):float s:float v:float4) (q(float4,float):float v:float4 s:float))");
+    {"r2", "(+:float (q(float,float4):float s:float v:float4) (q(float4,float):float v:float4 s:float))"},
     /* a user function named like an intrinsic competes with it: each takes what it matches best */
-    EXPECT_STMT(RANK_SRC, "r3", 0, "(saturate(float3):float3 v:float3)");
-    EXPECT_STMT(RANK_SRC, "r4", 0, "(#saturate:float s:float)");
+    {"r3", "(saturate(float3):float3 v:float3)"},
+    {"r4", "(#saturate:float s:float)"},
+};
+
+static void overload_ranking(void) {
+    EXPECT_FIRST_STMTS(RANK_SRC, OVERLOAD_RANKING);
 }
 
 static void sampler_parameters(void) {
@@ -182,27 +219,19 @@ static void initializers(void) {
         "L lights[2] = {{1, 2, 3, true}, {4, 5, 6, 0}};\n"
         "float4 z = 0;\n");
     CHECK(r->ok);
-    char *s = ckt_dump(ckt_find(r, "c")->init);
-    CHECK_STR(s, "({}:float4 0.07:float 0.07:float 0.07:float (implicit:float 1:int))");
-    free(s);
-    s = ckt_dump(ckt_find(r, "ks")->init);
-    CHECK_STR(s, "({}:float 0.05:float)");
-    free(s);
-    s = ckt_dump(ckt_find(r, "m2")->init);
-    CHECK_STR(s, "({}:float2x2 (.0:float (float2:float2 (implicit:float 1:int) (implicit:float 2:int))) "
-                 "(.1:float (float2:float2 (implicit:float 1:int) (implicit:float 2:int))) "
-                 "(implicit:float 3:int) (implicit:float 4:int))");
-    free(s);
+    expect_dump(ckt_find(r, "c")->init, "({}:float4 0.07:float 0.07:float 0.07:float (implicit:float 1:int))");
+    expect_dump(ckt_find(r, "ks")->init, "({}:float 0.05:float)");
+    expect_dump(ckt_find(r, "m2")->init,
+                "({}:float2x2 (.0:float (float2:float2 (implicit:float 1:int) (implicit:float 2:int))) "
+                "(.1:float (float2:float2 (implicit:float 1:int) (implicit:float 2:int))) "
+                "(implicit:float 3:int) (implicit:float 4:int))");
     hfx_decl *a = ckt_find(r, "a");
     CHECK_INT(a->type->kind, TY_ARRAY);
     CHECK_INT(a->type->array_len, 3);
-    s = ckt_dump(ckt_find(r, "lights")->init);
-    CHECK_STR(s, "({}:L[2] (implicit:float 1:int) (implicit:float 2:int) (implicit:float 3:int) (implicit:int true:bool) "
-                 "(implicit:float 4:int) (implicit:float 5:int) (implicit:float 6:int) 0:int)");
-    free(s);
-    s = ckt_dump(ckt_find(r, "z")->init);
-    CHECK_STR(s, "(implicit:float4 0:int)");
-    free(s);
+    expect_dump(ckt_find(r, "lights")->init,
+                "({}:L[2] (implicit:float 1:int) (implicit:float 2:int) (implicit:float 3:int) "
+                "(implicit:int true:bool) (implicit:float 4:int) (implicit:float 5:int) (implicit:float 6:int) 0:int)");
+    expect_dump(ckt_find(r, "z")->init, "(implicit:float4 0:int)");
     ckt_free(r);
 }
 
@@ -226,22 +255,12 @@ static void statements(void) {
         "}\n";
     ckt_result *r = ckt_run(src);
     CHECK(r->ok);
-    char *s = ckt_dump(ckt_stmt(r, "f", 0)->expr);
-    CHECK_STR(s, "(implicit:bool i:int)");
-    free(s);
+    expect_dump(ckt_stmt(r, "f", 0)->expr, "(implicit:bool i:int)");
     hfx_stmt *loop = ckt_stmt(r, "f", 1);
-    s = ckt_dump(loop->expr);
-    CHECK_STR(s, "(<:bool k:int i:int)"); /* already a bool: no cast */
-    free(s);
-    s = ckt_dump(loop->then_stmt->expr);
-    CHECK_STR(s, "(+=:float4 v:float4 (implicit:float4 1:int))");
-    free(s);
-    s = ckt_dump(ckt_stmt(r, "f", 2)->expr);
-    CHECK_STR(s, "(implicit:bool (.0:float v:float4))");
-    free(s);
-    s = ckt_dump(ckt_stmt(r, "f", 3)->expr);
-    CHECK_STR(s, "(implicit:float4 1:int)");
-    free(s);
+    expect_dump(loop->expr, "(<:bool k:int i:int)"); /* already a bool: no cast */
+    expect_dump(loop->then_stmt->expr, "(+=:float4 v:float4 (implicit:float4 1:int))");
+    expect_dump(ckt_stmt(r, "f", 2)->expr, "(implicit:bool (.0:float v:float4))");
+    expect_dump(ckt_stmt(r, "f", 3)->expr, "(implicit:float4 1:int)");
     /* the global written by a shader is marked */
     CHECK(ckt_find(r, "v")->assigned);
     CHECK(!ckt_find(r, "i")->assigned);
@@ -262,19 +281,13 @@ static void entry_points_and_states(void) {
     CHECK(r->ok);
     hfx_expr *ss = ckt_find(r, "DiffuseSampler")->init;
     CHECK_INT(ss->kind, EX_SAMPLER_STATE);
-    char *s = ckt_dump(ss->states[0].value);
-    CHECK_STR(s, "DiffuseTexture:texture");
-    free(s);
-    s = ckt_dump(ss->states[1].value);
-    CHECK_STR(s, "CLAMP:void!"); /* a state constant, left for the builder */
-    free(s);
+    expect_dump(ss->states[0].value, "DiffuseTexture:texture");
+    expect_dump(ss->states[1].value, "CLAMP:void!"); /* a state constant, left for the builder */
     hfx_pass_ast *p = &ckt_find(r, "T")->technique->passes[0];
-    s = ckt_dump(p->states[1].value);
-    CHECK_STR(s, "(compile ps_2_0 ps:pixelshader (implicit:bool 1:int))");
-    free(s);
+    expect_dump(p->states[1].value, "(compile ps_2_0 ps:pixelshader (implicit:bool 1:int))");
     CHECK(p->states[1].value->fn == ckt_find(r, "ps")->func);
     CHECK(p->states[0].value->fn == ckt_find(r, "vs")->func);
-    s = ckt_dump_stmt(r, "vs", 0);
+    char *s = ckt_dump_stmt(r, "vs", 0);
     CHECK_STR(s, "(cast:O 0:int)");
     free(s);
     ckt_free(r);

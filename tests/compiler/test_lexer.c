@@ -260,6 +260,99 @@ static void tokenize_text_uses_given_loc(void) {
     hfx_arena_free(&a);
 }
 
+/* Checks tokens' (line, col) against a list whose last entry is the TK_EOF's. */
+static void check_positions(lexed *l, const int (*want)[2], int count) {
+    hfx_token *t = l->toks, *last = NULL;
+    for (int i = 0; i < count && t; i++, last = t, t = t->next) {
+        CHECK_INT(t->loc.line, want[i][0]);
+        CHECK_INT(t->loc.col, want[i][1]);
+        CHECK_INT(t->spelling.line, want[i][0]);
+        CHECK_INT(t->spelling.col, want[i][1]);
+    }
+    CHECK(last && last->kind == TK_EOF && !t);
+}
+
+/* Every kind of line end in one CRLF file: comment, plain, continuation; a tab counts one byte. */
+static void crlf_positions(void) {
+    lexed l;
+    lex_str(&l, "a /* x\r\n y\r\n */ b\r\n\tc\r\n#define M 1 \\\r\n + 2\r\n d");
+    CHECK_STR(dump(&l), "i:a i:b i:c #:# i:define i:M n:1 p:+ n:2 i:d");
+    static const int want[][2] = {{1, 1}, {3, 5}, {4, 2}, {5, 1}, {5, 2}, {5, 9}, {5, 11}, {6, 2}, {6, 4},
+                                  {7, 2}, {7, 3}};
+    check_positions(&l, want, 11);
+    CHECK_INT(nth(&l, 7)->flags, TF_SPACE); /* still the #define's line */
+    CHECK_INT(nth(&l, 9)->flags, TF_BOL | TF_SPACE);
+    hfx_arena_free(&l.arena);
+}
+
+static void block_comment_over_lines_then_token(void) {
+    lexed l;
+    lex_str(&l, "x /*\n\n  */y /* a */ z\n/* 1\n2 */\n w");
+    CHECK_STR(dump(&l), "i:x i:y i:z i:w");
+    static const int want[][2] = {{1, 1}, {3, 5}, {3, 15}, {6, 2}, {6, 3}};
+    check_positions(&l, want, 5);
+    CHECK_INT(nth(&l, 1)->flags, TF_SPACE);
+    CHECK_INT(nth(&l, 3)->flags, TF_BOL | TF_SPACE);
+    hfx_arena_free(&l.arena);
+}
+
+/* Continuations inside tokens, two in a row, one right before a line end, one inside a comment:
+ * each ends a line of the file, and columns count from the line the token starts on. */
+static void continuations_inside_token_runs(void) {
+    lexed l;
+    lex_str(&l, "int ab\\\ncd = x\\\n\\\ny+1;\n  q\\\n\nr /* a\\\n\n b */ s");
+    CHECK_STR(dump(&l), "i:int i:abcd p:= i:xy p:+ n:1 p:; i:q i:r i:s");
+    static const int want[][2] = {{1, 1}, {1, 5}, {2, 4}, {2, 6}, {4, 2}, {4, 3}, {4, 4}, {5, 3}, {7, 1},
+                                  {9, 7}, {9, 8}};
+    check_positions(&l, want, 11);
+    CHECK_INT(nth(&l, 8)->flags, TF_BOL);
+    CHECK_INT(nth(&l, 9)->flags, TF_SPACE);
+    hfx_arena_free(&l.arena);
+}
+
+static void tabs_are_one_byte(void) {
+    lexed l;
+    lex_str(&l, "\t\tx\t=\t1;\n\t y");
+    static const int want[][2] = {{1, 3}, {1, 5}, {1, 7}, {1, 8}, {2, 3}, {2, 4}};
+    check_positions(&l, want, 6);
+    hfx_arena_free(&l.arena);
+}
+
+/* The first token after #line gets the new number and name; the lines after it follow on. */
+static void first_token_after_line_directive(void) {
+    hfx_arena a;
+    hfx_arena_init(&a);
+    hfx_diags d;
+    hfx_diags_init(&d, &a, 0);
+    const char *text = "a\r\n#line 10 \"other.fx\"\r\n\tb c\r\n d\n#line 3\ne";
+    hfx_token *t = hfx_preprocess(&a, &d, "t.fx", text, (uint32_t)strlen(text), NULL);
+    const char *names[] = {"a", "b", "c", "d", "e"};
+    static const int want[][2] = {{1, 1}, {10, 2}, {10, 4}, {11, 2}, {3, 1}};
+    for (int i = 0; i < 5; i++, t = t->next) {
+        CHECK_STR(t->text, names[i]);
+        CHECK_INT(t->loc.line, want[i][0]);
+        CHECK_INT(t->loc.col, want[i][1]);
+        CHECK_STR(d.files[t->loc.file].name, i == 0 ? "t.fx" : "other.fx");
+    }
+    CHECK_INT(t->kind, TK_EOF);
+    CHECK_INT(d.count, 0);
+    hfx_arena_free(&a);
+}
+
+/* Spellings live in the lexer's copy of the text, NUL-terminated there; a token that starts
+ * where the one before it ended still gets its whole spelling, and the file's text is intact. */
+static void adjacent_spellings(void) {
+    lexed l;
+    const char *src = "\"s\"x 1.f\"t\" a#b%:c 1.xx";
+    lex_str(&l, src);
+    CHECK_STR(dump(&l), "s:\"s\" i:x f:1.f s:\"t\" i:a #:# i:b #:%: i:c f:1. i:xx");
+    for (hfx_token *t = l.toks; t; t = t->next) CHECK_INT(strlen(t->text), t->len);
+    CHECK_STR(nth(&l, 1)->text, "x");
+    CHECK_STR(nth(&l, 3)->text, "\"t\"");
+    CHECK_STR(l.diags.files[0].text, src);
+    hfx_arena_free(&l.arena);
+}
+
 static void hundred_thousand_lines(void) {
     enum { LINES = 100000 };
     const char *line = "float4 v = mul(float4(p, 1.0f), World); /* c */ // x\n";
@@ -299,6 +392,12 @@ int main(void) {
     RUN(stray_bytes_and_nul);
     RUN(empty_and_eof_location);
     RUN(tokenize_text_uses_given_loc);
+    RUN(crlf_positions);
+    RUN(block_comment_over_lines_then_token);
+    RUN(continuations_inside_token_runs);
+    RUN(tabs_are_one_byte);
+    RUN(first_token_after_line_directive);
+    RUN(adjacent_spellings);
     RUN(hundred_thousand_lines);
     return test_summary();
 }

@@ -6,15 +6,31 @@
 #include "parse_util.h"
 #include "test.h"
 
-static void expect_errors(const char *src, const char *want) {
+/* Parses src and checks the whole diagnostics text; the caller frees the result. */
+static tp_result *parse_expecting(const char *src, const char *want) {
     tp_result *r = tp_parse(src);
     CHECK_STR(r->errors, want);
-    tp_free(r);
+    return r;
 }
 
+static void expect_errors(const char *src, const char *want) {
+    tp_free(parse_expecting(src, want));
+}
+
+/* A snippet and the whole diagnostics text it must give. */
+typedef struct error_case {
+    const char *src, *errors;
+} error_case;
+
+static void expect_each(const error_case *cases, size_t n) {
+    for (size_t i = 0; i < n; i++) expect_errors(cases[i].src, cases[i].errors);
+}
+
+#define EXPECT_EACH(cases) expect_each(cases, sizeof cases / sizeof cases[0])
+
 static void missing_semicolon(void) {
-    tp_result *r = tp_parse("float a\nfloat b;\nfloat c;\n");
-    CHECK_STR(r->errors, "t.fx(2,1): error X3000: syntax error: unexpected token 'float'\n");
+    tp_result *r = parse_expecting("float a\nfloat b;\nfloat c;\n",
+                                   "t.fx(2,1): error X3000: syntax error: unexpected token 'float'\n");
     /* recovery skips to the ';' that ends b, so c is still declared */
     CHECK(tp_find(r, "c") != NULL);
     tp_free(r);
@@ -22,18 +38,21 @@ static void missing_semicolon(void) {
                   "t.fx(3,3): error X3000: syntax error: unexpected token 'i'\n");
 }
 
+static const error_case TOKEN_KINDS[] = {
+    {"float a 1;", "t.fx(1,9): error X3000: syntax error: unexpected integer constant\n"},
+    {"float a 1.5f;", "t.fx(1,9): error X3000: syntax error: unexpected float constant\n"},
+    {"float a \"s\";", "t.fx(1,9): error X3000: syntax error: unexpected string constant\n"},
+    {"float a = 1 @ 2;", "t.fx(1,13): error X3000: syntax error: unexpected token '@'\n"},
+    {"float a = b->c;", "t.fx(1,12): error X3000: syntax error: unexpected token '->'\n"},
+    {"float4 f() {", "t.fx(1,13): error X3000: syntax error: unexpected end of file\n"},
+    {"float4 f() {\n", "t.fx(2,1): error X3000: syntax error: unexpected end of file\n"},
+    {"Foo x;", "t.fx(1,1): error X3000: unrecognized identifier 'Foo'\n"},
+    {"void f() { Foo x; }", "t.fx(1,12): error X3000: unrecognized identifier 'Foo'\n"},
+    {"technique T { pass P { CullMode None; } }", "t.fx(1,33): error X3000: syntax error: unexpected token 'None'\n"},
+};
+
 static void token_kinds_in_messages(void) {
-    expect_errors("float a 1;", "t.fx(1,9): error X3000: syntax error: unexpected integer constant\n");
-    expect_errors("float a 1.5f;", "t.fx(1,9): error X3000: syntax error: unexpected float constant\n");
-    expect_errors("float a \"s\";", "t.fx(1,9): error X3000: syntax error: unexpected string constant\n");
-    expect_errors("float a = 1 @ 2;", "t.fx(1,13): error X3000: syntax error: unexpected token '@'\n");
-    expect_errors("float a = b->c;", "t.fx(1,12): error X3000: syntax error: unexpected token '->'\n");
-    expect_errors("float4 f() {", "t.fx(1,13): error X3000: syntax error: unexpected end of file\n");
-    expect_errors("float4 f() {\n", "t.fx(2,1): error X3000: syntax error: unexpected end of file\n");
-    expect_errors("Foo x;", "t.fx(1,1): error X3000: unrecognized identifier 'Foo'\n");
-    expect_errors("void f() { Foo x; }", "t.fx(1,12): error X3000: unrecognized identifier 'Foo'\n");
-    expect_errors("technique T { pass P { CullMode None; } }",
-                  "t.fx(1,33): error X3000: syntax error: unexpected token 'None'\n");
+    EXPECT_EACH(TOKEN_KINDS);
 }
 
 static void every_error_reported(void) {
@@ -86,20 +105,20 @@ static void unnamed_parameter_in_definition(void) {
 
 /* A missing ';' before a closing brace: the block still closes and what follows is kept. */
 static void recovery_at_closing_braces(void) {
-    tp_result *r = tp_parse("technique T { pass P { CullMode = None } }\nfloat ok;\n");
-    CHECK_STR(r->errors, "t.fx(1,40): error X3000: syntax error: unexpected token '}'\n");
+    tp_result *r = parse_expecting("technique T { pass P { CullMode = None } }\nfloat ok;\n",
+                                   "t.fx(1,40): error X3000: syntax error: unexpected token '}'\n");
     hfx_decl *t = tp_find(r, "T");
     CHECK(t && t->kind == DECL_TECHNIQUE && t->technique->pass_count == 1);
     CHECK(tp_find(r, "ok") != NULL);
     tp_free(r);
-    r = tp_parse("sampler s = sampler_state { Texture = <t> };\nfloat ok;\n");
-    CHECK_STR(r->errors, "t.fx(1,43): error X3000: syntax error: unexpected token '}'\n");
+    r = parse_expecting("sampler s = sampler_state { Texture = <t> };\nfloat ok;\n",
+                        "t.fx(1,43): error X3000: syntax error: unexpected token '}'\n");
     hfx_decl *s = tp_find(r, "s");
     CHECK(s && s->init && s->init->kind == EX_SAMPLER_STATE && s->init->state_count == 0);
     CHECK(tp_find(r, "ok") != NULL);
     tp_free(r);
-    r = tp_parse("struct S { float a; float b }; float ok;\n");
-    CHECK_STR(r->errors, "t.fx(1,29): error X3000: syntax error: unexpected token '}'\n");
+    r = parse_expecting("struct S { float a; float b }; float ok;\n",
+                        "t.fx(1,29): error X3000: syntax error: unexpected token '}'\n");
     hfx_decl *st = tp_find(r, "S");
     CHECK(st && st->kind == DECL_STRUCT && st->type->st->field_count == 1);
     CHECK(tp_find(r, "ok") != NULL);
@@ -111,18 +130,19 @@ static void struct_redefinition(void) {
                   "t.fx(2,8): error X3003: redefinition of 'S'\n");
 }
 
+static const error_case UNBALANCED[] = {
+    {"void f() { if (x) { y = 1; }\n", "t.fx(2,1): error X3000: syntax error: unexpected end of file\n"},
+    {"void f() { y = (1 + 2; }\nfloat z;\n", "t.fx(1,22): error X3000: syntax error: unexpected token ';'\n"},
+    {"struct S { float a; \nfloat b;\n", "t.fx(3,1): error X3000: syntax error: unexpected end of file\n"},
+    {"technique T { pass P { }\n", "t.fx(2,1): error X3000: syntax error: unexpected end of file\n"},
+};
+
 static void unbalanced_braces(void) {
-    tp_result *r = tp_parse("float a; }\nfloat b;\n");
-    CHECK_STR(r->errors, "t.fx(1,10): error X3000: syntax error: unexpected token '}'\n");
+    tp_result *r = parse_expecting("float a; }\nfloat b;\n",
+                                   "t.fx(1,10): error X3000: syntax error: unexpected token '}'\n");
     CHECK(tp_find(r, "b") != NULL);
     tp_free(r);
-    expect_errors("void f() { if (x) { y = 1; }\n",
-                  "t.fx(2,1): error X3000: syntax error: unexpected end of file\n");
-    expect_errors("void f() { y = (1 + 2; }\nfloat z;\n",
-                  "t.fx(1,22): error X3000: syntax error: unexpected token ';'\n");
-    expect_errors("struct S { float a; \nfloat b;\n",
-                  "t.fx(3,1): error X3000: syntax error: unexpected end of file\n");
-    expect_errors("technique T { pass P { }\n", "t.fx(2,1): error X3000: syntax error: unexpected end of file\n");
+    EXPECT_EACH(UNBALANCED);
 }
 
 static char *repeat(const char *head, const char *unit, int n, const char *mid, const char *unit2, int n2,
@@ -137,44 +157,51 @@ static char *repeat(const char *head, const char *unit, int n, const char *mid, 
     return s;
 }
 
-static void deep_nesting_is_an_error(void) {
+/* A source of `head`, `unit` n times, `mid`, `unit2` n2 times, `tail` (see repeat), and what
+ * parsing it must say: the whole text, or (contains) a part of it and how many errors. */
+typedef struct nesting_case {
+    const char *head, *unit;
+    int n;
+    const char *mid, *unit2;
+    int n2;
+    const char *tail, *errors;
+    int contains, error_count;
+} nesting_case;
+
+static const nesting_case NESTING[] = {
     /* 10 000 parentheses: the 257th is too deep (the first is at column 11) */
-    char *src = repeat("float a = ", "(", 10000, "1", ")", 10000, ";\nfloat b;\n");
-    tp_result *r = tp_parse(src);
-    CHECK_STR(r->errors, "t.fx(1,267): error X3000: nesting too deep: more than 256 levels of ( [ {\n");
-    free(src);
-    tp_free(r);
-    src = repeat("void f() ", "{", 10000, "", "}", 10000, "\n");
-    r = tp_parse(src);
-    CHECK_STR(r->errors, "t.fx(1,266): error X3000: nesting too deep: more than 256 levels of ( [ {\n");
-    free(src);
-    tp_free(r);
+    {"float a = ", "(", 10000, "1", ")", 10000, ";\nfloat b;\n",
+     "t.fx(1,267): error X3000: nesting too deep: more than 256 levels of ( [ {\n", 0, 0},
+    {"void f() ", "{", 10000, "", "}", 10000, "\n",
+     "t.fx(1,266): error X3000: nesting too deep: more than 256 levels of ( [ {\n", 0, 0},
     /* 100 000 prefix operators overflow the parser's stack limit, reported once */
-    src = repeat("float a = ", "-", 100000, "1;", "", 0, "\n");
-    r = tp_parse(src);
-    CHECK_INT(r->diags.errors, 1);
-    CHECK_CONTAINS(r->errors, "error X3000: nesting too deep");
-    free(src);
-    tp_free(r);
+    {"float a = ", "-", 100000, "1;", "", 0, "\n", "error X3000: nesting too deep", 1, 1},
     /* 10 000 prefix operators fit the stack but not the expression depth limit (4096) */
-    src = repeat("float a = ", "!", 10000, "1;", "", 0, "\n");
-    r = tp_parse(src);
-    CHECK_STR(r->errors, "t.fx(1,5915): error X3000: nesting too deep: expression more than 4096 levels deep\n");
-    free(src);
-    tp_free(r);
+    {"float a = ", "!", 10000, "1;", "", 0, "\n",
+     "t.fx(1,5915): error X3000: nesting too deep: expression more than 4096 levels deep\n", 0, 0},
     /* a chain of 5000 additions is as deep */
-    src = repeat("float a = 1", " + 1", 5000, ";", "", 0, "\n");
-    r = tp_parse(src);
-    CHECK_STR(r->errors, "t.fx(1,16393): error X3000: nesting too deep: expression more than 4096 levels deep\n");
-    free(src);
-    tp_free(r);
+    {"float a = 1", " + 1", 5000, ";", "", 0, "\n",
+     "t.fx(1,16393): error X3000: nesting too deep: expression more than 4096 levels deep\n", 0, 0},
     /* 2000 nested unbraced ifs */
-    src = repeat("void f() { ", "if (x) ", 2000, "y = 1;", "", 0, " }\n");
-    r = tp_parse(src);
-    CHECK_CONTAINS(r->errors, "error X3000: nesting too deep: statements more than 1024 levels deep\n");
-    CHECK_INT(r->diags.errors, 1);
+    {"void f() { ", "if (x) ", 2000, "y = 1;", "", 0, " }\n",
+     "error X3000: nesting too deep: statements more than 1024 levels deep\n", 1, 1},
+};
+
+static void expect_nesting(const nesting_case *c) {
+    char *src = repeat(c->head, c->unit, c->n, c->mid, c->unit2, c->n2, c->tail);
+    tp_result *r = tp_parse(src);
+    if (c->contains) {
+        CHECK_CONTAINS(r->errors, c->errors);
+        CHECK_INT(r->diags.errors, c->error_count);
+    } else {
+        CHECK_STR(r->errors, c->errors);
+    }
     free(src);
     tp_free(r);
+}
+
+static void deep_nesting_is_an_error(void) {
+    for (size_t i = 0; i < sizeof NESTING / sizeof NESTING[0]; i++) expect_nesting(&NESTING[i]);
 }
 
 static void long_but_shallow_is_fine(void) {

@@ -1,5 +1,7 @@
 /* test_apply.c: Apply against hand-built effects: uniform uploads (values read back from GL,
  * pixels of rendered frames), dirty tracking counted through the GL function table. */
+#include <string.h>
+
 #include "gl_context.h"
 #include "internal.h"
 #include "rt_support.h"
@@ -371,6 +373,70 @@ static void test_pos_fixup_follows_viewport_and_target(void) {
     hfx_effect_destroy(fx);
 }
 
+/* Applying a pass again after another one rebinds its program; with nothing in between it
+ * makes no call (the same-pass path), and the application's own glUseProgram is seen only
+ * after hfx_device_sync. */
+static void test_reapply_and_sync(void) {
+    hfx_device *cdev = hfx_device_create_gl(tc_loader);
+    hfx_effect *a = hfx_rt_effect_from_fx(cdev, color_effect(), NULL, NULL);
+    hfx_effect *b = hfx_rt_effect_from_fx(cdev, color_effect(), NULL, NULL);
+    CHECK(a && b);
+    hfx_pass *pa = hfx_technique_pass(hfx_effect_current_technique(a), 0);
+    hfx_pass *pb = hfx_technique_pass(hfx_effect_current_technique(b), 0);
+    CHECK_INT(hfx_param_set_floats(hfx_effect_param(a, "Color"), (float[4]){1, 0, 0, 1}, 4), HFX_OK);
+    CHECK_INT(hfx_param_set_floats(hfx_effect_param(b, "Color"), (float[4]){0, 1, 0, 1}, 4), HFX_OK);
+    CHECK_INT(hfx_pass_apply(pa), HFX_OK);
+    GLuint prog_a = current_program();
+    tc_reset();
+    CHECK_INT(hfx_pass_apply(pa), HFX_OK);
+    CHECK_INT(tc_calls(), 0);
+    CHECK_INT(hfx_pass_apply(pb), HFX_OK);
+    CHECK(current_program() != prog_a);
+    tc_reset();
+    CHECK_INT(hfx_pass_apply(pa), HFX_OK);
+    CHECK_INT(tc_count("glUseProgram"), 1);
+    CHECK_INT(current_program(), prog_a);
+    clear(0, 0, 0, 0);
+    draw_full();
+    check_pixel(2, 2, 255, 0, 0, 255);
+    g.UseProgram(0); /* behind hfx's back: trusted shadow, so not seen... */
+    tc_reset();
+    CHECK_INT(hfx_pass_apply(pa), HFX_OK);
+    CHECK_INT(tc_calls(), 0);
+    hfx_device_sync(cdev); /* ...until the application says so */
+    tc_reset();
+    CHECK_INT(hfx_pass_apply(pa), HFX_OK);
+    CHECK_INT(tc_count("glUseProgram"), 1);
+    CHECK_INT(current_program(), prog_a);
+    hfx_device_sync(NULL);
+    hfx_effect_destroy(a);
+    hfx_effect_destroy(b);
+    hfx_device_destroy(cdev);
+    g.UseProgram(0);
+}
+
+/* A second begin is refused, so end restores what the first begin saw. */
+static void test_begin_twice(void) {
+    hfx_fx_effect *cfx = color_effect();
+    uint32_t first = cfx->state_count;
+    tb_state_e(cfx, "AlphaBlendEnable", 0, "True");
+    cfx->passes[0].first_state = first;
+    cfx->passes[0].state_count = cfx->state_count - first;
+    hfx_effect *fx = load(cfx);
+    CHECK(hfx_effect_device(fx) == dev);
+    CHECK(hfx_effect_device(NULL) == NULL);
+    g.Disable(GL_BLEND);
+    CHECK_INT(hfx_effect_begin(fx), HFX_OK);
+    CHECK_INT(hfx_pass_apply(hfx_technique_pass(hfx_effect_current_technique(fx), 0)), HFX_OK);
+    CHECK_INT(g.IsEnabled(GL_BLEND), GL_TRUE);
+    CHECK_INT(hfx_effect_begin(fx), HFX_ERR_NOT_FOUND);
+    CHECK(strstr(hfx_device_last_error(dev), "hfx_effect_begin twice") != NULL);
+    CHECK_INT(hfx_effect_end(fx), HFX_OK);
+    CHECK_INT(g.IsEnabled(GL_BLEND), GL_FALSE);
+    CHECK_INT(hfx_effect_end(fx), HFX_ERR_NOT_FOUND);
+    hfx_effect_destroy(fx);
+}
+
 int main(void) {
     gl = test_gl_create(W, H);
     if (!gl) test_skip("no OSMesa context");
@@ -386,6 +452,8 @@ int main(void) {
     RUN(test_one_changed_float_of_fifty);
     RUN(test_clones_share_programs);
     RUN(test_pos_fixup_follows_viewport_and_target);
+    RUN(test_reapply_and_sync);
+    RUN(test_begin_twice);
     g.DeleteBuffers(1, &vbo);
     g.DeleteVertexArrays(1, &vao);
     hfx_device_destroy(dev);

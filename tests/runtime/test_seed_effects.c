@@ -131,6 +131,36 @@ static void test_ambient_annotations_and_colour(void) {
     hfx_effect_destroy(fx);
 }
 
+/* The runtime packs float parameters into registers (hfx_c) unless asked not to; both render
+ * the hand-computed colour: 0.2, 0.4, 0.6 * 255 = 51, 102, 153. */
+static void test_packed_and_separate_render_alike(void) {
+    hfx_load_options separate = {0};
+    separate.separate_uniforms = 1;
+    char *path = test_seed_path("ambient.fx");
+    hfx_effect *fx[2] = {hfx_effect_load(dev, path, NULL, NULL), hfx_effect_load(dev, path, &separate, NULL)};
+    free(path);
+    CHECK(fx[0] && fx[1]);
+    for (int k = 0; k < 2 && fx[0] && fx[1]; k++) {
+        uint32_t prog = fx[k]->sh->fx->passes[0].program;
+        if (k == 0) CHECK(fx[k]->sh->fx->programs[prog].reg_count > 0);
+        else CHECK_INT(fx[k]->sh->fx->programs[prog].reg_count, 0);
+        CHECK_INT(hfx_param_set_matrix(hfx_effect_param(fx[k], "world"), identity), HFX_OK);
+        CHECK_INT(hfx_param_set_matrix(hfx_effect_param(fx[k], "view"), identity), HFX_OK);
+        CHECK_INT(hfx_param_set_matrix(hfx_effect_param(fx[k], "projection"), identity), HFX_OK);
+        CHECK_INT(hfx_param_set_floats(hfx_effect_param(fx[k], "colorMaterialAmbiental"), (float[4]){0.2f, 0.4f, 0.6f, 1}, 4), HFX_OK);
+        hfx_pass *pass = hfx_technique_pass(hfx_effect_technique(fx[k], "ModeloAmbiental"), 0);
+        g.ClearColor(0, 0, 0, 0);
+        g.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        hfx_effect_begin(fx[k]);
+        CHECK_INT(hfx_pass_apply(pass), HFX_OK);
+        draw_quad(pass);
+        hfx_effect_end(fx[k]);
+        check_pixel(8, 8, 51, 102, 153, 255);
+    }
+    hfx_effect_destroy(fx[0]);
+    hfx_effect_destroy(fx[1]);
+}
+
 static void test_multilights_bug_is_reported(void) {
     char *errors = NULL;
     hfx_effect *fx = load_seed("multilights.fx", &errors);
@@ -294,6 +324,7 @@ int main(void) {
     RUN(test_every_seed_loads_and_applies);
     RUN(test_fxcomposer_empty_renders_white);
     RUN(test_ambient_annotations_and_colour);
+    RUN(test_packed_and_separate_render_alike);
     RUN(test_multilights_bug_is_reported);
     RUN(test_multilights_struct_array);
     RUN(test_tutorial0_samples_its_texture);

@@ -2,9 +2,7 @@
  * times a WRAP-addressed, LINEAR-filtered texture (technique Texturizado) or not (Material).
  * The pixel shader's `colorMaterialAmbiental *= texturaColor` writes a per-pixel copy of the
  * global: every pixel starts from the application's value and the parameter is unchanged. */
-#include "scene.h"
-
-#include "files.h"
+#include "run_twice.h"
 
 static seed_scene *S;
 
@@ -167,17 +165,6 @@ static void run_all(void) {
 }
 
 int main(void) {
-    test_require_seeds();
-    S = seed_scene_create(128, 128);
-    if (!S) {
-        fprintf(stderr, "no OSMesa GL 3.3 context\n");
-        return 1;
-    }
-    run_all();
-    printf("== the same, loading the effects from .hfxo bytes (hfxc, then hfx_effect_load_memory)\n");
-    seed_use_hfxo(S, 1);
-    run_all();
-    seed_report(S);
-    seed_scene_destroy(S);
+    if (seed_run_twice(&S, run_all)) return 1;
     return test_summary();
 }

@@ -3,9 +3,7 @@
  * whatever the drawing order; what lies nearer than the near plane or beyond the far plane is
  * clipped, as Direct3D clips 0 <= z <= w (a port that kept GL's -w <= z <= w would still show
  * what lies between half the near distance and the near plane). */
-#include "scene.h"
-
-#include "files.h"
+#include "run_twice.h"
 
 #define FILE_ "ambient.fx"
 
@@ -184,17 +182,6 @@ static void run_all(void) {
 }
 
 int main(void) {
-    test_require_seeds();
-    S = seed_scene_create(128, 128);
-    if (!S) {
-        fprintf(stderr, "no OSMesa GL 3.3 context\n");
-        return 1;
-    }
-    run_all();
-    printf("== the same, loading the effects from .hfxo bytes (hfxc, then hfx_effect_load_memory)\n");
-    seed_use_hfxo(S, 1);
-    run_all();
-    seed_report(S);
-    seed_scene_destroy(S);
+    if (seed_run_twice(&S, run_all)) return 1;
     return test_summary();
 }

@@ -6,9 +6,9 @@
  *   [modIluEsp]  R = normalize(2 N max(dot(-L, N), 0) + L); V = normalize(cam - P)
  *                color += ks * max(dot(R, V), 0)^n * especular * rd
  *   [Texturizado] color *= tex (WRAP, LINEAR);  color.a = 1 */
-#include "scene.h"
-
-#include "files.h"
+#include "floor.h"
+#include "lighting.h"
+#include "run_twice.h"
 
 static seed_scene *S;
 
@@ -25,12 +25,9 @@ static rgba directional_shade(const seed_surface *s, const void *user) {
     v3 l = v3_normalize(r->dir), n = s->normal;
     double rd = maxd(v3_dot(v3_neg(l), n), 0);
     rgba c = rgba_add(r->ambient, rgba_scale(r->diffuse, rd));
-    if (r->spec_on) {
-        v3 refl = v3_normalize(v3_add(v3_scale(n, 2 * maxd(v3_dot(v3_neg(l), n), 0)), l));
-        v3 view = v3_normalize(v3_sub(r->cam, s->pos));
-        double is = hlsl_pow(maxd(v3_dot(refl, view), 0), r->n);
-        c = rgba_add(c, rgba_scale(r->specular, r->ks * is * rd));
-    }
+    /* The book's R = normalize(2 N max(dot(-L, N), 0) + L) is 7-7's with -L towards the light. */
+    if (r->spec_on)
+        c = rgba_add(c, rgba_scale(r->specular, r->ks * seed_book_specular(n, v3_neg(l), s->pos, r->cam, r->n) * rd));
     if (r->textured) c = rgba_mul(c, seed_texture_sample(r->tex, s->u, s->v, SEED_WRAP));
     c.a = 1;
     return c;
@@ -52,51 +49,23 @@ static dir_ref defaults(const seed_texture *tex) {
     return r;
 }
 
-typedef struct dir_scene {
-    const char *file;
-    hfx_effect *fx;
-    seed_mesh *mesh;
-    seed_object obj;
-    unsigned char texels[64];
-    seed_texture tex;
-} dir_scene;
-
-/* The floor seen from the top camera, World = `world` (NULL: identity). */
-static int open_floor(dir_scene *d, const char *file, double half, const float *world) {
-    d->file = file;
-    d->fx = seed_load(S, file);
-    seed_smooth_texels(d->texels);
-    d->tex = seed_texture_make(S, 4, 4, d->texels);
-    d->mesh = seed_mesh_floor(S, half);
-    d->obj = seed_object_at(d->mesh, world);
-    seed_camera_top(S, 2);
-    if (d->fx) seed_set_transforms(S, d->fx, "world", "view", "projection", d->obj.world);
-    return d->fx != NULL;
+/* The floor from -half to half placed by `world` (NULL: identity) under the top camera
+ * over -2..2. */
+static int open_floor(seed_floor *d, const char *file, double half, const float *world) {
+    const seed_floor_setup setup = {.half = half, .view_half = 2, .world = world, SEED_FLOOR_LOWER_NAMES};
+    return seed_floor_open(S, d, file, &setup);
 }
 
-static void close_scene(dir_scene *d) {
-    CHECK(d->fx != NULL);
-    if (d->fx) hfx_effect_destroy(d->fx);
-    seed_texture_free(S, &d->tex);
-    seed_mesh_free(S, d->mesh);
-    CHECK_SCENE(S);
-}
-
-static void draw_and_probe(dir_scene *d, const dir_ref *r, const char *technique, const char *label) {
+static void draw_and_probe(seed_floor *d, const dir_ref *r, const char *technique, const char *label) {
     seed_set_v3(S, d->fx, "direccionLuz", r->dir);
     seed_set_texture(S, d->fx, "texturaModelo", r->tex);
-    seed_clear(S, rgba_make(0, 0, 0, 0));
-    CHECK_INT(seed_draw(S, d->fx, technique, d->mesh, SEED_BLEND_NONE), 1);
-    for (int y = 7; y < 128; y += 20)
-        for (int x = 5; x < 128; x += 21) {
-            seed_surface surf;
-            if (seed_pick(S, &d->obj, 1, x, y, &surf) < 0) continue;
-            CHECK_PROBE(seed_probe(S, d->file, label, &d->obj, x, y, directional_shade, r));
-        }
+    seed_floor_draw(S, d, d->fx, technique, SEED_BLEND_NONE, 1);
+    seed_grid grid = {.x0 = 5, .step_x = 21, .y0 = 7, .step_y = 20, .skip_misses = 1};
+    seed_floor_probe_grid(S, d, label, grid, directional_shade, r);
 }
 
 static void material_with_default_colours(void) {
-    dir_scene d = {0};
+    seed_floor d = {0};
     if (open_floor(&d, "directional.fx", 2, NULL)) {
         dir_ref r = defaults(&d.tex);
         draw_and_probe(&d, &r, "Material", "Material");
@@ -112,11 +81,11 @@ static void material_with_default_colours(void) {
         CHECK_NEAR(after[1], -2, 1e-6);
         CHECK_NEAR(after[2], 0.5, 1e-6);
     }
-    close_scene(&d);
+    seed_floor_close(S, &d);
 }
 
 static void textured_technique(void) {
-    dir_scene d = {0};
+    seed_floor d = {0};
     if (open_floor(&d, "directional.fx", 2, NULL)) {
         dir_ref r = defaults(&d.tex);
         r.textured = 1;
@@ -124,7 +93,7 @@ static void textured_technique(void) {
         seed_set_rgba(S, d.fx, "colorMaterialDifuso", r.diffuse = rgba_make(0.6, 0.5, 0.3, 1));
         draw_and_probe(&d, &r, "Texturizado", "Texturizado");
     }
-    close_scene(&d);
+    seed_floor_close(S, &d);
 }
 
 /* World = scale 0.5: the world normal is (0, 0.5, 0) and nobody renormalises it, so the
@@ -132,7 +101,7 @@ static void textured_technique(void) {
 static void scaled_world_scales_the_light(void) {
     float world[16];
     xm_scale(world, 0.5, 0.5, 0.5);
-    dir_scene d = {0};
+    seed_floor d = {0};
     if (open_floor(&d, "directional.fx", 4, world)) {
         dir_ref r = defaults(&d.tex);
         r.dir = v3_make(0, -1, 0);
@@ -140,12 +109,12 @@ static void scaled_world_scales_the_light(void) {
         CHECK_PROBE(seed_expect(S, d.file, "half the diffuse, by hand", 64, 64,
                                 rgba_make(0.05 + 0.12, 0.05 + 0.17, 0.05 + 0.195, 1)));
     }
-    close_scene(&d);
+    seed_floor_close(S, &d);
 }
 
 /* A sphere in perspective: the interpolated normals are shorter than 1 inside each triangle. */
 static void sphere_normals_are_not_renormalised(void) {
-    dir_scene d = {0};
+    seed_floor d = {0};
     d.file = "directional.fx";
     d.fx = seed_load(S, d.file);
     seed_smooth_texels(d.texels);
@@ -162,25 +131,18 @@ static void sphere_normals_are_not_renormalised(void) {
         r.dir = v3_make(-1, -1, -1);
         seed_set_rgba(S, d.fx, "colorMaterialDifuso", r.diffuse = rgba_make(0.9, 0.8, 0.7, 1));
         seed_set_v3(S, d.fx, "direccionLuz", r.dir);
-        seed_clear(S, rgba_make(0, 0, 0, 0));
-        CHECK_INT(seed_draw(S, d.fx, "Material", d.mesh, SEED_BLEND_NONE), 1);
+        seed_floor_draw(S, &d, d.fx, "Material", SEED_BLEND_NONE, 1);
         for (int y = 16; y < 112; y += 8)
-            for (int x = 16; x < 112; x += 8) {
-                seed_surface a;
-                if (seed_pick_offset(S, &d.obj, 1, x, y, -1.5, -1.5, &a) < 0 ||
-                    seed_pick_offset(S, &d.obj, 1, x, y, 1.5, 1.5, &a) < 0 ||
-                    seed_pick_offset(S, &d.obj, 1, x, y, 1.5, -1.5, &a) < 0 ||
-                    seed_pick_offset(S, &d.obj, 1, x, y, -1.5, 1.5, &a) < 0)
-                    continue;
-                CHECK_PROBE(seed_probe(S, d.file, "sphere, short normals", &d.obj, x, y, directional_shade, &r));
-            }
+            for (int x = 16; x < 112; x += 8)
+                if (seed_well_inside(S, &d.obj, x, y, 1.5))
+                    CHECK_PROBE(seed_probe(S, d.file, "sphere, short normals", &d.obj, x, y, directional_shade, &r));
     }
-    close_scene(&d);
+    seed_floor_close(S, &d);
 }
 
 /* directional_specular.fx with modIluEsp false (its initializer): exactly directional.fx. */
 static void specular_off_is_the_diffuse_model(void) {
-    dir_scene d = {0};
+    seed_floor d = {0};
     if (open_floor(&d, "directional_specular.fx", 2, NULL)) {
         dir_ref r = defaults(&d.tex);
         seed_set_v3(S, d.fx, "posicionCamara", r.cam);
@@ -189,11 +151,11 @@ static void specular_off_is_the_diffuse_model(void) {
         r.textured = 1;
         draw_and_probe(&d, &r, "Texturizado", "modIluEsp false, Texturizado");
     }
-    close_scene(&d);
+    seed_floor_close(S, &d);
 }
 
 static void specular_on(void) {
-    dir_scene d = {0};
+    seed_floor d = {0};
     if (open_floor(&d, "directional_specular.fx", 2, NULL)) {
         dir_ref r = defaults(&d.tex);
         r.spec_on = 1;
@@ -216,7 +178,7 @@ static void specular_on(void) {
         r.textured = 1;
         draw_and_probe(&d, &r, "Texturizado", "modIluEsp, Texturizado");
     }
-    close_scene(&d);
+    seed_floor_close(S, &d);
 }
 
 /* Every test, once with the .fx loaded directly and once through .hfxo. */
@@ -230,17 +192,6 @@ static void run_all(void) {
 }
 
 int main(void) {
-    test_require_seeds();
-    S = seed_scene_create(128, 128);
-    if (!S) {
-        fprintf(stderr, "no OSMesa GL 3.3 context\n");
-        return 1;
-    }
-    run_all();
-    printf("== the same, loading the effects from .hfxo bytes (hfxc, then hfx_effect_load_memory)\n");
-    seed_use_hfxo(S, 1);
-    run_all();
-    seed_report(S);
-    seed_scene_destroy(S);
+    if (seed_run_twice(&S, run_all)) return 1;
     return test_summary();
 }

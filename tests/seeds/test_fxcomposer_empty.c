@@ -1,8 +1,6 @@
 /* fxcomposer_empty.fx (003 §7.2.2, FX Composer's "Empty" template): WorldViewProj bound by its
  * WorldViewProjection semantic, a white pixel shader, and `CullMode = None` in the pass. */
-#include "scene.h"
-
-#include "files.h"
+#include "run_twice.h"
 
 #define FILE_ "fxcomposer_empty.fx"
 
@@ -66,22 +64,47 @@ static void white_silhouette(void) {
     CHECK_SCENE(S);
 }
 
+/* The template and ambient.fx, a 2 x 2 floor, and the camera 10 below it looking up
+ * (orthographic, 4 x 4 wide, screen up = +z), World the identity. */
+typedef struct below_scene {
+    hfx_effect *fx, *amb;
+    seed_mesh *floor;
+    float id[16];
+} below_scene;
+
+static int open_below(below_scene *b) {
+    b->fx = seed_load(S, FILE_);
+    b->amb = seed_load(S, "ambient.fx");
+    CHECK(b->fx != NULL && b->amb != NULL);
+    b->floor = seed_mesh_floor(S, 1);
+    float view[16], proj[16];
+    xm_look_at(view, v3_make(0, -10, 0), v3_make(0, 0, 0), v3_make(0, 0, 1));
+    xm_orthographic(proj, 4, 4, 1, 20);
+    seed_camera(S, view, proj);
+    xm_identity(b->id);
+    return b->fx && b->amb;
+}
+
+static void close_below(below_scene *b) {
+    seed_mesh_free(S, b->floor);
+    if (b->fx) hfx_effect_destroy(b->fx);
+    if (b->amb) hfx_effect_destroy(b->amb);
+    CHECK_SCENE(S);
+}
+
 /* The floor seen from below shows its back to the camera. The application culls
  * counter-clockwise faces (XNA's default); ambient.fx, whose pass says nothing about culling,
  * leaves that alone and draws nothing; the template's `CullMode = None` draws it. */
 static void cull_mode_none_draws_back_faces(void) {
-    hfx_effect *fx = seed_load(S, FILE_), *amb = seed_load(S, "ambient.fx");
-    CHECK(fx != NULL && amb != NULL);
-    seed_mesh *floor = seed_mesh_floor(S, 1);
-    float view[16], proj[16], id[16];
-    xm_look_at(view, v3_make(0, -10, 0), v3_make(0, 0, 0), v3_make(0, 0, 1));
-    xm_orthographic(proj, 4, 4, 1, 20);
-    seed_camera(S, view, proj);
-    xm_identity(id);
+    below_scene b;
+    int loaded = open_below(&b);
+    hfx_effect *fx = b.fx, *amb = b.amb;
+    seed_mesh *floor = b.floor;
+    const float *id = b.id;
     seed_object obj = seed_object_at(floor, id);
     seed_surface s;
     CHECK(seed_pick(S, &obj, 1, 64, 64, &s) == 0 && !s.front);
-    if (fx && amb) {
+    if (loaded) {
         seed_set_transforms(S, amb, "world", "view", "projection", id);
         seed_clear(S, CLEAR);
         CHECK_INT(seed_draw(S, amb, NULL, floor, SEED_BLEND_NONE), 1);
@@ -93,31 +116,26 @@ static void cull_mode_none_draws_back_faces(void) {
         CHECK_PROBE(seed_expect(S, FILE_, "back face drawn", 40, 80, WHITE));
         CHECK_PROBE(seed_expect(S, FILE_, "beside the floor", 10, 64, CLEAR));
         /* And from above, the front. */
+        float view[16], proj[16];
         xm_look_at(view, v3_make(0, 10, 0), v3_make(0, 0, 0), v3_make(0, 0, -1));
+        xm_orthographic(proj, 4, 4, 1, 20);
         seed_camera(S, view, proj);
         set_wvp(fx, id);
         seed_clear(S, CLEAR);
         CHECK_INT(seed_draw(S, fx, "technique0", floor, SEED_BLEND_NONE), 1);
         CHECK_PROBE(seed_expect(S, FILE_, "front face drawn", 64, 64, WHITE));
     }
-    seed_mesh_free(S, floor);
-    if (fx) hfx_effect_destroy(fx);
-    if (amb) hfx_effect_destroy(amb);
-    CHECK_SCENE(S);
+    close_below(&b);
 }
 
 /* hfx_effect_end puts the application's culling back: after the template, ambient.fx culls the
  * back face again without the application touching GL. */
 static void culling_is_restored_after_the_effect(void) {
-    hfx_effect *fx = seed_load(S, FILE_), *amb = seed_load(S, "ambient.fx");
-    CHECK(fx != NULL && amb != NULL);
-    seed_mesh *floor = seed_mesh_floor(S, 1);
-    float view[16], proj[16], id[16];
-    xm_look_at(view, v3_make(0, -10, 0), v3_make(0, 0, 0), v3_make(0, 0, 1));
-    xm_orthographic(proj, 4, 4, 1, 20);
-    seed_camera(S, view, proj);
-    xm_identity(id);
-    if (fx && amb) {
+    below_scene b;
+    if (open_below(&b)) {
+        hfx_effect *fx = b.fx, *amb = b.amb;
+        seed_mesh *floor = b.floor;
+        const float *id = b.id;
         seed_clear(S, CLEAR);
         set_wvp(fx, id);
         CHECK_INT(seed_draw(S, fx, "technique0", floor, SEED_BLEND_NONE), 1);
@@ -127,10 +145,7 @@ static void culling_is_restored_after_the_effect(void) {
         CHECK_INT(seed_draw(S, amb, NULL, floor, SEED_BLEND_NONE), 1);
         CHECK_PROBE(seed_expect(S, "ambient.fx", "culled again after the template", 64, 64, WHITE));
     }
-    seed_mesh_free(S, floor);
-    if (fx) hfx_effect_destroy(fx);
-    if (amb) hfx_effect_destroy(amb);
-    CHECK_SCENE(S);
+    close_below(&b);
 }
 
 /* Every test, once with the .fx loaded directly and once through .hfxo. */
@@ -141,17 +156,6 @@ static void run_all(void) {
 }
 
 int main(void) {
-    test_require_seeds();
-    S = seed_scene_create(128, 128);
-    if (!S) {
-        fprintf(stderr, "no OSMesa GL 3.3 context\n");
-        return 1;
-    }
-    run_all();
-    printf("== the same, loading the effects from .hfxo bytes (hfxc, then hfx_effect_load_memory)\n");
-    seed_use_hfxo(S, 1);
-    run_all();
-    seed_report(S);
-    seed_scene_destroy(S);
+    if (seed_run_twice(&S, run_all)) return 1;
     return test_summary();
 }

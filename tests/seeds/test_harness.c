@@ -5,6 +5,7 @@
 #include <GL/glcorearb.h>
 
 #include "scene.h"
+#include "stripes.h"
 
 static seed_scene *S;
 
@@ -319,24 +320,12 @@ static void reference_sampler_matches_gl(void) {
 
 /* tutorial0's pixel-centre expectation, met by a renderer that does move content by half a
  * pixel the Direct3D 9 way (this file's shader): pixel x shows the mean of texels x - 1 and x. */
-static double period3(int i) {
-    static const double p[3] = {0, 128, 255};
-    return p[((i % 3) + 3) % 3];
-}
-
 static void half_pixel_emulation_blurs_as_d3d9(void) {
     unsigned prog = make_program();
     CHECK(prog != 0);
     if (!prog) return;
     static unsigned char texels[96 * 96 * 4];
-    for (int y = 0; y < 96; y++)
-        for (int x = 0; x < 96; x++) {
-            unsigned char *p = texels + (y * 96 + x) * 4;
-            p[0] = (unsigned char)period3(x);
-            p[1] = (unsigned char)period3(y);
-            p[2] = 0;
-            p[3] = 255;
-        }
+    seed_period3_texels(texels, 96);
     seed_texture tex = seed_texture_make(S, 96, 96, texels);
     seed_mesh *floor = seed_mesh_floor(S, 2);
     float world[16];
@@ -354,7 +343,7 @@ static void half_pixel_emulation_blurs_as_d3d9(void) {
     for (int y = 1; y < 96; y++)
         for (int x = 1; x < 96; x++) {
             rgba g = seed_pixel(S, x, y);
-            double r = (period3(x - 1) + period3(x)) / 2, gg = (period3(y - 1) + period3(y)) / 2;
+            double r = (seed_period3(x - 1) + seed_period3(x)) / 2, gg = (seed_period3(y - 1) + seed_period3(y)) / 2;
             if (fabs(g.r * 255 - r) > 1 || fabs(g.g * 255 - gg) > 1) wrong++;
         }
     CHECK_INT(wrong, 0);

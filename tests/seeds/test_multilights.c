@@ -9,9 +9,10 @@
  *   M = colorMaterialDifuso [* tex]. The loop runs to numLuces = 4 over arrays of 2: the
  * elements past the end read as zero constants, as D3D9's unused registers do, so they are off.
  * The framebuffer holds saturate(saturate(pass 1) + saturate(pass 2)). */
-#include "scene.h"
-
 #include "files.h"
+#include "floor.h"
+#include "lighting.h"
+#include "run_twice.h"
 
 #define FILE_ "multilights_repaired.fx"
 
@@ -41,24 +42,19 @@ static rgba phong(const multi_ref *r, v3 l, v3 p, v3 n, rgba lc, rgba m) {
     double rd = maxd(v3_dot(l, n), 0);
     rgba c = rgba_scale(rgba_mul(lc, m), rd);
     if (r->spec_on) {
-        v3 refl = v3_normalize(v3_sub(v3_scale(n, 2 * maxd(v3_dot(l, n), 0)), l));
-        v3 view = v3_normalize(v3_sub(r->cam, p));
-        double rs = hlsl_pow(maxd(v3_dot(refl, view), 0), r->n);
-        rgba spec = rgba_scale(rgba_mul(lc, r->specular), r->ks * rs);
+        rgba spec = rgba_scale(rgba_mul(lc, r->specular), r->ks * seed_book_specular(n, l, p, r->cam, r->n));
         c = rgba_add(c, rgba_scale(rgba_mul(spec, m), rd));
     }
     return c;
 }
 
 static double distance_att(v3 p, v3 light, double range, double c1, double c2, double c3) {
-    double d = v3_distance(p, light);
-    return d <= range ? mind(1 / (c1 + c2 * d + c3 * d * d), 1) : 0;
+    return seed_book_attenuation(v3_distance(p, light), range, c1, c2, c3);
 }
 
 static rgba spot(const multi_ref *r, const spot_light *s, v3 p, v3 n, rgba m) {
     v3 l = v3_normalize(v3_sub(s->pos, p)), axis = v3_normalize(v3_sub(s->pos, s->target));
-    double cos_a = maxd(v3_dot(axis, l), 0), cos_t = cos(s->inner), cos_f = cos(s->outer);
-    double k = cos_a <= cos_f ? 0 : cos_a >= cos_t ? 1 : hlsl_pow((cos_a - cos_f) / (cos_t - cos_f), s->falloff);
+    double k = seed_book_spot_cone(maxd(v3_dot(axis, l), 0), s->inner, s->outer, s->falloff);
     if (k == 0) return rgba_make(0, 0, 0, 0);
     rgba c = rgba_scale(phong(r, l, p, n, s->colour, m), k);
     if (s->attenuate) c = rgba_scale(c, distance_att(p, s->pos, s->range, s->c1, s->c2, s->c3));
@@ -111,36 +107,49 @@ static void six_lights(multi_ref *r) {
                                0.2, 0.5, 0.8, 5, 1, 0.1, 0.1};
 }
 
+/* array[i].member = v, for the three light arrays. */
+static void member_v3(hfx_effect *fx, const char *array, int i, const char *member, v3 v) {
+    seed_param_v3(S, seed_member(S, fx, array, (size_t)i, member), member, v);
+}
+static void member_rgba(hfx_effect *fx, const char *array, int i, const char *member, rgba c) {
+    seed_param_rgba(S, seed_member(S, fx, array, (size_t)i, member), member, c);
+}
+static void member_float(hfx_effect *fx, const char *array, int i, const char *member, double v) {
+    seed_param_float(S, seed_member(S, fx, array, (size_t)i, member), member, v);
+}
+static void member_int(hfx_effect *fx, const char *array, int i, const char *member, int v) {
+    seed_param_int(S, seed_member(S, fx, array, (size_t)i, member), member, v);
+}
+
 static void set_dir(hfx_effect *fx, int i, const dir_light *d) {
-    seed_param_v3(S, seed_member(S, fx, "direccionales", (size_t)i, "Direccion"), "Direccion", d->dir);
-    seed_param_rgba(S, seed_member(S, fx, "direccionales", (size_t)i, "Color"), "Color", d->colour);
-    seed_param_int(S, seed_member(S, fx, "direccionales", (size_t)i, "Encender"), "Encender", d->on);
+    member_v3(fx, "direccionales", i, "Direccion", d->dir);
+    member_rgba(fx, "direccionales", i, "Color", d->colour);
+    member_int(fx, "direccionales", i, "Encender", d->on);
+}
+
+/* Rango, C1, C2, C3, Atenuar and Encender, which puntuales and spots share. */
+static void set_reach(hfx_effect *fx, const char *array, int i, const double range_c1_c2_c3[4], int attenuate,
+                      int on) {
+    static const char *const names[4] = {"Rango", "C1", "C2", "C3"};
+    for (int k = 0; k < 4; k++) member_float(fx, array, i, names[k], range_c1_c2_c3[k]);
+    member_int(fx, array, i, "Atenuar", attenuate);
+    member_int(fx, array, i, "Encender", on);
 }
 
 static void set_point(hfx_effect *fx, int i, const point_light *p) {
-    seed_param_v3(S, seed_member(S, fx, "puntuales", (size_t)i, "Posicion"), "Posicion", p->pos);
-    seed_param_rgba(S, seed_member(S, fx, "puntuales", (size_t)i, "Color"), "Color", p->colour);
-    seed_param_float(S, seed_member(S, fx, "puntuales", (size_t)i, "Rango"), "Rango", p->range);
-    seed_param_float(S, seed_member(S, fx, "puntuales", (size_t)i, "C1"), "C1", p->c1);
-    seed_param_float(S, seed_member(S, fx, "puntuales", (size_t)i, "C2"), "C2", p->c2);
-    seed_param_float(S, seed_member(S, fx, "puntuales", (size_t)i, "C3"), "C3", p->c3);
-    seed_param_int(S, seed_member(S, fx, "puntuales", (size_t)i, "Atenuar"), "Atenuar", p->attenuate);
-    seed_param_int(S, seed_member(S, fx, "puntuales", (size_t)i, "Encender"), "Encender", p->on);
+    member_v3(fx, "puntuales", i, "Posicion", p->pos);
+    member_rgba(fx, "puntuales", i, "Color", p->colour);
+    set_reach(fx, "puntuales", i, (const double[4]){p->range, p->c1, p->c2, p->c3}, p->attenuate, p->on);
 }
 
 static void set_spot(hfx_effect *fx, int i, const spot_light *s) {
-    seed_param_v3(S, seed_member(S, fx, "spots", (size_t)i, "Posicion"), "Posicion", s->pos);
-    seed_param_v3(S, seed_member(S, fx, "spots", (size_t)i, "Blanco"), "Blanco", s->target);
-    seed_param_rgba(S, seed_member(S, fx, "spots", (size_t)i, "Color"), "Color", s->colour);
-    seed_param_float(S, seed_member(S, fx, "spots", (size_t)i, "AnguloInterno"), "AnguloInterno", s->inner);
-    seed_param_float(S, seed_member(S, fx, "spots", (size_t)i, "AnguloExterno"), "AnguloExterno", s->outer);
-    seed_param_float(S, seed_member(S, fx, "spots", (size_t)i, "Falloff"), "Falloff", s->falloff);
-    seed_param_float(S, seed_member(S, fx, "spots", (size_t)i, "Rango"), "Rango", s->range);
-    seed_param_float(S, seed_member(S, fx, "spots", (size_t)i, "C1"), "C1", s->c1);
-    seed_param_float(S, seed_member(S, fx, "spots", (size_t)i, "C2"), "C2", s->c2);
-    seed_param_float(S, seed_member(S, fx, "spots", (size_t)i, "C3"), "C3", s->c3);
-    seed_param_int(S, seed_member(S, fx, "spots", (size_t)i, "Atenuar"), "Atenuar", s->attenuate);
-    seed_param_int(S, seed_member(S, fx, "spots", (size_t)i, "Encender"), "Encender", s->on);
+    member_v3(fx, "spots", i, "Posicion", s->pos);
+    member_v3(fx, "spots", i, "Blanco", s->target);
+    member_rgba(fx, "spots", i, "Color", s->colour);
+    member_float(fx, "spots", i, "AnguloInterno", s->inner);
+    member_float(fx, "spots", i, "AnguloExterno", s->outer);
+    member_float(fx, "spots", i, "Falloff", s->falloff);
+    set_reach(fx, "spots", i, (const double[4]){s->range, s->c1, s->c2, s->c3}, s->attenuate, s->on);
 }
 
 static void set_all(hfx_effect *fx, const multi_ref *r) {
@@ -156,61 +165,39 @@ static void set_all(hfx_effect *fx, const multi_ref *r) {
     seed_set_texture(S, fx, "texturaModelo", r->tex);
 }
 
-typedef struct multi_scene {
-    hfx_effect *fx;
-    seed_mesh *floor;
-    seed_object obj;
-    unsigned char texels[64];
-    seed_texture tex;
-} multi_scene;
+/* The floor from -2 to 2 fills the view: 32 pixels per unit. */
+static const seed_floor_setup FLOOR = {.half = 2, .view_half = 2, SEED_FLOOR_LOWER_NAMES};
 
-static int open_scene(multi_scene *m) {
-    m->fx = seed_load(S, FILE_);
-    seed_smooth_texels(m->texels);
-    m->tex = seed_texture_make(S, 4, 4, m->texels);
-    m->floor = seed_mesh_floor(S, 2);
-    m->obj = seed_object_at(m->floor, NULL);
-    seed_camera_top(S, 2);
-    if (m->fx) seed_set_transforms(S, m->fx, "world", "view", "projection", NULL);
-    return m->fx != NULL;
+/* Pass 1 then pass 2 added to it, as the application draws the two passes. */
+static void draw_two_passes(seed_floor *m, const char *technique) {
+    seed_floor_draw(S, m, m->fx, technique, SEED_BLEND_ADD_AFTER_FIRST, 2);
 }
 
-static void close_scene(multi_scene *m) {
-    CHECK(m->fx != NULL);
-    if (m->fx) hfx_effect_destroy(m->fx);
-    seed_texture_free(S, &m->tex);
-    seed_mesh_free(S, m->floor);
-    CHECK_SCENE(S);
-}
-
-static void draw_and_probe(multi_scene *m, const multi_ref *r, const char *label) {
+static void draw_and_probe(seed_floor *m, const multi_ref *r, const char *label) {
     set_all(m->fx, r);
-    seed_clear(S, rgba_make(0, 0, 0, 0));
-    CHECK_INT(seed_draw(S, m->fx, r->textured ? "Texturizado" : "Material", m->floor, SEED_BLEND_ADD_AFTER_FIRST), 2);
-    for (int y = 5; y < 128; y += 19)
-        for (int x = 7; x < 128; x += 20)
-            CHECK_PROBE(seed_probe(S, FILE_, label, &m->obj, x, y, multilights_shade, r));
+    draw_two_passes(m, r->textured ? "Texturizado" : "Material");
+    seed_grid grid = {.x0 = 7, .step_x = 20, .y0 = 5, .step_y = 19};
+    seed_floor_probe_grid(S, m, label, grid, multilights_shade, r);
 }
 
 /* Every light off (their fields start at zero): pass 1's .07 plus pass 2's black, alpha 1. */
 static void lights_off_leave_the_ambient_pass(void) {
-    multi_scene m = {0};
-    if (open_scene(&m)) {
+    seed_floor m = {0};
+    if (seed_floor_open(S, &m, FILE_, &FLOOR)) {
         multi_ref r;
         defaults(&r, &m.tex);
-        seed_clear(S, rgba_make(0, 0, 0, 0));
-        CHECK_INT(seed_draw(S, m.fx, "Material", m.floor, SEED_BLEND_ADD_AFTER_FIRST), 2);
+        draw_two_passes(&m, "Material");
         CHECK_PROBE(seed_expect(S, FILE_, "no lights, by hand", 64, 64, rgba_make(0.07, 0.07, 0.07, 1)));
         CHECK_PROBE(seed_expect(S, FILE_, "no lights, by hand", 10, 100, rgba_make(0.07, 0.07, 0.07, 1)));
         draw_and_probe(&m, &r, "no lights");
     }
-    close_scene(&m);
+    seed_floor_close(S, &m);
 }
 
 /* Each light alone, through element 0 and element 1 of its array. */
 static void each_light_alone(void) {
-    multi_scene m = {0};
-    if (open_scene(&m)) {
+    seed_floor m = {0};
+    if (seed_floor_open(S, &m, FILE_, &FLOOR)) {
         multi_ref all, r;
         defaults(&all, &m.tex);
         six_lights(&all);
@@ -230,19 +217,18 @@ static void each_light_alone(void) {
         for (int i = 0; i < 2; i++) r.dirs[i].on = r.points[i].on = r.spots[i].on = 0;
         r.dirs[0].on = 1;
         set_all(m.fx, &r);
-        seed_clear(S, rgba_make(0, 0, 0, 0));
-        CHECK_INT(seed_draw(S, m.fx, "Material", m.floor, SEED_BLEND_ADD_AFTER_FIRST), 2);
+        draw_two_passes(&m, "Material");
         double rd = 1 / sqrt(1.29);
         CHECK_PROBE(seed_expect(S, FILE_, "direccionales[0] by hand", 40, 90,
                                 rgba_make(0.07 + rd * 0.8 * 0.24, 0.07 + rd * 0.7 * 0.34, 0.07 + rd * 0.6 * 0.39, 1)));
     }
-    close_scene(&m);
+    seed_floor_close(S, &m);
 }
 
 /* All six, then the specular, then the texture; then lights switched off one by one. */
 static void six_lights_and_switching(void) {
-    multi_scene m = {0};
-    if (open_scene(&m)) {
+    seed_floor m = {0};
+    if (seed_floor_open(S, &m, FILE_, &FLOOR)) {
         multi_ref r;
         defaults(&r, &m.tex);
         six_lights(&r);
@@ -260,14 +246,14 @@ static void six_lights_and_switching(void) {
         r.dirs[0].on = 1;
         draw_and_probe(&m, &r, "points off, direccionales[0] on");
     }
-    close_scene(&m);
+    seed_floor_close(S, &m);
 }
 
 /* numLuces = 2 stays inside the arrays: the same picture as the default 4, whose extra
  * iterations read elements that do not exist. */
 static void loop_bound_past_the_arrays(void) {
-    multi_scene m = {0};
-    if (open_scene(&m)) {
+    seed_floor m = {0};
+    if (seed_floor_open(S, &m, FILE_, &FLOOR)) {
         int n = -1;
         hfx_param *p = hfx_effect_param(m.fx, "numLuces");
         CHECK(p && hfx_param_get_int(p, &n) == HFX_OK);
@@ -282,13 +268,11 @@ static void loop_bound_past_the_arrays(void) {
         multi_ref first = r;
         first.dirs[1].on = first.points[1].on = first.spots[1].on = 0;
         set_all(m.fx, &r);
-        seed_clear(S, rgba_make(0, 0, 0, 0));
-        CHECK_INT(seed_draw(S, m.fx, "Material", m.floor, SEED_BLEND_ADD_AFTER_FIRST), 2);
-        for (int y = 9; y < 128; y += 29)
-            for (int x = 9; x < 128; x += 29)
-                CHECK_PROBE(seed_probe(S, FILE_, "numLuces 1: elements 0 only", &m.obj, x, y, multilights_shade, &first));
+        draw_two_passes(&m, "Material");
+        seed_grid grid = {.x0 = 9, .step_x = 29, .y0 = 9, .step_y = 29};
+        seed_floor_probe_grid(S, &m, "numLuces 1: elements 0 only", grid, multilights_shade, &first);
     }
-    close_scene(&m);
+    seed_floor_close(S, &m);
 }
 
 /* The unrepaired listing: Phong called with 4 arguments on line 204. The load fails with
@@ -308,13 +292,13 @@ static void broken_listing_fails_and_device_survives(void) {
     hfx_free(errors);
     free(path);
     /* The same device, right after: the repaired file draws its ambient pass. */
-    multi_scene m = {0};
-    if (open_scene(&m)) {
+    seed_floor m = {0};
+    if (seed_floor_open(S, &m, FILE_, &FLOOR)) {
         multi_ref r;
         defaults(&r, &m.tex);
         draw_and_probe(&m, &r, "after the failed load");
     }
-    close_scene(&m);
+    seed_floor_close(S, &m);
     hfx_effect *amb = seed_load(S, "ambient.fx");
     CHECK(amb != NULL);
     if (amb) {
@@ -339,17 +323,6 @@ static void run_all(void) {
 }
 
 int main(void) {
-    test_require_seeds();
-    S = seed_scene_create(128, 128);
-    if (!S) {
-        fprintf(stderr, "no OSMesa GL 3.3 context\n");
-        return 1;
-    }
-    run_all();
-    printf("== the same, loading the effects from .hfxo bytes (hfxc, then hfx_effect_load_memory)\n");
-    seed_use_hfxo(S, 1);
-    run_all();
-    seed_report(S);
-    seed_scene_destroy(S);
+    if (seed_run_twice(&S, run_all)) return 1;
     return test_summary();
 }

@@ -4,9 +4,9 @@
  *                color += ks * max(dot(R, V), 0)^n * especular * rd
  *   [atenuado]   d = |P - posicionLuz|; color *= d <= rango ? min(1 / (c1 + c2 d + c3 d^2), 1) : 0
  *   color += ambient; [Texturizado] color *= tex;  color.a = 1 */
-#include "scene.h"
-
-#include "files.h"
+#include "floor.h"
+#include "lighting.h"
+#include "run_twice.h"
 
 static seed_scene *S;
 
@@ -18,22 +18,15 @@ typedef struct point_ref {
     const seed_texture *tex;
 } point_ref;
 
-static double attenuation(double d, double range, double c1, double c2, double c3) {
-    return d <= range ? mind(1 / (c1 + c2 * d + c3 * d * d), 1) : 0;
-}
-
 static rgba point_shade(const seed_surface *s, const void *user) {
     const point_ref *r = user;
     v3 n = s->normal, l = v3_normalize(v3_sub(r->light, s->pos));
     double rd = maxd(v3_dot(l, n), 0);
     rgba c = rgba_scale(r->diffuse, rd);
-    if (r->spec_on) {
-        v3 refl = v3_normalize(v3_sub(v3_scale(n, 2 * maxd(v3_dot(l, n), 0)), l));
-        v3 view = v3_normalize(v3_sub(r->cam, s->pos));
-        double is = hlsl_pow(maxd(v3_dot(refl, view), 0), r->n);
-        c = rgba_add(c, rgba_scale(r->specular, r->ks * is * rd));
-    }
-    if (r->attenuated) c = rgba_scale(c, attenuation(v3_distance(s->pos, r->light), r->range, r->c1, r->c2, r->c3));
+    if (r->spec_on)
+        c = rgba_add(c, rgba_scale(r->specular, r->ks * seed_book_specular(n, l, s->pos, r->cam, r->n) * rd));
+    if (r->attenuated)
+        c = rgba_scale(c, seed_book_attenuation(v3_distance(s->pos, r->light), r->range, r->c1, r->c2, r->c3));
     c = rgba_add(c, r->ambient);
     if (r->textured) c = rgba_mul(c, seed_texture_sample(r->tex, s->u, s->v, SEED_WRAP));
     c.a = 1;
@@ -55,36 +48,10 @@ static point_ref defaults(const seed_texture *tex) {
     return r;
 }
 
-typedef struct point_scene {
-    const char *file;
-    hfx_effect *fx;
-    seed_mesh *floor;
-    seed_object obj;
-    unsigned char texels[64];
-    seed_texture tex;
-} point_scene;
+/* The floor from -2 to 2 fills the view: 32 pixels per unit. */
+static const seed_floor_setup FLOOR = {.half = 2, .view_half = 2, SEED_FLOOR_LOWER_NAMES};
 
-static int open_scene(point_scene *p, const char *file) {
-    p->file = file;
-    p->fx = seed_load(S, file);
-    seed_smooth_texels(p->texels);
-    p->tex = seed_texture_make(S, 4, 4, p->texels);
-    p->floor = seed_mesh_floor(S, 2);
-    p->obj = seed_object_at(p->floor, NULL);
-    seed_camera_top(S, 2);
-    if (p->fx) seed_set_transforms(S, p->fx, "world", "view", "projection", NULL);
-    return p->fx != NULL;
-}
-
-static void close_scene(point_scene *p) {
-    CHECK(p->fx != NULL);
-    if (p->fx) hfx_effect_destroy(p->fx);
-    seed_texture_free(S, &p->tex);
-    seed_mesh_free(S, p->floor);
-    CHECK_SCENE(S);
-}
-
-static void set_light(point_scene *p, const point_ref *r) {
+static void set_light(seed_floor *p, const point_ref *r) {
     seed_set_v3(S, p->fx, "posicionLuz", r->light);
     seed_set_texture(S, p->fx, "texturaModelo", r->tex);
     if (r->attenuated) {
@@ -96,33 +63,32 @@ static void set_light(point_scene *p, const point_ref *r) {
     }
 }
 
-static void draw_and_probe(point_scene *p, const point_ref *r, const char *technique, const char *label) {
+static void draw_and_probe(seed_floor *p, const point_ref *r, const char *technique, const char *label) {
     set_light(p, r);
-    seed_clear(S, rgba_make(0, 0, 0, 0));
-    CHECK_INT(seed_draw(S, p->fx, technique, p->floor, SEED_BLEND_NONE), 1);
-    for (int y = 6; y < 128; y += 20)
-        for (int x = 4; x < 128; x += 21) CHECK_PROBE(seed_probe(S, p->file, label, &p->obj, x, y, point_shade, r));
+    seed_floor_draw(S, p, p->fx, technique, SEED_BLEND_NONE, 1);
+    seed_grid grid = {.x0 = 4, .step_x = 21, .y0 = 6, .step_y = 20};
+    seed_floor_probe_grid(S, p, label, grid, point_shade, r);
 }
 
 /* atenuado's initializer is false: diffuse + ambient only. Under the light (0.3, 0, -0.2) the
  * floor faces it: rd = 1, so .05 + (.24, .34, .39). */
 static void unattenuated_by_default(void) {
-    point_scene p = {0};
-    if (open_scene(&p, "point.fx")) {
+    seed_floor p = {0};
+    if (seed_floor_open(S, &p, "point.fx", &FLOOR)) {
         point_ref r = defaults(&p.tex);
         draw_and_probe(&p, &r, "Material", "atenuado false");
         int x, y;
         seed_pixel_of(S, v3_make(0.3, 0, -0.2), &x, &y);
         CHECK_PROBE(seed_expect(S, p.file, "under the light, by hand", x, y, rgba_make(0.29, 0.39, 0.44, 1)));
     }
-    close_scene(&p);
+    seed_floor_close(S, &p);
 }
 
 /* c1 1, c2 .2, c3 .3, rango 2 with the light 1 above the floor: the light reaches a disc of
  * radius sqrt(3) around (0.3, -0.2); outside it only the ambient is left. */
 static void attenuation_and_range_cut_off(void) {
-    point_scene p = {0};
-    if (open_scene(&p, "point.fx")) {
+    seed_floor p = {0};
+    if (seed_floor_open(S, &p, "point.fx", &FLOOR)) {
         point_ref r = defaults(&p.tex);
         r.attenuated = 1;
         r.c1 = 1, r.c2 = 0.2, r.c3 = 0.3, r.range = 2;
@@ -149,12 +115,12 @@ static void attenuation_and_range_cut_off(void) {
         r.attenuated = 0;
         draw_and_probe(&p, &r, "Material", "attenuation switched off");
     }
-    close_scene(&p);
+    seed_floor_close(S, &p);
 }
 
 static void textured_technique(void) {
-    point_scene p = {0};
-    if (open_scene(&p, "point.fx")) {
+    seed_floor p = {0};
+    if (seed_floor_open(S, &p, "point.fx", &FLOOR)) {
         point_ref r = defaults(&p.tex);
         r.textured = 1;
         r.light = v3_make(-0.6, 0.8, 0.9);
@@ -165,12 +131,12 @@ static void textured_technique(void) {
         r.c1 = 0.5, r.c2 = 0, r.c3 = 0.5, r.range = 2.5;
         draw_and_probe(&p, &r, "Texturizado", "Texturizado, attenuated");
     }
-    close_scene(&p);
+    seed_floor_close(S, &p);
 }
 
 static void specular_off_and_on(void) {
-    point_scene p = {0};
-    if (open_scene(&p, "point_specular.fx")) {
+    seed_floor p = {0};
+    if (seed_floor_open(S, &p, "point_specular.fx", &FLOOR)) {
         point_ref r = defaults(&p.tex);
         seed_set_v3(S, p.fx, "posicionCamara", r.cam);
         draw_and_probe(&p, &r, "Material", "modIluEsp false");
@@ -192,7 +158,7 @@ static void specular_off_and_on(void) {
         r.textured = 1;
         draw_and_probe(&p, &r, "Texturizado", "modIluEsp, attenuated, Texturizado");
     }
-    close_scene(&p);
+    seed_floor_close(S, &p);
 }
 
 /* Every test, once with the .fx loaded directly and once through .hfxo. */
@@ -204,17 +170,6 @@ static void run_all(void) {
 }
 
 int main(void) {
-    test_require_seeds();
-    S = seed_scene_create(128, 128);
-    if (!S) {
-        fprintf(stderr, "no OSMesa GL 3.3 context\n");
-        return 1;
-    }
-    run_all();
-    printf("== the same, loading the effects from .hfxo bytes (hfxc, then hfx_effect_load_memory)\n");
-    seed_use_hfxo(S, 1);
-    run_all();
-    seed_report(S);
-    seed_scene_destroy(S);
+    if (seed_run_twice(&S, run_all)) return 1;
     return test_summary();
 }

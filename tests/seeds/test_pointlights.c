@@ -5,9 +5,9 @@
  *   color += A * Ai + att * Lc * Di * tex * N.L + Si * Sc * (R.V)^n
  * (the ambient and the specular terms are added once per light and are not attenuated: the
  * tutorial's equations, so a highlight shows even beyond a light's radius). */
-#include "scene.h"
-
-#include "files.h"
+#include "floor.h"
+#include "lighting.h"
+#include "run_twice.h"
 
 #define FILE_ "pointlights.fx"
 #define MAX_LIGHTS 50
@@ -23,15 +23,13 @@ typedef struct point_light {
 typedef struct lights_ref {
     int active;
     point_light lights[MAX_LIGHTS];
-    v3 cam;
-    rgba specular_colour, ambient_colour;
-    double specular_power, specular_intensity, ambient_intensity, diffuse_intensity;
-    const seed_texture *tex;
+    seed_tutorial_material m;
 } lights_ref;
 
 static rgba pointlights_shade(const seed_surface *s, const void *user) {
     const lights_ref *p = user;
-    rgba tex = seed_texture_sample(p->tex, s->u, s->v, SEED_CLAMP);
+    const seed_tutorial_material *m = &p->m;
+    rgba tex = seed_texture_sample(m->tex, s->u, s->v, SEED_CLAMP);
     rgba sum = rgba_make(0, 0, 0, 0);
     for (int i = 0; i < p->active; i++) {
         const point_light *l = &p->lights[i];
@@ -40,13 +38,12 @@ static rgba pointlights_shade(const seed_surface *s, const void *user) {
         double k = 1 - saturate(v3_length(to_light) / l->radius);
         double att = k * k;
         v3 ld = v3_normalize(to_light);
-        v3 view = v3_normalize(v3_sub(p->cam, s->pos));
+        v3 view = v3_normalize(v3_sub(m->cam, s->pos));
         double diff = saturate(v3_dot(n, ld));
-        v3 r = v3_normalize(v3_sub(v3_scale(n, 2 * diff), ld));
-        double spec = hlsl_pow(saturate(v3_dot(r, view)), p->specular_power);
-        sum = rgba_add(sum, rgba_scale(p->ambient_colour, p->ambient_intensity));
-        sum = rgba_add(sum, rgba_scale(rgba_mul(l->colour, tex), att * p->diffuse_intensity * diff));
-        sum = rgba_add(sum, rgba_scale(p->specular_colour, p->specular_intensity * spec));
+        double spec = seed_tutorial_specular(n, ld, view, m->specular_power);
+        sum = rgba_add(sum, rgba_scale(m->ambient_colour, m->ambient_intensity));
+        sum = rgba_add(sum, rgba_scale(rgba_mul(l->colour, tex), att * m->diffuse_intensity * diff));
+        sum = rgba_add(sum, rgba_scale(m->specular_colour, m->specular_intensity * spec));
     }
     return sum;
 }
@@ -57,25 +54,14 @@ static const unsigned char TEXELS[2 * 2 * 4] = {220, 200, 180, 255, 220, 200, 18
 /* The tutorial's material (PointLightShader's constructor): white specular of power 50 and
  * intensity 1, no ambient, diffuse intensity 1. */
 static void tutorial_material(lights_ref *r, const seed_texture *tex) {
-    r->cam = v3_make(-3, 2, 0);
-    r->specular_colour = rgba_make(1, 1, 1, 1);
-    r->ambient_colour = rgba_make(1, 1, 1, 1);
-    r->specular_power = 50;
-    r->specular_intensity = 1;
-    r->ambient_intensity = 0;
-    r->diffuse_intensity = 1;
-    r->tex = tex;
-}
-
-static void set_material(hfx_effect *fx, const lights_ref *r) {
-    seed_set_v3(S, fx, "camPosition", r->cam);
-    seed_set_rgba(S, fx, "SpecularColor", r->specular_colour);
-    seed_set_float(S, fx, "SpecularPower", r->specular_power);
-    seed_set_float(S, fx, "SpecularIntensity", r->specular_intensity);
-    seed_set_rgba(S, fx, "AmbientColor", r->ambient_colour);
-    seed_set_float(S, fx, "AmbientIntensity", r->ambient_intensity);
-    seed_set_float(S, fx, "DiffuseIntensity", r->diffuse_intensity);
-    seed_set_texture(S, fx, "DiffuseTexture", r->tex);
+    r->m.cam = v3_make(-3, 2, 0);
+    r->m.specular_colour = rgba_make(1, 1, 1, 1);
+    r->m.ambient_colour = rgba_make(1, 1, 1, 1);
+    r->m.specular_power = 50;
+    r->m.specular_intensity = 1;
+    r->m.ambient_intensity = 0;
+    r->m.diffuse_intensity = 1;
+    r->m.tex = tex;
 }
 
 /* As the tutorial does: LightPosition.ToArray() etc., arrays only as long as the active
@@ -113,36 +99,15 @@ static void fill_by_element(hfx_effect *fx, const lights_ref *r) {
     }
 }
 
-typedef struct frame_scene {
-    hfx_effect *fx;
-    seed_mesh *floor;
-    seed_object obj;
-    seed_texture tex;
-} frame_scene;
+/* The floor from -2 to 2 fills the view: 32 pixels per unit. */
+static const seed_floor_setup FLOOR = {.half = 2, .view_half = 2, .tex_width = 2, .tex_height = 2, .texels = TEXELS,
+                                       .world_name = "World", .view_name = "View", .projection_name = "Projection"};
 
-static int scene_open(frame_scene *f) {
-    f->fx = seed_load(S, FILE_);
-    f->tex = seed_texture_make(S, 2, 2, TEXELS);
-    f->floor = seed_mesh_floor(S, 2);
-    f->obj = seed_object_at(f->floor, NULL);
-    seed_camera_top(S, 2);
-    if (f->fx) seed_set_transforms(S, f->fx, "World", "View", "Projection", NULL);
-    return f->fx != NULL;
-}
-
-static void scene_close(frame_scene *f) {
-    if (f->fx) hfx_effect_destroy(f->fx);
-    seed_texture_free(S, &f->tex);
-    seed_mesh_free(S, f->floor);
-    CHECK_SCENE(S);
-}
-
-static void draw_frame(frame_scene *f, const lights_ref *r, const char *label) {
-    set_material(f->fx, r);
-    seed_clear(S, rgba_make(0, 0, 0, 0));
-    CHECK_INT(seed_draw(S, f->fx, "PointLights", f->floor, SEED_BLEND_NONE), 1);
-    for (int y = 6; y < 128; y += 23)
-        for (int x = 9; x < 128; x += 22) CHECK_PROBE(seed_probe(S, FILE_, label, &f->obj, x, y, pointlights_shade, r));
+static void draw_frame(seed_floor *f, const lights_ref *r, const char *label) {
+    seed_set_tutorial_material(S, f->fx, &r->m);
+    seed_floor_draw(S, f, f->fx, "PointLights", SEED_BLEND_NONE, 1);
+    seed_grid grid = {.x0 = 9, .step_x = 22, .y0 = 6, .step_y = 23};
+    seed_floor_probe_grid(S, f, label, grid, pointlights_shade, r);
 }
 
 /* One light at (1, 0.5, 0), radius 0.8, the camera at (-3, 2, 0). The highlight is where the
@@ -150,8 +115,8 @@ static void draw_frame(frame_scene *f, const lights_ref *r, const char *label) {
  * 0.94 from the light, beyond its radius: no diffuse there, the full specular. Under the
  * light (1, 0, 0) diffuse is (1 - 0.5 / 0.8)^2 = 0.140625 of Lc * tex. */
 static void one_light(void) {
-    frame_scene f = {0};
-    if (scene_open(&f)) {
+    seed_floor f = {0};
+    if (seed_floor_open(S, &f, FILE_, &FLOOR)) {
         static lights_ref r;
         tutorial_material(&r, &f.tex);
         r.active = 1;
@@ -167,19 +132,18 @@ static void one_light(void) {
         seed_pixel_of(S, v3_make(1.6, 0, 0.3), &x, &y);
         CHECK_PROBE(seed_expect(S, FILE_, "beyond the radius, no highlight", x, y, rgba_make(0, 0, 0, 0)));
     }
-    CHECK(f.fx != NULL);
-    scene_close(&f);
+    seed_floor_close(S, &f);
 }
 
 /* The attenuation profile alone (specular off): a light 0.5 above the floor with radius 1.5.
  * At distance d the floor gets Lc * tex * (0.5 / d) * (1 - d / 1.5)^2, which reaches zero at
  * the radius and stays there. */
 static void attenuation_reaches_zero_at_the_radius(void) {
-    frame_scene f = {0};
-    if (scene_open(&f)) {
+    seed_floor f = {0};
+    if (seed_floor_open(S, &f, FILE_, &FLOOR)) {
         static lights_ref r;
         tutorial_material(&r, &f.tex);
-        r.specular_intensity = 0;
+        r.m.specular_intensity = 0;
         r.active = 1;
         r.lights[0] = (point_light){v3_make(0, 0.5, 0), rgba_make(1, 1, 1, 1), 1.5};
         fill_by_element(f.fx, &r);
@@ -200,8 +164,7 @@ static void attenuation_reaches_zero_at_the_radius(void) {
             if (d >= 1.5) CHECK_PROBE(seed_expect(S, FILE_, "beyond the radius: black", x, y, rgba_make(0, 0, 0, 0)));
         }
     }
-    CHECK(f.fx != NULL);
-    scene_close(&f);
+    seed_floor_close(S, &f);
 }
 
 static void ring_of_lights(lights_ref *r, int n, double ring, double height, double radius, double strength) {
@@ -227,47 +190,45 @@ static void grid_of_lights(lights_ref *r, int n) {
 
 /* Ten lights on a ring, the arrays handed over whole (10 of 50 elements), a faint specular. */
 static void ten_lights(void) {
-    frame_scene f = {0};
-    if (scene_open(&f)) {
+    seed_floor f = {0};
+    if (seed_floor_open(S, &f, FILE_, &FLOOR)) {
         static lights_ref r;
         tutorial_material(&r, &f.tex);
-        r.cam = v3_make(0, 4, 0);
-        r.specular_intensity = 0.1;
+        r.m.cam = v3_make(0, 4, 0);
+        r.m.specular_intensity = 0.1;
         ring_of_lights(&r, 10, 1.1, 0.6, 1.6, 0.25);
         fill_whole_arrays(f.fx, &r);
         draw_frame(&f, &r, "10 lights");
     }
-    CHECK(f.fx != NULL);
-    scene_close(&f);
+    seed_floor_close(S, &f);
 }
 
 /* Fifty lights on a grid, set element by element, with a little ambient (added 50 times). */
 static void fifty_lights(void) {
-    frame_scene f = {0};
-    if (scene_open(&f)) {
+    seed_floor f = {0};
+    if (seed_floor_open(S, &f, FILE_, &FLOOR)) {
         static lights_ref r;
         tutorial_material(&r, &f.tex);
-        r.cam = v3_make(0.5, 3, -0.5);
-        r.specular_intensity = 0.004;
-        r.ambient_colour = rgba_make(0.1, 0.2, 0.3, 1);
-        r.ambient_intensity = 0.01;
+        r.m.cam = v3_make(0.5, 3, -0.5);
+        r.m.specular_intensity = 0.004;
+        r.m.ambient_colour = rgba_make(0.1, 0.2, 0.3, 1);
+        r.m.ambient_intensity = 0.01;
         grid_of_lights(&r, MAX_LIGHTS);
         fill_by_element(f.fx, &r);
         draw_frame(&f, &r, "50 lights");
     }
-    CHECK(f.fx != NULL);
-    scene_close(&f);
+    seed_floor_close(S, &f);
 }
 
 /* One effect, frames with 1, 10, 50, then 1 light again: the arrays keep the stale lights
  * past activeLights, which the loop must not read. */
 static void frames_with_changing_light_counts(void) {
-    frame_scene f = {0};
-    if (scene_open(&f)) {
+    seed_floor f = {0};
+    if (seed_floor_open(S, &f, FILE_, &FLOOR)) {
         static lights_ref r;
         tutorial_material(&r, &f.tex);
-        r.cam = v3_make(0, 4, 0);
-        r.specular_intensity = 0.05;
+        r.m.cam = v3_make(0, 4, 0);
+        r.m.specular_intensity = 0.05;
         r.active = 1;
         r.lights[0] = (point_light){v3_make(-0.5, 0.7, 0.5), rgba_make(0.6, 0.8, 0.4, 1), 2.2};
         fill_by_element(f.fx, &r);
@@ -276,17 +237,16 @@ static void frames_with_changing_light_counts(void) {
         fill_whole_arrays(f.fx, &r);
         draw_frame(&f, &r, "frame 2: 10 lights");
         grid_of_lights(&r, MAX_LIGHTS);
-        r.specular_intensity = 0.004;
+        r.m.specular_intensity = 0.004;
         fill_whole_arrays(f.fx, &r);
         draw_frame(&f, &r, "frame 3: 50 lights");
         r.active = 1;
         r.lights[0] = (point_light){v3_make(0.8, 0.6, -0.8), rgba_make(0.3, 0.9, 0.9, 1), 1.9};
-        r.specular_intensity = 0.05;
+        r.m.specular_intensity = 0.05;
         fill_whole_arrays(f.fx, &r);
         draw_frame(&f, &r, "frame 4: 1 light again");
     }
-    CHECK(f.fx != NULL);
-    scene_close(&f);
+    seed_floor_close(S, &f);
 }
 
 /* Every test, once with the .fx loaded directly and once through .hfxo. */
@@ -299,17 +259,6 @@ static void run_all(void) {
 }
 
 int main(void) {
-    test_require_seeds();
-    S = seed_scene_create(128, 128);
-    if (!S) {
-        fprintf(stderr, "no OSMesa GL 3.3 context\n");
-        return 1;
-    }
-    run_all();
-    printf("== the same, loading the effects from .hfxo bytes (hfxc, then hfx_effect_load_memory)\n");
-    seed_use_hfxo(S, 1);
-    run_all();
-    seed_report(S);
-    seed_scene_destroy(S);
+    if (seed_run_twice(&S, run_all)) return 1;
     return test_summary();
 }

@@ -9,9 +9,9 @@
  * The book's test values (§7.3.3): inner 0.01, outer 0.1, falloff 0.8, light at (0, 10, 0)
  * aimed at the origin, c1 1, c2 0, c3 0.001, rango 20, atenuado: a lit disc of radius
  * 10 tan 0.1 = 1.0033 on the floor, ambient elsewhere. */
-#include "scene.h"
-
-#include "files.h"
+#include "floor.h"
+#include "lighting.h"
+#include "run_twice.h"
 
 static seed_scene *S;
 
@@ -24,30 +24,18 @@ typedef struct spot_ref {
     const seed_texture *tex;
 } spot_ref;
 
-static double angular_factor(double cos_a, double cos_t, double cos_f, double falloff) {
-    if (cos_a <= cos_f) return 0;
-    if (cos_a >= cos_t) return 1;
-    return hlsl_pow((cos_a - cos_f) / (cos_t - cos_f), falloff);
-}
-
 static rgba spot_shade(const seed_surface *s, const void *user) {
     const spot_ref *r = user;
     v3 n = s->normal;
     v3 spot = v3_normalize(v3_sub(r->light, r->target)), l = v3_normalize(v3_sub(r->light, s->pos));
     double rd = maxd(v3_dot(l, n), 0);
     rgba c = rgba_scale(r->diffuse, rd);
-    if (r->spec_on) {
-        v3 refl = v3_normalize(v3_sub(v3_scale(n, 2 * maxd(v3_dot(l, n), 0)), l));
-        v3 view = v3_normalize(v3_sub(r->cam, s->pos));
-        double is = hlsl_pow(maxd(v3_dot(refl, view), 0), r->n);
-        c = rgba_add(c, rgba_scale(r->specular, r->ks * is * rd));
-    }
+    if (r->spec_on)
+        c = rgba_add(c, rgba_scale(r->specular, r->ks * seed_book_specular(n, l, s->pos, r->cam, r->n) * rd));
     double cos_a = maxd(v3_dot(spot, l), 0);
-    c = rgba_scale(c, angular_factor(cos_a, cos(r->inner), cos(r->outer), r->falloff));
-    if (r->attenuated) {
-        double d = v3_distance(s->pos, r->light);
-        c = rgba_scale(c, d <= r->range ? mind(1 / (r->c1 + r->c2 * d + r->c3 * d * d), 1) : 0);
-    }
+    c = rgba_scale(c, seed_book_spot_cone(cos_a, r->inner, r->outer, r->falloff));
+    if (r->attenuated)
+        c = rgba_scale(c, seed_book_attenuation(v3_distance(s->pos, r->light), r->range, r->c1, r->c2, r->c3));
     c = rgba_add(c, r->ambient);
     if (r->textured) c = rgba_mul(c, seed_texture_sample(r->tex, s->u, s->v, SEED_WRAP));
     c.a = 1;
@@ -72,37 +60,10 @@ static spot_ref book_values(const seed_texture *tex) {
     return r;
 }
 
-typedef struct spot_scene {
-    const char *file;
-    hfx_effect *fx;
-    seed_mesh *floor;
-    seed_object obj;
-    unsigned char texels[64];
-    seed_texture tex;
-} spot_scene;
-
 /* The floor from -1.5 to 1.5 fills the view: 128 / 3 pixels per unit. */
-static int open_scene(spot_scene *p, const char *file) {
-    p->file = file;
-    p->fx = seed_load(S, file);
-    seed_smooth_texels(p->texels);
-    p->tex = seed_texture_make(S, 4, 4, p->texels);
-    p->floor = seed_mesh_floor(S, 1.5);
-    p->obj = seed_object_at(p->floor, NULL);
-    seed_camera_top(S, 1.5);
-    if (p->fx) seed_set_transforms(S, p->fx, "world", "view", "projection", NULL);
-    return p->fx != NULL;
-}
+static const seed_floor_setup FLOOR = {.half = 1.5, .view_half = 1.5, SEED_FLOOR_LOWER_NAMES};
 
-static void close_scene(spot_scene *p) {
-    CHECK(p->fx != NULL);
-    if (p->fx) hfx_effect_destroy(p->fx);
-    seed_texture_free(S, &p->tex);
-    seed_mesh_free(S, p->floor);
-    CHECK_SCENE(S);
-}
-
-static void set_spot(spot_scene *p, const spot_ref *r) {
+static void set_spot(seed_floor *p, const spot_ref *r) {
     seed_set_v3(S, p->fx, "posicionLuz", r->light);
     seed_set_v3(S, p->fx, "blancoLuz", r->target);
     seed_set_float(S, p->fx, "anguloInterno", r->inner);
@@ -116,17 +77,16 @@ static void set_spot(spot_scene *p, const spot_ref *r) {
     seed_set_texture(S, p->fx, "texturaModelo", r->tex);
 }
 
-static void draw_and_probe(spot_scene *p, const spot_ref *r, const char *technique, const char *label) {
+static void draw_and_probe(seed_floor *p, const spot_ref *r, const char *technique, const char *label) {
     set_spot(p, r);
-    seed_clear(S, rgba_make(0, 0, 0, 0));
-    CHECK_INT(seed_draw(S, p->fx, technique, p->floor, SEED_BLEND_NONE), 1);
-    for (int y = 8; y < 128; y += 16)
-        for (int x = 6; x < 128; x += 17) CHECK_PROBE(seed_probe(S, p->file, label, &p->obj, x, y, spot_shade, r));
+    seed_floor_draw(S, p, p->fx, technique, SEED_BLEND_NONE, 1);
+    seed_grid grid = {.x0 = 6, .step_x = 17, .y0 = 8, .step_y = 16};
+    seed_floor_probe_grid(S, p, label, grid, spot_shade, r);
 }
 
 /* Along the centre row and column and a diagonal: inside the inner cone, in the falloff ring,
  * just inside and just outside the disc's rim (1.0033), and far outside. */
-static void probe_the_disc(spot_scene *p, const spot_ref *r, const char *label) {
+static void probe_the_disc(seed_floor *p, const spot_ref *r, const char *label) {
     static const double radii[] = {0, 0.05, 0.3, 0.6, 0.9, 0.97, 1.04, 1.3};
     static const v3 dirs[] = {{1, 0, 0}, {0, 0, -1}, {-0.6, 0, 0.8}};
     for (size_t k = 0; k < sizeof dirs / sizeof dirs[0]; k++)
@@ -142,8 +102,8 @@ static void probe_the_disc(spot_scene *p, const spot_ref *r, const char *label) 
 /* The book's experiment with technique Material. At the centre the light is 10 away, straight
  * above: .07 + (.24, .34, .39) / 1.1; beyond the rim .07. */
 static void book_test_values_light_a_disc(void) {
-    spot_scene p = {0};
-    if (open_scene(&p, "spot.fx")) {
+    seed_floor p = {0};
+    if (seed_floor_open(S, &p, "spot.fx", &FLOOR)) {
         spot_ref r = book_values(&p.tex);
         draw_and_probe(&p, &r, "Material", "book values");
         probe_the_disc(&p, &r, "book values");
@@ -171,13 +131,13 @@ static void book_test_values_light_a_disc(void) {
         CHECK(last >= 0 && fabs(last / unit - 1.5 - 1.0033) < 0.08);
         seed_save_png(S, "spot_book_values");
     }
-    close_scene(&p);
+    seed_floor_close(S, &p);
 }
 
 /* A wider cone aimed off centre, no distance attenuation, texture on. */
 static void wide_cone_textured(void) {
-    spot_scene p = {0};
-    if (open_scene(&p, "spot.fx")) {
+    seed_floor p = {0};
+    if (seed_floor_open(S, &p, "spot.fx", &FLOOR)) {
         spot_ref r = book_values(&p.tex);
         r.light = v3_make(-0.5, 2, 0.3);
         r.target = v3_make(0.2, 0, -0.1);
@@ -189,12 +149,12 @@ static void wide_cone_textured(void) {
         r.c1 = 0.3, r.c2 = 0.1, r.c3 = 0.2, r.range = 2.4;
         draw_and_probe(&p, &r, "Texturizado", "wide cone, attenuated, Texturizado");
     }
-    close_scene(&p);
+    seed_floor_close(S, &p);
 }
 
 static void specular_off_and_on(void) {
-    spot_scene p = {0};
-    if (open_scene(&p, "spot_specular.fx")) {
+    seed_floor p = {0};
+    if (seed_floor_open(S, &p, "spot_specular.fx", &FLOOR)) {
         spot_ref r = book_values(&p.tex);
         r.light = v3_make(0.2, 2, -0.2);
         r.target = v3_make(0, 0, 0);
@@ -216,7 +176,7 @@ static void specular_off_and_on(void) {
         draw_and_probe(&p, &b, "Material", "book values, modIluEsp");
         probe_the_disc(&p, &b, "book values, modIluEsp");
     }
-    close_scene(&p);
+    seed_floor_close(S, &p);
 }
 
 /* Every test, once with the .fx loaded directly and once through .hfxo. */
@@ -227,17 +187,6 @@ static void run_all(void) {
 }
 
 int main(void) {
-    test_require_seeds();
-    S = seed_scene_create(128, 128);
-    if (!S) {
-        fprintf(stderr, "no OSMesa GL 3.3 context\n");
-        return 1;
-    }
-    run_all();
-    printf("== the same, loading the effects from .hfxo bytes (hfxc, then hfx_effect_load_memory)\n");
-    seed_use_hfxo(S, 1);
-    run_all();
-    seed_report(S);
-    seed_scene_destroy(S);
+    if (seed_run_twice(&S, run_all)) return 1;
     return test_summary();
 }

@@ -2,9 +2,8 @@
  * filtering. The top camera sees x, z in [-2, 2] on 128 pixels (32 per unit); the quad carries
  * texcoords -0.5 .. 1.5, so u = x / 2 + 0.5 and the 4x4 texture covers pixels 32 .. 96, 16
  * pixels per texel, with clamped edges all around. */
-#include "scene.h"
-
-#include "files.h"
+#include "run_twice.h"
+#include "stripes.h"
 
 #define FILE_ "tutorial0.fx"
 
@@ -149,11 +148,6 @@ static void clamp_holds_the_border_texels(void) {
  * GL returns the texel itself. Red repeats 0, 128, 255 along u and green along v, so the mean
  * of texels x - 1 and x tells Direct3D 9's centres from GL's (the texel) and from a shift the
  * wrong way (texels x and x + 1), in both directions. */
-static double period3(int i) {
-    static const double p[3] = {0, 128, 255};
-    return p[((i % 3) + 3) % 3];
-}
-
 static void pixel_centres_follow_direct3d9(void) {
     hfx_effect *fx = seed_load(S, FILE_);
     CHECK(fx != NULL);
@@ -162,14 +156,7 @@ static void pixel_centres_follow_direct3d9(void) {
         return;
     }
     static unsigned char texels[128 * 128 * 4];
-    for (int y = 0; y < 128; y++)
-        for (int x = 0; x < 128; x++) {
-            unsigned char *p = texels + (y * 128 + x) * 4;
-            p[0] = (unsigned char)period3(x);
-            p[1] = (unsigned char)period3(y);
-            p[2] = 0;
-            p[3] = 255;
-        }
+    seed_period3_texels(texels, 128);
     seed_texture tex = seed_texture_make(S, 128, 128, texels);
     seed_mesh *floor = seed_mesh_floor(S, 2);
     seed_camera_top(S, 2);
@@ -181,7 +168,8 @@ static void pixel_centres_follow_direct3d9(void) {
     for (int j = 0; j < 3; j++)
         for (int i = 0; i < 6; i++) {
             int x = xs[i], y = ys[j];
-            rgba mean = rgba_make((period3(x - 1) + period3(x)) / 2 / 255, (period3(y - 1) + period3(y)) / 2 / 255, 0, 1);
+            rgba mean = rgba_make((seed_period3(x - 1) + seed_period3(x)) / 2 / 255,
+                                  (seed_period3(y - 1) + seed_period3(y)) / 2 / 255, 0, 1);
             CHECK_PROBE(seed_expect(S, "tutorial0.fx (centres)", "d3d9 centre: mean of 2 texels", x, y, mean));
         }
     seed_texture_free(S, &tex);
@@ -199,17 +187,6 @@ static void run_all(void) {
 }
 
 int main(void) {
-    test_require_seeds();
-    S = seed_scene_create(128, 128);
-    if (!S) {
-        fprintf(stderr, "no OSMesa GL 3.3 context\n");
-        return 1;
-    }
-    run_all();
-    printf("== the same, loading the effects from .hfxo bytes (hfxc, then hfx_effect_load_memory)\n");
-    seed_use_hfxo(S, 1);
-    run_all();
-    seed_report(S);
-    seed_scene_destroy(S);
+    if (seed_run_twice(&S, run_all)) return 1;
     return test_summary();
 }

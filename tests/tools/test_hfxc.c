@@ -2,6 +2,7 @@
  * every seed (the outputs are read back with the .hfxo reader and must be byte-identical),
  * exit codes, the located error of multilights.fx, one-line usage errors, many files in one
  * call, --emit-glsl files, and --annotations / --reflect parsed back with cJSON. */
+#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -26,7 +27,8 @@ typedef struct run_result {
 
 /* Runs `hfxc <args>` through the shell, capturing stdout and stderr in files. */
 static run_result run(const char *args) {
-    char out[1024], err[1024], cmd[16384];
+    /* cmd holds hfxc, args (up to 16384), out, err and the quotes around them */
+    char out[1024], err[1024], cmd[sizeof hfxc + 16384 + sizeof out + sizeof err + 16];
     snprintf(out, sizeof out, "%s/stdout.txt", tmp);
     snprintf(err, sizeof err, "%s/stderr.txt", tmp);
     snprintf(cmd, sizeof cmd, "'%s' %s >'%s' 2>'%s'", hfxc, args, out, err);
@@ -42,11 +44,55 @@ static void run_free(run_result *r) {
     free(r->err);
 }
 
+/* Runs hfxc with printf-formatted arguments and checks its exit status; run_free the result. */
+static run_result run_expecting(int status, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static run_result run_expecting(int status, const char *fmt, ...) {
+    char args[16384];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(args, sizeof args, fmt, ap);
+    va_end(ap);
+    run_result r = run(args);
+    CHECK_INT(r.status, status);
+    return r;
+}
+
+/* The same when nothing but the exit status matters. */
+#define EXPECT_STATUS(...) do { run_result r_ = run_expecting(__VA_ARGS__); run_free(&r_); } while (0)
+
 static int count_lines(const char *s) {
     int n = 0;
     for (; *s; s++) n += *s == '\n';
     return n;
 }
+
+/* One hfxc run and what it must give: the exit status and a check of stdout or stderr. */
+typedef enum { SAYS_EXACTLY, SAYS_AMONG_OTHERS, SAYS_ONE_LINE } says;
+typedef struct run_case {
+    const char *args; /* a printf format: %s is the seed's path (each %s) */
+    int status;
+    int on_stdout;    /* else stderr */
+    says how;
+    const char *text; /* the whole text, a part of it, or unused (SAYS_ONE_LINE) */
+} run_case;
+
+static void expect_run(const run_case *c, const char *seed) {
+    run_result r = run_expecting(c->status, c->args, seed, seed);
+    const char *got = c->on_stdout ? r.out : r.err;
+    if (c->how == SAYS_EXACTLY) CHECK_STR(got, c->text);
+    else if (c->how == SAYS_AMONG_OTHERS) CHECK_CONTAINS(got, c->text);
+    else CHECK_INT(count_lines(got), 1);
+    run_free(&r);
+}
+
+/* Runs every case on the seed file `seed_name`. */
+static void expect_runs(const run_case *cases, size_t n, const char *seed_name) {
+    char *seed = test_seed_path(seed_name);
+    for (size_t i = 0; i < n; i++) expect_run(&cases[i], seed);
+    free(seed);
+}
+
+#define EXPECT_RUNS(cases, seed_name) expect_runs(cases, sizeof cases / sizeof cases[0], seed_name)
 
 static const char *const good[] = {"tutorial0.fx", "phong.fx", "pointlights.fx", "ambient.fx",
                                    "ambient_textured.fx", "directional.fx", "point.fx", "spot.fx",
@@ -66,19 +112,25 @@ static hfx_fx_effect *read_hfxo(const char *path, size_t *size_out, char **bytes
     return fx;
 }
 
+/* Compiles `seed` with `options` followed by $tmp/`name` and the seed, expecting success, and
+ * reads the .hfxo back (NULL, a failed check, when it cannot). */
+static hfx_fx_effect *compile_to(const char *options, const char *name, const char *seed) {
+    char out[1024];
+    snprintf(out, sizeof out, "%s/%s", tmp, name);
+    EXPECT_STATUS(0, "%s '%s' '%s'", options, out, seed);
+    hfx_fx_effect *fx = read_hfxo(out, NULL, NULL);
+    CHECK(fx != NULL);
+    return fx;
+}
+
 static void both_spellings_on_every_seed(void) {
     for (size_t i = 0; i < sizeof good / sizeof *good; i++) {
         char *seed = test_seed_path(good[i]);
-        char args[16384], a[1024], b[1024];
+        char a[1024], b[1024];
         snprintf(a, sizeof a, "%s/fxc_%s.hfxo", tmp, good[i]);
         snprintf(b, sizeof b, "%s/gnu_%s.hfxo", tmp, good[i]);
-        snprintf(args, sizeof args, "/T fx_2_0 /Fo '%s' /nologo '%s'", a, seed);
-        run_result r = run(args);
-        CHECK_INT(r.status, 0);
-        run_free(&r);
-        snprintf(args, sizeof args, "-o '%s' '%s'", b, seed);
-        r = run(args);
-        CHECK_INT(r.status, 0);
+        EXPECT_STATUS(0, "/T fx_2_0 /Fo '%s' /nologo '%s'", a, seed);
+        run_result r = run_expecting(0, "-o '%s' '%s'", b, seed);
         CHECK_STR(r.out, "");
         run_free(&r);
         size_t sa = 0, sb = 0;
@@ -101,62 +153,34 @@ static void both_spellings_on_every_seed(void) {
 
 static void multilights_fails_with_its_line(void) {
     char *seed = test_seed_path("multilights.fx");
-    char args[16384], expected[2048], out[1024];
+    char expected[2048], out[1024];
     snprintf(out, sizeof out, "%s/multi.hfxo", tmp);
-    snprintf(args, sizeof args, "-o '%s' '%s'", out, seed);
-    run_result r = run(args);
-    CHECK_INT(r.status, 1);
+    run_result r = run_expecting(1, "-o '%s' '%s'", out, seed);
     snprintf(expected, sizeof expected, "%s(204,20): error X3013: 'Phong': no matching 4 parameter function\n", seed);
     CHECK_CONTAINS(r.err, expected);
     CHECK(access(out, F_OK) != 0); /* no output for a failed compile */
     run_free(&r);
     /* The fxc spelling fails the same way. */
-    snprintf(args, sizeof args, "/T fx_2_0 /Fo '%s' '%s'", out, seed);
-    r = run(args);
-    CHECK_INT(r.status, 1);
+    r = run_expecting(1, "/T fx_2_0 /Fo '%s' '%s'", out, seed);
     CHECK_CONTAINS(r.err, expected);
     run_free(&r);
     free(seed);
 }
 
+static const run_case BAD_USAGE[] = {
+    {"--frobnicate x.fx", 2, 0, SAYS_EXACTLY, "hfxc: error: unknown option '--frobnicate' (hfxc --help for usage)\n"},
+    {"/nonexistent/dir/missing.fx", 2, 0, SAYS_ONE_LINE, NULL},
+    {"missing_file.fx", 2, 0, SAYS_EXACTLY, "hfxc: error: cannot open 'missing_file.fx': No such file or directory\n"},
+    {"--target glsl999 '%s'", 2, 0, SAYS_EXACTLY,
+     "hfxc: error: unknown target 'glsl999' (glsl330, glsles300, glsl110, spirv) (hfxc --help for usage)\n"},
+    {"", 2, 0, SAYS_EXACTLY, "hfxc: error: no input file (hfxc --help for usage)\n"},
+    {"'%s' -o", 2, 0, SAYS_EXACTLY, "hfxc: error: option '-o' needs a value (hfxc --help for usage)\n"},
+    {"--help", 0, 1, SAYS_AMONG_OTHERS, "usage: hfxc"},
+    {"--version", 0, 1, SAYS_AMONG_OTHERS, "hfxc "},
+};
+
 static void bad_usage_is_one_line(void) {
-    char *seed = test_seed_path("ambient.fx");
-    char args[16384];
-    run_result r = run("--frobnicate x.fx");
-    CHECK_INT(r.status, 2);
-    CHECK_STR(r.err, "hfxc: error: unknown option '--frobnicate' (hfxc --help for usage)\n");
-    run_free(&r);
-    r = run("/nonexistent/dir/missing.fx");
-    CHECK_INT(r.status, 2);
-    CHECK_INT(count_lines(r.err), 1);
-    run_free(&r);
-    r = run("missing_file.fx");
-    CHECK_INT(r.status, 2);
-    CHECK_STR(r.err, "hfxc: error: cannot open 'missing_file.fx': No such file or directory\n");
-    run_free(&r);
-    snprintf(args, sizeof args, "--target glsl999 '%s'", seed);
-    r = run(args);
-    CHECK_INT(r.status, 2);
-    CHECK_STR(r.err, "hfxc: error: unknown target 'glsl999' (glsl330, glsles300, glsl110, spirv) (hfxc --help for usage)\n");
-    run_free(&r);
-    r = run("");
-    CHECK_INT(r.status, 2);
-    CHECK_STR(r.err, "hfxc: error: no input file (hfxc --help for usage)\n");
-    run_free(&r);
-    snprintf(args, sizeof args, "'%s' -o", seed);
-    r = run(args);
-    CHECK_INT(r.status, 2);
-    CHECK_STR(r.err, "hfxc: error: option '-o' needs a value (hfxc --help for usage)\n");
-    run_free(&r);
-    r = run("--help");
-    CHECK_INT(r.status, 0);
-    CHECK_CONTAINS(r.out, "usage: hfxc");
-    run_free(&r);
-    r = run("--version");
-    CHECK_INT(r.status, 0);
-    CHECK_CONTAINS(r.out, "hfxc ");
-    run_free(&r);
-    free(seed);
+    EXPECT_RUNS(BAD_USAGE, "ambient.fx");
 }
 
 static void many_files_in_one_call(void) {
@@ -172,8 +196,7 @@ static void many_files_in_one_call(void) {
     char *bad = test_seed_path("multilights.fx");
     snprintf(args + n, sizeof args - n, " '%s'", bad);
     free(bad);
-    run_result r = run(args);
-    CHECK_INT(r.status, 1);
+    run_result r = run_expecting(1, "%s", args);
     CHECK_STR(r.out, "13 compiled, 1 failed\n");
     CHECK_CONTAINS(r.err, "error X3013");
     run_free(&r);
@@ -191,12 +214,9 @@ static void many_files_in_one_call(void) {
 
 static void emit_glsl_writes_each_stage(void) {
     char *seed = test_seed_path("multilights_repaired.fx");
-    char args[16384], dir[1024];
+    char dir[1024];
     snprintf(dir, sizeof dir, "%s/glsl", tmp);
-    snprintf(args, sizeof args, "--emit-glsl '%s' '%s'", dir, seed);
-    run_result r = run(args);
-    CHECK_INT(r.status, 0);
-    run_free(&r);
+    EXPECT_STATUS(0, "--emit-glsl '%s' '%s'", dir, seed);
     static const char *const files[] = {"Texturizado.Ambiental", "Texturizado.MultiLuces", "Material.Ambiental",
                                         "Material.MultiLuces"};
     for (int i = 0; i < 4; i++)
@@ -208,10 +228,7 @@ static void emit_glsl_writes_each_stage(void) {
             if (text) CHECK(strncmp(text, "#version 330", 12) == 0);
             free(text);
         }
-    snprintf(args, sizeof args, "--target glsles300 --emit-glsl '%s/es' '%s'", tmp, seed);
-    r = run(args);
-    CHECK_INT(r.status, 0);
-    run_free(&r);
+    EXPECT_STATUS(0, "--target glsles300 --emit-glsl '%s/es' '%s'", tmp, seed);
     char path[2048];
     snprintf(path, sizeof path, "%s/es/multilights_repaired.Material.Ambiental.frag", tmp);
     char *text = test_read_file(path, NULL);
@@ -222,14 +239,7 @@ static void emit_glsl_writes_each_stage(void) {
 
 static void one_entry_point(void) {
     char *seed = test_seed_path("ambient.fx");
-    char args[16384], out[1024];
-    snprintf(out, sizeof out, "%s/entry.hfxo", tmp);
-    snprintf(args, sizeof args, "/T ps_3_0 /E mainPS /Fo '%s' '%s'", out, seed);
-    run_result r = run(args);
-    CHECK_INT(r.status, 0);
-    run_free(&r);
-    hfx_fx_effect *fx = read_hfxo(out, NULL, NULL);
-    CHECK(fx != NULL);
+    hfx_fx_effect *fx = compile_to("/T ps_3_0 /E mainPS /Fo", "entry.hfxo", seed);
     if (fx) {
         CHECK_INT(fx->top_param_count, 4);
         CHECK_INT(fx->technique_count, 1);
@@ -240,56 +250,34 @@ static void one_entry_point(void) {
         CHECK(fx->programs[0].code[HFX_STAGE_FRAGMENT][HFX_TARGET_GLSL330].data != NULL);
     }
     hfx_fx_effect_free(fx);
-    snprintf(args, sizeof args, "-T vs_3_0 -E nope '%s'", seed);
-    r = run(args);
-    CHECK_INT(r.status, 1);
+    run_result r = run_expecting(1, "-T vs_3_0 -E nope '%s'", seed);
     char expected[2048];
     snprintf(expected, sizeof expected, "%s(1,1): error X3501: 'nope': entrypoint not found\n", seed);
     CHECK_STR(r.err, expected);
     run_free(&r);
-    snprintf(args, sizeof args, "/T ps_3_0 '%s'", seed);
-    r = run(args);
-    CHECK_INT(r.status, 2);
+    r = run_expecting(2, "/T ps_3_0 '%s'", seed);
     CHECK_STR(r.err, "hfxc: error: profile 'ps_3_0' needs an entry point (/E) (hfxc --help for usage)\n");
     run_free(&r);
     free(seed);
 }
 
+static const run_case AST[] = {
+    {"--ast '%s'", 0, 1, SAYS_AMONG_OTHERS, "WorldViewProj"},
+};
+
+/* phong.fx has two X3206 warnings (float3 = float4): --werror makes them errors. */
+static const run_case WARNINGS[] = {
+    {"'%s'", 0, 0, SAYS_AMONG_OTHERS, "warning X3206: implicit truncation of vector type"},
+    {"--werror '%s'", 1, 0, SAYS_AMONG_OTHERS, "error X3206: implicit truncation of vector type"},
+    {"--no-warnings '%s'", 0, 0, SAYS_EXACTLY, ""},
+};
+
 static void ast_werror_and_targets(void) {
-    char *seed = test_seed_path("fxcomposer_empty.fx");
-    char args[16384];
-    snprintf(args, sizeof args, "--ast '%s'", seed);
-    run_result r = run(args);
-    CHECK_INT(r.status, 0);
-    CHECK_CONTAINS(r.out, "WorldViewProj");
-    run_free(&r);
-    free(seed);
-    /* phong.fx has two X3206 warnings (float3 = float4): --werror makes them errors. */
-    seed = test_seed_path("phong.fx");
-    snprintf(args, sizeof args, "'%s'", seed);
-    r = run(args);
-    CHECK_INT(r.status, 0);
-    CHECK_CONTAINS(r.err, "warning X3206: implicit truncation of vector type");
-    run_free(&r);
-    snprintf(args, sizeof args, "--werror '%s'", seed);
-    r = run(args);
-    CHECK_INT(r.status, 1);
-    CHECK_CONTAINS(r.err, "error X3206: implicit truncation of vector type");
-    run_free(&r);
-    snprintf(args, sizeof args, "--no-warnings '%s'", seed);
-    r = run(args);
-    CHECK_INT(r.status, 0);
-    CHECK_STR(r.err, "");
-    run_free(&r);
+    EXPECT_RUNS(AST, "fxcomposer_empty.fx");
+    EXPECT_RUNS(WARNINGS, "phong.fx");
     /* GLSL 1.10 only: the .hfxo carries that target and no other. */
-    char out[1024];
-    snprintf(out, sizeof out, "%s/phong110.hfxo", tmp);
-    snprintf(args, sizeof args, "--no-warnings --target glsl110 -o '%s' '%s'", out, seed);
-    r = run(args);
-    CHECK_INT(r.status, 0);
-    run_free(&r);
-    hfx_fx_effect *fx = read_hfxo(out, NULL, NULL);
-    CHECK(fx != NULL);
+    char *seed = test_seed_path("phong.fx");
+    hfx_fx_effect *fx = compile_to("--no-warnings --target glsl110 -o", "phong110.hfxo", seed);
     if (fx) {
         CHECK_INT(fx->targets, 1u << HFX_TARGET_GLSL110);
         CHECK(fx->programs[0].code[HFX_STAGE_VERTEX][HFX_TARGET_GLSL110].data != NULL);
@@ -309,7 +297,7 @@ static void write_text(const char *path, const char *text) {
 
 /* -D / /D / -DNAME=V and -I / /I reach the preprocessor in both spellings. */
 static void defines_and_include_dirs(void) {
-    char dir[1024], path[2048], inc[2048], args[16384], out[2048];
+    char dir[1024], path[2048], inc[2048], out[2048];
     snprintf(dir, sizeof dir, "%s/inc", tmp);
     mkdir(dir, 0777);
     snprintf(inc, sizeof inc, "%s/common.fxh", dir);
@@ -321,9 +309,7 @@ static void defines_and_include_dirs(void) {
                                             "/I '%s' /D COLOR_R=0.5 /D EXTRA=2 /Fo '%s' '%s'"};
     for (int k = 0; k < 2; k++) {
         remove(out);
-        snprintf(args, sizeof args, spellings[k], dir, out, path);
-        run_result r = run(args);
-        CHECK_INT(r.status, 0);
+        run_result r = run_expecting(0, spellings[k], dir, out, path);
         CHECK_STR(r.err, "");
         run_free(&r);
         hfx_fx_effect *fx = read_hfxo(out, NULL, NULL);
@@ -342,9 +328,7 @@ static void defines_and_include_dirs(void) {
         hfx_fx_effect_free(fx);
     }
     /* Without the folder, the include fails with fxc's located X1507. */
-    snprintf(args, sizeof args, "-D COLOR_R=1 -D EXTRA=1 '%s'", path);
-    run_result r = run(args);
-    CHECK_INT(r.status, 1);
+    run_result r = run_expecting(1, "-D COLOR_R=1 -D EXTRA=1 '%s'", path);
     CHECK_CONTAINS(r.err, "error X1507");
     run_free(&r);
 }
@@ -352,10 +336,7 @@ static void defines_and_include_dirs(void) {
 #ifdef HFX_HAVE_CJSON
 static cJSON *json_of(const char *flag, const char *seed_name) {
     char *seed = test_seed_path(seed_name);
-    char args[16384];
-    snprintf(args, sizeof args, "%s '%s'", flag, seed);
-    run_result r = run(args);
-    CHECK_INT(r.status, 0);
+    run_result r = run_expecting(0, "%s '%s'", flag, seed);
     cJSON *j = cJSON_Parse(r.out);
     CHECK(j != NULL);
     run_free(&r);
@@ -463,14 +444,10 @@ static void annotations_json_spot_specular(void) {
 /* A .hfxo describes itself exactly as its source does. */
 static void hfxo_input_reflects_like_source(void) {
     char *seed = test_seed_path("spot_specular.fx");
-    char args[16384], out[1024];
+    char out[1024];
     snprintf(out, sizeof out, "%s/self.hfxo", tmp);
-    snprintf(args, sizeof args, "--no-warnings --reflect -o '%s' '%s'", out, seed);
-    run_result a = run(args);
-    CHECK_INT(a.status, 0);
-    snprintf(args, sizeof args, "--reflect '%s'", out);
-    run_result b = run(args);
-    CHECK_INT(b.status, 0);
+    run_result a = run_expecting(0, "--no-warnings --reflect -o '%s' '%s'", out, seed);
+    run_result b = run_expecting(0, "--reflect '%s'", out);
     cJSON *ja = cJSON_Parse(a.out), *jb = cJSON_Parse(b.out);
     CHECK(ja && jb);
     if (ja && jb) {
@@ -497,9 +474,7 @@ static void hfxo_input_reflects_like_source(void) {
         }
     }
     free(data);
-    snprintf(args, sizeof args, "--reflect '%s'", out);
-    run_result c = run(args);
-    CHECK_INT(c.status, 1);
+    run_result c = run_expecting(1, "--reflect '%s'", out);
     CHECK_CONTAINS(c.err, "hfxo: checksum mismatch (the file is corrupted)");
     run_free(&c);
     free(seed);

@@ -104,32 +104,30 @@ void hv_clear(const hv_gl *gl, int width, int height, const float rgba[4]) {
  *
  * blend_add is the application changing GL state between two Applies (additive blending
  * and no depth writes, once, before the second pass): docs/runtime.md asks for
- * hfx_effect_begin after such a change, which reads the GL state back into the shadow. That
- * second begin also takes a new snapshot for end (the first pass's states plus the blending),
- * so the defaults are put back after end. */
+ * hfx_device_sync after such a change, which reads the GL state back into the shadow; end
+ * still restores what begin saved. */
 int hv_draw_technique(const hv_gl *gl, const hv_gpu_mesh *g, hfx_effect *fx, hfx_technique *t, int pass,
                       int blend_add, size_t *failed_pass) {
     size_t count = hfx_technique_pass_count(t);
-    int rc = HFX_OK, resynced = 0;
+    int rc = HFX_OK, synced = 0;
     hv_set_default_states(gl);
     hfx_effect_begin(fx);
     for (size_t i = 0; i < count && rc == HFX_OK; i++) {
         if (pass >= 0 && (size_t)pass != i) continue;
         hfx_pass *p = hfx_technique_pass(t, i);
-        if (blend_add && i > 0 && !resynced) { /* the application's job in XNA multi-pass lighting */
+        if (blend_add && i > 0 && !synced) { /* the application's job in XNA multi-pass lighting */
             gl->Enable(GL_BLEND);
             gl->BlendEquation(GL_FUNC_ADD);
             gl->BlendFunc(GL_ONE, GL_ONE);
             gl->DepthMask(GL_FALSE);
-            hfx_effect_begin(fx); /* the documented resync */
-            resynced = 1;
+            hfx_device_sync(hfx_effect_device(fx));
+            synced = 1;
         }
         rc = hfx_pass_apply(p);
         if (rc == HFX_OK) hv_draw_mesh(gl, g, p);
         else if (failed_pass) *failed_pass = i;
     }
     hfx_effect_end(fx);
-    if (resynced) hv_set_default_states(gl);
     gl->BindVertexArray(0);
     return rc;
 }

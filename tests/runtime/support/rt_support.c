@@ -113,6 +113,7 @@ void tb_uses(hfx_fx_effect *fx, uint32_t prog, uint32_t param) {
     hfx_fx_program *p = &fx->programs[prog];
     hfx_fx_uniform_use *u = GROW(p->uniforms, p->uniform_count);
     u->param = param;
+    u->reg = HFX_NONE;
 }
 
 void tb_sampler_use(hfx_fx_effect *fx, uint32_t prog, const char *glsl, uint32_t sampler, int32_t unit) {
