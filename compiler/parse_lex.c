@@ -1,125 +1,13 @@
 /* parse_lex.c: turns the preprocessed hfx_token list into Bison tokens. The lexer knows no
- * keywords, so they are decided here, as are type names: builtin ones by spelling
- * (float4x3, Texture2D...), user ones (struct and typedef names) from a scope table fed while
+ * keywords, so they are decided here, as are type names: builtin ones by spelling (keywords.c:
+ * float4x3, Texture2D...), user ones (struct and typedef names) from a scope table fed while
  * tokens go by (the classic C "lexer hack"; tokens come from a list, so peeking is free).
  * Also here: bracket nesting limits and the X3000 syntax error messages. */
-#include <ctype.h>
-#include <stdlib.h>
 #include <string.h>
 #include <strings.h>
 
+#include "keywords.h"
 #include "parser.h"
-
-/* ---- keyword tables ---- */
-
-typedef struct keyword {
-    const char *name;
-    int code;
-    uint32_t mods;
-} keyword;
-
-static const keyword keywords[] = {
-    {"NULL", NULL_KW, 0},           {"break", BREAK, 0},
-    {"case", CASE, 0},              {"column_major", MODIFIER, MOD_COLUMN_MAJOR},
-    {"compile", COMPILE, 0},        {"const", MODIFIER, MOD_CONST},
-    {"continue", CONTINUE, 0},      {"default", DEFAULT, 0},
-    {"discard", DISCARD, 0},        {"do", DO, 0},
-    {"else", ELSE, 0},              {"extern", MODIFIER, MOD_EXTERN},
-    {"false", FALSE_KW, 0},         {"for", FOR, 0},
-    {"groupshared", MODIFIER, MOD_GROUPSHARED}, {"if", IF, 0},
-    {"in", MODIFIER, MOD_IN},       {"inline", MODIFIER, MOD_INLINE},
-    {"inout", MODIFIER, MOD_IN | MOD_OUT}, {"matrix", MATRIX, 0},
-    {"out", MODIFIER, MOD_OUT},     {"pass", PASS, 0},
-    {"precise", MODIFIER, MOD_PRECISE}, {"register", REGISTER, 0},
-    {"return", RETURN, 0},          {"row_major", MODIFIER, MOD_ROW_MAJOR},
-    {"sampler_state", SAMPLER_STATE, 0}, {"shared", MODIFIER, MOD_SHARED},
-    {"static", MODIFIER, MOD_STATIC}, {"struct", STRUCT, 0},
-    {"switch", SWITCH, 0},          {"technique", TECHNIQUE, 0},
-    {"technique10", TECHNIQUE, 0},  {"technique11", TECHNIQUE, 0},
-    {"true", TRUE_KW, 0},           {"typedef", TYPEDEF, 0},
-    {"uniform", MODIFIER, MOD_UNIFORM}, {"vector", VECTOR, 0},
-    {"volatile", MODIFIER, MOD_VOLATILE}, {"while", WHILE, 0},
-};
-
-/* Interpolation modifiers are keywords only before a type or another modifier, so that
- * `MinFilter = linear;` and a variable named `sample` still read as identifiers. */
-static const keyword interp_modifiers[] = {
-    {"centroid", MODIFIER, MOD_CENTROID},   {"linear", MODIFIER, MOD_LINEAR},
-    {"nointerpolation", MODIFIER, MOD_NOINTERPOLATION}, {"noperspective", MODIFIER, MOD_NOPERSPECTIVE},
-    {"sample", MODIFIER, MOD_SAMPLE},
-};
-
-typedef struct scalar_name {
-    const char *name;
-    hfx_base base;
-    bool vectors;   /* float4, float4x4 forms exist */
-} scalar_name;
-
-static const scalar_name scalar_names[] = {
-    {"bool", B_BOOL, true},   {"int", B_INT, true},       {"uint", B_UINT, true},
-    {"dword", B_UINT, false}, {"DWORD", B_UINT, false}, {"half", B_HALF, true},     {"float", B_FLOAT, true},
-    {"double", B_DOUBLE, true}, {"min16float", B_MIN16FLOAT, true}, {"min10float", B_MIN16FLOAT, true},
-    {"min16int", B_INT, true}, {"min12int", B_INT, true}, {"min16uint", B_UINT, true},
-};
-
-typedef struct object_name {
-    const char *name;   /* compared without case: texture2D, Texture2D, TEXTURE2D */
-    hfx_type_kind kind;
-    hfx_dim dim;
-} object_name;
-
-static const object_name object_names[] = {
-    {"texture", TY_TEXTURE, DIM_GENERIC},  {"texture1d", TY_TEXTURE, DIM_1D},
-    {"texture2d", TY_TEXTURE, DIM_2D},     {"texture3d", TY_TEXTURE, DIM_3D},
-    {"texturecube", TY_TEXTURE, DIM_CUBE}, {"sampler", TY_SAMPLER, DIM_GENERIC},
-    {"sampler1d", TY_SAMPLER, DIM_1D},     {"sampler2d", TY_SAMPLER, DIM_2D},
-    {"sampler3d", TY_SAMPLER, DIM_3D},     {"samplercube", TY_SAMPLER, DIM_CUBE},
-    {"samplerstate", TY_SAMPLER, DIM_GENERIC}, {"samplercomparisonstate", TY_SAMPLER, DIM_GENERIC},
-    {"vertexshader", TY_VERTEXSHADER, DIM_GENERIC}, {"pixelshader", TY_PIXELSHADER, DIM_GENERIC},
-};
-
-static int compare_keyword(const void *key, const void *elem) {
-    return strcmp((const char *)key, ((const keyword *)elem)->name);
-}
-
-static const keyword *find_keyword(const char *s) {
-    return bsearch(s, keywords, sizeof keywords / sizeof *keywords, sizeof *keywords, compare_keyword);
-}
-
-static const keyword *find_interp(const char *s) {
-    for (size_t i = 0; i < sizeof interp_modifiers / sizeof *interp_modifiers; i++)
-        if (interp_modifiers[i].name[0] == s[0] && strcmp(s, interp_modifiers[i].name) == 0)
-            return &interp_modifiers[i];
-    return NULL;
-}
-
-/* "float", "float3", "float3x4": the type, or NULL when `s` is no numeric type name. */
-static const hfx_type *numeric_type(hfx_types *types, const char *s) {
-    for (size_t i = 0; i < sizeof scalar_names / sizeof *scalar_names; i++) {
-        const scalar_name *sn = &scalar_names[i];
-        if (sn->name[0] != s[0]) continue; /* most identifiers stop here */
-        size_t n = strlen(sn->name);
-        if (strncmp(s, sn->name, n) != 0) continue;
-        const char *rest = s + n;
-        if (!*rest) return hfx_type_scalar(types, sn->base);
-        if (!sn->vectors || rest[0] < '1' || rest[0] > '4') continue;
-        if (!rest[1]) return hfx_type_vector(types, sn->base, (unsigned)(rest[0] - '0'));
-        if (rest[1] == 'x' && rest[2] >= '1' && rest[2] <= '4' && !rest[3])
-            return hfx_type_matrix(types, sn->base, (unsigned)(rest[0] - '0'), (unsigned)(rest[2] - '0'));
-    }
-    return NULL;
-}
-
-static const hfx_type *builtin_type(hfx_types *types, const char *s) {
-    if (s[0] == 'v' && strcmp(s, "void") == 0) return hfx_type_void(types);
-    if (s[0] == 's' && strcmp(s, "string") == 0) return hfx_type_object(types, TY_STRING, DIM_GENERIC);
-    const hfx_type *t = numeric_type(types, s);
-    if (t) return t;
-    for (size_t i = 0; i < sizeof object_names / sizeof *object_names; i++)
-        if (object_names[i].name[0] == (s[0] | 0x20) && strcasecmp(s, object_names[i].name) == 0)
-            return hfx_type_object(types, object_names[i].kind, object_names[i].dim);
-    return NULL;
-}
 
 /* ---- the user type-name scopes ---- */
 
@@ -199,28 +87,25 @@ hfx_ast *parse_ctx_finish(parse_ctx *ctx) {
 /* Does an identifier spell a type or a declaration modifier (for contextual keywords)? */
 static bool starts_type(parse_ctx *ctx, const hfx_token *t) {
     if (!t || t->kind != TK_IDENT) return false;
-    const keyword *k = find_keyword(t->text);
-    if (k) return k->code == MODIFIER || k->code == STRUCT || k->code == VECTOR || k->code == MATRIX;
-    return find_interp(t->text) || builtin_type(ctx->types, t->text) || parse_find_typename(ctx, t->text);
+    kw_word w;
+    kw_lookup(t->text, t->len, &w);
+    if (w.keyword) return w.keyword == MODIFIER || w.keyword == STRUCT || w.keyword == VECTOR || w.keyword == MATRIX;
+    return w.interp || w.form != KW_TYPE_NONE || parse_find_typename(ctx, t->text);
 }
 
 /* The effect-layer keywords in another case (`Technique`, `Pass`, `SAMPLER_STATE`, `Compile`),
  * as XNA and MonoGame accept them: keywords only where they start their construct, so such
  * spellings stay free as names elsewhere. */
-static int effect_keyword_any_case(const parse_ctx *ctx, const hfx_token *t) {
-    char c = (char)(t->text[0] | 0x20);
-    if (c != 't' && c != 'p' && c != 's' && c != 'c') return 0;
+static int effect_keyword_any_case(const parse_ctx *ctx, const hfx_token *t, int code) {
+    if (!code) return 0;
     if (ctx->prev_code == PASS || ctx->prev_code == TECHNIQUE) return 0; /* `pass Pass {` names it */
     const hfx_token *n = t->next;
-    bool named_block = n && (n->kind == TK_IDENT || is_punct(n, P_LBRACE) || is_punct(n, P_LT));
-    if (named_block && (strcasecmp(t->text, "technique") == 0 || strcasecmp(t->text, "technique10") == 0 ||
-                        strcasecmp(t->text, "technique11") == 0))
-        return TECHNIQUE;
-    if (named_block && strcasecmp(t->text, "pass") == 0) return PASS;
-    if (is_punct(n, P_LBRACE) && strcasecmp(t->text, "sampler_state") == 0) return SAMPLER_STATE;
-    if (n && n->kind == TK_IDENT && n->next && n->next->kind == TK_IDENT && strcasecmp(t->text, "compile") == 0)
-        return COMPILE;
-    return 0;
+    switch (code) {
+    case TECHNIQUE:
+    case PASS: return n && (n->kind == TK_IDENT || is_punct(n, P_LBRACE) || is_punct(n, P_LT)) ? code : 0;
+    case SAMPLER_STATE: return is_punct(n, P_LBRACE) ? code : 0;
+    default: return n && n->kind == TK_IDENT && n->next && n->next->kind == TK_IDENT ? code : 0; /* COMPILE */
+    }
 }
 
 /* A typedef's declarator name: registered as a type name as soon as it goes by. */
@@ -242,19 +127,20 @@ static int classify_ident(parse_ctx *ctx, const hfx_token *t, parse_tok *val) {
         return IDENT;
     }
     if (ctx->prev_code == '.') return IDENT; /* a member or swizzle may be spelled like anything */
-    const keyword *k = find_keyword(t->text);
-    if (k) {
-        val->mods = k->mods;
-        return k->code;
+    kw_word w;
+    kw_lookup(t->text, t->len, &w);
+    if (w.keyword) {
+        val->mods = w.mods;
+        return w.keyword;
     }
-    if ((k = find_interp(t->text)) && starts_type(ctx, t->next)) {
-        val->mods = k->mods;
-        return k->code;
+    if (w.interp && starts_type(ctx, t->next)) {
+        val->mods = w.mods;
+        return MODIFIER;
     }
-    int tp = effect_keyword_any_case(ctx, t);
+    int tp = effect_keyword_any_case(ctx, t, w.any_case_keyword);
     if (tp) return tp;
     parse_typename *e = parse_find_typename(ctx, t->text);
-    const hfx_type *builtin = e ? NULL : builtin_type(ctx->types, t->text);
+    const hfx_type *builtin = e ? NULL : kw_builtin_type(ctx->types, &w);
     /* In `ColorArg1[0] = Texture;` or `VertexShader = ...` a type's spelling names a state
      * or a state value; only a constructor, `float4(...)`, is a type there. */
     if ((e || builtin) && in_state_block(ctx) && !is_punct(t->next, P_LPAREN)) return IDENT;
@@ -377,7 +263,7 @@ static const char *take_asm_block(parse_ctx *ctx, hfx_token *t) {
 }
 
 static bool is_asm(const hfx_token *t) {
-    return strcasecmp(t->text, "asm") == 0 && is_punct(t->next, P_LBRACE);
+    return t->len == 3 && strcasecmp(t->text, "asm") == 0 && is_punct(t->next, P_LBRACE);
 }
 
 /* ---- yylex ---- */
@@ -402,7 +288,7 @@ static int token_code(parse_ctx *ctx, hfx_token *t, parse_tok *val) {
 /* `#pragma pack_matrix(row_major)` reaches us as `__hfx_pack_matrix ( row_major )` (token.h):
  * it sets the majorness of the matrix declarations that follow; consumed here. */
 static bool take_pack_matrix(parse_ctx *ctx, hfx_token *t) {
-    if (t->kind != TK_IDENT || strcmp(t->text, "__hfx_pack_matrix") != 0) return false;
+    if (t->kind != TK_IDENT || t->len != 17 || strcmp(t->text, "__hfx_pack_matrix") != 0) return false;
     hfx_token *open = t->next, *arg = open ? open->next : NULL, *close = arg ? arg->next : NULL;
     if (!is_punct(open, P_LPAREN) || !arg || arg->kind != TK_IDENT || !is_punct(close, P_RPAREN)) return false;
     if (strcmp(arg->text, "row_major") == 0) ctx->pack_mods = MOD_ROW_MAJOR;

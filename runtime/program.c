@@ -333,6 +333,9 @@ int hfx_rt_program_build(hfx_shared *sh, uint32_t index, hfx_target target) {
 }
 
 void hfx_rt_program_free(hfx_device *dev, hfx_rt_program *p) {
+    /* GL frees the bound program's name once another is bound (a load binds one briefly) and
+     * may hand it to a later program: the shadow must not then take that one for bound. */
+    if (p->object && dev->program == p->object) dev->program = (GLuint)-1;
     if (p->object) dev->gl.DeleteProgram(p->object);
     free(p->slots);
     free(p->reads);

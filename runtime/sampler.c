@@ -117,6 +117,10 @@ void hfx_rt_sampler_update(hfx_effect *fx, hfx_rt_sampler *s) {
 }
 
 void hfx_rt_sampler_free(hfx_device *dev, hfx_rt_sampler *s) {
+    /* GL unbinds a deleted sampler from every unit, and may give its name to a later one: the
+     * shadow follows, or it would skip binding that one */
+    for (int u = 0; s->object && u < HFX_MAX_UNITS; u++)
+        if (dev->units[u].sampler == s->object) dev->units[u].sampler = 0;
     if (s->object) dev->gl.DeleteSamplers(1, &s->object);
     free(s->dynamic);
     memset(s, 0, sizeof *s);
