@@ -138,6 +138,17 @@ static __attribute__((noinline)) int apply_first(hfx_pass *p) {
     return HFX_OK;
 }
 
+/* One changed packed parameter whose rows fill their registers (float4, float4x4, float3x4:
+ * the values' layout is the registers'), all of them kept by GL: copied and sent in place. */
+static inline int upload_one_reg(hfx_effect *fx, hfx_rt_program *prog, const hfx_slot *s) {
+    if (s->reg_cols != 4 || s->reg + s->reg_rows > prog->reg_active) return hfx_rt_upload_reg(fx, prog, s);
+    float *dst = prog->regs + 4 * (size_t)s->reg;
+    const uint32_t *src = fx->values + s->up.offset;
+    for (uint32_t i = 0; i < s->reg_rows; i++) memcpy(dst + 4 * i, src + 4 * i, 16);
+    prog->reg_call(prog->reg_locs[s->reg], (GLsizei)s->reg_rows, dst);
+    return HFX_OK;
+}
+
 /* The same program-only pass again, with no other state set since, only uploads what the
  * parameters' log holds past what its program saw: the per-draw path of a game loop. */
 int hfx_pass_apply(hfx_pass *p) {
@@ -154,7 +165,7 @@ int hfx_pass_apply(hfx_pass *p) {
     if (s->held == fx->stamps[r] || (s->mode != SLOT_FLOAT && s->mode != SLOT_REG)) return hfx_rt_upload_log(fx, prog);
     prog->memo_seen = seen + 1;
     s->held = fx->stamps[r];
-    if (s->mode == SLOT_REG) return hfx_rt_upload_reg(fx, prog, s);
+    if (s->mode == SLOT_REG) return upload_one_reg(fx, prog, s);
     s->up.call.f(s->up.location, s->up.count, (const void *)(fx->values + s->up.offset));
     return HFX_OK;
 }
