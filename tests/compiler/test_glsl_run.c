@@ -9,6 +9,7 @@
 
 #include "effect.h"
 #include "gl_context.h"
+#include "gl_fns.h"
 #include "hfx/hfxc.h"
 #include "test.h"
 
@@ -16,58 +17,9 @@ enum { W = 8, H = 8 };
 
 static test_gl *gl;
 
-static struct {
-    PFNGLCREATESHADERPROC CreateShader;
-    PFNGLSHADERSOURCEPROC ShaderSource;
-    PFNGLCOMPILESHADERPROC CompileShader;
-    PFNGLGETSHADERIVPROC GetShaderiv;
-    PFNGLGETSHADERINFOLOGPROC GetShaderInfoLog;
-    PFNGLCREATEPROGRAMPROC CreateProgram;
-    PFNGLATTACHSHADERPROC AttachShader;
-    PFNGLLINKPROGRAMPROC LinkProgram;
-    PFNGLGETPROGRAMIVPROC GetProgramiv;
-    PFNGLGETPROGRAMINFOLOGPROC GetProgramInfoLog;
-    PFNGLUSEPROGRAMPROC UseProgram;
-    PFNGLDELETEPROGRAMPROC DeleteProgram;
-    PFNGLDELETESHADERPROC DeleteShader;
-    PFNGLGETUNIFORMLOCATIONPROC GetUniformLocation;
-    PFNGLUNIFORM1IVPROC Uniform1iv;
-    PFNGLUNIFORM1FVPROC Uniform1fv;
-    PFNGLUNIFORM4FVPROC Uniform4fv;
-    PFNGLUNIFORMMATRIX3FVPROC UniformMatrix3fv;
-    PFNGLUNIFORMMATRIX4FVPROC UniformMatrix4fv;
-    PFNGLGENVERTEXARRAYSPROC GenVertexArrays;
-    PFNGLBINDVERTEXARRAYPROC BindVertexArray;
-    PFNGLDELETEVERTEXARRAYSPROC DeleteVertexArrays;
-    PFNGLGENBUFFERSPROC GenBuffers;
-    PFNGLBINDBUFFERPROC BindBuffer;
-    PFNGLBUFFERDATAPROC BufferData;
-    PFNGLDELETEBUFFERSPROC DeleteBuffers;
-    PFNGLVERTEXATTRIBPOINTERPROC VertexAttribPointer;
-    PFNGLENABLEVERTEXATTRIBARRAYPROC EnableVertexAttribArray;
-    void (*Viewport)(GLint, GLint, GLsizei, GLsizei);
-    void (*ClearColor)(GLfloat, GLfloat, GLfloat, GLfloat);
-    void (*Clear)(GLbitfield);
-    void (*DrawArrays)(GLenum, GLint, GLsizei);
-    void (*GenTextures)(GLsizei, GLuint *);
-    void (*DeleteTextures)(GLsizei, const GLuint *);
-    void (*BindTexture)(GLenum, GLuint);
-    void (*TexImage2D)(GLenum, GLint, GLint, GLsizei, GLsizei, GLint, GLenum, GLenum, const void *);
-    void (*TexParameteri)(GLenum, GLenum, GLint);
-    PFNGLACTIVETEXTUREPROC ActiveTexture;
-} f;
+static test_gl_fns f;
 
-static void load_gl(void) {
-#define L(name) *(void **)&f.name = test_gl_proc("gl" #name)
-    L(CreateShader); L(ShaderSource); L(CompileShader); L(GetShaderiv); L(GetShaderInfoLog); L(CreateProgram);
-    L(AttachShader); L(LinkProgram); L(GetProgramiv); L(GetProgramInfoLog); L(UseProgram); L(DeleteProgram);
-    L(DeleteShader); L(GetUniformLocation); L(Uniform1iv); L(Uniform1fv); L(Uniform4fv); L(UniformMatrix3fv);
-    L(UniformMatrix4fv); L(GenVertexArrays); L(BindVertexArray); L(DeleteVertexArrays); L(GenBuffers);
-    L(BindBuffer); L(BufferData); L(DeleteBuffers); L(VertexAttribPointer); L(EnableVertexAttribArray);
-    L(Viewport); L(ClearColor); L(Clear); L(DrawArrays); L(GenTextures); L(DeleteTextures); L(BindTexture);
-    L(TexImage2D); L(TexParameteri); L(ActiveTexture);
-#undef L
-}
+static void load_gl(void) { CHECK_INT(test_gl_fns_load(&f), 0); }
 
 /* A uniform value to set before drawing: 'f' floats (1 or 4 a piece), 'i' ints, 'm' a 3x3
  * or 4x4 matrix in XNA's row-major order (uploaded with transpose = GL_FALSE). */

@@ -16,6 +16,7 @@
 #include "effect.h"
 #include "files.h"
 #include "gl_context.h"
+#include "gl_fns.h"
 #include "glsl_check.h"
 #include "hfx/hfxc.h"
 #include "spirv.h"
@@ -297,51 +298,9 @@ static const unsigned char gl_expected[PICKS][4] = {
     {49, 50, 51, 45}, {62, 63, 61, 72}, {82, 81, 90, 101}, {110, 111, 112, 122},
 };
 
-typedef struct glf {
-    PFNGLCREATESHADERPROC CreateShader;
-    PFNGLSHADERSOURCEPROC ShaderSource;
-    PFNGLCOMPILESHADERPROC CompileShader;
-    PFNGLCREATEPROGRAMPROC CreateProgram;
-    PFNGLATTACHSHADERPROC AttachShader;
-    PFNGLLINKPROGRAMPROC LinkProgram;
-    PFNGLGETPROGRAMIVPROC GetProgramiv;
-    PFNGLUSEPROGRAMPROC UseProgram;
-    PFNGLDELETEPROGRAMPROC DeleteProgram;
-    PFNGLDELETESHADERPROC DeleteShader;
-    PFNGLGETUNIFORMLOCATIONPROC GetUniformLocation;
-    PFNGLUNIFORM1IPROC Uniform1i;
-    PFNGLUNIFORM1FVPROC Uniform1fv;
-    PFNGLUNIFORM2FVPROC Uniform2fv;
-    PFNGLUNIFORM3FVPROC Uniform3fv;
-    PFNGLUNIFORM4FVPROC Uniform4fv;
-    PFNGLUNIFORMMATRIX2FVPROC UniformMatrix2fv;
-    PFNGLUNIFORMMATRIX4FVPROC UniformMatrix4fv;
-    PFNGLUNIFORMMATRIX3X4FVPROC UniformMatrix3x4fv;
-    PFNGLUNIFORMMATRIX4X3FVPROC UniformMatrix4x3fv;
-    PFNGLGENVERTEXARRAYSPROC GenVertexArrays;
-    PFNGLBINDVERTEXARRAYPROC BindVertexArray;
-    PFNGLDELETEVERTEXARRAYSPROC DeleteVertexArrays;
-    PFNGLGENBUFFERSPROC GenBuffers;
-    PFNGLBINDBUFFERPROC BindBuffer;
-    PFNGLBUFFERDATAPROC BufferData;
-    PFNGLDELETEBUFFERSPROC DeleteBuffers;
-    PFNGLVERTEXATTRIBPOINTERPROC VertexAttribPointer;
-    PFNGLENABLEVERTEXATTRIBARRAYPROC EnableVertexAttribArray;
-    void (*Viewport)(GLint, GLint, GLsizei, GLsizei);
-    void (*Clear)(GLbitfield);
-    void (*DrawArrays)(GLenum, GLint, GLsizei);
-} glf;
+typedef test_gl_fns glf;
 
-static void load_glf(glf *f) {
-#define L(name) *(void **)&f->name = test_gl_proc("gl" #name)
-    L(CreateShader); L(ShaderSource); L(CompileShader); L(CreateProgram); L(AttachShader); L(LinkProgram);
-    L(GetProgramiv); L(UseProgram); L(DeleteProgram); L(DeleteShader); L(GetUniformLocation);
-    L(Uniform1i); L(Uniform1fv); L(Uniform2fv); L(Uniform3fv); L(Uniform4fv); L(UniformMatrix2fv);
-    L(UniformMatrix4fv); L(UniformMatrix3x4fv); L(UniformMatrix4x3fv); L(GenVertexArrays); L(BindVertexArray);
-    L(DeleteVertexArrays); L(GenBuffers); L(BindBuffer); L(BufferData); L(DeleteBuffers); L(VertexAttribPointer);
-    L(EnableVertexAttribArray); L(Viewport); L(Clear); L(DrawArrays);
-#undef L
-}
+static void load_glf(glf *f) { CHECK_INT(test_gl_fns_load(f), 0); }
 
 static void param_words(unsigned i, float *w) {
     for (unsigned k = 0; k < gl_params[i].rows * gl_params[i].cols; k++) w[k] = (float)(gl_params[i].base + k) / 255.0f;

@@ -241,17 +241,7 @@ void tc_reset(void) {
 #undef HFX_GL_R_
 }
 
-void tgl_load(tgl *g) {
-#define L(f) *(void **)&g->f = test_gl_proc("gl" #f)
-    L(ClearColor); L(Clear); L(Viewport); L(GenVertexArrays); L(BindVertexArray); L(DeleteVertexArrays);
-    L(GenBuffers); L(BindBuffer); L(BufferData); L(DeleteBuffers); L(VertexAttribPointer);
-    L(EnableVertexAttribArray); L(DrawArrays); L(GenTextures); L(DeleteTextures); L(BindTexture);
-    L(ActiveTexture); L(TexImage2D); L(TexParameteri); L(GenFramebuffers); L(BindFramebuffer); L(FramebufferTexture2D);
-    L(DeleteFramebuffers); L(GetSamplerParameteriv); L(GetSamplerParameterfv); L(GetIntegerv);
-    L(GetIntegeri_v); L(GetFloatv); L(GetBooleani_v); L(IsEnabled); L(Enable); L(Disable); L(CullFace);
-    L(UseProgram); L(GetUniformLocation); L(GetUniformfv); L(GetUniformiv); L(GetError); L(Finish);
-#undef L
-}
+void tgl_load(tgl *g) { test_gl_fns_load(g); }
 
 GLuint tgl_triangles(tgl *g, const float *xy, int vertices, GLuint *buffer) {
     GLuint vao = 0;

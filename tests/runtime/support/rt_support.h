@@ -5,6 +5,8 @@
 
 #include <GL/glcorearb.h>
 
+#include "gl_fns.h"
+
 #include "effect.h"
 #include "hfx/hfx.h"
 #include "states.h"
@@ -39,48 +41,8 @@ unsigned long tc_calls(void);
 unsigned long tc_count(const char *gl_name);
 void tc_reset(void);
 
-/* GL the tests call directly. */
-typedef struct tgl {
-    void(APIENTRYP ClearColor)(GLfloat, GLfloat, GLfloat, GLfloat);
-    void(APIENTRYP Clear)(GLbitfield);
-    void(APIENTRYP Viewport)(GLint, GLint, GLsizei, GLsizei);
-    void(APIENTRYP GenVertexArrays)(GLsizei, GLuint *);
-    void(APIENTRYP BindVertexArray)(GLuint);
-    void(APIENTRYP DeleteVertexArrays)(GLsizei, const GLuint *);
-    void(APIENTRYP GenBuffers)(GLsizei, GLuint *);
-    void(APIENTRYP BindBuffer)(GLenum, GLuint);
-    void(APIENTRYP BufferData)(GLenum, GLsizeiptr, const void *, GLenum);
-    void(APIENTRYP DeleteBuffers)(GLsizei, const GLuint *);
-    void(APIENTRYP VertexAttribPointer)(GLuint, GLint, GLenum, GLboolean, GLsizei, const void *);
-    void(APIENTRYP EnableVertexAttribArray)(GLuint);
-    void(APIENTRYP DrawArrays)(GLenum, GLint, GLsizei);
-    void(APIENTRYP GenTextures)(GLsizei, GLuint *);
-    void(APIENTRYP DeleteTextures)(GLsizei, const GLuint *);
-    void(APIENTRYP BindTexture)(GLenum, GLuint);
-    void(APIENTRYP ActiveTexture)(GLenum);
-    void(APIENTRYP TexImage2D)(GLenum, GLint, GLint, GLsizei, GLsizei, GLint, GLenum, GLenum, const void *);
-    void(APIENTRYP TexParameteri)(GLenum, GLenum, GLint);
-    void(APIENTRYP GenFramebuffers)(GLsizei, GLuint *);
-    void(APIENTRYP BindFramebuffer)(GLenum, GLuint);
-    void(APIENTRYP FramebufferTexture2D)(GLenum, GLenum, GLenum, GLuint, GLint);
-    void(APIENTRYP DeleteFramebuffers)(GLsizei, const GLuint *);
-    void(APIENTRYP GetSamplerParameteriv)(GLuint, GLenum, GLint *);
-    void(APIENTRYP GetSamplerParameterfv)(GLuint, GLenum, GLfloat *);
-    void(APIENTRYP GetIntegerv)(GLenum, GLint *);
-    void(APIENTRYP GetIntegeri_v)(GLenum, GLuint, GLint *);
-    void(APIENTRYP GetFloatv)(GLenum, GLfloat *);
-    void(APIENTRYP GetBooleani_v)(GLenum, GLuint, GLboolean *);
-    GLboolean(APIENTRYP IsEnabled)(GLenum);
-    void(APIENTRYP Enable)(GLenum);
-    void(APIENTRYP Disable)(GLenum);
-    void(APIENTRYP CullFace)(GLenum);
-    void(APIENTRYP UseProgram)(GLuint);
-    GLint(APIENTRYP GetUniformLocation)(GLuint, const GLchar *);
-    void(APIENTRYP GetUniformfv)(GLuint, GLint, GLfloat *);
-    void(APIENTRYP GetUniformiv)(GLuint, GLint, GLint *);
-    GLenum(APIENTRYP GetError)(void);
-    void(APIENTRYP Finish)(void);
-} tgl;
+/* GL the tests call directly: the harness's table. */
+typedef test_gl_fns tgl;
 void tgl_load(tgl *g);
 
 /* A vertex array with one float2 attribute at location 0 holding the given triangle list. */

@@ -10,43 +10,11 @@
 
 #include "effect.h"
 #include "files.h"
+#include "gl_fns.h"
 #include "hfx/hfxc.h"
 
 #define SEED_MAX_FILES 32
 
-typedef struct seed_gl_fns {
-    PFNGLVIEWPORTPROC Viewport;
-    PFNGLCLEARCOLORPROC ClearColor;
-    PFNGLCLEARDEPTHPROC ClearDepth;
-    PFNGLCLEARPROC Clear;
-    PFNGLENABLEPROC Enable;
-    PFNGLDISABLEPROC Disable;
-    PFNGLCULLFACEPROC CullFace;
-    PFNGLFRONTFACEPROC FrontFace;
-    PFNGLDEPTHFUNCPROC DepthFunc;
-    PFNGLDEPTHMASKPROC DepthMask;
-    PFNGLCOLORMASKPROC ColorMask;
-    PFNGLBLENDFUNCPROC BlendFunc;
-    PFNGLBLENDEQUATIONPROC BlendEquation;
-    PFNGLGENVERTEXARRAYSPROC GenVertexArrays;
-    PFNGLBINDVERTEXARRAYPROC BindVertexArray;
-    PFNGLDELETEVERTEXARRAYSPROC DeleteVertexArrays;
-    PFNGLGENBUFFERSPROC GenBuffers;
-    PFNGLBINDBUFFERPROC BindBuffer;
-    PFNGLBUFFERDATAPROC BufferData;
-    PFNGLDELETEBUFFERSPROC DeleteBuffers;
-    PFNGLVERTEXATTRIBPOINTERPROC VertexAttribPointer;
-    PFNGLENABLEVERTEXATTRIBARRAYPROC EnableVertexAttribArray;
-    PFNGLDISABLEVERTEXATTRIBARRAYPROC DisableVertexAttribArray;
-    PFNGLDRAWARRAYSPROC DrawArrays;
-    PFNGLGENTEXTURESPROC GenTextures;
-    PFNGLBINDTEXTUREPROC BindTexture;
-    PFNGLDELETETEXTURESPROC DeleteTextures;
-    PFNGLTEXIMAGE2DPROC TexImage2D;
-    PFNGLTEXPARAMETERIPROC TexParameteri;
-    PFNGLPIXELSTOREIPROC PixelStorei;
-    PFNGLGETERRORPROC GetError;
-} seed_gl_fns;
 
 typedef struct seed_file_report {
     char file[64];
@@ -57,7 +25,7 @@ typedef struct seed_file_report {
 struct seed_scene {
     test_gl *gl;
     hfx_device *dev;
-    seed_gl_fns f;
+    test_gl_fns f;
     int width, height;
     float view[16], proj[16];
     double inv_vp[16]; /* inverse(view * proj), for unprojecting pixels */
@@ -80,46 +48,7 @@ static void note(seed_scene *s, const char *fmt, ...) {
     s->errors++;
 }
 
-/* Casting through a union: ISO C has no cast from object pointers to function pointers. */
-static void *load_fn(const char *name) { return test_gl_proc(name); }
-#define LOAD(field, name) do { union { void *p; __typeof__(s->f.field) fn; } u_; u_.p = load_fn(name); \
-    s->f.field = u_.fn; if (!u_.p) missing++; } while (0)
-
-static int load_gl(seed_scene *s) {
-    int missing = 0;
-    LOAD(Viewport, "glViewport");
-    LOAD(ClearColor, "glClearColor");
-    LOAD(ClearDepth, "glClearDepth");
-    LOAD(Clear, "glClear");
-    LOAD(Enable, "glEnable");
-    LOAD(Disable, "glDisable");
-    LOAD(CullFace, "glCullFace");
-    LOAD(FrontFace, "glFrontFace");
-    LOAD(DepthFunc, "glDepthFunc");
-    LOAD(DepthMask, "glDepthMask");
-    LOAD(ColorMask, "glColorMask");
-    LOAD(BlendFunc, "glBlendFunc");
-    LOAD(BlendEquation, "glBlendEquation");
-    LOAD(GenVertexArrays, "glGenVertexArrays");
-    LOAD(BindVertexArray, "glBindVertexArray");
-    LOAD(DeleteVertexArrays, "glDeleteVertexArrays");
-    LOAD(GenBuffers, "glGenBuffers");
-    LOAD(BindBuffer, "glBindBuffer");
-    LOAD(BufferData, "glBufferData");
-    LOAD(DeleteBuffers, "glDeleteBuffers");
-    LOAD(VertexAttribPointer, "glVertexAttribPointer");
-    LOAD(EnableVertexAttribArray, "glEnableVertexAttribArray");
-    LOAD(DisableVertexAttribArray, "glDisableVertexAttribArray");
-    LOAD(DrawArrays, "glDrawArrays");
-    LOAD(GenTextures, "glGenTextures");
-    LOAD(BindTexture, "glBindTexture");
-    LOAD(DeleteTextures, "glDeleteTextures");
-    LOAD(TexImage2D, "glTexImage2D");
-    LOAD(TexParameteri, "glTexParameteri");
-    LOAD(PixelStorei, "glPixelStorei");
-    LOAD(GetError, "glGetError");
-    return missing == 0;
-}
+static int load_gl(seed_scene *s) { return test_gl_fns_load(&s->f) == 0; }
 
 seed_scene *seed_scene_create(int width, int height) { return seed_scene_create_version(width, height, 3, 3); }
 
