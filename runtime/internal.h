@@ -267,6 +267,7 @@ struct hfx_effect {
     hfx_pass *passes;
     uint32_t current;       /* technique index */
     hfx_saved saved;
+    char *path;             /* the file hfx_effect_load read (owned), for hfx_effect_reload; NULL from memory */
 };
 
 /* A top-level parameter's value changed: a new version, and an entry in the change log. */
@@ -381,5 +382,6 @@ uint32_t hfx_rt_param_accept(const hfx_fx_param *i);
 /* Loads a compiled effect built by hand (tests, tools); takes fx, even on failure. */
 hfx_effect *hfx_rt_effect_from_fx(hfx_device *dev, hfx_fx_effect *fx, const hfx_load_options *opt, char **errors);
 void hfx_shared_warn(hfx_shared *sh, const hfx_fx_state *st, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+char *hfx_rt_strdup(const char *s); /* malloc'ed copy, NULL when out of memory */
 
 #endif

@@ -321,6 +321,7 @@ static uint32_t root_of(const hfx_fx_effect *fx, uint32_t i) {
 static void instance_free(hfx_effect *e) {
     free(e->values), free(e->stamps), free(e->textures), free(e->params), free(e->techniques), free(e->passes);
     free(e->log);
+    free(e->path);
     free(e);
 }
 
@@ -372,6 +373,8 @@ static char *dup_string(const char *s) {
     if (d) memcpy(d, s, n);
     return d;
 }
+
+char *hfx_rt_strdup(const char *s) { return dup_string(s); }
 
 /* Diagnostics with only warnings still need to say why the load failed: the reason goes on a
  * line of its own after them (name may be NULL when msg names its file already). */
@@ -461,6 +464,12 @@ hfx_effect *hfx_effect_load(hfx_device *dev, const char *path, const hfx_load_op
     }
     hfx_effect *e = load(dev, path, data, size, path, opt, errors);
     free(data);
+    if (e && !(e->path = dup_string(path))) { /* hfx_effect_reload reads it again */
+        hfx_effect_destroy(e);
+        hfx_rt_fail(dev, HFX_ERR_MEMORY, "out of memory");
+        if (errors) free(*errors), *errors = dup_string(dev->error);
+        return NULL;
+    }
     return e;
 }
 
@@ -490,6 +499,10 @@ hfx_effect *hfx_rt_effect_from_fx(hfx_device *dev, hfx_fx_effect *fx, const hfx_
 hfx_effect *hfx_effect_clone(const hfx_effect *src) {
     if (!src) return NULL;
     hfx_effect *e = instance_create(src->sh, src);
+    if (e && src->path && !(e->path = dup_string(src->path))) { /* a clone reloads from the same file */
+        instance_free(e);
+        e = NULL;
+    }
     if (!e) {
         hfx_rt_fail(src->dev, HFX_ERR_MEMORY, "out of memory");
         return NULL;

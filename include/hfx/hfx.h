@@ -78,6 +78,12 @@ hfx_device *hfx_effect_device(const hfx_effect *fx);              /* Effect.Grap
 const char *hfx_effect_warnings(const hfx_effect *fx);           /* load-time notes (unsupported states) or "" */
 int hfx_effect_begin(hfx_effect *fx);                            /* sync, and save the GL state the effect touches */
 int hfx_effect_end(hfx_effect *fx);                              /* restore what begin saved */
+/* Compiles the effect again (from path, or the file it was loaded from when path is NULL) and, on
+ * success, replaces its code in place: parameters whose name, class, type, rows, columns, elements
+ * (and member names, for structs) are unchanged keep their values and textures; the current
+ * technique is kept by name. On failure nothing changes and errors (may be NULL; hfx_free) says why.
+ * Parameter, technique, pass and annotation handles taken before a successful reload are invalid. */
+int hfx_effect_reload(hfx_effect *fx, const char *path, const hfx_load_options *opt, char **errors);
 
 /* Parameters: Parameters["name"], Elements[i], StructureMembers["name"]. */
 hfx_param *hfx_effect_param(hfx_effect *fx, const char *name);
