@@ -4,6 +4,7 @@
 
 #include "gl_context.h"
 #include "internal.h"
+#include "rt_check.h"
 #include "rt_support.h"
 #include "test.h"
 
@@ -26,15 +27,6 @@ static void draw_full(void) {
 static void clear(float r, float gg, float b, float a) {
     g.ClearColor(r, gg, b, a);
     g.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-}
-
-static void check_pixel(int x, int y, int r, int gg, int b, int a) {
-    unsigned char px[4];
-    test_gl_read(gl, x, y, px);
-    CHECK_NEAR(px[0], r, 1);
-    CHECK_NEAR(px[1], gg, 1);
-    CHECK_NEAR(px[2], b, 1);
-    CHECK_NEAR(px[3], a, 1);
 }
 
 static hfx_effect *load(hfx_fx_effect *cfx) {
@@ -71,11 +63,11 @@ static void test_uniform_colour_pixels(void) {
     clear(0, 0, 0, 0);
     CHECK_INT(hfx_pass_apply(pass), HFX_OK);
     draw_full();
-    check_pixel(3, 4, 255, 128, 64, 255); /* 0.5 * 255 = 127.5 and 0.25 * 255 = 63.75 round up */
+    rt_check_pixel(gl, 3, 4, 255, 128, 64, 255); /* 0.5 * 255 = 127.5 and 0.25 * 255 = 63.75 round up */
     CHECK_INT(hfx_param_set_floats(hfx_effect_param(fx, "Color"), (float[4]){0, 1, 0, 1}, 4), HFX_OK);
     CHECK_INT(hfx_pass_apply(pass), HFX_OK);
     draw_full();
-    check_pixel(10, 12, 0, 255, 0, 255);
+    rt_check_pixel(gl, 10, 12, 0, 255, 0, 255);
     CHECK_INT(hfx_pass_attribute_location(pass, "POSITION0"), 0);
     CHECK_INT(hfx_pass_attribute_location(pass, "position"), 0);
     CHECK_INT(hfx_pass_attribute_location(pass, "TEXCOORD0"), -1);
@@ -108,9 +100,9 @@ static void test_matrix_upload(void) {
     CHECK_INT(hfx_pass_apply(hfx_technique_pass(hfx_effect_current_technique(fx), 0)), HFX_OK);
     draw_full();
     /* NDC x 0.5 is column 12 of 16; y 0 is between rows 7 and 8 */
-    check_pixel(12, 8, 255, 255, 255, 255);
-    check_pixel(8, 8, 0, 0, 0, 255);   /* NDC x 0.06: left of the quad */
-    check_pixel(12, 2, 0, 0, 0, 255);  /* NDC y 0.69: above it */
+    rt_check_pixel(gl, 12, 8, 255, 255, 255, 255);
+    rt_check_pixel(gl, 8, 8, 0, 0, 0, 255);   /* NDC x 0.06: left of the quad */
+    rt_check_pixel(gl, 12, 2, 0, 0, 0, 255);  /* NDC y 0.69: above it */
     float got[16];
     g.GetUniformfv(current_program(), g.GetUniformLocation(current_program(), "WorldViewProj"), got);
     for (int k = 0; k < 16; k++) CHECK_NEAR(got[k], xform[k], 0); /* uploaded as given, transpose = GL_FALSE */
@@ -169,7 +161,7 @@ static void test_struct_array_and_int_uniforms(void) {
     CHECK_INT(hfx_pass_apply(hfx_technique_pass(hfx_effect_current_technique(fx), 0)), HFX_OK);
     draw_full();
     /* r = 0.5 * 0.5 + 0.5 * 1 = 0.75; g = 1 * 0.5; b = 3 / 4; a = 1 * 0.5 */
-    check_pixel(5, 5, 191, 128, 191, 128);
+    rt_check_pixel(gl, 5, 5, 191, 128, 191, 128);
     GLuint prog = current_program();
     float pos[3] = {0};
     g.GetUniformfv(prog, g.GetUniformLocation(prog, "spots[0].Posicion"), pos);
@@ -266,7 +258,7 @@ static void test_one_changed_float_of_fifty(void) {
     CHECK_INT(tc_count("glUniform1fv"), 1);
     clear(0, 0, 0, 0);
     draw_full();
-    check_pixel(1, 1, 36, 0, 0, 255); /* 2 * (17 + 1) = 36 */
+    rt_check_pixel(gl, 1, 1, 36, 0, 0, 255); /* 2 * (17 + 1) = 36 */
     hfx_effect_destroy(fx);
     hfx_device_destroy(cdev);
     g.UseProgram(0);
@@ -283,17 +275,17 @@ static void test_clones_share_programs(void) {
     clear(0, 0, 0, 0);
     hfx_pass_apply(pa);
     draw_full();
-    check_pixel(0, 0, 255, 0, 0, 255);
+    rt_check_pixel(gl, 0, 0, 255, 0, 0, 255);
     hfx_pass_apply(pb);
     draw_full();
-    check_pixel(0, 0, 0, 0, 255, 255);
+    rt_check_pixel(gl, 0, 0, 0, 0, 255, 255);
     hfx_pass_apply(pa);
     draw_full();
-    check_pixel(0, 0, 255, 0, 0, 255);
+    rt_check_pixel(gl, 0, 0, 255, 0, 0, 255);
     hfx_effect_destroy(a);
     hfx_pass_apply(pb);
     draw_full();
-    check_pixel(0, 0, 0, 0, 255, 255);
+    rt_check_pixel(gl, 0, 0, 0, 0, 255, 255);
     hfx_effect_destroy(b);
 }
 
@@ -398,7 +390,7 @@ static void test_reapply_and_sync(void) {
     CHECK_INT(current_program(), prog_a);
     clear(0, 0, 0, 0);
     draw_full();
-    check_pixel(2, 2, 255, 0, 0, 255);
+    rt_check_pixel(gl, 2, 2, 255, 0, 0, 255);
     g.UseProgram(0); /* behind hfx's back: trusted shadow, so not seen... */
     tc_reset();
     CHECK_INT(hfx_pass_apply(pa), HFX_OK);

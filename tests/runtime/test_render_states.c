@@ -2,6 +2,7 @@
  * checked on rendered pixels (culling by winding, blending with computed results). */
 #include "gl_context.h"
 #include "internal.h"
+#include "rt_check.h"
 #include "rt_support.h"
 #include "test.h"
 
@@ -15,15 +16,6 @@ static hfx_device *dev;
 static void clear(float r, float gg, float b, float a) {
     g.ClearColor(r, gg, b, a);
     g.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-}
-
-static void check_pixel(int x, int y, int r, int gg, int b, int a) {
-    unsigned char px[4];
-    test_gl_read(gl, x, y, px);
-    CHECK_NEAR(px[0], r, 1);
-    CHECK_NEAR(px[1], gg, 1);
-    CHECK_NEAR(px[2], b, 1);
-    CHECK_NEAR(px[3], a, 1);
 }
 
 static GLint geti(GLenum e) {
@@ -171,7 +163,7 @@ static void test_blending(void) {
     clear(0, 0.4f, 0.8f, 1);
     apply(fx);
     draw(full, 6);
-    check_pixel(4, 4, 64, 77, 153, 207); /* 63.75, 76.5, 153, 0.0625 + 0.75 = 207.2 */
+    rt_check_pixel(gl, 4, 4, 64, 77, 153, 207); /* 63.75, 76.5, 153, 0.0625 + 0.75 = 207.2 */
     hfx_effect_destroy(fx);
     fresh();
     /* alpha apart: Zero * src + One * dest keeps the cleared alpha */
@@ -180,7 +172,7 @@ static void test_blending(void) {
     clear(0, 0.4f, 0.8f, 0.5f);
     apply(fx);
     draw(full, 6);
-    check_pixel(4, 4, 64, 77, 153, 128);
+    rt_check_pixel(gl, 4, 4, 64, 77, 153, 128);
     hfx_effect_destroy(fx);
     fresh();
     /* RevSubtract: dest - src * factor; factor (64, 32, 0, 128) / 255 */
@@ -189,7 +181,7 @@ static void test_blending(void) {
     clear(0.5f, 0.5f, 0.5f, 1);
     apply(fx);
     draw(full, 6);
-    check_pixel(4, 4, 64, 96, 128, 127); /* 127.5 - 64, 127.5 - 32, 127.5 - 0, 255 - 128 */
+    rt_check_pixel(gl, 4, 4, 64, 96, 128, 127); /* 127.5 - 64, 127.5 - 32, 127.5 - 0, 255 - 128 */
     float bc[4];
     g.GetFloatv(GL_BLEND_COLOR, bc);
     CHECK_NEAR(bc[0], 64 / 255.0, 1e-6);
@@ -203,7 +195,7 @@ static void test_blending(void) {
     clear(0, 0.4f, 0.8f, 1);
     apply(fx);
     draw(full, 6);
-    check_pixel(4, 4, 64, 77, 153, 207);
+    rt_check_pixel(gl, 4, 4, 64, 77, 153, 207);
     CHECK_INT(geti(GL_BLEND_DST_RGB), GL_ONE_MINUS_SRC_ALPHA);
     hfx_effect_destroy(fx);
 }
@@ -370,11 +362,11 @@ static void test_alpha_test_emulation(void) {
     clear(0, 0, 0, 1);
     apply(fx);
     draw(full, 6);
-    check_pixel(3, 3, 0, 0, 0, 255);
+    rt_check_pixel(gl, 3, 3, 0, 0, 0, 255);
     set_color(fx, 1, 1, 1, 0.6f);
     apply(fx);
     draw(full, 6);
-    check_pixel(3, 3, 255, 255, 255, 153);
+    rt_check_pixel(gl, 3, 3, 255, 255, 255, 153);
     GLint prog = geti(GL_CURRENT_PROGRAM), func = 0;
     float ref = 0;
     g.GetUniformiv((GLuint)prog, g.GetUniformLocation((GLuint)prog, "hfx_alpha_func"), &func);
@@ -528,7 +520,7 @@ static void test_sampler_states(void) {
     GLuint vbo, vao = tgl_triangles(&g, full, 6, &vbo);
     clear(0, 0, 0, 0);
     g.DrawArrays(GL_TRIANGLES, 0, 6);
-    check_pixel(8, 8, 255, 0, 0, 255);
+    rt_check_pixel(gl, 8, 8, 255, 0, 0, 255);
     g.DeleteBuffers(1, &vbo);
     g.DeleteVertexArrays(1, &vao);
     CHECK_INT(g.GetError(), GL_NO_ERROR);
@@ -597,7 +589,7 @@ static void test_1d_textures_bind_as_2d(void) {
     CHECK_INT(geti(GL_TEXTURE_BINDING_2D), t);
     clear(0, 0, 0, 0);
     draw(full, 6);
-    check_pixel(8, 8, 255, 128, 0, 255); /* u = 0.9: the second texel (Point filtering by default) */
+    rt_check_pixel(gl, 8, 8, 255, 128, 0, 255); /* u = 0.9: the second texel (Point filtering by default) */
     hfx_effect_destroy(fx);
     g.DeleteTextures(1, &t);
     fresh();

@@ -4,6 +4,7 @@
 #include "files.h"
 #include "gl_context.h"
 #include "internal.h"
+#include "rt_check.h"
 #include "rt_support.h"
 #include "test.h"
 
@@ -49,15 +50,6 @@ static void draw_quad(hfx_pass *pass) {
     g.DeleteVertexArrays(1, &vao);
 }
 
-static void check_pixel(int x, int y, int r, int gg, int b, int a) {
-    unsigned char px[4];
-    test_gl_read(gl, x, y, px);
-    CHECK_NEAR(px[0], r, 1);
-    CHECK_NEAR(px[1], gg, 1);
-    CHECK_NEAR(px[2], b, 1);
-    CHECK_NEAR(px[3], a, 1);
-}
-
 static void test_every_seed_loads_and_applies(void) {
     for (size_t i = 0; i < sizeof seeds / sizeof *seeds; i++) {
         char *errors = NULL;
@@ -96,8 +88,8 @@ static void test_fxcomposer_empty_renders_white(void) {
     CHECK_INT(g.IsEnabled(GL_CULL_FACE), GL_FALSE); /* CullMode = None */
     draw_quad(pass);
     hfx_effect_end(fx);
-    check_pixel(8, 8, 255, 255, 255, 255);
-    check_pixel(0, 15, 255, 255, 255, 255);
+    rt_check_pixel(gl, 8, 8, 255, 255, 255, 255);
+    rt_check_pixel(gl, 0, 15, 255, 255, 255, 255);
     hfx_effect_destroy(fx);
 }
 
@@ -122,11 +114,11 @@ static void test_ambient_annotations_and_colour(void) {
     hfx_effect_begin(fx);
     hfx_pass_apply(pass);
     draw_quad(pass);
-    check_pixel(8, 8, 13, 13, 13, 255); /* 0.05 * 255 = 12.75 */
+    rt_check_pixel(gl, 8, 8, 13, 13, 13, 255); /* 0.05 * 255 = 12.75 */
     CHECK_INT(hfx_param_set_floats(color, (float[4]){1, 0.5f, 0, 1}, 4), HFX_OK);
     hfx_pass_apply(pass);
     draw_quad(pass);
-    check_pixel(8, 8, 255, 128, 0, 255);
+    rt_check_pixel(gl, 8, 8, 255, 128, 0, 255);
     hfx_effect_end(fx);
     hfx_effect_destroy(fx);
 }
@@ -155,7 +147,7 @@ static void test_packed_and_separate_render_alike(void) {
         CHECK_INT(hfx_pass_apply(pass), HFX_OK);
         draw_quad(pass);
         hfx_effect_end(fx[k]);
-        check_pixel(8, 8, 51, 102, 153, 255);
+        rt_check_pixel(gl, 8, 8, 51, 102, 153, 255);
     }
     hfx_effect_destroy(fx[0]);
     hfx_effect_destroy(fx[1]);
@@ -250,8 +242,8 @@ static void test_tutorial0_samples_its_texture(void) {
     CHECK_INT(v, GL_CLAMP_TO_EDGE);
     g.DrawArrays(GL_TRIANGLES, 0, 6);
     hfx_effect_end(fx);
-    check_pixel(0, H - 1, 255, 0, 0, 255);  /* bottom-left: u, v near 0 */
-    check_pixel(W - 2, 1, 255, 255, 255, 255); /* near the top-right: u, v > 0.75 */
+    rt_check_pixel(gl, 0, H - 1, 255, 0, 0, 255);  /* bottom-left: u, v near 0 */
+    rt_check_pixel(gl, W - 2, 1, 255, 255, 255, 255); /* near the top-right: u, v > 0.75 */
     CHECK_INT(g.GetError(), GL_NO_ERROR);
     g.DeleteBuffers(1, &vbo);
     g.DeleteVertexArrays(1, &vao);
