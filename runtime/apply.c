@@ -114,8 +114,8 @@ static inline void apply_program(hfx_device *dev, hfx_rt_program *prog) {
     if (prog->pos_fixup_serial != dev->pos_fixup_serial || prog->alpha_test) hfx_rt_program_extras(dev, prog);
 }
 
-/* A pass with render states or texture bindings. */
-static __attribute__((noinline)) int apply_full(hfx_effect *fx, const hfx_rt_pass *rp) {
+/* Everything a pass sets: render states, program, uploads, textures. */
+static int apply_full(hfx_effect *fx, const hfx_rt_pass *rp) {
     if (rp->render_state_count) hfx_rs_apply(fx, rp); /* first: the alpha test reads these states */
     hfx_rt_program *prog = rp->prog;
     apply_program(fx->dev, prog);
@@ -124,28 +124,20 @@ static __attribute__((noinline)) int apply_full(hfx_effect *fx, const hfx_rt_pas
     return HFX_OK;
 }
 
-/* A pass other than the last one applied: front face, program, its extras, then uploads. */
+/* A pass other than the last one applied; a program-only one becomes the device's last. */
 static __attribute__((noinline)) int apply_first(hfx_pass *p) {
-    hfx_effect *fx = p->fx;
-    hfx_device *dev = fx->dev;
-    const hfx_rt_pass *rp = p->rt;
+    hfx_device *dev = p->fx->dev;
     dev->applied = NULL;
-    if (!rp->direct) return apply_full(fx, rp);
-    hfx_rt_program *prog = rp->prog;
-    apply_program(dev, prog);
-    if (prog->memo_seen != fx->log_len || prog->memo_effect != fx->id) hfx_rt_upload_changed(fx, prog);
-    dev->applied = p;
+    apply_full(p->fx, p->rt);
+    if (p->rt->direct) dev->applied = p;
     return HFX_OK;
 }
 
-/* One changed packed parameter whose rows fill their registers (float4, float4x4, float3x4:
- * the values' layout is the registers'), all of them kept by GL: copied and sent in place. */
-static inline int upload_one_reg(hfx_effect *fx, hfx_rt_program *prog, const hfx_slot *s) {
-    if (s->reg_cols != 4 || s->reg + s->reg_rows > prog->reg_active) return hfx_rt_upload_reg(fx, prog, s);
-    float *dst = prog->regs + 4 * (size_t)s->reg;
-    const uint32_t *src = fx->values + s->up.offset;
-    for (uint32_t i = 0; i < s->reg_rows; i++) memcpy(dst + 4 * i, src + 4 * i, 16);
-    prog->reg_call(prog->reg_locs[s->reg], (GLsizei)s->reg_rows, dst);
+/* One changed packed parameter: its registers alone. Out of line, so the float path of
+ * hfx_pass_apply saves no registers. */
+static __attribute__((noinline)) int upload_one_reg(hfx_effect *fx, hfx_rt_program *prog, const hfx_slot *s) {
+    hfx_rt_reg_fill(prog, s, fx->values);
+    hfx_rt_reg_send(prog, (hfx_reg_range){s->reg, s->reg + s->reg_rows - 1u});
     return HFX_OK;
 }
 
@@ -177,29 +169,28 @@ static const GLenum unit_targets[4] = {GL_TEXTURE_BINDING_1D, GL_TEXTURE_BINDING
                                        GL_TEXTURE_BINDING_CUBE_MAP};
 static const GLenum bind_targets[4] = {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP};
 
+void hfx_rt_save_units(hfx_device *dev, hfx_saved *s, uint32_t mask) {
+    for (int u = 0; u < HFX_MAX_UNITS; u++) {
+        if (!(mask & (1u << u))) continue;
+        dev->gl.ActiveTexture(GL_TEXTURE0 + (GLenum)u);
+        for (int t = 0; t < 4; t++) dev->gl.GetIntegerv(unit_targets[t], &s->units[u].tex[t]);
+        dev->gl.GetIntegerv(GL_SAMPLER_BINDING, &s->units[u].sampler);
+    }
+    dev->gl.ActiveTexture(dev->active_unit);
+}
+
+/* The shadow is read back first (hfx_device_sync), so the snapshot is the shadow. */
 int hfx_effect_begin(hfx_effect *fx) {
     if (!fx) return HFX_ERR_NULL;
     hfx_device *dev = fx->dev;
     hfx_saved *s = &fx->saved;
     if (s->active) /* a second snapshot would make end restore the effect's own states */
         return hfx_rt_fail(dev, HFX_ERR_NOT_FOUND, "hfx_effect_begin twice without hfx_effect_end (hfx_device_sync re-reads GL state)");
-    dev->applied = NULL;
-    hfx_rt_read_state(dev, &s->state);
-    dev->state = s->state;
-    hfx_rt_read_target(dev);
-    dev->gl.GetIntegerv(GL_CURRENT_PROGRAM, &s->program);
-    dev->program = (GLuint)s->program;
-    dev->gl.GetIntegerv(GL_ACTIVE_TEXTURE, &s->active_unit);
-    for (int u = 0; u < HFX_MAX_UNITS; u++) {
-        if (!(fx->sh->unit_mask & (1u << u))) continue;
-        dev->gl.ActiveTexture(GL_TEXTURE0 + (GLenum)u);
-        for (int t = 0; t < 4; t++) dev->gl.GetIntegerv(unit_targets[t], &s->units[u].tex[t]);
-        dev->gl.GetIntegerv(GL_SAMPLER_BINDING, &s->units[u].sampler);
-        dev->units[u].target = 0; /* unknown: rebind on first use */
-        dev->units[u].sampler = (GLuint)s->units[u].sampler;
-    }
-    dev->gl.ActiveTexture((GLenum)s->active_unit);
-    dev->active_unit = (GLenum)s->active_unit;
+    hfx_device_sync(dev);
+    s->state = dev->state;
+    s->program = (GLint)dev->program;
+    s->active_unit = (GLint)dev->active_unit;
+    hfx_rt_save_units(dev, s, fx->sh->unit_mask);
     s->active = 1;
     return HFX_OK;
 }

@@ -289,6 +289,9 @@ void hfx_rt_write_state(hfx_device *dev, const hfx_glstate *want);
 void hfx_rt_bind_unit(hfx_device *dev, int unit, GLenum target, GLuint texture, GLuint sampler);
 void hfx_rt_read_target(hfx_device *dev);
 
+/* apply.c: reads the textures and samplers GL holds on the units in mask into s->units. */
+void hfx_rt_save_units(hfx_device *dev, hfx_saved *s, uint32_t mask);
+
 /* program.c */
 int hfx_rt_program_build(hfx_shared *sh, uint32_t index, hfx_target target);
 /* Links vs + fs into p->object (fp's attribute locations bound first; NULL for SPIR-V). */
@@ -312,7 +315,7 @@ int hfx_rt_regs_setup(hfx_device *dev, hfx_rt_program *p, uint32_t size, GLint (
 typedef struct hfx_reg_range { uint32_t lo, hi; } hfx_reg_range;
 
 /* Copies a packed parameter's words into its registers, rows padded to 4 components. */
-static inline void hfx_rt_reg_copy(hfx_rt_program *p, const hfx_slot *s, const uint32_t *values, hfx_reg_range *r) {
+static inline void hfx_rt_reg_fill(hfx_rt_program *p, const hfx_slot *s, const uint32_t *values) {
     const uint32_t *src = values + s->up.offset;
     float *dst = p->regs + 4 * (size_t)s->reg;
     if (s->reg_cols == 4 && s->reg_rows == 1) { /* float4 and 4x4 first, in fixed-size copies */
@@ -324,6 +327,11 @@ static inline void hfx_rt_reg_copy(hfx_rt_program *p, const hfx_slot *s, const u
     } else {
         for (uint32_t i = 0; i < s->reg_rows; i++) memcpy(dst + 4 * i, src + i * s->reg_cols, 4 * (size_t)s->reg_cols);
     }
+}
+
+/* The same, adding its registers to the range to send. */
+static inline void hfx_rt_reg_copy(hfx_rt_program *p, const hfx_slot *s, const uint32_t *values, hfx_reg_range *r) {
+    hfx_rt_reg_fill(p, s, values);
     uint32_t last = s->reg + s->reg_rows - 1u;
     if (s->reg < r->lo) r->lo = s->reg;
     if (last > r->hi) r->hi = last;
@@ -335,9 +343,6 @@ static inline void hfx_rt_reg_send(hfx_rt_program *p, hfx_reg_range r) {
     uint32_t hi = r.hi < p->reg_active ? r.hi : p->reg_active - 1;
     p->reg_call(p->reg_locs[r.lo], (GLsizei)(hi - r.lo + 1), p->regs + 4 * (size_t)r.lo);
 }
-
-/* One changed packed parameter: its registers alone; returns HFX_OK (Apply ends in it). */
-int hfx_rt_upload_reg(hfx_effect *fx, hfx_rt_program *p, const hfx_slot *s);
 
 /* Uploads the parameters whose version differs from the one this program holds, visiting only
  * the log entries written since the program last looked when it follows this instance; returns

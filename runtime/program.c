@@ -462,15 +462,6 @@ int hfx_rt_upload_log(hfx_effect *fx, hfx_rt_program *p) {
     return HFX_OK;
 }
 
-int hfx_rt_upload_reg(hfx_effect *fx, hfx_rt_program *p, const hfx_slot *s) {
-    hfx_reg_range regs = {UINT32_MAX, 0};
-    hfx_rt_reg_copy(p, s, fx->values, &regs);
-    if (s->reg >= p->reg_active) return HFX_OK;
-    uint32_t rows = p->reg_active - s->reg < s->reg_rows ? p->reg_active - s->reg : s->reg_rows;
-    p->reg_call(p->reg_locs[s->reg], (GLsizei)rows, p->regs + 4 * (size_t)s->reg);
-    return HFX_OK;
-}
-
 /* hfx_pos_fixup and the alpha test's uniforms, for programs that declare them. */
 void hfx_rt_program_extras(hfx_device *dev, hfx_rt_program *p) {
     if (p->pos_fixup_serial != dev->pos_fixup_serial) {

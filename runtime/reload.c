@@ -70,23 +70,11 @@ static void keep_technique(hfx_effect *to, const hfx_effect *from) {
  * bound are kept in the new mask so end still puts them back. The new shared part is this
  * instance's alone, so widening its mask changes no one else. */
 static void keep_saved_units(hfx_effect *to, const hfx_effect *from) {
-    static const GLenum bindings[4] = {GL_TEXTURE_BINDING_1D, GL_TEXTURE_BINDING_2D, GL_TEXTURE_BINDING_3D,
-                                       GL_TEXTURE_BINDING_CUBE_MAP};
-    hfx_device *dev = to->dev;
     to->saved = from->saved;
     if (!from->saved.active) return;
     uint32_t fresh = to->sh->unit_mask & ~from->sh->unit_mask;
     to->sh->unit_mask |= from->sh->unit_mask;
-    if (!fresh) return;
-    GLint active = 0;
-    dev->gl.GetIntegerv(GL_ACTIVE_TEXTURE, &active);
-    for (int u = 0; u < HFX_MAX_UNITS; u++) {
-        if (!(fresh & (1u << u))) continue;
-        dev->gl.ActiveTexture(GL_TEXTURE0 + (GLenum)u);
-        for (int t = 0; t < 4; t++) dev->gl.GetIntegerv(bindings[t], &to->saved.units[u].tex[t]);
-        dev->gl.GetIntegerv(GL_SAMPLER_BINDING, &to->saved.units[u].sampler);
-    }
-    dev->gl.ActiveTexture((GLenum)active);
+    if (fresh) hfx_rt_save_units(to->dev, &to->saved, fresh);
 }
 
 /* Handles point back at their effect: after the swap they must name the address they live in. */
