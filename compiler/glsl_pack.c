@@ -39,27 +39,21 @@ static void reg_comps(gp *p, uint32_t r, unsigned n) {
     if (n < 4) sb_printf(p->out, ".%.*s", (int)n, "xyzw");
 }
 
-/* The value of a packed parameter of type t whose first register is reg. floatRxC (R, C > 1)
- * is matRxC of R columns, column i = register reg + i; a 1xC or Rx1 matrix is a GLSL vector of
- * its row-major components; a scalar or vector is the first components of its register. */
+/* The value of a packed parameter of type t whose first register is reg. A matrix of R > 1 rows
+ * is built from R registers of C components each: matRxC's columns, or the components of the
+ * vector an Rx1 matrix is in GLSL; a scalar, a vector or a 1xC matrix is its register's first
+ * components. */
 static void packed_value(gp *p, const hfx_type *t, uint32_t reg) {
-    if (glsl_is_matrix(t)) {
-        sb_printf(p->out, "%s(", glsl_type(p, t));
-        for (uint32_t i = 0; i < t->rows; i++) {
-            if (i) sb_put(p->out, ", ");
-            reg_comps(p, reg + i, t->cols);
-        }
-        sb_put(p->out, ")");
-    } else if (t->kind == TY_MATRIX && t->cols == 1 && t->rows > 1) {
-        sb_printf(p->out, "%s(", glsl_type(p, t));
-        for (uint32_t i = 0; i < t->rows; i++) {
-            if (i) sb_put(p->out, ", ");
-            reg_comps(p, reg + i, 1);
-        }
-        sb_put(p->out, ")");
-    } else {
+    if (t->kind != TY_MATRIX || t->rows == 1) {
         reg_comps(p, reg, hfx_type_components(t));
+        return;
     }
+    sb_printf(p->out, "%s(", glsl_type(p, t));
+    for (uint32_t i = 0; i < t->rows; i++) {
+        if (i) sb_put(p->out, ", ");
+        reg_comps(p, reg + i, t->cols);
+    }
+    sb_put(p->out, ")");
 }
 
 void glsl_init_packed(gp *p) {
