@@ -8,11 +8,11 @@
 #include <string.h>
 #include <time.h>
 
-#include "ast.h"
-#include "check.h"
+#include "parse/ast.h"
+#include "check/check.h"
 #include "files.h"
-#include "token.h"
-#include "types.h"
+#include "pp/token.h"
+#include "base/types.h"
 #include "bench.h"
 
 /* One pass over every source; returns diagnostics seen (kept so nothing is optimised away). */

@@ -12,10 +12,10 @@
 #include <string.h>
 #include <time.h>
 
-#include "ast.h"
+#include "parse/ast.h"
 #include "files.h"
-#include "token.h"
-#include "types.h"
+#include "pp/token.h"
+#include "base/types.h"
 #include "bench.h"
 
 /* The baseline: touch every byte once (count newlines and non-blank bytes). */

@@ -6,8 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "check.h"
-#include "intrinsics.h"
+#include "check/check.h"
+#include "check/intrinsics.h"
 
 ckt_result *ckt_run(const char *src) {
     ckt_result *r = calloc(1, sizeof *r);

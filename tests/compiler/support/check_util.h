@@ -6,7 +6,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 
-#include "ast.h"
+#include "parse/ast.h"
 
 typedef struct ckt_result {
     hfx_arena arena;

@@ -7,8 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "ast.h"
-#include "token.h"
+#include "parse/ast.h"
+#include "pp/token.h"
 
 typedef struct tp_result {
     hfx_arena arena;

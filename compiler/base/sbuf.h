@@ -1,0 +1,15 @@
+/* sbuf.h: a growable, NUL-terminated text buffer. A failed allocation sets `oom` and later
+ * writes do nothing, so callers check once at the end. */
+#ifndef HFX_SBUF_H
+#define HFX_SBUF_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+typedef struct sbuf { char *d; size_t len, cap; bool oom; } sbuf;
+
+void sb_put(sbuf *b, const char *s);                    /* appends a string */
+void sb_putn(sbuf *b, const char *s, size_t n);         /* appends n bytes of s */
+void sb_printf(sbuf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3))); /* appends formatted text */
+
+#endif

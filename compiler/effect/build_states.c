@@ -1,0 +1,389 @@
+/* build_states.c: sampler_state blocks, techniques and passes. Every state assignment is
+ * resolved against the D3D9 state table (common/states.h) into an hfx_fx_state; the shader
+ * states of a pass become one program through the codegen. */
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+#include "effect/build_int.h"
+
+static uint32_t add_state(hfx_builder *b, const hfx_fx_state *st) {
+    hfx_fx_effect *fx = b->fx;
+    if (!HFX_BUILD_GROW(b, fx->states, fx->state_count, b->state_cap)) return HFX_NONE;
+    fx->states[fx->state_count] = *st;
+    return fx->state_count++;
+}
+
+static const char *param_type_name(hfx_builder *b, uint32_t p) {
+    return hfx_type_name(b->arena, b->param_types[p]);
+}
+
+static bool is_object_param(hfx_builder *b, uint32_t p, hfx_type_kind kind) {
+    const hfx_type *ty = hfx_build_innermost(b->param_types[p], NULL);
+    return ty && ty->kind == kind;
+}
+
+/* `Texture = <t>`, `(t)`, `t`; a texture or sampler state's value must name such a param. */
+static bool object_value(hfx_builder *b, const hfx_state_info *info, const hfx_expr *v, hfx_fx_state *out) {
+    hfx_type_kind want = info->kind == HFX_SV_TEXTURE ? TY_TEXTURE : TY_SAMPLER;
+    out->kind = HFX_FX_VALUE_PARAM;
+    out->ref = HFX_NONE;
+    if (v->kind == EX_NULL || (v->kind == EX_INT && v->ival == 0)) return true;
+    uint32_t p = hfx_build_param_of(b, v);
+    if (p == HFX_NONE) {
+        if (v->name) hfx_error(b->diags, v->loc, X_UNDECLARED, "undeclared identifier '%s'", v->name);
+        else hfx_error(b->diags, v->loc, X_TYPE_MISMATCH, "%s expects a %s parameter", info->name,
+                       want == TY_TEXTURE ? "texture" : "sampler");
+        return false;
+    }
+    if (!is_object_param(b, p, want)) {
+        hfx_error(b->diags, v->loc, X_TYPE_MISMATCH, "%s expects a %s, '%s' is %s", info->name,
+                  want == TY_TEXTURE ? "texture" : "sampler", b->fx->params[p].name, param_type_name(b, p));
+        return false;
+    }
+    out->ref = p;
+    return true;
+}
+
+/* Folds constant components into the state's value by the kind of value it takes. */
+static bool constant_value(hfx_builder *b, const hfx_state_info *info, const hfx_cvec *c, hfx_fx_state *out) {
+    switch (info->kind) {
+    case HFX_SV_BOOL:
+        out->kind = HFX_FX_VALUE_INT;
+        out->i = c->v[0] != 0.0;
+        return true;
+    case HFX_SV_FLOAT:
+        out->kind = HFX_FX_VALUE_FLOAT;
+        out->count = 1;
+        out->f[0] = (float)c->v[0];
+        return true;
+    case HFX_SV_COLOR: case HFX_SV_VECTOR:
+        if (info->kind == HFX_SV_COLOR && c->n == 1 && c->integral) break; /* a D3DCOLOR DWORD */
+        out->kind = HFX_FX_VALUE_FLOAT;
+        out->count = c->n < 4 ? c->n : 4;
+        for (uint32_t i = 0; i < out->count; i++) out->f[i] = (float)c->v[i];
+        return true;
+    case HFX_SV_MATRIX:
+        out->kind = HFX_FX_VALUE_UNSUPPORTED;
+        return true;
+    default:
+        break;
+    }
+    out->kind = HFX_FX_VALUE_INT;
+    double v = c->v[0];
+    out->i = v >= 4294967295.0 ? -1 : v > 2147483647.0 ? (int32_t)(uint32_t)v : v < -2147483648.0 ? INT32_MIN : (int32_t)v;
+    return true;
+}
+
+static bool is_name(const hfx_expr *v) { return v->kind == EX_IDENT || v->kind == EX_STATE_REF; }
+
+/* The value of `Name = value;` for a state that is not a shader. */
+static bool state_value(hfx_builder *b, const hfx_state_info *info, const hfx_expr *v, hfx_fx_state *out) {
+    if (info->kind == HFX_SV_TEXTURE || info->kind == HFX_SV_SAMPLER) return object_value(b, info, v, out);
+    if (v->kind == EX_ASM || v->kind == EX_COMPILE || v->kind == EX_SAMPLER_STATE) {
+        hfx_error(b->diags, v->loc, X_TYPE_MISMATCH, "%s cannot take this value", info->name);
+        return false;
+    }
+    hfx_cvec c = {0};
+    const hfx_state_info *names = info->values || info->kind == HFX_SV_BOOL ? info : NULL;
+    bool folded = hfx_build_eval(b, v, &c, names);
+    bool ok = folded && constant_value(b, info, &c, out);
+    hfx_cvec_free(&c);
+    if (folded) return ok;
+    /* A parameter read when the pass is applied: `ZEnable = <p>;`, `AlphaRef = (p);`. */
+    uint32_t p = is_name(v) || v->kind == EX_INDEX ? hfx_build_param_of(b, v) : HFX_NONE;
+    if (p != HFX_NONE) {
+        const hfx_fx_param *param = &b->fx->params[p];
+        bool numeric = param->klass == HFX_CLASS_SCALAR || param->klass == HFX_CLASS_VECTOR ||
+                       param->klass == HFX_CLASS_MATRIX;
+        if (!numeric || param->elements) {
+            hfx_error(b->diags, v->loc, X_TYPE_MISMATCH, "%s cannot take '%s', which is %s", info->name, param->name,
+                      param_type_name(b, p));
+            return false;
+        }
+        out->kind = HFX_FX_VALUE_PARAM;
+        out->ref = p;
+        return true;
+    }
+    if (is_name(v) && v->name) {
+        hfx_error(b->diags, v->loc, X_UNDECLARED, "undeclared identifier '%s'", v->name);
+        return false;
+    }
+    hfx_warning(b->diags, v->loc, X_UNSUPPORTED, "%s: state expressions that are not constant are not supported",
+                info->name);
+    out->kind = HFX_FX_VALUE_UNSUPPORTED;
+    return true;
+}
+
+/* Looks the state up and checks its [index]. NULL (reported) when unknown. */
+static const hfx_state_info *lookup_state(hfx_builder *b, const hfx_state_assign *sa, uint32_t *index) {
+    const hfx_state_info *info = sa->name ? hfx_state_lookup(sa->name) : NULL;
+    if (!info) {
+        hfx_error(b->diags, sa->loc, X_UNKNOWN_STATE, "unrecognized state '%s'", sa->name ? sa->name : "");
+        return NULL;
+    }
+    *index = 0;
+    if (!sa->index) return info;
+    hfx_cvec c = {0};
+    bool ok = hfx_build_eval(b, sa->index, &c, NULL) && c.integral && c.v[0] >= 0 && c.v[0] <= info->max_index;
+    if (ok) *index = (uint32_t)c.v[0];
+    hfx_cvec_free(&c);
+    if (!ok) {
+        hfx_error(b->diags, sa->index->loc, X_INVALID_SUBSCRIPT, "'%s': state index must be a constant from 0 to %u",
+                  info->name, info->max_index);
+        return NULL;
+    }
+    return info;
+}
+
+/* --- samplers ------------------------------------------------------------------------------ */
+
+static hfx_fx_dim sampler_dim(const hfx_type *ty) {
+    switch (ty->dim) {
+    case DIM_1D: return HFX_FX_DIM_1D;
+    case DIM_3D: return HFX_FX_DIM_3D;
+    case DIM_CUBE: return HFX_FX_DIM_CUBE;
+    default: return HFX_FX_DIM_2D;
+    }
+}
+
+static void sampler_block(hfx_builder *b, hfx_fx_sampler *s, const hfx_expr *block) {
+    s->first_state = b->fx->state_count;
+    for (uint32_t i = 0; i < block->state_count; i++) {
+        const hfx_state_assign *sa = &block->states[i];
+        uint32_t index;
+        const hfx_state_info *info = lookup_state(b, sa, &index);
+        if (!info || !sa->value) continue;
+        hfx_fx_state st = {.id = info->id, .index = index, .line = sa->loc.line, .col = sa->loc.col};
+        if (info->scope == HFX_SS_TEXTURE) {
+            if (object_value(b, info, sa->value, &st)) s->texture_param = st.ref;
+            continue;
+        }
+        if (info->scope != HFX_SS_SAMPLER) {
+            hfx_error(b->diags, sa->loc, X_UNKNOWN_STATE, "'%s' is not a sampler state", info->name);
+            continue;
+        }
+        if (state_value(b, info, sa->value, &st)) add_state(b, &st);
+    }
+    s->state_count = b->fx->state_count - s->first_state;
+}
+
+/* The sampler_state block initializing element `e` of a sampler (array) param, or NULL. */
+static const hfx_expr *sampler_init(const hfx_decl *d, uint32_t e, bool element) {
+    const hfx_expr *init = d ? d->init : NULL;
+    if (!init) return NULL;
+    if (element && init->kind == EX_INIT_LIST) init = e < init->arg_count ? init->args[e] : NULL;
+    return init && init->kind == EX_SAMPLER_STATE ? init : NULL;
+}
+
+static void add_sampler(hfx_builder *b, uint32_t p, const hfx_expr *block) {
+    hfx_fx_effect *fx = b->fx;
+    if (!HFX_BUILD_GROW(b, fx->samplers, fx->sampler_count, b->sampler_cap)) return;
+    hfx_fx_sampler *s = &fx->samplers[fx->sampler_count];
+    s->param = p;
+    s->texture_param = HFX_NONE;
+    s->dim = sampler_dim(hfx_build_innermost(b->param_types[p], NULL));
+    s->first_state = fx->state_count;
+    fx->params[p].sampler = fx->sampler_count++;
+    if (block) sampler_block(b, &fx->samplers[fx->params[p].sampler], block);
+}
+
+bool hfx_build_samplers(hfx_builder *b) {
+    hfx_fx_effect *fx = b->fx;
+    for (uint32_t p = 0; p < fx->param_count; p++) {
+        const hfx_type *ty = b->param_types[p];
+        if (!ty || ty->kind != TY_SAMPLER) continue;
+        hfx_fx_param *param = &fx->params[p];
+        bool element = param->parent != HFX_NONE;
+        uint32_t top = element ? param->parent : p;
+        if (element && fx->params[top].parent != HFX_NONE) {
+            add_sampler(b, p, NULL); /* a sampler inside a struct: no initializer to read */
+            continue;
+        }
+        uint32_t e = element ? p - fx->params[top].first_child : 0;
+        add_sampler(b, p, sampler_init(b->param_decls[top], e, element));
+    }
+    return !b->failed_alloc;
+}
+
+/* --- shaders and programs ------------------------------------------------------------------ */
+
+/* Follows a shader state's value to its `compile` expression: through shader variables and
+ * constant indices into shader arrays. 1 found, 0 NULL (no shader), -1 reported. */
+static int shader_compile(hfx_builder *b, const hfx_expr *v, const hfx_expr **out, int depth) {
+    *out = NULL;
+    if (!v || depth > 16) return -1;
+    switch (v->kind) {
+    case EX_COMPILE: *out = v; return 1;
+    case EX_NULL: return 0;
+    case EX_INT: if (v->ival == 0) return 0; break;
+    case EX_IDENT: case EX_STATE_REF: {
+        const hfx_decl *d = v->kind == EX_IDENT && v->sym ? v->sym : hfx_build_global(b, v->name);
+        if (!d) {
+            hfx_error(b->diags, v->loc, X_UNDECLARED, "undeclared identifier '%s'", v->name ? v->name : "");
+            return -1;
+        }
+        if (!d->init) return 0;
+        return shader_compile(b, d->init, out, depth + 1);
+    }
+    case EX_INDEX: {
+        if (v->arg_count != 2) break;
+        hfx_cvec c = {0};
+        bool constant = hfx_build_eval(b, v->args[1], &c, NULL) && c.integral;
+        int64_t i = constant ? (int64_t)c.v[0] : -1;
+        hfx_cvec_free(&c);
+        if (!constant) {
+            hfx_error(b->diags, v->args[1]->loc, X_UNSUPPORTED,
+                      "a shader array indexed by a non-constant expression is not supported");
+            return -1;
+        }
+        const hfx_expr *arr = v->args[0];
+        const hfx_decl *d = arr->kind == EX_IDENT && arr->sym ? arr->sym : hfx_build_global(b, arr->name);
+        const hfx_expr *init = d ? d->init : NULL;
+        if (!init || init->kind != EX_INIT_LIST || i < 0 || i >= init->arg_count) {
+            hfx_error(b->diags, v->loc, X_INVALID_SUBSCRIPT, "shader array index %lld is out of bounds", (long long)i);
+            return -1;
+        }
+        return shader_compile(b, init->args[i], out, depth + 1);
+    }
+    case EX_ASM:
+        hfx_warning(b->diags, v->loc, X_UNSUPPORTED, "asm shaders are not supported; the pass sets no shader");
+        return -1;
+    default: break;
+    }
+    hfx_error(b->diags, v->loc, X_TYPE_MISMATCH, "a shader state takes compile, NULL or a shader variable");
+    return -1;
+}
+
+static bool same_compile_args(hfx_builder *b, const hfx_expr *x, const hfx_expr *y) {
+    if (x == y) return true;
+    hfx_cvec cx = {0}, cy = {0};
+    bool same = hfx_build_eval(b, x, &cx, NULL) && hfx_build_eval(b, y, &cy, NULL) && cx.n == cy.n &&
+                memcmp(cx.v, cy.v, sizeof *cx.v * cx.n) == 0;
+    hfx_cvec_free(&cx);
+    hfx_cvec_free(&cy);
+    return same;
+}
+
+static bool same_compile(hfx_builder *b, const hfx_expr *x, const hfx_expr *y) {
+    if (x == y) return true;
+    if (!x || !y || !x->name || !y->name || !x->profile || !y->profile) return false;
+    if (strcmp(x->name, y->name) != 0 || strcasecmp(x->profile, y->profile) != 0) return false;
+    if (x->fn != y->fn || x->arg_count != y->arg_count) return false;
+    for (uint32_t i = 0; i < x->arg_count; i++)
+        if (!same_compile_args(b, x->args[i], y->args[i])) return false;
+    return true;
+}
+
+/* The program for a (vs, ps) pair: an earlier identical one, or a new one from the codegen. */
+static uint32_t program_for(hfx_builder *b, const hfx_expr *vs, const hfx_expr *ps, hfx_loc loc) {
+    hfx_fx_effect *fx = b->fx;
+    for (uint32_t i = 0; i < fx->program_count; i++)
+        if (same_compile(b, b->keys[i].vs, vs) && same_compile(b, b->keys[i].ps, ps)) return i;
+    if (!b->cg)
+        b->cg = hfx_codegen_new(b->arena, b->diags, b->types, b->ast, fx, b->targets,
+                                (b->diags->flags & HFXC_PACK_UNIFORMS) != 0); /* the diags carry hfxc_options.flags */
+    if (!b->cg) {
+        hfx_error(b->diags, loc, X_UNSUPPORTED, "the code generator could not start");
+        return HFX_NONE;
+    }
+    hfx_fx_program prog;
+    memset(&prog, 0, sizeof prog);
+    uint32_t errors = b->diags->errors;
+    if (hfx_codegen_program(b->cg, vs, ps, &prog) != 0) {
+        hfx_fx_program_clear(&prog);
+        if (b->diags->errors == errors)
+            hfx_error(b->diags, loc, X_UNSUPPORTED, "code generation failed for this pass");
+        return HFX_NONE;
+    }
+    uint32_t cap = b->program_cap;
+    if (!HFX_BUILD_GROW(b, fx->programs, fx->program_count, b->program_cap)) {
+        hfx_fx_program_clear(&prog);
+        return HFX_NONE;
+    }
+    if (cap != b->program_cap) {
+        hfx_program_key *k = realloc(b->keys, sizeof *k * b->program_cap);
+        if (!k) {
+            b->failed_alloc = true;
+            hfx_fx_program_clear(&prog);
+            return HFX_NONE;
+        }
+        b->keys = k;
+    }
+    b->keys[fx->program_count] = (hfx_program_key){vs, ps};
+    fx->programs[fx->program_count] = prog;
+    return fx->program_count++;
+}
+
+/* --- passes and techniques ----------------------------------------------------------------- */
+
+typedef struct pass_shaders {
+    const hfx_expr *vs, *ps;  /* the compile expressions the pass's shader states lead to */
+    bool any;                 /* a shader state was set (even to NULL) */
+} pass_shaders;
+
+static void pass_state(hfx_builder *b, const hfx_state_assign *sa, pass_shaders *sh) {
+    uint32_t index;
+    const hfx_state_info *info = lookup_state(b, sa, &index);
+    if (!info || !sa->value) return;
+    hfx_fx_state st = {.id = info->id, .index = index, .line = sa->loc.line, .col = sa->loc.col};
+    if (info->kind == HFX_SV_SHADER) {
+        const hfx_expr *c;
+        int found = shader_compile(b, sa->value, &c, 0);
+        bool vertex = strcasecmp(info->name, "VertexShader") == 0;
+        if (found < 0) {
+            st.kind = HFX_FX_VALUE_UNSUPPORTED;
+        } else {
+            if (vertex) sh->vs = c;
+            else sh->ps = c;
+            sh->any = true;
+            st.kind = HFX_FX_VALUE_PROGRAM;
+            st.ref = HFX_NONE; /* set once the pass's program is known */
+        }
+        add_state(b, &st);
+        return;
+    }
+    if (state_value(b, info, sa->value, &st)) add_state(b, &st);
+}
+
+static void build_pass(hfx_builder *b, const hfx_pass_ast *pa, hfx_fx_pass *pass) {
+    pass->name = hfx_build_strdup(b, pa->name ? pa->name : "");
+    pass->annotation_count = hfx_build_annotations(b, pa->annotations, pa->annotation_count, &pass->first_annotation);
+    pass->first_state = b->fx->state_count;
+    pass->program = HFX_NONE;
+    pass_shaders sh = {0};
+    for (uint32_t i = 0; i < pa->state_count; i++) pass_state(b, &pa->states[i], &sh);
+    pass->state_count = b->fx->state_count - pass->first_state;
+    if (sh.any && (sh.vs || sh.ps)) pass->program = program_for(b, sh.vs, sh.ps, pa->loc);
+    for (uint32_t i = 0; i < pass->state_count; i++) {
+        hfx_fx_state *st = &b->fx->states[pass->first_state + i];
+        if (st->kind == HFX_FX_VALUE_PROGRAM) st->ref = pass->program;
+    }
+}
+
+void hfx_build_technique(hfx_builder *b, const hfx_technique_ast *ta) {
+    hfx_fx_effect *fx = b->fx;
+    if (!HFX_BUILD_GROW(b, fx->techniques, fx->technique_count, b->technique_cap)) return;
+    uint32_t t = fx->technique_count++;
+    fx->techniques[t].name = hfx_build_strdup(b, ta->name ? ta->name : "");
+    fx->techniques[t].annotation_count =
+        hfx_build_annotations(b, ta->annotations, ta->annotation_count, &fx->techniques[t].first_annotation);
+    fx->techniques[t].first_pass = fx->pass_count;
+    for (uint32_t i = 0; i < ta->pass_count; i++) {
+        if (!HFX_BUILD_GROW(b, fx->passes, fx->pass_count, b->pass_cap)) return;
+        hfx_fx_pass pass;
+        memset(&pass, 0, sizeof pass);
+        build_pass(b, &ta->passes[i], &pass);
+        /* build_pass may grow other arrays but not passes, so the slot is still there. */
+        fx->passes[fx->pass_count++] = pass;
+        fx->techniques[t].pass_count++;
+    }
+}
+
+bool hfx_build_techniques(hfx_builder *b) {
+    for (uint32_t i = 0; i < b->ast->decl_count; i++) {
+        const hfx_decl *d = b->ast->decls[i];
+        if (d->kind == DECL_TECHNIQUE && d->technique) hfx_build_technique(b, d->technique);
+    }
+    return !b->failed_alloc;
+}

@@ -1,0 +1,248 @@
+/* codegen.c: one GLSL program per pass. Builds the IR of both stages, lowers it, agrees on
+ * the interface between them (attributes at the Cg/NVIDIA locations, varyings by semantic)
+ * and prints every requested target; records attributes, samplers and uniforms read. */
+#include "effect/codegen.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "glsl/glsl.h"
+
+struct hfx_codegen {
+    ir_ctx c;
+    unsigned targets;
+    bool pack;
+};
+
+hfx_codegen *hfx_codegen_new(hfx_arena *arena, hfx_diags *diags, hfx_types *types, hfx_ast *ast,
+                             hfx_fx_effect *fx, unsigned targets, bool pack) {
+    hfx_codegen *cg = HFX_NEW(arena, hfx_codegen);
+    if (!cg) return NULL;
+    cg->c = (ir_ctx){ arena, diags, types, ast, fx };
+    cg->targets = targets;
+    cg->pack = pack;
+    return cg;
+}
+
+typedef struct strset { const char **items; uint32_t count, cap; } strset;
+
+static bool set_has(const strset *s, const char *x) {
+    for (uint32_t i = 0; i < s->count; i++)
+        if (strcmp(s->items[i], x) == 0) return true;
+    return false;
+}
+
+static void set_add(hfx_arena *a, strset *s, const char *x) {
+    if (set_has(s, x)) return;
+    if (s->count == s->cap) {
+        uint32_t cap = s->cap ? s->cap * 2 : 16;
+        const char **n = HFX_NEW_ARRAY(a, const char *, cap);
+        if (s->count) memcpy(n, s->items, sizeof *n * s->count);
+        s->items = n;
+        s->cap = cap;
+    }
+    s->items[s->count++] = x;
+}
+
+static int cmp_str(const void *a, const void *b) { return strcmp(*(const char *const *)a, *(const char *const *)b); }
+
+static bool is_varying(const char *sem, bool pixel_input) {
+    if (pixel_input) return strncmp(sem, "VPOS", 4) != 0 && strncmp(sem, "POSITION", 8) != 0 && strncmp(sem, "VFACE", 5) != 0;
+    return strcmp(sem, "POSITION0") != 0 && strncmp(sem, "PSIZE", 5) != 0;
+}
+
+/* The Cg / NVIDIA attribute aliasing: POSITION0=0, BLENDWEIGHT0=1, NORMAL0=2, COLOR0=3,
+ * COLOR1=4, FOG0=5, PSIZE0=6, BLENDINDICES0=7, TEXCOORD0..7=8..15; TANGENT0 / BINORMAL0 take
+ * 14 / 15 when TEXCOORD6 / 7 are free; anything else the lowest free location. */
+static int fixed_location(const char *sem) {
+    static const struct { const char *s; int loc; } t[] = {
+        {"POSITION0", 0}, {"BLENDWEIGHT0", 1}, {"NORMAL0", 2}, {"COLOR0", 3}, {"COLOR1", 4}, {"FOG0", 5},
+        {"PSIZE0", 6}, {"BLENDINDICES0", 7},
+    };
+    for (size_t i = 0; i < sizeof t / sizeof *t; i++)
+        if (strcmp(t[i].s, sem) == 0) return t[i].loc;
+    if (strncmp(sem, "TEXCOORD", 8) == 0 && sem[8] >= '0' && sem[8] <= '7' && !sem[9]) return 8 + sem[8] - '0';
+    return -1;
+}
+
+static int cmp_attr(const void *a, const void *b) {
+    return ((const hfx_fx_attribute *)a)->location - ((const hfx_fx_attribute *)b)->location;
+}
+
+static hfx_fx_attribute *assign_locations(hfx_arena *a, const strset *sems) {
+    hfx_fx_attribute *at = HFX_NEW_ARRAY(a, hfx_fx_attribute, sems->count + 1);
+    bool taken[64] = {0};
+    for (uint32_t i = 0; i < sems->count; i++) {
+        at[i].semantic = (char *)sems->items[i];
+        at[i].glsl_name = hfx_arena_printf(a, "hfx_a_%s", sems->items[i]);
+        at[i].location = fixed_location(sems->items[i]);
+        if (at[i].location >= 0) taken[at[i].location] = true;
+    }
+    for (uint32_t i = 0; i < sems->count; i++) {
+        if (at[i].location >= 0) continue;
+        if (strcmp(at[i].semantic, "TANGENT0") == 0 && !taken[14]) at[i].location = 14;
+        else if (strcmp(at[i].semantic, "BINORMAL0") == 0 && !taken[15]) at[i].location = 15;
+        else for (int l = 0; l < 64; l++) if (!taken[l]) { at[i].location = l; break; }
+        if (at[i].location >= 0) taken[at[i].location] = true;
+    }
+    qsort(at, sems->count, sizeof *at, cmp_attr);
+    return at;
+}
+
+static ir_shader *stage(hfx_codegen *cg, const hfx_expr *e, ir_stage st) {
+    if (!e || e->kind == EX_NULL) return NULL;
+    if (e->kind != EX_COMPILE) {
+        hfx_error(cg->c.diags, e->loc, X_UNSUPPORTED, "%s", e->kind == EX_ASM ? "asm blocks are not supported"
+                                                                                 : "shader must be a compile expression");
+        return NULL;
+    }
+    ir_shader *sh = ir_build(&cg->c, e, st);
+    if (sh && ir_lower(&cg->c, sh) != 0) return NULL;
+    return sh;
+}
+
+static char *dup_str(const char *s) {
+    size_t n = strlen(s);
+    char *d = malloc(n + 1);
+    if (d) memcpy(d, s, n + 1);
+    return d;
+}
+
+/* Samplers and uniforms the program reads: vertex stage first, in first-use order. */
+static int record_uses(hfx_codegen *cg, ir_shader *const sh[2], hfx_fx_program *out) {
+    hfx_fx_effect *fx = cg->c.fx;
+    uint32_t total = 0;
+    for (int s = 0; s < 2; s++) if (sh[s]) total += sh[s]->global_count;
+    out->samplers = calloc(total + 1, sizeof *out->samplers);
+    out->uniforms = calloc(total + 1, sizeof *out->uniforms);
+    if (!out->samplers || !out->uniforms) return -1;
+    for (int s = 0; s < 2; s++) {
+        if (!sh[s]) continue;
+        for (uint32_t i = 0; i < sh[s]->global_count; i++) {
+            const ir_var *v = sh[s]->globals[i];
+            if (v->param == HFX_NONE || (v->kind != IRV_SAMPLER && v->kind != IRV_UNIFORM)) continue;
+            if (v->kind == IRV_SAMPLER) {
+                uint32_t si = fx->params[v->param].sampler;
+                bool seen = false;
+                for (uint32_t k = 0; k < out->sampler_count; k++) seen |= strcmp(out->samplers[k].glsl_name, v->glsl) == 0;
+                if (seen) continue;
+                hfx_fx_sampler_use *u = &out->samplers[out->sampler_count];
+                if (!(u->glsl_name = dup_str(v->glsl))) return -1;
+                u->sampler = si;
+                u->unit = (int32_t)out->sampler_count++;
+                if (si != HFX_NONE && si < fx->sampler_count)
+                    fx->samplers[si].dim = v->dim == DIM_CUBE ? HFX_FX_DIM_CUBE : v->dim == DIM_3D ? HFX_FX_DIM_3D
+                                          : v->dim == DIM_1D ? HFX_FX_DIM_1D : HFX_FX_DIM_2D;
+            } else {
+                bool seen = false;
+                for (uint32_t k = 0; k < out->uniform_count; k++) seen |= out->uniforms[k].param == v->param;
+                if (!seen) out->uniforms[out->uniform_count++] = (hfx_fx_uniform_use){ v->param, HFX_NONE };
+            }
+        }
+    }
+    return 0;
+}
+
+static int cmp_uniform(const void *a, const void *b) {
+    uint32_t x = ((const hfx_fx_uniform_use *)a)->param, y = ((const hfx_fx_uniform_use *)b)->param;
+    return x < y ? -1 : x > y;
+}
+
+/* D3D9's vs_3_0 has 256 float constant registers; past them the rest stay separate uniforms,
+ * so a program reading more than that still links wherever it did before. */
+enum { MAX_PACKED_REGS = 256 };
+
+/* HFXC_PACK_UNIFORMS: registers in the order of the uniform table, from 0, until one does not fit. */
+static void assign_registers(const hfx_fx_effect *fx, hfx_fx_program *p) {
+    bool full = false;
+    for (uint32_t k = 0; k < p->uniform_count; k++) {
+        uint32_t n = hfx_fx_param_packable(fx, p->uniforms[k].param);
+        if (full || !n) continue;
+        if (p->reg_count + n > MAX_PACKED_REGS) { full = true; continue; }
+        p->uniforms[k].reg = p->reg_count;
+        p->reg_count += n;
+    }
+}
+
+static int build_interface(hfx_codegen *cg, ir_shader *vs, ir_shader *ps, glsl_iface *io) {
+    hfx_arena *a = cg->c.arena;
+    strset vary = {0}, writes = {0}, attrs = {0};
+    ir_leaf *l;
+    int n;
+    if (ps) {
+        if ((n = ir_entry_leaves(&cg->c, ps->entry, false, &l)) < 0) return -1;
+        for (int i = 0; i < n; i++) if (is_varying(l[i].semantic, true)) set_add(a, &vary, l[i].semantic);
+    }
+    if (vs) {
+        if ((n = ir_entry_leaves(&cg->c, vs->entry, true, &l)) < 0) return -1;
+        for (int i = 0; i < n; i++)
+            if (is_varying(l[i].semantic, false)) { set_add(a, &vary, l[i].semantic); set_add(a, &writes, l[i].semantic); }
+        if ((n = ir_entry_leaves(&cg->c, vs->entry, false, &l)) < 0) return -1;
+        for (int i = 0; i < n; i++) set_add(a, &attrs, l[i].semantic);
+    } else { /* fixed-function stand-in: position plus whatever the pixel shader reads */
+        set_add(a, &attrs, "POSITION0");
+        for (uint32_t i = 0; i < vary.count; i++) { set_add(a, &attrs, vary.items[i]); set_add(a, &writes, vary.items[i]); }
+    }
+    if (vary.count) qsort(vary.items, vary.count, sizeof *vary.items, cmp_str);
+    io->varyings = vary.items;
+    io->varying_count = vary.count;
+    io->vs_writes = writes.items;
+    io->vs_write_count = writes.count;
+    io->attrs = assign_locations(a, &attrs);
+    io->attr_count = attrs.count;
+    const char *prof = vs && vs->compile->profile ? vs->compile->profile : "vs_3_0";
+    io->clamp_vs_colors = strncmp(prof, "vs_1", 4) == 0 || strncmp(prof, "vs_2", 4) == 0;
+    return 0;
+}
+
+static int copy_attributes(const glsl_iface *io, hfx_fx_program *out) {
+    out->attributes = calloc(io->attr_count + 1, sizeof *out->attributes);
+    if (!out->attributes) return -1;
+    for (uint32_t i = 0; i < io->attr_count; i++) {
+        out->attributes[i].semantic = dup_str(io->attrs[i].semantic);
+        out->attributes[i].glsl_name = dup_str(io->attrs[i].glsl_name);
+        out->attributes[i].location = io->attrs[i].location;
+        out->attribute_count++;
+        if (!out->attributes[i].semantic || !out->attributes[i].glsl_name) return -1;
+    }
+    return 0;
+}
+
+/* The pixel stage carries the alpha test when it writes COLOR0 (the stand-in always does). */
+static bool writes_color0(hfx_codegen *cg, const ir_shader *ps) {
+    if (!ps) return true;
+    ir_leaf *l;
+    int n = ir_entry_leaves(&cg->c, ps->entry, true, &l);
+    for (int i = 0; i < n; i++)
+        if (strcmp(l[i].semantic, "COLOR0") == 0) return true;
+    return false;
+}
+
+int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps, hfx_fx_program *out) {
+    memset(out, 0, sizeof *out);
+    uint32_t errors = cg->c.diags->errors;
+    ir_shader *sh[2] = { stage(cg, vs, IR_VERTEX), stage(cg, ps, IR_PIXEL) };
+    if (cg->c.diags->errors > errors) return -1;
+    glsl_iface io = {0};
+    if (build_interface(cg, sh[0], sh[1], &io) != 0) return -1;
+    if (copy_attributes(&io, out) != 0 || record_uses(cg, sh, out) != 0) goto oom;
+    qsort(out->uniforms, out->uniform_count, sizeof *out->uniforms, cmp_uniform);
+    if (cg->pack) assign_registers(cg->c.fx, out);
+    io.uniforms = out->uniforms;
+    io.uniform_count = out->uniform_count;
+    io.reg_count = out->reg_count;
+    for (int t = 0; t < HFX_TARGET_COUNT; t++) {
+        if (!(cg->targets & (1u << t)) || t == HFX_TARGET_SPIRV) continue;
+        for (int s = 0; s < 2; s++) {
+            char *text = glsl_print(&cg->c, sh[s], s == 0 ? IR_VERTEX : IR_PIXEL, &io, (hfx_target)t);
+            if (!text) return -1;
+            out->code[s][t].data = text;
+            out->code[s][t].size = strlen(text);
+        }
+    }
+    if (writes_color0(cg, sh[1])) out->flags |= HFX_FX_PROGRAM_ALPHA_TEST;
+    return 0;
+oom:
+    hfx_error(cg->c.diags, vs ? vs->loc : ps ? ps->loc : (hfx_loc){0, 0, 0}, X_UNSUPPORTED, "out of memory");
+    return -1;
+}

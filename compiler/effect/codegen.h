@@ -1,0 +1,23 @@
+/* codegen.h: one GLSL program per pass, through the IR: ir.c builds it from the checked tree,
+ * lower/ specialises, folds and cleans it, glsl.c prints it for each target.
+ *
+ * Contract with build.c: before calling hfx_codegen_program, build.c has filled fx->params
+ * (with glsl_name) and fx->samplers, and set `index` of every global uniform hfx_decl to its
+ * top-level parameter index (HFX_NONE for static globals, which codegen makes private). */
+#ifndef HFX_CODEGEN_H
+#define HFX_CODEGEN_H
+
+#include "parse/ast.h"
+#include "effect.h"
+
+typedef struct hfx_codegen hfx_codegen;
+
+/* pack: HFXC_PACK_UNIFORMS (effect.h, "hfx_c"). */
+hfx_codegen *hfx_codegen_new(hfx_arena *arena, hfx_diags *diags, hfx_types *types, hfx_ast *ast,
+                             hfx_fx_effect *fx, unsigned targets, bool pack);
+/* vs, ps: the pass's VertexShader / PixelShader values (EX_COMPILE; NULL when not set).
+ * Fills *out (malloc'ed members, freed with the effect); may set fx->samplers[i].dim.
+ * Returns 0, or -1 with errors in diags. */
+int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps, hfx_fx_program *out);
+
+#endif

@@ -1,0 +1,455 @@
+/* glsl.c: one stage of a program as GLSL text: header, structs, uniforms, the stage interface
+ * (attributes at the Cg locations, varyings named by semantic, fragment outputs), helper
+ * functions, the user functions, and a main() that feeds the HLSL entry from the interface,
+ * calls it and writes its results. See docs/conventions.md for the conventions. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "glsl/glsl_int.h"
+
+static void line_start(gp *p) {
+    for (int i = 0; i < p->indent; i++) sb_put(p->out, "    ");
+}
+
+static void print_stmt(gp *p, const ir_stmt *s);
+
+/* `{ statements }` on lines of their own: blocks and switch bodies. */
+static void print_braced(gp *p, const ir_stmt *s) {
+    line_start(p);
+    sb_put(p->out, "{\n");
+    p->indent++;
+    for (uint32_t i = 0; i < s->count; i++) print_stmt(p, s->body[i]);
+    p->indent--;
+    line_start(p);
+    sb_put(p->out, "}\n");
+}
+
+static void print_body(gp *p, const ir_stmt *s) {
+    if (s && s->kind == IS_BLOCK) { print_stmt(p, s); return; }
+    line_start(p);
+    sb_put(p->out, "{\n");
+    p->indent++;
+    if (s) print_stmt(p, s);
+    p->indent--;
+    line_start(p);
+    sb_put(p->out, "}\n");
+}
+
+static void print_decl(gp *p, const ir_var *v, const ir_expr *init, bool zero, const char *end) {
+    sb_put(p->out, glsl_decl(p, v->type, v->glsl));
+    if (init) {
+        sb_put(p->out, " = ");
+        glsl_expr(p, init, PREC_ASSIGN);
+    } else if (zero) { /* HLSL leaves it undefined; zero keeps the output deterministic */
+        sb_put(p->out, " = ");
+        glsl_zero(p, v->type);
+    }
+    sb_put(p->out, end);
+}
+
+static void print_for(gp *p, const ir_stmt *s) {
+    const ir_stmt *init = s->init;
+    if (init && init->kind == IS_DECL && init->var->hoisted) { /* used after the loop (HLSL scoping) */
+        line_start(p);
+        print_decl(p, init->var, init->expr, true, ";\n");
+        init = NULL;
+    } else if (init && init->kind == IS_BLOCK) {
+        for (uint32_t i = 0; i < init->count; i++) print_stmt(p, init->body[i]);
+        init = NULL;
+    }
+    line_start(p);
+    sb_put(p->out, "for (");
+    if (init && init->kind == IS_DECL) print_decl(p, init->var, init->expr, true, "");
+    else if (init && init->kind == IS_EXPR) glsl_expr(p, init->expr, PREC_COMMA);
+    sb_put(p->out, ";");
+    if (s->expr) { sb_put(p->out, " "); glsl_expr(p, s->expr, PREC_COMMA); }
+    sb_put(p->out, ";");
+    if (s->step) { sb_put(p->out, " "); glsl_expr(p, s->step, PREC_COMMA); }
+    sb_put(p->out, ")\n");
+    print_body(p, s->then_s);
+}
+
+static void print_if(gp *p, const ir_stmt *s, bool chained) {
+    if (!chained) line_start(p);
+    sb_put(p->out, "if (");
+    glsl_expr(p, s->expr, PREC_COMMA);
+    sb_put(p->out, ")\n");
+    print_body(p, s->then_s);
+    if (!s->else_s) return;
+    line_start(p);
+    if (s->else_s->kind == IS_IF) {
+        sb_put(p->out, "else ");
+        print_if(p, s->else_s, true);
+        return;
+    }
+    sb_put(p->out, "else\n");
+    print_body(p, s->else_s);
+}
+
+static void print_stmt(gp *p, const ir_stmt *s) {
+    if (s->hint) {
+        line_start(p);
+        sb_printf(p->out, "// [%s]\n", s->hint);
+    }
+    switch (s->kind) {
+    case IS_BLOCK:
+        print_braced(p, s);
+        return;
+    case IS_DECL: line_start(p); print_decl(p, s->var, s->expr, true, ";\n"); return;
+    case IS_EXPR: line_start(p); glsl_expr(p, s->expr, PREC_COMMA); sb_put(p->out, ";\n"); return;
+    case IS_IF: print_if(p, s, false); return;
+    case IS_FOR: print_for(p, s); return;
+    case IS_WHILE:
+        line_start(p);
+        sb_put(p->out, "while (");
+        glsl_expr(p, s->expr, PREC_COMMA);
+        sb_put(p->out, ")\n");
+        print_body(p, s->then_s);
+        return;
+    case IS_DO:
+        line_start(p);
+        sb_put(p->out, "do\n");
+        print_body(p, s->then_s);
+        line_start(p);
+        sb_put(p->out, "while (");
+        glsl_expr(p, s->expr, PREC_COMMA);
+        sb_put(p->out, ");\n");
+        return;
+    case IS_SWITCH:
+        line_start(p);
+        sb_put(p->out, "switch (");
+        if (s->expr->type->base != B_INT) sb_put(p->out, "int(");
+        glsl_expr(p, s->expr, PREC_COMMA);
+        sb_put(p->out, s->expr->type->base != B_INT ? "))\n" : ")\n");
+        print_braced(p, s);
+        return;
+    case IS_CASE:
+        p->indent--;
+        line_start(p);
+        sb_put(p->out, "case ");
+        if (ir_is_const(s->expr)) sb_printf(p->out, "%lld", (long long)s->expr->cval[0]); /* the switch is on int */
+        else glsl_expr(p, s->expr, PREC_COMMA);
+        sb_put(p->out, ":\n");
+        p->indent++;
+        return;
+    case IS_DEFAULT: p->indent--; line_start(p); sb_put(p->out, "default:\n"); p->indent++; return;
+    case IS_BREAK: line_start(p); sb_put(p->out, "break;\n"); return;
+    case IS_CONTINUE: line_start(p); sb_put(p->out, "continue;\n"); return;
+    case IS_DISCARD:
+        if (p->stage != IR_PIXEL) glsl_error(p, s->loc, "discard is only allowed in a pixel shader");
+        line_start(p);
+        sb_put(p->out, "discard;\n");
+        return;
+    case IS_RETURN:
+        line_start(p);
+        sb_put(p->out, "return");
+        if (s->expr) { sb_put(p->out, " "); glsl_expr(p, s->expr, PREC_COMMA); }
+        sb_put(p->out, ";\n");
+        return;
+    }
+}
+
+static void print_func(gp *p, const ir_func *f) {
+    sb_printf(p->out, "// %s%s\n", f->name, f->is_entry ? " (entry point)" : "");
+    sb_printf(p->out, "%s %s(", glsl_ctor_type(p, f->ret), f->glsl);
+    for (uint32_t i = 0; i < f->param_count; i++) {
+        const ir_var *v = f->params[i];
+        if (i) sb_put(p->out, ", ");
+        if (v->mods & MOD_OUT) sb_put(p->out, (v->mods & MOD_IN) ? "inout " : "out ");
+        sb_put(p->out, glsl_decl(p, v->type, v->glsl));
+    }
+    sb_put(p->out, ")\n");
+    print_stmt(p, f->body);
+    sb_put(p->out, "\n");
+}
+
+/* ---- the stage interface ---- */
+
+static bool is_vpos(const char *sem) { return strncmp(sem, "POSITION", 8) == 0 || strncmp(sem, "VPOS", 4) == 0; }
+
+static const char *varying_name(gp *p, const char *sem) { return hfx_arena_printf(p->c->arena, "hfx_v_%s", sem); }
+
+/* `value` (a vec4 source) narrowed and converted to the leaf's type. */
+static void read_as(gp *p, const hfx_type *t, const char *vec4_src) {
+    unsigned n = hfx_type_components(t);
+    const char *tn = glsl_type(p, t);
+    bool is_f = t->base == B_FLOAT || t->base == B_HALF || t->base == B_DOUBLE || t->base == B_MIN16FLOAT;
+    if (!is_f || glsl_is_matrix(t)) sb_printf(p->out, "%s(", tn);
+    sb_put(p->out, vec4_src);
+    if (n < 4 && !glsl_is_matrix(t)) sb_printf(p->out, ".%.*s", (int)n, "xyzw");
+    if (!is_f || glsl_is_matrix(t)) sb_put(p->out, ")");
+}
+
+/* A leaf's value as a vec4: missing components are 0, and w is 1 for positions. */
+static void write_vec4(gp *p, const ir_leaf *l, const char *dst, bool clamp) {
+    unsigned n = hfx_type_components(l->type);
+    bool pos = strncmp(l->semantic, "POSITION", 8) == 0;
+    line_start(p);
+    sb_printf(p->out, "%s = ", dst);
+    if (clamp) sb_put(p->out, "clamp(");
+    bool plain_vec4 = l->type->kind == TY_VECTOR && l->type->base == B_FLOAT;
+    if (n >= 4) sb_printf(p->out, plain_vec4 ? "%s" : "vec4(%s)", l->path);
+    else if (n == 1) sb_printf(p->out, "vec4(float(%s), 0.0, 0.0, %s)", l->path, pos ? "1.0" : "0.0");
+    else if (n == 2) sb_printf(p->out, "vec4(%s, 0.0, %s)", l->path, pos ? "1.0" : "0.0");
+    else sb_printf(p->out, "vec4(%s, %s)", l->path, pos ? "1.0" : "0.0");
+    if (clamp) sb_put(p->out, ", 0.0, 1.0)");
+    sb_put(p->out, ";\n");
+}
+
+static void declare_interface(gp *p) {
+    bool modern = !p->legacy;
+    const glsl_iface *io = p->io;
+    if (p->stage == IR_VERTEX) {
+        for (uint32_t i = 0; i < io->attr_count; i++) {
+            if (modern) sb_printf(p->out, "layout(location = %d) in vec4 %s;\n", io->attrs[i].location, io->attrs[i].glsl_name);
+            else sb_printf(p->out, "attribute vec4 %s;\n", io->attrs[i].glsl_name);
+        }
+        if (p->sh) sb_put(p->out, "uniform vec4 hfx_pos_fixup;\n");
+    }
+    for (uint32_t i = 0; i < io->varying_count; i++)
+        sb_printf(p->out, "%s vec4 %s;\n", !modern ? "varying" : p->stage == IR_VERTEX ? "out" : "in",
+                  varying_name(p, io->varyings[i]));
+    if (p->stage == IR_PIXEL) {
+        bool vpos = false, color[4] = { !p->sh, false, false, false };
+        for (int i = 0; i < p->in_count; i++) vpos |= is_vpos(p->in[i].semantic);
+        for (int i = 0; i < p->out_count; i++)
+            if (strncmp(p->outv[i].semantic, "COLOR", 5) == 0 && p->outv[i].semantic[5] >= '0' &&
+                p->outv[i].semantic[5] <= '3' && !p->outv[i].semantic[6])
+                color[p->outv[i].semantic[5] - '0'] = true;
+        if (vpos || p->uses_fixup) sb_put(p->out, "uniform vec4 hfx_pos_fixup;\n");
+        sb_put(p->out, "uniform int hfx_alpha_func;\nuniform float hfx_alpha_ref;\n");
+        for (int i = 0; i < 4 && modern; i++)
+            if (color[i]) sb_printf(p->out, "layout(location = %d) out vec4 hfx_o_COLOR%d;\n", i, i);
+    }
+}
+
+static const char *attr_glsl(gp *p, const char *sem) {
+    for (uint32_t i = 0; i < p->io->attr_count; i++)
+        if (strcmp(p->io->attrs[i].semantic, sem) == 0) return p->io->attrs[i].glsl_name;
+    return NULL;
+}
+
+static void feed_input(gp *p, const ir_leaf *l) {
+    line_start(p);
+    sb_printf(p->out, "%s = ", l->path);
+    if (p->stage == IR_VERTEX) {
+        const char *a = attr_glsl(p, l->semantic);
+        read_as(p, l->type, a ? a : "vec4(0.0)");
+    } else if (is_vpos(l->semantic)) { /* D3D9: pixel centres at integers, y down from the top */
+        read_as(p, l->type, "vec4(gl_FragCoord.x - 0.5, mix(hfx_pos_fixup.w - gl_FragCoord.y, gl_FragCoord.y, "
+                            "hfx_pos_fixup.z) - 0.5, gl_FragCoord.z, gl_FragCoord.w)");
+    } else if (strncmp(l->semantic, "VFACE", 5) == 0) {
+        read_as(p, l->type, "vec4(gl_FrontFacing ? 1.0 : -1.0)");
+    } else {
+        read_as(p, l->type, varying_name(p, l->semantic));
+    }
+    sb_put(p->out, ";\n");
+}
+
+static bool written_by_vs(const glsl_iface *io, const char *sem) {
+    for (uint32_t i = 0; i < io->vs_write_count; i++)
+        if (strcmp(io->vs_writes[i], sem) == 0) return true;
+    return false;
+}
+
+static void write_vertex_output(gp *p, const ir_leaf *l) {
+    if (strcmp(l->semantic, "POSITION0") == 0) { write_vec4(p, l, "gl_Position", false); return; }
+    if (strncmp(l->semantic, "PSIZE", 5) == 0) {
+        line_start(p);
+        sb_printf(p->out, "gl_PointSize = float(%s%s);\n", l->path, hfx_type_components(l->type) > 1 ? ".x" : "");
+        return;
+    }
+    bool clamp = p->io->clamp_vs_colors && strncmp(l->semantic, "COLOR", 5) == 0;
+    write_vec4(p, l, varying_name(p, l->semantic), clamp);
+}
+
+static void write_pixel_output(gp *p, const ir_leaf *l) {
+    if (strncmp(l->semantic, "DEPTH", 5) == 0) {
+        line_start(p);
+        sb_printf(p->out, "gl_FragDepth = float(%s%s);\n", l->path, hfx_type_components(l->type) > 1 ? ".x" : "");
+        return;
+    }
+    int n = strncmp(l->semantic, "COLOR", 5) == 0 ? atoi(l->semantic + 5) : -1;
+    if (n < 0 || n > 3) { glsl_error(p, l->loc, hfx_arena_printf(p->c->arena, "'%s': invalid pixel shader output semantic", l->semantic)); return; }
+    const char *dst = p->legacy ? hfx_arena_printf(p->c->arena, "gl_FragData[%d]", n) : hfx_arena_printf(p->c->arena, "hfx_o_COLOR%d", n);
+    write_vec4(p, l, dst, false);
+}
+
+static void init_privates(gp *p) {
+    for (uint32_t i = 0; i < p->sh->global_count; i++) {
+        const ir_var *v = p->sh->globals[i];
+        if (v->kind != IRV_PRIVATE) continue;
+        line_start(p);
+        sb_printf(p->out, "%s = ", v->glsl);
+        if (v->copy_of) sb_put(p->out, v->copy_of->glsl);
+        else if (v->init) glsl_expr(p, v->init, PREC_ASSIGN);
+        else glsl_zero(p, v->type);
+        sb_put(p->out, ";\n");
+    }
+}
+
+static void alpha_test(gp *p, const char *color) {
+    /* D3DCMPFUNC in hfx_alpha_func (0 or ALWAYS: off); reference in 0..1 */
+    if (glsl_helper(p, "alpha"))
+        sb_put(&p->helpers,
+               "bool hfx_alpha_pass(float a)\n{\n"
+               "    float r = hfx_alpha_ref;\n"
+               "    if (hfx_alpha_func == 1) return false;\n"
+               "    if (hfx_alpha_func == 2) return a < r;\n"
+               "    if (hfx_alpha_func == 3) return a == r;\n"
+               "    if (hfx_alpha_func == 4) return a <= r;\n"
+               "    if (hfx_alpha_func == 5) return a > r;\n"
+               "    if (hfx_alpha_func == 6) return a != r;\n"
+               "    if (hfx_alpha_func == 7) return a >= r;\n"
+               "    return true;\n}\n");
+    line_start(p);
+    sb_printf(p->out, "if (!hfx_alpha_pass(%s.a)) discard;\n", color);
+}
+
+static void print_main(gp *p) {
+    const ir_func *f = p->sh->entry;
+    ir_leaf *in = p->in, *out = p->outv;
+    int nin = p->in_count, nout = p->out_count;
+    sb_put(p->out, "void main()\n{\n");
+    p->indent = 1;
+    glsl_init_packed(p); /* before the privates: their initialisers may read them */
+    init_privates(p);
+    for (uint32_t i = 0; i < f->param_count; i++) {
+        line_start(p);
+        sb_put(p->out, glsl_decl(p, f->params[i]->type, hfx_arena_printf(p->c->arena, "hfx_arg%u", i)));
+        sb_put(p->out, " = ");
+        glsl_zero(p, f->params[i]->type);
+        sb_put(p->out, ";\n");
+    }
+    for (int i = 0; i < nin; i++) feed_input(p, &in[i]);
+    line_start(p);
+    if (f->ret && f->ret->kind != TY_VOID) sb_printf(p->out, "%s = ", glsl_decl(p, f->ret, "hfx_ret"));
+    sb_printf(p->out, "%s(", f->glsl);
+    for (uint32_t i = 0; i < f->param_count; i++) sb_printf(p->out, "%shfx_arg%u", i ? ", " : "", i);
+    sb_put(p->out, ");\n");
+    if (p->stage == IR_VERTEX) {
+        for (int i = 0; i < nout; i++) write_vertex_output(p, &out[i]);
+        for (uint32_t i = 0; i < p->io->varying_count; i++) /* read by the pixel shader, never written */
+            if (!written_by_vs(p->io, p->io->varyings[i])) {
+                line_start(p);
+                sb_printf(p->out, "%s = vec4(0.0);\n", varying_name(p, p->io->varyings[i]));
+            }
+        line_start(p);
+        sb_put(p->out, "gl_Position.y *= 1.0 - 2.0 * hfx_pos_fixup.z; // render targets: D3D9's row order\n");
+        line_start(p);
+        sb_put(p->out, "gl_Position.xy += hfx_pos_fixup.xy * gl_Position.w; // D3D9 pixel centres\n");
+        line_start(p);
+        sb_put(p->out, "gl_Position.z = gl_Position.z * 2.0 - gl_Position.w; // D3D depth 0..1 to GL -1..1\n");
+    } else {
+        bool color0 = false;
+        for (int i = 0; i < nout; i++) {
+            write_pixel_output(p, &out[i]);
+            color0 |= strcmp(out[i].semantic, "COLOR0") == 0;
+        }
+        if (color0) alpha_test(p, p->legacy ? "gl_FragData[0]" : "hfx_o_COLOR0");
+    }
+    sb_put(p->out, "}\n");
+}
+
+/* D3D9 without a vertex or pixel shader runs fixed-function; these stand-ins pass positions
+ * through untransformed and texture coordinates and colours along. */
+static void print_fixed_main(gp *p) {
+    sb_put(p->out, "void main()\n{\n");
+    p->indent = 1;
+    if (p->stage == IR_VERTEX) {
+        const char *pos = attr_glsl(p, "POSITION0");
+        line_start(p);
+        sb_printf(p->out, "gl_Position = %s;\n", pos ? pos : "vec4(0.0, 0.0, 0.0, 1.0)");
+        for (uint32_t i = 0; i < p->io->varying_count; i++) {
+            const char *a = attr_glsl(p, p->io->varyings[i]);
+            line_start(p);
+            sb_printf(p->out, "%s = %s;\n", varying_name(p, p->io->varyings[i]), a ? a : "vec4(0.0)");
+        }
+    } else {
+        bool has_color = false;
+        for (uint32_t i = 0; i < p->io->varying_count; i++) has_color |= strcmp(p->io->varyings[i], "COLOR0") == 0;
+        line_start(p);
+        sb_printf(p->out, "%s = %s;\n", p->legacy ? "gl_FragData[0]" : "hfx_o_COLOR0", has_color ? "hfx_v_COLOR0" : "vec4(1.0)");
+        alpha_test(p, p->legacy ? "gl_FragData[0]" : "hfx_o_COLOR0");
+    }
+    sb_put(p->out, "}\n");
+}
+
+static void declare_globals(gp *p) {
+    glsl_declare_regs(p);
+    for (uint32_t i = 0; i < p->sh->global_count; i++) {
+        const ir_var *v = p->sh->globals[i];
+        uint32_t reg = glsl_packed_reg(p, v);
+        if (reg != HFX_NONE) {
+            glsl_declare_packed(p, v, reg);
+        } else if (v->kind == IRV_SAMPLER) {
+            sb_printf(p->out, "uniform %s %s;\n", v->dim == DIM_CUBE ? "samplerCube" : v->dim == DIM_3D ? "sampler3D" : "sampler2D", v->glsl);
+        } else if (v->kind == IRV_UNIFORM) {
+            sb_printf(p->out, "uniform %s;\n", glsl_decl(p, v->type, v->glsl));
+        } else if (v->kind == IRV_PRIVATE) {
+            sb_printf(p->out, "%s;%s\n", glsl_decl(p, v->type, v->glsl),
+                      v->copy_of ? " // written by the shader: a private copy of the uniform" : "");
+        }
+    }
+}
+
+static const char *header(gp *p) {
+    if (p->target == HFX_TARGET_GLSLES300)
+        return p->stage == IR_VERTEX ? "#version 300 es\nprecision highp float;\nprecision highp int;\n"
+                                     : "#version 300 es\nprecision highp float;\nprecision highp int;\n"
+                                       "precision highp sampler2D;\nprecision highp sampler3D;\nprecision highp samplerCube;\n";
+    if (p->target == HFX_TARGET_GLSL110) return "#version 110\n";
+    return "#version 330 core\n";
+}
+
+char *glsl_print(ir_ctx *c, const ir_shader *sh, ir_stage stage, const glsl_iface *io, hfx_target target) {
+    gp p = {0};
+    p.c = c;
+    p.sh = sh;
+    p.stage = stage;
+    p.io = io;
+    p.target = target;
+    p.es = target == HFX_TARGET_GLSLES300;
+    p.legacy = target == HFX_TARGET_GLSL110;
+    sbuf decls = {0}, funcs = {0}, all = {0};
+    if (sh) {
+        p.in_count = ir_entry_leaves(c, sh->entry, false, &p.in);
+        p.out_count = ir_entry_leaves(c, sh->entry, true, &p.outv);
+        if (p.in_count < 0 || p.out_count < 0) return NULL;
+    }
+    p.out = &decls;
+    if (sh) declare_globals(&p);
+    p.out = &funcs;
+    if (sh) {
+        for (uint32_t i = 0; i < sh->func_count; i++) print_func(&p, sh->funcs[i]);
+        print_main(&p);
+    } else {
+        print_fixed_main(&p);
+    }
+    p.out = &decls; /* after the code: it decides which built-in uniforms are needed */
+    declare_interface(&p);
+    if (p.nonsquare)
+        glsl_error(&p, sh ? sh->entry->src->loc : (hfx_loc){0, 0, 0},
+                   hfx_arena_printf(c->arena, "'%s': non-square matrices are not available in GLSL 110", sh ? sh->entry->name : "?"));
+    p.out = &all;
+    sb_put(&all, header(&p));
+    sb_printf(&all, "// %s shader generated by hfx%s%s\n", stage == IR_VERTEX ? "vertex" : "pixel",
+              sh ? " from " : " (fixed-function stand-in)", sh ? sh->entry->name : "");
+    sb_put(&all, "\n");
+    if (p.structs_text.d) { sb_put(&all, p.structs_text.d); }
+    if (decls.d) sb_put(&all, decls.d);
+    sb_put(&all, "\n");
+    if (p.helpers.d) { sb_put(&all, p.helpers.d); sb_put(&all, "\n"); }
+    if (funcs.d) sb_put(&all, funcs.d);
+    bool oom = decls.oom || funcs.oom || all.oom || p.helpers.oom || p.structs_text.oom;
+    free(decls.d);
+    free(funcs.d);
+    free(p.helpers.d);
+    free(p.structs_text.d);
+    if (p.failed || oom) {
+        if (oom && !p.failed) hfx_error(c->diags, (hfx_loc){0, 0, 0}, X_UNSUPPORTED, "out of memory printing GLSL");
+        free(all.d);
+        return NULL;
+    }
+    return all.d;
+}

@@ -1,0 +1,21 @@
+/* glsl.h: the GLSL printer's interface: one stage of a program, for one target. */
+#ifndef HFX_GLSL_H
+#define HFX_GLSL_H
+
+#include "ir/ir.h"
+
+/* What the two stages of a program share. */
+typedef struct glsl_iface {
+    const char **varyings; uint32_t varying_count; /* canonical semantics, sorted */
+    const char **vs_writes; uint32_t vs_write_count; /* varyings the vertex shader writes */
+    const hfx_fx_attribute *attrs; uint32_t attr_count;
+    bool clamp_vs_colors;    /* vs_1_1 / vs_2_x COLOR outputs saturate as D3D9's oD0/oD1 */
+    const hfx_fx_uniform_use *uniforms; uint32_t uniform_count; /* the program's, with their registers */
+    uint32_t reg_count;      /* HFXC_PACK_UNIFORMS: size of hfx_c in both stages (0: nothing packed) */
+} glsl_iface;
+
+/* Prints one stage for one target (sh NULL: the fixed-function stand-in); malloc'ed text,
+ * NULL with errors in diags. glsl.c */
+char *glsl_print(ir_ctx *c, const ir_shader *sh, ir_stage stage, const glsl_iface *io, hfx_target target);
+
+#endif

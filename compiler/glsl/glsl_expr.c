@@ -1,0 +1,559 @@
+/* glsl_expr.c: IR expressions as GLSL text, with HLSL's meaning. The matrix convention
+ * (docs/conventions.md): HLSL floatRxC is GLSL mat{R}x{C} whose column i holds HLSL row i, so
+ * mul(v, M) prints `M * v`, mul(M, v) `v * M`, mul(A, B) `B * A`, M[i] is m[i], M._m01 m[0][1]. */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "glsl/glsl_int.h"
+
+void glsl_error(gp *p, hfx_loc loc, const char *msg) {
+    hfx_error(p->c->diags, loc, X_UNSUPPORTED, "%s", msg);
+    p->failed = true;
+}
+
+bool glsl_is_matrix(const hfx_type *t) { return t->kind == TY_MATRIX && t->rows > 1 && t->cols > 1; }
+
+static bool is_float(hfx_base b) { return b == B_FLOAT || b == B_HALF || b == B_DOUBLE || b == B_MIN16FLOAT; }
+static unsigned ncomp(const hfx_type *t) { return hfx_type_is_numeric(t) ? hfx_type_components(t) : 0; }
+
+static const char *scalar_name(gp *p, hfx_base b) {
+    switch (b) {
+    case B_BOOL: return "bool";
+    case B_INT: return "int";
+    case B_UINT: return p && p->legacy ? "int" : "uint";
+    default: return "float";
+    }
+}
+
+static const char *vec_prefix(gp *p, hfx_base b) {
+    switch (b) {
+    case B_BOOL: return "b";
+    case B_INT: return "i";
+    case B_UINT: return p->legacy ? "i" : "u";
+    default: return "";
+    }
+}
+
+static void add_struct(gp *p, const hfx_type *t) {
+    for (uint32_t i = 0; i < p->struct_count; i++)
+        if (p->structs[i]->st == t->st) return;
+    for (uint32_t i = 0; i < t->st->field_count; i++) {
+        const hfx_type *f = t->st->fields[i].type;
+        while (f->kind == TY_ARRAY) f = f->elem;
+        if (f->kind == TY_STRUCT) add_struct(p, f);
+    }
+    if (p->struct_count == p->struct_cap) {
+        uint32_t cap = p->struct_cap ? p->struct_cap * 2 : 8;
+        const hfx_type **n = HFX_NEW_ARRAY(p->c->arena, const hfx_type *, cap);
+        if (p->struct_count) memcpy(n, p->structs, sizeof *n * p->struct_count);
+        p->structs = n;
+        p->struct_cap = cap;
+    }
+    p->structs[p->struct_count++] = t;
+    sb_printf(&p->structs_text, "struct %s\n{\n", glsl_type(p, t));
+    for (uint32_t i = 0; i < t->st->field_count; i++) {
+        const hfx_field *f = &t->st->fields[i];
+        sb_printf(&p->structs_text, "    %s;\n", glsl_decl(p, f->type, hfx_glsl_name(p->c->arena, f->name)));
+    }
+    sb_put(&p->structs_text, "};\n\n");
+}
+
+const char *glsl_type(gp *p, const hfx_type *t) {
+    hfx_arena *a = p->c->arena;
+    switch (t->kind) {
+    case TY_VOID: return "void";
+    case TY_SCALAR: return scalar_name(p, t->base);
+    case TY_VECTOR:
+        return t->cols == 1 ? scalar_name(p, t->base) : hfx_arena_printf(a, "%svec%u", vec_prefix(p, t->base), t->cols);
+    case TY_MATRIX:
+        if (t->rows == 1 && t->cols == 1) return scalar_name(p, t->base);
+        if (t->rows == 1 || t->cols == 1)
+            return hfx_arena_printf(a, "%svec%u", vec_prefix(p, t->base), t->rows * t->cols);
+        if (t->rows != t->cols && p->legacy) p->nonsquare = true; /* reported once, by glsl_print */
+        return t->rows == t->cols ? hfx_arena_printf(a, "mat%u", t->rows) : hfx_arena_printf(a, "mat%ux%u", t->rows, t->cols);
+    case TY_ARRAY: return glsl_type(p, t->elem);
+    case TY_STRUCT: {
+        const char *name = t->st->name ? hfx_glsl_name(a, t->st->name)
+                                       : hfx_arena_printf(a, "hfx_struct_%u_%u", t->st->loc.line, t->st->loc.col);
+        return name;
+    }
+    case TY_SAMPLER:
+        switch (t->dim) {
+        case DIM_3D: return "sampler3D";
+        case DIM_CUBE: return "samplerCube";
+        default: return "sampler2D";
+        }
+    default: return "float";
+    }
+}
+
+static void use_type(gp *p, const hfx_type *t) {
+    while (t->kind == TY_ARRAY) t = t->elem;
+    if (t->kind == TY_STRUCT) add_struct(p, t);
+}
+
+const char *glsl_ctor_type(gp *p, const hfx_type *t) {
+    use_type(p, t);
+    if (t->kind != TY_ARRAY) return glsl_type(p, t);
+    return hfx_arena_printf(p->c->arena, "%s[%u]", glsl_ctor_type(p, t->elem), t->array_len);
+}
+
+const char *glsl_decl(gp *p, const hfx_type *t, const char *name) {
+    use_type(p, t);
+    if (t->kind != TY_ARRAY) return hfx_arena_printf(p->c->arena, "%s %s", glsl_type(p, t), name);
+    const char *dims = "";
+    const hfx_type *e = t;
+    for (; e->kind == TY_ARRAY; e = e->elem) dims = hfx_arena_printf(p->c->arena, "%s[%u]", dims, e->array_len);
+    return hfx_arena_printf(p->c->arena, "%s %s%s", glsl_type(p, e), name, dims);
+}
+
+static void put_float(gp *p, double v) {
+    char buf[48];
+    if (isnan(v)) { sb_put(p->out, "(0.0 / 0.0)"); return; }
+    if (isinf(v)) { sb_put(p->out, v > 0 ? "3.40282347e+38" : "-3.40282347e+38"); return; }
+    snprintf(buf, sizeof buf, "%.9g", (double)(float)v);
+    if (!strpbrk(buf, ".e")) strcat(buf, ".0");
+    sb_put(p->out, buf);
+}
+
+static void put_scalar(gp *p, hfx_base b, double v) {
+    switch (b) {
+    case B_BOOL: sb_put(p->out, v != 0 ? "true" : "false"); break;
+    case B_INT:
+        if (v <= -2147483648.0) sb_put(p->out, "(-2147483647 - 1)"); /* 2147483648 is no int literal */
+        else sb_printf(p->out, "%lld", (long long)v);
+        break;
+    case B_UINT: sb_printf(p->out, p->legacy ? "%lld" : "%lldu", (long long)v); break;
+    default: put_float(p, v);
+    }
+}
+
+static void put_const(gp *p, const ir_expr *e) {
+    unsigned n = ncomp(e->type);
+    if (n <= 1) { put_scalar(p, e->type->base, e->cval[0]); return; }
+    bool same = true;
+    for (unsigned i = 1; i < n; i++) same = same && e->cval[i] == e->cval[0];
+    sb_printf(p->out, "%s(", glsl_type(p, e->type));
+    if (same && !glsl_is_matrix(e->type)) n = 1; /* mat4(x) would be a diagonal */
+    for (unsigned i = 0; i < n; i++) {
+        if (i) sb_put(p->out, ", ");
+        put_scalar(p, e->type->base, e->cval[i]);
+    }
+    sb_put(p->out, ")");
+}
+
+void glsl_zero(gp *p, const hfx_type *t) {
+    if (t->kind == TY_ARRAY || t->kind == TY_STRUCT) {
+        sb_printf(p->out, "%s(", glsl_ctor_type(p, t));
+        uint32_t n = t->kind == TY_ARRAY ? t->array_len : t->st->field_count;
+        for (uint32_t i = 0; i < n; i++) {
+            if (i) sb_put(p->out, ", ");
+            glsl_zero(p, t->kind == TY_ARRAY ? t->elem : t->st->fields[i].type);
+        }
+        sb_put(p->out, ")");
+        return;
+    }
+    if (ncomp(t) <= 1) { put_scalar(p, t->base, 0); return; }
+    sb_printf(p->out, "%s(", glsl_type(p, t));
+    put_scalar(p, t->base, 0);
+    sb_put(p->out, ")");
+}
+
+bool glsl_helper(gp *p, const char *key) {
+    for (uint32_t i = 0; i < p->helper_count; i++)
+        if (strcmp(p->helper_keys[i], key) == 0) return false;
+    if (p->helper_count == p->helper_cap) {
+        uint32_t cap = p->helper_cap ? p->helper_cap * 2 : 16;
+        const char **n = HFX_NEW_ARRAY(p->c->arena, const char *, cap);
+        if (p->helper_count) memcpy(n, p->helper_keys, sizeof *n * p->helper_count);
+        p->helper_keys = n;
+        p->helper_cap = cap;
+    }
+    p->helper_keys[p->helper_count++] = hfx_arena_strdup(p->c->arena, key);
+    return true;
+}
+
+static void open_paren(gp *p, bool wrap) { if (wrap) sb_put(p->out, "("); }
+static void close_paren(gp *p, bool wrap) { if (wrap) sb_put(p->out, ")"); }
+
+static void call_args(gp *p, const char *fn, ir_expr *const *a, uint32_t n) {
+    sb_printf(p->out, "%s(", fn);
+    for (uint32_t i = 0; i < n; i++) {
+        if (i) sb_put(p->out, ", ");
+        glsl_expr(p, a[i], PREC_ASSIGN);
+    }
+    sb_put(p->out, ")");
+}
+
+/* An expression that is written (assignment target, out argument). */
+void glsl_lvalue(gp *p, const ir_expr *e, int max) {
+    bool saved = p->lvalue;
+    p->lvalue = true;
+    glsl_expr(p, e, max);
+    p->lvalue = saved;
+}
+
+static void user_call(gp *p, const ir_expr *e) {
+    sb_printf(p->out, "%s(", e->fn->glsl);
+    for (uint32_t i = 0; i < e->n; i++) {
+        if (i) sb_put(p->out, ", ");
+        if (i < e->fn->param_count && (e->fn->params[i]->mods & MOD_OUT)) glsl_lvalue(p, e->a[i], PREC_ASSIGN);
+        else glsl_expr(p, e->a[i], PREC_ASSIGN);
+    }
+    sb_put(p->out, ")");
+}
+
+static void binary(gp *p, const char *op, const ir_expr *x, const ir_expr *y, int prec, int max) {
+    bool wrap = prec > max;
+    open_paren(p, wrap);
+    glsl_expr(p, x, prec);
+    sb_printf(p->out, " %s ", op);
+    glsl_expr(p, y, prec - 1);
+    close_paren(p, wrap);
+}
+
+/* Helpers per GLSL type, overloaded by name. */
+static void helper_fmod(gp *p, const char *ty) {
+    if (glsl_helper(p, hfx_arena_printf(p->c->arena, "fmod %s", ty)))
+        sb_printf(&p->helpers, p->legacy ? "%s hfx_fmod(%s x, %s y) { %s q = x / y; return x - y * sign(q) * floor(abs(q)); }\n"
+                                         : "%s hfx_fmod(%s x, %s y) { return x - y * trunc(x / y); }\n", ty, ty, ty, ty);
+}
+
+static void helper_imod(gp *p, const char *ty) {
+    if (glsl_helper(p, hfx_arena_printf(p->c->arena, "imod %s", ty)))
+        sb_printf(&p->helpers, "%s hfx_imod(%s x, %s y) { return x - y * (x / y); }\n", ty, ty, ty);
+}
+
+static const char *bvec(gp *p, unsigned n) { return n == 1 ? "bool" : hfx_arena_printf(p->c->arena, "bvec%u", n); }
+
+static void helper_logic(gp *p, unsigned n, bool is_and) {
+    const char *ty = bvec(p, n), *name = is_and ? "hfx_and" : "hfx_or", *op = is_and ? "&&" : "||";
+    if (!glsl_helper(p, hfx_arena_printf(p->c->arena, "%s %s", name, ty))) return;
+    sb_printf(&p->helpers, "%s %s(%s a, %s b) { return %s(", ty, name, ty, ty, ty);
+    for (unsigned i = 0; i < n; i++) sb_printf(&p->helpers, "%sa[%u] %s b[%u]", i ? ", " : "", i, op, i);
+    sb_put(&p->helpers, "); }\n");
+}
+
+static void helper_select(gp *p, const hfx_type *t) {
+    const char *ty = glsl_type(p, t);
+    unsigned n = ncomp(t);
+    if (!glsl_helper(p, hfx_arena_printf(p->c->arena, "select %s", ty))) return;
+    sb_printf(&p->helpers, "%s hfx_select(%s c, %s a, %s b) { return %s(", ty, bvec(p, n), ty, ty, ty);
+    for (unsigned i = 0; i < n; i++) sb_printf(&p->helpers, "%sc[%u] ? a[%u] : b[%u]", i ? ", " : "", i, i, i);
+    sb_put(&p->helpers, "); }\n");
+}
+
+static void helper_splat_matrix(gp *p, const hfx_type *t) {
+    const char *ty = glsl_type(p, t);
+    if (!glsl_helper(p, hfx_arena_printf(p->c->arena, "splat %s", ty))) return;
+    sb_printf(&p->helpers, "%s hfx_splat_%s(float s) { return %s(", ty, ty, ty);
+    for (unsigned i = 0; i < t->rows; i++) sb_printf(&p->helpers, "%svec%u(s)", i ? ", " : "", t->cols);
+    sb_put(&p->helpers, "); }\n");
+}
+
+static void print_unary(gp *p, const ir_expr *e, int max) {
+    const ir_expr *x = e->a[0];
+    bool vec = ncomp(e->type) > 1;
+    if (e->op == OP_NOT && vec) { call_args(p, "not", e->a, 1); return; }
+    if (e->op == OP_POSTINC || e->op == OP_POSTDEC) {
+        bool wrap = PREC_POSTFIX > max;
+        open_paren(p, wrap);
+        glsl_lvalue(p, x, PREC_POSTFIX);
+        sb_put(p->out, e->op == OP_POSTINC ? "++" : "--");
+        close_paren(p, wrap);
+        return;
+    }
+    const char *op = e->op == OP_NEG ? "-" : e->op == OP_NOT ? "!" : e->op == OP_BITNOT ? "~" :
+                     e->op == OP_PREINC ? "++" : "--";
+    bool wrap = PREC_UNARY > max;
+    open_paren(p, wrap);
+    sb_put(p->out, op);
+    if (e->op == OP_PREINC || e->op == OP_PREDEC) glsl_lvalue(p, x, PREC_POSTFIX);
+    else glsl_expr(p, x, PREC_POSTFIX); /* "- -x" would read as "--x" */
+    close_paren(p, wrap);
+}
+
+/* A scalar converted to a vector or matrix of the same element type. */
+static bool is_splat(const ir_expr *e) {
+    if (e->kind != IE_CONVERT && !(e->kind == IE_CONSTRUCT && e->n == 1)) return false;
+    const hfx_type *from = e->a[0]->type;
+    return ncomp(from) == 1 && ncomp(e->type) > 1 && strcmp(scalar_name(NULL, from->base), scalar_name(NULL, e->type->base)) == 0 &&
+           (e->type->kind == TY_VECTOR || glsl_is_matrix(e->type));
+}
+
+static const char *rel_fn(hfx_op op) {
+    switch (op) {
+    case OP_LT: return "lessThan";
+    case OP_GT: return "greaterThan";
+    case OP_LE: return "lessThanEqual";
+    case OP_GE: return "greaterThanEqual";
+    case OP_EQ: return "equal";
+    default: return "notEqual";
+    }
+}
+
+static void print_binary(gp *p, const ir_expr *e, int max) {
+    const ir_expr *x = e->a[0], *y = e->a[1];
+    unsigned n = ncomp(x->type);
+    hfx_op op = e->op;
+    if (op >= OP_LT && op <= OP_NE && n > 1) {
+        if (glsl_is_matrix(x->type)) glsl_error(p, e->loc, "comparison of matrices is not supported");
+        call_args(p, rel_fn(op), e->a, 2);
+        return;
+    }
+    if ((op == OP_AND || op == OP_OR) && n > 1) {
+        helper_logic(p, n, op == OP_AND);
+        call_args(p, op == OP_AND ? "hfx_and" : "hfx_or", e->a, 2);
+        return;
+    }
+    if (op == OP_MUL && glsl_is_matrix(x->type) && glsl_is_matrix(y->type)) {
+        call_args(p, "matrixCompMult", e->a, 2);
+        return;
+    }
+    if (op == OP_MOD) {
+        const char *ty = glsl_type(p, e->type);
+        if (is_float(e->type->base)) { helper_fmod(p, ty); call_args(p, "hfx_fmod", e->a, 2); }
+        else { helper_imod(p, ty); call_args(p, "hfx_imod", e->a, 2); }
+        return;
+    }
+    static const struct { const char *s; int prec; } ops[] = {
+        [OP_ADD] = {"+", PREC_ADD}, [OP_SUB] = {"-", PREC_ADD}, [OP_MUL] = {"*", PREC_MUL},
+        [OP_DIV] = {"/", PREC_MUL}, [OP_SHL] = {"<<", PREC_SHIFT}, [OP_SHR] = {">>", PREC_SHIFT},
+        [OP_BITAND] = {"&", PREC_BITAND}, [OP_BITOR] = {"|", PREC_BITOR}, [OP_BITXOR] = {"^", PREC_BITXOR},
+        [OP_LT] = {"<", PREC_REL}, [OP_GT] = {">", PREC_REL}, [OP_LE] = {"<=", PREC_REL}, [OP_GE] = {">=", PREC_REL},
+        [OP_EQ] = {"==", PREC_EQ}, [OP_NE] = {"!=", PREC_EQ}, [OP_AND] = {"&&", PREC_AND}, [OP_OR] = {"||", PREC_OR},
+    };
+    if (op >= sizeof ops / sizeof *ops || !ops[op].s) { glsl_error(p, e->loc, "unknown operator"); return; }
+    if (p->legacy && op >= OP_SHL && op <= OP_BITXOR) {
+        glsl_error(p, e->loc, "integer bit operations are not available in GLSL 110");
+        return;
+    }
+    if (op >= OP_ADD && op <= OP_DIV) { /* GLSL mixes scalars and vectors here: drop the splat */
+        if (is_splat(y) && !is_splat(x)) y = y->a[0];
+        else if (is_splat(x) && !is_splat(y)) x = x->a[0];
+    }
+    binary(p, ops[op].s, x, y, ops[op].prec, max);
+}
+
+static void print_select(gp *p, const ir_expr *e, int max) {
+    const ir_expr *c = e->a[0];
+    if (ncomp(c->type) > 1) {
+        if (is_float(e->type->base) && !p->legacy) {
+            const ir_expr *args[3] = { e->a[2], e->a[1], c }; /* mix picks y where the bool is true */
+            call_args(p, "mix", (ir_expr *const *)args, 3);
+        } else {
+            helper_select(p, e->type);
+            call_args(p, "hfx_select", e->a, 3);
+        }
+        return;
+    }
+    bool wrap = PREC_SELECT > max;
+    open_paren(p, wrap);
+    glsl_expr(p, c, PREC_OR);
+    sb_put(p->out, " ? ");
+    glsl_expr(p, e->a[1], PREC_ASSIGN);
+    sb_put(p->out, " : ");
+    glsl_expr(p, e->a[2], PREC_SELECT);
+    close_paren(p, wrap);
+}
+
+static void print_assign(gp *p, const ir_expr *e, int max) {
+    const ir_expr *x = e->a[0], *y = e->a[1];
+    bool wrap = PREC_ASSIGN > max;
+    open_paren(p, wrap);
+    glsl_lvalue(p, x, PREC_UNARY);
+    if (e->op == OP_NONE) {
+        sb_put(p->out, " = ");
+        glsl_expr(p, y, PREC_ASSIGN);
+    } else if (e->op == OP_MOD || (e->op == OP_MUL && glsl_is_matrix(x->type))) {
+        /* no GLSL compound form with HLSL's meaning: x = f(x, y) */
+        ir_expr tmp = *e;
+        tmp.kind = IE_BINARY;
+        sb_put(p->out, " = ");
+        print_binary(p, &tmp, PREC_ASSIGN);
+    } else {
+        static const char *const ops[] = {
+            [OP_ADD] = "+=", [OP_SUB] = "-=", [OP_MUL] = "*=", [OP_DIV] = "/=", [OP_SHL] = "<<=",
+            [OP_SHR] = ">>=", [OP_BITAND] = "&=", [OP_BITOR] = "|=", [OP_BITXOR] = "^=",
+        };
+        const char *op = e->op < sizeof ops / sizeof *ops ? ops[e->op] : NULL;
+        if (!op) { glsl_error(p, e->loc, "unknown assignment operator"); op = "="; }
+        if (e->op >= OP_ADD && e->op <= OP_DIV && is_splat(y) && x->type->kind == TY_VECTOR) y = y->a[0]; /* v *= s */
+        sb_printf(p->out, " %s ", op);
+        glsl_expr(p, y, PREC_ASSIGN);
+    }
+    close_paren(p, wrap);
+}
+
+/* Constructor arguments: GLSL forbids matrices among several matrix-constructor arguments,
+ * so such a matrix is passed row by row (HLSL rows are GLSL columns). */
+static void print_construct(gp *p, const ir_expr *e) {
+    const char *ty = glsl_ctor_type(p, e->type);
+    if (glsl_is_matrix(e->type) && e->n == 1 && ncomp(e->a[0]->type) == 1) { /* a scalar spread */
+        helper_splat_matrix(p, e->type);
+        sb_printf(p->out, "hfx_splat_%s", ty);
+        call_args(p, "", e->a, 1);
+        return;
+    }
+    sb_printf(p->out, "%s(", ty);
+    for (uint32_t i = 0; i < e->n; i++) {
+        if (i) sb_put(p->out, ", ");
+        const ir_expr *a = e->a[i];
+        if (glsl_is_matrix(e->type) && e->n > 1 && glsl_is_matrix(a->type)) {
+            for (unsigned r = 0; r < a->type->rows; r++) {
+                if (r) sb_put(p->out, ", ");
+                glsl_expr(p, a, PREC_POSTFIX);
+                sb_printf(p->out, "[%u]", r);
+            }
+        } else {
+            glsl_expr(p, a, PREC_ASSIGN);
+        }
+    }
+    sb_put(p->out, ")");
+}
+
+static void print_convert(gp *p, const ir_expr *e, int max) {
+    const ir_expr *x = e->a[0];
+    const hfx_type *to = e->type, *from = x->type;
+    unsigned nt = ncomp(to), nf = ncomp(from);
+    if (!nt || !nf) { glsl_expr(p, x, max); return; }
+    const char *tty = glsl_type(p, to), *fty = glsl_type(p, from);
+    if (glsl_is_matrix(to)) {
+        if (nf == 1) {
+            helper_splat_matrix(p, to);
+            sb_printf(p->out, "hfx_splat_%s(", tty);
+            if (!is_float(from->base)) sb_put(p->out, "float(");
+            glsl_expr(p, x, PREC_ASSIGN);
+            sb_put(p->out, is_float(from->base) ? ")" : "))");
+            return;
+        }
+        sb_printf(p->out, "%s(", tty); /* submatrix, or components in order from a vector */
+        glsl_expr(p, x, PREC_ASSIGN);
+        sb_put(p->out, ")");
+        return;
+    }
+    if (nt == 1 && nf > 1) { /* the first component */
+        bool same = strcmp(tty, scalar_name(p, from->base)) == 0;
+        if (!same) sb_printf(p->out, "%s(", tty);
+        glsl_expr(p, x, PREC_POSTFIX);
+        sb_put(p->out, glsl_is_matrix(from) ? "[0][0]" : ".x");
+        if (!same) sb_put(p->out, ")");
+        return;
+    }
+    if (strcmp(tty, fty) == 0) { glsl_expr(p, x, max); return; }
+    if (nt < nf && !glsl_is_matrix(from) && strcmp(vec_prefix(p, to->base), vec_prefix(p, from->base)) == 0) {
+        glsl_expr(p, x, PREC_POSTFIX);
+        sb_printf(p->out, ".%.*s", (int)nt, "xyzw");
+        return;
+    }
+    sb_printf(p->out, "%s(", tty);
+    glsl_expr(p, x, PREC_ASSIGN);
+    sb_put(p->out, ")");
+}
+
+static void print_swizzle(gp *p, const ir_expr *e, int max) {
+    const ir_expr *x = e->a[0];
+    unsigned n = e->comp_count;
+    if (ncomp(x->type) == 1) {
+        if (n == 1) { glsl_expr(p, x, max); return; }
+        sb_printf(p->out, "%s(", glsl_type(p, e->type));
+        glsl_expr(p, x, PREC_ASSIGN);
+        sb_put(p->out, ")");
+        return;
+    }
+    if (glsl_is_matrix(x->type)) {
+        unsigned cols = x->type->cols;
+        if (n > 1) sb_printf(p->out, "%s(", glsl_type(p, e->type));
+        for (unsigned i = 0; i < n; i++) {
+            if (i) sb_put(p->out, ", ");
+            glsl_expr(p, x, PREC_POSTFIX);
+            sb_printf(p->out, "[%u][%u]", e->comps[i] / cols, e->comps[i] % cols);
+        }
+        if (n > 1) sb_put(p->out, ")");
+        return;
+    }
+    glsl_expr(p, x, PREC_POSTFIX);
+    sb_put(p->out, ".");
+    for (unsigned i = 0; i < n; i++) sb_printf(p->out, "%c", "xyzw"[e->comps[i] & 3]);
+}
+
+/* Reads of a uniform array at a dynamic (or out of range) index return zero past the end,
+ * as D3D9's unset constant registers do in practice, instead of GLSL's undefined value. */
+static void print_guarded_read(gp *p, const ir_expr *e) {
+    const ir_var *v = e->a[0]->var;
+    const hfx_type *at = v->type;
+    const char *fn = hfx_arena_printf(p->c->arena, "hfx_read_%s", v->glsl);
+    if (glsl_helper(p, fn)) {
+        sbuf *saved = p->out;
+        sbuf tmp = {0};
+        p->out = &tmp;
+        glsl_zero(p, at->elem);
+        p->out = saved;
+        sb_printf(&p->helpers, "%s %s(int i)\n{\n    if (i < 0 || i >= %u) return %s;\n    return %s[i];\n}\n",
+                  glsl_ctor_type(p, at->elem), fn, at->array_len, tmp.d ? tmp.d : "0", v->glsl);
+        free(tmp.d);
+    }
+    sb_printf(p->out, "%s(", fn);
+    if (e->a[1]->type->base != B_INT) sb_put(p->out, "int(");
+    glsl_expr(p, e->a[1], PREC_ASSIGN);
+    sb_put(p->out, e->a[1]->type->base != B_INT ? "))" : ")");
+}
+
+static void print_index(gp *p, const ir_expr *e, int max) {
+    const ir_expr *x = e->a[0], *i = e->a[1];
+    if (!p->lvalue && x->type->kind == TY_ARRAY && x->kind == IE_VAR &&
+        (x->var->kind == IRV_UNIFORM || x->var->kind == IRV_PRIVATE) &&
+        (!ir_is_const(i) || i->cval[0] < 0 || i->cval[0] >= x->type->array_len)) {
+        bool saved = p->lvalue;
+        p->lvalue = false;
+        print_guarded_read(p, e);
+        p->lvalue = saved;
+        return;
+    }
+    if (x->type->kind == TY_MATRIX && x->type->rows == 1) { glsl_expr(p, x, max); return; } /* float1xN: its row */
+    if (hfx_type_is_numeric(x->type) && ncomp(x->type) == 1) { glsl_expr(p, x, max); return; } /* float1[0] */
+    glsl_expr(p, x, PREC_POSTFIX);
+    sb_put(p->out, "[");
+    bool conv = i->type->base != B_INT && !ir_is_const(i), saved = p->lvalue;
+    if (conv) sb_put(p->out, "int(");
+    p->lvalue = false; /* the index itself is read */
+    if (ir_is_const(i)) sb_printf(p->out, "%lld", (long long)i->cval[0]);
+    else glsl_expr(p, i, PREC_COMMA - 1);
+    p->lvalue = saved;
+    if (conv) sb_put(p->out, ")");
+    sb_put(p->out, "]");
+}
+
+void glsl_intrinsic(gp *p, const ir_expr *e, int max);
+
+void glsl_expr(gp *p, const ir_expr *e, int max) {
+    if (!e) { glsl_error(p, (hfx_loc){0, 0, 0}, "missing expression"); return; }
+    switch (e->kind) {
+    case IE_CONST: {
+        bool neg = ncomp(e->type) == 1 && e->cval[0] < 0;
+        open_paren(p, neg && PREC_UNARY > max);
+        put_const(p, e);
+        close_paren(p, neg && PREC_UNARY > max);
+        break;
+    }
+    case IE_VAR: sb_put(p->out, e->var->glsl); break;
+    case IE_UNARY: print_unary(p, e, max); break;
+    case IE_BINARY: print_binary(p, e, max); break;
+    case IE_SELECT: print_select(p, e, max); break;
+    case IE_ASSIGN: print_assign(p, e, max); break;
+    case IE_COMMA: binary(p, ",", e->a[0], e->a[1], PREC_COMMA, max); break;
+    case IE_CALL: user_call(p, e); break;
+    case IE_INTRIN: glsl_intrinsic(p, e, max); break;
+    case IE_CONSTRUCT: print_construct(p, e); break;
+    case IE_CONVERT: print_convert(p, e, max); break;
+    case IE_SWIZZLE: print_swizzle(p, e, max); break;
+    case IE_INDEX: print_index(p, e, max); break;
+    case IE_FIELD:
+        glsl_expr(p, e->a[0], PREC_POSTFIX);
+        sb_printf(p->out, ".%s", hfx_glsl_name(p->c->arena, e->a[0]->type->st->fields[e->field].name));
+        break;
+    }
+}

@@ -1,0 +1,52 @@
+/* glsl_int.h: what glsl.c (declarations, statements, main) and glsl_expr.c (expressions,
+ * intrinsics, helper functions) share. */
+#ifndef HFX_GLSL_INT_H
+#define HFX_GLSL_INT_H
+
+#include "base/sbuf.h"
+#include "glsl/glsl.h"
+#include "ir/ir.h"
+
+
+typedef struct gp {
+    ir_ctx *c;
+    const ir_shader *sh;
+    ir_stage stage;
+    const glsl_iface *io;
+    hfx_target target;
+    bool es, legacy;          /* ES 300; GLSL 110 */
+    sbuf *out;
+    int indent;
+    sbuf helpers;             /* helper functions, in first-use order */
+    const char **helper_keys; uint32_t helper_count, helper_cap;
+    const hfx_type **structs; uint32_t struct_count, struct_cap; /* in dependency order */
+    sbuf structs_text;
+    bool failed;
+    bool lvalue;              /* printing the target of a write: no guarded reads */
+    ir_leaf *in, *outv;       /* the entry's interface (NULL for a fixed-function stand-in) */
+    int in_count, out_count;
+    bool uses_fixup;          /* the pixel shader reads hfx_pos_fixup (ddy, VPOS) */
+    bool nonsquare;           /* GLSL 110 met a non-square matrix type */
+} gp;
+
+/* Expression precedence, GLSL's: lower binds tighter. */
+enum { PREC_PRIMARY = 1, PREC_POSTFIX, PREC_UNARY, PREC_MUL, PREC_ADD, PREC_SHIFT, PREC_REL, PREC_EQ,
+       PREC_BITAND, PREC_BITXOR, PREC_BITOR, PREC_AND, PREC_XOR, PREC_OR, PREC_SELECT, PREC_ASSIGN, PREC_COMMA };
+
+const char *glsl_type(gp *p, const hfx_type *t);        /* "vec4", "mat3x4", "LuzSpot"; arrays: the element */
+const char *glsl_ctor_type(gp *p, const hfx_type *t);   /* arrays as "float[3]" */
+const char *glsl_decl(gp *p, const hfx_type *t, const char *name); /* "float a[3]" */
+bool glsl_is_matrix(const hfx_type *t);                 /* a matrix GLSL keeps as one (no 1xN / Nx1) */
+void glsl_zero(gp *p, const hfx_type *t);               /* a zero value of t */
+void glsl_expr(gp *p, const ir_expr *e, int max_prec);
+void glsl_lvalue(gp *p, const ir_expr *e, int max_prec); /* an expression that is written */
+bool glsl_helper(gp *p, const char *key);               /* true when key is new: print its text into p->helpers */
+void glsl_error(gp *p, hfx_loc loc, const char *msg);
+
+/* glsl_pack.c: HFXC_PACK_UNIFORMS (packed parameters read from `uniform vec4 hfx_c[K]`). */
+uint32_t glsl_packed_reg(const gp *p, const ir_var *v); /* v's first register, or HFX_NONE */
+void glsl_declare_regs(gp *p);                          /* hfx_c, when the stage reads a packed parameter */
+void glsl_declare_packed(gp *p, const ir_var *v, uint32_t reg); /* its private global */
+void glsl_init_packed(gp *p);                           /* main's first lines: each from its registers */
+
+#endif

@@ -1,0 +1,351 @@
+/* glsl_intrin.c: HLSL intrinsics in GLSL, with HLSL's meaning where the two differ:
+ * frac is x - floor(x) (fract), fmod truncates (x - y * trunc(x / y), not GLSL mod), round is
+ * floor(x + 0.5) as fxc's ps_2/3 code computes it, ddy is -dFdy (D3D's screen y goes down),
+ * tex2Dlod/bias take the level from .w. */
+#include <string.h>
+
+#include "glsl/glsl_int.h"
+
+static unsigned ncomp(const hfx_type *t) { return hfx_type_is_numeric(t) ? hfx_type_components(t) : 0; }
+static bool is_float(hfx_base b) { return b == B_FLOAT || b == B_HALF || b == B_DOUBLE || b == B_MIN16FLOAT; }
+
+static void args(gp *p, const char *fn, ir_expr *const *a, uint32_t n) {
+    sb_printf(p->out, "%s(", fn);
+    for (uint32_t i = 0; i < n; i++) {
+        if (i) sb_put(p->out, ", ");
+        glsl_expr(p, a[i], PREC_ASSIGN);
+    }
+    sb_put(p->out, ")");
+}
+
+/* f(x, out y): modf, frexp. */
+static void args_out2(gp *p, const char *fn, ir_expr *const *a) {
+    sb_printf(p->out, "%s(", fn);
+    glsl_expr(p, a[0], PREC_ASSIGN);
+    sb_put(p->out, ", ");
+    glsl_lvalue(p, a[1], PREC_ASSIGN);
+    sb_put(p->out, ")");
+}
+
+static void wrap_open(gp *p, int prec, int max) { if (prec > max) sb_put(p->out, "("); }
+static void wrap_close(gp *p, int prec, int max) { if (prec > max) sb_put(p->out, ")"); }
+
+static const char *ty(gp *p, const hfx_type *t) { return glsl_type(p, t); }
+
+/* `x` as a float type (dot, any/all of non-bool values). */
+static void as_float(gp *p, const ir_expr *x) {
+    if (is_float(x->type->base)) { glsl_expr(p, x, PREC_ASSIGN); return; }
+    unsigned n = ncomp(x->type);
+    sb_printf(p->out, n > 1 ? "vec%u(" : "float(", n);
+    glsl_expr(p, x, PREC_ASSIGN);
+    sb_put(p->out, ")");
+}
+
+static void all_any(gp *p, const ir_expr *e, const char *fn) {
+    const ir_expr *x = e->a[0];
+    unsigned n = ncomp(x->type);
+    if (n == 1) {
+        if (x->type->base == B_BOOL) glsl_expr(p, x, PREC_ASSIGN);
+        else { sb_put(p->out, "bool("); glsl_expr(p, x, PREC_ASSIGN); sb_put(p->out, ")"); }
+        return;
+    }
+    sb_printf(p->out, "%s(", fn);
+    if (x->type->base == B_BOOL) glsl_expr(p, x, PREC_ASSIGN);
+    else {
+        sb_put(p->out, "notEqual(");
+        glsl_expr(p, x, PREC_ASSIGN);
+        sb_put(p->out, ", ");
+        glsl_zero(p, x->type);
+        sb_put(p->out, ")");
+    }
+    sb_put(p->out, ")");
+}
+
+static void helper_lit(gp *p) {
+    if (glsl_helper(p, "lit"))
+        sb_put(&p->helpers,
+               "vec4 hfx_lit(float n_dot_l, float n_dot_h, float m)\n{\n"
+               "    return vec4(1.0, max(n_dot_l, 0.0), (n_dot_l < 0.0 || n_dot_h < 0.0) ? 0.0 : pow(n_dot_h, m), 1.0);\n}\n");
+}
+
+static void helper_typed(gp *p, const char *name, const hfx_type *t, const char *fmt) {
+    const char *tn = ty(p, t);
+    if (!glsl_helper(p, hfx_arena_printf(p->c->arena, "%s %s", name, tn))) return;
+    /* fmt uses %1$s for the type: spelled out to stay portable */
+    const char *s = fmt;
+    for (; *s; s++) {
+        if (s[0] == '$' && s[1] == 'T') { sb_put(&p->helpers, tn); s++; continue; }
+        char c[2] = { *s, 0 };
+        sb_put(&p->helpers, c);
+    }
+}
+
+static void helper_clip(gp *p, const hfx_type *t) {
+    unsigned n = ncomp(t);
+    if (n == 1) helper_typed(p, "clip", t, "void hfx_clip($T x) { if (x < 0.0) discard; }\n");
+    else helper_typed(p, "clip", t, "void hfx_clip($T x) { if (any(lessThan(x, $T(0.0)))) discard; }\n");
+}
+
+static void print_mul(gp *p, const ir_expr *e, int max) {
+    const ir_expr *a = e->a[0], *b = e->a[1];
+    const hfx_type *ta = a->type, *tb = b->type;
+    unsigned na = ncomp(ta), nb = ncomp(tb);
+    bool ma = glsl_is_matrix(ta), mb = glsl_is_matrix(tb);
+    if (na == 1 || nb == 1 || (!ma && !mb && ncomp(e->type) > 1)) { /* scalar times anything; row x column */
+        wrap_open(p, PREC_MUL, max);
+        glsl_expr(p, a, PREC_MUL);
+        sb_put(p->out, " * ");
+        glsl_expr(p, b, PREC_UNARY);
+        wrap_close(p, PREC_MUL, max);
+        return;
+    }
+    if (!ma && !mb) { /* vector . vector */
+        bool conv = !is_float(e->type->base);
+        if (conv) sb_printf(p->out, "%s(", ty(p, e->type));
+        sb_put(p->out, "dot(");
+        as_float(p, a);
+        sb_put(p->out, ", ");
+        as_float(p, b);
+        sb_put(p->out, conv ? "))" : ")");
+        return;
+    }
+    /* column i of the GLSL matrix is HLSL row i: every product reverses */
+    wrap_open(p, PREC_MUL, max);
+    glsl_expr(p, b, PREC_MUL);
+    sb_put(p->out, " * ");
+    glsl_expr(p, a, PREC_UNARY);
+    wrap_close(p, PREC_MUL, max);
+}
+
+static bool is_tex(ir_intrin i) { return i >= II_TEX1D && i <= II_TEXCUBEPROJ; }
+
+/* The coordinate part `.xy` of a packed float4 argument (lod, bias, proj forms). */
+static void coord_part(gp *p, const ir_expr *t, unsigned n) {
+    glsl_expr(p, t, PREC_POSTFIX);
+    sb_printf(p->out, ".%.*s", (int)n, "xyzw");
+}
+
+static void print_tex(gp *p, const ir_expr *e) {
+    ir_intrin i = e->intrin;
+    unsigned base = i >= II_TEXCUBE ? II_TEXCUBE : i >= II_TEX3D ? II_TEX3D : i >= II_TEX2D ? II_TEX2D : II_TEX1D;
+    unsigned form = i - base; /* plain, bias, grad, lod, proj (ir_intrin.def order) */
+    unsigned dims = base == II_TEX1D ? 1 : base == II_TEX2D ? 2 : 3;
+    bool one_d = base == II_TEX1D;
+    const ir_expr *s = e->a[0], *t = e->n > 1 ? e->a[1] : NULL;
+    if (!t) { glsl_error(p, e->loc, "texture sampling needs coordinates"); return; }
+    if (form == 0 && e->n == 4) form = 2;
+    const char *fn;
+    if (p->legacy) {
+        const char *d = base == II_TEXCUBE ? "Cube" : base == II_TEX3D ? "3D" : "2D";
+        fn = hfx_arena_printf(p->c->arena, "texture%s%s", d, form == 3 ? "Lod" : form == 4 && base != II_TEXCUBE ? "Proj" : "");
+        if (form == 2) fn = hfx_arena_printf(p->c->arena, "texture%s", d); /* no gradients in 110 */
+    } else {
+        fn = form == 2 ? "textureGrad" : form == 3 ? "textureLod" : form == 4 && base != II_TEXCUBE && !one_d ? "textureProj" : "texture";
+    }
+    sb_printf(p->out, "%s(", fn);
+    glsl_expr(p, s, PREC_ASSIGN);
+    sb_put(p->out, ", ");
+    switch (form) {
+    case 0: case 2: /* plain, grad */
+        if (one_d) { sb_put(p->out, "vec2("); glsl_expr(p, t, PREC_ASSIGN); sb_put(p->out, ", 0.5)"); }
+        else glsl_expr(p, t, PREC_ASSIGN);
+        if (form == 2 && !p->legacy) {
+            for (int k = 2; k < 4; k++) {
+                sb_put(p->out, ", ");
+                if (one_d) { sb_put(p->out, "vec2("); glsl_expr(p, e->a[k], PREC_ASSIGN); sb_put(p->out, ", 0.0)"); }
+                else glsl_expr(p, e->a[k], PREC_ASSIGN);
+            }
+        }
+        break;
+    case 1: case 3: /* bias, lod: level in .w */
+        if (one_d) { sb_put(p->out, "vec2("); coord_part(p, t, 1); sb_put(p->out, ", 0.5)"); }
+        else coord_part(p, t, dims);
+        sb_put(p->out, ", ");
+        glsl_expr(p, t, PREC_POSTFIX);
+        sb_put(p->out, ".w");
+        break;
+    case 4: /* proj */
+        if (one_d) {
+            sb_put(p->out, "vec2(");
+            coord_part(p, t, 1);
+            sb_put(p->out, " / ");
+            glsl_expr(p, t, PREC_POSTFIX);
+            sb_put(p->out, ".w, 0.5)");
+        } else if (base == II_TEXCUBE) {
+            coord_part(p, t, 3);
+            sb_put(p->out, " / ");
+            glsl_expr(p, t, PREC_POSTFIX);
+            sb_put(p->out, ".w");
+        } else {
+            glsl_expr(p, t, PREC_ASSIGN);
+        }
+        break;
+    }
+    sb_put(p->out, ")");
+}
+
+static const char *const same_name[II_COUNT] = {
+    [II_ABS] = "abs", [II_ACOS] = "acos", [II_ASIN] = "asin", [II_ATAN] = "atan", [II_CEIL] = "ceil",
+    [II_CLAMP] = "clamp", [II_COS] = "cos", [II_COSH] = "cosh", [II_CROSS] = "cross", [II_DEGREES] = "degrees",
+    [II_DISTANCE] = "distance", [II_EXP] = "exp", [II_EXP2] = "exp2", [II_FACEFORWARD] = "faceforward",
+    [II_FLOOR] = "floor", [II_FWIDTH] = "fwidth", [II_ISINF] = "isinf", [II_ISNAN] = "isnan", [II_LENGTH] = "length",
+    [II_LOG] = "log", [II_LOG2] = "log2", [II_MAX] = "max", [II_MIN] = "min", [II_MODF] = "modf",
+    [II_NORMALIZE] = "normalize", [II_POW] = "pow", [II_RADIANS] = "radians", [II_REFLECT] = "reflect",
+    [II_REFRACT] = "refract", [II_SIGN] = "sign", [II_SIN] = "sin", [II_SINH] = "sinh",
+    [II_SMOOTHSTEP] = "smoothstep", [II_SQRT] = "sqrt", [II_STEP] = "step", [II_TAN] = "tan", [II_TANH] = "tanh",
+    [II_TRANSPOSE] = "transpose", [II_TRUNC] = "trunc", [II_DETERMINANT] = "determinant",
+    [II_ATAN2] = "atan", [II_FRAC] = "fract", [II_LERP] = "mix", [II_RSQRT] = "inversesqrt", [II_DDX] = "dFdx",
+};
+
+/* GLSL 110 lacks the hyperbolic functions, trunc-based helpers, isnan/isinf, modf and
+ * transpose/determinant: helpers with the same meaning. Returns true when it printed e. */
+static bool legacy_intrinsic(gp *p, const ir_expr *e) {
+    const hfx_type *t = e->n ? e->a[0]->type : e->type;
+    const char *name = NULL, *text = NULL;
+    switch (e->intrin) {
+    case II_COSH: name = "hfx_cosh"; text = "$T hfx_cosh($T x) { return (exp(x) + exp(-x)) * 0.5; }\n"; break;
+    case II_SINH: name = "hfx_sinh"; text = "$T hfx_sinh($T x) { return (exp(x) - exp(-x)) * 0.5; }\n"; break;
+    case II_TANH: name = "hfx_tanh"; text = "$T hfx_tanh($T x) { $T e = exp(2.0 * x); return (e - 1.0) / (e + 1.0); }\n"; break;
+    case II_MODF: name = "hfx_modf"; text = "$T hfx_modf($T x, out $T i) { i = sign(x) * floor(abs(x)); return x - i; }\n"; break;
+    case II_ISNAN:
+        if (ncomp(t) != 1) return false;
+        name = "hfx_isnan"; text = "bool hfx_isnan($T x) { return !(x == x); }\n"; break;
+    case II_ISINF:
+        if (ncomp(t) != 1) return false;
+        name = "hfx_isinf"; text = "bool hfx_isinf($T x) { return x == x && x * 0.0 != 0.0; }\n"; break;
+    case II_DETERMINANT:
+        if (t->rows == 2) { name = "hfx_determinant"; text = "float hfx_determinant($T m) { return m[0][0] * m[1][1] - m[0][1] * m[1][0]; }\n"; }
+        else if (t->rows == 3) { name = "hfx_determinant"; text = "float hfx_determinant($T m) { return dot(m[0], cross(m[1], m[2])); }\n"; }
+        else return false;
+        break;
+    case II_TRANSPOSE:
+        if (t->rows == 2) { name = "hfx_transpose"; text = "$T hfx_transpose($T m) { return $T(m[0][0], m[1][0], m[0][1], m[1][1]); }\n"; }
+        else if (t->rows == 3) {
+            name = "hfx_transpose";
+            text = "$T hfx_transpose($T m) { return $T(m[0][0], m[1][0], m[2][0], m[0][1], m[1][1], m[2][1], m[0][2], m[1][2], m[2][2]); }\n";
+        } else if (t->rows == 4) {
+            name = "hfx_transpose";
+            text = "$T hfx_transpose($T m) { return $T(m[0][0], m[1][0], m[2][0], m[3][0], m[0][1], m[1][1], m[2][1], m[3][1], "
+                   "m[0][2], m[1][2], m[2][2], m[3][2], m[0][3], m[1][3], m[2][3], m[3][3]); }\n";
+        } else return false;
+        break;
+    default: return false;
+    }
+    helper_typed(p, name + 4, t, text);
+    if (e->intrin == II_MODF) args_out2(p, name, e->a);
+    else args(p, name, e->a, e->n);
+    return true;
+}
+
+void glsl_intrinsic(gp *p, const ir_expr *e, int max) {
+    ir_intrin i = e->intrin;
+    if (p->legacy && legacy_intrinsic(p, e)) return;
+    if (is_tex(i)) { print_tex(p, e); return; }
+    if ((i == II_DETERMINANT || i == II_TRANSPOSE) && !glsl_is_matrix(e->a[0]->type)) {
+        glsl_expr(p, e->a[0], max); /* 1x1 */
+        return;
+    }
+    if (p->legacy && i == II_TRUNC) {
+        sb_put(p->out, "(sign(");
+        glsl_expr(p, e->a[0], PREC_ASSIGN);
+        sb_put(p->out, ") * floor(abs(");
+        glsl_expr(p, e->a[0], PREC_ASSIGN);
+        sb_put(p->out, ")))");
+        return;
+    }
+    if (i == II_MODF) { args_out2(p, "modf", e->a); return; }
+    if (same_name[i]) { args(p, same_name[i], e->a, e->n); return; }
+    switch (i) {
+    case II_ALL: all_any(p, e, "all"); return;
+    case II_ANY: all_any(p, e, "any"); return;
+    case II_SATURATE: {
+        const char *z = is_float(e->type->base) ? "0.0" : "0", *o = is_float(e->type->base) ? "1.0" : "1";
+        sb_put(p->out, "clamp(");
+        glsl_expr(p, e->a[0], PREC_ASSIGN);
+        sb_printf(p->out, ", %s, %s)", z, o);
+        return;
+    }
+    case II_DDY: /* D3D's screen y grows downwards, GL's window y upwards (unless flipped) */
+        p->uses_fixup = true;
+        wrap_open(p, PREC_MUL, max);
+        args(p, "dFdy", e->a, 1);
+        sb_put(p->out, " * (2.0 * hfx_pos_fixup.z - 1.0)");
+        wrap_close(p, PREC_MUL, max);
+        return;
+    case II_LOG10:
+        wrap_open(p, PREC_MUL, max);
+        args(p, "log2", e->a, 1);
+        sb_put(p->out, " * 0.301029996");
+        wrap_close(p, PREC_MUL, max);
+        return;
+    case II_ROUND:
+        sb_put(p->out, "floor(");
+        glsl_expr(p, e->a[0], PREC_ADD);
+        sb_put(p->out, " + 0.5)");
+        return;
+    case II_FMOD:
+        helper_typed(p, "fmod", e->type, p->legacy ? "$T hfx_fmod($T x, $T y) { $T q = x / y; return x - y * sign(q) * floor(abs(q)); }\n"
+                                                     : "$T hfx_fmod($T x, $T y) { return x - y * trunc(x / y); }\n");
+        args(p, "hfx_fmod", e->a, 2);
+        return;
+    case II_LIT: helper_lit(p); args(p, "hfx_lit", e->a, 3); return;
+    case II_SINCOS:
+        helper_typed(p, "sincos", e->a[0]->type, "void hfx_sincos($T x, out $T s, out $T c) { s = sin(x); c = cos(x); }\n");
+        sb_put(p->out, "hfx_sincos(");
+        glsl_expr(p, e->a[0], PREC_ASSIGN);
+        sb_put(p->out, ", ");
+        glsl_lvalue(p, e->a[1], PREC_ASSIGN);
+        sb_put(p->out, ", ");
+        glsl_lvalue(p, e->a[2], PREC_ASSIGN);
+        sb_put(p->out, ")");
+        return;
+    case II_CLIP: helper_clip(p, e->a[0]->type); args(p, "hfx_clip", e->a, 1); return;
+    case II_D3DCOLORTOUBYTE4:
+        sb_put(p->out, "ivec4(");
+        glsl_expr(p, e->a[0], PREC_POSTFIX);
+        sb_put(p->out, ".zyxw * 255.001953)");
+        return;
+    case II_DOT:
+        if (!is_float(e->type->base)) sb_printf(p->out, "%s(", ty(p, e->type));
+        sb_put(p->out, "dot(");
+        as_float(p, e->a[0]);
+        sb_put(p->out, ", ");
+        as_float(p, e->a[1]);
+        sb_put(p->out, is_float(e->type->base) ? ")" : "))");
+        return;
+    case II_MUL: print_mul(p, e, max); return;
+    case II_LDEXP:
+        wrap_open(p, PREC_MUL, max);
+        glsl_expr(p, e->a[0], PREC_MUL);
+        sb_put(p->out, " * ");
+        args(p, "exp2", e->a + 1, 1);
+        wrap_close(p, PREC_MUL, max);
+        return;
+    case II_ISFINITE:
+        if (ncomp(e->a[0]->type) != 1) { glsl_error(p, e->loc, "'isfinite' of a vector is not supported"); return; }
+        helper_typed(p, "isfinite", e->a[0]->type, "bool hfx_isfinite($T x) { return !(isnan(x) || isinf(x)); }\n");
+        args(p, "hfx_isfinite", e->a, 1);
+        return;
+    case II_FREXP:
+        if (ncomp(e->a[0]->type) != 1) { glsl_error(p, e->loc, "'frexp' of a vector is not supported"); return; }
+        helper_typed(p, "frexp", e->type,
+                     "float hfx_frexp(float x, out float e)\n{\n    if (x == 0.0) { e = 0.0; return 0.0; }\n"
+                     "    e = floor(log2(abs(x))) + 1.0;\n    return x * exp2(-e);\n}\n");
+        args_out2(p, "hfx_frexp", e->a);
+        return;
+    case II_ASFLOAT: case II_ASINT: case II_ASUINT: {
+        hfx_base from = e->a[0]->type->base, to = e->type->base;
+        const char *fn = NULL;
+        if (is_float(from) && to == B_INT) fn = "floatBitsToInt";
+        else if (is_float(from) && to == B_UINT) fn = "floatBitsToUint";
+        else if (from == B_INT && is_float(to)) fn = "intBitsToFloat";
+        else if (from == B_UINT && is_float(to)) fn = "uintBitsToFloat";
+        else fn = ty(p, e->type);
+        if (p->legacy) { glsl_error(p, e->loc, "bit casts need GLSL 330 or ES 300"); return; }
+        args(p, fn, e->a, 1);
+        return;
+    }
+    default:
+        glsl_error(p, e->loc, hfx_arena_printf(p->c->arena, "'%s': intrinsic is not supported", ir_intrin_name(i)));
+    }
+}

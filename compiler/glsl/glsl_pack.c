@@ -1,0 +1,68 @@
+/* glsl_pack.c: HFXC_PACK_UNIFORMS in the GLSL. A packed parameter keeps its GLSL name as a
+ * private global, set at the start of main() from `uniform vec4 hfx_c[K]` (K the program's
+ * reg_count in both stages, so the stages link), and the rest of the code reads it unchanged.
+ * The runtime copies the parameter's row-major words into the registers row by row, so HLSL row
+ * i is register reg + i; GLSL's matRxC takes its column i from there, which is what
+ * glUniformMatrix*fv(transpose = GL_FALSE) of the same words gives the unpacked uniform. */
+#include "glsl/glsl_int.h"
+
+uint32_t glsl_packed_reg(const gp *p, const ir_var *v) {
+    if (v->kind != IRV_UNIFORM || v->param == HFX_NONE || !p->io) return HFX_NONE;
+    for (uint32_t k = 0; k < p->io->uniform_count; k++) {
+        const hfx_fx_uniform_use *u = &p->io->uniforms[k];
+        if (u->param == v->param) return u->reg != HFX_NONE && u->reg < p->io->reg_count ? u->reg : HFX_NONE;
+    }
+    return HFX_NONE;
+}
+
+static bool stage_packs(const gp *p) {
+    for (uint32_t i = 0; i < p->sh->global_count; i++)
+        if (glsl_packed_reg(p, p->sh->globals[i]) != HFX_NONE) return true;
+    return false;
+}
+
+void glsl_declare_regs(gp *p) {
+    if (stage_packs(p)) sb_printf(p->out, "uniform vec4 %s[%u];\n", HFX_FX_REGS_NAME, p->io->reg_count);
+}
+
+void glsl_declare_packed(gp *p, const ir_var *v, uint32_t reg) {
+    const hfx_type *t = v->type;
+    uint32_t n = t->kind == TY_MATRIX ? t->rows : 1;
+    if (n > 1) sb_printf(p->out, "%s; // %s[%u..%u]\n", glsl_decl(p, t, v->glsl), HFX_FX_REGS_NAME, reg, reg + n - 1);
+    else sb_printf(p->out, "%s; // %s[%u]\n", glsl_decl(p, t, v->glsl), HFX_FX_REGS_NAME, reg);
+}
+
+/* Register r, narrowed to its first n components. */
+static void reg_comps(gp *p, uint32_t r, unsigned n) {
+    sb_printf(p->out, "%s[%u]", HFX_FX_REGS_NAME, r);
+    if (n < 4) sb_printf(p->out, ".%.*s", (int)n, "xyzw");
+}
+
+/* The value of a packed parameter of type t whose first register is reg. A matrix of R > 1 rows
+ * is built from R registers of C components each: matRxC's columns, or the components of the
+ * vector an Rx1 matrix is in GLSL; a scalar, a vector or a 1xC matrix is its register's first
+ * components. */
+static void packed_value(gp *p, const hfx_type *t, uint32_t reg) {
+    if (t->kind != TY_MATRIX || t->rows == 1) {
+        reg_comps(p, reg, hfx_type_components(t));
+        return;
+    }
+    sb_printf(p->out, "%s(", glsl_type(p, t));
+    for (uint32_t i = 0; i < t->rows; i++) {
+        if (i) sb_put(p->out, ", ");
+        reg_comps(p, reg + i, t->cols);
+    }
+    sb_put(p->out, ")");
+}
+
+void glsl_init_packed(gp *p) {
+    for (uint32_t i = 0; i < p->sh->global_count; i++) {
+        const ir_var *v = p->sh->globals[i];
+        uint32_t reg = glsl_packed_reg(p, v);
+        if (reg == HFX_NONE) continue;
+        for (int k = 0; k < p->indent; k++) sb_put(p->out, "    ");
+        sb_printf(p->out, "%s = ", v->glsl);
+        packed_value(p, v->type, reg);
+        sb_put(p->out, ";\n");
+    }
+}

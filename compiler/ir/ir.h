@@ -1,0 +1,193 @@
+/* ir.h: the intermediate form of one shader stage of one pass. It is a typed tree (structured
+ * control flow, like GLSL and SPIR-V's structured form), copied out of the checked AST by ir.c
+ * so each pass can specialise its entry point without touching the shared tree. Names are
+ * resolved to ir_var / ir_func, intrinsics to ir_intrin, implicit conversions are IE_CONVERT.
+ * Everything lives in the compilation's arena.
+ *
+ * Pass order (lower/passes.c, ir_lower): specialise -> intrinsics -> fold -> dce -> globals
+ * -> uses -> check.
+ * glsl.c prints the result; a preshader or SPIR-V back end would read the same tree. */
+#ifndef HFX_IR_H
+#define HFX_IR_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "parse/ast.h"
+#include "effect.h"
+
+typedef struct ir_expr ir_expr;
+typedef struct ir_stmt ir_stmt;
+typedef struct ir_func ir_func;
+typedef struct ir_var ir_var;
+
+typedef enum { IR_VERTEX, IR_PIXEL } ir_stage;
+
+typedef enum {
+    IRV_LOCAL,    /* function local */
+    IRV_PARAM,    /* function parameter (mods: MOD_IN / MOD_OUT) */
+    IRV_UNIFORM,  /* non-static global: a GLSL uniform named fx->params[param].glsl_name */
+    IRV_PRIVATE,  /* static global, or the private copy of a uniform a shader writes */
+    IRV_SAMPLER   /* sampler parameter */
+} ir_var_kind;
+
+struct ir_var {
+    ir_var_kind kind;
+    const char *name;        /* HLSL spelling */
+    const char *glsl;        /* GLSL spelling (hfx_glsl_name, made unique per function) */
+    const hfx_type *type;
+    uint32_t mods;
+    uint32_t param;          /* UNIFORM / SAMPLER: top-level fx param index; else HFX_NONE */
+    const hfx_decl *decl;    /* where it came from (NULL for temporaries) */
+    ir_expr *init;           /* PRIVATE statics: initialiser run at main's start */
+    ir_var *copy_of;         /* PRIVATE copy of this uniform */
+    ir_var *priv;            /* UNIFORM written somewhere: its private copy */
+    hfx_dim dim;             /* SAMPLER: dimension as sampled */
+    bool written, used;      /* set by lower/uses.c */
+    bool hoisted;            /* for-init variable used after its loop: declared before it */
+    ir_expr *konst;          /* const variable whose initialiser folded to a constant (fold.c) */
+    ir_expr *bound;          /* PARAM of the entry bound by a compile argument (specialise) */
+};
+
+typedef enum {
+    IE_CONST,     /* cval[] holds type's components (row-major), by base: b/i/f */
+    IE_VAR,
+    IE_UNARY,     /* op: OP_NEG, OP_NOT, OP_BITNOT, OP_PRE/POST INC/DEC */
+    IE_BINARY,    /* op, a[0], a[1]; for OP_MUL both sides have equal type (componentwise) */
+    IE_SELECT,    /* a[0] ? a[1] : a[2], componentwise when a[0] is a bool vector */
+    IE_ASSIGN,    /* a[0] op= a[1] (op OP_NONE for '=') */
+    IE_COMMA,
+    IE_CALL,      /* fn(args) */
+    IE_INTRIN,    /* intrin(args) */
+    IE_CONSTRUCT, /* type(args): components in order */
+    IE_CONVERT,   /* type(a[0]) with HLSL's conversion rules (truncation, splat, base change) */
+    IE_SWIZZLE,   /* a[0].comps (row-major component indexes for matrices) */
+    IE_INDEX,     /* a[0][a[1]] (matrix: a row) */
+    IE_FIELD      /* a[0].field */
+} ir_expr_kind;
+
+typedef enum {
+#define IR_INTRIN(name, hlsl) name,
+#include "ir/ir_intrin.def"
+#undef IR_INTRIN
+    II_COUNT
+} ir_intrin;
+
+typedef union { double f; int64_t i; } ir_value;
+
+struct ir_expr {
+    ir_expr_kind kind;
+    hfx_op op;
+    const hfx_type *type;
+    hfx_loc loc;
+    ir_expr **a; uint32_t n;
+    ir_var *var;
+    ir_func *fn;
+    ir_intrin intrin;
+    uint8_t comps[16], comp_count;
+    uint32_t field;
+    double cval[16];         /* CONST: every base stored as a double (ints and bools exact) */
+};
+
+typedef enum {
+    IS_BLOCK, IS_DECL, IS_EXPR, IS_IF, IS_FOR, IS_WHILE, IS_DO, IS_SWITCH, IS_CASE, IS_DEFAULT,
+    IS_BREAK, IS_CONTINUE, IS_DISCARD, IS_RETURN
+} ir_stmt_kind;
+
+struct ir_stmt {
+    ir_stmt_kind kind;
+    hfx_loc loc;
+    ir_stmt **body; uint32_t count; /* BLOCK, SWITCH */
+    ir_var *var;             /* DECL (initialiser in expr) */
+    ir_expr *expr;           /* EXPR, RETURN, IF/WHILE/DO/SWITCH/FOR condition, CASE value, DECL init */
+    ir_stmt *init;           /* FOR */
+    ir_expr *step;           /* FOR */
+    ir_stmt *then_s, *else_s;/* IF; loop body in then_s */
+    const char *hint;        /* [unroll], [loop], [branch]...: printed as a comment */
+};
+
+struct ir_func {
+    const char *name, *glsl;
+    const hfx_type *ret;
+    const char *ret_semantic;
+    ir_var **params; uint32_t param_count;
+    ir_stmt *body;
+    const hfx_func *src;
+    bool is_entry, reached;
+};
+
+/* One stage of one pass, specialised. */
+typedef struct ir_shader {
+    ir_stage stage;
+    ir_func *entry;
+    ir_func **funcs; uint32_t func_count, func_cap;  /* callees before callers; entry last */
+    ir_var **globals; uint32_t global_count, global_cap; /* uniforms, samplers, privates used */
+    const hfx_expr *compile;     /* the EX_COMPILE it came from */
+    bool uses_discard;
+} ir_shader;
+
+typedef struct ir_ctx {
+    hfx_arena *arena;
+    hfx_diags *diags;
+    hfx_types *types;
+    hfx_ast *ast;
+    hfx_fx_effect *fx;
+} ir_ctx;
+
+/* Builds the IR of `compile entry(args)` for one stage; NULL (with a located error) on failure. */
+ir_shader *ir_build(ir_ctx *c, const hfx_expr *compile, ir_stage stage);
+/* Runs the lowering passes in order (lower/passes.c); returns 0 or -1 with errors. */
+int ir_lower(ir_ctx *c, ir_shader *sh);
+
+/* Passes (one file each in lower/). */
+void ir_pass_specialise(ir_ctx *c, ir_shader *sh);
+void ir_pass_intrinsics(ir_ctx *c, ir_shader *sh);
+void ir_pass_fold(ir_ctx *c, ir_shader *sh);
+void ir_pass_dce(ir_ctx *c, ir_shader *sh);
+void ir_pass_globals(ir_ctx *c, ir_shader *sh);
+int ir_pass_check(ir_ctx *c, ir_shader *sh);   /* target limits: reports what GLSL cannot express */
+void ir_pass_uses(ir_ctx *c, ir_shader *sh);
+
+/* Constructors shared by the passes (ir.c). */
+ir_expr *ir_new_expr(ir_ctx *c, ir_expr_kind k, const hfx_type *ty, hfx_loc loc, uint32_t n);
+ir_expr *ir_const_scalar(ir_ctx *c, const hfx_type *ty, double v, hfx_loc loc);
+ir_expr *ir_clone_expr(ir_ctx *c, const ir_expr *e);
+bool ir_is_const(const ir_expr *e);
+bool ir_has_side_effects(const ir_expr *e);
+ir_var *ir_lvalue_root(const ir_expr *e); /* the variable an l-value writes, or NULL */
+bool ir_const_truth(const ir_expr *e); /* the first component as a bool */
+
+/* Walks every expression slot in a statement tree (pre-order on statements, post-order on
+ * expressions); fn may replace *slot. */
+typedef void (*ir_expr_fn)(ir_ctx *c, ir_expr **slot, void *data);
+void ir_walk_stmt_exprs(ir_ctx *c, ir_stmt *s, ir_expr_fn fn, void *data);
+void ir_walk_expr(ir_ctx *c, ir_expr **slot, ir_expr_fn fn, void *data);
+
+/* Intrinsic names (HLSL spelling) and lookup. */
+const char *ir_intrin_name(ir_intrin i);
+int ir_intrin_find(const char *hlsl_name); /* -1 when unknown */
+
+/* A readable dump for golden tests (ir_dump.c). malloc'ed. */
+char *ir_dump_shader(const ir_shader *sh);
+char *ir_dump_func(const ir_func *f);
+
+/* One semantic-carrying value of the entry's interface, with its access path from main's
+ * locals (hfx_argN for parameters, hfx_ret for the return value). ir_iface.c */
+typedef struct ir_leaf {
+    const char *semantic;    /* canonical: "POSITION0", "TEXCOORD1", "COLOR0", "VPOS0" */
+    const hfx_type *type;
+    const char *path;        /* "hfx_arg0.Posicion" */
+    hfx_loc loc;
+} ir_leaf;
+
+/* The entry's inputs (outputs false) or outputs; reports X3502 for a value without a
+ * semantic. Returns the count (arena array in *out), or -1 on error. */
+int ir_entry_leaves(ir_ctx *c, const ir_func *entry, bool outputs, ir_leaf **out);
+/* "TexCoord" -> "TEXCOORD0", "SV_Position" -> "POSITION0", "COLOR1" -> "COLOR1". Arena-owned. */
+const char *ir_canonical_semantic(hfx_arena *a, const char *semantic);
+
+/* A GLSL-legal spelling of an HLSL name: the name itself unless GLSL reserves it (or it starts
+ * with gl_ or contains "__"), else "hfx_" + name. Arena-owned. */
+const char *hfx_glsl_name(hfx_arena *arena, const char *name);
+
+#endif

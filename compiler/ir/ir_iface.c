@@ -1,0 +1,81 @@
+/* ir_iface.c: the entry point's interface as (semantic, type, access path) leaves. Struct
+ * parameters contribute one leaf per member with a semantic; semantics are compared
+ * case-insensitively, POSITION meaning POSITION0. */
+#include <ctype.h>
+#include <string.h>
+
+#include "ir/ir.h"
+
+const char *ir_canonical_semantic(hfx_arena *a, const char *semantic) {
+    char buf[64];
+    size_t n = 0;
+    for (; semantic[n] && n < sizeof buf - 2; n++) buf[n] = (char)toupper((unsigned char)semantic[n]);
+    buf[n] = 0;
+    if (buf[0] == 'S' && buf[1] == 'V' && buf[2] == '_') {
+        if (strncmp(buf + 3, "POSITION", 8) == 0) return ir_canonical_semantic(a, buf + 3);
+        if (strncmp(buf + 3, "TARGET", 6) == 0) return hfx_arena_printf(a, "COLOR%s", buf[9] ? buf + 9 : "0");
+        if (strncmp(buf + 3, "DEPTH", 5) == 0) return "DEPTH0";
+    }
+    if (n == 0 || !isdigit((unsigned char)buf[n - 1])) {
+        buf[n++] = '0';
+        buf[n] = 0;
+    }
+    return hfx_arena_strdup(a, buf);
+}
+
+typedef struct leaves { ir_leaf *items; uint32_t count, cap; bool bad; } leaves;
+
+static void push(ir_ctx *c, leaves *l, const char *sem, const hfx_type *ty, const char *path, hfx_loc loc) {
+    if (l->count == l->cap) {
+        uint32_t cap = l->cap ? l->cap * 2 : 8;
+        ir_leaf *n = HFX_NEW_ARRAY(c->arena, ir_leaf, cap);
+        if (l->count) memcpy(n, l->items, sizeof *n * l->count);
+        l->items = n;
+        l->cap = cap;
+    }
+    l->items[l->count++] = (ir_leaf){ ir_canonical_semantic(c->arena, sem), ty, path, loc };
+}
+
+static void walk(ir_ctx *c, leaves *l, const hfx_type *ty, const char *sem, const char *path, hfx_loc loc,
+                 const char *fn, const char *what) {
+    if (ty->kind == TY_STRUCT) {
+        for (uint32_t i = 0; i < ty->st->field_count; i++) {
+            const hfx_field *f = &ty->st->fields[i];
+            const char *p = hfx_arena_printf(c->arena, "%s.%s", path, hfx_glsl_name(c->arena, f->name));
+            walk(c, l, f->type, f->semantic, p, f->loc, fn, what);
+        }
+        return;
+    }
+    if (!sem) {
+        hfx_error(c->diags, loc, 3502, "'%s': %s missing semantics", fn, what);
+        l->bad = true;
+        return;
+    }
+    if (ty->kind == TY_MATRIX && ty->rows > 1 && ty->cols > 1) { /* would span several registers */
+        hfx_error(c->diags, loc, X_UNSUPPORTED, "'%s': %s: matrix-typed semantics are not supported", fn, what);
+        l->bad = true;
+        return;
+    }
+    if (!hfx_type_is_numeric(ty)) {
+        hfx_error(c->diags, loc, X_UNSUPPORTED, "'%s': %s of this type cannot carry a semantic", fn, what);
+        l->bad = true;
+        return;
+    }
+    push(c, l, sem, ty, path, loc);
+}
+
+int ir_entry_leaves(ir_ctx *c, const ir_func *entry, bool outputs, ir_leaf **out) {
+    leaves l = {0};
+    for (uint32_t i = 0; i < entry->param_count; i++) {
+        const ir_var *v = entry->params[i];
+        bool is_out = (v->mods & MOD_OUT) != 0, is_in = !is_out || (v->mods & MOD_IN);
+        if (outputs ? !is_out : !is_in) continue;
+        const char *what = hfx_arena_printf(c->arena, "%s parameter '%s'", outputs ? "output" : "input", v->name);
+        walk(c, &l, v->type, v->decl ? v->decl->semantic : NULL, hfx_arena_printf(c->arena, "hfx_arg%u", i),
+             v->decl ? v->decl->loc : entry->src->loc, entry->name, what);
+    }
+    if (outputs && entry->ret && entry->ret->kind != TY_VOID)
+        walk(c, &l, entry->ret, entry->ret_semantic, "hfx_ret", entry->src->loc, entry->name, "function return value");
+    *out = l.items;
+    return l.bad ? -1 : (int)l.count;
+}

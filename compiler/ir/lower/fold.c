@@ -1,0 +1,200 @@
+/* fold.c: constant folding with HLSL's rules: ints are 32-bit and divide toward zero, float
+ * results are rounded to single precision, `%` on floats is fmod (truncating), conversions
+ * to int truncate. Intrinsics are left alone (the GPU computes them as the shader would). */
+#include <math.h>
+
+#include "ir/ir.h"
+
+static bool is_float_base(hfx_base b) { return b == B_FLOAT || b == B_HALF || b == B_DOUBLE || b == B_MIN16FLOAT; }
+
+/* A value stored in the representation of base b. */
+static double normalise(hfx_base b, double v) {
+    switch (b) {
+    case B_BOOL: return v != 0;
+    case B_INT:
+        if (isnan(v)) return 0;
+        if (v >= 2147483647.0) return 2147483647.0;
+        if (v <= -2147483648.0) return -2147483648.0;
+        return trunc(v);
+    case B_UINT:
+        if (isnan(v) || v <= 0) return v <= -1 ? (double)(uint32_t)(int32_t)trunc(v) : 0;
+        return v >= 4294967295.0 ? 4294967295.0 : trunc(v);
+    default: return (double)(float)v;
+    }
+}
+
+static int32_t wrap_int(double v) { return (int32_t)(int64_t)v; }
+
+static double int_result(hfx_base b, int64_t v) {
+    return b == B_UINT ? (double)(uint32_t)v : (double)(int32_t)v;
+}
+
+/* One component of a binary operation; false when it must not be folded (x / 0 on ints). */
+static bool binary_op(hfx_op op, hfx_base b, double x, double y, double *r) {
+    bool f = is_float_base(b);
+    switch (op) {
+    case OP_ADD: *r = f ? x + y : int_result(b, (int64_t)x + (int64_t)y); return true;
+    case OP_SUB: *r = f ? x - y : int_result(b, (int64_t)x - (int64_t)y); return true;
+    case OP_MUL: *r = f ? x * y : int_result(b, (int64_t)x * (int64_t)y); return true;
+    case OP_DIV:
+        if (f) { *r = x / y; return y != 0; }
+        if (y == 0) return false;
+        *r = b == B_UINT ? (double)((uint32_t)x / (uint32_t)y) : int_result(b, (int64_t)x / (int64_t)y);
+        return true;
+    case OP_MOD:
+        if (y == 0) return false;
+        if (f) { *r = fmod(x, y); return true; }
+        *r = b == B_UINT ? (double)((uint32_t)x % (uint32_t)y) : int_result(b, (int64_t)x % (int64_t)y);
+        return true;
+    case OP_SHL: *r = int_result(b, (int64_t)((uint32_t)wrap_int(x) << ((uint32_t)y & 31))); return !f;
+    case OP_SHR:
+        *r = b == B_UINT ? (double)((uint32_t)x >> ((uint32_t)y & 31)) : (double)(wrap_int(x) >> ((uint32_t)y & 31));
+        return !f;
+    case OP_BITAND: *r = int_result(b, wrap_int(x) & wrap_int(y)); return !f;
+    case OP_BITOR: *r = int_result(b, wrap_int(x) | wrap_int(y)); return !f;
+    case OP_BITXOR: *r = int_result(b, wrap_int(x) ^ wrap_int(y)); return !f;
+    case OP_LT: *r = x < y; return true;
+    case OP_GT: *r = x > y; return true;
+    case OP_LE: *r = x <= y; return true;
+    case OP_GE: *r = x >= y; return true;
+    case OP_EQ: *r = x == y; return true;
+    case OP_NE: *r = x != y; return true;
+    case OP_AND: *r = x != 0 && y != 0; return true;
+    case OP_OR: *r = x != 0 || y != 0; return true;
+    default: return false;
+    }
+}
+
+static unsigned comps(const hfx_type *t) { return hfx_type_is_numeric(t) ? hfx_type_components(t) : 0; }
+
+static ir_expr *fold_binary(ir_ctx *c, ir_expr *e) {
+    ir_expr *x = e->a[0], *y = e->a[1];
+    if (!ir_is_const(x) || !ir_is_const(y)) {
+        /* false && e, true || e: the right side matters only for its effects */
+        if ((e->op == OP_AND || e->op == OP_OR) && ir_is_const(x) && comps(x->type) == 1 &&
+            ir_const_truth(x) == (e->op == OP_OR) && !ir_has_side_effects(y))
+            return ir_const_scalar(c, e->type, e->op == OP_OR, e->loc);
+        return e;
+    }
+    unsigned n = comps(e->type), nx = comps(x->type), ny = comps(y->type);
+    if (!n || n > 16 || !nx || !ny) return e;
+    ir_expr *r = ir_new_expr(c, IE_CONST, e->type, e->loc, 0);
+    hfx_base b = x->type->base;
+    for (unsigned i = 0; i < n; i++) {
+        double v;
+        if (!binary_op(e->op, b, x->cval[nx == 1 ? 0 : i], y->cval[ny == 1 ? 0 : i], &v)) return e;
+        r->cval[i] = normalise(e->type->base, v);
+    }
+    return r;
+}
+
+static ir_expr *fold_unary(ir_ctx *c, ir_expr *e) {
+    ir_expr *x = e->a[0];
+    if (!ir_is_const(x) || (e->op != OP_NEG && e->op != OP_NOT && e->op != OP_BITNOT)) return e;
+    unsigned n = comps(e->type);
+    if (!n || n > 16) return e;
+    ir_expr *r = ir_new_expr(c, IE_CONST, e->type, e->loc, 0);
+    for (unsigned i = 0; i < n; i++) {
+        double v = x->cval[i];
+        v = e->op == OP_NEG ? -v : e->op == OP_NOT ? (v == 0) : (double)~wrap_int(v);
+        r->cval[i] = normalise(e->type->base, e->type->base == B_UINT && e->op != OP_NOT ? (double)(uint32_t)(int64_t)v : v);
+    }
+    return r;
+}
+
+/* Component i of the converted value: matrices keep (row, col), other shapes keep order. */
+static double convert_comp(const ir_expr *x, const hfx_type *to, unsigned i) {
+    const hfx_type *from = x->type;
+    if (comps(from) == 1) return x->cval[0];
+    if (from->kind == TY_MATRIX && to->kind == TY_MATRIX) return x->cval[(i / to->cols) * from->cols + i % to->cols];
+    return x->cval[i];
+}
+
+static ir_expr *fold_convert(ir_ctx *c, ir_expr *e) {
+    ir_expr *x = e->a[0];
+    unsigned n = comps(e->type);
+    if (!ir_is_const(x) || !n || n > 16 || !comps(x->type)) return e;
+    if (comps(x->type) != 1 && comps(x->type) < n) return e;
+    ir_expr *r = ir_new_expr(c, IE_CONST, e->type, e->loc, 0);
+    for (unsigned i = 0; i < n; i++) r->cval[i] = normalise(e->type->base, convert_comp(x, e->type, i));
+    return r;
+}
+
+static ir_expr *fold_construct(ir_ctx *c, ir_expr *e) {
+    unsigned n = comps(e->type), k = 0;
+    if (!n || n > 16) return e;
+    for (uint32_t i = 0; i < e->n; i++)
+        if (!ir_is_const(e->a[i]) || !comps(e->a[i]->type)) return e;
+    ir_expr *r = ir_new_expr(c, IE_CONST, e->type, e->loc, 0);
+    for (uint32_t i = 0; i < e->n; i++)
+        for (unsigned j = 0; j < comps(e->a[i]->type) && k < 16; j++)
+            r->cval[k++] = normalise(e->type->base, e->a[i]->cval[j]);
+    if (k == 1 && n > 1) /* a scalar spread over the type */
+        for (unsigned j = 1; j < n; j++) r->cval[j] = r->cval[0];
+    else if (k != n) return e;
+    return r;
+}
+
+static ir_expr *fold_swizzle(ir_ctx *c, ir_expr *e) {
+    ir_expr *x = e->a[0];
+    if (!ir_is_const(x)) return e;
+    ir_expr *r = ir_new_expr(c, IE_CONST, e->type, e->loc, 0);
+    for (unsigned i = 0; i < e->comp_count && i < 16; i++) r->cval[i] = x->cval[e->comps[i] < 16 ? e->comps[i] : 0];
+    return r;
+}
+
+static ir_expr *fold_select(ir_ctx *c, ir_expr *e) {
+    ir_expr *cond = e->a[0];
+    if (!ir_is_const(cond) || comps(cond->type) != 1) return e;
+    ir_expr *other = ir_const_truth(cond) ? e->a[2] : e->a[1];
+    return ir_has_side_effects(other) ? e : ir_const_truth(cond) ? e->a[1] : e->a[2];
+}
+
+static void fold_one(ir_ctx *c, ir_expr **slot, void *data) {
+    ir_expr *e = *slot;
+    switch (e->kind) {
+    case IE_UNARY: *slot = fold_unary(c, e); break;
+    case IE_BINARY: *slot = fold_binary(c, e); break;
+    case IE_CONVERT: *slot = fold_convert(c, e); break;
+    case IE_CONSTRUCT: *slot = fold_construct(c, e); break;
+    case IE_SWIZZLE: *slot = fold_swizzle(c, e); break;
+    case IE_SELECT: *slot = fold_select(c, e); break;
+    default: break;
+    }
+}
+
+static bool is_const_var(const ir_var *v) {
+    return v->decl && (v->decl->mods & MOD_CONST) && hfx_type_is_numeric(v->type) &&
+           (v->kind == IRV_LOCAL || (v->kind == IRV_PRIVATE && !v->copy_of));
+}
+
+/* `const` locals and `static const` globals whose initialiser folded: their value. */
+static void find_const_locals(ir_stmt *s) {
+    if (!s) return;
+    if (s->kind == IS_DECL && ir_is_const(s->expr) && is_const_var(s->var)) s->var->konst = s->expr;
+    if (s->init) find_const_locals(s->init);
+    for (uint32_t i = 0; i < s->count; i++) find_const_locals(s->body[i]);
+    find_const_locals(s->then_s);
+    find_const_locals(s->else_s);
+}
+
+static void propagate(ir_ctx *c, ir_expr **slot, void *data) {
+    ir_expr *e = *slot;
+    if (e->kind == IE_VAR && e->var->konst) *slot = ir_clone_expr(c, e->var->konst);
+    else fold_one(c, slot, data);
+}
+
+void ir_pass_fold(ir_ctx *c, ir_shader *sh) {
+    for (uint32_t i = 0; i < sh->global_count; i++) {
+        ir_var *g = sh->globals[i];
+        ir_walk_expr(c, &g->init, fold_one, NULL);
+        if (ir_is_const(g->init) && is_const_var(g)) g->konst = g->init;
+    }
+    for (uint32_t i = 0; i < sh->func_count; i++) {
+        ir_walk_stmt_exprs(c, sh->funcs[i]->body, fold_one, NULL);
+        find_const_locals(sh->funcs[i]->body);
+    }
+    /* constants flow into their uses (so `static const bool on = false; if (on)` dies), and
+     * what they make constant folds in the same walk */
+    for (uint32_t i = 0; i < sh->func_count; i++) ir_walk_stmt_exprs(c, sh->funcs[i]->body, propagate, NULL);
+}

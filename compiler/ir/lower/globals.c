@@ -1,0 +1,45 @@
+/* globals.c: copy-on-write of uniforms. D3D9 lets a shader assign to a global (the effect's
+ * parameter is only its starting value); GLSL uniforms are read-only, so a uniform some
+ * function of this stage writes gets a private global, set from the uniform at main's start,
+ * and every use of the uniform in this stage reads the copy. */
+#include "ir/ir.h"
+
+
+static void mark_written(ir_ctx *c, ir_shader *sh, const ir_expr *lv) {
+    ir_var *v = ir_lvalue_root(lv);
+    if (!v) return;
+    v->written = true;
+    if (v->kind != IRV_UNIFORM || v->priv) return;
+    ir_var *p = HFX_NEW(c->arena, ir_var);
+    *p = *v;
+    p->kind = IRV_PRIVATE;
+    p->copy_of = v;
+    p->priv = NULL;
+    p->glsl = hfx_arena_printf(c->arena, "hfx_priv_%s", v->glsl);
+    v->priv = p;
+}
+
+static void find_writes(ir_ctx *c, ir_expr **slot, void *data) {
+    ir_shader *sh = data;
+    ir_expr *e = *slot;
+    if (e->kind == IE_ASSIGN) mark_written(c, sh, e->a[0]);
+    else if (e->kind == IE_UNARY && e->op >= OP_PREINC && e->op <= OP_POSTDEC) mark_written(c, sh, e->a[0]);
+    else if (e->kind == IE_CALL) {
+        for (uint32_t i = 0; i < e->n && i < e->fn->param_count; i++)
+            if (e->fn->params[i]->mods & MOD_OUT) mark_written(c, sh, e->a[i]);
+    } else if (e->kind == IE_INTRIN) {
+        if (e->intrin == II_SINCOS && e->n == 3) { mark_written(c, sh, e->a[1]); mark_written(c, sh, e->a[2]); }
+        if ((e->intrin == II_MODF || e->intrin == II_FREXP) && e->n == 2) mark_written(c, sh, e->a[1]);
+    }
+}
+
+static void use_copies(ir_ctx *c, ir_expr **slot, void *data) {
+    ir_expr *e = *slot;
+    if (e->kind == IE_VAR && e->var->kind == IRV_UNIFORM && e->var->priv) e->var = e->var->priv;
+}
+
+void ir_pass_globals(ir_ctx *c, ir_shader *sh) {
+    for (uint32_t i = 0; i < sh->func_count; i++) ir_walk_stmt_exprs(c, sh->funcs[i]->body, find_writes, sh);
+    for (uint32_t i = 0; i < sh->func_count; i++) ir_walk_stmt_exprs(c, sh->funcs[i]->body, use_copies, NULL);
+    for (uint32_t i = 0; i < sh->global_count; i++) ir_walk_expr(c, &sh->globals[i]->init, use_copies, NULL);
+}

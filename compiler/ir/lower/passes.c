@@ -1,0 +1,14 @@
+/* passes.c: the order of the lowering passes, in one place. */
+#include "ir/ir.h"
+
+int ir_lower(ir_ctx *c, ir_shader *sh) {
+    uint32_t errors = c->diags->errors;
+    ir_pass_specialise(c, sh); /* compile arguments replace the entry's uniform parameters */
+    ir_pass_intrinsics(c, sh); /* mul by a truncated matrix: pad the vector instead */
+    ir_pass_fold(c, sh);       /* constant folding and propagation of const variables */
+    ir_pass_dce(c, sh);        /* if (false) branches, code after return, unreached functions */
+    ir_pass_globals(c, sh);    /* private copies of the uniforms some function writes */
+    ir_pass_uses(c, sh);       /* globals and samplers the stage reads, in first-use order */
+    if (ir_pass_check(c, sh) != 0) return -1;
+    return c->diags->errors > errors ? -1 : 0;
+}

@@ -1,0 +1,18 @@
+/* specialise.c: `compile ps_3_0 mainPS(true)`: every use of a uniform parameter of the entry
+ * becomes the compile argument, and the parameter leaves the entry's signature, so fold and
+ * dce can remove what the argument switches off. */
+#include "ir/ir.h"
+
+static void substitute(ir_ctx *c, ir_expr **slot, void *data) {
+    ir_expr *e = *slot;
+    if (e->kind == IE_VAR && e->var->bound) *slot = ir_clone_expr(c, e->var->bound);
+}
+
+void ir_pass_specialise(ir_ctx *c, ir_shader *sh) {
+    ir_func *f = sh->entry;
+    ir_walk_stmt_exprs(c, f->body, substitute, NULL);
+    uint32_t kept = 0;
+    for (uint32_t i = 0; i < f->param_count; i++)
+        if (!f->params[i]->bound) f->params[kept++] = f->params[i];
+    f->param_count = kept;
+}

@@ -1,0 +1,61 @@
+/* uses.c: the globals a stage reads, in first-use order (a walk from the entry in statement
+ * order, entering each callee at its first call). Sampler units are given in this order, and
+ * a generic `sampler` takes its dimension from the tex* intrinsic that reads it. */
+#include "ir/ir.h"
+
+typedef struct uses {
+    ir_shader *sh;
+    ir_var **list; uint32_t count, cap;
+    ir_func **seen; uint32_t seen_count;
+} uses;
+
+static void walk_func(ir_ctx *c, uses *u, ir_func *f);
+static void visit(ir_ctx *c, ir_expr **slot, void *data);
+
+static void add(ir_ctx *c, uses *u, ir_var *v) {
+    if (v->used) return;
+    v->used = true;
+    if (v->copy_of) add(c, u, v->copy_of);
+    if (v->init) ir_walk_expr(c, &v->init, visit, u);
+    if (u->count == u->cap) {
+        uint32_t cap = u->cap ? u->cap * 2 : 16;
+        ir_var **n = HFX_NEW_ARRAY(c->arena, ir_var *, cap);
+        for (uint32_t i = 0; i < u->count; i++) n[i] = u->list[i];
+        u->list = n;
+        u->cap = cap;
+    }
+    u->list[u->count++] = v;
+}
+
+static hfx_dim tex_dim(ir_intrin i) {
+    if (i >= II_TEX1D && i <= II_TEX1DPROJ) return DIM_1D;
+    if (i >= II_TEX2D && i <= II_TEX2DPROJ) return DIM_2D;
+    if (i >= II_TEX3D && i <= II_TEX3DPROJ) return DIM_3D;
+    if (i >= II_TEXCUBE && i <= II_TEXCUBEPROJ) return DIM_CUBE;
+    return DIM_GENERIC;
+}
+
+static void visit(ir_ctx *c, ir_expr **slot, void *data) {
+    uses *u = data;
+    ir_expr *e = *slot;
+    if (e->kind == IE_VAR && e->var->kind != IRV_LOCAL && e->var->kind != IRV_PARAM) add(c, u, e->var);
+    if (e->kind == IE_INTRIN && e->n && e->a[0]->kind == IE_VAR && e->a[0]->var->kind == IRV_SAMPLER &&
+        e->a[0]->var->dim == DIM_GENERIC)
+        e->a[0]->var->dim = tex_dim(e->intrin);
+    if (e->kind == IE_CALL) walk_func(c, u, e->fn);
+}
+
+static void walk_func(ir_ctx *c, uses *u, ir_func *f) {
+    for (uint32_t i = 0; i < u->seen_count; i++)
+        if (u->seen[i] == f) return;
+    u->seen[u->seen_count++] = f;
+    ir_walk_stmt_exprs(c, f->body, visit, u);
+}
+
+void ir_pass_uses(ir_ctx *c, ir_shader *sh) {
+    uses u = { sh, NULL, 0, 0, HFX_NEW_ARRAY(c->arena, ir_func *, sh->func_count + 1), 0 };
+    for (uint32_t i = 0; i < sh->global_count; i++) sh->globals[i]->used = false;
+    walk_func(c, &u, sh->entry);
+    sh->globals = u.list;
+    sh->global_count = sh->global_cap = u.count;
+}

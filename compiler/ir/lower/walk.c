@@ -1,0 +1,50 @@
+/* walk.c: generic traversals of the IR tree shared by the passes. */
+#include "ir/ir.h"
+
+void ir_walk_expr(ir_ctx *c, ir_expr **slot, ir_expr_fn fn, void *data) {
+    ir_expr *e = *slot;
+    if (!e) return;
+    for (uint32_t i = 0; i < e->n; i++) ir_walk_expr(c, &e->a[i], fn, data);
+    fn(c, slot, data);
+}
+
+void ir_walk_stmt_exprs(ir_ctx *c, ir_stmt *s, ir_expr_fn fn, void *data) {
+    if (!s) return;
+    if (s->init) ir_walk_stmt_exprs(c, s->init, fn, data);
+    ir_walk_expr(c, &s->expr, fn, data);
+    ir_walk_expr(c, &s->step, fn, data);
+    for (uint32_t i = 0; i < s->count; i++) ir_walk_stmt_exprs(c, s->body[i], fn, data);
+    ir_walk_stmt_exprs(c, s->then_s, fn, data);
+    ir_walk_stmt_exprs(c, s->else_s, fn, data);
+}
+
+ir_expr *ir_clone_expr(ir_ctx *c, const ir_expr *e) {
+    if (!e) return NULL;
+    ir_expr *r = ir_new_expr(c, e->kind, e->type, e->loc, 0);
+    ir_expr **args = r->a;
+    *r = *e;
+    r->a = args;
+    if (e->n) {
+        r->a = HFX_NEW_ARRAY(c->arena, ir_expr *, e->n);
+        for (uint32_t i = 0; i < e->n; i++) r->a[i] = ir_clone_expr(c, e->a[i]);
+    }
+    return r;
+}
+
+bool ir_has_side_effects(const ir_expr *e) {
+    if (!e) return false;
+    if (e->kind == IE_ASSIGN || e->kind == IE_CALL) return true;
+    if (e->kind == IE_UNARY && e->op >= OP_PREINC && e->op <= OP_POSTDEC) return true;
+    if (e->kind == IE_INTRIN && (e->intrin == II_CLIP || e->intrin == II_SINCOS || e->intrin == II_MODF ||
+                                 e->intrin == II_FREXP))
+        return true;
+    for (uint32_t i = 0; i < e->n; i++)
+        if (ir_has_side_effects(e->a[i])) return true;
+    return false;
+}
+
+/* The variable an l-value expression writes (through swizzles, indexes and fields). */
+ir_var *ir_lvalue_root(const ir_expr *e) {
+    while (e && (e->kind == IE_SWIZZLE || e->kind == IE_INDEX || e->kind == IE_FIELD)) e = e->a[0];
+    return e && e->kind == IE_VAR ? e->var : NULL;
+}

@@ -1,0 +1,442 @@
+/* parse_expr.c: vectors, literals, expression nodes and type specifiers for parser.y.
+ * Every expression node carries its tree depth (in a wrapper the rest of the compiler never
+ * sees), so a pathological operator chain is rejected here instead of overflowing the C stack
+ * of a recursive pass later. */
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "parse/parse_ctx.h"
+
+/* ---- vectors ---- */
+
+parse_vec parse_vec_new(void) { return (parse_vec){NULL, 0, 0}; }
+
+parse_vec parse_vec_push(parse_ctx *ctx, parse_vec v, void *item) {
+    if (v.count == v.cap) {
+        uint32_t cap = v.cap ? v.cap * 2 : 4;
+        void **items = HFX_NEW_ARRAY(ctx->arena, void *, cap);
+        if (!items) return v;
+        if (v.count) memcpy(items, v.items, sizeof *items * v.count);
+        v.items = items;
+        v.cap = cap;
+    }
+    v.items[v.count++] = item;
+    return v;
+}
+
+parse_vec parse_vec_one(parse_ctx *ctx, void *item) { return parse_vec_push(ctx, parse_vec_new(), item); }
+
+/* ---- nodes with depth ---- */
+
+typedef parse_expr_node expr_node;
+
+static uint32_t expr_depth(const hfx_expr *e) { return e ? ((const expr_node *)e)->depth : 0; }
+
+hfx_expr *pb_expr(parse_ctx *ctx, hfx_expr_kind kind, hfx_loc loc) {
+    expr_node *n = HFX_NEW(ctx->arena, expr_node);
+    if (!n) {
+        parse_fatal(ctx, loc, "out of memory");
+        n = ctx->oom_expr;
+    }
+    n->e.kind = kind;
+    n->e.loc = loc;
+    n->e.intrinsic = -1;
+    n->depth = 1;
+    return &n->e;
+}
+
+/* Hangs `count` operands under e, tracking depth against PARSE_MAX_EXPR_DEPTH. */
+static hfx_expr *set_args(parse_ctx *ctx, hfx_expr *e, hfx_expr **args, uint32_t count) {
+    e->args = args;
+    e->arg_count = count;
+    uint32_t d = 0;
+    for (uint32_t i = 0; i < count; i++)
+        if (expr_depth(args[i]) > d) d = expr_depth(args[i]);
+    ((expr_node *)e)->depth = d + 1;
+    if (d + 1 > PARSE_MAX_EXPR_DEPTH)
+        parse_fatal(ctx, e->loc, "nesting too deep: expression more than 4096 levels deep");
+    return e;
+}
+
+static hfx_expr *with_args(parse_ctx *ctx, hfx_expr *e, hfx_expr *a, hfx_expr *b, hfx_expr *c) {
+    uint32_t n = c ? 3 : b ? 2 : a ? 1 : 0;
+    hfx_expr **args = HFX_NEW_ARRAY(ctx->arena, hfx_expr *, n ? n : 1);
+    if (!args) return e;
+    hfx_expr *all[3] = {a, b, c};
+    memcpy(args, all, sizeof *args * n);
+    return set_args(ctx, e, args, n);
+}
+
+static hfx_expr *with_vec(parse_ctx *ctx, hfx_expr *e, parse_vec v) {
+    return set_args(ctx, e, (hfx_expr **)v.items, v.count);
+}
+
+/* ---- literals ---- */
+
+hfx_expr *pb_int(parse_ctx *ctx, const char *text, hfx_loc loc) {
+    hfx_expr *e = pb_expr(ctx, EX_INT, loc);
+    errno = 0;
+    unsigned long long v = strtoull(text, NULL, 0); /* 0x.., 0.. octal; u/l suffixes stop it */
+    if (errno == ERANGE) v = UINT64_MAX;
+    e->ival = (int64_t)v;
+    return e;
+}
+
+hfx_expr *pb_float(parse_ctx *ctx, const char *text, hfx_loc loc) {
+    hfx_expr *e = pb_expr(ctx, EX_FLOAT, loc);
+    e->fval = strtod(text, NULL); /* stops at the f/h/l suffix */
+    return e;
+}
+
+hfx_expr *pb_bool(parse_ctx *ctx, bool v, hfx_loc loc) {
+    hfx_expr *e = pb_expr(ctx, EX_BOOL, loc);
+    e->ival = v;
+    return e;
+}
+
+static int hex_digit(char c) {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return -1;
+}
+
+/* One escape after the backslash at *p; advances p. */
+static char unescape(const char **p) {
+    char c = *(*p)++;
+    switch (c) {
+    case 'n': return '\n';
+    case 't': return '\t';
+    case 'r': return '\r';
+    case 'a': return '\a';
+    case 'b': return '\b';
+    case 'f': return '\f';
+    case 'v': return '\v';
+    case 'x': {
+        int v = 0;
+        while (hex_digit(**p) >= 0) v = v * 16 + hex_digit(*(*p)++);
+        return (char)v;
+    }
+    default:
+        if (c >= '0' && c <= '7') {
+            int v = c - '0';
+            for (int i = 0; i < 2 && **p >= '0' && **p <= '7'; i++) v = v * 8 + (*(*p)++ - '0');
+            return (char)v;
+        }
+        return c; /* \\ \" \' \? and unknown ones stand for themselves */
+    }
+}
+
+/* The contents of a "..." token, quotes dropped and escapes resolved. */
+static char *string_value(parse_ctx *ctx, const char *text) {
+    size_t n = strlen(text);
+    char *out = hfx_arena_alloc(ctx->arena, n + 1);
+    if (!out) return "";
+    const char *p = text[0] == '"' ? text + 1 : text;
+    const char *end = text + n;
+    if (end > p && end[-1] == '"') end--;
+    size_t at = 0;
+    while (p < end) {
+        if (*p == '\\' && p + 1 < end) {
+            p++;
+            out[at++] = unescape(&p);
+        } else {
+            out[at++] = *p++;
+        }
+    }
+    out[at] = 0;
+    return out;
+}
+
+hfx_expr *pb_string(parse_ctx *ctx, const char *text, hfx_loc loc) {
+    hfx_expr *e = pb_expr(ctx, EX_STRING, loc);
+    e->sval = string_value(ctx, text);
+    return e;
+}
+
+hfx_expr *pb_string_join(parse_ctx *ctx, hfx_expr *s, const char *text) {
+    const char *more = string_value(ctx, text);
+    s->sval = hfx_arena_printf(ctx->arena, "%s%s", s->sval, more);
+    return s;
+}
+
+/* ---- operators ---- */
+
+hfx_expr *pb_ident(parse_ctx *ctx, const char *name, hfx_loc loc) {
+    hfx_expr *e = pb_expr(ctx, EX_IDENT, loc);
+    e->name = name;
+    return e;
+}
+
+hfx_expr *pb_unary(parse_ctx *ctx, hfx_op op, hfx_expr *a, hfx_loc loc) {
+    hfx_expr *e = pb_expr(ctx, EX_UNARY, loc);
+    e->op = op;
+    return with_args(ctx, e, a, NULL, NULL);
+}
+
+hfx_expr *pb_binary(parse_ctx *ctx, hfx_op op, hfx_expr *a, hfx_expr *b, hfx_loc loc) {
+    hfx_expr *e = pb_expr(ctx, EX_BINARY, loc);
+    e->op = op;
+    return with_args(ctx, e, a, b, NULL);
+}
+
+hfx_expr *pb_assign(parse_ctx *ctx, hfx_op op, hfx_expr *a, hfx_expr *b, hfx_loc loc) {
+    hfx_expr *e = pb_expr(ctx, EX_ASSIGN, loc);
+    e->op = op;
+    return with_args(ctx, e, a, b, NULL);
+}
+
+hfx_expr *pb_ternary(parse_ctx *ctx, hfx_expr *c, hfx_expr *a, hfx_expr *b, hfx_loc loc) {
+    return with_args(ctx, pb_expr(ctx, EX_TERNARY, loc), c, a, b);
+}
+
+hfx_expr *pb_comma(parse_ctx *ctx, hfx_expr *a, hfx_expr *b, hfx_loc loc) {
+    return with_args(ctx, pb_expr(ctx, EX_COMMA, loc), a, b, NULL);
+}
+
+hfx_expr *pb_call(parse_ctx *ctx, const char *name, parse_vec args, hfx_loc loc) {
+    hfx_expr *e = pb_expr(ctx, EX_CALL, loc);
+    e->name = name;
+    return with_vec(ctx, e, args);
+}
+
+hfx_expr *pb_method(parse_ctx *ctx, hfx_expr *obj, const char *name, parse_vec args, hfx_loc loc) {
+    hfx_expr *e = pb_expr(ctx, EX_METHOD, loc);
+    e->name = name;
+    parse_vec all = parse_vec_one(ctx, obj);
+    for (uint32_t i = 0; i < args.count; i++) all = parse_vec_push(ctx, all, args.items[i]);
+    return with_vec(ctx, e, all);
+}
+
+hfx_expr *pb_construct(parse_ctx *ctx, const hfx_type *type, parse_vec args, hfx_loc loc) {
+    ctx->last_type = NULL;
+    hfx_expr *e = pb_expr(ctx, EX_CONSTRUCT, loc);
+    e->cast_type = type;
+    return with_vec(ctx, e, args);
+}
+
+hfx_expr *pb_cast(parse_ctx *ctx, const hfx_type *type, hfx_expr *a, hfx_loc loc) {
+    ctx->last_type = NULL;
+    hfx_expr *e = pb_expr(ctx, EX_CAST, loc);
+    e->cast_type = type;
+    return with_args(ctx, e, a, NULL, NULL);
+}
+
+hfx_expr *pb_member(parse_ctx *ctx, hfx_expr *a, const char *name, hfx_loc loc) {
+    hfx_expr *e = pb_expr(ctx, EX_MEMBER, loc);
+    e->name = name;
+    return with_args(ctx, e, a, NULL, NULL);
+}
+
+hfx_expr *pb_index(parse_ctx *ctx, hfx_expr *a, hfx_expr *i, hfx_loc loc) {
+    return with_args(ctx, pb_expr(ctx, EX_INDEX, loc), a, i, NULL);
+}
+
+hfx_expr *pb_init_list(parse_ctx *ctx, parse_vec items, hfx_loc loc) {
+    return with_vec(ctx, pb_expr(ctx, EX_INIT_LIST, loc), items);
+}
+
+hfx_expr *pb_compile(parse_ctx *ctx, const char *profile, const char *entry, parse_vec args, hfx_loc loc) {
+    hfx_expr *e = pb_expr(ctx, EX_COMPILE, loc);
+    e->profile = profile;
+    e->name = entry;
+    return with_vec(ctx, e, args);
+}
+
+hfx_expr *pb_sampler_state(parse_ctx *ctx, parse_vec states, hfx_loc loc) {
+    hfx_expr *e = pb_expr(ctx, EX_SAMPLER_STATE, loc);
+    e->states = HFX_NEW_ARRAY(ctx->arena, hfx_state_assign, states.count ? states.count : 1);
+    if (!e->states) return e;
+    for (uint32_t i = 0; i < states.count; i++) e->states[i] = *(hfx_state_assign *)states.items[i];
+    e->state_count = states.count;
+    return e;
+}
+
+hfx_expr *pb_state_ref(parse_ctx *ctx, const char *name, hfx_loc loc) {
+    hfx_expr *e = pb_expr(ctx, EX_STATE_REF, loc);
+    e->name = name;
+    return e;
+}
+
+hfx_expr *pb_asm(parse_ctx *ctx, const char *text, hfx_loc loc) {
+    hfx_expr *e = pb_expr(ctx, EX_ASM, loc);
+    e->sval = text;
+    return e;
+}
+
+hfx_expr *pb_paren(hfx_expr *e) {
+    e->parenthesized = true;
+    return e;
+}
+
+/* ---- type specifiers ---- */
+
+static unsigned dimension(parse_ctx *ctx, const char *text, hfx_loc loc) {
+    char *end;
+    unsigned long v = strtoul(text, &end, 0);
+    if (v < 1 || v > 4) {
+        hfx_error(ctx->diags, loc, X_SYNTAX, "vector and matrix dimensions must be between 1 and 4");
+        return 4;
+    }
+    return (unsigned)v;
+}
+
+/* The element type of vector<T,n> / matrix<T,r,c>: a scalar, else an error and float. */
+static hfx_base generic_base(parse_ctx *ctx, const hfx_type *scalar, hfx_loc loc) {
+    if (scalar && scalar->kind == TY_SCALAR) return scalar->base;
+    hfx_error(ctx->diags, loc, X_SYNTAX, "vector and matrix element types must be scalar");
+    return B_FLOAT;
+}
+
+const hfx_type *pb_generic_vector(parse_ctx *ctx, const hfx_type *scalar, const char *n, hfx_loc loc) {
+    ctx->last_type = NULL;
+    if (!n) return hfx_type_vector(ctx->types, B_FLOAT, 4);
+    return hfx_type_vector(ctx->types, generic_base(ctx, scalar, loc), dimension(ctx, n, loc));
+}
+
+const hfx_type *pb_generic_matrix(parse_ctx *ctx, const hfx_type *scalar, const char *r, const char *c, hfx_loc loc) {
+    ctx->last_type = NULL;
+    if (!r) return hfx_type_matrix(ctx->types, B_FLOAT, 4, 4);
+    hfx_base b = generic_base(ctx, scalar, loc);
+    return hfx_type_matrix(ctx->types, b, dimension(ctx, r, loc), dimension(ctx, c, loc));
+}
+
+const hfx_type *pb_typename(parse_ctx *ctx, const parse_tok *t, hfx_loc loc) {
+    const hfx_type *ty = t->entry ? t->entry->type : t->type;
+    ctx->last_type = ty;
+    ctx->last_type_mods = t->entry ? t->entry->mods : 0;
+    if (ty) return ty;
+    hfx_error(ctx->diags, loc, X_SYNTAX, "'%s': type used in its own definition", t->text);
+    return hfx_type_scalar(ctx->types, B_FLOAT);
+}
+
+/* `Texture2D<float4>` (SM4 spelling): the element type is dropped, D3D9 textures have none. */
+const hfx_type *pb_template(parse_ctx *ctx, const hfx_type *object, const hfx_type *elem, hfx_loc loc) {
+    (void)elem;
+    if (object->kind == TY_TEXTURE) return object;
+    hfx_error(ctx->diags, loc, X_SYNTAX, "syntax error: unexpected token '<'");
+    return object;
+}
+
+/* Folds a constant integer expression (array sizes); false when it is not one. */
+static bool fold_int(const hfx_expr *e, int64_t *out) {
+    int64_t a, b;
+    switch (e->kind) {
+    case EX_INT: case EX_BOOL: *out = e->ival; return true;
+    case EX_UNARY:
+        if (!fold_int(e->args[0], &a)) return false;
+        switch (e->op) {
+        case OP_NEG: *out = -a; return true;
+        case OP_POS: *out = a; return true;
+        case OP_BITNOT: *out = ~a; return true;
+        case OP_NOT: *out = !a; return true;
+        default: return false;
+        }
+    case EX_BINARY:
+        if (!fold_int(e->args[0], &a) || !fold_int(e->args[1], &b)) return false;
+        if ((a > (1 << 20) || a < -(1 << 20) || b > (1 << 20) || b < -(1 << 20)) && e->op != OP_AND && e->op != OP_OR)
+            return false; /* keeps the arithmetic below far from overflow */
+        switch (e->op) {
+        case OP_ADD: *out = a + b; return true;
+        case OP_SUB: *out = a - b; return true;
+        case OP_MUL: *out = a * b; return true;
+        case OP_DIV: if (!b) return false; *out = a / b; return true;
+        case OP_MOD: if (!b) return false; *out = a % b; return true;
+        case OP_SHL: if (b < 0 || b > 31) return false; *out = a << b; return true;
+        case OP_SHR: if (b < 0 || b > 31) return false; *out = a >> b; return true;
+        case OP_BITAND: *out = a & b; return true;
+        case OP_BITOR: *out = a | b; return true;
+        case OP_BITXOR: *out = a ^ b; return true;
+        case OP_LT: *out = a < b; return true;
+        case OP_GT: *out = a > b; return true;
+        case OP_LE: *out = a <= b; return true;
+        case OP_GE: *out = a >= b; return true;
+        case OP_EQ: *out = a == b; return true;
+        case OP_NE: *out = a != b; return true;
+        case OP_AND: *out = a && b; return true;
+        case OP_OR: *out = a || b; return true;
+        default: return false;
+        }
+    case EX_TERNARY:
+        if (!fold_int(e->args[0], &a)) return false;
+        return fold_int(e->args[a ? 1 : 2], out);
+    default: return false;
+    }
+}
+
+/* One array dimension around t: folded size, 0 for [] or, unfolded, array_len_expr. */
+static const hfx_type *array_of(parse_ctx *ctx, const hfx_type *t, hfx_expr *size) {
+    int64_t n = 0;
+    if (!size) return hfx_type_array(ctx->types, t, 0);
+    if (!fold_int(size, &n)) {
+        hfx_type *arr = (hfx_type *)hfx_type_array(ctx->types, t, 0); /* fresh: ours to finish */
+        arr->array_len_expr = size;
+        return arr;
+    }
+    if (n < 1 || n > 65536) {
+        hfx_error(ctx->diags, size->loc, 3059, "array dimension must be between 1 and 65536");
+        n = 1;
+    }
+    return hfx_type_array(ctx->types, t, (uint32_t)n);
+}
+
+const hfx_type *pb_array_type(parse_ctx *ctx, const hfx_type *elem, parse_vec dims) {
+    const hfx_type *t = elem;
+    for (uint32_t i = dims.count; i-- > 0;) t = array_of(ctx, t, dims.items[i]);
+    return t;
+}
+
+parse_specs *pb_specs(parse_ctx *ctx, uint32_t mods, const hfx_type *type, hfx_loc loc) {
+    parse_specs *s = HFX_NEW(ctx->arena, parse_specs);
+    if (!s) return ctx->oom_specs;
+    if (type && type == ctx->last_type) mods |= ctx->last_type_mods;
+    ctx->last_type = NULL;
+    s->mods = mods;
+    s->type = type;
+    s->loc = loc;
+    const hfx_type *elem = type;
+    while (elem && elem->kind == TY_ARRAY) elem = elem->elem;
+    /* #pragma pack_matrix: the default for matrices that name no majorness themselves */
+    if (elem && elem->kind == TY_MATRIX && !(mods & (MOD_ROW_MAJOR | MOD_COLUMN_MAJOR))) s->mods |= ctx->pack_mods;
+    if (type && type->kind == TY_STRUCT && ctx->pending_struct == type->st) {
+        s->defines = type->st; /* `struct S {...} x;` also declares S */
+        ctx->pending_struct = NULL;
+    }
+    return s;
+}
+
+static hfx_struct *struct_object(parse_ctx *ctx, const char *name, hfx_loc loc, const hfx_type **type) {
+    parse_typename *e = name ? parse_find_typename(ctx, name) : NULL;
+    if (e && e->st) {
+        *type = e->type;
+        return e->st;
+    }
+    hfx_struct *st = HFX_NEW(ctx->arena, hfx_struct);
+    if (!st) return NULL;
+    st->name = name;
+    st->loc = loc;
+    *type = hfx_type_struct(ctx->types, st);
+    return st;
+}
+
+const hfx_type *pb_struct(parse_ctx *ctx, const char *name, parse_vec fields, hfx_loc loc) {
+    ctx->last_type = NULL;
+    const hfx_type *type = NULL;
+    hfx_struct *st = struct_object(ctx, name, loc, &type);
+    if (!st) return hfx_type_scalar(ctx->types, B_FLOAT);
+    if (st->fields) hfx_error(ctx->diags, loc, X_REDEFINITION, "redefinition of '%s'", name);
+    st->loc = loc;
+    st->fields = HFX_NEW_ARRAY(ctx->arena, hfx_field, fields.count ? fields.count : 1);
+    st->field_count = st->fields ? fields.count : 0;
+    for (uint32_t i = 0; i < st->field_count; i++) st->fields[i] = *(hfx_field *)fields.items[i];
+    ctx->pending_struct = st;
+    return type;
+}
+
+const hfx_type *pb_struct_ref(parse_ctx *ctx, const char *name, hfx_loc loc) {
+    ctx->last_type = NULL;
+    const hfx_type *type = NULL;
+    (void)struct_object(ctx, name, loc, &type);
+    return type ? type : hfx_type_scalar(ctx->types, B_FLOAT);
+}

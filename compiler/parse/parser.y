@@ -1,0 +1,442 @@
+/* parser.y: the grammar of D3D9 effect files (fx_2_0: SM2/SM3 HLSL plus techniques, passes,
+ * annotations and state blocks). Actions are one line: nodes are built by parse_expr.c and
+ * parse_decl.c, tokens come from parse_lex.c (keywords, type names, the typedef/struct lexer
+ * hack, nesting limits, the X3000 messages). Recovery: `error` at ';' and '}' in statements,
+ * struct bodies, annotations, state blocks and at top level, so every syntax error in a file
+ * is reported. The only conflicts are the dangling else and the binary operators, both
+ * settled by the precedence declarations. */
+%define api.pure full
+%define api.location.type {hfx_loc}
+%define parse.error custom
+%locations
+%param {parse_ctx *ctx}
+
+%code requires {
+#include "parse/parse_ctx.h"
+}
+
+%code {
+#include <stdlib.h>
+#define YYLLOC_DEFAULT(Cur, Rhs, N) do { (Cur) = (N) ? YYRHSLOC(Rhs, 1) : YYRHSLOC(Rhs, 0); } while (0)
+#define YYMAXDEPTH 50000 /* then "nesting too deep", not a crash (the C stack is not involved) */
+static int yylex(YYSTYPE *lval, YYLTYPE *lloc, parse_ctx *ctx) { return parse_lex(lval, lloc, ctx); }
+static void yyerror(YYLTYPE *loc, parse_ctx *ctx, const char *msg);
+}
+
+%union {
+    parse_tok tok;
+    hfx_expr *expr;
+    hfx_stmt *stmt;
+    hfx_decl *decl;
+    const hfx_type *type;
+    parse_specs *specs;
+    parse_declarator *dtor;
+    parse_vec vec;
+    hfx_state_assign *state;
+    hfx_pass_ast *pass;
+    hfx_attribute *attr;
+    hfx_annotation_ast *anno;
+    uint32_t mods;
+}
+
+%token <tok> IDENT TYPE_NAME INTCONST FLOATCONST STRING ASM_BLOCK MODIFIER ASSIGN_OP
+%token <tok> STRUCT TYPEDEF TECHNIQUE PASS COMPILE SAMPLER_STATE REGISTER TRUE_KW FALSE_KW NULL_KW
+%token <tok> IF ELSE FOR WHILE DO SWITCH CASE DEFAULT BREAK CONTINUE DISCARD RETURN VECTOR MATRIX
+%token <tok> LE GE EQ NE ANDAND OROR SHL SHR INC DEC OTHER
+
+%precedence LOWER_THAN_ELSE
+%precedence ELSE
+%left OROR
+%left ANDAND
+%left '|'
+%left '^'
+%left '&'
+%left EQ NE
+%left '<' '>' LE GE
+%left SHL SHR
+%left '+' '-'
+%left '*' '/' '%'
+
+%type <expr> primary postfix unary binary cond assign expr
+%type <expr> expr_opt initializer state_value strings
+%type <vec> args args_opt init_items declarators fields params params_opt annotations anno_list
+%type <vec> states passes stmt_list attrs dims
+%type <stmt> stmt block for_init
+%type <decl> function fn_head technique param
+%type <type> type_spec ctor_type struct_spec
+%type <specs> decl_specs
+%type <dtor> declarator decl_head decl_post
+%type <mods> mods
+%type <state> state
+%type <pass> pass
+%type <attr> attr
+%type <anno> annotation
+%type <tok> name_opt semantic_opt state_name
+
+%%
+
+file
+    : %empty
+    | file global
+    ;
+
+global
+    : decl_specs declarators ';'             { pb_globals(ctx, pb_vars(ctx, $1, $2, true)); }
+    | decl_specs ';'                         { pb_global(ctx, pb_struct_decl(ctx, $1)); }
+    | TYPEDEF decl_specs declarators ';'     { pb_globals(ctx, pb_typedefs(ctx, $2, $3)); }
+    | function                               { pb_global(ctx, $1); }
+    | technique                              { pb_global(ctx, $1); }
+    | ';'
+    | error ';'
+    | error '}'
+    ;
+
+/* ---- types and declarations ---- */
+
+mods
+    : MODIFIER                               { $$ = $1.mods; }
+    | mods MODIFIER                          { $$ = $1 | $2.mods; }
+    ;
+
+decl_specs
+    : type_spec                              { $$ = pb_specs(ctx, 0, $1, @1); }
+    | mods type_spec                         { $$ = pb_specs(ctx, $1, $2, @1); }
+    ;
+
+type_spec
+    : ctor_type
+    | struct_spec
+    ;
+
+ctor_type
+    : TYPE_NAME                              { $$ = pb_typename(ctx, &$1, @1); }
+    | TYPE_NAME '<' ctor_type '>'            { $$ = pb_template(ctx, pb_typename(ctx, &$1, @1), $3, @2); }
+    | TYPE_NAME '<' ctor_type ',' INTCONST '>' { $$ = pb_template(ctx, pb_typename(ctx, &$1, @1), $3, @2); }
+    | VECTOR                                 { $$ = pb_generic_vector(ctx, NULL, NULL, @1); }
+    | VECTOR '<' TYPE_NAME ',' INTCONST '>'  { $$ = pb_generic_vector(ctx, $3.type, $5.text, @3); }
+    | MATRIX                                 { $$ = pb_generic_matrix(ctx, NULL, NULL, NULL, @1); }
+    | MATRIX '<' TYPE_NAME ',' INTCONST ',' INTCONST '>' { $$ = pb_generic_matrix(ctx, $3.type, $5.text, $7.text, @3); }
+    ;
+
+struct_spec
+    : STRUCT IDENT '{' fields '}'            { $$ = pb_struct(ctx, $2.text, $4, @2); }
+    | STRUCT '{' fields '}'                  { $$ = pb_struct(ctx, NULL, $3, @1); }
+    | STRUCT IDENT '{' fields error '}'      { $$ = pb_struct(ctx, $2.text, $4, @2); }
+    | STRUCT IDENT                           { $$ = pb_struct_ref(ctx, $2.text, @2); }
+    ;
+
+fields
+    : %empty                                 { $$ = parse_vec_new(); }
+    | fields decl_specs declarators ';'      { $$ = pb_fields(ctx, $1, $2, $3); }
+    | fields error ';'                       { $$ = $1; }
+    ;
+
+declarators
+    : declarator                             { $$ = parse_vec_one(ctx, $1); }
+    | declarators ',' declarator             { $$ = parse_vec_push(ctx, $1, $3); }
+    ;
+
+decl_head
+    : IDENT                                  { $$ = pb_declarator(ctx, $1.text, @1); }
+    | IDENT dims                             { $$ = pb_decl_dims(ctx, pb_declarator(ctx, $1.text, @1), $2); }
+    ;
+
+dims
+    : '[' expr ']'                           { $$ = parse_vec_one(ctx, $2); }
+    | '[' ']'                                { $$ = parse_vec_one(ctx, NULL); }
+    | dims '[' expr ']'                      { $$ = parse_vec_push(ctx, $1, $3); }
+    | dims '[' ']'                           { $$ = parse_vec_push(ctx, $1, NULL); }
+    ;
+
+decl_post
+    : decl_head
+    | decl_post ':' IDENT                    { $$ = pb_decl_semantic($1, $3.text); }
+    | decl_post ':' REGISTER '(' IDENT ')'   { $$ = pb_decl_register($1, $5.text); }
+    | decl_post ':' REGISTER '(' IDENT ',' IDENT ')' { $$ = pb_decl_register($1, $7.text); }
+    | decl_post annotations                  { $$ = pb_decl_annotations(ctx, $1, $2); }
+    ;
+
+declarator
+    : decl_post
+    | decl_post '=' initializer              { $$ = pb_decl_init($1, $3); }
+    | decl_post '{' states '}'               { $$ = pb_decl_init($1, pb_sampler_state(ctx, $3, @2)); }
+    | decl_post '{' states error '}'         { $$ = pb_decl_init($1, pb_sampler_state(ctx, $3, @2)); }
+    ;
+
+initializer
+    : assign
+    | '{' init_items '}'                     { $$ = pb_init_list(ctx, $2, @1); }
+    | '{' init_items ',' '}'                 { $$ = pb_init_list(ctx, $2, @1); }
+    | '{' '}'                                { $$ = pb_init_list(ctx, parse_vec_new(), @1); }
+    | ASM_BLOCK                              { $$ = pb_asm(ctx, $1.text, @1); }
+    ;
+
+init_items
+    : initializer                            { $$ = parse_vec_one(ctx, $1); }
+    | init_items ',' initializer             { $$ = parse_vec_push(ctx, $1, $3); }
+    ;
+
+annotations
+    : '<' anno_list '>'                      { $$ = $2; }
+    | '<' anno_list error '>'                { $$ = $2; }
+    ;
+
+anno_list
+    : %empty                                 { $$ = parse_vec_new(); }
+    | anno_list annotation                   { $$ = parse_vec_push(ctx, $1, $2); }
+    | anno_list error ';'                    { $$ = $1; }
+    ;
+
+annotation
+    : type_spec declarator ';'               { $$ = pb_annotation(ctx, $1, $2); }
+    ;
+
+/* ---- functions ---- */
+
+function
+    : fn_head block                          { $$ = pb_function_body(ctx, $1, parse_vec_new(), $2); }
+    | fn_head ';'                            { $$ = pb_function_body(ctx, $1, parse_vec_new(), NULL); }
+    | attrs fn_head block                    { $$ = pb_function_body(ctx, $2, $1, $3); }
+    | attrs fn_head ';'                      { $$ = pb_function_body(ctx, $2, $1, NULL); }
+    ;
+
+fn_head
+    : decl_specs IDENT '(' params_opt ')' semantic_opt { $$ = pb_function(ctx, $1, $2.text, @2, $4, $6.text); }
+    ;
+
+semantic_opt
+    : %empty                                 { $$.text = NULL; }
+    | ':' IDENT                              { $$ = $2; }
+    ;
+
+params_opt
+    : %empty                                 { $$ = parse_vec_new(); }
+    | params
+    ;
+
+params
+    : param                                  { $$ = parse_vec_one(ctx, $1); }
+    | params ',' param                       { $$ = parse_vec_push(ctx, $1, $3); }
+    ;
+
+param
+    : decl_specs                             { $$ = pb_param(ctx, $1, NULL, @1); }
+    | decl_specs declarator                  { $$ = pb_param(ctx, $1, $2, @1); }
+    ;
+
+attrs
+    : attr                                   { $$ = parse_vec_one(ctx, $1); }
+    | attrs attr                             { $$ = parse_vec_push(ctx, $1, $2); }
+    ;
+
+attr
+    : '[' IDENT ']'                          { $$ = pb_attribute(ctx, $2.text, parse_vec_new(), @2); }
+    | '[' IDENT '(' args_opt ')' ']'         { $$ = pb_attribute(ctx, $2.text, $4, @2); }
+    ;
+
+/* ---- techniques, passes, state blocks ---- */
+
+technique
+    : TECHNIQUE name_opt '{' passes '}'             { $$ = pb_technique(ctx, $1.text, $2.text, parse_vec_new(), $4, @2); }
+    | TECHNIQUE name_opt annotations '{' passes '}' { $$ = pb_technique(ctx, $1.text, $2.text, $3, $5, @2); }
+    | TECHNIQUE name_opt '{' passes error '}'       { $$ = pb_technique(ctx, $1.text, $2.text, parse_vec_new(), $4, @2); }
+    ;
+
+name_opt
+    : %empty                                 { $$.text = NULL; }
+    | IDENT
+    ;
+
+passes
+    : %empty                                 { $$ = parse_vec_new(); }
+    | passes pass                            { $$ = parse_vec_push(ctx, $1, $2); }
+    | passes ';'                             { $$ = $1; }
+    ;
+
+pass
+    : PASS name_opt '{' states '}'             { $$ = pb_pass(ctx, $2.text, parse_vec_new(), $4, @2); }
+    | PASS name_opt annotations '{' states '}' { $$ = pb_pass(ctx, $2.text, $3, $5, @2); }
+    | PASS name_opt '{' states error '}'       { $$ = pb_pass(ctx, $2.text, parse_vec_new(), $4, @2); }
+    | PASS name_opt annotations '{' states error '}' { $$ = pb_pass(ctx, $2.text, $3, $5, @2); }
+    ;
+
+states
+    : %empty                                 { $$ = parse_vec_new(); }
+    | states state                           { $$ = parse_vec_push(ctx, $1, $2); }
+    | states error ';'                       { $$ = $1; }
+    ;
+
+state
+    : state_name '=' state_value ';'              { $$ = pb_state(ctx, $1.text, NULL, $3, @1); }
+    | state_name '[' expr ']' '=' state_value ';' { $$ = pb_state(ctx, $1.text, $3, $6, @1); }
+    | IDENT '(' args_opt ')' ';'                  { $$ = pb_state(ctx, $1.text, NULL, pb_call(ctx, $1.text, $3, @1), @1); }
+    ;
+
+state_name
+    : IDENT
+    | TYPE_NAME
+    ;
+
+state_value
+    : initializer
+    | '<' IDENT '>'                          { $$ = pb_state_ref(ctx, $2.text, @2); }
+    ;
+
+/* ---- statements ---- */
+
+block
+    : '{' stmt_list '}'                      { $$ = pb_block(ctx, $2, @1); }
+    | '{' stmt_list error '}'                { $$ = pb_block(ctx, $2, @1); }
+    ;
+
+stmt_list
+    : %empty                                 { $$ = parse_vec_new(); }
+    | stmt_list stmt                         { $$ = parse_vec_push(ctx, $1, $2); }
+    ;
+
+stmt
+    : block
+    | decl_specs declarators ';'             { $$ = pb_decl_stmt(ctx, pb_vars(ctx, $1, $2, false), @1); }
+    | decl_specs ';'                         { $$ = pb_decl_stmt(ctx, parse_vec_one(ctx, pb_struct_decl(ctx, $1)), @1); }
+    | TYPEDEF decl_specs declarators ';'     { $$ = pb_decl_stmt(ctx, pb_typedefs(ctx, $2, $3), @1); }
+    | expr ';'                               { $$ = pb_expr_stmt(ctx, ST_EXPR, $1, @1); }
+    | ';'                                    { $$ = pb_stmt(ctx, ST_EMPTY, @1); }
+    | IF '(' expr ')' stmt %prec LOWER_THAN_ELSE { $$ = pb_if(ctx, $3, $5, NULL, @1); }
+    | IF '(' expr ')' stmt ELSE stmt         { $$ = pb_if(ctx, $3, $5, $7, @1); }
+    | WHILE '(' expr ')' stmt                { $$ = pb_loop(ctx, ST_WHILE, $3, $5, @1); }
+    | DO stmt WHILE '(' expr ')' ';'         { $$ = pb_loop(ctx, ST_DO, $5, $2, @1); }
+    | FOR '(' for_init expr_opt ';' expr_opt ')' stmt { $$ = pb_for(ctx, $3, $4, $6, $8, @1); }
+    | SWITCH '(' expr ')' '{' stmt_list '}'  { $$ = pb_switch(ctx, $3, $6, @1); }
+    | CASE expr ':'                          { $$ = pb_expr_stmt(ctx, ST_CASE, $2, @1); }
+    | DEFAULT ':'                            { $$ = pb_stmt(ctx, ST_DEFAULT, @1); }
+    | BREAK ';'                              { $$ = pb_stmt(ctx, ST_BREAK, @1); }
+    | CONTINUE ';'                           { $$ = pb_stmt(ctx, ST_CONTINUE, @1); }
+    | DISCARD ';'                            { $$ = pb_stmt(ctx, ST_DISCARD, @1); }
+    | RETURN expr_opt ';'                    { $$ = pb_expr_stmt(ctx, ST_RETURN, $2, @1); }
+    | ASM_BLOCK                              { $$ = pb_asm_stmt(ctx, $1.text, @1); }
+    | attr stmt                              { $$ = pb_attributed(ctx, $1, $2); }
+    | error ';'                              { $$ = pb_stmt(ctx, ST_EMPTY, @1); }
+    ;
+
+for_init
+    : ';'                                    { $$ = NULL; }
+    | expr ';'                               { $$ = pb_expr_stmt(ctx, ST_EXPR, $1, @1); }
+    | decl_specs declarators ';'             { $$ = pb_decl_stmt(ctx, pb_vars(ctx, $1, $2, false), @1); }
+    ;
+
+expr_opt
+    : %empty                                 { $$ = NULL; }
+    | expr
+    ;
+
+/* ---- expressions, C precedence ---- */
+
+strings
+    : STRING                                 { $$ = pb_string(ctx, $1.text, @1); }
+    | strings STRING                         { $$ = pb_string_join(ctx, $1, $2.text); }
+    ;
+
+primary
+    : IDENT                                  { $$ = pb_ident(ctx, $1.text, @1); }
+    | INTCONST                               { $$ = pb_int(ctx, $1.text, @1); }
+    | FLOATCONST                             { $$ = pb_float(ctx, $1.text, @1); }
+    | TRUE_KW                                { $$ = pb_bool(ctx, true, @1); }
+    | FALSE_KW                               { $$ = pb_bool(ctx, false, @1); }
+    | strings
+    | '(' expr ')'                           { $$ = pb_paren($2); }
+    | IDENT '(' args_opt ')'                 { $$ = pb_call(ctx, $1.text, $3, @1); }
+    | ctor_type '(' args_opt ')'             { $$ = pb_construct(ctx, $1, $3, @1); }
+    | COMPILE IDENT IDENT '(' args_opt ')'   { $$ = pb_compile(ctx, $2.text, $3.text, $5, @3); }
+    | COMPILE IDENT IDENT                    { $$ = pb_compile(ctx, $2.text, $3.text, parse_vec_new(), @3); }
+    | SAMPLER_STATE '{' states '}'           { $$ = pb_sampler_state(ctx, $3, @1); }
+    | SAMPLER_STATE '{' states error '}'     { $$ = pb_sampler_state(ctx, $3, @1); }
+    | NULL_KW                                { $$ = pb_expr(ctx, EX_NULL, @1); }
+    ;
+
+postfix
+    : primary
+    | postfix '[' expr ']'                   { $$ = pb_index(ctx, $1, $3, @2); }
+    | postfix '.' IDENT                      { $$ = pb_member(ctx, $1, $3.text, @2); }
+    | postfix '.' IDENT '(' args_opt ')'     { $$ = pb_method(ctx, $1, $3.text, $5, @3); }
+    | postfix INC                            { $$ = pb_unary(ctx, OP_POSTINC, $1, @2); }
+    | postfix DEC                            { $$ = pb_unary(ctx, OP_POSTDEC, $1, @2); }
+    ;
+
+unary
+    : postfix
+    | INC unary                              { $$ = pb_unary(ctx, OP_PREINC, $2, @1); }
+    | DEC unary                              { $$ = pb_unary(ctx, OP_PREDEC, $2, @1); }
+    | '-' unary                              { $$ = pb_unary(ctx, OP_NEG, $2, @1); }
+    | '+' unary                              { $$ = pb_unary(ctx, OP_POS, $2, @1); }
+    | '!' unary                              { $$ = pb_unary(ctx, OP_NOT, $2, @1); }
+    | '~' unary                              { $$ = pb_unary(ctx, OP_BITNOT, $2, @1); }
+    | '(' ctor_type ')' unary                { $$ = pb_cast(ctx, $2, $4, @1); }
+    | '(' ctor_type dims ')' unary           { $$ = pb_cast(ctx, pb_array_type(ctx, $2, $3), $5, @1); }
+    ;
+
+/* The binary operators in one rule: precedence declarations order them like C, which keeps
+ * each operand's climb through unit rules short. */
+binary
+    : unary
+    | binary '*' binary                      { $$ = pb_binary(ctx, OP_MUL, $1, $3, @2); }
+    | binary '/' binary                      { $$ = pb_binary(ctx, OP_DIV, $1, $3, @2); }
+    | binary '%' binary                      { $$ = pb_binary(ctx, OP_MOD, $1, $3, @2); }
+    | binary '+' binary                      { $$ = pb_binary(ctx, OP_ADD, $1, $3, @2); }
+    | binary '-' binary                      { $$ = pb_binary(ctx, OP_SUB, $1, $3, @2); }
+    | binary SHL binary                      { $$ = pb_binary(ctx, OP_SHL, $1, $3, @2); }
+    | binary SHR binary                      { $$ = pb_binary(ctx, OP_SHR, $1, $3, @2); }
+    | binary '<' binary                      { $$ = pb_binary(ctx, OP_LT, $1, $3, @2); }
+    | binary '>' binary                      { $$ = pb_binary(ctx, OP_GT, $1, $3, @2); }
+    | binary LE binary                       { $$ = pb_binary(ctx, OP_LE, $1, $3, @2); }
+    | binary GE binary                       { $$ = pb_binary(ctx, OP_GE, $1, $3, @2); }
+    | binary EQ binary                       { $$ = pb_binary(ctx, OP_EQ, $1, $3, @2); }
+    | binary NE binary                       { $$ = pb_binary(ctx, OP_NE, $1, $3, @2); }
+    | binary '&' binary                      { $$ = pb_binary(ctx, OP_BITAND, $1, $3, @2); }
+    | binary '^' binary                      { $$ = pb_binary(ctx, OP_BITXOR, $1, $3, @2); }
+    | binary '|' binary                      { $$ = pb_binary(ctx, OP_BITOR, $1, $3, @2); }
+    | binary ANDAND binary                   { $$ = pb_binary(ctx, OP_AND, $1, $3, @2); }
+    | binary OROR binary                     { $$ = pb_binary(ctx, OP_OR, $1, $3, @2); }
+    ;
+
+cond
+    : binary
+    | binary '?' expr ':' assign             { $$ = pb_ternary(ctx, $1, $3, $5, @2); }
+    ;
+
+assign
+    : cond
+    | unary '=' assign                       { $$ = pb_assign(ctx, OP_NONE, $1, $3, @2); }
+    | unary ASSIGN_OP assign                 { $$ = pb_assign(ctx, $2.op, $1, $3, @2); }
+    ;
+
+expr
+    : assign
+    | expr ',' assign                        { $$ = pb_comma(ctx, $1, $3, @2); }
+    ;
+
+args_opt
+    : %empty                                 { $$ = parse_vec_new(); }
+    | args
+    ;
+
+args
+    : assign                                 { $$ = parse_vec_one(ctx, $1); }
+    | args ',' assign                        { $$ = parse_vec_push(ctx, $1, $3); }
+    ;
+
+%%
+
+static void yyerror(YYLTYPE *loc, parse_ctx *ctx, const char *msg) {
+    parse_report_failure(ctx, *loc, msg);
+}
+
+static int yyreport_syntax_error(const yypcontext_t *yyctx, parse_ctx *ctx) {
+    parse_report_syntax(ctx, yypcontext_token(yyctx) == YYSYMBOL_YYEOF, *yypcontext_location(yyctx));
+    return 0;
+}
+
+hfx_ast *hfx_parse(hfx_arena *arena, hfx_diags *diags, hfx_types *types, struct hfx_token *tokens) {
+    parse_ctx ctx;
+    if (parse_ctx_init(&ctx, arena, diags, types, tokens)) (void)yyparse(&ctx);
+    return parse_ctx_finish(&ctx);
+}

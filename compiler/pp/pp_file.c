@@ -1,0 +1,120 @@
+/* pp_file.c: reading source files and finding #include'd ones. Effects come from Windows:
+ * backslashes are separators and names often differ in case from the file on disk, so a
+ * name that is not found exactly is looked up again component by component, ignoring case. */
+#define _XOPEN_SOURCE 700 /* realpath */
+#include <dirent.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
+
+#include "pp/pp_internal.h"
+
+char *pp_read_file(hfx_arena *arena, const char *path, uint32_t *size) {
+    struct stat st;
+    if (stat(path, &st) != 0 || !S_ISREG(st.st_mode) || st.st_size >= (off_t)UINT32_MAX) return NULL;
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    size_t n = (size_t)st.st_size;
+    char *buf = hfx_arena_alloc(arena, n + 1);
+    size_t got = buf ? fread(buf, 1, n, f) : 0;
+    fclose(f);
+    if (!buf || got != n) return NULL;
+    buf[n] = 0;
+    *size = (uint32_t)n;
+    return buf;
+}
+
+char *pp_dirname(hfx_arena *arena, const char *path) {
+    const char *slash = strrchr(path, '/');
+    const char *back = strrchr(path, '\\');
+    if (back && (!slash || back > slash)) slash = back;
+    if (!slash) return hfx_arena_strdup(arena, ".");
+    if (slash == path) return hfx_arena_strdup(arena, "/");
+    return hfx_arena_strndup(arena, path, (size_t)(slash - path));
+}
+
+char *pp_realpath(hfx_arena *arena, const char *path) {
+    char *r = realpath(path, NULL);
+    if (!r) return NULL;
+    char *copy = hfx_arena_strdup(arena, r);
+    free(r);
+    return copy;
+}
+
+static bool is_file(const char *path) {
+    struct stat st;
+    return stat(path, &st) == 0 && S_ISREG(st.st_mode);
+}
+
+static bool is_dir(const char *path) {
+    struct stat st;
+    return stat(path, &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+/* The entry of `dir` whose name matches `name` ignoring ASCII case, or NULL. */
+static char *find_entry_nocase(hfx_arena *arena, const char *dir, const char *name, size_t len) {
+    DIR *d = opendir(*dir ? dir : "/");
+    if (!d) return NULL;
+    char *found = NULL;
+    for (struct dirent *e; (e = readdir(d));) {
+        if (strlen(e->d_name) == len && strncasecmp(e->d_name, name, len) == 0) {
+            found = hfx_arena_strdup(arena, e->d_name);
+            break;
+        }
+    }
+    closedir(d);
+    return found;
+}
+
+/* dir + "/" + rel, where the components of rel may differ in case from the disk. */
+static const char *lookup_nocase(hfx_arena *arena, const char *dir, const char *rel) {
+    const char *path = dir;
+    for (const char *p = rel; *p;) {
+        const char *end = strchr(p, '/');
+        size_t len = end ? (size_t)(end - p) : strlen(p);
+        if (len == 0 || (len == 1 && p[0] == '.') || (len == 2 && p[0] == '.' && p[1] == '.')) {
+            path = hfx_arena_printf(arena, "%s/%.*s", path, (int)len, p);
+        } else {
+            const char *exact = hfx_arena_printf(arena, "%s/%.*s", path, (int)len, p);
+            bool last = !end;
+            if (last ? is_file(exact) : is_dir(exact)) {
+                path = exact;
+            } else {
+                char *entry = find_entry_nocase(arena, path, p, len);
+                if (!entry) return NULL;
+                path = hfx_arena_printf(arena, "%s/%s", path, entry);
+            }
+        }
+        p += len;
+        if (*p == '/') p++;
+    }
+    return is_file(path) ? path : NULL;
+}
+
+static const char *try_dir(hfx_pp *pp, const char *dir, const char *name) {
+    if (!dir) return NULL;
+    const char *path = strcmp(dir, ".") == 0 ? name : hfx_arena_printf(pp->arena, "%s/%s", dir, name);
+    if (is_file(path)) return path;
+    return lookup_nocase(pp->arena, dir, name);
+}
+
+const char *pp_find_include(hfx_pp *pp, const char *name, bool angled, const char *including_dir) {
+    (void)angled; /* fxc's default handler searches the same places for <x> and "x" */
+    char *n = hfx_arena_strdup(pp->arena, name);
+    for (char *p = n; *p; p++)
+        if (*p == '\\') *p = '/';
+    if (n[0] == '/') return is_file(n) ? n : lookup_nocase(pp->arena, "", n + 1);
+    const char *found = try_dir(pp, including_dir, n);
+    if (!found && pp->root_dir && (!including_dir || strcmp(pp->root_dir, including_dir) != 0))
+        found = try_dir(pp, pp->root_dir, n);
+    for (uint32_t i = 0; !found && pp->opt && i < pp->opt->include_dir_count; i++) {
+        char *dir = hfx_arena_strdup(pp->arena, pp->opt->include_dirs[i]);
+        for (char *p = dir; *p; p++)
+            if (*p == '\\') *p = '/';
+        found = try_dir(pp, dir, n);
+    }
+    return found;
+}
