@@ -134,6 +134,7 @@ hfx_device *hfx_device_create_gl(hfx_gl_loader load) {
 
 void hfx_device_destroy(hfx_device *dev) {
     if (!dev) return;
+    hfx_rt_textures_free(dev);
     free(dev->scratch);
     free(dev);
 }
@@ -151,6 +152,7 @@ void hfx_rt_bind_unit(hfx_device *dev, int unit, GLenum target, GLuint texture, 
         /* Unbinding the previous target keeps one texture per unit, as D3D has. */
         if (u->target && u->target != target && u->texture) dev->gl.BindTexture(u->target, 0);
         dev->gl.BindTexture(target, texture);
+        hfx_rt_texture_check(dev, target, texture);
         u->texture = texture;
         u->target = target;
     }

@@ -60,6 +60,9 @@
     V(UniformMatrix4x3fv, (GLint location, GLsizei count, GLboolean t, const GLfloat *v), (location, count, t, v)) \
     V(ActiveTexture, (GLenum texture), (texture)) \
     V(BindTexture, (GLenum target, GLuint texture), (target, texture)) \
+    V(GetTexParameteriv, (GLenum target, GLenum pname, GLint *params), (target, pname, params)) \
+    V(GetTexLevelParameteriv, (GLenum target, GLint level, GLenum pname, GLint *params), (target, level, pname, params)) \
+    V(TexParameteri, (GLenum target, GLenum pname, GLint param), (target, pname, param)) \
     V(GenSamplers, (GLsizei n, GLuint *samplers), (n, samplers)) \
     V(DeleteSamplers, (GLsizei n, const GLuint *samplers), (n, samplers)) \
     V(BindSampler, (GLuint unit, GLuint sampler), (unit, sampler)) \

@@ -34,6 +34,19 @@ typedef struct hfx_glstate {
     uint8_t clip_planes;
 } hfx_glstate;
 
+/* What texture.c knows of one texture name. */
+typedef struct hfx_texture_note {
+    GLuint name;          /* 0: a free slot */
+    GLint lowered_to;     /* the MAX_LEVEL hfx wrote, or -1 */
+    int stale;            /* hfx_device_texture_changed: check again at the next bind */
+} hfx_texture_note;
+
+/* Texture names hfx has checked (open addressing with linear probing). */
+typedef struct hfx_texture_set {
+    hfx_texture_note *notes;
+    size_t cap, count; /* cap: 0 or a power of two */
+} hfx_texture_set;
+
 /* A texture unit as GL holds it. */
 typedef struct hfx_unit_state {
     GLuint texture, sampler;
@@ -78,6 +91,7 @@ struct hfx_device {
     int srgb_decode;               /* EXT_texture_sRGB_decode */
     float *scratch;                /* for uploads that convert int <-> float */
     size_t scratch_size;
+    hfx_texture_set checked;       /* textures whose mip levels texture.c has made complete */
 };
 
 /* D3D9's sampler state for one sampler stage. */
@@ -287,6 +301,11 @@ int hfx_rt_fail(hfx_device *dev, int code, const char *fmt, ...) __attribute__((
 void hfx_rt_read_state(hfx_device *dev, hfx_glstate *s);
 void hfx_rt_write_state(hfx_device *dev, const hfx_glstate *want);
 void hfx_rt_bind_unit(hfx_device *dev, int unit, GLenum target, GLuint texture, GLuint sampler);
+
+/* texture.c: the texture bound on target of the active unit, made complete with the mip
+ * levels it has, the first time hfx binds it; and the set of those checked freed. */
+void hfx_rt_texture_check(hfx_device *dev, GLenum target, GLuint texture);
+void hfx_rt_textures_free(hfx_device *dev);
 void hfx_rt_read_target(hfx_device *dev);
 
 /* apply.c: reads the textures and samplers GL holds on the units in mask into s->units. */
