@@ -15,6 +15,9 @@ if(CJSON_LIBRARY AND CJSON_INCLUDE_DIR)
 endif()
 find_path(STB_INCLUDE_DIR stb_image.h PATH_SUFFIXES stb)
 find_library(STB_LIBRARY stb)
+# DevIL reads DDS files (compressed, cube and volume) for hfxview; optional
+find_path(IL_INCLUDE_DIR IL/il.h)
+find_library(IL_LIBRARY IL)
 pkg_check_modules(GLFW IMPORTED_TARGET glfw3)
 
 # glslang's C interface (static libraries in Debian, C++ inside: link order matters).

@@ -270,6 +270,18 @@ int hfx_param_get_texture(const hfx_param *p, unsigned int *out) {
     return HFX_OK;
 }
 
+/* The target the passes bind the texture on: a plain `texture` takes its samplers' dimension. */
+unsigned int hfx_param_texture_target(const hfx_param *p) {
+    if (!p || !is_texture_like(info(p))) return 0;
+    const hfx_shared *sh = p->fx->sh;
+    for (uint32_t i = 0; i < sh->fx->pass_count; i++)
+        for (uint32_t b = 0; b < sh->passes[i].binding_count; b++) {
+            const hfx_rt_binding *bd = &sh->passes[i].bindings[b];
+            if (bd->texture_param == p->index || bd->sampler_param == p->index) return bd->target;
+        }
+    return 0;
+}
+
 /* Lookup and description. */
 
 hfx_param *hfx_effect_param(hfx_effect *fx, const char *name) {

@@ -118,6 +118,9 @@ int hfx_param_get_float(const hfx_param *p, float *out);
 int hfx_param_get_floats(const hfx_param *p, float *out, size_t count);
 int hfx_param_get_ints(const hfx_param *p, int *out, size_t count);
 int hfx_param_get_matrix(const hfx_param *p, float out[16]);
+/* GL_TEXTURE_2D, _3D or _CUBE_MAP: where the passes bind this texture (a plain `texture` takes
+ * its samplers' dimension); 0 when no pass samples it or it is not a texture. */
+unsigned int hfx_param_texture_target(const hfx_param *p);
 int hfx_param_get_texture(const hfx_param *p, unsigned int *out);
 
 /* Techniques and passes. */

@@ -227,6 +227,18 @@ static void test_application_max_level_kept(void) {
     g.DeleteTextures(1, &tex);
 }
 
+/* Where the passes bind each texture: declared type, or (plain `texture`) the samplers' kind. */
+static void test_texture_targets(void) {
+    hfx_effect *fx = load();
+    if (!fx) return;
+    CHECK_INT(hfx_param_texture_target(hfx_effect_param(fx, "Tex")), GL_TEXTURE_2D);
+    CHECK_INT(hfx_param_texture_target(hfx_effect_param(fx, "Cube")), GL_TEXTURE_CUBE_MAP);
+    CHECK_INT(hfx_param_texture_target(hfx_effect_param(fx, "C1")), GL_TEXTURE_CUBE_MAP);
+    CHECK_INT(hfx_param_texture_target(hfx_effect_param(fx, "Lod")), 0);
+    CHECK_INT(hfx_param_texture_target(NULL), 0);
+    hfx_effect_destroy(fx);
+}
+
 int main(void) {
     gl = test_gl_create(W, H);
     if (!gl) test_skip("no OSMesa context");
@@ -240,6 +252,7 @@ int main(void) {
     RUN(test_magnified_one_level_and_checked_once);
     RUN(test_levels_added_later);
     RUN(test_application_max_level_kept);
+    RUN(test_texture_targets);
     hfx_device_destroy(dev);
     test_gl_destroy(gl);
     return test_summary();

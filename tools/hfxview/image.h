@@ -1,5 +1,6 @@
 /* image.h: RGBA8 images, top row first (as in PNG files and Direct3D textures). Files are read
- * with stb_image (PNG, JPEG, TGA, BMP...) and written as PNG with libpng. */
+ * with stb_image (PNG, JPEG, TGA, BMP...), DDS files (DXTn, cube maps, volumes) with DevIL,
+ * and written as PNG with libpng. */
 #ifndef HFXVIEW_IMAGE_H
 #define HFXVIEW_IMAGE_H
 
@@ -7,13 +8,20 @@
 
 typedef struct hv_image {
     int width, height;
-    unsigned char *rgba; /* width * height * 4 bytes, top row first */
+    int depth, faces;    /* a volume's slices, a cube map's 6 faces; 0 or 1 for a plain image */
+    unsigned char *rgba; /* faces * depth * height * width * 4 bytes, top row first */
 } hv_image;
+
+/* Bytes of one face (all its slices) and the number of faces, counting 0 as 1. */
+size_t hv_image_face_bytes(const hv_image *img);
+int hv_image_face_count(const hv_image *img);
 
 int hv_image_load(hv_image *img, const char *path, char *err, size_t errlen); /* 0, or -1 with err */
 int hv_image_write_png(const hv_image *img, const char *path);              /* 0, or -1 */
 /* A checkerboard of cells x cells squares in two colours: the default texture, visible at a glance. */
 int hv_image_checker(hv_image *img, int size, int cells, const unsigned char a[4], const unsigned char b[4]);
+/* A size^3 volume of cells^3 cubes in two colours: the default volume texture. */
+int hv_image_checker_3d(hv_image *img, int size, int cells, const unsigned char a[4], const unsigned char b[4]);
 void hv_image_free(hv_image *img);
 
 #endif

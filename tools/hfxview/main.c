@@ -119,7 +119,7 @@ static int apply_options(viewer *v) {
         snprintf(name, sizeof name, "%.*s", (int)n, v->opt.sets[i].name);
         if (hv_set_param(v->fx, name, v->opt.sets[i].value, v->err, sizeof v->err) != 0) return input_error(v->err);
     }
-    if (hv_bind_textures(&v->textures, v->gl, v->fx, v->opt.textures, v->opt.texture_count, v->err, sizeof v->err))
+    if (hv_bind_textures(&v->textures, v->gl, v->fx, &v->opt, v->err, sizeof v->err))
         return input_error(v->err);
     return EXIT_OK;
 }

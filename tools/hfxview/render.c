@@ -152,6 +152,7 @@ int hv_read_image(const hv_gl *gl, int width, int height, hv_image *out) {
             b[k] = s;
         }
     }
+    memset(out, 0, sizeof *out);
     out->width = width;
     out->height = height;
     out->rgba = px;
@@ -179,17 +180,36 @@ unsigned int hv_texture_2d(const hv_gl *gl, const hv_image *img) {
     return tex;
 }
 
+/* A cube map from an image of 6 faces (+X, -X, +Y, -Y, +Z, -Z as in DDS files), or from one
+ * image repeated on every face. */
 unsigned int hv_texture_cube(const hv_gl *gl, const hv_image *img) {
     GLuint tex = 0;
     gl->GenTextures(1, &tex);
     gl->ActiveTexture(GL_TEXTURE0);
     gl->BindTexture(GL_TEXTURE_CUBE_MAP, tex);
     gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    size_t stride = hv_image_face_count(img) == 6 ? hv_image_face_bytes(img) : 0;
     for (int face = 0; face < 6; face++)
         gl->TexImage2D((GLenum)(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face), 0, GL_RGBA8, img->width, img->height, 0,
-                       GL_RGBA, GL_UNSIGNED_BYTE, img->rgba);
+                       GL_RGBA, GL_UNSIGNED_BYTE, img->rgba + stride * (size_t)face);
     gl->GenerateMipmap(GL_TEXTURE_CUBE_MAP);
     texture_params(gl, GL_TEXTURE_CUBE_MAP);
     gl->BindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    return tex;
+}
+
+/* A volume texture from an image's slices (one slice for a flat image). */
+unsigned int hv_texture_3d(const hv_gl *gl, const hv_image *img) {
+    GLuint tex = 0;
+    gl->GenTextures(1, &tex);
+    gl->ActiveTexture(GL_TEXTURE0);
+    gl->BindTexture(GL_TEXTURE_3D, tex);
+    gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    int depth = img->depth > 1 ? img->depth : 1;
+    gl->TexImage3D(GL_TEXTURE_3D, 0, GL_RGBA8, img->width, img->height, depth, 0, GL_RGBA, GL_UNSIGNED_BYTE, img->rgba);
+    gl->GenerateMipmap(GL_TEXTURE_3D);
+    texture_params(gl, GL_TEXTURE_3D);
+    gl->TexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_R, GL_REPEAT);
+    gl->BindTexture(GL_TEXTURE_3D, 0);
     return tex;
 }

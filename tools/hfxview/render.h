@@ -42,6 +42,7 @@ int hv_read_image(const hv_gl *gl, int width, int height, hv_image *out);
 
 /* A mipmapped RGBA8 2D texture (or each face of a cube map) from an image; 0 on failure. */
 unsigned int hv_texture_2d(const hv_gl *gl, const hv_image *img);
-unsigned int hv_texture_cube(const hv_gl *gl, const hv_image *img);
+unsigned int hv_texture_cube(const hv_gl *gl, const hv_image *img); /* 6 faces, or one image on each */
+unsigned int hv_texture_3d(const hv_gl *gl, const hv_image *img);   /* the image's slices */
 
 #endif

@@ -1,38 +1,104 @@
-/* textures.c: default and user textures (see textures.h). */
+/* textures.c: default, named and user textures (see textures.h). */
 #include "textures.h"
 
 #include <stdio.h>
 #include <string.h>
+#include <strings.h>
+#include <unistd.h>
 
 #include "image.h"
 #include "render.h"
 
+typedef enum { KIND_2D, KIND_CUBE, KIND_3D } tex_kind;
+
 static int is_texture(hfx_param_type t) { return t >= HFX_TYPE_TEXTURE && t <= HFX_TYPE_TEXTURECUBE; }
 static int is_sampler(hfx_param_type t) { return t >= HFX_TYPE_SAMPLER && t <= HFX_TYPE_SAMPLERCUBE; }
-static int is_cube(hfx_param_type t) { return t == HFX_TYPE_TEXTURECUBE || t == HFX_TYPE_SAMPLERCUBE; }
 
 static unsigned int track(hv_textures *t, unsigned int id) {
     if (id && t->count < sizeof t->ids / sizeof t->ids[0]) t->ids[t->count++] = id;
     return id;
 }
 
-static unsigned int checker(hv_textures *t, const hv_gl *gl, int cube) {
-    unsigned int *slot = cube ? &t->checker_cube : &t->checker_2d;
-    if (*slot) return *slot;
-    static const unsigned char light[4] = {235, 235, 235, 255}, dark[4] = {90, 90, 100, 255};
-    hv_image img;
-    if (hv_image_checker(&img, 256, 8, light, dark) != 0) return 0;
-    *slot = track(t, cube ? hv_texture_cube(gl, &img) : hv_texture_2d(gl, &img));
-    hv_image_free(&img);
-    return *slot;
+static unsigned int make(const hv_gl *gl, const hv_image *img, tex_kind kind) {
+    if (kind == KIND_CUBE) return hv_texture_cube(gl, img);
+    return kind == KIND_3D ? hv_texture_3d(gl, img) : hv_texture_2d(gl, img);
 }
 
-static unsigned int from_file(hv_textures *t, const hv_gl *gl, const char *path, int cube, char *err, size_t errlen) {
+/* The default texture of each kind: a checkerboard (a checkered volume for 3D), never black. */
+static unsigned int checker(hv_textures *t, const hv_gl *gl, tex_kind kind) {
+    if (t->checker[kind]) return t->checker[kind];
+    static const unsigned char light[4] = {235, 235, 235, 255}, dark[4] = {90, 90, 100, 255};
+    hv_image img;
+    int rc = kind == KIND_3D ? hv_image_checker_3d(&img, 32, 4, light, dark) : hv_image_checker(&img, 256, 8, light, dark);
+    if (rc != 0) return 0;
+    t->checker[kind] = track(t, make(gl, &img, kind));
+    hv_image_free(&img);
+    return t->checker[kind];
+}
+
+static unsigned int from_file(hv_textures *t, const hv_gl *gl, const char *path, tex_kind kind, char *err, size_t errlen) {
     hv_image img;
     if (hv_image_load(&img, path, err, errlen) != 0) return 0;
-    unsigned int id = track(t, cube ? hv_texture_cube(gl, &img) : hv_texture_2d(gl, &img));
+    unsigned int id = track(t, make(gl, &img, kind));
     hv_image_free(&img);
     if (!id) snprintf(err, errlen, "cannot make a texture from '%s'", path);
+    return id;
+}
+
+static const char *string_annotation(hfx_param *p, const char *const *names) {
+    for (size_t i = 0; i < hfx_param_annotation_count(p); i++) {
+        hfx_annotation *a = hfx_param_annotation_at(p, i);
+        const char *s = hfx_annotation_string(a);
+        for (size_t n = 0; s && *s && names[n]; n++)
+            if (strcasecmp(hfx_annotation_name(a), names[n]) == 0) return s;
+    }
+    return NULL;
+}
+
+/* Where the passes bind it; else FX Composer's ResourceType; else the declared type. */
+static tex_kind kind_of(hfx_param *p) {
+    switch (hfx_param_texture_target(p)) {
+    case GL_TEXTURE_CUBE_MAP: return KIND_CUBE;
+    case GL_TEXTURE_3D: return KIND_3D;
+    case GL_TEXTURE_2D: return KIND_2D;
+    default: break;
+    }
+    static const char *const type_names[] = {"ResourceType", "Type", NULL};
+    const char *rt = string_annotation(p, type_names);
+    if (rt && strcasecmp(rt, "cube") == 0) return KIND_CUBE;
+    if (rt && (strcasecmp(rt, "3d") == 0 || strcasecmp(rt, "volume") == 0)) return KIND_3D;
+    hfx_param_type type = hfx_param_get_type(p);
+    if (type == HFX_TYPE_TEXTURECUBE || type == HFX_TYPE_SAMPLERCUBE) return KIND_CUBE;
+    if (type == HFX_TYPE_TEXTURE3D || type == HFX_TYPE_SAMPLER3D) return KIND_3D;
+    return KIND_2D;
+}
+
+/* name in the effect's folder, then in each -I folder (as the effect's #includes are found). */
+static int find_file(const hv_options *o, const char *name, char *out, size_t outlen) {
+    if (name[0] == '/') return snprintf(out, outlen, "%s", name), access(out, R_OK) == 0;
+    const char *slash = strrchr(o->input, '/');
+    int dir = slash ? (int)(slash - o->input) : 1;
+    snprintf(out, outlen, "%.*s/%s", dir, slash ? o->input : ".", name);
+    for (size_t i = 0; access(out, R_OK) != 0; i++) {
+        if (i == o->include_dir_count) return 0;
+        snprintf(out, outlen, "%s/%s", o->include_dirs[i], name);
+    }
+    return 1;
+}
+
+/* The file the parameter's annotations name (ResourceName, or the SDK's `string name`), when
+ * it can be read; else 0 and a note, and the caller falls back to the default. */
+static unsigned int from_annotation(hv_textures *t, const hv_gl *gl, const hv_options *o, hfx_param *p) {
+    static const char *const file_names[] = {"ResourceName", "name", "File", "FileName", NULL};
+    const char *name = string_annotation(p, file_names);
+    char path[1024], err[512];
+    if (!name) return 0;
+    if (!find_file(o, name, path, sizeof path)) {
+        fprintf(stderr, "hfxview: note: %s names '%s', not found; using the default texture\n", hfx_param_name(p), name);
+        return 0;
+    }
+    unsigned int id = from_file(t, gl, path, kind_of(p), err, sizeof err);
+    if (!id) fprintf(stderr, "hfxview: note: %s; using the default texture\n", err);
     return id;
 }
 
@@ -42,25 +108,28 @@ static int has_texture_params(hfx_effect *fx) {
     return 0;
 }
 
-int hv_bind_textures(hv_textures *t, const hv_gl *gl, hfx_effect *fx, const hv_kv *given, size_t given_count,
-                     char *err, size_t errlen) {
-    memset(t, 0, sizeof *t);
-    for (size_t k = 0; k < given_count; k++) {
-        char name[256];
-        size_t n = (size_t)(given[k].value - 1 - given[k].name);
-        if (n >= sizeof name) n = sizeof name - 1;
-        memcpy(name, given[k].name, n);
-        name[n] = '\0';
-        hfx_param *p = hfx_effect_param(fx, name);
-        if (!p || !(is_texture(hfx_param_get_type(p)) || is_sampler(hfx_param_get_type(p)))) {
-            snprintf(err, errlen, "--texture: the effect has no texture or sampler parameter '%s'", name);
-            return -1;
-        }
-        unsigned int id = from_file(t, gl, given[k].value, is_cube(hfx_param_get_type(p)), err, errlen);
-        if (!id) return -1;
-        hfx_param_set_texture(p, id);
+static int bind_given(hv_textures *t, const hv_gl *gl, hfx_effect *fx, const hv_kv *given, char *err, size_t errlen) {
+    char name[256];
+    size_t n = (size_t)(given->value - 1 - given->name);
+    if (n >= sizeof name) n = sizeof name - 1;
+    memcpy(name, given->name, n);
+    name[n] = '\0';
+    hfx_param *p = hfx_effect_param(fx, name);
+    if (!p || !(is_texture(hfx_param_get_type(p)) || is_sampler(hfx_param_get_type(p)))) {
+        snprintf(err, errlen, "--texture: the effect has no texture or sampler parameter '%s'", name);
+        return -1;
     }
-    /* Samplers only get the checker when no texture parameter can feed them. */
+    unsigned int id = from_file(t, gl, given->value, kind_of(p), err, errlen);
+    if (!id) return -1;
+    hfx_param_set_texture(p, id);
+    return 0;
+}
+
+int hv_bind_textures(hv_textures *t, const hv_gl *gl, hfx_effect *fx, const hv_options *o, char *err, size_t errlen) {
+    memset(t, 0, sizeof *t);
+    for (size_t k = 0; k < o->texture_count; k++)
+        if (bind_given(t, gl, fx, &o->textures[k], err, errlen) != 0) return -1;
+    /* Samplers only get a texture of their own when no texture parameter can feed them. */
     int samplers_too = !has_texture_params(fx);
     for (size_t i = 0; i < hfx_effect_param_count(fx); i++) {
         hfx_param *p = hfx_effect_param_at(fx, i);
@@ -68,10 +137,8 @@ int hv_bind_textures(hv_textures *t, const hv_gl *gl, hfx_effect *fx, const hv_k
         unsigned int current = 0;
         if (!(is_texture(type) || (samplers_too && is_sampler(type)))) continue;
         if (hfx_param_get_texture(p, &current) == HFX_OK && current) continue; /* given above */
-        if (type == HFX_TYPE_TEXTURE1D || type == HFX_TYPE_TEXTURE3D || type == HFX_TYPE_SAMPLER1D ||
-            type == HFX_TYPE_SAMPLER3D)
-            continue; /* no default for these: they sample black, as an unset D3D texture does */
-        unsigned int id = checker(t, gl, is_cube(type));
+        unsigned int id = from_annotation(t, gl, o, p);
+        if (!id) id = checker(t, gl, kind_of(p));
         if (id) hfx_param_set_texture(p, id);
     }
     return 0;
