@@ -8,9 +8,9 @@
 #include "check/conv.h"
 
 static const hfx_intrinsic_info table[HFX_INTR_COUNT] = {
-#define HFX_INTRINSIC_ROW_(id, name, mn, mx, sig, dim, form, glsl) {name, mn, mx, sig, dim, form, glsl},
-    HFX_INTRINSIC_LIST(HFX_INTRINSIC_ROW_)
-#undef HFX_INTRINSIC_ROW_
+#define HFX_INTRINSIC(id, name, mn, mx, sig, dim, form, glsl, how) {name, mn, mx, sig, dim, form},
+#include "check/intrinsics.def"
+#undef HFX_INTRINSIC
 };
 
 int hfx_intrinsic_find(const char *name) {
@@ -57,7 +57,22 @@ static void all_params(hfx_intrinsic_match *m, const hfx_type *ty, unsigned n) {
     for (unsigned i = 0; i < n; i++) m->params[i] = ty;
 }
 
-static bool match_mul(hfx_types *t, const hfx_type *a, const hfx_type *b, hfx_intrinsic_match *m) {
+/* One call's arguments as the rules see them; T, TF and fb are set for the componentwise rules. */
+typedef struct rule {
+    hfx_types *t;
+    const hfx_intrinsic_info *info;
+    const hfx_type *const *args;
+    unsigned n;
+    const hfx_type *T;  /* the common type of the arguments */
+    const hfx_type *TF; /* T with a float element type */
+    hfx_base fb;        /* TF's element type */
+} rule;
+
+typedef bool rule_fn(const rule *r, hfx_intrinsic_match *m);
+
+static bool rule_mul(const rule *r, hfx_intrinsic_match *m) {
+    hfx_types *t = r->t;
+    const hfx_type *a = r->args[0], *b = r->args[1];
     if (!hfx_type_is_numeric(a) || !hfx_type_is_numeric(b)) return false;
     hfx_base base = hfx_base_common(a->base, b->base);
     if (base == B_BOOL) base = B_INT;
@@ -89,119 +104,178 @@ static unsigned tex_coord_size(hfx_dim dim) {
     }
 }
 
-static bool match_tex(hfx_types *t, const hfx_intrinsic_info *info, const hfx_type *const *args, unsigned n,
-                      hfx_intrinsic_match *m) {
-    const hfx_type *s = args[0];
-    if (s->kind != TY_SAMPLER || (s->dim != DIM_GENERIC && s->dim != info->dim)) return false;
-    if (n == 3) return false;
-    m->params[0] = hfx_type_object(t, TY_SAMPLER, info->dim);
-    unsigned cn = tex_coord_size(info->dim);
-    const hfx_type *coord = vec_or_scalar(t, B_FLOAT, cn);
-    if (info->form == TEXF_BIAS || info->form == TEXF_LOD || info->form == TEXF_PROJ)
-        coord = hfx_type_vector(t, B_FLOAT, 4);
-    for (unsigned i = 1; i < n; i++) m->params[i] = coord;
-    m->ret = hfx_type_vector(t, B_FLOAT, 4);
+static bool rule_tex(const rule *r, hfx_intrinsic_match *m) {
+    const hfx_type *s = r->args[0];
+    hfx_dim dim = r->info->dim;
+    int form = r->info->form;
+    if (s->kind != TY_SAMPLER || (s->dim != DIM_GENERIC && s->dim != dim)) return false;
+    if (r->n == 3) return false;
+    m->params[0] = hfx_type_object(r->t, TY_SAMPLER, dim);
+    const hfx_type *coord = vec_or_scalar(r->t, B_FLOAT, tex_coord_size(dim));
+    if (form == TEXF_BIAS || form == TEXF_LOD || form == TEXF_PROJ) coord = hfx_type_vector(r->t, B_FLOAT, 4);
+    for (unsigned i = 1; i < r->n; i++) m->params[i] = coord;
+    m->ret = hfx_type_vector(r->t, B_FLOAT, 4);
     return true;
 }
 
-/* The rule of each signature: fills params and ret; false when the arguments cannot fit. */
+static bool rule_lit(const rule *r, hfx_intrinsic_match *m) {
+    for (unsigned i = 0; i < r->n; i++)
+        if (!hfx_type_is_numeric(r->args[i])) return false;
+    all_params(m, hfx_type_scalar(r->t, B_FLOAT), r->n);
+    m->ret = hfx_type_vector(r->t, B_FLOAT, 4);
+    return true;
+}
+
+static bool rule_cross(const rule *r, hfx_intrinsic_match *m) {
+    all_params(m, hfx_type_vector(r->t, B_FLOAT, 3), r->n);
+    m->ret = m->params[0];
+    return hfx_type_is_numeric(r->args[0]) && hfx_type_is_numeric(r->args[1]);
+}
+
+static bool rule_d3dcolor(const rule *r, hfx_intrinsic_match *m) {
+    m->params[0] = hfx_type_vector(r->t, B_FLOAT, 4);
+    m->ret = hfx_type_vector(r->t, B_INT, 4);
+    return hfx_type_is_numeric(r->args[0]);
+}
+
+/* The componentwise rules: T is the arguments' common type. */
+static const hfx_type *int_if_bool(const rule *r) {
+    return r->T->base == B_BOOL ? hfx_type_with_base(r->t, r->T, B_INT) : r->T;
+}
+
+static bool rule_same(const rule *r, hfx_intrinsic_match *m) {
+    all_params(m, int_if_bool(r), r->n);
+    m->ret = m->params[0];
+    return true;
+}
+
+static bool rule_same_float(const rule *r, hfx_intrinsic_match *m) {
+    all_params(m, r->TF, r->n);
+    m->ret = r->TF;
+    return true;
+}
+
+static bool rule_clip(const rule *r, hfx_intrinsic_match *m) {
+    m->params[0] = r->TF;
+    m->ret = hfx_type_void(r->t);
+    return true;
+}
+
+static bool rule_all_any(const rule *r, hfx_intrinsic_match *m) {
+    m->params[0] = r->T;
+    m->ret = hfx_type_scalar(r->t, B_BOOL);
+    return true;
+}
+
+static bool rule_classify(const rule *r, hfx_intrinsic_match *m) {
+    m->params[0] = r->TF;
+    m->ret = hfx_type_with_base(r->t, r->T, B_BOOL);
+    return true;
+}
+
+static bool rule_dot(const rule *r, hfx_intrinsic_match *m) {
+    if (!is_vectorish(r->T)) return false;
+    all_params(m, int_if_bool(r), r->n);
+    m->ret = hfx_type_scalar(r->t, m->params[0]->base);
+    return true;
+}
+
+/* length, distance, noise: a float scalar of float vectors. */
+static bool rule_to_scalar(const rule *r, hfx_intrinsic_match *m) {
+    if (!is_vectorish(r->T)) return false;
+    all_params(m, r->TF, r->n);
+    m->ret = hfx_type_scalar(r->t, r->fb);
+    return true;
+}
+
+static bool rule_vec_same(const rule *r, hfx_intrinsic_match *m) {
+    if (!is_vectorish(r->T)) return false;
+    all_params(m, r->TF, r->n);
+    m->ret = r->TF;
+    return true;
+}
+
+static bool rule_refract(const rule *r, hfx_intrinsic_match *m) {
+    if (!is_vectorish(r->T) || !hfx_type_is_numeric(r->args[2])) return false;
+    m->params[0] = m->params[1] = r->TF;
+    m->params[2] = hfx_type_scalar(r->t, r->fb);
+    m->ret = r->TF;
+    return true;
+}
+
+static bool rule_determinant(const rule *r, hfx_intrinsic_match *m) {
+    if (r->T->rows != r->T->cols || r->T->kind == TY_VECTOR) return false;
+    m->params[0] = r->TF;
+    m->ret = hfx_type_scalar(r->t, r->fb);
+    return true;
+}
+
+static bool rule_transpose(const rule *r, hfx_intrinsic_match *m) {
+    const hfx_type *T = r->T;
+    if (T->kind == TY_VECTOR) return false;
+    m->params[0] = T;
+    m->ret = hfx_type_numeric(r->t, T->kind, T->base, T->cols, T->rows);
+    return true;
+}
+
+/* The first argument's shape in float: sincos and the out-argument rules (modf, frexp). */
+static const hfx_type *first_as_float(const rule *r) {
+    return hfx_type_with_base(r->t, r->args[0], float_base(r->args[0]->base));
+}
+
+static bool rule_sincos(const rule *r, hfx_intrinsic_match *m) {
+    all_params(m, first_as_float(r), r->n);
+    m->out[1] = m->out[2] = true;
+    m->ret = hfx_type_void(r->t);
+    return true;
+}
+
+static bool rule_out2(const rule *r, hfx_intrinsic_match *m) {
+    all_params(m, first_as_float(r), r->n);
+    m->out[1] = true;
+    m->ret = m->params[0];
+    return true;
+}
+
+static bool rule_reinterpret(const rule *r, hfx_intrinsic_match *m) {
+    const hfx_type *T = r->T;
+    if (T->base == B_BOOL || T->base == B_DOUBLE) return false;
+    m->params[0] = hfx_base_is_float(T->base) ? hfx_type_with_base(r->t, T, B_FLOAT) : T;
+    m->ret = hfx_type_with_base(r->t, T, (hfx_base)r->info->form);
+    return true;
+}
+
+/* Each signature's rule; `fixed` rules read the arguments themselves, the others get T. */
+static const struct {
+    rule_fn *fn;
+    bool fixed;
+} rules[] = {
+    [SIG_SAME] = {rule_same, false},           [SIG_SAME_FLOAT] = {rule_same_float, false},
+    [SIG_CLIP] = {rule_clip, false},           [SIG_ALL_ANY] = {rule_all_any, false},
+    [SIG_CLASSIFY] = {rule_classify, false},   [SIG_DOT] = {rule_dot, false},
+    [SIG_LENGTH] = {rule_to_scalar, false},    [SIG_DISTANCE] = {rule_to_scalar, false},
+    [SIG_VEC_SAME] = {rule_vec_same, false},   [SIG_REFRACT] = {rule_refract, false},
+    [SIG_CROSS] = {rule_cross, true},          [SIG_DETERMINANT] = {rule_determinant, false},
+    [SIG_TRANSPOSE] = {rule_transpose, false}, [SIG_MUL] = {rule_mul, true},
+    [SIG_LIT] = {rule_lit, true},              [SIG_SINCOS] = {rule_sincos, false},
+    [SIG_OUT2] = {rule_out2, false},           [SIG_D3DCOLOR] = {rule_d3dcolor, true},
+    [SIG_NOISE] = {rule_to_scalar, false},     [SIG_REINTERPRET] = {rule_reinterpret, false},
+    [SIG_TEX] = {rule_tex, true},
+};
+
+/* Fills params and ret by the intrinsic's rule; false when the arguments cannot fit. */
 static bool match_rule(hfx_types *t, const hfx_intrinsic_info *info, const hfx_type *const *args, unsigned n,
                        hfx_intrinsic_match *m) {
+    rule r = {t, info, args, n, NULL, NULL, B_FLOAT};
+    if ((size_t)info->sig >= sizeof rules / sizeof rules[0] || !rules[info->sig].fn) return false;
+    if (rules[info->sig].fixed) return rules[info->sig].fn(&r, m);
     bool trunc = false;
-    const hfx_type *T = NULL;
-    switch (info->sig) {
-    case SIG_TEX: return match_tex(t, info, args, n, m);
-    case SIG_MUL: return match_mul(t, args[0], args[1], m);
-    case SIG_LIT:
-        for (unsigned i = 0; i < n; i++) if (!hfx_type_is_numeric(args[i])) return false;
-        all_params(m, hfx_type_scalar(t, B_FLOAT), n);
-        m->ret = hfx_type_vector(t, B_FLOAT, 4);
-        return true;
-    case SIG_CROSS:
-        all_params(m, hfx_type_vector(t, B_FLOAT, 3), n);
-        m->ret = m->params[0];
-        return hfx_type_is_numeric(args[0]) && hfx_type_is_numeric(args[1]);
-    case SIG_D3DCOLOR:
-        m->params[0] = hfx_type_vector(t, B_FLOAT, 4);
-        m->ret = hfx_type_vector(t, B_INT, 4);
-        return hfx_type_is_numeric(args[0]);
-    default: break;
-    }
-    T = common_of(t, args, info->sig == SIG_REFRACT ? 2 : n, &trunc);
-    if (!T) return false;
+    r.T = common_of(t, args, info->sig == SIG_REFRACT ? 2 : n, &trunc);
+    if (!r.T) return false;
     m->truncates = trunc;
-    hfx_base fb = float_base(T->base);
-    const hfx_type *TF = hfx_type_with_base(t, T, fb);
-    switch (info->sig) {
-    case SIG_SAME:
-        all_params(m, T->base == B_BOOL ? hfx_type_with_base(t, T, B_INT) : T, n);
-        m->ret = m->params[0];
-        return true;
-    case SIG_SAME_FLOAT:
-        all_params(m, TF, n);
-        m->ret = TF;
-        return true;
-    case SIG_CLIP:
-        m->params[0] = TF;
-        m->ret = hfx_type_void(t);
-        return true;
-    case SIG_ALL_ANY:
-        m->params[0] = T;
-        m->ret = hfx_type_scalar(t, B_BOOL);
-        return true;
-    case SIG_CLASSIFY:
-        m->params[0] = TF;
-        m->ret = hfx_type_with_base(t, T, B_BOOL);
-        return true;
-    case SIG_DOT:
-        if (!is_vectorish(T)) return false;
-        all_params(m, T->base == B_BOOL ? hfx_type_with_base(t, T, B_INT) : T, n);
-        m->ret = hfx_type_scalar(t, m->params[0]->base);
-        return true;
-    case SIG_LENGTH: case SIG_DISTANCE: case SIG_NOISE:
-        if (!is_vectorish(T)) return false;
-        all_params(m, TF, n);
-        m->ret = hfx_type_scalar(t, fb);
-        return true;
-    case SIG_VEC_SAME:
-        if (!is_vectorish(T)) return false;
-        all_params(m, TF, n);
-        m->ret = TF;
-        return true;
-    case SIG_REFRACT:
-        if (!is_vectorish(T) || !hfx_type_is_numeric(args[2])) return false;
-        m->params[0] = m->params[1] = TF;
-        m->params[2] = hfx_type_scalar(t, fb);
-        m->ret = TF;
-        return true;
-    case SIG_DETERMINANT:
-        if (T->rows != T->cols || T->kind == TY_VECTOR) return false;
-        m->params[0] = TF;
-        m->ret = hfx_type_scalar(t, fb);
-        return true;
-    case SIG_TRANSPOSE:
-        if (T->kind == TY_VECTOR) return false;
-        m->params[0] = T;
-        m->ret = hfx_type_numeric(t, T->kind, T->base, T->cols, T->rows);
-        return true;
-    case SIG_SINCOS:
-        all_params(m, hfx_type_with_base(t, args[0], float_base(args[0]->base)), n);
-        m->out[1] = m->out[2] = true;
-        m->ret = hfx_type_void(t);
-        return true;
-    case SIG_OUT2:
-        all_params(m, hfx_type_with_base(t, args[0], float_base(args[0]->base)), n);
-        m->out[1] = true;
-        m->ret = m->params[0];
-        return true;
-    case SIG_REINTERPRET:
-        if (T->base == B_BOOL || T->base == B_DOUBLE) return false;
-        m->params[0] = hfx_base_is_float(T->base) ? hfx_type_with_base(t, T, B_FLOAT) : T;
-        m->ret = hfx_type_with_base(t, T, (hfx_base)info->form);
-        return true;
-    default:
-        return false;
-    }
+    r.fb = float_base(r.T->base);
+    r.TF = hfx_type_with_base(t, r.T, r.fb);
+    return rules[info->sig].fn(&r, m);
 }
 
 bool hfx_intrinsic_match_args(hfx_types *t, int id, const hfx_type *const *args, unsigned n,

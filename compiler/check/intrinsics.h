@@ -1,6 +1,6 @@
-/* intrinsics.h: the HLSL intrinsic functions (SM2/SM3 set plus asfloat/asint/asuint): ids,
- * names, argument counts, the rule that matches argument types, and the GLSL each lowers to
- * (a note for the code generator, which maps them by name: hfx_intrinsic_name).
+/* intrinsics.h: the HLSL intrinsic functions (SM2/SM3 set plus asfloat/asint/asuint), listed
+ * once in intrinsics.def: ids (the IR's too), names, argument counts, the rule that matches
+ * argument types.
  *
  * Matching (intrinsics.c) follows fxc: the arguments of "same type" intrinsics combine like a
  * componentwise binary operator (scalars splat, longer vectors truncate with X3206), integer
@@ -42,98 +42,10 @@ typedef enum {
 /* Texture sampling forms (SIG_TEX). */
 typedef enum { TEXF_PLAIN, TEXF_BIAS, TEXF_LOD, TEXF_PROJ, TEXF_GRAD } hfx_tex_form;
 
-/* X(id, "name", min args, max args, rule, dim (textures), form (textures), GLSL lowering) */
-#define HFX_INTRINSIC_LIST(X) \
-    X(ABS, "abs", 1, 1, SIG_SAME, 0, 0, "abs(x)") \
-    X(ACOS, "acos", 1, 1, SIG_SAME_FLOAT, 0, 0, "acos(x)") \
-    X(ALL, "all", 1, 1, SIG_ALL_ANY, 0, 0, "all(bvec(x)) (scalar: bool(x))") \
-    X(ANY, "any", 1, 1, SIG_ALL_ANY, 0, 0, "any(bvec(x)) (scalar: bool(x))") \
-    X(ASFLOAT, "asfloat", 1, 1, SIG_REINTERPRET, 0, B_FLOAT, "intBitsToFloat / uintBitsToFloat") \
-    X(ASIN, "asin", 1, 1, SIG_SAME_FLOAT, 0, 0, "asin(x)") \
-    X(ASINT, "asint", 1, 1, SIG_REINTERPRET, 0, B_INT, "floatBitsToInt(x)") \
-    X(ASUINT, "asuint", 1, 1, SIG_REINTERPRET, 0, B_UINT, "floatBitsToUint(x)") \
-    X(ATAN, "atan", 1, 1, SIG_SAME_FLOAT, 0, 0, "atan(x)") \
-    X(ATAN2, "atan2", 2, 2, SIG_SAME_FLOAT, 0, 0, "atan(y, x)") \
-    X(CEIL, "ceil", 1, 1, SIG_SAME_FLOAT, 0, 0, "ceil(x)") \
-    X(CLAMP, "clamp", 3, 3, SIG_SAME, 0, 0, "clamp(x, a, b)") \
-    X(CLIP, "clip", 1, 1, SIG_CLIP, 0, 0, "if (any(lessThan(x, 0))) discard;") \
-    X(COS, "cos", 1, 1, SIG_SAME_FLOAT, 0, 0, "cos(x)") \
-    X(COSH, "cosh", 1, 1, SIG_SAME_FLOAT, 0, 0, "cosh(x)") \
-    X(CROSS, "cross", 2, 2, SIG_CROSS, 0, 0, "cross(a, b)") \
-    X(D3DCOLORTOUBYTE4, "D3DCOLORtoUBYTE4", 1, 1, SIG_D3DCOLOR, 0, 0, "ivec4(x.zyxw * 255.001953)") \
-    X(DDX, "ddx", 1, 1, SIG_SAME_FLOAT, 0, 0, "dFdx(x)") \
-    X(DDY, "ddy", 1, 1, SIG_SAME_FLOAT, 0, 0, "dFdy(x) (negated when rendering flipped)") \
-    X(DEGREES, "degrees", 1, 1, SIG_SAME_FLOAT, 0, 0, "degrees(x)") \
-    X(DETERMINANT, "determinant", 1, 1, SIG_DETERMINANT, 0, 0, "determinant(m) (1x1: m)") \
-    X(DISTANCE, "distance", 2, 2, SIG_DISTANCE, 0, 0, "distance(a, b)") \
-    X(DOT, "dot", 2, 2, SIG_DOT, 0, 0, "dot(a, b) (ints: sum of products)") \
-    X(EXP, "exp", 1, 1, SIG_SAME_FLOAT, 0, 0, "exp(x)") \
-    X(EXP2, "exp2", 1, 1, SIG_SAME_FLOAT, 0, 0, "exp2(x)") \
-    X(FACEFORWARD, "faceforward", 3, 3, SIG_VEC_SAME, 0, 0, "faceforward(n, i, ng)") \
-    X(FLOOR, "floor", 1, 1, SIG_SAME_FLOAT, 0, 0, "floor(x)") \
-    X(FMOD, "fmod", 2, 2, SIG_SAME_FLOAT, 0, 0, "x - y * trunc(x / y)") \
-    X(FRAC, "frac", 1, 1, SIG_SAME_FLOAT, 0, 0, "fract(x)") \
-    X(FREXP, "frexp", 2, 2, SIG_OUT2, 0, 0, "frexp(x, e) (e written as float)") \
-    X(FWIDTH, "fwidth", 1, 1, SIG_SAME_FLOAT, 0, 0, "fwidth(x)") \
-    X(ISFINITE, "isfinite", 1, 1, SIG_CLASSIFY, 0, 0, "!(isnan(x) || isinf(x))") \
-    X(ISINF, "isinf", 1, 1, SIG_CLASSIFY, 0, 0, "isinf(x)") \
-    X(ISNAN, "isnan", 1, 1, SIG_CLASSIFY, 0, 0, "isnan(x)") \
-    X(LDEXP, "ldexp", 2, 2, SIG_SAME_FLOAT, 0, 0, "x * exp2(e)") \
-    X(LENGTH, "length", 1, 1, SIG_LENGTH, 0, 0, "length(x)") \
-    X(LERP, "lerp", 3, 3, SIG_SAME_FLOAT, 0, 0, "mix(a, b, t)") \
-    X(LIT, "lit", 3, 3, SIG_LIT, 0, 0, "vec4(1, max(n_dot_l, 0), (n_dot_l < 0 || n_dot_h < 0) ? 0 : pow(n_dot_h, m), 1)") \
-    X(LOG, "log", 1, 1, SIG_SAME_FLOAT, 0, 0, "log(x)") \
-    X(LOG10, "log10", 1, 1, SIG_SAME_FLOAT, 0, 0, "log2(x) * 0.30103") \
-    X(LOG2, "log2", 1, 1, SIG_SAME_FLOAT, 0, 0, "log2(x)") \
-    X(MAX, "max", 2, 2, SIG_SAME, 0, 0, "max(a, b)") \
-    X(MIN, "min", 2, 2, SIG_SAME, 0, 0, "min(a, b)") \
-    X(MODF, "modf", 2, 2, SIG_OUT2, 0, 0, "modf(x, ip)") \
-    X(MUL, "mul", 2, 2, SIG_MUL, 0, 0, "row vectors: mul(v, M) = v * M, mul(M, v) = M * v with HLSL's row-major layout; scalars: a * b; vector.vector: dot") \
-    X(NOISE, "noise", 1, 1, SIG_NOISE, 0, 0, "a Perlin noise helper function") \
-    X(NORMALIZE, "normalize", 1, 1, SIG_VEC_SAME, 0, 0, "normalize(x)") \
-    X(POW, "pow", 2, 2, SIG_SAME_FLOAT, 0, 0, "pow(x, y)") \
-    X(RADIANS, "radians", 1, 1, SIG_SAME_FLOAT, 0, 0, "radians(x)") \
-    X(REFLECT, "reflect", 2, 2, SIG_VEC_SAME, 0, 0, "reflect(i, n)") \
-    X(REFRACT, "refract", 3, 3, SIG_REFRACT, 0, 0, "refract(i, n, eta)") \
-    X(ROUND, "round", 1, 1, SIG_SAME_FLOAT, 0, 0, "round(x)") \
-    X(RSQRT, "rsqrt", 1, 1, SIG_SAME_FLOAT, 0, 0, "inversesqrt(x)") \
-    X(SATURATE, "saturate", 1, 1, SIG_SAME_FLOAT, 0, 0, "clamp(x, 0.0, 1.0)") \
-    X(SIGN, "sign", 1, 1, SIG_SAME, 0, 0, "sign(x)") \
-    X(SIN, "sin", 1, 1, SIG_SAME_FLOAT, 0, 0, "sin(x)") \
-    X(SINCOS, "sincos", 3, 3, SIG_SINCOS, 0, 0, "s = sin(x); c = cos(x);") \
-    X(SINH, "sinh", 1, 1, SIG_SAME_FLOAT, 0, 0, "sinh(x)") \
-    X(SMOOTHSTEP, "smoothstep", 3, 3, SIG_SAME_FLOAT, 0, 0, "smoothstep(a, b, x)") \
-    X(SQRT, "sqrt", 1, 1, SIG_SAME_FLOAT, 0, 0, "sqrt(x)") \
-    X(STEP, "step", 2, 2, SIG_SAME_FLOAT, 0, 0, "step(a, x)") \
-    X(TAN, "tan", 1, 1, SIG_SAME_FLOAT, 0, 0, "tan(x)") \
-    X(TANH, "tanh", 1, 1, SIG_SAME_FLOAT, 0, 0, "tanh(x)") \
-    X(TRANSPOSE, "transpose", 1, 1, SIG_TRANSPOSE, 0, 0, "transpose(m)") \
-    X(TRUNC, "trunc", 1, 1, SIG_SAME_FLOAT, 0, 0, "trunc(x)") \
-    X(TEX1D, "tex1D", 2, 4, SIG_TEX, DIM_1D, TEXF_PLAIN, "texture(s, vec2(t, 0.5)); 4 args: textureGrad") \
-    X(TEX1DBIAS, "tex1Dbias", 2, 2, SIG_TEX, DIM_1D, TEXF_BIAS, "texture(s, t.x, t.w)") \
-    X(TEX1DGRAD, "tex1Dgrad", 4, 4, SIG_TEX, DIM_1D, TEXF_GRAD, "textureGrad(s, t, ddx, ddy)") \
-    X(TEX1DLOD, "tex1Dlod", 2, 2, SIG_TEX, DIM_1D, TEXF_LOD, "textureLod(s, t.x, t.w)") \
-    X(TEX1DPROJ, "tex1Dproj", 2, 2, SIG_TEX, DIM_1D, TEXF_PROJ, "texture(s, t.x / t.w)") \
-    X(TEX2D, "tex2D", 2, 4, SIG_TEX, DIM_2D, TEXF_PLAIN, "texture(s, t); 4 args: textureGrad") \
-    X(TEX2DBIAS, "tex2Dbias", 2, 2, SIG_TEX, DIM_2D, TEXF_BIAS, "texture(s, t.xy, t.w)") \
-    X(TEX2DGRAD, "tex2Dgrad", 4, 4, SIG_TEX, DIM_2D, TEXF_GRAD, "textureGrad(s, t, ddx, ddy)") \
-    X(TEX2DLOD, "tex2Dlod", 2, 2, SIG_TEX, DIM_2D, TEXF_LOD, "textureLod(s, t.xy, t.w)") \
-    X(TEX2DPROJ, "tex2Dproj", 2, 2, SIG_TEX, DIM_2D, TEXF_PROJ, "textureProj(s, t) (t.xyw)") \
-    X(TEX3D, "tex3D", 2, 4, SIG_TEX, DIM_3D, TEXF_PLAIN, "texture(s, t); 4 args: textureGrad") \
-    X(TEX3DBIAS, "tex3Dbias", 2, 2, SIG_TEX, DIM_3D, TEXF_BIAS, "texture(s, t.xyz, t.w)") \
-    X(TEX3DGRAD, "tex3Dgrad", 4, 4, SIG_TEX, DIM_3D, TEXF_GRAD, "textureGrad(s, t, ddx, ddy)") \
-    X(TEX3DLOD, "tex3Dlod", 2, 2, SIG_TEX, DIM_3D, TEXF_LOD, "textureLod(s, t.xyz, t.w)") \
-    X(TEX3DPROJ, "tex3Dproj", 2, 2, SIG_TEX, DIM_3D, TEXF_PROJ, "textureProj(s, t)") \
-    X(TEXCUBE, "texCUBE", 2, 4, SIG_TEX, DIM_CUBE, TEXF_PLAIN, "texture(s, t); 4 args: textureGrad") \
-    X(TEXCUBEBIAS, "texCUBEbias", 2, 2, SIG_TEX, DIM_CUBE, TEXF_BIAS, "texture(s, t.xyz, t.w)") \
-    X(TEXCUBEGRAD, "texCUBEgrad", 4, 4, SIG_TEX, DIM_CUBE, TEXF_GRAD, "textureGrad(s, t, ddx, ddy)") \
-    X(TEXCUBELOD, "texCUBElod", 2, 2, SIG_TEX, DIM_CUBE, TEXF_LOD, "textureLod(s, t.xyz, t.w)") \
-    X(TEXCUBEPROJ, "texCUBEproj", 2, 2, SIG_TEX, DIM_CUBE, TEXF_PROJ, "texture(s, t.xyz / t.w)")
-
 typedef enum {
-#define HFX_INTRINSIC_ENUM_(id, name, mn, mx, sig, dim, form, glsl) HFX_INTR_##id,
-    HFX_INTRINSIC_LIST(HFX_INTRINSIC_ENUM_)
-#undef HFX_INTRINSIC_ENUM_
+#define HFX_INTRINSIC(id, name, mn, mx, sig, dim, form, glsl, how) HFX_INTR_##id,
+#include "check/intrinsics.def"
+#undef HFX_INTRINSIC
     HFX_INTR_COUNT
 } hfx_intrinsic_id;
 
@@ -143,7 +55,6 @@ typedef struct hfx_intrinsic_info {
     hfx_sig sig;
     hfx_dim dim;         /* SIG_TEX */
     int form;            /* SIG_TEX: hfx_tex_form; SIG_REINTERPRET: the hfx_base produced */
-    const char *glsl;    /* how it lowers, for the code generator */
 } hfx_intrinsic_info;
 
 /* Resolved parameter and return types of one call. */

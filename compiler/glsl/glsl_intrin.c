@@ -117,85 +117,85 @@ static void print_mul(gp *p, const ir_expr *e, int max) {
     wrap_close(p, PREC_MUL, max);
 }
 
-static bool is_tex(ir_intrin i) { return i >= II_TEX1D && i <= II_TEXCUBEPROJ; }
-
 /* The coordinate part `.xy` of a packed float4 argument (lod, bias, proj forms). */
 static void coord_part(gp *p, const ir_expr *t, unsigned n) {
     glsl_expr(p, t, PREC_POSTFIX);
     sb_printf(p->out, ".%.*s", (int)n, "xyzw");
 }
 
-static void print_tex(gp *p, const ir_expr *e) {
-    ir_intrin i = e->intrin;
-    unsigned base = i >= II_TEXCUBE ? II_TEXCUBE : i >= II_TEX3D ? II_TEX3D : i >= II_TEX2D ? II_TEX2D : II_TEX1D;
-    unsigned form = i - base; /* plain, bias, grad, lod, proj (ir_intrin.def order) */
-    unsigned dims = base == II_TEX1D ? 1 : base == II_TEX2D ? 2 : 3;
-    bool one_d = base == II_TEX1D;
-    const ir_expr *s = e->a[0], *t = e->n > 1 ? e->a[1] : NULL;
-    if (!t) { glsl_error(p, e->loc, "texture sampling needs coordinates"); return; }
-    if (form == 0 && e->n == 4) form = 2;
-    const char *fn;
+/* The GLSL sampling function of a dimension and form (GLSL 110: texture2D... and no gradients). */
+static const char *tex_function(gp *p, hfx_dim dim, int form) {
+    bool cube = dim == DIM_CUBE;
     if (p->legacy) {
-        const char *d = base == II_TEXCUBE ? "Cube" : base == II_TEX3D ? "3D" : "2D";
-        fn = hfx_arena_printf(p->c->arena, "texture%s%s", d, form == 3 ? "Lod" : form == 4 && base != II_TEXCUBE ? "Proj" : "");
-        if (form == 2) fn = hfx_arena_printf(p->c->arena, "texture%s", d); /* no gradients in 110 */
-    } else {
-        fn = form == 2 ? "textureGrad" : form == 3 ? "textureLod" : form == 4 && base != II_TEXCUBE && !one_d ? "textureProj" : "texture";
+        const char *d = cube ? "Cube" : dim == DIM_3D ? "3D" : "2D";
+        const char *f = form == TEXF_LOD ? "Lod" : form == TEXF_PROJ && !cube ? "Proj" : "";
+        return hfx_arena_printf(p->c->arena, "texture%s%s", d, f);
     }
-    sb_printf(p->out, "%s(", fn);
-    glsl_expr(p, s, PREC_ASSIGN);
-    sb_put(p->out, ", ");
-    switch (form) {
-    case 0: case 2: /* plain, grad */
-        if (one_d) { sb_put(p->out, "vec2("); glsl_expr(p, t, PREC_ASSIGN); sb_put(p->out, ", 0.5)"); }
-        else glsl_expr(p, t, PREC_ASSIGN);
-        if (form == 2 && !p->legacy) {
-            for (int k = 2; k < 4; k++) {
-                sb_put(p->out, ", ");
-                if (one_d) { sb_put(p->out, "vec2("); glsl_expr(p, e->a[k], PREC_ASSIGN); sb_put(p->out, ", 0.0)"); }
-                else glsl_expr(p, e->a[k], PREC_ASSIGN);
-            }
-        }
-        break;
-    case 1: case 3: /* bias, lod: level in .w */
-        if (one_d) { sb_put(p->out, "vec2("); coord_part(p, t, 1); sb_put(p->out, ", 0.5)"); }
-        else coord_part(p, t, dims);
-        sb_put(p->out, ", ");
-        glsl_expr(p, t, PREC_POSTFIX);
-        sb_put(p->out, ".w");
-        break;
-    case 4: /* proj */
-        if (one_d) {
-            sb_put(p->out, "vec2(");
-            coord_part(p, t, 1);
-            sb_put(p->out, " / ");
-            glsl_expr(p, t, PREC_POSTFIX);
-            sb_put(p->out, ".w, 0.5)");
-        } else if (base == II_TEXCUBE) {
-            coord_part(p, t, 3);
-            sb_put(p->out, " / ");
-            glsl_expr(p, t, PREC_POSTFIX);
-            sb_put(p->out, ".w");
-        } else {
-            glsl_expr(p, t, PREC_ASSIGN);
-        }
-        break;
-    }
-    sb_put(p->out, ")");
+    if (form == TEXF_GRAD) return "textureGrad";
+    if (form == TEXF_LOD) return "textureLod";
+    return form == TEXF_PROJ && !cube && dim != DIM_1D ? "textureProj" : "texture";
 }
 
-static const char *const same_name[II_COUNT] = {
-    [II_ABS] = "abs", [II_ACOS] = "acos", [II_ASIN] = "asin", [II_ATAN] = "atan", [II_CEIL] = "ceil",
-    [II_CLAMP] = "clamp", [II_COS] = "cos", [II_COSH] = "cosh", [II_CROSS] = "cross", [II_DEGREES] = "degrees",
-    [II_DISTANCE] = "distance", [II_EXP] = "exp", [II_EXP2] = "exp2", [II_FACEFORWARD] = "faceforward",
-    [II_FLOOR] = "floor", [II_FWIDTH] = "fwidth", [II_ISINF] = "isinf", [II_ISNAN] = "isnan", [II_LENGTH] = "length",
-    [II_LOG] = "log", [II_LOG2] = "log2", [II_MAX] = "max", [II_MIN] = "min", [II_MODF] = "modf",
-    [II_NORMALIZE] = "normalize", [II_POW] = "pow", [II_RADIANS] = "radians", [II_REFLECT] = "reflect",
-    [II_REFRACT] = "refract", [II_SIGN] = "sign", [II_SIN] = "sin", [II_SINH] = "sinh",
-    [II_SMOOTHSTEP] = "smoothstep", [II_SQRT] = "sqrt", [II_STEP] = "step", [II_TAN] = "tan", [II_TANH] = "tanh",
-    [II_TRANSPOSE] = "transpose", [II_TRUNC] = "trunc", [II_DETERMINANT] = "determinant",
-    [II_ATAN2] = "atan", [II_FRAC] = "fract", [II_LERP] = "mix", [II_RSQRT] = "inversesqrt", [II_DDX] = "dFdx",
-};
+/* A 1D coordinate as the vec2 (t, 0.5) of the 2D texture of height 1 that stands for it. */
+static void coord_1d(gp *p, const ir_expr *t, const char *fill) {
+    sb_put(p->out, "vec2(");
+    glsl_expr(p, t, PREC_ASSIGN);
+    sb_printf(p->out, ", %s)", fill);
+}
+
+/* tex*D(s, t) and tex*Dgrad(s, t, ddx, ddy) (no gradients in GLSL 110). */
+static void tex_plain_args(gp *p, const ir_expr *e, bool one_d, bool grad) {
+    if (one_d) coord_1d(p, e->a[1], "0.5");
+    else glsl_expr(p, e->a[1], PREC_ASSIGN);
+    for (int k = 2; grad && !p->legacy && k < 4; k++) {
+        sb_put(p->out, ", ");
+        if (one_d) coord_1d(p, e->a[k], "0.0");
+        else glsl_expr(p, e->a[k], PREC_ASSIGN);
+    }
+}
+
+/* tex*Dbias / tex*Dlod: the level (or bias) in .w. */
+static void tex_level_args(gp *p, const ir_expr *t, bool one_d, unsigned dims) {
+    if (one_d) { sb_put(p->out, "vec2("); coord_part(p, t, 1); sb_put(p->out, ", 0.5)"); }
+    else coord_part(p, t, dims);
+    sb_put(p->out, ", ");
+    glsl_expr(p, t, PREC_POSTFIX);
+    sb_put(p->out, ".w");
+}
+
+/* tex*Dproj: divided by .w (textureProj where GLSL has the form). */
+static void tex_proj_args(gp *p, const ir_expr *t, hfx_dim dim) {
+    if (dim == DIM_1D) {
+        sb_put(p->out, "vec2(");
+        coord_part(p, t, 1);
+        sb_put(p->out, " / ");
+        glsl_expr(p, t, PREC_POSTFIX);
+        sb_put(p->out, ".w, 0.5)");
+    } else if (dim == DIM_CUBE) {
+        coord_part(p, t, 3);
+        sb_put(p->out, " / ");
+        glsl_expr(p, t, PREC_POSTFIX);
+        sb_put(p->out, ".w");
+    } else {
+        glsl_expr(p, t, PREC_ASSIGN);
+    }
+}
+
+/* Every tex* intrinsic: its dimension and form come from its row of intrinsics.def. */
+static void lower_tex(gp *p, const ir_expr *e, int max) {
+    (void)max;
+    const hfx_intrinsic_info *info = hfx_intrinsic_info_of((int)e->intrin);
+    hfx_dim dim = info->dim;
+    int form = info->form == TEXF_PLAIN && e->n == 4 ? TEXF_GRAD : info->form;
+    if (e->n < 2) { glsl_error(p, e->loc, "texture sampling needs coordinates"); return; }
+    sb_printf(p->out, "%s(", tex_function(p, dim, form));
+    glsl_expr(p, e->a[0], PREC_ASSIGN);
+    sb_put(p->out, ", ");
+    if (form == TEXF_PLAIN || form == TEXF_GRAD) tex_plain_args(p, e, dim == DIM_1D, form == TEXF_GRAD);
+    else if (form == TEXF_BIAS || form == TEXF_LOD) tex_level_args(p, e->a[1], dim == DIM_1D, dim == DIM_2D ? 2 : 3);
+    else tex_proj_args(p, e->a[1], dim);
+    sb_put(p->out, ")");
+}
 
 /* GLSL 110 lacks the hyperbolic functions, trunc-based helpers, isnan/isinf, modf and
  * transpose/determinant: helpers with the same meaning. Returns true when it printed e. */
@@ -203,22 +203,22 @@ static bool legacy_intrinsic(gp *p, const ir_expr *e) {
     const hfx_type *t = e->n ? e->a[0]->type : e->type;
     const char *name = NULL, *text = NULL;
     switch (e->intrin) {
-    case II_COSH: name = "hfx_cosh"; text = "$T hfx_cosh($T x) { return (exp(x) + exp(-x)) * 0.5; }\n"; break;
-    case II_SINH: name = "hfx_sinh"; text = "$T hfx_sinh($T x) { return (exp(x) - exp(-x)) * 0.5; }\n"; break;
-    case II_TANH: name = "hfx_tanh"; text = "$T hfx_tanh($T x) { $T e = exp(2.0 * x); return (e - 1.0) / (e + 1.0); }\n"; break;
-    case II_MODF: name = "hfx_modf"; text = "$T hfx_modf($T x, out $T i) { i = sign(x) * floor(abs(x)); return x - i; }\n"; break;
-    case II_ISNAN:
+    case HFX_INTR_COSH: name = "hfx_cosh"; text = "$T hfx_cosh($T x) { return (exp(x) + exp(-x)) * 0.5; }\n"; break;
+    case HFX_INTR_SINH: name = "hfx_sinh"; text = "$T hfx_sinh($T x) { return (exp(x) - exp(-x)) * 0.5; }\n"; break;
+    case HFX_INTR_TANH: name = "hfx_tanh"; text = "$T hfx_tanh($T x) { $T e = exp(2.0 * x); return (e - 1.0) / (e + 1.0); }\n"; break;
+    case HFX_INTR_MODF: name = "hfx_modf"; text = "$T hfx_modf($T x, out $T i) { i = sign(x) * floor(abs(x)); return x - i; }\n"; break;
+    case HFX_INTR_ISNAN:
         if (ncomp(t) != 1) return false;
         name = "hfx_isnan"; text = "bool hfx_isnan($T x) { return !(x == x); }\n"; break;
-    case II_ISINF:
+    case HFX_INTR_ISINF:
         if (ncomp(t) != 1) return false;
         name = "hfx_isinf"; text = "bool hfx_isinf($T x) { return x == x && x * 0.0 != 0.0; }\n"; break;
-    case II_DETERMINANT:
+    case HFX_INTR_DETERMINANT:
         if (t->rows == 2) { name = "hfx_determinant"; text = "float hfx_determinant($T m) { return m[0][0] * m[1][1] - m[0][1] * m[1][0]; }\n"; }
         else if (t->rows == 3) { name = "hfx_determinant"; text = "float hfx_determinant($T m) { return dot(m[0], cross(m[1], m[2])); }\n"; }
         else return false;
         break;
-    case II_TRANSPOSE:
+    case HFX_INTR_TRANSPOSE:
         if (t->rows == 2) { name = "hfx_transpose"; text = "$T hfx_transpose($T m) { return $T(m[0][0], m[1][0], m[0][1], m[1][1]); }\n"; }
         else if (t->rows == 3) {
             name = "hfx_transpose";
@@ -232,120 +232,192 @@ static bool legacy_intrinsic(gp *p, const ir_expr *e) {
     default: return false;
     }
     helper_typed(p, name + 4, t, text);
-    if (e->intrin == II_MODF) args_out2(p, name, e->a);
+    if (e->intrin == HFX_INTR_MODF) args_out2(p, name, e->a);
     else args(p, name, e->a, e->n);
     return true;
 }
 
-void glsl_intrinsic(gp *p, const ir_expr *e, int max) {
-    ir_intrin i = e->intrin;
+typedef void lower_fn(gp *p, const ir_expr *e, int max);
+
+static const char *glsl_name_of(ir_intrin i);
+
+/* The GLSL function of the row, with the same arguments. */
+static void lower_call(gp *p, const ir_expr *e, int max) {
+    (void)max;
+    args(p, glsl_name_of(e->intrin), e->a, e->n);
+}
+
+/* The GLSL function, or in GLSL 110 a helper with the same meaning where 110 lacks it. */
+static void lower_legacy(gp *p, const ir_expr *e, int max) {
+    if (!(p->legacy && legacy_intrinsic(p, e))) lower_call(p, e, max);
+}
+
+static void lower_modf(gp *p, const ir_expr *e, int max) {
+    (void)max;
+    if (!(p->legacy && legacy_intrinsic(p, e))) args_out2(p, "modf", e->a);
+}
+
+/* determinant / transpose: a 1x1 "matrix" is its one value. */
+static void lower_matrix(gp *p, const ir_expr *e, int max) {
     if (p->legacy && legacy_intrinsic(p, e)) return;
-    if (is_tex(i)) { print_tex(p, e); return; }
-    if ((i == II_DETERMINANT || i == II_TRANSPOSE) && !glsl_is_matrix(e->a[0]->type)) {
-        glsl_expr(p, e->a[0], max); /* 1x1 */
-        return;
-    }
-    if (p->legacy && i == II_TRUNC) {
-        sb_put(p->out, "(sign(");
-        glsl_expr(p, e->a[0], PREC_ASSIGN);
-        sb_put(p->out, ") * floor(abs(");
-        glsl_expr(p, e->a[0], PREC_ASSIGN);
-        sb_put(p->out, ")))");
-        return;
-    }
-    if (i == II_MODF) { args_out2(p, "modf", e->a); return; }
-    if (same_name[i]) { args(p, same_name[i], e->a, e->n); return; }
-    switch (i) {
-    case II_ALL: all_any(p, e, "all"); return;
-    case II_ANY: all_any(p, e, "any"); return;
-    case II_SATURATE: {
-        const char *z = is_float(e->type->base) ? "0.0" : "0", *o = is_float(e->type->base) ? "1.0" : "1";
-        sb_put(p->out, "clamp(");
-        glsl_expr(p, e->a[0], PREC_ASSIGN);
-        sb_printf(p->out, ", %s, %s)", z, o);
-        return;
-    }
-    case II_DDY: /* D3D's screen y grows downwards, GL's window y upwards (unless flipped) */
-        p->uses_fixup = true;
-        wrap_open(p, PREC_MUL, max);
-        args(p, "dFdy", e->a, 1);
-        sb_put(p->out, " * (2.0 * hfx_pos_fixup.z - 1.0)");
-        wrap_close(p, PREC_MUL, max);
-        return;
-    case II_LOG10:
-        wrap_open(p, PREC_MUL, max);
-        args(p, "log2", e->a, 1);
-        sb_put(p->out, " * 0.301029996");
-        wrap_close(p, PREC_MUL, max);
-        return;
-    case II_ROUND:
-        sb_put(p->out, "floor(");
-        glsl_expr(p, e->a[0], PREC_ADD);
-        sb_put(p->out, " + 0.5)");
-        return;
-    case II_FMOD:
-        helper_typed(p, "fmod", e->type, p->legacy ? "$T hfx_fmod($T x, $T y) { $T q = x / y; return x - y * sign(q) * floor(abs(q)); }\n"
-                                                     : "$T hfx_fmod($T x, $T y) { return x - y * trunc(x / y); }\n");
-        args(p, "hfx_fmod", e->a, 2);
-        return;
-    case II_LIT: helper_lit(p); args(p, "hfx_lit", e->a, 3); return;
-    case II_SINCOS:
-        helper_typed(p, "sincos", e->a[0]->type, "void hfx_sincos($T x, out $T s, out $T c) { s = sin(x); c = cos(x); }\n");
-        sb_put(p->out, "hfx_sincos(");
-        glsl_expr(p, e->a[0], PREC_ASSIGN);
-        sb_put(p->out, ", ");
-        glsl_lvalue(p, e->a[1], PREC_ASSIGN);
-        sb_put(p->out, ", ");
-        glsl_lvalue(p, e->a[2], PREC_ASSIGN);
-        sb_put(p->out, ")");
-        return;
-    case II_CLIP: helper_clip(p, e->a[0]->type); args(p, "hfx_clip", e->a, 1); return;
-    case II_D3DCOLORTOUBYTE4:
-        sb_put(p->out, "ivec4(");
-        glsl_expr(p, e->a[0], PREC_POSTFIX);
-        sb_put(p->out, ".zyxw * 255.001953)");
-        return;
-    case II_DOT:
-        if (!is_float(e->type->base)) sb_printf(p->out, "%s(", ty(p, e->type));
-        sb_put(p->out, "dot(");
-        as_float(p, e->a[0]);
-        sb_put(p->out, ", ");
-        as_float(p, e->a[1]);
-        sb_put(p->out, is_float(e->type->base) ? ")" : "))");
-        return;
-    case II_MUL: print_mul(p, e, max); return;
-    case II_LDEXP:
-        wrap_open(p, PREC_MUL, max);
-        glsl_expr(p, e->a[0], PREC_MUL);
-        sb_put(p->out, " * ");
-        args(p, "exp2", e->a + 1, 1);
-        wrap_close(p, PREC_MUL, max);
-        return;
-    case II_ISFINITE:
-        if (ncomp(e->a[0]->type) != 1) { glsl_error(p, e->loc, "'isfinite' of a vector is not supported"); return; }
-        helper_typed(p, "isfinite", e->a[0]->type, "bool hfx_isfinite($T x) { return !(isnan(x) || isinf(x)); }\n");
-        args(p, "hfx_isfinite", e->a, 1);
-        return;
-    case II_FREXP:
-        if (ncomp(e->a[0]->type) != 1) { glsl_error(p, e->loc, "'frexp' of a vector is not supported"); return; }
-        helper_typed(p, "frexp", e->type,
-                     "float hfx_frexp(float x, out float e)\n{\n    if (x == 0.0) { e = 0.0; return 0.0; }\n"
-                     "    e = floor(log2(abs(x))) + 1.0;\n    return x * exp2(-e);\n}\n");
-        args_out2(p, "hfx_frexp", e->a);
-        return;
-    case II_ASFLOAT: case II_ASINT: case II_ASUINT: {
-        hfx_base from = e->a[0]->type->base, to = e->type->base;
-        const char *fn = NULL;
-        if (is_float(from) && to == B_INT) fn = "floatBitsToInt";
-        else if (is_float(from) && to == B_UINT) fn = "floatBitsToUint";
-        else if (from == B_INT && is_float(to)) fn = "intBitsToFloat";
-        else if (from == B_UINT && is_float(to)) fn = "uintBitsToFloat";
-        else fn = ty(p, e->type);
-        if (p->legacy) { glsl_error(p, e->loc, "bit casts need GLSL 330 or ES 300"); return; }
-        args(p, fn, e->a, 1);
-        return;
-    }
-    default:
-        glsl_error(p, e->loc, hfx_arena_printf(p->c->arena, "'%s': intrinsic is not supported", ir_intrin_name(i)));
-    }
+    if (!glsl_is_matrix(e->a[0]->type)) glsl_expr(p, e->a[0], max);
+    else lower_call(p, e, max);
+}
+
+/* GLSL 110 has no trunc: sign(x) * floor(abs(x)). */
+static void lower_trunc(gp *p, const ir_expr *e, int max) {
+    if (!p->legacy) { lower_call(p, e, max); return; }
+    sb_put(p->out, "(sign(");
+    glsl_expr(p, e->a[0], PREC_ASSIGN);
+    sb_put(p->out, ") * floor(abs(");
+    glsl_expr(p, e->a[0], PREC_ASSIGN);
+    sb_put(p->out, ")))");
+}
+
+static void lower_all_any(gp *p, const ir_expr *e, int max) {
+    (void)max;
+    all_any(p, e, glsl_name_of(e->intrin));
+}
+
+static void lower_saturate(gp *p, const ir_expr *e, int max) {
+    (void)max;
+    const char *z = is_float(e->type->base) ? "0.0" : "0", *o = is_float(e->type->base) ? "1.0" : "1";
+    sb_put(p->out, "clamp(");
+    glsl_expr(p, e->a[0], PREC_ASSIGN);
+    sb_printf(p->out, ", %s, %s)", z, o);
+}
+
+/* D3D's screen y grows downwards, GL's window y upwards (unless flipped). */
+static void lower_ddy(gp *p, const ir_expr *e, int max) {
+    p->uses_fixup = true;
+    wrap_open(p, PREC_MUL, max);
+    args(p, "dFdy", e->a, 1);
+    sb_put(p->out, " * (2.0 * hfx_pos_fixup.z - 1.0)");
+    wrap_close(p, PREC_MUL, max);
+}
+
+static void lower_log10(gp *p, const ir_expr *e, int max) {
+    wrap_open(p, PREC_MUL, max);
+    args(p, "log2", e->a, 1);
+    sb_put(p->out, " * 0.301029996");
+    wrap_close(p, PREC_MUL, max);
+}
+
+/* floor(x + 0.5), as fxc's ps_2/3 code computes round. */
+static void lower_round(gp *p, const ir_expr *e, int max) {
+    (void)max;
+    sb_put(p->out, "floor(");
+    glsl_expr(p, e->a[0], PREC_ADD);
+    sb_put(p->out, " + 0.5)");
+}
+
+/* HLSL's fmod truncates (GLSL's mod floors). */
+static void lower_fmod(gp *p, const ir_expr *e, int max) {
+    (void)max;
+    helper_typed(p, "fmod", e->type, p->legacy ? "$T hfx_fmod($T x, $T y) { $T q = x / y; return x - y * sign(q) * floor(abs(q)); }\n"
+                                                 : "$T hfx_fmod($T x, $T y) { return x - y * trunc(x / y); }\n");
+    args(p, "hfx_fmod", e->a, 2);
+}
+
+static void lower_lit(gp *p, const ir_expr *e, int max) {
+    (void)max;
+    helper_lit(p);
+    args(p, "hfx_lit", e->a, 3);
+}
+
+static void lower_sincos(gp *p, const ir_expr *e, int max) {
+    (void)max;
+    helper_typed(p, "sincos", e->a[0]->type, "void hfx_sincos($T x, out $T s, out $T c) { s = sin(x); c = cos(x); }\n");
+    sb_put(p->out, "hfx_sincos(");
+    glsl_expr(p, e->a[0], PREC_ASSIGN);
+    sb_put(p->out, ", ");
+    glsl_lvalue(p, e->a[1], PREC_ASSIGN);
+    sb_put(p->out, ", ");
+    glsl_lvalue(p, e->a[2], PREC_ASSIGN);
+    sb_put(p->out, ")");
+}
+
+static void lower_clip(gp *p, const ir_expr *e, int max) {
+    (void)max;
+    helper_clip(p, e->a[0]->type);
+    args(p, "hfx_clip", e->a, 1);
+}
+
+static void lower_d3dcolor(gp *p, const ir_expr *e, int max) {
+    (void)max;
+    sb_put(p->out, "ivec4(");
+    glsl_expr(p, e->a[0], PREC_POSTFIX);
+    sb_put(p->out, ".zyxw * 255.001953)");
+}
+
+/* GLSL's dot is float only: integer vectors go through float and back. */
+static void lower_dot(gp *p, const ir_expr *e, int max) {
+    (void)max;
+    if (!is_float(e->type->base)) sb_printf(p->out, "%s(", ty(p, e->type));
+    sb_put(p->out, "dot(");
+    as_float(p, e->a[0]);
+    sb_put(p->out, ", ");
+    as_float(p, e->a[1]);
+    sb_put(p->out, is_float(e->type->base) ? ")" : "))");
+}
+
+static void lower_mul(gp *p, const ir_expr *e, int max) { print_mul(p, e, max); }
+
+static void lower_ldexp(gp *p, const ir_expr *e, int max) {
+    wrap_open(p, PREC_MUL, max);
+    glsl_expr(p, e->a[0], PREC_MUL);
+    sb_put(p->out, " * ");
+    args(p, "exp2", e->a + 1, 1);
+    wrap_close(p, PREC_MUL, max);
+}
+
+static void lower_isfinite(gp *p, const ir_expr *e, int max) {
+    (void)max;
+    if (ncomp(e->a[0]->type) != 1) { glsl_error(p, e->loc, "'isfinite' of a vector is not supported"); return; }
+    helper_typed(p, "isfinite", e->a[0]->type, "bool hfx_isfinite($T x) { return !(isnan(x) || isinf(x)); }\n");
+    args(p, "hfx_isfinite", e->a, 1);
+}
+
+static void lower_frexp(gp *p, const ir_expr *e, int max) {
+    (void)max;
+    if (ncomp(e->a[0]->type) != 1) { glsl_error(p, e->loc, "'frexp' of a vector is not supported"); return; }
+    helper_typed(p, "frexp", e->type,
+                 "float hfx_frexp(float x, out float e)\n{\n    if (x == 0.0) { e = 0.0; return 0.0; }\n"
+                 "    e = floor(log2(abs(x))) + 1.0;\n    return x * exp2(-e);\n}\n");
+    args_out2(p, "hfx_frexp", e->a);
+}
+
+/* asfloat / asint / asuint: GLSL's bit casts; a same-type call is a constructor. */
+static void lower_reinterpret(gp *p, const ir_expr *e, int max) {
+    (void)max;
+    hfx_base from = e->a[0]->type->base, to = e->type->base;
+    const char *fn = NULL;
+    if (is_float(from) && to == B_INT) fn = "floatBitsToInt";
+    else if (is_float(from) && to == B_UINT) fn = "floatBitsToUint";
+    else if (from == B_INT && is_float(to)) fn = "intBitsToFloat";
+    else if (from == B_UINT && is_float(to)) fn = "uintBitsToFloat";
+    else fn = ty(p, e->type);
+    if (p->legacy) { glsl_error(p, e->loc, "bit casts need GLSL 330 or ES 300"); return; }
+    args(p, fn, e->a, 1);
+}
+
+static void lower_unsupported(gp *p, const ir_expr *e, int max) {
+    (void)max;
+    glsl_error(p, e->loc, hfx_arena_printf(p->c->arena, "'%s': intrinsic is not supported", hfx_intrinsic_name((int)e->intrin)));
+}
+
+static const struct lowering {
+    const char *glsl;
+    lower_fn *lower;
+} lowerings[HFX_INTR_COUNT] = {
+#define HFX_INTRINSIC(id, name, mn, mx, sig, dim, form, glsl, how) [HFX_INTR_##id] = {glsl, lower_##how},
+#include "check/intrinsics.def"
+#undef HFX_INTRINSIC
+};
+
+static const char *glsl_name_of(ir_intrin i) { return lowerings[i].glsl; }
+
+void glsl_intrinsic(gp *p, const ir_expr *e, int max) {
+    if ((unsigned)e->intrin >= HFX_INTR_COUNT) { glsl_error(p, e->loc, "unknown intrinsic"); return; }
+    lowerings[e->intrin].lower(p, e, max);
 }

@@ -22,20 +22,6 @@ typedef struct builder {
     bool failed;
 } builder;
 
-static const char *const intrin_names[] = {
-#define IR_INTRIN(name, hlsl) hlsl,
-#include "ir/ir_intrin.def"
-#undef IR_INTRIN
-};
-
-const char *ir_intrin_name(ir_intrin i) { return i < II_COUNT ? intrin_names[i] : "?"; }
-
-int ir_intrin_find(const char *hlsl_name) {
-    for (int i = 0; i < II_COUNT; i++)
-        if (strcmp(intrin_names[i], hlsl_name) == 0) return i;
-    return -1;
-}
-
 /* Growable arrays in the arena: the old block is simply abandoned. */
 static void *grow(hfx_arena *a, void *old, uint32_t *cap, uint32_t count, size_t elem) {
     if (count < *cap) return old;
@@ -184,9 +170,8 @@ static ir_expr *build_call(builder *b, const hfx_expr *e) {
         r = ir_new_expr(b->c, IE_CALL, e->type, e->loc, e->arg_count);
         r->fn = f;
     } else {
-        /* mapped by name, so the checker's ids can change freely */
-        int id = ir_intrin_find(e->name ? e->name : "");
-        if (id < 0) {
+        int id = e->intrinsic; /* the checker resolved it: ids are intrinsics.def's */
+        if (id < 0 || id >= HFX_INTR_COUNT) {
             fail(b, e->loc, hfx_arena_printf(b->c->arena, "'%s': unknown function", e->name ? e->name : "?"));
             return NULL;
         }

@@ -13,6 +13,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "check/intrinsics.h"
 #include "parse/ast.h"
 #include "effect.h"
 
@@ -66,12 +67,8 @@ typedef enum {
     IE_FIELD      /* a[0].field */
 } ir_expr_kind;
 
-typedef enum {
-#define IR_INTRIN(name, hlsl) name,
-#include "ir/ir_intrin.def"
-#undef IR_INTRIN
-    II_COUNT
-} ir_intrin;
+/* The checker's intrinsic ids (check/intrinsics.def): one table for check, IR and GLSL. */
+typedef hfx_intrinsic_id ir_intrin;
 
 typedef union { double f; int64_t i; } ir_value;
 
@@ -164,8 +161,6 @@ void ir_walk_stmt_exprs(ir_ctx *c, ir_stmt *s, ir_expr_fn fn, void *data);
 void ir_walk_expr(ir_ctx *c, ir_expr **slot, ir_expr_fn fn, void *data);
 
 /* Intrinsic names (HLSL spelling) and lookup. */
-const char *ir_intrin_name(ir_intrin i);
-int ir_intrin_find(const char *hlsl_name); /* -1 when unknown */
 
 /* A readable dump for golden tests (ir_dump.c). malloc'ed. */
 char *ir_dump_shader(const ir_shader *sh);

@@ -59,7 +59,7 @@ static void put_expr(sbuf *b, const ir_expr *e) {
     case IE_SELECT: sb_put(b, "(select"); break;
     case IE_COMMA: sb_put(b, "(comma"); break;
     case IE_CALL: sb_printf(b, "(call %s", e->fn->name); break;
-    case IE_INTRIN: sb_printf(b, "(%s", ir_intrin_name(e->intrin)); break;
+    case IE_INTRIN: sb_printf(b, "(%s", hfx_intrinsic_name((int)e->intrin) ? hfx_intrinsic_name((int)e->intrin) : "?"); break;
     case IE_CONSTRUCT: sb_put(b, "(construct "); put_type(b, e->type); break;
     case IE_CONVERT: sb_put(b, "(convert "); put_type(b, e->type); break;
     case IE_SWIZZLE:

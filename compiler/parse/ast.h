@@ -7,7 +7,7 @@
  * - every hfx_expr has `type` set (void for calls of void functions);
  * - EX_IDENT has `sym` (a hfx_decl: global, local, parameter) or names a state constant only
  *   inside state values;
- * - EX_CALL has `fn` (a user function) or `intrinsic` (>= 0, an id in intrinsics.h) set, and its
+ * - EX_CALL has `fn` (a user function) or `intrinsic` (>= 0, an id in check/intrinsics.def) set, and its
  *   arguments already converted to the parameter types;
  * - EX_MEMBER is rewritten to EX_SWIZZLE (vector/scalar .xyzw/.rgba, matrix ._m00/._11) or
  *   EX_FIELD (struct member, `field` = index);
@@ -82,7 +82,7 @@ struct hfx_expr {
     /* check.c */
     hfx_decl *sym;             /* IDENT */
     hfx_func *fn;              /* CALL of a user function */
-    int intrinsic;             /* CALL of an intrinsic: id from intrinsics.h, -1 otherwise */
+    int intrinsic;             /* CALL of an intrinsic: id from check/intrinsics.def, -1 otherwise */
     uint8_t comps[16];         /* SWIZZLE */
     uint8_t comp_count;
     uint32_t field;            /* FIELD */

@@ -28,8 +28,8 @@ static void find_writes(ir_ctx *c, ir_expr **slot, void *data) {
         for (uint32_t i = 0; i < e->n && i < e->fn->param_count; i++)
             if (e->fn->params[i]->mods & MOD_OUT) mark_written(c, sh, e->a[i]);
     } else if (e->kind == IE_INTRIN) {
-        if (e->intrin == II_SINCOS && e->n == 3) { mark_written(c, sh, e->a[1]); mark_written(c, sh, e->a[2]); }
-        if ((e->intrin == II_MODF || e->intrin == II_FREXP) && e->n == 2) mark_written(c, sh, e->a[1]);
+        if (e->intrin == HFX_INTR_SINCOS && e->n == 3) { mark_written(c, sh, e->a[1]); mark_written(c, sh, e->a[2]); }
+        if ((e->intrin == HFX_INTR_MODF || e->intrin == HFX_INTR_FREXP) && e->n == 2) mark_written(c, sh, e->a[1]);
     }
 }
 

@@ -35,19 +35,19 @@ static ir_expr *first(ir_ctx *c, ir_expr *v, const hfx_type *ty) {
 
 static void lower_mul(ir_ctx *c, ir_expr **slot, void *data) {
     ir_expr *e = *slot;
-    if (e->kind != IE_INTRIN || e->intrin != II_MUL || e->n != 2 || e->type->kind != TY_VECTOR) return;
+    if (e->kind != IE_INTRIN || e->intrin != HFX_INTR_MUL || e->n != 2 || e->type->kind != TY_VECTOR) return;
     ir_expr *a = e->a[0], *b = e->a[1];
     if (a->type->kind == TY_VECTOR && truncated_matrix(b) && a->type->cols == b->type->rows) {
         const hfx_type *m = b->a[0]->type;
         ir_expr *r = ir_new_expr(c, IE_INTRIN, hfx_type_vector(c->types, e->type->base, m->cols), e->loc, 2);
-        r->intrin = II_MUL;
+        r->intrin = HFX_INTR_MUL;
         r->a[0] = pad(c, a, m->rows);
         r->a[1] = b->a[0];
         *slot = first(c, r, e->type);
     } else if (b->type->kind == TY_VECTOR && truncated_matrix(a) && b->type->cols == a->type->cols) {
         const hfx_type *m = a->a[0]->type;
         ir_expr *r = ir_new_expr(c, IE_INTRIN, hfx_type_vector(c->types, e->type->base, m->rows), e->loc, 2);
-        r->intrin = II_MUL;
+        r->intrin = HFX_INTR_MUL;
         r->a[0] = a->a[0];
         r->a[1] = pad(c, b, m->cols);
         *slot = first(c, r, e->type);

@@ -5,7 +5,7 @@
 static void check_expr(ir_ctx *c, ir_expr **slot, void *data) {
     ir_expr *e = *slot;
     int *bad = data;
-    if (e->kind == IE_INTRIN && e->intrin == II_NOISE) {
+    if (e->kind == IE_INTRIN && e->intrin == HFX_INTR_NOISE) {
         hfx_error(c->diags, e->loc, X_UNSUPPORTED, "'noise': intrinsic is not supported in shaders");
         (*bad)++;
     }

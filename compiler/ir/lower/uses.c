@@ -28,11 +28,8 @@ static void add(ir_ctx *c, uses *u, ir_var *v) {
 }
 
 static hfx_dim tex_dim(ir_intrin i) {
-    if (i >= II_TEX1D && i <= II_TEX1DPROJ) return DIM_1D;
-    if (i >= II_TEX2D && i <= II_TEX2DPROJ) return DIM_2D;
-    if (i >= II_TEX3D && i <= II_TEX3DPROJ) return DIM_3D;
-    if (i >= II_TEXCUBE && i <= II_TEXCUBEPROJ) return DIM_CUBE;
-    return DIM_GENERIC;
+    const hfx_intrinsic_info *info = hfx_intrinsic_info_of((int)i);
+    return info && info->sig == SIG_TEX ? info->dim : DIM_GENERIC;
 }
 
 static void visit(ir_ctx *c, ir_expr **slot, void *data) {

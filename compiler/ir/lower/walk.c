@@ -35,8 +35,8 @@ bool ir_has_side_effects(const ir_expr *e) {
     if (!e) return false;
     if (e->kind == IE_ASSIGN || e->kind == IE_CALL) return true;
     if (e->kind == IE_UNARY && e->op >= OP_PREINC && e->op <= OP_POSTDEC) return true;
-    if (e->kind == IE_INTRIN && (e->intrin == II_CLIP || e->intrin == II_SINCOS || e->intrin == II_MODF ||
-                                 e->intrin == II_FREXP))
+    if (e->kind == IE_INTRIN && (e->intrin == HFX_INTR_CLIP || e->intrin == HFX_INTR_SINCOS || e->intrin == HFX_INTR_MODF ||
+                                 e->intrin == HFX_INTR_FREXP))
         return true;
     for (uint32_t i = 0; i < e->n; i++)
         if (ir_has_side_effects(e->a[i])) return true;
