@@ -139,3 +139,12 @@ const char *hfx_type_name(hfx_arena *a, const hfx_type *ty) {
     }
     return "?";
 }
+
+hfx_ev_base hfx_base_ev(hfx_base b) {
+    switch (b) {
+    case B_BOOL: return HFX_EV_BOOL;
+    case B_INT: return HFX_EV_INT;
+    case B_UINT: return HFX_EV_UINT;
+    default: return HFX_EV_FLOAT;
+    }
+}

@@ -8,6 +8,8 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "eval.h"
+
 #include "base/arena.h"
 #include "base/diag.h"
 
@@ -76,5 +78,7 @@ bool hfx_type_equal(const hfx_type *a, const hfx_type *b);
 unsigned hfx_type_components(const hfx_type *ty);    /* scalars in it (arrays and structs summed), 0 for objects */
 const char *hfx_type_name(hfx_arena *a, const hfx_type *ty); /* "float4", "float4x4", "LuzSpot[2]" */
 const char *hfx_base_name(hfx_base b);
+/* The evaluator's base for b: half, double and min16float compute as float (SM2/SM3 do). */
+hfx_ev_base hfx_base_ev(hfx_base b);
 
 #endif

@@ -114,28 +114,23 @@ bool ck_declared_here(check_ctx *c, const char *name) {
 
 /* ---- constants and types ---- */
 
-static bool fold_binary(hfx_op op, int64_t a, int64_t b, int64_t *out) {
-    switch (op) {
-    case OP_ADD: *out = a + b; return true;
-    case OP_SUB: *out = a - b; return true;
-    case OP_MUL: *out = a * b; return true;
-    case OP_DIV: if (!b) return false; *out = a / b; return true;
-    case OP_MOD: if (!b) return false; *out = a % b; return true;
-    case OP_SHL: *out = (int64_t)((uint64_t)a << (b & 31)); return true;
-    case OP_SHR: *out = a >> (b & 31); return true;
-    case OP_BITAND: *out = a & b; return true;
-    case OP_BITOR: *out = a | b; return true;
-    case OP_BITXOR: *out = a ^ b; return true;
-    default: return false;
-    }
+/* An operator on folded ints, with int's rules (common/eval). */
+static bool fold_op(hfx_op op, int64_t a, const int64_t *b, int64_t *out) {
+    hfx_ev_op ev;
+    double r;
+    if (!hfx_op_ev(op, &ev)) return false;
+    if (b ? !hfx_ev_binary(ev, HFX_EV_INT, (double)a, (double)*b, &r) : !hfx_ev_unary(ev, HFX_EV_INT, (double)a, &r))
+        return false;
+    *out = (int64_t)r;
+    return true;
 }
 
 bool ck_fold_int(check_ctx *c, hfx_expr *e, int64_t *out) {
     int64_t a, b;
     if (!e) return false;
     switch (e->kind) {
-    case EX_INT: case EX_BOOL: *out = e->ival; return true;
-    case EX_FLOAT: *out = (int64_t)e->fval; return true;
+    case EX_INT: case EX_BOOL: *out = (int64_t)hfx_ev_normalise(HFX_EV_INT, (double)e->ival); return true;
+    case EX_FLOAT: *out = (int64_t)hfx_ev_convert(HFX_EV_FLOAT, HFX_EV_INT, e->fval); return true;
     case EX_IDENT: {
         hfx_decl *d = e->sym ? e->sym : ck_lookup(c, e->name);
         if (!d || d->kind != DECL_VAR || !(d->mods & MOD_CONST) || !d->init) return false;
@@ -144,18 +139,9 @@ bool ck_fold_int(check_ctx *c, hfx_expr *e, int64_t *out) {
     }
     case EX_CAST: case EX_CONSTRUCT:
         return e->arg_count == 1 && ck_fold_int(c, e->args[0], out);
-    case EX_UNARY:
-        if (!ck_fold_int(c, e->args[0], &a)) return false;
-        if (e->op == OP_NEG) *out = -a;
-        else if (e->op == OP_POS) *out = a;
-        else if (e->op == OP_BITNOT) *out = ~a;
-        else if (e->op == OP_NOT) *out = !a;
-        else return false;
-        return true;
-    case EX_BINARY:
-        return ck_fold_int(c, e->args[0], &a) && ck_fold_int(c, e->args[1], &b) && fold_binary(e->op, a, b, out);
-    default:
-        return false;
+    case EX_UNARY: return ck_fold_int(c, e->args[0], &a) && fold_op(e->op, a, NULL, out);
+    case EX_BINARY: return ck_fold_int(c, e->args[0], &a) && ck_fold_int(c, e->args[1], &b) && fold_op(e->op, a, &b, out);
+    default: return false;
     }
 }
 

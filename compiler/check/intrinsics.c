@@ -8,7 +8,7 @@
 #include "check/conv.h"
 
 static const hfx_intrinsic_info table[HFX_INTR_COUNT] = {
-#define HFX_INTRINSIC(id, name, mn, mx, sig, dim, form, glsl, how) {name, mn, mx, sig, dim, form},
+#define HFX_INTRINSIC(id, name, mn, mx, sig, dim, form, glsl, how, ev) {name, mn, mx, sig, dim, form, ev},
 #include "check/intrinsics.def"
 #undef HFX_INTRINSIC
 };

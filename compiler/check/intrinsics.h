@@ -13,6 +13,7 @@
 #include <stdint.h>
 
 #include "base/types.h"
+#include "eval.h"
 
 /* Signature rules. T is the common type of the arguments (componentwise binary rules). */
 typedef enum {
@@ -43,7 +44,7 @@ typedef enum {
 typedef enum { TEXF_PLAIN, TEXF_BIAS, TEXF_LOD, TEXF_PROJ, TEXF_GRAD } hfx_tex_form;
 
 typedef enum {
-#define HFX_INTRINSIC(id, name, mn, mx, sig, dim, form, glsl, how) HFX_INTR_##id,
+#define HFX_INTRINSIC(id, name, mn, mx, sig, dim, form, glsl, how, ev) HFX_INTR_##id,
 #include "check/intrinsics.def"
 #undef HFX_INTRINSIC
     HFX_INTR_COUNT
@@ -55,6 +56,7 @@ typedef struct hfx_intrinsic_info {
     hfx_sig sig;
     hfx_dim dim;         /* SIG_TEX */
     int form;            /* SIG_TEX: hfx_tex_form; SIG_REINTERPRET: the hfx_base produced */
+    hfx_ev_fn fold;      /* how common/eval computes it on constants; HFX_EV_FN_NONE: left to the GPU */
 } hfx_intrinsic_info;
 
 /* Resolved parameter and return types of one call. */

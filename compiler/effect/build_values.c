@@ -1,5 +1,7 @@
 /* build_values.c: constant evaluation for parameter defaults, annotations and state values.
- * fxc folds these at compile time; anything it cannot fold is not a literal expression. */
+ * fxc folds these at compile time; anything it cannot fold is not a literal expression. The
+ * arithmetic is common/eval's (Direct3D's rules); this file walks the tree and keeps the
+ * components, which may be more than a vector's (arrays, structs). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -26,19 +28,10 @@ static bool append(hfx_builder *b, hfx_cvec *dst, const hfx_cvec *src) {
     return true;
 }
 
-static int32_t to_i32(double v);
-
 static bool is_integral_base(hfx_base base) { return base == B_BOOL || base == B_INT || base == B_UINT; }
 
-/* Converts one component to a base type, as a cast does. */
-static double convert(double v, hfx_base base) {
-    switch (base) {
-    case B_BOOL: return v != 0.0;
-    case B_INT: return (double)to_i32(v);
-    case B_UINT: return isfinite(v) && v > 0 ? (double)(uint32_t)fmin(trunc(v), 4294967295.0) : 0;
-    default: return v;
-    }
-}
+/* The evaluator's base of a component list: ints (and bools) compute as int, the rest as float. */
+static hfx_ev_base base_of(const hfx_cvec *c) { return c->integral ? HFX_EV_INT : HFX_EV_FLOAT; }
 
 /* Resizes c to n components the way HLSL converts: a scalar splats, a longer list truncates. */
 static bool fit(hfx_builder *b, hfx_cvec *c, uint32_t n) {
@@ -69,7 +62,7 @@ static bool eval_cast(hfx_builder *b, const hfx_expr *e, hfx_cvec *out, const hf
     if (!eval_args(b, e, out, names, depth)) return false;
     if (!ty || !hfx_type_is_numeric(ty)) return ty == NULL;
     if (!fit(b, out, (uint32_t)ty->rows * ty->cols)) return false;
-    for (uint32_t i = 0; i < out->n; i++) out->v[i] = convert(out->v[i], ty->base);
+    for (uint32_t i = 0; i < out->n; i++) out->v[i] = hfx_ev_convert(base_of(out), hfx_base_ev(ty->base), out->v[i]);
     out->integral = is_integral_base(ty->base);
     return true;
 }
@@ -87,86 +80,28 @@ static bool eval_ident(hfx_builder *b, const hfx_expr *e, hfx_cvec *out, const h
 }
 
 static bool unary(hfx_builder *b, const hfx_expr *e, hfx_cvec *out, const hfx_state_info *names, int depth) {
-    if (e->arg_count < 1 || !eval(b, e->args[0], out, names, depth + 1)) return false;
-    for (uint32_t i = 0; i < out->n; i++) {
-        double v = out->v[i];
-        switch (e->op) {
-        case OP_NEG: out->v[i] = -v; break;
-        case OP_POS: break;
-        case OP_NOT: out->v[i] = v == 0.0; out->integral = true; break;
-        case OP_BITNOT: out->v[i] = (double)~to_i32(v); break;
-        default: return false;
-        }
-    }
+    hfx_ev_op op;
+    if (e->arg_count < 1 || !hfx_op_ev(e->op, &op) || !eval(b, e->args[0], out, names, depth + 1)) return false;
+    hfx_ev_base base = base_of(out);
+    for (uint32_t i = 0; i < out->n; i++)
+        if (!hfx_ev_unary(op, base, out->v[i], &out->v[i])) return false;
+    out->integral = hfx_ev_result_base(op, base) != HFX_EV_FLOAT;
     return true;
-}
-
-static int32_t to_i32(double v) {
-    if (!(v == v)) return 0;
-    if (v >= 2147483647.0) return INT32_MAX;
-    if (v <= -2147483648.0) return INT32_MIN;
-    return (int32_t)v;
-}
-
-/* 32-bit integer arithmetic that wraps as the GPU does, never overflowing in C. */
-static double integer_op(hfx_op op, double dx, double dy, bool *ok) {
-    int32_t x = to_i32(dx), y = to_i32(dy);
-    uint32_t ux = (uint32_t)x, uy = (uint32_t)y;
-    switch (op) {
-    case OP_ADD: return (double)(int32_t)(ux + uy);
-    case OP_SUB: return (double)(int32_t)(ux - uy);
-    case OP_MUL: return (double)(int32_t)(ux * uy);
-    case OP_DIV:
-        if (y == 0 || (x == INT32_MIN && y == -1)) { *ok = false; return 0; }
-        return (double)(x / y);
-    case OP_MOD:
-        if (y == 0 || (x == INT32_MIN && y == -1)) { *ok = false; return 0; }
-        return (double)(x % y);
-    case OP_SHL: return (double)(int32_t)(ux << (uy & 31));
-    case OP_SHR: return (double)(x < 0 ? (int32_t)~(~ux >> (uy & 31)) : (int32_t)(ux >> (uy & 31)));
-    case OP_BITAND: return (double)(int32_t)(ux & uy);
-    case OP_BITOR: return (double)(int32_t)(ux | uy);
-    case OP_BITXOR: return (double)(int32_t)(ux ^ uy);
-    default: *ok = false; return 0;
-    }
-}
-
-static double float_op(hfx_op op, double x, double y, bool integral, bool *ok) {
-    switch (op) {
-    case OP_ADD: return x + y;
-    case OP_SUB: return x - y;
-    case OP_MUL: return x * y;
-    case OP_DIV: return x / y;
-    case OP_MOD: return fmod(x, y);
-    case OP_LT: return x < y;
-    case OP_GT: return x > y;
-    case OP_LE: return x <= y;
-    case OP_GE: return x >= y;
-    case OP_EQ: return x == y;
-    case OP_NE: return x != y;
-    case OP_AND: return x != 0 && y != 0;
-    case OP_OR: return x != 0 || y != 0;
-    default:
-        if (integral) return integer_op(op, x, y, ok);
-        *ok = false;
-        return 0;
-    }
 }
 
 static bool binary(hfx_builder *b, const hfx_expr *e, hfx_cvec *out, const hfx_state_info *names, int depth) {
     hfx_cvec l = {0}, r = {0};
-    bool ok = e->arg_count == 2 && eval(b, e->args[0], &l, names, depth + 1) && eval(b, e->args[1], &r, names, depth + 1);
+    hfx_ev_op op;
+    bool ok = e->arg_count == 2 && hfx_op_ev(e->op, &op) && eval(b, e->args[0], &l, names, depth + 1) &&
+              eval(b, e->args[1], &r, names, depth + 1);
     uint32_t n = l.n > r.n ? l.n : r.n;
     ok = ok && n > 0 && fit(b, &l, n) && fit(b, &r, n);
-    bool integral = l.integral && r.integral;
-    bool compare = e->op >= OP_LT;
+    hfx_ev_base base = l.integral && r.integral ? HFX_EV_INT : HFX_EV_FLOAT;
     for (uint32_t i = 0; ok && i < n; i++) {
-        double v = integral && !compare && e->op != OP_AND && e->op != OP_OR
-                       ? integer_op(e->op, l.v[i], r.v[i], &ok)
-                       : float_op(e->op, l.v[i], r.v[i], integral, &ok);
-        ok = ok && push(b, out, v);
+        double v;
+        ok = hfx_ev_binary(op, base, l.v[i], r.v[i], &v) && push(b, out, v);
     }
-    out->integral = integral || compare;
+    out->integral = ok && hfx_ev_result_base(op, base) != HFX_EV_FLOAT;
     hfx_cvec_free(&l);
     hfx_cvec_free(&r);
     return ok;
@@ -183,53 +118,42 @@ static bool swizzle(hfx_builder *b, const hfx_expr *e, hfx_cvec *out, const hfx_
     return ok;
 }
 
-/* Intrinsics fxc folds in initializers: componentwise math on constants. */
-static double unary_math(const char *n, double x, bool *ok) {
-    static const struct { const char *name; double (*fn)(double); } table[] = {
-        {"abs", fabs}, {"sqrt", sqrt}, {"sin", sin}, {"cos", cos}, {"tan", tan}, {"asin", asin},
-        {"acos", acos}, {"atan", atan}, {"exp", exp}, {"exp2", exp2}, {"log", log}, {"log2", log2},
-        {"log10", log10}, {"floor", floor}, {"ceil", ceil}, {"round", round}, {"trunc", trunc},
-        {"sinh", sinh}, {"cosh", cosh}, {"tanh", tanh}};
-    for (size_t i = 0; i < sizeof table / sizeof *table; i++)
-        if (strcmp(n, table[i].name) == 0) return table[i].fn(x);
-    if (strcmp(n, "rsqrt") == 0) return 1.0 / sqrt(x);
-    if (strcmp(n, "frac") == 0) return x - floor(x);
-    if (strcmp(n, "saturate") == 0) return x < 0 ? 0 : x > 1 ? 1 : x;
-    if (strcmp(n, "radians") == 0) return x * (3.14159265358979323846 / 180.0);
-    if (strcmp(n, "degrees") == 0) return x * (180.0 / 3.14159265358979323846);
-    if (strcmp(n, "sign") == 0) return (x > 0) - (x < 0);
-    *ok = false;
-    return 0;
+/* A component list as an evaluator value of base `base`; false past 16 components. */
+static bool to_value(const hfx_cvec *c, hfx_ev_base base, hfx_ev_value *v) {
+    if (!c->n || c->n > HFX_EV_MAX_COMPONENTS) return false;
+    v->base = base;
+    v->n = (uint8_t)c->n;
+    for (uint32_t i = 0; i < c->n; i++) v->c[i] = hfx_ev_convert(base_of(c), base, c->v[i]);
+    return true;
 }
 
-static double binary_math(const char *n, double x, double y, bool *ok) {
-    if (strcmp(n, "pow") == 0) return pow(x, y);
-    if (strcmp(n, "min") == 0) return x < y ? x : y;
-    if (strcmp(n, "max") == 0) return x > y ? x : y;
-    if (strcmp(n, "fmod") == 0) return fmod(x, y);
-    if (strcmp(n, "atan2") == 0) return atan2(x, y);
-    if (strcmp(n, "step") == 0) return y >= x;
-    *ok = false;
-    return 0;
+/* The arguments as one base: int when all are and the function computes on ints (abs, min,
+ * max, clamp, sign, dot...), else float. */
+static bool call_values(hfx_ev_fn fn, const hfx_cvec *args, unsigned n, hfx_ev_value *out) {
+    hfx_ev_value v[3];
+    bool integral = true;
+    for (unsigned i = 0; i < n; i++) integral = integral && args[i].integral;
+    for (int pass = integral ? 0 : 1; pass < 2; pass++) {
+        hfx_ev_base base = pass == 0 ? HFX_EV_INT : HFX_EV_FLOAT;
+        bool ok = true;
+        for (unsigned i = 0; i < n; i++) ok = ok && to_value(&args[i], base, &v[i]);
+        if (ok && hfx_ev_call(fn, v, n, out)) return true;
+    }
+    return false;
 }
 
+/* Intrinsics fxc folds in initializers, by their row of intrinsics.def. */
 static bool call(hfx_builder *b, const hfx_expr *e, hfx_cvec *out, const hfx_state_info *names, int depth) {
-    if (e->intrinsic < 0 || !e->name || e->arg_count < 1 || e->arg_count > 2) return false;
-    hfx_cvec x = {0}, y = {0};
-    bool ok = eval(b, e->args[0], &x, names, depth + 1);
-    if (ok && e->arg_count == 2) {
-        ok = eval(b, e->args[1], &y, names, depth + 1);
-        uint32_t n = x.n > y.n ? x.n : y.n;
-        ok = ok && fit(b, &x, n) && fit(b, &y, n);
-    }
-    for (uint32_t i = 0; ok && i < x.n; i++) {
-        double v = e->arg_count == 1 ? unary_math(e->name, x.v[i], &ok) : binary_math(e->name, x.v[i], y.v[i], &ok);
-        ok = ok && push(b, out, v);
-    }
-    const hfx_type *ty = e->type;
-    out->integral = ty && hfx_type_is_numeric(ty) && is_integral_base(ty->base);
-    hfx_cvec_free(&x);
-    hfx_cvec_free(&y);
+    const hfx_intrinsic_info *info = hfx_intrinsic_info_of(e->intrinsic);
+    if (!info || info->fold == HFX_EV_FN_NONE || e->arg_count > 3) return false;
+    hfx_cvec args[3] = {{0}, {0}, {0}};
+    hfx_ev_value r;
+    bool ok = true;
+    for (uint32_t i = 0; ok && i < e->arg_count; i++) ok = eval(b, e->args[i], &args[i], names, depth + 1);
+    ok = ok && call_values(info->fold, args, e->arg_count, &r);
+    for (uint32_t i = 0; ok && i < r.n; i++) ok = push(b, out, r.c[i]);
+    out->integral = ok && r.base != HFX_EV_FLOAT;
+    for (int i = 0; i < 3; i++) hfx_cvec_free(&args[i]);
     return ok;
 }
 
@@ -269,9 +193,10 @@ bool hfx_build_eval(hfx_builder *b, const hfx_expr *e, hfx_cvec *out, const hfx_
 
 /* --- storing into value words ------------------------------------------------------------- */
 
-static uint32_t word_of(double v, hfx_base base) {
-    if (base == B_UINT) return (uint32_t)convert(v, B_UINT);
-    if (is_integral_base(base)) return (uint32_t)to_i32(convert(v, base));
+static uint32_t word_of(double v, hfx_ev_base from, hfx_base base) {
+    v = hfx_ev_convert(from, hfx_base_ev(base), v);
+    if (base == B_UINT) return (uint32_t)v;
+    if (is_integral_base(base)) return (uint32_t)(int32_t)v;
     float f = (float)v;
     uint32_t w;
     memcpy(&w, &f, sizeof w);
@@ -282,7 +207,7 @@ static void store(const hfx_type *ty, const hfx_cvec *c, uint32_t *words, uint32
     switch (ty->kind) {
     case TY_SCALAR: case TY_VECTOR: case TY_MATRIX:
         for (uint32_t i = 0; i < (uint32_t)ty->rows * ty->cols; i++, (*pos)++, (*w)++)
-            words[*w] = word_of(*pos < c->n ? c->v[*pos] : 0.0, ty->base);
+            words[*w] = word_of(*pos < c->n ? c->v[*pos] : 0.0, base_of(c), ty->base);
         break;
     case TY_ARRAY:
         for (uint32_t i = 0; ty->elem && i < ty->array_len; i++) store(ty->elem, c, words, pos, w);
@@ -300,7 +225,7 @@ void hfx_build_store(const hfx_type *ty, const hfx_cvec *c, uint32_t *words) {
     /* `float4 c = 0.5;` and `float ks = {0.05F};` both fill every component. */
     if (c->n == 1 && hfx_type_is_numeric(ty)) {
         uint32_t n = (uint32_t)ty->rows * ty->cols;
-        for (uint32_t i = 0; i < n; i++) words[i] = word_of(c->v[0], ty->base);
+        for (uint32_t i = 0; i < n; i++) words[i] = word_of(c->v[0], base_of(c), ty->base);
         return;
     }
     store(ty, c, words, &pos, &w);

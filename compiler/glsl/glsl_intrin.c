@@ -410,7 +410,7 @@ static const struct lowering {
     const char *glsl;
     lower_fn *lower;
 } lowerings[HFX_INTR_COUNT] = {
-#define HFX_INTRINSIC(id, name, mn, mx, sig, dim, form, glsl, how) [HFX_INTR_##id] = {glsl, lower_##how},
+#define HFX_INTRINSIC(id, name, mn, mx, sig, dim, form, glsl, how, ev) [HFX_INTR_##id] = {glsl, lower_##how},
 #include "check/intrinsics.def"
 #undef HFX_INTRINSIC
 };

@@ -450,3 +450,13 @@ char *hfx_ast_dump(const hfx_ast *ast) {
     }
     return d.buf;
 }
+
+_Static_assert(OP_BITNOT - OP_NEG == HFX_EV_BITNOT - HFX_EV_NEG && OP_OR - OP_ADD == HFX_EV_OR - HFX_EV_ADD,
+               "hfx_op and hfx_ev_op list their operators in the same order");
+
+bool hfx_op_ev(hfx_op op, hfx_ev_op *out) {
+    if (op >= OP_NEG && op <= OP_BITNOT) *out = (hfx_ev_op)(HFX_EV_NEG + (op - OP_NEG));
+    else if (op >= OP_ADD && op <= OP_OR) *out = (hfx_ev_op)(HFX_EV_ADD + (op - OP_ADD));
+    else return false;
+    return true;
+}

@@ -184,5 +184,7 @@ hfx_ast *hfx_parse(hfx_arena *arena, hfx_diags *diags, hfx_types *types, struct 
 
 /* A readable dump of the tree (ast.c), for hfxc --ast and tests. malloc'ed. */
 char *hfx_ast_dump(const hfx_ast *ast);
+/* The evaluator's operator for op; false for the ones it has none of (++, --, OP_NONE). */
+bool hfx_op_ev(hfx_op op, hfx_ev_op *out);
 
 #endif

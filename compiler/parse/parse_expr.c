@@ -319,45 +319,23 @@ const hfx_type *pb_template(parse_ctx *ctx, const hfx_type *object, const hfx_ty
     return object;
 }
 
-/* Folds a constant integer expression (array sizes); false when it is not one. */
+/* Folds a constant integer expression (array sizes) with int's rules (common/eval); false
+ * when it is not one. Names are the checker's to fold (ck_fold_int). */
 static bool fold_int(const hfx_expr *e, int64_t *out) {
     int64_t a, b;
+    hfx_ev_op op;
+    double r;
     switch (e->kind) {
-    case EX_INT: case EX_BOOL: *out = e->ival; return true;
+    case EX_INT: case EX_BOOL: *out = (int64_t)hfx_ev_normalise(HFX_EV_INT, (double)e->ival); return true;
     case EX_UNARY:
-        if (!fold_int(e->args[0], &a)) return false;
-        switch (e->op) {
-        case OP_NEG: *out = -a; return true;
-        case OP_POS: *out = a; return true;
-        case OP_BITNOT: *out = ~a; return true;
-        case OP_NOT: *out = !a; return true;
-        default: return false;
-        }
+        if (!fold_int(e->args[0], &a) || !hfx_op_ev(e->op, &op) || !hfx_ev_unary(op, HFX_EV_INT, (double)a, &r)) return false;
+        *out = (int64_t)r;
+        return true;
     case EX_BINARY:
-        if (!fold_int(e->args[0], &a) || !fold_int(e->args[1], &b)) return false;
-        if ((a > (1 << 20) || a < -(1 << 20) || b > (1 << 20) || b < -(1 << 20)) && e->op != OP_AND && e->op != OP_OR)
-            return false; /* keeps the arithmetic below far from overflow */
-        switch (e->op) {
-        case OP_ADD: *out = a + b; return true;
-        case OP_SUB: *out = a - b; return true;
-        case OP_MUL: *out = a * b; return true;
-        case OP_DIV: if (!b) return false; *out = a / b; return true;
-        case OP_MOD: if (!b) return false; *out = a % b; return true;
-        case OP_SHL: if (b < 0 || b > 31) return false; *out = a << b; return true;
-        case OP_SHR: if (b < 0 || b > 31) return false; *out = a >> b; return true;
-        case OP_BITAND: *out = a & b; return true;
-        case OP_BITOR: *out = a | b; return true;
-        case OP_BITXOR: *out = a ^ b; return true;
-        case OP_LT: *out = a < b; return true;
-        case OP_GT: *out = a > b; return true;
-        case OP_LE: *out = a <= b; return true;
-        case OP_GE: *out = a >= b; return true;
-        case OP_EQ: *out = a == b; return true;
-        case OP_NE: *out = a != b; return true;
-        case OP_AND: *out = a && b; return true;
-        case OP_OR: *out = a || b; return true;
-        default: return false;
-        }
+        if (!fold_int(e->args[0], &a) || !fold_int(e->args[1], &b) || !hfx_op_ev(e->op, &op)) return false;
+        if (!hfx_ev_binary(op, HFX_EV_INT, (double)a, (double)b, &r)) return false;
+        *out = (int64_t)r;
+        return true;
     case EX_TERNARY:
         if (!fold_int(e->args[0], &a)) return false;
         return fold_int(e->args[a ? 1 : 2], out);

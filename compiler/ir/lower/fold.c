@@ -1,69 +1,14 @@
-/* fold.c: constant folding with HLSL's rules: ints are 32-bit and divide toward zero, float
- * results are rounded to single precision, `%` on floats is fmod (truncating), conversions
- * to int truncate. Intrinsics are left alone (the GPU computes them as the shader would). */
+/* fold.c: constant folding of the IR with common/eval, the evaluator every phase shares (ints
+ * wrap at 32 bits and divide toward zero, floats are single precision, conversions truncate).
+ * Intrinsics are left alone (the GPU computes them as the shader would). */
 #include <math.h>
 
 #include "ir/ir.h"
 
-static bool is_float_base(hfx_base b) { return b == B_FLOAT || b == B_HALF || b == B_DOUBLE || b == B_MIN16FLOAT; }
+static hfx_ev_base ev(const hfx_type *t) { return hfx_base_ev(t->base); }
 
-/* A value stored in the representation of base b. */
-static double normalise(hfx_base b, double v) {
-    switch (b) {
-    case B_BOOL: return v != 0;
-    case B_INT:
-        if (isnan(v)) return 0;
-        if (v >= 2147483647.0) return 2147483647.0;
-        if (v <= -2147483648.0) return -2147483648.0;
-        return trunc(v);
-    case B_UINT:
-        if (isnan(v) || v <= 0) return v <= -1 ? (double)(uint32_t)(int32_t)trunc(v) : 0;
-        return v >= 4294967295.0 ? 4294967295.0 : trunc(v);
-    default: return (double)(float)v;
-    }
-}
-
-static int32_t wrap_int(double v) { return (int32_t)(int64_t)v; }
-
-static double int_result(hfx_base b, int64_t v) {
-    return b == B_UINT ? (double)(uint32_t)v : (double)(int32_t)v;
-}
-
-/* One component of a binary operation; false when it must not be folded (x / 0 on ints). */
-static bool binary_op(hfx_op op, hfx_base b, double x, double y, double *r) {
-    bool f = is_float_base(b);
-    switch (op) {
-    case OP_ADD: *r = f ? x + y : int_result(b, (int64_t)x + (int64_t)y); return true;
-    case OP_SUB: *r = f ? x - y : int_result(b, (int64_t)x - (int64_t)y); return true;
-    case OP_MUL: *r = f ? x * y : int_result(b, (int64_t)x * (int64_t)y); return true;
-    case OP_DIV:
-        if (f) { *r = x / y; return y != 0; }
-        if (y == 0) return false;
-        *r = b == B_UINT ? (double)((uint32_t)x / (uint32_t)y) : int_result(b, (int64_t)x / (int64_t)y);
-        return true;
-    case OP_MOD:
-        if (y == 0) return false;
-        if (f) { *r = fmod(x, y); return true; }
-        *r = b == B_UINT ? (double)((uint32_t)x % (uint32_t)y) : int_result(b, (int64_t)x % (int64_t)y);
-        return true;
-    case OP_SHL: *r = int_result(b, (int64_t)((uint32_t)wrap_int(x) << ((uint32_t)y & 31))); return !f;
-    case OP_SHR:
-        *r = b == B_UINT ? (double)((uint32_t)x >> ((uint32_t)y & 31)) : (double)(wrap_int(x) >> ((uint32_t)y & 31));
-        return !f;
-    case OP_BITAND: *r = int_result(b, wrap_int(x) & wrap_int(y)); return !f;
-    case OP_BITOR: *r = int_result(b, wrap_int(x) | wrap_int(y)); return !f;
-    case OP_BITXOR: *r = int_result(b, wrap_int(x) ^ wrap_int(y)); return !f;
-    case OP_LT: *r = x < y; return true;
-    case OP_GT: *r = x > y; return true;
-    case OP_LE: *r = x <= y; return true;
-    case OP_GE: *r = x >= y; return true;
-    case OP_EQ: *r = x == y; return true;
-    case OP_NE: *r = x != y; return true;
-    case OP_AND: *r = x != 0 && y != 0; return true;
-    case OP_OR: *r = x != 0 || y != 0; return true;
-    default: return false;
-    }
-}
+/* GLSL has no literal for infinities and NaNs: those results are left to the GPU. */
+static bool printable(hfx_ev_base b, double v) { return b != HFX_EV_FLOAT || isfinite(v); }
 
 static unsigned comps(const hfx_type *t) { return hfx_type_is_numeric(t) ? hfx_type_components(t) : 0; }
 
@@ -78,26 +23,31 @@ static ir_expr *fold_binary(ir_ctx *c, ir_expr *e) {
     }
     unsigned n = comps(e->type), nx = comps(x->type), ny = comps(y->type);
     if (!n || n > 16 || !nx || !ny) return e;
+    hfx_ev_op op;
+    if (!hfx_op_ev(e->op, &op)) return e;
     ir_expr *r = ir_new_expr(c, IE_CONST, e->type, e->loc, 0);
-    hfx_base b = x->type->base;
+    hfx_ev_base b = ev(x->type), rb = hfx_ev_result_base(op, b);
     for (unsigned i = 0; i < n; i++) {
         double v;
-        if (!binary_op(e->op, b, x->cval[nx == 1 ? 0 : i], y->cval[ny == 1 ? 0 : i], &v)) return e;
-        r->cval[i] = normalise(e->type->base, v);
+        if (!hfx_ev_binary(op, b, x->cval[nx == 1 ? 0 : i], y->cval[ny == 1 ? 0 : i], &v)) return e;
+        r->cval[i] = hfx_ev_convert(rb, ev(e->type), v);
+        if (!printable(ev(e->type), r->cval[i])) return e;
     }
     return r;
 }
 
 static ir_expr *fold_unary(ir_ctx *c, ir_expr *e) {
     ir_expr *x = e->a[0];
-    if (!ir_is_const(x) || (e->op != OP_NEG && e->op != OP_NOT && e->op != OP_BITNOT)) return e;
+    hfx_ev_op op;
+    if (!ir_is_const(x) || (e->op != OP_NEG && e->op != OP_NOT && e->op != OP_BITNOT) || !hfx_op_ev(e->op, &op)) return e;
     unsigned n = comps(e->type);
     if (!n || n > 16) return e;
     ir_expr *r = ir_new_expr(c, IE_CONST, e->type, e->loc, 0);
+    hfx_ev_base b = ev(x->type);
     for (unsigned i = 0; i < n; i++) {
-        double v = x->cval[i];
-        v = e->op == OP_NEG ? -v : e->op == OP_NOT ? (v == 0) : (double)~wrap_int(v);
-        r->cval[i] = normalise(e->type->base, e->type->base == B_UINT && e->op != OP_NOT ? (double)(uint32_t)(int64_t)v : v);
+        double v;
+        if (!hfx_ev_unary(op, b, x->cval[i], &v)) return e;
+        r->cval[i] = hfx_ev_convert(hfx_ev_result_base(op, b), ev(e->type), v);
     }
     return r;
 }
@@ -116,7 +66,7 @@ static ir_expr *fold_convert(ir_ctx *c, ir_expr *e) {
     if (!ir_is_const(x) || !n || n > 16 || !comps(x->type)) return e;
     if (comps(x->type) != 1 && comps(x->type) < n) return e;
     ir_expr *r = ir_new_expr(c, IE_CONST, e->type, e->loc, 0);
-    for (unsigned i = 0; i < n; i++) r->cval[i] = normalise(e->type->base, convert_comp(x, e->type, i));
+    for (unsigned i = 0; i < n; i++) r->cval[i] = hfx_ev_convert(ev(x->type), ev(e->type), convert_comp(x, e->type, i));
     return r;
 }
 
@@ -128,7 +78,7 @@ static ir_expr *fold_construct(ir_ctx *c, ir_expr *e) {
     ir_expr *r = ir_new_expr(c, IE_CONST, e->type, e->loc, 0);
     for (uint32_t i = 0; i < e->n; i++)
         for (unsigned j = 0; j < comps(e->a[i]->type) && k < 16; j++)
-            r->cval[k++] = normalise(e->type->base, e->a[i]->cval[j]);
+            r->cval[k++] = hfx_ev_convert(ev(e->a[i]->type), ev(e->type), e->a[i]->cval[j]);
     if (k == 1 && n > 1) /* a scalar spread over the type */
         for (unsigned j = 1; j < n; j++) r->cval[j] = r->cval[0];
     else if (k != n) return e;

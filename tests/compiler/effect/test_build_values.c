@@ -108,6 +108,47 @@ done:
     hfxc_result_free(r);
 }
 
+/* Initializers fold with common/eval, Direct3D's rules: vector intrinsics, 32-bit int wrap,
+ * int -> uint keeping the bits, shifts by the low 5 bits, round as floor(x + 0.5), pow on |x|. */
+static void intrinsics_and_d3d_rules_fold(void) {
+    hfxc_result *r = compile(
+        "float3 L = normalize(float3(1, 1, -1));\n"
+        "static const float3 Dir = float3(0, 3, 4);\n"
+        "float3 L2 = normalize(Dir) * 2;\n"
+        "float d = dot(float3(1, 2, 3), float3(4, 5, 6));\n"
+        "float len = length(float2(3, 4)) + distance(float2(1, 1), float2(4, 5));\n"
+        "float3 c = cross(float3(1, 0, 0), float3(0, 1, 0));\n"
+        "uint u = -1;\n"
+        "int big = 4294967295;\n"
+        "int wrap = 2147483647 + 1;\n"
+        "int sh = 1 << 33;\n"
+        "float rnd = round(-2.5);\n"
+        "float p = pow(-2, 2);\n"
+        "float lerped = lerp(2, 4, 0.25) + smoothstep(0, 1, 0.5) + step(0.5, 0.25);\n");
+    const hfx_fx_effect *fx = effect_of(r);
+    CHECK(fx != NULL);
+    if (!fx) goto done;
+    float k = (float)(1.0 / 1.7320508075688772); /* 1 / sqrt(3), in single precision */
+    CHECK_NEAR(pf(fx, "L", 0), k, 0);
+    CHECK_NEAR(pf(fx, "L", 1), k, 0);
+    CHECK_NEAR(pf(fx, "L", 2), -k, 0);
+    CHECK_NEAR(pf(fx, "L2", 0), 0, 0);
+    CHECK_NEAR(pf(fx, "L2", 1), (float)0.6 * 2, 0); /* (0, 3, 4) / 5 */
+    CHECK_NEAR(pf(fx, "L2", 2), (float)0.8 * 2, 0);
+    CHECK_NEAR(pf(fx, "d", 0), 32, 0); /* 4 + 10 + 18 */
+    CHECK_NEAR(pf(fx, "len", 0), 10, 0); /* 5 + 5 */
+    CHECK_NEAR(pf(fx, "c", 2), 1, 0);
+    CHECK_INT(fx->values[param(fx, "u")->offset], 4294967295u);
+    CHECK_INT(pi(fx, "big", 0), -1);
+    CHECK_INT(pi(fx, "wrap", 0), INT32_MIN);
+    CHECK_INT(pi(fx, "sh", 0), 2);
+    CHECK_NEAR(pf(fx, "rnd", 0), -2, 0);
+    CHECK_NEAR(pf(fx, "p", 0), 4, 0);
+    CHECK_NEAR(pf(fx, "lerped", 0), 2.5 + 0.5 + 0, 0);
+done:
+    hfxc_result_free(r);
+}
+
 static void objects_and_strings(void) {
     hfxc_result *r = compile(
         "string Description = \"two \" \"parts\";\n"
@@ -354,6 +395,7 @@ static void located_errors(void) {
 
 int main(void) {
     RUN(defaults_are_folded);
+    RUN(intrinsics_and_d3d_rules_fold);
     RUN(objects_and_strings);
     RUN(annotations_of_every_kind);
     RUN(pass_states_resolve);

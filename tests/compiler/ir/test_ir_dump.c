@@ -163,6 +163,31 @@ static void folds_with_hlsl_arithmetic(void) {
     free(t);
 }
 
+/* common/eval's rules in the IR: float -> uint of a negative value is 0 (Direct3D 10's ftou,
+ * where the old folder wrapped it to 4294967295); int -> uint keeps the bits; int arithmetic
+ * wraps at 32 bits and shifts use the low 5 bits of the count; 1.0 / 0 is left to the GPU (GLSL
+ * has no literal for infinity). */
+static void folds_with_the_evaluator(void) {
+    const char *src =
+        "float4 ps() : COLOR\n"
+        "{\n"
+        "    uint a = (uint)-1.5;\n"
+        "    uint b = (uint)-1;\n"
+        "    int c = 2147483647 + 1;\n"
+        "    int d = 1 << 33;\n"
+        "    float e = 1.0 / 0;\n"
+        "    return float4(a, b, c, d) + e;\n"
+        "}\n";
+    char *t = lowered(src, "ps", 0, NULL, 1);
+    CHECK(t && strstr(t, "decl uint a (const uint 0)\n"));
+    /* the dump prints %g: 4294967295 and -2147483648 */
+    CHECK(t && strstr(t, "decl uint b (const uint 4.29497e+09)\n"));
+    CHECK(t && strstr(t, "decl int c (const int -2.14748e+09)\n"));
+    CHECK(t && strstr(t, "decl int d (const int 2)\n"));
+    CHECK(t && strstr(t, "decl float e (/ (const float 1) (const float 0))\n"));
+    free(t);
+}
+
 /* `static const` globals and `const` locals with constant values flow into their uses, so
  * the branch they switch off and its sampler disappear. */
 static void constants_propagate(void) {
@@ -191,6 +216,7 @@ int main(void) {
     RUN(specialised_branch_folds_away);
     RUN(written_global_gets_private_copy);
     RUN(folds_with_hlsl_arithmetic);
+    RUN(folds_with_the_evaluator);
     RUN(constants_propagate);
     return test_summary();
 }
