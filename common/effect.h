@@ -62,17 +62,18 @@ typedef enum {
     HFX_FX_VALUE_FLOAT,    /* up to 4 floats (colours as float4) */
     HFX_FX_VALUE_PARAM,    /* taken from a parameter at apply time (`ZEnable = <p>;`, `Texture = <t>;`) */
     HFX_FX_VALUE_PROGRAM,  /* VertexShader / PixelShader: index into programs (HFX_NONE for NULL) */
-    HFX_FX_VALUE_UNSUPPORTED /* parsed but not expressible (asm, non-constant shader array index) */
+    HFX_FX_VALUE_UNSUPPORTED, /* parsed but not expressible (asm, non-constant shader array index) */
+    HFX_FX_VALUE_EXPR      /* computed from parameters at apply time: exprs[ref .. ref + count), eval_code.h */
 } hfx_fx_value_kind;
 
 typedef struct hfx_fx_state {
     uint32_t id;           /* hfx_state_id from states.h */
     uint32_t index;        /* the [n] of `MinFilter[1] = ...`, 0 otherwise */
     hfx_fx_value_kind kind;
-    uint32_t count;        /* components in f (1..4) */
+    uint32_t count;        /* components in f (1..4); words of the program for EXPR */
     int32_t i;
     float f[4];
-    uint32_t ref;          /* param index for PARAM, program index for PROGRAM */
+    uint32_t ref;          /* param index for PARAM, program index for PROGRAM, first word for EXPR */
     uint32_t line, col;    /* where the state was written, for load-time reports */
 } hfx_fx_state;
 
@@ -148,6 +149,7 @@ typedef struct hfx_fx_effect {
     char *source_name;      /* file the effect came from, for messages */
     hfx_fx_param *params; uint32_t param_count, top_param_count;
     uint32_t *values; uint32_t value_words;
+    uint32_t *exprs; uint32_t expr_words; /* the programs of EXPR states, one after another */
     hfx_fx_annotation *annotations; uint32_t annotation_count;
     hfx_fx_state *states; uint32_t state_count;
     hfx_fx_sampler *samplers; uint32_t sampler_count;

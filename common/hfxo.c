@@ -10,7 +10,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define HFXO_VERSION 2u /* 2: registers of HFXC_PACK_UNIFORMS */
+#include "eval_code.h"
+
+#define HFXO_VERSION 2u /* 2: registers of HFXC_PACK_UNIFORMS (EXPR was added as an optional section) */
 #define HFXO_HEADER 20u /* magic 8, version, checksum, total size; then the section count */
 #define NO_STRING 0xffffffffu
 
@@ -25,7 +27,7 @@ enum {
     SEC_PROGRAMS = FOURCC('P', 'R', 'O', 'G'), SEC_ATTRIBUTES = FOURCC('A', 'T', 'T', 'R'),
     SEC_SAMPLER_USES = FOURCC('S', 'U', 'S', 'E'), SEC_UNIFORM_USES = FOURCC('U', 'U', 'S', 'E'),
     SEC_PASSES = FOURCC('P', 'A', 'S', 'S'), SEC_TECHNIQUES = FOURCC('T', 'E', 'C', 'H'),
-    SEC_CODE = FOURCC('C', 'O', 'D', 'E')
+    SEC_CODE = FOURCC('C', 'O', 'D', 'E'), SEC_EXPRS = FOURCC('E', 'X', 'P', 'R')
 };
 
 /* Words per record in version 2 (readers accept longer records and ignore the tail). */
@@ -217,6 +219,10 @@ static void write_states(writer *w, const hfx_fx_effect *fx) {
         for (int k = 0; k < R_STATE; k++) put32(&w->out, r[k]);
     }
     section_end(w);
+    section_begin(w, SEC_EXPRS);
+    put32(&w->out, fx->expr_words);
+    for (uint32_t i = 0; i < fx->expr_words; i++) put32(&w->out, fx->exprs[i]);
+    section_end(w);
     table_begin(w, SEC_SAMPLERS, fx->sampler_count, R_SAMPLER);
     for (uint32_t i = 0; i < fx->sampler_count; i++) {
         const hfx_fx_sampler *s = &fx->samplers[i];
@@ -293,7 +299,7 @@ static void write_techniques(writer *w, const hfx_fx_effect *fx) {
     section_end(w);
 }
 
-enum { SECTION_COUNT = 15 };
+enum { SECTION_COUNT = 16 };
 
 int hfx_fx_write_hfxo(const hfx_fx_effect *fx, void **out, size_t *out_size) {
     if (!fx || !out || !out_size) return -1;
@@ -369,8 +375,8 @@ typedef struct reader {
     uint32_t code_size;
     table t_effect, t_params, t_annotations, t_states, t_samplers, t_programs, t_attributes, t_sampler_uses,
         t_uniform_uses, t_passes, t_techniques;
-    const uint8_t *values, *adata;
-    uint32_t value_words, adata_words;
+    const uint8_t *values, *adata, *exprs;
+    uint32_t value_words, adata_words, expr_words;
 } reader;
 
 __attribute__((format(printf, 2, 3))) static bool fail(reader *r, const char *fmt, ...) {
@@ -429,6 +435,9 @@ static bool open_section(reader *r, uint32_t id, const uint8_t *p, uint32_t size
     case SEC_ANNOTATIONS: return open_table(r, p, size, R_ANNOTATION, &r->t_annotations, "ANNO");
     case SEC_ANNOTATION_DATA: return open_words(r, p, size, &r->adata, &r->adata_words, "ADAT");
     case SEC_STATES: return open_table(r, p, size, R_STATE, &r->t_states, "STAT");
+    case SEC_EXPRS: /* optional (older files have none), but only once */
+        if (r->exprs) return fail(r, "section EXPR repeats");
+        return open_words(r, p, size, &r->exprs, &r->expr_words, "EXPR");
     case SEC_SAMPLERS: return open_table(r, p, size, R_SAMPLER, &r->t_samplers, "SAMP");
     case SEC_PROGRAMS: return open_table(r, p, size, R_PROGRAM, &r->t_programs, "PROG");
     case SEC_ATTRIBUTES: return open_table(r, p, size, R_ATTRIBUTE, &r->t_attributes, "ATTR");
@@ -546,6 +555,9 @@ static bool read_annotations(reader *r, hfx_fx_effect *fx) {
 
 static bool read_states(reader *r, hfx_fx_effect *fx) {
     const table *t = &r->t_states;
+    fx->expr_words = r->expr_words;
+    if (!(fx->exprs = alloc_array(r, r->expr_words, sizeof *fx->exprs))) return false;
+    for (uint32_t i = 0; i < r->expr_words; i++) fx->exprs[i] = rd32(r->exprs + 4 * i);
     fx->state_count = t->count;
     if (!(fx->states = alloc_array(r, t->count, sizeof *fx->states))) return false;
     for (uint32_t i = 0; i < t->count; i++) {
@@ -705,6 +717,15 @@ static bool check_annotation(reader *r, const hfx_fx_annotation *a, uint32_t i) 
     return true;
 }
 
+/* An expression program: inside EXPR, and valid (eval_code.h), so Apply can run it blindly. */
+static bool check_expr(reader *r, const hfx_fx_effect *fx, const hfx_fx_state *s, uint32_t i) {
+    char why[96];
+    if (!s->count || !range_ok(s->ref, s->count, fx->expr_words)) return fail(r, "state %u has its program outside EXPR", i);
+    if (hfx_evc_validate(fx->exprs + s->ref, s->count, fx->value_words, why, sizeof why) != 0)
+        return fail(r, "state %u: %s", i, why);
+    return true;
+}
+
 static bool check_state(reader *r, const hfx_fx_effect *fx, const hfx_fx_state *s, uint32_t i) {
     switch (s->kind) {
     case HFX_FX_VALUE_INT: case HFX_FX_VALUE_UNSUPPORTED: return true;
@@ -716,6 +737,7 @@ static bool check_state(reader *r, const hfx_fx_effect *fx, const hfx_fx_state *
             return fail(r, "state %u reads a parameter without values", i);
         return true;
     case HFX_FX_VALUE_PROGRAM: return ref_ok(s->ref, fx->program_count) ? true : fail(r, "state %u names a missing program", i);
+    case HFX_FX_VALUE_EXPR: return check_expr(r, fx, s, i);
     default: return fail(r, "state %u has an unknown kind of value", i);
     }
 }

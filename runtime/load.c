@@ -64,10 +64,11 @@ static int push_sampler(hfx_shared *sh, uint32_t *cap, const hfx_sampler_desc *b
     return rc ? hfx_rt_fail(sh->dev, rc, "could not create a GL sampler object") : HFX_OK;
 }
 
-/* Adds a state to a sampler being built: constants into the description, PARAM ones to dyn. */
+/* Adds a state to a sampler being built: constants into the description, PARAM and EXPR ones
+ * (computed at Apply) to dyn. */
 static void add_sampler_state(const hfx_fx_state *st, hfx_sampler_desc *d, const hfx_fx_state **dyn, uint32_t *n) {
     if (st->kind == HFX_FX_VALUE_UNSUPPORTED) return; /* reported by check_sampler_state */
-    if (st->kind == HFX_FX_VALUE_PARAM) {
+    if (st->kind == HFX_FX_VALUE_PARAM || st->kind == HFX_FX_VALUE_EXPR) {
         if (*n < 32) dyn[(*n)++] = st;
         return;
     }

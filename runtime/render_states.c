@@ -9,6 +9,7 @@
  * framebuffer object the shaders flip y (D3D9's row order, hfx_pos_fixup.z), so GL_CCW. */
 #include <string.h>
 
+#include "eval_code.h"
 #include "internal.h"
 
 static void set_i(hfx_rs_value *rs, uint32_t id, int32_t v) { rs[id].i = v; }
@@ -107,9 +108,27 @@ static void convert_value(const hfx_state_info *info, int is_float, int32_t i, c
     }
 }
 
+/* An EXPR state: its program (validated when the effect was loaded) over the current values.
+ * When the arithmetic does not fold (an integer division by zero) the state keeps its value. */
+static void resolve_expr(const hfx_effect *fx, const hfx_state_info *info, const hfx_fx_state *st, hfx_rs_value *out) {
+    const hfx_fx_effect *e = fx->sh->fx;
+    hfx_ev_value v;
+    if (!hfx_evc_run(e->exprs + st->ref, st->count, fx->values, &v)) return;
+    if (v.base != HFX_EV_FLOAT) {
+        convert_value(info, 0, (int32_t)(int64_t)v.c[0], NULL, 1, out);
+        return;
+    }
+    float f[4] = {0};
+    uint32_t n = v.n > 4 ? 4 : v.n;
+    for (uint32_t i = 0; i < n; i++) f[i] = (float)v.c[i];
+    convert_value(info, 1, 0, f, n, out);
+}
+
 void hfx_rs_resolve(const hfx_effect *fx, const hfx_fx_state *st, hfx_rs_value *out) {
     const hfx_state_info *info = hfx_state_by_id(st->id);
-    if (st->kind == HFX_FX_VALUE_FLOAT) {
+    if (st->kind == HFX_FX_VALUE_EXPR) {
+        resolve_expr(fx, info, st, out);
+    } else if (st->kind == HFX_FX_VALUE_FLOAT) {
         convert_value(info, 1, 0, st->f, st->count ? st->count : 1, out);
     } else if (st->kind == HFX_FX_VALUE_PARAM && st->ref < fx->sh->fx->param_count) {
         const hfx_fx_param *p = &fx->sh->fx->params[st->ref];
@@ -337,7 +356,7 @@ void hfx_rs_check(hfx_shared *sh, const hfx_fx_state *st, uint32_t program) {
     if (!note && info->scope == HFX_SS_RENDER) {
         hfx_rs_value v;
         memset(&v, 0, sizeof v);
-        if (st->kind == HFX_FX_VALUE_PARAM) v.i = 1; /* unknown until Apply: judge by the state */
+        if (st->kind == HFX_FX_VALUE_PARAM || st->kind == HFX_FX_VALUE_EXPR) v.i = 1; /* unknown until Apply */
         else if (st->kind == HFX_FX_VALUE_FLOAT) v.i = (int32_t)st->f[0];
         else v.i = st->i;
         int alpha = program != HFX_NONE && (sh->fx->programs[program].flags & HFX_FX_PROGRAM_ALPHA_TEST);

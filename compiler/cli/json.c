@@ -100,6 +100,9 @@ static cJSON *state_json(const hfx_fx_effect *fx, const hfx_fx_state *s) {
         if (s->ref != HFX_NONE) cJSON_AddNumberToObject(o, "program", s->ref);
         else cJSON_AddNullToObject(o, "program");
         break;
+    case HFX_FX_VALUE_EXPR: /* computed from parameters when the pass is applied */
+        cJSON_AddNumberToObject(o, "expression_words", s->count);
+        break;
     default:
         cJSON_AddBoolToObject(o, "unsupported", 1);
         break;

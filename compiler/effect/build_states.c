@@ -109,6 +109,11 @@ static bool state_value(hfx_builder *b, const hfx_state_info *info, const hfx_ex
         hfx_error(b->diags, v->loc, X_UNDECLARED, "undeclared identifier '%s'", v->name);
         return false;
     }
+    /* An expression of parameters, computed when the pass is applied: `AlphaRef = (Ref * 255);`. */
+    if (info->kind != HFX_SV_MATRIX && hfx_build_code(b, v, names, &out->ref, &out->count)) {
+        out->kind = HFX_FX_VALUE_EXPR;
+        return true;
+    }
     hfx_warning(b->diags, v->loc, X_UNSUPPORTED, "%s: state expressions that are not constant are not supported",
                 info->name);
     out->kind = HFX_FX_VALUE_UNSUPPORTED;

@@ -6,6 +6,8 @@
 #include <string.h>
 
 #include "effect.h"
+#include "eval_code.h"
+#include "states.h"
 #include "test.h"
 
 static char *dup(const char *s) { return s ? strdup(s) : NULL; }
@@ -458,11 +460,66 @@ static void hostile_contents_are_refused(void) {
     free(data);
 }
 
+/* The sample effect plus an EXPR state: AlphaRef = (color.x * 255) as a program. */
+static hfx_fx_effect *effect_with_expression(uint32_t *state) {
+    hfx_fx_effect *fx = sample_effect();
+    *state = fx->state_count;
+    fx->states = realloc(fx->states, (fx->state_count + 1) * sizeof *fx->states);
+    fx->states[fx->state_count++] = (hfx_fx_state){HFX_ST_ALPHAREF, 0, HFX_FX_VALUE_EXPR, 5, 0, {0}, 0, 3, 7};
+    const uint32_t code[5] = {hfx_evc_word(HFX_EVC_PARAM, HFX_EV_FLOAT, 1), 16, hfx_evc_word(HFX_EVC_CONST, HFX_EV_FLOAT, 1),
+                              f2u(255.0f), hfx_evc_word(HFX_EVC_BINARY, HFX_EV_MUL, 0)};
+    fx->expr_words = 5;
+    fx->exprs = malloc(sizeof code);
+    memcpy(fx->exprs, code, sizeof code);
+    return fx;
+}
+
+/* EXPR programs are validated as they are read: a bad instruction, a parameter read outside
+ * the values, a program outside its section; and no changed byte makes the reader crash. */
+static void hostile_expressions_are_refused(void) {
+    uint32_t k;
+    hfx_fx_effect *fx = effect_with_expression(&k);
+    void *data = NULL;
+    size_t size = 0;
+    CHECK_INT(hfx_fx_write_hfxo(fx, &data, &size), 0);
+    char err[256];
+    hfx_fx_effect *back = hfx_fx_read_hfxo(data, size, err, sizeof err);
+    CHECK(back && back->expr_words == 5 && back->states[k].kind == HFX_FX_VALUE_EXPR &&
+          memcmp(back->exprs, fx->exprs, 5 * sizeof *fx->exprs) == 0);
+    hfx_fx_effect_free(back);
+    const uint8_t *b = data;
+    uint32_t expr = section_at(b, "EXPR"), stat = section_at(b, "STAT");
+    CHECK(expr && stat);
+    char want[128];
+    snprintf(want, sizeof want, "hfxo: state %u: expression word 0: an unknown instruction", k);
+    CHECK_STR(read_patched(data, size, expr + 4, 99, err, sizeof err), want);
+    snprintf(want, sizeof want, "hfxo: state %u: expression word 0: a parameter outside the values", k);
+    CHECK_STR(read_patched(data, size, expr + 8, 28, err, sizeof err), want); /* 28 + 1 > 28 words */
+    CHECK_STR(read_patched(data, size, expr + 8, 27, err, sizeof err), "accepted");
+    snprintf(want, sizeof want, "hfxo: state %u has its program outside EXPR", k);
+    CHECK_STR(read_patched(data, size, stat + 8 + k * 48 + 3 * 4, 6, err, sizeof err), want);
+    snprintf(want, sizeof want, "hfxo: state %u: expression word 4: takes more values than the stack holds", k);
+    CHECK_STR(read_patched(data, size, expr + 4 + 2 * 4, hfx_evc_word(HFX_EVC_SWIZZLE, 1, 0), err, sizeof err), want);
+    /* every bit of every byte flipped, the checksum fixed: refused or valid, never a bad read */
+    uint8_t *copy = malloc(size);
+    for (size_t at = 16; at < size; at++)
+        for (int bit = 0; bit < 8; bit++) {
+            memcpy(copy, data, size);
+            copy[at] ^= (uint8_t)(1u << bit);
+            put32(copy + 12, crc32_bitwise(copy + 16, size - 16));
+            hfx_fx_effect_free(hfx_fx_read_hfxo(copy, size, NULL, 0));
+        }
+    free(copy);
+    hfx_fx_effect_free(fx);
+    free(data);
+}
+
 int main(void) {
     RUN(round_trip);
     RUN(empty_effect_round_trips);
     RUN(every_truncation_is_refused);
     RUN(every_flipped_byte_is_refused);
     RUN(hostile_contents_are_refused);
+    RUN(hostile_expressions_are_refused);
     return test_summary();
 }

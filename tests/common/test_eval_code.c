@@ -1,0 +1,159 @@
+/* test_eval_code.c: the runtime's expression programs (common/eval_code): what they compute
+ * (values worked out by hand), D3D9's clamped table index, and a validator that refuses every
+ * malformed program, so one read from a hostile .hfxo never runs out of bounds (the random
+ * changes at the end run under ASan in CI). */
+#include <string.h>
+
+#include "eval_code.h"
+#include "test.h"
+
+#define W(op, a, b) hfx_evc_word(HFX_EVC_##op, a, b)
+enum { F = HFX_EV_FLOAT, I = HFX_EV_INT };
+
+static uint32_t fbits(float f) {
+    uint32_t w;
+    memcpy(&w, &f, sizeof w);
+    return w;
+}
+
+/* values: [0] Ref = 0.5f, [1] index = 2, [2..5] v = (1, 2, 3, 4), [6] zero = 0 */
+static uint32_t values[7];
+
+static void setup(void) {
+    values[0] = fbits(0.5f);
+    values[1] = 2;
+    for (int i = 0; i < 4; i++) values[2 + i] = fbits((float)(i + 1));
+    values[6] = 0;
+}
+
+static int run(const uint32_t *code, uint32_t n, hfx_ev_value *out) {
+    char err[128];
+    if (hfx_evc_validate(code, n, 7, err, sizeof err) != 0) {
+        printf("  invalid: %s\n", err);
+        return 0;
+    }
+    return hfx_evc_run(code, n, values, out);
+}
+
+/* AlphaRef = (Ref * 255): 0.5 * 255 = 127.5 */
+static void parameter_times_constant(void) {
+    const uint32_t code[] = {W(PARAM, F, 1), 0, W(CONST, F, 1), fbits(255.0f), W(BINARY, HFX_EV_MUL, 0)};
+    hfx_ev_value v;
+    CHECK(run(code, 5, &v) && v.base == HFX_EV_FLOAT && v.n == 1 && v.c[0] == 127.5);
+}
+
+/* VSIndices[ShaderIndex] with VSIndices = {10, 20, 30, 40}: index 2 reads 30; -1 and 9 clamp
+ * to the first and the last element, as D3D9 clamps an out-of-range array index. */
+static void table_index_clamps(void) {
+    uint32_t code[] = {W(PARAM, I, 1), 1, W(TABLE, I, 1), 4, 10, 20, 30, 40};
+    hfx_ev_value v;
+    CHECK(run(code, 8, &v) && v.base == HFX_EV_INT && v.c[0] == 30);
+    values[1] = (uint32_t)-1;
+    CHECK(run(code, 8, &v) && v.c[0] == 10);
+    values[1] = 9;
+    CHECK(run(code, 8, &v) && v.c[0] == 40);
+    values[1] = 2;
+}
+
+/* v.wx = (4, 1); an int plus a float is a float: 2 + 0.5; normalize((0, 3, 4)) = (0, 0.6, 0.8) */
+static void swizzle_promotion_and_calls(void) {
+    const uint32_t sw[] = {W(PARAM, F, 4), 2, W(SWIZZLE, 2, 0), 0x03u};
+    hfx_ev_value v;
+    CHECK(run(sw, 4, &v) && v.n == 2 && v.c[0] == 4 && v.c[1] == 1);
+    const uint32_t mix[] = {W(PARAM, I, 1), 1, W(CONST, F, 1), fbits(0.5f), W(BINARY, HFX_EV_ADD, 0)};
+    CHECK(run(mix, 5, &v) && v.base == HFX_EV_FLOAT && v.c[0] == 2.5);
+    const uint32_t norm[] = {W(CONST, F, 3), 0, fbits(3), fbits(4), W(CALL, HFX_EV_FN_NORMALIZE, 0)};
+    CHECK(run(norm, 5, &v) && v.n == 3 && v.c[1] == (double)0.6f && v.c[2] == (double)0.8f);
+    /* length of an int vector: computed in float, sqrt(3 * 3 + 4 * 4) = 5 */
+    const uint32_t len[] = {W(CONST, I, 2), 3, 4, W(CALL, HFX_EV_FN_LENGTH, 0)};
+    CHECK(run(len, 4, &v) && v.base == HFX_EV_FLOAT && v.c[0] == 5);
+}
+
+/* Ref > 0.25 ? 7 : 9 = 7; an integer division by zero does not fold: the run says so. */
+static void select_and_failures(void) {
+    const uint32_t sel[] = {W(CONST, I, 1), 7, W(CONST, I, 1), 9, W(PARAM, F, 1), 0, W(CONST, F, 1), fbits(0.25f),
+                            W(BINARY, HFX_EV_GT, 0), W(SELECT, 0, 0)};
+    hfx_ev_value v;
+    CHECK(run(sel, 10, &v) && v.c[0] == 7);
+    const uint32_t div[] = {W(CONST, I, 1), 1, W(PARAM, I, 1), 6, W(BINARY, HFX_EV_DIV, 0)};
+    CHECK(!run(div, 5, &v));
+}
+
+static void check_invalid(const uint32_t *code, uint32_t n, const char *why) {
+    char err[128] = "";
+    CHECK_INT(hfx_evc_validate(code, n, 7, err, sizeof err), -1);
+    if (!strstr(err, why)) printf("  got '%s', want '%s'\n", err, why);
+    CHECK(strstr(err, why) != NULL);
+}
+
+static void validator_refuses(void) {
+    const uint32_t one[] = {W(CONST, F, 1), 0};
+    check_invalid(one, 0, "an empty or oversized program");
+    const uint32_t bad_op[] = {99};
+    check_invalid(bad_op, 1, "word 0: an unknown instruction");
+    const uint32_t short_const[] = {W(CONST, F, 3), 0};
+    check_invalid(short_const, 2, "word 0: operands past the end");
+    const uint32_t far_param[] = {W(PARAM, F, 4), 5};
+    check_invalid(far_param, 2, "word 0: a parameter outside the values"); /* 5 + 4 > 7 */
+    uint32_t wide[18] = {W(CONST, F, 17)}; /* 17 components: more than a value holds */
+    check_invalid(wide, 18, "a constant of a wrong shape");
+    const uint32_t base[] = {W(CONST, 9, 1), 0};
+    check_invalid(base, 2, "a constant of a wrong shape");
+    const uint32_t underflow[] = {W(CONST, F, 1), 0, W(BINARY, HFX_EV_ADD, 0)};
+    check_invalid(underflow, 3, "word 2: takes more values than the stack holds");
+    const uint32_t two[] = {W(CONST, F, 1), 0, W(CONST, F, 1), 0};
+    check_invalid(two, 4, "does not leave exactly one value");
+    uint32_t deep[18];
+    for (int i = 0; i < 9; i++) deep[2 * i] = W(CONST, F, 1), deep[2 * i + 1] = 0;
+    check_invalid(deep, 18, "word 16: the stack grows too deep");
+    const uint32_t empty_table[] = {W(CONST, I, 1), 0, W(TABLE, I, 1), 0};
+    check_invalid(empty_table, 4, "a table of a wrong shape");
+    const uint32_t huge_table[] = {W(CONST, I, 1), 0, W(TABLE, I, 16), 0xffffffffu, 1};
+    check_invalid(huge_table, 5, "word 2: operands past the end");
+    const uint32_t bad_fn[] = {W(CONST, F, 1), 0, W(CALL, 200, 0)};
+    check_invalid(bad_fn, 3, "an unknown function");
+    const uint32_t unary_add[] = {W(CONST, F, 1), 0, W(UNARY, HFX_EV_ADD, 0)};
+    check_invalid(unary_add, 3, "an unknown unary operator");
+    const uint32_t binary_neg[] = {W(CONST, F, 1), 0, W(CONST, F, 1), 0, W(BINARY, HFX_EV_NEG, 0)};
+    check_invalid(binary_neg, 5, "an unknown binary operator");
+    const uint32_t swz[] = {W(CONST, F, 1), 0, W(SWIZZLE, 5, 0), 0};
+    check_invalid(swz, 4, "a swizzle of a wrong size");
+}
+
+/* Random word changes to a valid program: whatever the validator passes runs in bounds. */
+static void random_changes_never_run_out_of_bounds(void) {
+    const uint32_t base[] = {W(PARAM, I, 1), 1, W(TABLE, F, 2), 3, fbits(1), fbits(2), fbits(3), fbits(4), fbits(5),
+                             fbits(6), W(PARAM, F, 4), 2, W(SWIZZLE, 2, 0), 0x21u, W(BINARY, HFX_EV_MUL, 0),
+                             W(CALL, HFX_EV_FN_LENGTH, 0)};
+    enum { N = sizeof base / sizeof base[0] };
+    uint32_t code[N];
+    uint32_t seed = 12345, accepted = 0;
+    hfx_ev_value v;
+    CHECK_INT(hfx_evc_validate(base, N, 7, NULL, 0), 0);
+    for (int round = 0; round < 20000; round++) {
+        memcpy(code, base, sizeof code);
+        for (int k = 0; k < 1 + round % 3; k++) {
+            seed = seed * 1664525u + 1013904223u;
+            uint32_t at = (seed >> 8) % N;
+            seed = seed * 1664525u + 1013904223u;
+            code[at] = (round & 1) ? seed : code[at] ^ (1u << (seed >> 27));
+        }
+        uint32_t len = round % 5 == 0 ? (seed >> 4) % N + 1 : N;
+        if (hfx_evc_validate(code, len, 7, NULL, 0) == 0) {
+            accepted++;
+            (void)hfx_evc_run(code, len, values, &v);
+        }
+    }
+    CHECK(accepted > 0); /* some changes keep a valid program: those ran */
+}
+
+int main(void) {
+    setup();
+    RUN(parameter_times_constant);
+    RUN(table_index_clamps);
+    RUN(swizzle_promotion_and_calls);
+    RUN(select_and_failures);
+    RUN(validator_refuses);
+    RUN(random_changes_never_run_out_of_bounds);
+    return test_summary();
+}
