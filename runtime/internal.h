@@ -10,6 +10,7 @@
 
 #include "effect.h"
 #include "gl.h"
+#include "grow.h"
 #include "hfx/hfx.h"
 #include "states.h"
 

@@ -52,13 +52,7 @@ static GLenum param_target(const hfx_fx_effect *fx, uint32_t param, hfx_fx_dim d
 
 static int push_sampler(hfx_shared *sh, uint32_t *cap, const hfx_sampler_desc *base,
                         const hfx_fx_state *const *dyn, uint32_t dyn_count, uint32_t *index) {
-    if (sh->sampler_count == *cap) {
-        uint32_t n = *cap ? *cap * 2 : 8;
-        hfx_rt_sampler *s = realloc(sh->samplers, n * sizeof *s);
-        if (!s) return hfx_rt_fail(sh->dev, HFX_ERR_MEMORY, "out of memory");
-        sh->samplers = s;
-        *cap = n;
-    }
+    if (!HFX_GROW(sh->samplers, sh->sampler_count, *cap, 8)) return hfx_rt_fail(sh->dev, HFX_ERR_MEMORY, "out of memory");
     *index = sh->sampler_count;
     int rc = hfx_rt_sampler_create(sh, &sh->samplers[sh->sampler_count++], base, dyn, dyn_count);
     return rc ? hfx_rt_fail(sh->dev, rc, "could not create a GL sampler object") : HFX_OK;

@@ -145,13 +145,7 @@ int hfx_rt_upload_setup(const hfx_gl *gl, GLenum type, const hfx_fx_param *p, hf
 }
 
 int hfx_rt_upload_add(hfx_device *dev, hfx_rt_program *p, uint32_t *cap, const hfx_upload *up) {
-    if (p->upload_count == *cap) {
-        uint32_t n = *cap ? *cap * 2 : 8;
-        hfx_upload *grown = realloc(p->uploads, n * sizeof *grown);
-        if (!grown) return HFX_ERR_MEMORY;
-        p->uploads = grown;
-        *cap = n;
-    }
+    if (!HFX_GROW(p->uploads, p->upload_count, *cap, 8)) return HFX_ERR_MEMORY;
     p->uploads[p->upload_count++] = *up;
     if (up->kind == UK_CONVERT && up->words > dev->scratch_size) {
         float *s = realloc(dev->scratch, up->words * sizeof *s);

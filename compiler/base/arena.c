@@ -75,3 +75,9 @@ char *hfx_arena_printf(hfx_arena *a, const char *fmt, ...) {
     va_end(ap);
     return p;
 }
+
+void *hfx_arena_grow(void *arena, void *old, size_t old_bytes, size_t new_bytes) {
+    void *p = hfx_arena_alloc(arena, new_bytes);
+    if (p && old_bytes) memcpy(p, old, old_bytes);
+    return p;
+}

@@ -6,6 +6,8 @@
 #include <stddef.h>
 #include <string.h>
 
+#include "grow.h"
+
 typedef struct hfx_arena_block hfx_arena_block;
 typedef struct hfx_arena {
     hfx_arena_block *head;
@@ -45,6 +47,11 @@ static inline void *hfx_arena_alloc_raw(hfx_arena *a, size_t size) {
 char *hfx_arena_strdup(hfx_arena *a, const char *s);
 char *hfx_arena_strndup(hfx_arena *a, const char *s, size_t n);
 char *hfx_arena_printf(hfx_arena *a, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+/* hfx_grow's allocator in an arena: a new block with the old contents; the old one stays. */
+void *hfx_arena_grow(void *arena, void *old, size_t old_bytes, size_t new_bytes);
+#define HFX_ARENA_GROW(arena, arr, count, cap, first) \
+    hfx_grow((void **)&(arr), sizeof *(arr), (count), &(cap), (first), hfx_arena_grow, (arena))
 
 #define HFX_NEW(arena, T) ((T *)hfx_arena_alloc((arena), sizeof(T)))
 #define HFX_NEW_ARRAY(arena, T, n) ((T *)hfx_arena_alloc((arena), sizeof(T) * (size_t)(n)))

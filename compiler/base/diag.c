@@ -1,4 +1,5 @@
 #include "base/diag.h"
+#include "base/sbuf.h"
 
 #include <stdarg.h>
 #include <stdio.h>
@@ -12,13 +13,7 @@ void hfx_diags_init(hfx_diags *d, hfx_arena *arena, unsigned flags) {
 }
 
 uint32_t hfx_diags_add_file(hfx_diags *d, const char *name, const char *path, const char *text, uint32_t size) {
-    if (d->file_count == d->file_cap) {
-        uint32_t cap = d->file_cap ? d->file_cap * 2 : 8;
-        hfx_source *files = HFX_NEW_ARRAY(d->arena, hfx_source, cap);
-        if (d->file_count) memcpy(files, d->files, sizeof *files * d->file_count);
-        d->files = files;
-        d->file_cap = cap;
-    }
+    if (!HFX_ARENA_GROW(d->arena, d->files, d->file_count, d->file_cap, 8)) return 0; /* out of memory: the first file stands in */
     hfx_source *s = &d->files[d->file_count];
     s->name = hfx_arena_strdup(d->arena, name);
     s->path = hfx_arena_strdup(d->arena, path ? path : name);
@@ -30,13 +25,7 @@ uint32_t hfx_diags_add_file(hfx_diags *d, const char *name, const char *path, co
 static void add(hfx_diags *d, hfxc_severity sev, hfx_loc loc, unsigned code, const char *fmt, va_list ap) {
     if (sev == HFXC_WARNING && (d->flags & HFXC_NO_WARNINGS)) return;
     if (sev == HFXC_WARNING && (d->flags & HFXC_WERROR)) sev = HFXC_ERROR;
-    if (d->count == d->cap) {
-        uint32_t cap = d->cap ? d->cap * 2 : 16;
-        hfxc_diag *items = HFX_NEW_ARRAY(d->arena, hfxc_diag, cap);
-        if (d->count) memcpy(items, d->items, sizeof *items * d->count);
-        d->items = items;
-        d->cap = cap;
-    }
+    if (!HFX_ARENA_GROW(d->arena, d->items, d->count, d->cap, 16)) return;
     char buf[1024];
     vsnprintf(buf, sizeof buf, fmt, ap);
     hfxc_diag *g = &d->items[d->count++];
@@ -83,20 +72,9 @@ static const char *line_start(const hfx_source *s, uint32_t line, size_t *len) {
     return p;
 }
 
-static void append(char **buf, size_t *len, size_t *cap, const char *s, size_t n) {
-    if (*len + n + 1 > *cap) {
-        while (*len + n + 1 > *cap) *cap = *cap ? *cap * 2 : 256;
-        *buf = realloc(*buf, *cap);
-    }
-    memcpy(*buf + *len, s, n);
-    *len += n;
-    (*buf)[*len] = 0;
-}
-
 char *hfx_diags_format(const hfx_diags *d, int caret) {
-    char *buf = NULL;
-    size_t len = 0, cap = 0;
-    append(&buf, &len, &cap, "", 0);
+    sbuf b = {0};
+    sb_putn(&b, "", 0);
     for (uint32_t i = 0; i < d->count; i++) {
         const hfxc_diag *g = &d->items[i];
         static const char *const kinds[] = {"error", "warning", "note"};
@@ -107,21 +85,21 @@ char *hfx_diags_format(const hfx_diags *d, int caret) {
         else
             n = snprintf(head, sizeof head, "%s(%u,%u): %s X%04u: %s\n", g->file, g->line, g->col,
                          kinds[g->severity], g->code, g->message);
-        append(&buf, &len, &cap, head, n < (int)sizeof head ? (size_t)n : sizeof head - 1);
+        sb_putn(&b, head, n < (int)sizeof head ? (size_t)n : sizeof head - 1);
         if (!caret || !g->line) continue;
         for (uint32_t f = 0; f < d->file_count; f++) {
             if (strcmp(d->files[f].name, g->file) != 0) continue;
             size_t ln;
             const char *src = line_start(&d->files[f], g->line, &ln);
             if (!src) break;
-            append(&buf, &len, &cap, "  ", 2);
-            append(&buf, &len, &cap, src, ln);
-            append(&buf, &len, &cap, "\n  ", 3);
+            sb_putn(&b, "  ", 2);
+            sb_putn(&b, src, ln);
+            sb_putn(&b, "\n  ", 3);
             for (unsigned c = 1; c < g->col && c <= ln; c++)
-                append(&buf, &len, &cap, src[c - 1] == '\t' ? "\t" : " ", 1);
-            append(&buf, &len, &cap, "^\n", 2);
+                sb_putn(&b, src[c - 1] == '\t' ? "\t" : " ", 1);
+            sb_putn(&b, "^\n", 2);
             break;
         }
     }
-    return buf;
+    return sb_take(&b);
 }

@@ -1,4 +1,5 @@
-/* sbuf.c: the growable text buffer shared by the GLSL printer, the IR dump and the SPIR-V rewrite. */
+/* sbuf.c: the one growable text buffer (GLSL printer, IR and AST dumps, diagnostics, SPIR-V rewrite,
+ * preprocessed text). */
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -38,4 +39,12 @@ void sb_printf(sbuf *b, const char *fmt, ...) {
     va_end(ap);
     sb_putn(b, big, (size_t)n);
     free(big);
+}
+
+char *sb_take(sbuf *b) {
+    if (b->oom) {
+        free(b->d);
+        b->d = NULL;
+    }
+    return b->d;
 }

@@ -11,5 +11,6 @@ typedef struct sbuf { char *d; size_t len, cap; bool oom; } sbuf;
 void sb_put(sbuf *b, const char *s);                    /* appends a string */
 void sb_putn(sbuf *b, const char *s, size_t n);         /* appends n bytes of s */
 void sb_printf(sbuf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3))); /* appends formatted text */
+char *sb_take(sbuf *b); /* the text, the caller's to free; NULL (and freed) after a failed allocation */
 
 #endif

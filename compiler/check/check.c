@@ -47,13 +47,7 @@ uint32_t ck_lookup_funcs(check_ctx *c, const char *name, hfx_decl **out, uint32_
 }
 
 static void push_entry(check_ctx *c, hfx_decl *d) {
-    if (c->entry_count == c->entry_cap) {
-        uint32_t cap = c->entry_cap ? c->entry_cap * 2 : 256;
-        check_entry *e = realloc(c->entries, sizeof *e * cap);
-        if (!e) { c->oom = true; return; }
-        c->entries = e;
-        c->entry_cap = cap;
-    }
+    if (!HFX_GROW(c->entries, c->entry_count, c->entry_cap, 256)) { c->oom = true; return; }
     uint32_t h = hash_name(d->name);
     c->entries[c->entry_count] = (check_entry){d->name, d, c->depth, c->buckets[h]};
     c->buckets[h] = (int32_t)c->entry_count++;
@@ -178,13 +172,7 @@ void ck_annotations(check_ctx *c, hfx_annotation_ast *a, uint32_t n) {
 static hfx_func *defined(hfx_func *f) { return f && f->definition ? f->definition : f; }
 
 void ck_record_call(check_ctx *c, hfx_func *to, hfx_loc loc, bool compile) {
-    if (c->edge_count == c->edge_cap) {
-        uint32_t cap = c->edge_cap ? c->edge_cap * 2 : 64;
-        check_edge *e = realloc(c->edges, sizeof *e * cap);
-        if (!e) { c->oom = true; return; }
-        c->edges = e;
-        c->edge_cap = cap;
-    }
+    if (!HFX_GROW(c->edges, c->edge_count, c->edge_cap, 64)) { c->oom = true; return; }
     c->edges[c->edge_count++] = (check_edge){c->func ? c->func->func : NULL, to, loc, compile};
 }
 

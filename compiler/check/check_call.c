@@ -276,14 +276,7 @@ typedef struct leaf_list {
 } leaf_list;
 
 static void add_leaf(check_ctx *c, leaf_list *l, const hfx_type *t) {
-    if (l->count == l->cap) {
-        uint32_t cap = l->cap ? l->cap * 2 : 16;
-        const hfx_type **n = HFX_NEW_ARRAY(c->arena, const hfx_type *, cap);
-        if (!n) { c->oom = true; return; }
-        if (l->count) memcpy(n, l->types, sizeof *n * l->count);
-        l->types = n;
-        l->cap = cap;
-    }
+    if (!HFX_ARENA_GROW(c->arena, l->types, l->count, l->cap, 16)) { c->oom = true; return; }
     l->types[l->count++] = t;
 }
 
@@ -311,14 +304,7 @@ typedef struct expr_list {
 } expr_list;
 
 static void add_expr(check_ctx *c, expr_list *l, hfx_expr *e) {
-    if (l->count == l->cap) {
-        uint32_t cap = l->cap ? l->cap * 2 : 16;
-        hfx_expr **n = HFX_NEW_ARRAY(c->arena, hfx_expr *, cap);
-        if (!n) { c->oom = true; return; }
-        if (l->count) memcpy(n, l->items, sizeof *n * l->count);
-        l->items = n;
-        l->cap = cap;
-    }
+    if (!HFX_ARENA_GROW(c->arena, l->items, l->count, l->cap, 16)) { c->oom = true; return; }
     l->items[l->count++] = e;
 }
 

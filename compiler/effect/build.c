@@ -11,17 +11,9 @@
 #include "glsl/spirv.h"
 
 bool hfx_build_grow(hfx_builder *b, void **arr, size_t elem, uint32_t count, uint32_t *cap) {
-    if (count < *cap) return true;
-    uint32_t n = *cap ? *cap * 2 : 8;
-    void *p = realloc(*arr, elem * n);
-    if (!p) {
-        b->failed_alloc = true;
-        return false;
-    }
-    memset((char *)p + elem * *cap, 0, elem * (n - *cap));
-    *arr = p;
-    *cap = n;
-    return true;
+    if (hfx_grow(arr, elem, count, cap, 8, NULL, NULL)) return true;
+    b->failed_alloc = true;
+    return false;
 }
 
 char *hfx_build_strdup(hfx_builder *b, const char *s) {

@@ -34,13 +34,7 @@ static bool set_has(const strset *s, const char *x) {
 
 static void set_add(hfx_arena *a, strset *s, const char *x) {
     if (set_has(s, x)) return;
-    if (s->count == s->cap) {
-        uint32_t cap = s->cap ? s->cap * 2 : 16;
-        const char **n = HFX_NEW_ARRAY(a, const char *, cap);
-        if (s->count) memcpy(n, s->items, sizeof *n * s->count);
-        s->items = n;
-        s->cap = cap;
-    }
+    if (!HFX_ARENA_GROW(a, s->items, s->count, s->cap, 16)) return;
     s->items[s->count++] = x;
 }
 

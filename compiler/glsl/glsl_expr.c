@@ -45,13 +45,7 @@ static void add_struct(gp *p, const hfx_type *t) {
         while (f->kind == TY_ARRAY) f = f->elem;
         if (f->kind == TY_STRUCT) add_struct(p, f);
     }
-    if (p->struct_count == p->struct_cap) {
-        uint32_t cap = p->struct_cap ? p->struct_cap * 2 : 8;
-        const hfx_type **n = HFX_NEW_ARRAY(p->c->arena, const hfx_type *, cap);
-        if (p->struct_count) memcpy(n, p->structs, sizeof *n * p->struct_count);
-        p->structs = n;
-        p->struct_cap = cap;
-    }
+    if (!HFX_ARENA_GROW(p->c->arena, p->structs, p->struct_count, p->struct_cap, 8)) return;
     p->structs[p->struct_count++] = t;
     sb_printf(&p->structs_text, "struct %s\n{\n", glsl_type(p, t));
     for (uint32_t i = 0; i < t->st->field_count; i++) {
@@ -165,13 +159,7 @@ void glsl_zero(gp *p, const hfx_type *t) {
 bool glsl_helper(gp *p, const char *key) {
     for (uint32_t i = 0; i < p->helper_count; i++)
         if (strcmp(p->helper_keys[i], key) == 0) return false;
-    if (p->helper_count == p->helper_cap) {
-        uint32_t cap = p->helper_cap ? p->helper_cap * 2 : 16;
-        const char **n = HFX_NEW_ARRAY(p->c->arena, const char *, cap);
-        if (p->helper_count) memcpy(n, p->helper_keys, sizeof *n * p->helper_count);
-        p->helper_keys = n;
-        p->helper_cap = cap;
-    }
+    if (!HFX_ARENA_GROW(p->c->arena, p->helper_keys, p->helper_count, p->helper_cap, 16)) return false;
     p->helper_keys[p->helper_count++] = hfx_arena_strdup(p->c->arena, key);
     return true;
 }

@@ -22,14 +22,10 @@ typedef struct builder {
     bool failed;
 } builder;
 
-/* Growable arrays in the arena: the old block is simply abandoned. */
+/* Growable arrays in the arena (hfx_grow): the old block is simply abandoned. */
 static void *grow(hfx_arena *a, void *old, uint32_t *cap, uint32_t count, size_t elem) {
-    if (count < *cap) return old;
-    uint32_t ncap = *cap ? *cap * 2 : 8;
-    void *n = hfx_arena_alloc(a, elem * ncap);
-    if (old && n) memcpy(n, old, elem * count);
-    *cap = ncap;
-    return n;
+    void *items = old;
+    return hfx_grow(&items, elem, count, cap, 8, hfx_arena_grow, a) ? items : NULL;
 }
 
 static void *map_get(const var_map *m, const void *key) {

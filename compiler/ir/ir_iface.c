@@ -26,13 +26,7 @@ const char *ir_canonical_semantic(hfx_arena *a, const char *semantic) {
 typedef struct leaves { ir_leaf *items; uint32_t count, cap; bool bad; } leaves;
 
 static void push(ir_ctx *c, leaves *l, const char *sem, const hfx_type *ty, const char *path, hfx_loc loc) {
-    if (l->count == l->cap) {
-        uint32_t cap = l->cap ? l->cap * 2 : 8;
-        ir_leaf *n = HFX_NEW_ARRAY(c->arena, ir_leaf, cap);
-        if (l->count) memcpy(n, l->items, sizeof *n * l->count);
-        l->items = n;
-        l->cap = cap;
-    }
+    if (!HFX_ARENA_GROW(c->arena, l->items, l->count, l->cap, 8)) return;
     l->items[l->count++] = (ir_leaf){ ir_canonical_semantic(c->arena, sem), ty, path, loc };
 }
 

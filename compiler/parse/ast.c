@@ -4,6 +4,8 @@
  * bounds tree depth; the dump stops at DUMP_MAX_DEPTH anyway). */
 #include "parse/ast.h"
 
+#include "base/sbuf.h"
+
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -12,29 +14,11 @@
 enum { DUMP_MAX_DEPTH = 4500 }; /* just above the parser's own limits (ast.h trees from hfx_parse) */
 
 typedef struct dump {
-    char *buf;
-    size_t len, cap;
-    bool failed;
+    sbuf out;
     hfx_arena arena;  /* for type names */
 } dump;
 
-static void put(dump *d, const char *s, size_t n) {
-    if (d->failed) return;
-    if (d->len + n + 1 > d->cap) {
-        size_t cap = d->cap ? d->cap : 1024;
-        while (d->len + n + 1 > cap) cap *= 2;
-        char *b = realloc(d->buf, cap);
-        if (!b) {
-            d->failed = true;
-            return;
-        }
-        d->buf = b;
-        d->cap = cap;
-    }
-    memcpy(d->buf + d->len, s, n);
-    d->len += n;
-    d->buf[d->len] = 0;
-}
+static void put(dump *d, const char *s, size_t n) { sb_putn(&d->out, s, n); }
 
 static void puts_(dump *d, const char *s) { put(d, s, strlen(s)); }
 
@@ -444,11 +428,7 @@ char *hfx_ast_dump(const hfx_ast *ast) {
     puts_(&d, "");
     for (uint32_t i = 0; ast && i < ast->decl_count; i++) dump_decl(&d, ast->decls[i], 0);
     hfx_arena_free(&d.arena);
-    if (d.failed) {
-        free(d.buf);
-        return NULL;
-    }
-    return d.buf;
+    return sb_take(&d.out);
 }
 
 _Static_assert(OP_BITNOT - OP_NEG == HFX_EV_BITNOT - HFX_EV_NEG && OP_OR - OP_ADD == HFX_EV_OR - HFX_EV_ADD,

@@ -13,14 +13,7 @@
 parse_vec parse_vec_new(void) { return (parse_vec){NULL, 0, 0}; }
 
 parse_vec parse_vec_push(parse_ctx *ctx, parse_vec v, void *item) {
-    if (v.count == v.cap) {
-        uint32_t cap = v.cap ? v.cap * 2 : 4;
-        void **items = HFX_NEW_ARRAY(ctx->arena, void *, cap);
-        if (!items) return v;
-        if (v.count) memcpy(items, v.items, sizeof *items * v.count);
-        v.items = items;
-        v.cap = cap;
-    }
+    if (!HFX_ARENA_GROW(ctx->arena, v.items, v.count, v.cap, 4)) return v;
     v.items[v.count++] = item;
     return v;
 }

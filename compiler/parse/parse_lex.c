@@ -22,14 +22,7 @@ parse_typename *parse_find_typename(parse_ctx *ctx, const char *name) {
 }
 
 static parse_typename *add_typename(parse_ctx *ctx, const char *name) {
-    if (ctx->name_count == ctx->name_cap) {
-        uint32_t cap = ctx->name_cap ? ctx->name_cap * 2 : 32;
-        parse_typename **names = HFX_NEW_ARRAY(ctx->arena, parse_typename *, cap);
-        if (!names) return NULL;
-        if (ctx->name_count) memcpy(names, ctx->names, sizeof *names * ctx->name_count);
-        ctx->names = names;
-        ctx->name_cap = cap;
-    }
+    if (!HFX_ARENA_GROW(ctx->arena, ctx->names, ctx->name_count, ctx->name_cap, 32)) return NULL;
     parse_typename *e = HFX_NEW(ctx->arena, parse_typename);
     if (!e) return NULL;
     e->name = name;

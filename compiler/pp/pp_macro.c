@@ -289,13 +289,7 @@ typedef struct tok_vec {
 } tok_vec;
 
 static void vec_push(hfx_pp *pp, tok_vec *v, hfx_token *t) {
-    if (v->count == v->cap) {
-        uint32_t cap = v->cap ? v->cap * 2 : 32;
-        hfx_token **items = HFX_NEW_ARRAY(pp->arena, hfx_token *, cap);
-        if (v->count) memcpy(items, v->items, sizeof *items * v->count);
-        v->items = items;
-        v->cap = cap;
-    }
+    if (!HFX_ARENA_GROW(pp->arena, v->items, v->count, v->cap, 32)) return;
     v->items[v->count++] = t;
 }
 

@@ -6,27 +6,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/sbuf.h"
 #include "pp/token.h"
 
-typedef struct text_buf {
-    char *s;
-    size_t len, cap;
-} text_buf;
+typedef sbuf text_buf;
 
-static void put(text_buf *b, const char *s, size_t n) {
-    if (b->len + n + 1 > b->cap) {
-        size_t cap = b->cap ? b->cap : 256;
-        while (b->len + n + 1 > cap) cap *= 2;
-        char *p = realloc(b->s, cap);
-        if (!p) return;
-        b->s = p;
-        b->cap = cap;
-    }
-    memcpy(b->s + b->len, s, n);
-    b->len += n;
-    b->s[b->len] = 0;
-}
-
+static void put(text_buf *b, const char *s, size_t n) { sb_putn(b, s, n); }
 static void put_str(text_buf *b, const char *s) { put(b, s, strlen(s)); }
 
 static bool is_word_char(char c) {
@@ -77,5 +62,5 @@ char *hfx_tokens_to_text(const hfx_diags *d, const hfx_token *t) {
         put(&b, t->text, t->len);
     }
     put(&b, "\n", 1);
-    return b.s;
+    return sb_take(&b);
 }

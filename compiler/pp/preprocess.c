@@ -96,26 +96,14 @@ static void check_line_end(hfx_pp *pp, const hfx_token *t, const char *directive
 /* ---- include frames and conditionals ---- */
 
 static void push_frame(hfx_pp *pp, uint32_t file) {
-    if (pp->frame_count == pp->frame_cap) {
-        uint32_t cap = pp->frame_cap ? pp->frame_cap * 2 : 16;
-        pp_frame *frames = HFX_NEW_ARRAY(pp->arena, pp_frame, cap);
-        if (pp->frame_count) memcpy(frames, pp->frames, sizeof *frames * pp->frame_count);
-        pp->frames = frames;
-        pp->frame_cap = cap;
-    }
+    if (!HFX_ARENA_GROW(pp->arena, pp->frames, pp->frame_count, pp->frame_cap, 16)) return;
     pp->frames[pp->frame_count++] = (pp_frame){file, pp->cond_count};
 }
 
 static pp_frame *top_frame(hfx_pp *pp) { return &pp->frames[pp->frame_count - 1]; }
 
 static void push_cond(hfx_pp *pp, hfx_loc loc, const char *name, bool taken) {
-    if (pp->cond_count == pp->cond_cap) {
-        uint32_t cap = pp->cond_cap ? pp->cond_cap * 2 : 16;
-        pp_cond *conds = HFX_NEW_ARRAY(pp->arena, pp_cond, cap);
-        if (pp->cond_count) memcpy(conds, pp->conds, sizeof *conds * pp->cond_count);
-        pp->conds = conds;
-        pp->cond_cap = cap;
-    }
+    if (!HFX_ARENA_GROW(pp->arena, pp->conds, pp->cond_count, pp->cond_cap, 16)) return;
     pp->conds[pp->cond_count++] = (pp_cond){loc, name, taken, false};
 }
 
@@ -338,13 +326,7 @@ static hfx_token *do_line(hfx_pp *pp, hfx_token *hash, hfx_token *name) {
     }
     check_line_end(pp, fname, "line");
     pp_file_info *fi = pp_file(pp, hash->loc.file);
-    if (fi->map_count == fi->map_cap) {
-        uint32_t cap = fi->map_cap ? fi->map_cap * 2 : 4;
-        pp_line_map *maps = HFX_NEW_ARRAY(pp->arena, pp_line_map, cap);
-        if (fi->map_count) memcpy(maps, fi->maps, sizeof *maps * fi->map_count);
-        fi->maps = maps;
-        fi->map_cap = cap;
-    }
+    if (!HFX_ARENA_GROW(pp->arena, fi->maps, fi->map_count, fi->map_cap, 4)) return rest;
     fi->maps[fi->map_count++] = map;
     pp->has_line_maps = true;
     return rest;
@@ -375,13 +357,7 @@ static hfx_token *do_pragma(hfx_pp *pp, hfx_token *hash, hfx_token *name) {
     if (is_ident(line, "once")) {
         const char *real = pp_file(pp, top_frame(pp)->file)->real;
         if (real && !once_seen(pp, real)) {
-            if (pp->once_count == pp->once_cap) {
-                uint32_t cap = pp->once_cap ? pp->once_cap * 2 : 8;
-                const char **once = HFX_NEW_ARRAY(pp->arena, const char *, cap);
-                if (pp->once_count) memcpy(once, pp->once, sizeof *once * pp->once_count);
-                pp->once = once;
-                pp->once_cap = cap;
-            }
+            if (!HFX_ARENA_GROW(pp->arena, pp->once, pp->once_count, pp->once_cap, 8)) return rest;
             pp->once[pp->once_count++] = real;
         }
         return rest;

@@ -8,9 +8,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "grow.h"
 #include "mesh.h"
 
-typedef struct { float *data; size_t count, cap; int width; } float_list;
+typedef struct { float *data; uint32_t count, cap; int width; } float_list;
 typedef struct { long v, t, n; uint32_t index; int used; } corner_slot;
 
 typedef struct {
@@ -22,13 +23,7 @@ typedef struct {
 } obj_reader;
 
 static int list_push(float_list *l, const float *v) {
-    if (l->count == l->cap) {
-        size_t cap = l->cap ? l->cap * 2 : 1024;
-        float *d = realloc(l->data, cap * (size_t)l->width * sizeof *d);
-        if (!d) return 0;
-        l->data = d;
-        l->cap = cap;
-    }
+    if (!hfx_grow((void **)&l->data, (size_t)l->width * sizeof *l->data, l->count, &l->cap, 1024, NULL, NULL)) return 0;
     memcpy(l->data + l->count * (size_t)l->width, v, (size_t)l->width * sizeof *v);
     l->count++;
     return 1;

@@ -17,13 +17,7 @@ static void add(ir_ctx *c, uses *u, ir_var *v) {
     v->used = true;
     if (v->copy_of) add(c, u, v->copy_of);
     if (v->init) ir_walk_expr(c, &v->init, visit, u);
-    if (u->count == u->cap) {
-        uint32_t cap = u->cap ? u->cap * 2 : 16;
-        ir_var **n = HFX_NEW_ARRAY(c->arena, ir_var *, cap);
-        for (uint32_t i = 0; i < u->count; i++) n[i] = u->list[i];
-        u->list = n;
-        u->cap = cap;
-    }
+    if (!HFX_ARENA_GROW(c->arena, u->list, u->count, u->cap, 16)) return;
     u->list[u->count++] = v;
 }
 
