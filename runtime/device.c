@@ -26,6 +26,27 @@ int hfx_rt_fail(hfx_device *dev, int code, const char *fmt, ...) {
     return code;
 }
 
+/* A load-time note about the effect (a state GL honours only in part), with the state's
+ * position: hfx_effect_warnings returns them all. */
+void hfx_shared_warn(hfx_shared *sh, const hfx_fx_state *st, const char *fmt, ...) {
+    char msg[512], line[700];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    const char *name = sh->fx->source_name ? sh->fx->source_name : "effect";
+    if (st && st->line)
+        snprintf(line, sizeof line, "%s(%u,%u): warning: %s\n", name, (unsigned)st->line, (unsigned)st->col, msg);
+    else
+        snprintf(line, sizeof line, "%s: warning: %s\n", name, msg);
+    size_t n = strlen(line);
+    char *w = realloc(sh->warnings, sh->warnings_len + n + 1);
+    if (!w) return;
+    memcpy(w + sh->warnings_len, line, n + 1);
+    sh->warnings = w;
+    sh->warnings_len += n;
+}
+
 static int has_extension(hfx_device *dev, const char *name) {
     GLint n = 0;
     dev->gl.GetIntegerv(GL_NUM_EXTENSIONS, &n);

@@ -299,6 +299,8 @@ static inline void hfx_rt_use_program(hfx_device *dev, GLuint program) {
 
 /* device.c */
 int hfx_rt_fail(hfx_device *dev, int code, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+/* A load-time warning about the effect, at st's position when it has one (hfx_effect_warnings). */
+void hfx_shared_warn(hfx_shared *sh, const hfx_fx_state *st, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 void hfx_rt_read_state(hfx_device *dev, hfx_glstate *s);
 void hfx_rt_write_state(hfx_device *dev, const hfx_glstate *want);
 void hfx_rt_bind_unit(hfx_device *dev, int unit, GLenum target, GLuint texture, GLuint sampler);
@@ -383,6 +385,13 @@ int hfx_rt_sampler_create(hfx_shared *sh, hfx_rt_sampler *s, const hfx_sampler_d
                           const hfx_fx_state *const *dyn, uint32_t dyn_count);
 void hfx_rt_sampler_update(hfx_effect *fx, hfx_rt_sampler *s);
 void hfx_rt_sampler_free(hfx_device *dev, hfx_rt_sampler *s);
+int hfx_rt_samplers_make(hfx_shared *sh, uint32_t *cap);          /* the effect's samplers, in order */
+void hfx_rt_sampler_check_state(hfx_shared *sh, const hfx_fx_state *st); /* notes what GL honours in part */
+/* Pass-level MinFilter[n] = ... for binding b's unit: a sampler object of its own. */
+int hfx_rt_sampler_override(hfx_shared *sh, uint32_t *cap, const hfx_fx_pass *fp, struct hfx_rt_binding *b);
+
+/* passes.c: pass `index` of the effect, ready for Apply. */
+int hfx_rt_pass_build(hfx_shared *sh, uint32_t *cap, uint32_t index);
 
 /* render_states.c */
 enum { /* GL state groups */
@@ -406,7 +415,6 @@ uint32_t hfx_rt_param_accept(const hfx_fx_param *i);
 /* load.c */
 /* Loads a compiled effect built by hand (tests, tools); takes fx, even on failure. */
 hfx_effect *hfx_rt_effect_from_fx(hfx_device *dev, hfx_fx_effect *fx, const hfx_load_options *opt, char **errors);
-void hfx_shared_warn(hfx_shared *sh, const hfx_fx_state *st, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 char *hfx_rt_strdup(const char *s); /* malloc'ed copy, NULL when out of memory */
 
 #endif

@@ -1,4 +1,6 @@
-/* sampler.c: D3D9 sampler states as GL sampler objects.
+/* sampler.c: D3D9 sampler states as GL sampler objects: an effect's sampler_state blocks and
+ * pass-level overrides described (hfx_sampler_desc) and made into objects, updated at Apply
+ * when a state reads a parameter.
  *
  * - MinFilter + MipFilter make GL_TEXTURE_MIN_FILTER (MipFilter None: no mipmapping);
  *   Anisotropic filters linearly and sets GL_TEXTURE_MAX_ANISOTROPY to MaxAnisotropy when
@@ -125,3 +127,92 @@ void hfx_rt_sampler_free(hfx_device *dev, hfx_rt_sampler *s) {
     free(s->dynamic);
     memset(s, 0, sizeof *s);
 }
+
+/* ---- sampler descriptions of an effect: its sampler_state blocks and pass overrides ---- */
+
+static int push_sampler(hfx_shared *sh, uint32_t *cap, const hfx_sampler_desc *base,
+                        const hfx_fx_state *const *dyn, uint32_t dyn_count, uint32_t *index) {
+    if (!HFX_GROW(sh->samplers, sh->sampler_count, *cap, 8)) return hfx_rt_fail(sh->dev, HFX_ERR_MEMORY, "out of memory");
+    *index = sh->sampler_count;
+    int rc = hfx_rt_sampler_create(sh, &sh->samplers[sh->sampler_count++], base, dyn, dyn_count);
+    return rc ? hfx_rt_fail(sh->dev, rc, "could not create a GL sampler object") : HFX_OK;
+}
+
+/* Adds a state to a sampler being built: constants into the description, PARAM and EXPR ones
+ * (computed at Apply) to dyn. */
+static void add_sampler_state(const hfx_fx_state *st, hfx_sampler_desc *d, const hfx_fx_state **dyn, uint32_t *n) {
+    if (st->kind == HFX_FX_VALUE_UNSUPPORTED) return; /* reported by check_sampler_state */
+    if (st->kind == HFX_FX_VALUE_PARAM || st->kind == HFX_FX_VALUE_EXPR) {
+        if (*n < 32) dyn[(*n)++] = st;
+        return;
+    }
+    hfx_rs_value v;
+    hfx_rs_resolve(NULL, st, &v);
+    hfx_sampler_desc_apply(d, st->id, &v);
+}
+
+static void sampler_desc_of(const hfx_fx_effect *fx, uint32_t sampler, hfx_sampler_desc *d,
+                            const hfx_fx_state **dyn, uint32_t *n) {
+    hfx_sampler_desc_default(d);
+    *n = 0;
+    if (sampler >= fx->sampler_count) return;
+    const hfx_fx_sampler *s = &fx->samplers[sampler];
+    for (uint32_t i = 0; i < s->state_count && s->first_state + i < fx->state_count; i++) {
+        const hfx_fx_state *st = &fx->states[s->first_state + i];
+        if (st->id != HFX_ST_TEXTURE) add_sampler_state(st, d, dyn, n);
+    }
+}
+
+/* Reports, once at load, a sampler state GL honours only in part. */
+void hfx_rt_sampler_check_state(hfx_shared *sh, const hfx_fx_state *st) {
+    const hfx_state_info *info = hfx_state_by_id(st->id);
+    const char *name = info ? info->name : "?";
+    if (st->kind == HFX_FX_VALUE_UNSUPPORTED) {
+        hfx_shared_warn(sh, st, "'%s': this value cannot be expressed in GL; ignored", name);
+    } else if ((st->id == HFX_ST_MINFILTER || st->id == HFX_ST_MAGFILTER || st->id == HFX_ST_MIPFILTER) &&
+               st->kind == HFX_FX_VALUE_INT && st->i > 3) {
+        hfx_shared_warn(sh, st, "'%s': %s filtering is not available in GL; filtering linearly", name,
+                        info ? hfx_state_value_name(info, st->i) : "this");
+    } else if (st->id == HFX_ST_SRGBTEXTURE && st->kind == HFX_FX_VALUE_INT && st->i && !sh->dev->srgb_decode) {
+        hfx_shared_warn(sh, st, "'%s': without EXT_texture_sRGB_decode, only textures with an sRGB format are decoded", name);
+    }
+}
+
+/* The effect's sampler_state blocks as GL sampler objects, in order, with their load-time notes. */
+int hfx_rt_samplers_make(hfx_shared *sh, uint32_t *cap) {
+    for (uint32_t i = 0; i < sh->fx->sampler_count; i++) {
+        const hfx_fx_sampler *fs = &sh->fx->samplers[i];
+        for (uint32_t k = 0; k < fs->state_count; k++) hfx_rt_sampler_check_state(sh, &sh->fx->states[fs->first_state + k]);
+        hfx_sampler_desc d;
+        const hfx_fx_state *dyn[32];
+        uint32_t n, index;
+        sampler_desc_of(sh->fx, i, &d, dyn, &n);
+        int rc = push_sampler(sh, cap, &d, dyn, n, &index);
+        if (rc) return rc;
+    }
+    return HFX_OK;
+}
+
+/* Pass-level MinFilter[n] = ...: a sampler object for unit n from the bound sampler's states
+ * with the pass's on top (the pass is the more specific). */
+int hfx_rt_sampler_override(hfx_shared *sh, uint32_t *cap, const hfx_fx_pass *fp, hfx_rt_binding *b) {
+    const hfx_fx_effect *fx = sh->fx;
+    hfx_sampler_desc d;
+    const hfx_fx_state *dyn[32];
+    uint32_t n, index;
+    sampler_desc_of(fx, b->sampler, &d, dyn, &n);
+    int any = 0;
+    for (uint32_t i = 0; i < fp->state_count; i++) {
+        const hfx_fx_state *st = &fx->states[fp->first_state + i];
+        const hfx_state_info *info = hfx_state_by_id(st->id);
+        if (!info || info->scope != HFX_SS_SAMPLER || st->id == HFX_ST_SAMPLER || (int32_t)st->index != b->unit)
+            continue;
+        add_sampler_state(st, &d, dyn, &n);
+        any = 1;
+    }
+    if (!any) return HFX_OK;
+    int rc = push_sampler(sh, cap, &d, dyn, n, &index);
+    if (!rc) b->sampler = index;
+    return rc;
+}
+
