@@ -10,6 +10,7 @@ hfx_fx_effect *hfx_rt_compile_fx(const char *path, const void *data, size_t size
     memset(&co, 0, sizeof co);
     /* D3D9's register model: every changed float parameter of a program goes up in one call */
     if (!opt || !opt->separate_uniforms) co.flags |= HFXC_PACK_UNIFORMS;
+    if (opt && opt->no_self_check) co.flags |= HFXC_NO_SELF_CHECK;
     if (opt) {
         co.defines = opt->defines;
         co.define_count = opt->define_count;

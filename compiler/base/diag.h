@@ -46,7 +46,8 @@ enum {
     X_PP_ERROR_DIRECTIVE = 1003,
     X_PP_UNTERMINATED_COMMENT = 1001, /* a comment continues past the end of file */
     X_PP_STRING_EOL = 1005,   /* a string continues past the end of line */
-    X_UNSUPPORTED = 3094      /* unsupported construct (asm blocks...) */
+    X_UNSUPPORTED = 3094,     /* unsupported construct (asm blocks...) */
+    X_INTERNAL = 9000         /* hfx's own GLSL failed its self-check (fxc has no such code) */
 };
 
 void hfx_diags_init(hfx_diags *d, hfx_arena *arena, unsigned flags);

@@ -28,6 +28,8 @@ static const char usage_text[] =
     "                        share one vec4 array per program (D3D9 registers, one upload)\n"
     "  --werror, /WX         treat warnings as errors\n"
     "  --no-warnings         drop warnings\n"
+    "  --no-self-check       do not check the emitted GLSL with glslang (faster; by default a\n"
+    "                        shader glslang rejects is an internal error X9000, never output)\n"
     "  -j, --jobs N          compile N files at a time (default: one per core)\n"
     "  --quiet               no progress line and no summary\n"
     "  /nologo               accepted for fxc compatibility\n"
@@ -121,6 +123,7 @@ static int flag(cli_options *o, const char *a, bool *handled) {
     else if (!strcmp(a, "--ast")) o->ast = true;
     else if (!strcmp(a, "--werror") || !strcmp(a, "/WX") || !strcmp(a, "-WX")) o->werror = true;
     else if (!strcmp(a, "--no-warnings")) o->no_warnings = true;
+    else if (!strcmp(a, "--no-self-check")) o->no_self_check = true;
     else if (!strcmp(a, "--pack-uniforms")) o->pack_uniforms = true; /* the default; kept for scripts */
     else if (!strcmp(a, "--separate-uniforms")) o->pack_uniforms = false;
     else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) o->quiet = true;

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "effect/build_int.h"
+#include "glsl/glslang.h"
 #include "glsl/spirv.h"
 
 bool hfx_build_grow(hfx_builder *b, void **arr, size_t elem, uint32_t count, uint32_t *cap) {
@@ -447,8 +448,48 @@ static void build_spirv(hfx_builder *b, unsigned requested) {
             }
 }
 
+static const char *const target_names[HFX_TARGET_COUNT] = {"GLSL 330", "GLSL ES 300", "GLSL 110", "SPIR-V"};
+
+/* glslang's first error line, for a one-line diagnostic. */
+static void first_error(const char *log, char *out, size_t size) {
+    const char *e = log ? strstr(log, "ERROR:") : NULL;
+    if (!e) e = log ? log : "glslang gave no reason";
+    size_t n = strcspn(e, "\n");
+    snprintf(out, size, "%.*s", (int)(n < size ? n : size - 1), e);
+}
+
+/* One program's shaders of every GLSL target through glslang: a rejection is hfx's own bug,
+ * reported at the entry point that was compiled, never handed to a driver. */
+static void self_check_program(hfx_builder *b, uint32_t i) {
+    const hfx_fx_program *p = &b->fx->programs[i];
+    for (int s = 0; s < HFX_STAGE_COUNT; s++)
+        for (int t = 0; t < HFX_TARGET_SPIRV; t++) {
+            char *log = NULL, why[400], name[256];
+            if (!p->code[s][t].data || hfx_glslang_check(p->code[s][t].data, s, (hfx_target)t, &log) == 0) continue;
+            const hfx_expr *at = s == 0 ? b->keys[i].vs : b->keys[i].ps;
+            first_error(log, why, sizeof why);
+            program_name(b->fx, i, name, sizeof name);
+            hfx_error(b->diags, at ? at->loc : (hfx_loc){0, 1, 1}, X_INTERNAL,
+                      "internal: the %s %s shader hfx made for '%s' does not compile: %s", target_names[t],
+                      s == 0 ? "vertex" : "pixel", name, why);
+            free(log);
+        }
+}
+
+/* The self-check (on unless HFXC_NO_SELF_CHECK): every emitted GLSL shader parsed by glslang. */
+static void self_check(hfx_builder *b) {
+    if ((b->diags->flags & HFXC_NO_SELF_CHECK) || !b->fx->program_count || !hfx_glslang_available()) return;
+    if (!hfx_glslang_begin()) {
+        hfx_error(b->diags, (hfx_loc){0, 1, 1}, X_INTERNAL, "internal: glslang could not start for the self-check");
+        return;
+    }
+    for (uint32_t i = 0; i < b->fx->program_count; i++) self_check_program(b, i);
+    hfx_glslang_end();
+}
+
 /* Hands the effect over, or frees it when anything went wrong since `errors`. */
 static hfx_fx_effect *builder_finish(hfx_builder *b, bool ok, uint32_t errors) {
+    if (ok && !b->failed_alloc && b->diags->errors == errors) self_check(b);
     if (ok && !b->failed_alloc && b->diags->errors == errors) build_spirv(b, b->fx->targets);
     b->fx->targets = present_targets(b->fx);
     if (b->failed_alloc) hfx_error(b->diags, (hfx_loc){0, 0, 0}, X_UNSUPPORTED, "out of memory building the effect");

@@ -212,6 +212,16 @@ static bool writes_color0(hfx_codegen *cg, const ir_shader *ps) {
     return false;
 }
 
+/* HFXC_TEST_BREAK_GLSL: a code generator with a bug, for the self-check's own test. */
+static char *spoil(char *text) {
+    static const char bad[] = "\nhfx_broken_token\n";
+    size_t n = strlen(text);
+    char *p = realloc(text, n + sizeof bad);
+    if (!p) return text;
+    memcpy(p + n, bad, sizeof bad);
+    return p;
+}
+
 int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps, hfx_fx_program *out) {
     memset(out, 0, sizeof *out);
     uint32_t errors = cg->c.diags->errors;
@@ -230,6 +240,7 @@ int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps,
         for (int s = 0; s < 2; s++) {
             char *text = glsl_print(&cg->c, sh[s], s == 0 ? IR_VERTEX : IR_PIXEL, &io, (hfx_target)t);
             if (!text) return -1;
+            if (cg->c.diags->flags & HFXC_TEST_BREAK_GLSL) text = spoil(text);
             out->code[s][t].data = text;
             out->code[s][t].size = strlen(text);
         }

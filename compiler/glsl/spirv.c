@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "base/sbuf.h"
+#include "glsl/glslang.h"
 #include "spirv_loc.h"
 
 #ifdef HFX_HAVE_GLSLANG
@@ -355,22 +356,13 @@ int hfx_spirv_bool_uniform(const uint32_t *words, size_t count, char *name, size
 
 /* --- glslang ------------------------------------------------------------------------------------ */
 
-static char *append_log(char *log, const char *what, const char *more) {
-    if (!more || !*more) return log;
-    size_t a = log ? strlen(log) : 0, w = strlen(what), b = strlen(more);
-    char *p = realloc(log, a + w + b + 2);
-    if (!p) return log;
-    memcpy(p + a, what, w);
-    memcpy(p + a + w, more, b + 1);
-    if (b && more[b - 1] != '\n') memcpy(p + a + w + b, "\n", 2);
-    return p;
-}
+#define append_log hfx_glslang_append_log
 
 #ifdef HFX_HAVE_GLSLANG
 
 bool hfx_spirv_available(void) { return true; }
-bool hfx_spirv_begin(void) { return glslang_initialize_process() != 0; }
-void hfx_spirv_end(void) { glslang_finalize_process(); }
+bool hfx_spirv_begin(void) { return hfx_glslang_begin(); }
+void hfx_spirv_end(void) { hfx_glslang_end(); }
 
 static const glslang_stage_t stages[HFX_STAGE_COUNT] = {GLSLANG_STAGE_VERTEX, GLSLANG_STAGE_FRAGMENT};
 static const char *const stage_names[HFX_STAGE_COUNT] = {"vertex", "fragment"};

@@ -57,6 +57,7 @@ typedef struct hfx_load_options {
     hfx_target target;               /* GLSL flavour to use; 0 = GLSL 330 */
     int separate_uniforms;           /* .fx only: 1 = one GLSL uniform per parameter; 0 = float parameters
                                         packed in vec4 registers, sent in one call per Apply (default) */
+    int no_self_check;               /* .fx only: 1 = skip glslang's check of the emitted GLSL (faster loads) */
 } hfx_load_options;
 
 /* Device: one per GL context, which must be current on every call. */

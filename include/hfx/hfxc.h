@@ -28,7 +28,9 @@ enum { /* hfxc_options.flags */
     HFXC_NO_WARNINGS = 1u << 1, /* drop warnings */
     HFXC_CARET = 1u << 2,       /* formatted text adds the source line and a caret */
     HFXC_PARSE_ONLY = 1u << 3,  /* stop after the AST */
-    HFXC_PACK_UNIFORMS = 1u << 4 /* float parameters share one vec4 array per program (D3D9 registers): one upload for many changes */
+    HFXC_PACK_UNIFORMS = 1u << 4, /* float parameters share one vec4 array per program (D3D9 registers): one upload for many changes */
+    HFXC_NO_SELF_CHECK = 1u << 5, /* skip glslang's check of every emitted shader (faster; a bug of hfx reaches the driver) */
+    HFXC_TEST_BREAK_GLSL = 1u << 6 /* for hfx's own tests: the code generator spoils every shader, so the self-check must fail */
 };
 
 typedef struct hfxc_options {
