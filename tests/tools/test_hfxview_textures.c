@@ -55,7 +55,7 @@ static void write_file(const char *name, const unsigned char *a, size_t na, cons
     CHECK(f != NULL);
     if (f) {
         fwrite(a, 1, na, f);
-        fwrite(b, 1, nb, f);
+        if (nb) fwrite(b, 1, nb, f);
         fclose(f);
     }
     free(path);
