@@ -403,10 +403,31 @@ static void print_construct(gp *p, const ir_expr *e) {
     sb_put(p->out, ")");
 }
 
+static void print_convert(gp *p, const ir_expr *e, int max);
+
+/* A scalar cast to a struct or an array fills every component: `(VS_OUTPUT)0` zeroes each
+ * member (nested structs, arrays and matrices too), as HLSL defines the cast. */
+static void print_fill(gp *p, const hfx_type *to, ir_expr *x) {
+    if (hfx_type_is_numeric(to)) {
+        ir_expr conv = {.kind = IE_CONVERT, .type = to, .loc = x->loc, .a = &x, .n = 1};
+        print_convert(p, &conv, PREC_ASSIGN);
+        return;
+    }
+    if (p->legacy) { glsl_error(p, x->loc, "a cast to a struct or an array needs GLSL 330 or ES 300"); return; }
+    sb_printf(p->out, "%s(", glsl_ctor_type(p, to));
+    uint32_t n = to->kind == TY_ARRAY ? to->array_len : to->st ? to->st->field_count : 0;
+    for (uint32_t i = 0; i < n; i++) {
+        if (i) sb_put(p->out, ", ");
+        print_fill(p, to->kind == TY_ARRAY ? to->elem : to->st->fields[i].type, x);
+    }
+    sb_put(p->out, ")");
+}
+
 static void print_convert(gp *p, const ir_expr *e, int max) {
     const ir_expr *x = e->a[0];
     const hfx_type *to = e->type, *from = x->type;
     unsigned nt = ncomp(to), nf = ncomp(from);
+    if (nf == 1 && (to->kind == TY_STRUCT || to->kind == TY_ARRAY)) { print_fill(p, to, e->a[0]); return; }
     if (!nt || !nf) { glsl_expr(p, x, max); return; }
     const char *tty = glsl_type(p, to), *fty = glsl_type(p, from);
     if (glsl_is_matrix(to)) {

@@ -368,6 +368,17 @@ static void struct_uniform_array(void) {
 }
 
 
+/* A scalar cast to a struct fills every member (nested arrays and matrices too), to an array
+ * every element: (S)0.25 gives m = all 0.25, uv[1] = (0.25, 0.25), on = (int)0.25 = 0;
+ * (float[3])0.5 three 0.5s; (S)0 all zeros. Red = m._22 + uv[1].y = 0.5; green = w[2] = 0.5;
+ * blue = z.m._33 + z.on + on (0) = 0; alpha 1. */
+static void scalar_casts_fill_structs_and_arrays(void) {
+    const char *src = "struct S { float3x3 m; float2 uv[2]; int on; };\n" VS_PASS
+        "float4 ps() : COLOR { S s = (S)0.25; S z = (S)0; float w[3] = (float[3])0.5;\n"
+        "  return float4(s.m._22 + s.uv[1].y, w[2], z.m._33 + z.on + s.on, 1); }\n" TECH("ps()");
+    check_pixel(src, NULL, 0, 0.5f, 0.5f, 0, 1);
+}
+
 static void more_intrinsics(void) {
     /* atan2(1, -1) = 3*pi/4 = 2.35619 -> / 4 = 0.589; log10(100) = 2 -> / 4; step(0.5, 0.7) = 1;
      * pow(2, 3) = 8 -> / 16; */
@@ -472,6 +483,7 @@ int main(void) {
     if (!gl) test_skip("no OSMesa GL 3.3 context");
     load_gl();
     RUN(mul_row_vector);
+    RUN(scalar_casts_fill_structs_and_arrays);
     RUN(mul_column_vector);
     RUN(mul_translation);
     RUN(mul_truncated);
