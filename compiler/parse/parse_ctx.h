@@ -83,6 +83,7 @@ typedef struct parse_ctx {
     uint32_t depth;           /* current bracket nesting */
     uint32_t brace_depth;     /* current { } nesting, for type-name scopes */
     parse_typename **names; uint32_t name_count, name_cap;
+    const char **shadows; uint32_t shadow_count, shadow_cap; /* builtin type spellings declared as names */
     uint32_t state_blocks[4]; /* brace depths of the open pass / sampler_state blocks (nested) */
     uint32_t state_block_count;
     bool state_block_next;    /* the next '{' opens one */

@@ -114,6 +114,39 @@ static bool in_state_block(const parse_ctx *ctx) {
     return ctx->state_block_count && ctx->state_blocks[ctx->state_block_count - 1] == ctx->brace_depth;
 }
 
+/* ---- builtin type spellings used as names ----
+ * fxc lets a declaration name a variable with a builtin type's spelling: `texture Texture;`,
+ * `sampler Sampler = sampler_state {...};`, `sampler samplerState;` (XNA's DECLARE_TEXTURE
+ * does). Such a spelling right after a complete type, before what ends a declarator, is the
+ * name; from then on that exact spelling is a name wherever no identifier follows it (where
+ * one does, `Texture t2;`, it still declares with the type). */
+
+static bool ends_declarator(const hfx_token *n) {
+    return is_punct(n, P_SEMI) || is_punct(n, P_ASSIGN) || is_punct(n, P_COLON) || is_punct(n, P_LT) ||
+           is_punct(n, P_LBRACKET) || is_punct(n, P_COMMA) || is_punct(n, P_RPAREN);
+}
+
+static bool is_shadowed(const parse_ctx *ctx, const hfx_token *t) {
+    for (uint32_t i = 0; i < ctx->shadow_count; i++)
+        if (strcmp(ctx->shadows[i], t->text) == 0) return true;
+    return false;
+}
+
+/* True when the builtin type spelling t is a name here (and remembers a new one). */
+static bool type_spelling_is_name(parse_ctx *ctx, const hfx_token *t) {
+    if (ctx->prev_code == TYPE_NAME && ends_declarator(t->next)) {
+        if (!is_shadowed(ctx, t) && HFX_ARENA_GROW(ctx->arena, ctx->shadows, ctx->shadow_count, ctx->shadow_cap, 8))
+            ctx->shadows[ctx->shadow_count++] = t->text;
+        return true;
+    }
+    return is_shadowed(ctx, t) && !(t->next && t->next->kind == TK_IDENT);
+}
+
+/* `VertexShader = null;`: fxc takes the lower-case spelling as NULL in a state value. */
+static bool is_state_null(const parse_ctx *ctx, const hfx_token *t) {
+    return ctx->prev_code == '=' && in_state_block(ctx) && t->len == 4 && strncasecmp(t->text, "null", 4) == 0;
+}
+
 static int classify_ident(parse_ctx *ctx, const hfx_token *t, parse_tok *val) {
     if (ctx->prev_code == STRUCT) {
         (void)declare_struct(ctx, t);
@@ -132,8 +165,10 @@ static int classify_ident(parse_ctx *ctx, const hfx_token *t, parse_tok *val) {
     }
     int tp = effect_keyword_any_case(ctx, t, w.any_case_keyword);
     if (tp) return tp;
+    if (is_state_null(ctx, t)) return NULL_KW;
     parse_typename *e = parse_find_typename(ctx, t->text);
     const hfx_type *builtin = e ? NULL : kw_builtin_type(ctx->types, &w);
+    if (builtin && type_spelling_is_name(ctx, t)) return IDENT;
     /* In `ColorArg1[0] = Texture;` or `VertexShader = ...` a type's spelling names a state
      * or a state value; only a constructor, `float4(...)`, is a type there. */
     if ((e || builtin) && in_state_block(ctx) && !is_punct(t->next, P_LPAREN)) return IDENT;
