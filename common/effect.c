@@ -31,6 +31,7 @@ void hfx_fx_effect_free(hfx_fx_effect *fx) {
     free(fx->params);
     free(fx->values);
     free(fx->exprs);
+    free(fx->variants);
     for (uint32_t i = 0; fx->annotations && i < fx->annotation_count; i++) {
         free(fx->annotations[i].name);
         free(fx->annotations[i].data);

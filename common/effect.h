@@ -139,6 +139,16 @@ typedef struct hfx_fx_pass {
     uint32_t program;       /* HFX_NONE if the pass sets no shaders */
 } hfx_fx_pass;
 
+/* A pass whose shaders come from shader arrays indexed by parameters (`VertexShader =
+ * (VSArray[VSIndices[ShaderIndex]]);`, XNA's stock effects): one variant per pair of array
+ * indices the compiler found reachable. Apply runs the pass's VertexShader / PixelShader EXPR
+ * states (the indices, clamped into the arrays) and uses the variant's program. */
+typedef struct hfx_fx_variant {
+    uint32_t pass;
+    uint32_t vs, ps;        /* shader array indices; HFX_NONE for a stage that is not selected */
+    uint32_t program;
+} hfx_fx_variant;
+
 typedef struct hfx_fx_technique {
     char *name;             /* "" for an anonymous technique */
     uint32_t first_annotation, annotation_count;
@@ -150,6 +160,7 @@ typedef struct hfx_fx_effect {
     hfx_fx_param *params; uint32_t param_count, top_param_count;
     uint32_t *values; uint32_t value_words;
     uint32_t *exprs; uint32_t expr_words; /* the programs of EXPR states, one after another */
+    hfx_fx_variant *variants; uint32_t variant_count; /* by pass, in pass order */
     hfx_fx_annotation *annotations; uint32_t annotation_count;
     hfx_fx_state *states; uint32_t state_count;
     hfx_fx_sampler *samplers; uint32_t sampler_count;

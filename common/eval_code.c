@@ -15,6 +15,7 @@ static uint64_t operand_words(const uint32_t *code, uint32_t at, uint32_t words)
     switch (op_of(w)) {
     case HFX_EVC_CONST: return b_of(w);
     case HFX_EVC_PARAM: case HFX_EVC_SWIZZLE: return 1;
+    case HFX_EVC_ELEMENT: return 3;
     case HFX_EVC_TABLE: return at + 1 < words ? 1 + (uint64_t)code[at + 1] * b_of(w) : 1;
     default: return 0;
     }
@@ -22,12 +23,18 @@ static uint64_t operand_words(const uint32_t *code, uint32_t at, uint32_t words)
 
 /* The stack values an instruction takes and leaves. */
 static void stack_effect(uint32_t w, int *pops, int *pushes) {
-    static const int take[HFX_EVC_OP_COUNT] = {0, 0, 1, 1, 1, 2, 0, 1, 3};
+    static const int take[HFX_EVC_OP_COUNT] = {0, 0, 1, 1, 1, 2, 0, 1, 3, 1};
     *pops = op_of(w) == HFX_EVC_CALL ? hfx_ev_fn_args((hfx_ev_fn)a_of(w)) : take[op_of(w)];
     *pushes = 1;
 }
 
 static bool valid_n(uint32_t n) { return n >= 1 && n <= HFX_EV_MAX_COMPONENTS; }
+
+/* ELEMENT's offset, count and stride: every element's n words inside the values. */
+static bool element_ok(const uint32_t *w, uint32_t base, uint32_t n, uint32_t value_words) {
+    uint64_t last = (uint64_t)w[0] + (uint64_t)(w[1] ? w[1] - 1 : 0) * w[2] + n;
+    return base < HFX_EV_BASE_COUNT && valid_n(n) && w[1] >= 1 && last <= value_words;
+}
 
 /* The instruction's own fields; NULL when they are right, else what is wrong. */
 static const char *check_fields(const uint32_t *code, uint32_t at, uint32_t value_words) {
@@ -44,6 +51,7 @@ static const char *check_fields(const uint32_t *code, uint32_t at, uint32_t valu
     case HFX_EVC_CALL: return a < HFX_EV_FN_COUNT ? NULL : "an unknown function";
     case HFX_EVC_TABLE: return a < HFX_EV_BASE_COUNT && valid_n(b) && code[at + 1] >= 1 ? NULL : "a table of a wrong shape";
     case HFX_EVC_SELECT: return NULL;
+    case HFX_EVC_ELEMENT: return element_ok(code + at + 1, a, b, value_words) ? NULL : "an element outside the values";
     default: return "an unknown instruction";
     }
 }
@@ -125,6 +133,13 @@ static bool table(hfx_ev_value *index, hfx_ev_base b, uint32_t n, const uint32_t
     return true;
 }
 
+static bool element(hfx_ev_value *index, hfx_ev_base b, uint32_t n, const uint32_t *w, const uint32_t *values) {
+    double i = hfx_ev_convert(index->base, HFX_EV_INT, index->c[0]);
+    uint32_t k = i < 0 ? 0 : i >= w[1] ? w[1] - 1 : (uint32_t)i;
+    load(index, b, n, values + w[0] + (size_t)k * w[2]);
+    return true;
+}
+
 static bool select_value(hfx_ev_value *s) {
     hfx_ev_value *x = &s[0], *y = &s[1], *c = &s[2];
     promote(x, y);
@@ -156,10 +171,15 @@ static bool step(const uint32_t *code, uint32_t at, const uint32_t *values, hfx_
         *sp -= pops;
         return call((hfx_ev_fn)a, &stack[*sp], (unsigned)pops, &stack[*sp]) && ++*sp;
     case HFX_EVC_TABLE: return table(top, (hfx_ev_base)a, b, code + at + 1);
+    case HFX_EVC_ELEMENT: return element(top, (hfx_ev_base)a, b, code + at + 1, values);
     default: /* SELECT */
         *sp -= 2;
         return select_value(top - 2);
     }
+}
+
+uint32_t hfx_evc_next(const uint32_t *code, uint32_t at, uint32_t words) {
+    return at + 1 + (uint32_t)operand_words(code, at, words);
 }
 
 bool hfx_evc_run(const uint32_t *code, uint32_t words, const uint32_t *values, hfx_ev_value *out) {

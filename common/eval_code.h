@@ -13,6 +13,8 @@
  *   TABLE   a = base, b = n     1 word count, then count * n words: pops an index, pushes element
  *                               index (truncated, clamped to [0, count - 1] as D3D9 does)
  *   SELECT                      pops c, y, x: x where c is true, else y (per component)
+ *   ELEMENT a = base, b = n     3 words: offset, count, stride: pops an index, pushes the n words at
+ *                               offset + index * stride of a parameter array (index clamped as TABLE)
  * A program leaves one value. hfx_evc_validate checks everything a run relies on (opcodes,
  * operand words present, bases, counts, stack depth, parameter words in range), so a program
  * read from a hostile file can be run safely once it passes. */
@@ -27,7 +29,7 @@
 
 typedef enum {
     HFX_EVC_CONST, HFX_EVC_PARAM, HFX_EVC_SWIZZLE, HFX_EVC_CONVERT, HFX_EVC_UNARY, HFX_EVC_BINARY,
-    HFX_EVC_CALL, HFX_EVC_TABLE, HFX_EVC_SELECT, HFX_EVC_OP_COUNT
+    HFX_EVC_CALL, HFX_EVC_TABLE, HFX_EVC_SELECT, HFX_EVC_ELEMENT, HFX_EVC_OP_COUNT
 } hfx_evc_op;
 
 enum { HFX_EVC_MAX_DEPTH = 8, HFX_EVC_MAX_WORDS = 1u << 20 };
@@ -40,6 +42,8 @@ static inline uint32_t hfx_evc_word(hfx_evc_op op, uint32_t a, uint32_t b) {
 /* 0 when code[0 .. words) is a program that runs safely over value_words parameter words;
  * otherwise -1 and why in err (may be NULL). */
 int hfx_evc_validate(const uint32_t *code, uint32_t words, uint32_t value_words, char *err, size_t err_size);
+/* Where the instruction after the one at `at` starts (for walking a validated program). */
+uint32_t hfx_evc_next(const uint32_t *code, uint32_t at, uint32_t words);
 /* Runs a validated program over the parameter words; false when the arithmetic does not fold
  * (an integer division by zero, shapes that do not combine): the caller keeps its last value. */
 bool hfx_evc_run(const uint32_t *code, uint32_t words, const uint32_t *values, hfx_ev_value *out);

@@ -27,7 +27,8 @@ enum {
     SEC_PROGRAMS = FOURCC('P', 'R', 'O', 'G'), SEC_ATTRIBUTES = FOURCC('A', 'T', 'T', 'R'),
     SEC_SAMPLER_USES = FOURCC('S', 'U', 'S', 'E'), SEC_UNIFORM_USES = FOURCC('U', 'U', 'S', 'E'),
     SEC_PASSES = FOURCC('P', 'A', 'S', 'S'), SEC_TECHNIQUES = FOURCC('T', 'E', 'C', 'H'),
-    SEC_CODE = FOURCC('C', 'O', 'D', 'E'), SEC_EXPRS = FOURCC('E', 'X', 'P', 'R')
+    SEC_CODE = FOURCC('C', 'O', 'D', 'E'), SEC_EXPRS = FOURCC('E', 'X', 'P', 'R'),
+    SEC_VARIANTS = FOURCC('V', 'A', 'R', 'I')
 };
 
 /* Words per record in version 2 (readers accept longer records and ignore the tail). */
@@ -35,7 +36,7 @@ enum {
     R_EFFECT = 3, R_PARAM = 18, R_ANNOTATION = 8, R_STATE = 12, R_SAMPLER = 5,
     P_CODE = 7, P_REG_COUNT = P_CODE + 2 * HFX_STAGE_COUNT * HFX_TARGET_COUNT, /* program record fields */
     R_PROGRAM = P_REG_COUNT + 1, R_ATTRIBUTE = 3, R_SAMPLER_USE = 3,
-    R_UNIFORM_USE = 2, R_PASS = 6, R_TECHNIQUE = 5
+    R_UNIFORM_USE = 2, R_PASS = 6, R_TECHNIQUE = 5, R_VARIANT = 4
 };
 
 /* CRC-32 (IEEE 802.3, as zlib), four bits at a time from a 16-entry table. */
@@ -149,7 +150,7 @@ typedef struct writer {
     wbuf out;
     strpool strings;
     wbuf code;
-    uint32_t ids[16], offsets[16], sizes[16], count;
+    uint32_t ids[32], offsets[32], sizes[32], count; /* room for SECTION_COUNT (static assert below) */
     size_t open_at;
 } writer;
 
@@ -289,6 +290,13 @@ static void write_techniques(writer *w, const hfx_fx_effect *fx) {
         for (int k = 0; k < R_PASS; k++) put32(&w->out, r[k]);
     }
     section_end(w);
+    table_begin(w, SEC_VARIANTS, fx->variant_count, R_VARIANT);
+    for (uint32_t i = 0; i < fx->variant_count; i++) {
+        const hfx_fx_variant *v = &fx->variants[i];
+        uint32_t r[R_VARIANT] = {v->pass, v->vs, v->ps, v->program};
+        for (int k = 0; k < R_VARIANT; k++) put32(&w->out, r[k]);
+    }
+    section_end(w);
     table_begin(w, SEC_TECHNIQUES, fx->technique_count, R_TECHNIQUE);
     for (uint32_t i = 0; i < fx->technique_count; i++) {
         const hfx_fx_technique *t = &fx->techniques[i];
@@ -299,7 +307,8 @@ static void write_techniques(writer *w, const hfx_fx_effect *fx) {
     section_end(w);
 }
 
-enum { SECTION_COUNT = 16 };
+enum { SECTION_COUNT = 17 };
+_Static_assert(SECTION_COUNT <= 32, "the writer's section table holds 32");
 
 int hfx_fx_write_hfxo(const hfx_fx_effect *fx, void **out, size_t *out_size) {
     if (!fx || !out || !out_size) return -1;
@@ -374,7 +383,7 @@ typedef struct reader {
     const uint8_t *code;
     uint32_t code_size;
     table t_effect, t_params, t_annotations, t_states, t_samplers, t_programs, t_attributes, t_sampler_uses,
-        t_uniform_uses, t_passes, t_techniques;
+        t_uniform_uses, t_passes, t_techniques, t_variants;
     const uint8_t *values, *adata, *exprs;
     uint32_t value_words, adata_words, expr_words;
 } reader;
@@ -435,6 +444,9 @@ static bool open_section(reader *r, uint32_t id, const uint8_t *p, uint32_t size
     case SEC_ANNOTATIONS: return open_table(r, p, size, R_ANNOTATION, &r->t_annotations, "ANNO");
     case SEC_ANNOTATION_DATA: return open_words(r, p, size, &r->adata, &r->adata_words, "ADAT");
     case SEC_STATES: return open_table(r, p, size, R_STATE, &r->t_states, "STAT");
+    case SEC_VARIANTS: /* optional, as EXPR */
+        if (r->t_variants.p) return fail(r, "section VARI repeats");
+        return open_table(r, p, size, R_VARIANT, &r->t_variants, "VARI");
     case SEC_EXPRS: /* optional (older files have none), but only once */
         if (r->exprs) return fail(r, "section EXPR repeats");
         return open_words(r, p, size, &r->exprs, &r->expr_words, "EXPR");
@@ -658,6 +670,11 @@ static bool read_techniques(reader *r, hfx_fx_effect *fx) {
         p->state_count = field(t, i, 4);
         p->program = field(t, i, 5);
     }
+    t = &r->t_variants;
+    fx->variant_count = t->count;
+    if (!(fx->variants = alloc_array(r, t->count, sizeof *fx->variants))) return false;
+    for (uint32_t i = 0; i < t->count; i++)
+        fx->variants[i] = (hfx_fx_variant){field(t, i, 0), field(t, i, 1), field(t, i, 2), field(t, i, 3)};
     t = &r->t_techniques;
     fx->technique_count = t->count;
     if (!(fx->techniques = alloc_array(r, t->count, sizeof *fx->techniques))) return false;
@@ -783,6 +800,11 @@ static bool check_effect(reader *r, const hfx_fx_effect *fx) {
         if (!range_ok(p->first_annotation, p->annotation_count, fx->annotation_count) ||
             !range_ok(p->first_state, p->state_count, fx->state_count) || !ref_ok(p->program, fx->program_count))
             return fail(r, "pass %u is inconsistent", i);
+    }
+    for (uint32_t i = 0; i < fx->variant_count; i++) {
+        const hfx_fx_variant *v = &fx->variants[i];
+        if (v->pass >= fx->pass_count || v->program >= fx->program_count || (i && v->pass < fx->variants[i - 1].pass))
+            return fail(r, "variant %u is inconsistent", i);
     }
     for (uint32_t i = 0; i < fx->technique_count; i++) {
         const hfx_fx_technique *t = &fx->techniques[i];

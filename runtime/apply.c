@@ -6,6 +6,7 @@
 #include <string.h>
 #include <strings.h>
 
+#include "eval_code.h"
 #include "internal.h"
 
 hfx_technique *hfx_effect_technique(hfx_effect *fx, const char *name) {
@@ -75,8 +76,9 @@ static int same_semantic(const char *canonical, const char *s) {
 
 int hfx_pass_attribute_location(const hfx_pass *p, const char *semantic) {
     if (!p || !semantic) return -1;
-    uint32_t prog = p->fx->sh->passes[p->index].program;
-    if (prog == HFX_NONE) return -1;
+    const hfx_rt_pass *rp = &p->fx->sh->passes[p->index];
+    uint32_t prog = rp->program != HFX_NONE ? rp->program : rp->variant_count ? rp->variants[0].program : HFX_NONE;
+    if (prog == HFX_NONE) return -1; /* a variant pass: the locations are the semantics', the same in all */
     const hfx_fx_program *fp = &p->fx->sh->fx->programs[prog];
     for (uint32_t i = 0; i < fp->attribute_count; i++)
         if (fp->attributes[i].semantic && same_semantic(fp->attributes[i].semantic, semantic)) return fp->attributes[i].location;
@@ -114,10 +116,31 @@ static inline void apply_program(hfx_device *dev, hfx_rt_program *prog) {
     if (prog->pos_fixup_serial != dev->pos_fixup_serial || prog->alpha_test) hfx_rt_program_extras(dev, prog);
 }
 
+/* The array index a selector state gives now (HFX_NONE for a fixed stage). */
+static uint32_t selected(const hfx_effect *fx, uint32_t state) {
+    if (state == HFX_NONE) return HFX_NONE;
+    const hfx_fx_effect *e = fx->sh->fx;
+    const hfx_fx_state *st = &e->states[state];
+    hfx_ev_value v;
+    return hfx_evc_run(e->exprs + st->ref, st->count, fx->values, &v) ? (uint32_t)v.c[0] : 0;
+}
+
+/* A pass drawn from shader arrays: the program of the entries its selectors pick now, as
+ * D3D9 evaluates `VertexShader = (VSArray[VSIndices[ShaderIndex]]);` at Apply. */
+static hfx_rt_program *variant_program(hfx_effect *fx, const hfx_rt_pass *rp) {
+    uint32_t vs = selected(fx, rp->selector[0]), ps = selected(fx, rp->selector[1]);
+    for (uint32_t i = 0; i < rp->variant_count; i++)
+        if (rp->variants[i].vs == vs && rp->variants[i].ps == ps) return &fx->sh->programs[rp->variants[i].program];
+    hfx_rt_fail(fx->dev, HFX_ERR_NOT_FOUND, "no program for shader array entries %d and %d (only those the compiler "
+                "reached by the driving parameter exist)", (int)vs, (int)ps);
+    return NULL;
+}
+
 /* Everything a pass sets: render states, program, uploads, textures. */
 static int apply_full(hfx_effect *fx, const hfx_rt_pass *rp) {
     if (rp->render_state_count) hfx_rs_apply(fx, rp); /* first: the alpha test reads these states */
-    hfx_rt_program *prog = rp->prog;
+    hfx_rt_program *prog = rp->variant_count ? variant_program(fx, rp) : rp->prog;
+    if (rp->variant_count && !prog) return HFX_ERR_NOT_FOUND;
     apply_program(fx->dev, prog);
     if (prog && (prog->memo_seen != fx->log_len || prog->memo_effect != fx->id)) hfx_rt_upload_changed(fx, prog);
     if (rp->binding_count) bind_textures(fx, rp);
@@ -128,9 +151,9 @@ static int apply_full(hfx_effect *fx, const hfx_rt_pass *rp) {
 static __attribute__((noinline)) int apply_first(hfx_pass *p) {
     hfx_device *dev = p->fx->dev;
     dev->applied = NULL;
-    apply_full(p->fx, p->rt);
+    int rc = apply_full(p->fx, p->rt);
     if (p->rt->direct) dev->applied = p;
-    return HFX_OK;
+    return rc;
 }
 
 /* One changed packed parameter: its registers alone. Out of line, so the float path of

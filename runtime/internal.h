@@ -197,6 +197,10 @@ typedef struct hfx_rt_pass {
     uint32_t *render_states; uint32_t render_state_count; /* indices into fx->states */
     uint32_t groups;        /* GL state groups the pass's render states touch */
     hfx_rt_binding *bindings; uint32_t binding_count;
+    /* shader arrays chosen at Apply: the variants (common/effect.h) and the EXPR states giving
+     * the vertex and pixel array indices (HFX_NONE for a fixed stage) */
+    const hfx_fx_variant *variants; uint32_t variant_count;
+    uint32_t selector[2];
 } hfx_rt_pass;
 
 /* The shared part of an effect. */

@@ -47,6 +47,32 @@ static void bind_sampler_use(const hfx_fx_effect *fx, hfx_rt_binding *b, uint32_
     b->target = param_target(fx, s->texture_param != HFX_NONE ? s->texture_param : s->param, s->dim);
 }
 
+/* The units a program samples on, with their samplers (a variant pass: all its programs'). */
+static void bind_program_samplers(const hfx_fx_effect *fx, hfx_rt_pass *rp, uint32_t program) {
+    const hfx_fx_program *prog = &fx->programs[program];
+    for (uint32_t i = 0; i < prog->sampler_count; i++)
+        if (prog->samplers[i].unit >= 0 && prog->samplers[i].unit < HFX_MAX_UNITS &&
+            prog->samplers[i].sampler < fx->sampler_count)
+            bind_sampler_use(fx, binding_for(rp, prog->samplers[i].unit), prog->samplers[i].sampler);
+}
+
+/* The pass's variants (a run of fx->variants) and its VertexShader / PixelShader EXPR states. */
+static void find_variants(const hfx_fx_effect *fx, hfx_rt_pass *rp, uint32_t index) {
+    const hfx_fx_pass *fp = &fx->passes[index];
+    rp->selector[0] = rp->selector[1] = HFX_NONE;
+    for (uint32_t i = 0; i < fx->variant_count; i++)
+        if (fx->variants[i].pass == index) {
+            if (!rp->variant_count) rp->variants = &fx->variants[i];
+            rp->variant_count++;
+        }
+    for (uint32_t i = 0; rp->variant_count && i < fp->state_count; i++) {
+        const hfx_fx_state *st = &fx->states[fp->first_state + i];
+        if (st->kind != HFX_FX_VALUE_EXPR) continue;
+        if (st->id == HFX_ST_VERTEXSHADER) rp->selector[0] = fp->first_state + i;
+        if (st->id == HFX_ST_PIXELSHADER) rp->selector[1] = fp->first_state + i;
+    }
+}
+
 int hfx_rt_pass_build(hfx_shared *sh, uint32_t *cap, uint32_t index) {
     const hfx_fx_effect *fx = sh->fx;
     const hfx_fx_pass *fp = &fx->passes[index];
@@ -56,13 +82,9 @@ int hfx_rt_pass_build(hfx_shared *sh, uint32_t *cap, uint32_t index) {
     rp->render_states = calloc(fp->state_count ? fp->state_count : 1, sizeof *rp->render_states);
     rp->bindings = calloc(HFX_MAX_UNITS, sizeof *rp->bindings);
     if (!rp->render_states || !rp->bindings) return hfx_rt_fail(sh->dev, HFX_ERR_MEMORY, "out of memory");
-    if (rp->program != HFX_NONE) {
-        const hfx_fx_program *prog = &fx->programs[rp->program];
-        for (uint32_t i = 0; i < prog->sampler_count; i++)
-            if (prog->samplers[i].unit >= 0 && prog->samplers[i].unit < HFX_MAX_UNITS &&
-                prog->samplers[i].sampler < fx->sampler_count)
-                bind_sampler_use(fx, binding_for(rp, prog->samplers[i].unit), prog->samplers[i].sampler);
-    }
+    if (rp->program != HFX_NONE) bind_program_samplers(fx, rp, rp->program);
+    find_variants(fx, rp, index);
+    for (uint32_t i = 0; i < rp->variant_count; i++) bind_program_samplers(fx, rp, rp->variants[i].program);
     uint32_t override_units = 0;
     for (uint32_t i = 0; i < fp->state_count && fp->first_state + i < fx->state_count; i++) {
         const hfx_fx_state *st = &fx->states[fp->first_state + i];

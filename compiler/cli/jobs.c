@@ -91,6 +91,30 @@ static int emit_target(const cli_options *o, const hfx_fx_effect *fx) {
     return HFX_TARGET_GLSL330;
 }
 
+/* One program's shaders as <effect>.<technique>.<pass><suffix>.vert / .frag. */
+static void emit_program(cli_job *job, const char *base, const char *suffix, const hfx_fx_program *prog, int target) {
+    static const char *const ext[HFX_STAGE_COUNT] = {"vert", "frag"};
+    for (int s = 0; s < HFX_STAGE_COUNT; s++) {
+        const hfx_fx_code *c = &prog->code[s][target];
+        if (!c->data) continue;
+        char path[4096];
+        snprintf(path, sizeof path, "%s%s.%s%s", base, suffix, ext[s], target == HFX_TARGET_SPIRV ? ".spv" : "");
+        if (!write_file(path, c->data, c->size, &job->error)) job->ok = false;
+    }
+}
+
+/* A pass's program, or each variant of a pass drawn from shader arrays (.vs<i>.ps<j>). */
+static void emit_pass(cli_job *job, const char *base, const hfx_fx_effect *fx, uint32_t pass, int target) {
+    if (fx->passes[pass].program != HFX_NONE) emit_program(job, base, "", &fx->programs[fx->passes[pass].program], target);
+    for (uint32_t i = 0; i < fx->variant_count; i++) {
+        const hfx_fx_variant *v = &fx->variants[i];
+        if (v->pass != pass) continue;
+        char suffix[64];
+        snprintf(suffix, sizeof suffix, ".vs%d.ps%d", v->vs == HFX_NONE ? -1 : (int)v->vs, v->ps == HFX_NONE ? -1 : (int)v->ps);
+        emit_program(job, base, suffix, &fx->programs[v->program], target);
+    }
+}
+
 static void emit_glsl(const cli_options *o, cli_job *job, const hfx_fx_effect *fx) {
     if (!o->emit_glsl) return;
     if (!is_dir(o->emit_glsl) && mkdir(o->emit_glsl, 0777) != 0 && errno != EEXIST) {
@@ -101,23 +125,16 @@ static void emit_glsl(const cli_options *o, cli_job *job, const hfx_fx_effect *f
     }
     int target = emit_target(o, fx);
     char *effect = stem(job->input);
-    static const char *const ext[HFX_STAGE_COUNT] = {"vert", "frag"};
     for (uint32_t t = 0; effect && t < fx->technique_count; t++) {
         const hfx_fx_technique *tq = &fx->techniques[t];
         for (uint32_t p = 0; p < tq->pass_count; p++) {
             const hfx_fx_pass *pass = &fx->passes[tq->first_pass + p];
-            if (pass->program == HFX_NONE) continue;
-            const hfx_fx_program *prog = &fx->programs[pass->program];
-            for (int s = 0; s < HFX_STAGE_COUNT; s++) {
-                const hfx_fx_code *c = &prog->code[s][target];
-                if (!c->data) continue;
-                char tname[32], pname[32], path[4096];
-                if (!tq->name[0]) snprintf(tname, sizeof tname, "t%u", t);
-                if (!pass->name[0]) snprintf(pname, sizeof pname, "p%u", p);
-                snprintf(path, sizeof path, "%s/%s.%s.%s.%s%s", o->emit_glsl, effect, tq->name[0] ? tq->name : tname,
-                         pass->name[0] ? pass->name : pname, ext[s], target == HFX_TARGET_SPIRV ? ".spv" : "");
-                if (!write_file(path, c->data, c->size, &job->error)) job->ok = false;
-            }
+            char tname[32], pname[32], base[4000];
+            if (!tq->name[0]) snprintf(tname, sizeof tname, "t%u", t);
+            if (!pass->name[0]) snprintf(pname, sizeof pname, "p%u", p);
+            snprintf(base, sizeof base, "%s/%s.%s.%s", o->emit_glsl, effect, tq->name[0] ? tq->name : tname,
+                     pass->name[0] ? pass->name : pname);
+            emit_pass(job, base, fx, tq->first_pass + p, target);
         }
     }
     free(effect);

@@ -217,6 +217,21 @@ static cJSON *program_json(const hfx_fx_effect *fx, uint32_t index) {
     return o;
 }
 
+/* A pass drawn from shader arrays: its variants, each with the array indices and its program. */
+static void variants_json(cJSON *po, const hfx_fx_effect *fx, uint32_t pass) {
+    cJSON *list = NULL;
+    for (uint32_t i = 0; i < fx->variant_count; i++) {
+        const hfx_fx_variant *v = &fx->variants[i];
+        if (v->pass != pass) continue;
+        if (!list) list = cJSON_AddArrayToObject(po, "variants");
+        cJSON *o = cJSON_CreateObject();
+        if (v->vs != HFX_NONE) cJSON_AddNumberToObject(o, "vertex_index", v->vs);
+        if (v->ps != HFX_NONE) cJSON_AddNumberToObject(o, "pixel_index", v->ps);
+        cJSON_AddItemToObject(o, "program", program_json(fx, v->program));
+        cJSON_AddItemToArray(list, o);
+    }
+}
+
 static cJSON *techniques_json(const hfx_fx_effect *fx, bool reflect) {
     cJSON *list = cJSON_CreateArray();
     for (uint32_t t = 0; t < fx->technique_count; t++) {
@@ -234,6 +249,7 @@ static cJSON *techniques_json(const hfx_fx_effect *fx, bool reflect) {
             if (reflect) {
                 if (p->program != HFX_NONE) cJSON_AddItemToObject(po, "program", program_json(fx, p->program));
                 else cJSON_AddNullToObject(po, "program");
+                variants_json(po, fx, tq->first_pass + i);
             }
             cJSON_AddItemToArray(passes, po);
         }

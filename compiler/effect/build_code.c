@@ -89,6 +89,22 @@ static bool table(code *c, const hfx_expr *e, int depth) {
     return ok;
 }
 
+/* array[index] where array is a parameter array read with a non-constant index: ELEMENT. */
+static bool element(code *c, const hfx_expr *e, int depth) {
+    uint32_t p = hfx_build_param_of(c->b, e->args[0]);
+    const hfx_fx_effect *fx = c->b->fx;
+    if (p == HFX_NONE || !fx->params[p].elements || fx->params[p].first_child == HFX_NONE) return false;
+    const hfx_fx_param *el = &fx->params[fx->params[p].first_child];
+    bool numeric = el->klass == HFX_CLASS_SCALAR || el->klass == HFX_CLASS_VECTOR || el->klass == HFX_CLASS_MATRIX;
+    if (!numeric || !el->words || el->words > HFX_EV_MAX_COMPONENTS) return false;
+    expr(c, e->args[1], depth + 1);
+    emit(c, hfx_evc_word(HFX_EVC_ELEMENT, param_base(el->type), el->words));
+    emit(c, el->offset);
+    emit(c, fx->params[p].elements);
+    emit(c, fx->params[p].words / fx->params[p].elements);
+    return true;
+}
+
 static bool swizzle(code *c, const hfx_expr *e, int depth) {
     if (e->comp_count < 1 || e->comp_count > 4) return false;
     uint32_t comps = 0;
@@ -126,7 +142,7 @@ static bool operation(code *c, const hfx_expr *e, int depth) {
 static bool parts(code *c, const hfx_expr *e, int depth) {
     switch (e->kind) {
     case EX_IDENT: case EX_STATE_REF: return param(c, e);
-    case EX_INDEX: return e->arg_count == 2 && (param(c, e) || table(c, e, depth));
+    case EX_INDEX: return e->arg_count == 2 && (param(c, e) || table(c, e, depth) || element(c, e, depth));
     case EX_UNARY: return e->arg_count == 1 && operation(c, e, depth);
     case EX_BINARY: return e->arg_count == 2 && operation(c, e, depth);
     case EX_SWIZZLE: return e->arg_count == 1 && swizzle(c, e, depth);
@@ -149,10 +165,17 @@ static void expr(code *c, const hfx_expr *e, int depth) {
     else if (!fold(c, e) && !parts(c, e, depth)) c->ok = false;
 }
 
-bool hfx_build_code(hfx_builder *b, const hfx_expr *e, const hfx_state_info *names, uint32_t *first, uint32_t *words) {
+/* The program of e, then (clamp > 0) a table 0 .. clamp - 1 that clamps it into an array. */
+static bool compile(hfx_builder *b, const hfx_expr *e, const hfx_state_info *names, uint32_t clamp, uint32_t *first,
+                    uint32_t *words) {
     hfx_fx_effect *fx = b->fx;
     code c = {b, names, fx->expr_words, true};
     expr(&c, e, 0);
+    if (clamp) {
+        emit(&c, hfx_evc_word(HFX_EVC_TABLE, HFX_EV_INT, 1));
+        emit(&c, clamp);
+        for (uint32_t i = 0; i < clamp; i++) emit(&c, i);
+    }
     uint32_t n = fx->expr_words - c.start;
     if (c.ok && hfx_evc_validate(fx->exprs + c.start, n, fx->value_words, NULL, 0) == 0) {
         *first = c.start;
@@ -161,4 +184,12 @@ bool hfx_build_code(hfx_builder *b, const hfx_expr *e, const hfx_state_info *nam
     }
     fx->expr_words = c.start; /* nothing of a program that could not be made */
     return false;
+}
+
+bool hfx_build_code(hfx_builder *b, const hfx_expr *e, const hfx_state_info *names, uint32_t *first, uint32_t *words) {
+    return compile(b, e, names, 0, first, words);
+}
+
+bool hfx_build_selector(hfx_builder *b, const hfx_expr *index, uint32_t count, uint32_t *first, uint32_t *words) {
+    return count && compile(b, index, NULL, count, first, words);
 }

@@ -31,6 +31,7 @@ typedef struct hfx_builder {
     unsigned targets;
     uint32_t param_cap, value_cap, annotation_cap, state_cap, sampler_cap, program_cap, pass_cap, technique_cap;
     uint32_t expr_cap;             /* of fx->exprs */
+    uint32_t variant_cap;          /* of fx->variants */
     const hfx_type **param_types;  /* parallel to fx->params: the HLSL type each param has */
     hfx_decl **param_decls;        /* parallel to fx->params: the global (top level only) */
     hfx_program_key *keys;         /* parallel to fx->programs */
@@ -59,6 +60,8 @@ void hfx_cvec_free(hfx_cvec *c);
 /* A state value that reads parameters compiled to a program in fx->exprs (build_code.c):
  * its first word and length; false (nothing added, nothing reported) when it cannot be. */
 bool hfx_build_code(hfx_builder *b, const hfx_expr *e, const hfx_state_info *names, uint32_t *first, uint32_t *words);
+/* The index of a shader array of `count` entries read at Apply, clamped into 0 .. count - 1. */
+bool hfx_build_selector(hfx_builder *b, const hfx_expr *index, uint32_t count, uint32_t *first, uint32_t *words);
 void hfx_build_store(const hfx_type *ty, const hfx_cvec *c, uint32_t *words);
 uint32_t hfx_build_type_words(const hfx_type *ty);        /* numeric words, objects count 0 */
 const hfx_type *hfx_build_innermost(const hfx_type *ty, uint32_t *elements); /* array element, sizes multiplied */

@@ -6,6 +6,7 @@
 #include <strings.h>
 
 #include "effect/build_int.h"
+#include "eval_code.h"
 
 static uint32_t add_state(hfx_builder *b, const hfx_fx_state *st) {
     hfx_fx_effect *fx = b->fx;
@@ -213,9 +214,16 @@ bool hfx_build_samplers(hfx_builder *b) {
 
 /* --- shaders and programs ------------------------------------------------------------------ */
 
+/* A shader array indexed by an expression of parameters: D3D9 picks the entry at Apply. */
+typedef struct shader_select {
+    const hfx_expr *array;    /* its initializer list */
+    const hfx_expr *index;
+} shader_select;
+
 /* Follows a shader state's value to its `compile` expression: through shader variables and
- * constant indices into shader arrays. 1 found, 0 NULL (no shader), -1 reported. */
-static int shader_compile(hfx_builder *b, const hfx_expr *v, const hfx_expr **out, int depth) {
+ * constant indices into shader arrays. 1 found, 0 NULL (no shader), -1 reported, 2 an array
+ * indexed by a non-constant expression (*sel filled; sel NULL: not allowed here). */
+static int shader_compile(hfx_builder *b, const hfx_expr *v, const hfx_expr **out, shader_select *sel, int depth) {
     *out = NULL;
     if (!v || depth > 16) return -1;
     switch (v->kind) {
@@ -229,7 +237,7 @@ static int shader_compile(hfx_builder *b, const hfx_expr *v, const hfx_expr **ou
             return -1;
         }
         if (!d->init) return 0;
-        return shader_compile(b, d->init, out, depth + 1);
+        return shader_compile(b, d->init, out, sel, depth + 1);
     }
     case EX_INDEX: {
         if (v->arg_count != 2) break;
@@ -237,19 +245,19 @@ static int shader_compile(hfx_builder *b, const hfx_expr *v, const hfx_expr **ou
         bool constant = hfx_build_eval(b, v->args[1], &c, NULL) && c.integral;
         int64_t i = constant ? (int64_t)c.v[0] : -1;
         hfx_cvec_free(&c);
-        if (!constant) {
-            hfx_error(b->diags, v->args[1]->loc, X_UNSUPPORTED,
-                      "a shader array indexed by a non-constant expression is not supported");
-            return -1;
-        }
         const hfx_expr *arr = v->args[0];
         const hfx_decl *d = arr->kind == EX_IDENT && arr->sym ? arr->sym : hfx_build_global(b, arr->name);
         const hfx_expr *init = d ? d->init : NULL;
+        if (!constant && init && init->kind == EX_INIT_LIST && init->arg_count && sel) {
+            sel->array = init; /* chosen at Apply: the pass gets a variant per reachable index */
+            sel->index = v->args[1];
+            return 2;
+        }
         if (!init || init->kind != EX_INIT_LIST || i < 0 || i >= init->arg_count) {
             hfx_error(b->diags, v->loc, X_INVALID_SUBSCRIPT, "shader array index %lld is out of bounds", (long long)i);
             return -1;
         }
-        return shader_compile(b, init->args[i], out, depth + 1);
+        return shader_compile(b, init->args[i], out, NULL, depth + 1);
     }
     case EX_ASM:
         hfx_warning(b->diags, v->loc, X_UNSUPPORTED, "asm shaders are not supported; the pass sets no shader");
@@ -325,6 +333,8 @@ static uint32_t program_for(hfx_builder *b, const hfx_expr *vs, const hfx_expr *
 typedef struct pass_shaders {
     const hfx_expr *vs, *ps;  /* the compile expressions the pass's shader states lead to */
     bool any;                 /* a shader state was set (even to NULL) */
+    shader_select sel[2];     /* vertex, pixel: a shader array chosen at Apply (array NULL: none) */
+    uint32_t sel_state[2];    /* the EXPR state computing that index */
 } pass_shaders;
 
 static void pass_state(hfx_builder *b, const hfx_state_assign *sa, pass_shaders *sh) {
@@ -334,8 +344,22 @@ static void pass_state(hfx_builder *b, const hfx_state_assign *sa, pass_shaders 
     hfx_fx_state st = {.id = info->id, .index = index, .line = sa->loc.line, .col = sa->loc.col};
     if (info->kind == HFX_SV_SHADER) {
         const hfx_expr *c;
-        int found = shader_compile(b, sa->value, &c, 0);
         bool vertex = strcasecmp(info->name, "VertexShader") == 0;
+        shader_select *sel = &sh->sel[vertex ? 0 : 1];
+        int found = shader_compile(b, sa->value, &c, sel, 0);
+        if (found == 2 && hfx_build_selector(b, sel->index, sel->array->arg_count, &st.ref, &st.count)) {
+            st.kind = HFX_FX_VALUE_EXPR;
+            sh->sel_state[vertex ? 0 : 1] = b->fx->state_count;
+            sh->any = true;
+            add_state(b, &st);
+            return;
+        }
+        if (found == 2) {
+            hfx_error(b->diags, sel->index->loc, X_UNSUPPORTED,
+                      "a shader array index must be an expression of parameters and constants");
+            sel->array = NULL;
+            found = -1;
+        }
         if (found < 0) {
             st.kind = HFX_FX_VALUE_UNSUPPORTED;
         } else {
@@ -351,6 +375,83 @@ static void pass_state(hfx_builder *b, const hfx_state_assign *sa, pass_shaders 
     if (state_value(b, info, sa->value, &st)) add_state(b, &st);
 }
 
+/* --- shader arrays chosen at Apply ---------------------------------------------------------- */
+
+/* The top-level parameter whose value words start at `offset`, or HFX_NONE. */
+static uint32_t param_at(const hfx_fx_effect *fx, uint32_t offset) {
+    for (uint32_t i = 0; i < fx->top_param_count; i++)
+        if (fx->params[i].offset == offset && fx->params[i].words) return i;
+    return HFX_NONE;
+}
+
+/* The one scalar int parameter the selectors read directly (ShaderIndex), HFX_NONE when they
+ * read none; false when they read several (not enumerated). */
+static bool selector_driver(const hfx_fx_effect *fx, const pass_shaders *sh, uint32_t *driver) {
+    *driver = HFX_NONE;
+    for (int s = 0; s < 2; s++) {
+        if (!sh->sel[s].array) continue;
+        const hfx_fx_state *st = &fx->states[sh->sel_state[s]];
+        const uint32_t *code = fx->exprs + st->ref;
+        for (uint32_t at = 0; at < st->count; at = hfx_evc_next(code, at, st->count)) {
+            if ((code[at] & 0xffu) != HFX_EVC_PARAM) continue;
+            uint32_t p = param_at(fx, code[at + 1]);
+            if (p == HFX_NONE || fx->params[p].klass != HFX_CLASS_SCALAR || fx->params[p].type != HFX_TYPE_INT) return false;
+            if (*driver != HFX_NONE && *driver != p) return false;
+            *driver = p;
+        }
+    }
+    return true;
+}
+
+/* The index selector s gives with these parameter values (HFX_NONE: that stage is fixed). */
+static uint32_t selected(const hfx_fx_effect *fx, const pass_shaders *sh, int s, const uint32_t *values) {
+    if (!sh->sel[s].array) return HFX_NONE;
+    const hfx_fx_state *st = &fx->states[sh->sel_state[s]];
+    hfx_ev_value v;
+    return hfx_evc_run(fx->exprs + st->ref, st->count, values, &v) ? (uint32_t)v.c[0] : 0;
+}
+
+/* The program of one pair of array entries (or the pass's fixed shader for a fixed stage). */
+static uint32_t variant_program(hfx_builder *b, const pass_shaders *sh, const uint32_t idx[2], hfx_loc loc) {
+    const hfx_expr *c[2] = {sh->vs, sh->ps};
+    for (int s = 0; s < 2; s++)
+        if (idx[s] != HFX_NONE && shader_compile(b, sh->sel[s].array->args[idx[s]], &c[s], NULL, 0) < 0) return HFX_NONE;
+    return program_for(b, c[0], c[1], loc);
+}
+
+static void add_variant(hfx_builder *b, uint32_t pass, const uint32_t idx[2], uint32_t program) {
+    hfx_fx_effect *fx = b->fx;
+    for (uint32_t i = 0; i < fx->variant_count; i++)
+        if (fx->variants[i].pass == pass && fx->variants[i].vs == idx[0] && fx->variants[i].ps == idx[1]) return;
+    if (!HFX_BUILD_GROW(b, fx->variants, fx->variant_count, b->variant_cap)) return;
+    fx->variants[fx->variant_count++] = (hfx_fx_variant){pass, idx[0], idx[1], program};
+}
+
+enum { MAX_DRIVER_VALUE = 256 }; /* ShaderIndex values tried; tables clamp beyond their ends */
+
+/* Every pair of entries the selectors reach as their driving parameter takes each value, the
+ * others keeping their defaults (XNA's classes set ShaderIndex alone): one program each. */
+static void build_variants(hfx_builder *b, const pass_shaders *sh, uint32_t pass, hfx_loc loc) {
+    hfx_fx_effect *fx = b->fx;
+    uint32_t driver;
+    if (!selector_driver(fx, sh, &driver)) {
+        hfx_error(b->diags, loc, X_UNSUPPORTED, "shader arrays chosen by more than one int parameter are not supported");
+        return;
+    }
+    uint32_t *values = malloc((fx->value_words ? fx->value_words : 1) * sizeof *values);
+    if (!values) { b->failed_alloc = true; return; }
+    memcpy(values, fx->values, fx->value_words * sizeof *values);
+    for (int v = 0; v < (driver == HFX_NONE ? 1 : MAX_DRIVER_VALUE); v++) {
+        if (driver != HFX_NONE) values[fx->params[driver].offset] = (uint32_t)v;
+        uint32_t idx[2] = {selected(fx, sh, 0, values), selected(fx, sh, 1, values)}, prog;
+        bool known = false;
+        for (uint32_t i = 0; i < fx->variant_count; i++)
+            known |= fx->variants[i].pass == pass && fx->variants[i].vs == idx[0] && fx->variants[i].ps == idx[1];
+        if (!known && (prog = variant_program(b, sh, idx, loc)) != HFX_NONE) add_variant(b, pass, idx, prog);
+    }
+    free(values);
+}
+
 static void build_pass(hfx_builder *b, const hfx_pass_ast *pa, hfx_fx_pass *pass) {
     pass->name = hfx_build_strdup(b, pa->name ? pa->name : "");
     pass->annotation_count = hfx_build_annotations(b, pa->annotations, pa->annotation_count, &pass->first_annotation);
@@ -359,7 +460,8 @@ static void build_pass(hfx_builder *b, const hfx_pass_ast *pa, hfx_fx_pass *pass
     pass_shaders sh = {0};
     for (uint32_t i = 0; i < pa->state_count; i++) pass_state(b, &pa->states[i], &sh);
     pass->state_count = b->fx->state_count - pass->first_state;
-    if (sh.any && (sh.vs || sh.ps)) pass->program = program_for(b, sh.vs, sh.ps, pa->loc);
+    if (sh.sel[0].array || sh.sel[1].array) build_variants(b, &sh, b->fx->pass_count, pa->loc);
+    else if (sh.any && (sh.vs || sh.ps)) pass->program = program_for(b, sh.vs, sh.ps, pa->loc);
     for (uint32_t i = 0; i < pass->state_count; i++) {
         hfx_fx_state *st = &b->fx->states[pass->first_state + i];
         if (st->kind == HFX_FX_VALUE_PROGRAM) st->ref = pass->program;

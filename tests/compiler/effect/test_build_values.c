@@ -387,10 +387,11 @@ static void located_errors(void) {
     snprintf(src, sizeof src,
              "%s"
              "PixelShader PS[2] = { compile ps_2_0 red(), compile ps_2_0 green() };\n"
-             "int which;\n"
-             "technique T { pass P { VertexShader = compile vs_2_0 vs(); PixelShader = (PS[which]); } }\n",
+             "int which, other;\n"
+             "technique T { pass P { VertexShader = compile vs_2_0 vs(); PixelShader = (PS[which + other]); } }\n",
              shaders);
-    check_error(src, "t.fx(6,78): error X3094: a shader array indexed by a non-constant expression is not supported");
+    /* PS[which] is chosen at Apply now (test_shader_arrays.c); two driving parameters are not */
+    check_error(src, "t.fx(6,20): error X3094: shader arrays chosen by more than one int parameter are not supported");
 }
 
 int main(void) {
