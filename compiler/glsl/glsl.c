@@ -246,6 +246,20 @@ static void feed_input(gp *p, const ir_leaf *l) {
     sb_put(p->out, ";\n");
 }
 
+/* A matrix vertex input: its registers (TEXCOORD1..4 of `float4x4 world : TEXCOORD1`, as
+ * hardware instancing sends them) hold the HLSL matrix's columns under D3D9's default
+ * column_major packing, and were fed in as rows: transposed into place. */
+static void transpose_input(gp *p, const ir_leaf *l) {
+    if (!l->matrix_path) return;
+    if (l->matrix_type->rows != l->matrix_type->cols) {
+        glsl_error(p, l->loc, "a non-square matrix as a vertex input is not supported");
+        return;
+    }
+    if (p->legacy) { glsl_error(p, l->loc, "a matrix vertex input needs GLSL 330 or ES 300"); return; }
+    line_start(p);
+    sb_printf(p->out, "%s = transpose(%s); // D3D9's registers hold its columns\n", l->matrix_path, l->matrix_path);
+}
+
 static bool written_by_vs(const glsl_iface *io, const char *sem) {
     for (uint32_t i = 0; i < io->vs_write_count; i++)
         if (strcmp(io->vs_writes[i], sem) == 0) return true;
@@ -322,6 +336,7 @@ static void print_main(gp *p) {
         sb_put(p->out, ";\n");
     }
     for (int i = 0; i < nin; i++) feed_input(p, &in[i]);
+    for (int i = 0; p->stage == IR_VERTEX && i < nin; i++) transpose_input(p, &in[i]);
     line_start(p);
     if (f->ret && f->ret->kind != TY_VOID) sb_printf(p->out, "%s = ", glsl_decl(p, f->ret, "hfx_ret"));
     sb_printf(p->out, "%s(", f->glsl);

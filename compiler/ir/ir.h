@@ -173,6 +173,11 @@ typedef struct ir_leaf {
     const hfx_type *type;
     const char *path;        /* "hfx_arg0.Posicion" */
     hfx_loc loc;
+    /* A matrix with a semantic takes one register per row (`float3x3 m : TEXCOORD4` is
+     * TEXCOORD4..6, path m[0..2]); on the last row's leaf, the matrix's own path. A vertex
+     * input's registers hold D3D9's columns (column_major packing): the GLSL transposes it. */
+    const char *matrix_path;
+    const hfx_type *matrix_type;
 } ir_leaf;
 
 /* The entry's inputs (outputs false) or outputs; reports X3502 for a value without a

@@ -2,6 +2,7 @@
  * parameters contribute one leaf per member with a semantic; semantics are compared
  * case-insensitively, POSITION meaning POSITION0. */
 #include <ctype.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "ir/ir.h"
@@ -27,7 +28,15 @@ typedef struct leaves { ir_leaf *items; uint32_t count, cap; bool bad; } leaves;
 
 static void push(ir_ctx *c, leaves *l, const char *sem, const hfx_type *ty, const char *path, hfx_loc loc) {
     if (!HFX_ARENA_GROW(c->arena, l->items, l->count, l->cap, 8)) return;
-    l->items[l->count++] = (ir_leaf){ ir_canonical_semantic(c->arena, sem), ty, path, loc };
+    l->items[l->count++] = (ir_leaf){ ir_canonical_semantic(c->arena, sem), ty, path, loc, NULL, NULL };
+}
+
+/* The semantic `k` registers after sem: TEXCOORD1 + 2 = TEXCOORD3. */
+static const char *semantic_plus(ir_ctx *c, const char *sem, uint32_t k) {
+    const char *canon = ir_canonical_semantic(c->arena, sem);
+    size_t n = strlen(canon);
+    while (n && isdigit((unsigned char)canon[n - 1])) n--;
+    return hfx_arena_printf(c->arena, "%.*s%lu", (int)n, canon, strtoul(canon + n, NULL, 10) + k);
 }
 
 static void walk(ir_ctx *c, leaves *l, const hfx_type *ty, const char *sem, const char *path, hfx_loc loc,
@@ -45,9 +54,16 @@ static void walk(ir_ctx *c, leaves *l, const hfx_type *ty, const char *sem, cons
         l->bad = true;
         return;
     }
-    if (ty->kind == TY_MATRIX && ty->rows > 1 && ty->cols > 1) { /* would span several registers */
-        hfx_error(c->diags, loc, X_UNSUPPORTED, "'%s': %s: matrix-typed semantics are not supported", fn, what);
-        l->bad = true;
+    if (ty->kind == TY_ARRAY && ty->elem && ty->array_len) { /* `float2 uv[8] : TEXCOORD0`: one register each */
+        for (uint32_t i = 0; i < ty->array_len; i++)
+            walk(c, l, ty->elem, semantic_plus(c, sem, i), hfx_arena_printf(c->arena, "%s[%u]", path, i), loc, fn, what);
+        return;
+    }
+    if (ty->kind == TY_MATRIX && ty->rows > 1 && ty->cols > 1) {
+        for (uint32_t r = 0; r < ty->rows; r++)
+            push(c, l, semantic_plus(c, sem, r), hfx_type_vector(c->types, ty->base, ty->cols),
+                 hfx_arena_printf(c->arena, "%s[%u]", path, r), loc);
+        if (l->count) l->items[l->count - 1].matrix_path = path, l->items[l->count - 1].matrix_type = ty;
         return;
     }
     if (!hfx_type_is_numeric(ty)) {
