@@ -132,8 +132,10 @@ static bool is_shadowed(const parse_ctx *ctx, const hfx_token *t) {
     return false;
 }
 
-/* True when the builtin type spelling t is a name here (and remembers a new one). */
+/* True when the builtin type spelling t is a name here (and remembers a new one). A
+ * semantic spelled like a type (`Texture xTexture : TEXTURE;`) is a name too. */
 static bool type_spelling_is_name(parse_ctx *ctx, const hfx_token *t) {
+    if (ctx->prev_code == ':' && ends_declarator(t->next) && !is_punct(t->next, P_COLON)) return true;
     if (ctx->prev_code == TYPE_NAME && ends_declarator(t->next)) {
         if (!is_shadowed(ctx, t) && HFX_ARENA_GROW(ctx->arena, ctx->shadows, ctx->shadow_count, ctx->shadow_cap, 8))
             ctx->shadows[ctx->shadow_count++] = t->text;

@@ -43,9 +43,10 @@ static void sampler_and_texture_names(void) {
         "sampler samplerState;\n"
         "float4 ps(float2 uv : TEXCOORD0) : COLOR { return tex2D(Sampler, uv) + tex2D(samplerState, uv); }\n"
         "Texture t2;\n" /* the spelling still declares with the type where a name follows */
+        "Texture xTexture : TEXTURE;\n" /* a semantic spelled like a type */
         "technique T { pass P { VertexShader = null; PixelShader = compile ps_2_0 ps(); } }\n";
-    const char *const names[] = {"Texture", "Sampler", "samplerState", "t2"};
-    compiles_clean(src, names, 4);
+    const char *const names[] = {"Texture", "Sampler", "samplerState", "t2", "xTexture"};
+    compiles_clean(src, names, 5);
 }
 
 int main(void) {
