@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# The real-world corpus: effects from public repositories, kept outside the repository (only
+# their list, tests/corpus/sources.tsv, is committed: repository, commit, path, kind).
+#
+#   scripts/corpus.sh extract MIRRORS DIR   copy every listed file out of git snapshots
+#                                           (MIRRORS/<owner>+<name>/repo, as the search
+#                                           tool's fetch leaves them) into DIR/<owner>+<name>/
+#   scripts/corpus.sh run DIR [BUILD]       compile every root effect with hfxc for GLSL 330
+#                                           and GLSL ES 300, validate each shader with
+#                                           glslangValidator, render it with hfxview; print a
+#                                           table, the failures' first lines, `N/M compiled`
+#
+# BUILD is a build folder of this checkout (default build/test). Output files go to a
+# temporary folder (kept: its path is printed), PNGs under <tmp>/png for a contact sheet.
+set -uo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+list=$here/tests/corpus/sources.tsv
+
+extract() {
+    local mirrors=$1 dir=$2
+    tail -n +2 "$list" | while IFS=$'\t' read -r repo commit path kind; do
+        local git=$mirrors/${repo/\//+}/repo
+        [ -d "$git/.git" ] && git=$git/.git
+        mkdir -p "$dir/${repo/\//+}/$(dirname "$path")"
+        git --git-dir="$git" show "$commit:$path" > "$dir/${repo/\//+}/$path" 2>/dev/null ||
+            echo "missing: $repo $commit $path" >&2
+    done
+}
+
+# One effect: "compile330 compileES validate render" as ok / FAIL / - columns.
+one() {
+    local fx=$1 out=$2 hfxc=$3 view=$4 name c330=FAIL ces=FAIL val=- ren=-
+    name=$(echo "$fx" | tr '/' '_')
+    mkdir -p "$out/glsl/$name.330" "$out/glsl/$name.es"
+    "$hfxc" --quiet --target glsl330 --emit-glsl "$out/glsl/$name.330" "$fx" >"$out/log/$name.330" 2>&1 && c330=ok
+    "$hfxc" --quiet --target glsles300 --emit-glsl "$out/glsl/$name.es" "$fx" >"$out/log/$name.es" 2>&1 && ces=ok
+    if [ $c330 = ok ] && [ $ces = ok ]; then
+        val=ok
+        for s in "$out/glsl/$name".*/*; do
+            [ -f "$s" ] || continue
+            glslangValidator "$s" >>"$out/log/$name.val" 2>&1 || val=FAIL
+        done
+    fi
+    if [ -n "$view" ] && [ $c330 = ok ]; then
+        timeout 60 "$view" "$fx" -o "$out/png/$name.png" --size 128x128 >"$out/log/$name.view" 2>&1 && ren=ok || ren=FAIL
+    fi
+    printf "%-6s %-6s %-8s %-6s %s\n" "$c330" "$ces" "$val" "$ren" "$fx"
+}
+
+run() {
+    local dir=$1 build=${2:-$here/build/test}
+    local hfxc=$build/compiler/hfxc view=$build/tools/hfxview/hfxview
+    [ -x "$hfxc" ] || { echo "no hfxc in $build (build first)" >&2; exit 2; }
+    [ -x "$view" ] || view=
+    local out; out=$(mktemp -d /tmp/hfx-corpus-XXXXXX)
+    mkdir -p "$out/log" "$out/png" "$out/glsl"
+    export -f one
+    printf "%-6s %-6s %-8s %-6s %s\n" "330" "ES300" "validate" "render" "effect"
+    (cd "$dir" && tail -n +2 "$list" | awk -F'\t' '$4 == "root" { gsub("/", "+", $1); print $1 "/" $3 }' |
+        xargs -d '\n' -P "$(nproc)" -I{} bash -c 'one "$@"' _ {} "$out" "$hfxc" "$view") | sort -k5 | tee "$out/table.txt"
+    local total ok
+    total=$(wc -l < "$out/table.txt")
+    ok=$(awk '$1 == "ok" && $2 == "ok" && $3 == "ok"' "$out/table.txt" | wc -l)
+    echo
+    echo "first errors of the failures (by message, most frequent first):"
+    cat "$out"/log/*.330 "$out"/log/*.es 2>/dev/null | grep -o "error X[0-9]*: .*" | sed "s/'[^']*'/'_'/g" |
+        sort | uniq -c | sort -rn | head -25
+    echo
+    echo "outputs in $out"
+    echo "$ok/$total compiled (GLSL 330 and ES 300) and validated"
+}
+
+case "${1:-}" in
+extract) extract "$2" "$3" ;;
+run) run "$2" "${3:-}" ;;
+*) sed -n '2,14p' "$0"; exit 2 ;;
+esac
