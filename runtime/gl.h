@@ -49,6 +49,10 @@
     V(Uniform2iv, (GLint location, GLsizei count, const GLint *v), (location, count, v)) \
     V(Uniform3iv, (GLint location, GLsizei count, const GLint *v), (location, count, v)) \
     V(Uniform4iv, (GLint location, GLsizei count, const GLint *v), (location, count, v)) \
+    V(Uniform1uiv, (GLint location, GLsizei count, const GLuint *v), (location, count, v)) \
+    V(Uniform2uiv, (GLint location, GLsizei count, const GLuint *v), (location, count, v)) \
+    V(Uniform3uiv, (GLint location, GLsizei count, const GLuint *v), (location, count, v)) \
+    V(Uniform4uiv, (GLint location, GLsizei count, const GLuint *v), (location, count, v)) \
     V(UniformMatrix2fv, (GLint location, GLsizei count, GLboolean t, const GLfloat *v), (location, count, t, v)) \
     V(UniformMatrix3fv, (GLint location, GLsizei count, GLboolean t, const GLfloat *v), (location, count, t, v)) \
     V(UniformMatrix4fv, (GLint location, GLsizei count, GLboolean t, const GLfloat *v), (location, count, t, v)) \

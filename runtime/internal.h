@@ -112,7 +112,7 @@ typedef struct hfx_rt_sampler {
 } hfx_rt_sampler;
 
 enum { /* hfx_upload.fn */
-    UP_F1, UP_F2, UP_F3, UP_F4, UP_I1, UP_I2, UP_I3, UP_I4,
+    UP_F1, UP_F2, UP_F3, UP_F4, UP_I1, UP_I2, UP_I3, UP_I4, UP_U1, UP_U2, UP_U3, UP_U4,
     UP_M2, UP_M3, UP_M4, UP_M2x3, UP_M3x2, UP_M2x4, UP_M4x2, UP_M3x4, UP_M4x3
 };
 
@@ -120,6 +120,7 @@ enum { /* hfx_upload.kind: how Apply calls it, decided at load */
     UK_FLOAT,   /* glUniform{1,2,3,4}fv on the words as they are */
     UK_MATRIX,  /* glUniformMatrix*fv(transpose = GL_FALSE) */
     UK_INT,     /* glUniform{1,2,3,4}iv */
+    UK_UINT,    /* glUniform{1,2,3,4}uiv: an int parameter's bits into a GLSL uint (HLSL uint) */
     UK_CONVERT  /* the GLSL type's base differs from the data's (int <-> float): through scratch */
 };
 

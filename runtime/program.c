@@ -97,6 +97,10 @@ static int upload_fn(GLenum type, uint16_t *fn, uint32_t *comps, int *is_int) {
     case GL_INT_VEC2: case GL_BOOL_VEC2: *fn = UP_I2, *comps = 2, *is_int = 1; return 1;
     case GL_INT_VEC3: case GL_BOOL_VEC3: *fn = UP_I3, *comps = 3, *is_int = 1; return 1;
     case GL_INT_VEC4: case GL_BOOL_VEC4: *fn = UP_I4, *comps = 4, *is_int = 1; return 1;
+    case GL_UNSIGNED_INT: *fn = UP_U1, *comps = 1, *is_int = 1; return 1;
+    case GL_UNSIGNED_INT_VEC2: *fn = UP_U2, *comps = 2, *is_int = 1; return 1;
+    case GL_UNSIGNED_INT_VEC3: *fn = UP_U3, *comps = 3, *is_int = 1; return 1;
+    case GL_UNSIGNED_INT_VEC4: *fn = UP_U4, *comps = 4, *is_int = 1; return 1;
     case GL_FLOAT_MAT2: *fn = UP_M2, *comps = 4; return 1;
     case GL_FLOAT_MAT3: *fn = UP_M3, *comps = 9; return 1;
     case GL_FLOAT_MAT4: *fn = UP_M4, *comps = 16; return 1;
@@ -107,6 +111,18 @@ static int upload_fn(GLenum type, uint16_t *fn, uint32_t *comps, int *is_int) {
     case GL_FLOAT_MAT3x4: *fn = UP_M3x4, *comps = 12; return 1;
     case GL_FLOAT_MAT4x3: *fn = UP_M4x3, *comps = 12; return 1;
     default: return 0;
+    }
+}
+
+/* glUniform{1..4}uiv for a uint uniform (D3D9 has no uint registers: HLSL uint parameters hold
+ * ints, whose bits the GLSL uint takes). */
+static void upload_uint(hfx_device *dev, const hfx_upload *up, const void *v) {
+    const GLuint *u = v;
+    switch (up->fn) {
+    case UP_U1: dev->gl.Uniform1uiv(up->location, up->count, u); break;
+    case UP_U2: dev->gl.Uniform2uiv(up->location, up->count, u); break;
+    case UP_U3: dev->gl.Uniform3uiv(up->location, up->count, u); break;
+    default: dev->gl.Uniform4uiv(up->location, up->count, u); break;
     }
 }
 
@@ -137,7 +153,7 @@ int hfx_rt_upload_setup(const hfx_gl *gl, GLenum type, const hfx_fx_param *p, hf
     uint32_t elem_words = p->elements ? p->words / p->elements : p->words;
     if (!upload_fn(type, &up->fn, comps, &is_int) || *comps != elem_words) return 0;
     if (is_int != (p->type != HFX_TYPE_FLOAT)) up->kind = UK_CONVERT;
-    else if (is_int) up->kind = UK_INT;
+    else if (is_int) up->kind = up->fn >= UP_U1 && up->fn <= UP_U4 ? UK_UINT : UK_INT;
     else if (up->fn >= UP_M2) up->kind = UK_MATRIX;
     else up->kind = UK_FLOAT;
     set_call(gl, up);
@@ -354,9 +370,13 @@ void hfx_rt_upload_slow(hfx_device *dev, const hfx_upload *up, const uint32_t *v
         up->call.i(up->location, up->count, (const void *)src);
         return;
     }
+    if (up->kind == UK_UINT) { /* the int's bits as they are: set_int(3) is 3u */
+        upload_uint(dev, up, (const GLuint *)src);
+        return;
+    }
     /* GLSL declared int where the data is float, or the reverse. */
     hfx_gl *gl = &dev->gl;
-    int to_int = up->fn >= UP_I1 && up->fn <= UP_I4;
+    int to_int = up->fn >= UP_I1 && up->fn <= UP_U4;
     for (uint32_t i = 0; i < up->words; i++) {
         if (to_int) {
             float f;
@@ -378,6 +398,7 @@ void hfx_rt_upload_slow(hfx_device *dev, const hfx_upload *up, const uint32_t *v
     case UP_I2: gl->Uniform2iv(up->location, n, d); break;
     case UP_I3: gl->Uniform3iv(up->location, n, d); break;
     case UP_I4: gl->Uniform4iv(up->location, n, d); break;
+    case UP_U1: case UP_U2: case UP_U3: case UP_U4: upload_uint(dev, up, d); break;
     case UP_M2: gl->UniformMatrix2fv(up->location, n, GL_FALSE, d); break;
     case UP_M3: gl->UniformMatrix3fv(up->location, n, GL_FALSE, d); break;
     case UP_M4: gl->UniformMatrix4fv(up->location, n, GL_FALSE, d); break;
