@@ -1,4 +1,5 @@
-/* glsl_intrin.c: HLSL intrinsics in GLSL, with HLSL's meaning where the two differ:
+/* glsl_intrin.c: HLSL intrinsics in GLSL, with HLSL's meaning where the two differ (pow
+ * raises |x| as D3D9's pow instruction does):
  * frac is x - floor(x) (fract), fmod truncates (x - y * trunc(x / y), not GLSL mod), round is
  * floor(x + 0.5) as fxc's ps_2/3 code computes it, ddy is -dFdy (D3D's screen y goes down),
  * tex2Dlod/bias take the level from .w. */
@@ -272,6 +273,17 @@ static void lower_trunc(gp *p, const ir_expr *e, int max) {
     sb_put(p->out, ") * floor(abs(");
     glsl_expr(p, e->a[0], PREC_ASSIGN);
     sb_put(p->out, ")))");
+}
+
+/* D3D9's pow instruction raises |x| (SM2/SM3 code from fxc computes pow(x, y) so): a
+ * negative base gives |x|^y, where GLSL's pow is undefined. */
+static void lower_pow(gp *p, const ir_expr *e, int max) {
+    (void)max;
+    sb_put(p->out, "pow(abs(");
+    glsl_expr(p, e->a[0], PREC_ASSIGN);
+    sb_put(p->out, "), ");
+    glsl_expr(p, e->a[1], PREC_ASSIGN);
+    sb_put(p->out, ")");
 }
 
 static void lower_all_any(gp *p, const ir_expr *e, int max) {

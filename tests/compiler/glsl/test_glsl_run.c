@@ -379,6 +379,15 @@ static void scalar_casts_fill_structs_and_arrays(void) {
     check_pixel(src, NULL, 0, 0.5f, 0.5f, 0, 1);
 }
 
+/* pow on SM2/SM3 is D3D9's pow instruction, which raises |x|: with X = -4, pow(X, 2) = 16 and
+ * pow(X, 0.5) = 2 (GLSL's pow is undefined for a negative base). 16 / 32 = 0.5; 2 / 4 = 0.5. */
+static void pow_of_negative_base(void) {
+    const char *src = "float X;\n" VS_PASS
+        "float4 ps() : COLOR { return float4(pow(X, 2) / 32, pow(X, 0.5) / 4, 0, 1); }\n" TECH("ps()");
+    const uval u[] = {{"X", 'f', 1, {-4}, {0}}};
+    check_pixel(src, u, 1, 0.5f, 0.5f, 0, 1);
+}
+
 static void more_intrinsics(void) {
     /* atan2(1, -1) = 3*pi/4 = 2.35619 -> / 4 = 0.589; log10(100) = 2 -> / 4; step(0.5, 0.7) = 1;
      * pow(2, 3) = 8 -> / 16; */
@@ -484,6 +493,7 @@ int main(void) {
     load_gl();
     RUN(mul_row_vector);
     RUN(scalar_casts_fill_structs_and_arrays);
+    RUN(pow_of_negative_base);
     RUN(mul_column_vector);
     RUN(mul_translation);
     RUN(mul_truncated);
