@@ -139,6 +139,17 @@ bool ck_fold_int(check_ctx *c, hfx_expr *e, int64_t *out) {
     }
 }
 
+/* The first name in e that nothing declares (fxc reports it, X3004, rather than X3058). */
+static const hfx_expr *undeclared_in(check_ctx *c, const hfx_expr *e, int depth) {
+    if (!e || depth > 64) return NULL;
+    if (e->kind == EX_IDENT) return e->sym || !e->name || ck_lookup(c, e->name) ? NULL : e;
+    for (uint32_t i = 0; i < e->arg_count; i++) {
+        const hfx_expr *u = undeclared_in(c, e->args[i], depth + 1);
+        if (u) return u;
+    }
+    return NULL;
+}
+
 const hfx_type *ck_resolve_type(check_ctx *c, const hfx_type *ty, hfx_loc loc) {
     if (!ty || ty->kind != TY_ARRAY) return ty;
     const hfx_type *elem = ck_resolve_type(c, ty->elem, loc);
@@ -146,7 +157,9 @@ const hfx_type *ck_resolve_type(check_ctx *c, const hfx_type *ty, hfx_loc loc) {
     int64_t n = 0;
     hfx_expr *len = ty->array_len_expr;
     if (!ck_fold_int(c, len, &n) || n <= 0 || n > 65536) {
-        hfx_error(c->diags, ck_start(len), X_ARRAY_DIM, "array dimensions must be literal scalar expressions");
+        const hfx_expr *u = undeclared_in(c, len, 0);
+        if (u) hfx_error(c->diags, u->loc, X_UNDECLARED, "undeclared identifier '%s'", u->name);
+        else hfx_error(c->diags, ck_start(len), X_ARRAY_DIM, "array dimensions must be literal scalar expressions");
         n = 1;
     }
     return hfx_type_array(c->types, elem, (uint32_t)n);
