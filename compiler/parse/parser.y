@@ -280,6 +280,7 @@ state_name
 state_value
     : initializer
     | '<' IDENT '>'                          { $$ = pb_state_ref(ctx, $2.text, @2); }
+    | '<' IDENT '[' expr ']' '>'             { $$ = pb_index(ctx, pb_state_ref(ctx, $2.text, @2), $4, @3); }
     ;
 
 /* ---- statements ---- */

@@ -149,6 +149,28 @@ done:
     hfxc_result_free(r);
 }
 
+/* Fixed-function states bound to array elements, as DirectX 9 effects write them:
+ * `LightPosition[1] = <g_vLightPos[1]>;` reads element 1 of the parameter array. */
+static void indexed_states_bound_to_elements(void) {
+    hfxc_result *r = compile(
+        "float4 g_vLightPos[2];\n"
+        "float4 ps() : COLOR { return 1; }\n"
+        "technique T { pass P { LightPosition[0] = <g_vLightPos[0]>; LightPosition[1] = <g_vLightPos[1]>;\n"
+        "  PixelShader = compile ps_2_0 ps(); } }\n");
+    const hfx_fx_effect *fx = effect_of(r);
+    CHECK(fx != NULL);
+    if (fx) {
+        const hfx_fx_param *arr = param(fx, "g_vLightPos");
+        const hfx_fx_state *st = &fx->states[fx->passes[0].first_state];
+        CHECK_INT(st[0].kind, HFX_FX_VALUE_PARAM);
+        CHECK_INT(st[0].index, 0);
+        CHECK_INT(st[0].ref, arr->first_child);
+        CHECK_INT(st[1].index, 1);
+        CHECK_INT(st[1].ref, arr->first_child + 1);
+    }
+    hfxc_result_free(r);
+}
+
 static void objects_and_strings(void) {
     hfxc_result *r = compile(
         "string Description = \"two \" \"parts\";\n"
@@ -397,6 +419,7 @@ static void located_errors(void) {
 int main(void) {
     RUN(defaults_are_folded);
     RUN(intrinsics_and_d3d_rules_fold);
+    RUN(indexed_states_bound_to_elements);
     RUN(objects_and_strings);
     RUN(annotations_of_every_kind);
     RUN(pass_states_resolve);
