@@ -70,9 +70,18 @@ static hfx_conv classify_numeric(const hfx_type *from, const hfx_type *to, bool 
     return fail();
 }
 
+/* `(float[4])v`: a cast from a vector or matrix to an array of as many scalars, in order. */
+static hfx_conv numeric_to_array(const hfx_type *from, const hfx_type *to) {
+    const hfx_type *e = to->elem;
+    if (!e || e->kind != TY_SCALAR || to->array_len != hfx_type_components(from)) return fail();
+    return shape(CONV_SHAPE_RESHAPE, from->base == e->base ? CONV_BASE_EXACT : CONV_BASE_CONVERT);
+}
+
 hfx_conv hfx_conv_classify(const hfx_type *from, const hfx_type *to, bool explicit_cast) {
     if (!from || !to) return fail();
     if (hfx_type_is_numeric(from) && hfx_type_is_numeric(to)) return classify_numeric(from, to, explicit_cast);
+    if (explicit_cast && hfx_type_is_numeric(from) && !hfx_type_is_scalarlike(from) && to->kind == TY_ARRAY)
+        return numeric_to_array(from, to);
     if (from->kind != to->kind) return fail();
     switch (from->kind) {
     case TY_TEXTURE: case TY_SAMPLER:

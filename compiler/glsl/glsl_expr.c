@@ -423,11 +423,27 @@ static void print_fill(gp *p, const hfx_type *to, ir_expr *x) {
     sb_put(p->out, ")");
 }
 
+/* `(float[4])v`: each component of a vector or matrix (row by row) becomes an element. */
+static void print_to_array(gp *p, const hfx_type *to, const ir_expr *x) {
+    unsigned n = ncomp(x->type);
+    const char *elem = scalar_name(p, to->elem->base);
+    if (p->legacy) { glsl_error(p, x->loc, "a cast to an array needs GLSL 330 or ES 300"); return; }
+    sb_printf(p->out, "%s(", glsl_ctor_type(p, to));
+    for (unsigned i = 0; i < n; i++) {
+        sb_printf(p->out, "%s%s(", i ? ", " : "", elem);
+        glsl_expr(p, x, PREC_POSTFIX);
+        if (glsl_is_matrix(x->type)) sb_printf(p->out, "[%u][%u])", i / x->type->cols, i % x->type->cols);
+        else sb_printf(p->out, ".%c)", "xyzw"[i]);
+    }
+    sb_put(p->out, ")");
+}
+
 static void print_convert(gp *p, const ir_expr *e, int max) {
     const ir_expr *x = e->a[0];
     const hfx_type *to = e->type, *from = x->type;
     unsigned nt = ncomp(to), nf = ncomp(from);
     if (nf == 1 && (to->kind == TY_STRUCT || to->kind == TY_ARRAY)) { print_fill(p, to, e->a[0]); return; }
+    if (nf > 1 && to->kind == TY_ARRAY) { print_to_array(p, to, x); return; }
     if (!nt || !nf) { glsl_expr(p, x, max); return; }
     const char *tty = glsl_type(p, to), *fty = glsl_type(p, from);
     if (glsl_is_matrix(to)) {

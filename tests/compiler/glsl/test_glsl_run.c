@@ -388,6 +388,16 @@ static void pow_of_negative_base(void) {
     check_pixel(src, u, 1, 0.5f, 0.5f, 0, 1);
 }
 
+/* (float[4])U and (int[4])U take U's components in order; (int)-1.6 truncates to -1:
+ * (w[2], -i[3] * 0.5, w[1], 1) = (0.7, 0.5, 0.2, 1). */
+static void vector_cast_to_array(void) {
+    const char *src = "float4 U;\n" VS_PASS
+        "float4 ps() : COLOR { float w[4] = (float[4])U; int i[4] = (int[4])U; return float4(w[2], -i[3] * 0.5, w[1], 1); }\n"
+        TECH("ps()");
+    const uval u[] = {{"U", 'v', 1, {0.1f, 0.2f, 0.7f, -1.6f}, {0}}};
+    check_pixel(src, u, 1, 0.7f, 0.5f, 0.2f, 1);
+}
+
 static void more_intrinsics(void) {
     /* atan2(1, -1) = 3*pi/4 = 2.35619 -> / 4 = 0.589; log10(100) = 2 -> / 4; step(0.5, 0.7) = 1;
      * pow(2, 3) = 8 -> / 16; */
@@ -494,6 +504,7 @@ int main(void) {
     RUN(mul_row_vector);
     RUN(scalar_casts_fill_structs_and_arrays);
     RUN(pow_of_negative_base);
+    RUN(vector_cast_to_array);
     RUN(mul_column_vector);
     RUN(mul_translation);
     RUN(mul_truncated);
