@@ -235,10 +235,24 @@ static const hfx_type *check_unary(check_ctx *c, hfx_expr *e) {
     return set_type(e, t);
 }
 
+/* `float4(dxSize, dx) = ddx(...);`: fxc writes each component back to the constructor's
+ * arguments (DirectX SDK samples do this); every argument must be a vector or scalar l-value. */
+static bool constructor_lvalue(check_ctx *c, hfx_expr *e) {
+    bool ok = e->type && e->type->kind == TY_VECTOR;
+    for (uint32_t i = 0; ok && i < e->arg_count; i++) {
+        const hfx_type *t = e->args[i]->type;
+        ok = t && (t->kind == TY_VECTOR || t->kind == TY_SCALAR) && ck_lvalue(c, e->args[i]);
+    }
+    if (!ok && e->type && e->type->kind != TY_VECTOR)
+        hfx_error(c->diags, ck_start(e), X_NOT_LVALUE, "l-value specifies const object");
+    return ok;
+}
+
 static const hfx_type *check_assign(check_ctx *c, hfx_expr *e) {
     const hfx_type *lt = ck_expr(c, e->args[0]), *rt = ck_expr(c, e->args[1]);
     if (ck_is_err(c, lt)) return fail(c, e);
-    bool lv = ck_lvalue(c, e->args[0]);
+    bool lv = e->args[0]->kind == EX_CONSTRUCT && e->op == OP_NONE ? constructor_lvalue(c, e->args[0])
+                                                                    : ck_lvalue(c, e->args[0]);
     if (ck_is_err(c, rt)) return fail(c, e);
     if (e->op != OP_NONE) {
         if (!binary_operand_type(c, e, e->op, e->args[0], e->args[1])) return fail(c, e);

@@ -348,8 +348,36 @@ static void print_select(gp *p, const ir_expr *e, int max) {
     close_paren(p, wrap);
 }
 
+/* `float4(a, b) = v`: a helper with an out parameter per argument takes v's components in
+ * order and returns v, so the assignment stays an expression. */
+static void print_scatter(gp *p, const ir_expr *e) {
+    const ir_expr *ctor = e->a[0];
+    const char *vt = glsl_type(p, ctor->type);
+    sbuf sig = {0}, body = {0};
+    unsigned at = 0;
+    for (uint32_t i = 0; i < ctor->n; i++) {
+        unsigned n = ncomp(ctor->a[i]->type);
+        sb_printf(&sig, "out %s a%u, ", glsl_type(p, ctor->a[i]->type), i);
+        sb_printf(&body, "a%u = v.%.*s; ", i, (int)n, "xyzw" + at);
+        at += n;
+    }
+    const char *key = hfx_arena_printf(p->c->arena, "scatter %s%s", sig.d ? sig.d : "", vt);
+    if (glsl_helper(p, key))
+        sb_printf(&p->helpers, "%s hfx_scatter(%s%s v) { %sreturn v; }\n", vt, sig.d ? sig.d : "", vt, body.d ? body.d : "");
+    free(sig.d);
+    free(body.d);
+    sb_put(p->out, "hfx_scatter(");
+    for (uint32_t i = 0; i < ctor->n; i++) {
+        glsl_lvalue(p, ctor->a[i], PREC_ASSIGN);
+        sb_put(p->out, ", ");
+    }
+    glsl_expr(p, e->a[1], PREC_ASSIGN);
+    sb_put(p->out, ")");
+}
+
 static void print_assign(gp *p, const ir_expr *e, int max) {
     const ir_expr *x = e->a[0], *y = e->a[1];
+    if (x->kind == IE_CONSTRUCT && e->op == OP_NONE) { print_scatter(p, e); return; }
     bool wrap = PREC_ASSIGN > max;
     open_paren(p, wrap);
     glsl_lvalue(p, x, PREC_UNARY);

@@ -22,7 +22,9 @@ static void mark_written(ir_ctx *c, ir_shader *sh, const ir_expr *lv) {
 static void find_writes(ir_ctx *c, ir_expr **slot, void *data) {
     ir_shader *sh = data;
     ir_expr *e = *slot;
-    if (e->kind == IE_ASSIGN) mark_written(c, sh, e->a[0]);
+    if (e->kind == IE_ASSIGN && e->a[0]->kind == IE_CONSTRUCT) /* float4(a, b) = v: each argument */
+        for (uint32_t i = 0; i < e->a[0]->n; i++) mark_written(c, sh, e->a[0]->a[i]);
+    else if (e->kind == IE_ASSIGN) mark_written(c, sh, e->a[0]);
     else if (e->kind == IE_UNARY && e->op >= OP_PREINC && e->op <= OP_POSTDEC) mark_written(c, sh, e->a[0]);
     else if (e->kind == IE_CALL) {
         for (uint32_t i = 0; i < e->n && i < e->fn->param_count; i++)

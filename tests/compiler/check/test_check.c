@@ -175,6 +175,8 @@ static void indexing_errors(void) {
                  "t.fx(2,20): error X3121: array, matrix, vector, or indexable object type expected in index expression\n");
     EXPECT_DIAGS("int n;\nfloat f() { float a[n]; return a[0]; }\n",
                  "t.fx(2,21): error X3058: array dimensions must be literal scalar expressions\n");
+    /* a constructor as a target needs an l-value for every argument */
+    EXPECT_DIAGS("float f() { float3 t; float4(1, t) = 2; return t.x; }\n", "t.fx(1,30): error X3025: l-value specifies const object\n");
     /* a name nothing declares is that, as fxc says it (real effects: a size macro left undefined) */
     EXPECT_DIAGS("float f() { float a[N + 1]; return a[0]; }\n", "t.fx(1,21): error X3004: undeclared identifier 'N'\n");
 }

@@ -398,6 +398,15 @@ static void vector_cast_to_array(void) {
     check_pixel(src, u, 1, 0.7f, 0.5f, 0.2f, 1);
 }
 
+/* A constructor as the target: float4(s, t) = v writes v.x to s and v.yzw to t, as fxc does:
+ * (s, t.x, t.z, 1) = (0.25, 0.5, 1, 1). */
+static void constructor_as_lvalue(void) {
+    const char *src = VS_PASS
+        "float4 ps() : COLOR { float s; float3 t; float4(s, t) = float4(0.25, 0.5, 0.75, 1); return float4(s, t.x, t.z, 1); }\n"
+        TECH("ps()");
+    check_pixel(src, NULL, 0, 0.25f, 0.5f, 1, 1);
+}
+
 static void more_intrinsics(void) {
     /* atan2(1, -1) = 3*pi/4 = 2.35619 -> / 4 = 0.589; log10(100) = 2 -> / 4; step(0.5, 0.7) = 1;
      * pow(2, 3) = 8 -> / 16; */
@@ -505,6 +514,7 @@ int main(void) {
     RUN(scalar_casts_fill_structs_and_arrays);
     RUN(pow_of_negative_base);
     RUN(vector_cast_to_array);
+    RUN(constructor_as_lvalue);
     RUN(mul_column_vector);
     RUN(mul_translation);
     RUN(mul_truncated);
