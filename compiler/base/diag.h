@@ -40,6 +40,7 @@ enum {
     X_AMBIGUOUS = 3067,
     X_INVALID_SUBSCRIPT = 3018,
     X_NOT_LVALUE = 3025,
+    X_NOT_ALL_PATHS = 3507,   /* not all control paths return a value (checker, or per pass: ir/lower/limits.c) */
     X_IMPLICIT_TRUNCATION = 3206,
     X_PP_ERROR = 1000,        /* preprocessor errors: X1xxx */
     X_PP_INCLUDE = 1507,      /* failed to open source file */

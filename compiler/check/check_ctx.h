@@ -22,7 +22,6 @@ enum {
     X_INT_REQUIRED = 3082,       /* int or unsigned int type required */
     X_NOT_INDEXABLE = 3121,      /* array, matrix, vector, or indexable object type expected */
     X_INDEX_RANGE = 3504,        /* array index out of bounds */
-    X_NOT_ALL_PATHS = 3507,      /* not all control paths return a value */
     X_BAD_JUMP = 3518,           /* break/continue outside a loop */
     X_RECURSION = 3500,          /* recursive calls */
     X_UNDEFINED = 3501,          /* entrypoint not found / declared but not defined */

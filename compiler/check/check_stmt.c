@@ -193,6 +193,12 @@ static bool always_returns(const hfx_stmt *s) {
     }
 }
 
+static bool has_uniform_param(const hfx_func *f) {
+    for (uint32_t i = 0; i < f->param_count; i++)
+        if (f->params[i]->mods & MOD_UNIFORM) return true;
+    return false;
+}
+
 static void check_params(check_ctx *c, hfx_func *f) {
     for (uint32_t i = 0; i < f->param_count; i++) {
         hfx_decl *p = f->params[i];
@@ -216,7 +222,10 @@ void ck_function(check_ctx *c, hfx_decl *d) {
     if (f->body->kind == ST_BLOCK) check_block_items(c, f->body->body, f->body->body_count);
     else check_stmt(c, f->body);
     ck_scope_pop(c);
-    if (f->ret->kind != TY_VOID && !always_returns(f->body))
-        hfx_error(c->diags, f->loc, X_NOT_ALL_PATHS, "'%s': Not all control paths return a value", f->name);
+    if (f->ret->kind != TY_VOID && !always_returns(f->body)) {
+        /* fxc decides after `compile ps_3_0 PS(1)` has fixed the uniform parameters */
+        if (has_uniform_param(f)) f->returns_per_pass = true;
+        else hfx_error(c->diags, f->loc, X_NOT_ALL_PATHS, "'%s': Not all control paths return a value", f->name);
+    }
     c->func = NULL;
 }

@@ -152,6 +152,8 @@ struct hfx_func {
     hfx_attribute *attrs; uint32_t attr_count;
     hfx_func *definition;      /* check.c: the definition a prototype resolves to */
     hfx_loc loc;               /* the name */
+    bool returns_per_pass;     /* check.c: may end without a return unless the values of its uniform
+                                  parameters fold a branch away; ir/lower/limits.c decides per pass */
 };
 
 /* A variable (global, local), a function parameter, a function, a struct, a typedef or a

@@ -20,8 +20,40 @@ static void check_expr(ir_ctx *c, ir_expr **slot, void *data) {
     }
 }
 
+/* Whether every path through s ends in a return or a discard (switches: not counted). */
+static bool always_returns(const ir_stmt *s) {
+    if (!s) return false;
+    switch (s->kind) {
+    case IS_RETURN: case IS_DISCARD: return true;
+    case IS_BLOCK:
+        for (uint32_t i = 0; i < s->count; i++)
+            if (always_returns(s->body[i])) return true;
+        return false;
+    case IS_IF: /* a condition the pass's uniform arguments made constant picks its branch */
+        if (s->expr && ir_is_const(s->expr) && hfx_type_components(s->expr->type) == 1)
+            return always_returns(ir_const_truth(s->expr) ? s->then_s : s->else_s);
+        return always_returns(s->then_s) && always_returns(s->else_s);
+    case IS_DO: return always_returns(s->then_s);
+    default: return false;
+    }
+}
+
+/* The checker's X3507, for an entry point with uniform parameters, once this pass's compile
+ * arguments fixed them. A function called with constant arguments is fxc's to inline and
+ * fold; hfx keeps it a function and cannot tell, so it reports nothing there. */
+static int check_returns(ir_ctx *c, const ir_func *f) {
+    if (!f->is_entry || !f->src || !f->src->returns_per_pass || !f->ret || f->ret->kind == TY_VOID ||
+        always_returns(f->body))
+        return 0;
+    hfx_error(c->diags, f->src->loc, X_NOT_ALL_PATHS, "'%s': Not all control paths return a value", f->src->name);
+    return 1;
+}
+
 int ir_pass_check(ir_ctx *c, ir_shader *sh) {
     int bad = 0;
-    for (uint32_t i = 0; i < sh->func_count; i++) ir_walk_stmt_exprs(c, sh->funcs[i]->body, check_expr, &bad);
+    for (uint32_t i = 0; i < sh->func_count; i++) {
+        ir_walk_stmt_exprs(c, sh->funcs[i]->body, check_expr, &bad);
+        bad += check_returns(c, sh->funcs[i]);
+    }
     return bad ? -1 : 0;
 }

@@ -171,6 +171,21 @@ static void indexed_states_bound_to_elements(void) {
     hfxc_result_free(r);
 }
 
+static void check_error(const char *src, const char *expected);
+
+/* fxc checks that every path returns after `compile ps_3_0 PS(1)` has fixed the uniform
+ * parameters: PS(1) returns on every path, PS(2) falls off the end (X3507 at PS). */
+static void returns_checked_per_pass(void) {
+    const char *ok_src = "float4 PS(uniform int mode) : COLOR { if (mode == 0) return 1; else if (mode == 1) return 0.5; }\n"
+                         "technique A { pass P { PixelShader = compile ps_3_0 PS(1); } }\n";
+    hfxc_result *r = compile(ok_src);
+    CHECK(effect_of(r) != NULL);
+    hfxc_result_free(r);
+    check_error("float4 PS(uniform int mode) : COLOR { if (mode == 0) return 1; else if (mode == 1) return 0.5; }\n"
+                "technique B { pass P { PixelShader = compile ps_3_0 PS(2); } }\n",
+                "t.fx(1,8): error X3507: 'PS': Not all control paths return a value");
+}
+
 static void objects_and_strings(void) {
     hfxc_result *r = compile(
         "string Description = \"two \" \"parts\";\n"
@@ -420,6 +435,7 @@ int main(void) {
     RUN(defaults_are_folded);
     RUN(intrinsics_and_d3d_rules_fold);
     RUN(indexed_states_bound_to_elements);
+    RUN(returns_checked_per_pass);
     RUN(objects_and_strings);
     RUN(annotations_of_every_kind);
     RUN(pass_states_resolve);
