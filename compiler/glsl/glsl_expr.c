@@ -338,6 +338,15 @@ static void print_select(gp *p, const ir_expr *e, int max) {
         }
         return;
     }
+    if (ir_has_side_effects(e->a[1]) || ir_has_side_effects(e->a[2])) {
+        /* before SM6, HLSL evaluates both operands of ?: (the effects of both happen); a
+         * function's arguments are all evaluated, GLSL's ?: evaluates one */
+        const char *ty = glsl_type(p, e->type);
+        if (glsl_helper(p, hfx_arena_printf(p->c->arena, "select1 %s", ty)))
+            sb_printf(&p->helpers, "%s hfx_select1(bool c, %s a, %s b) { return c ? a : b; }\n", ty, ty, ty);
+        call_args(p, "hfx_select1", e->a, 3);
+        return;
+    }
     bool wrap = PREC_SELECT > max;
     open_paren(p, wrap);
     glsl_expr(p, c, PREC_OR);

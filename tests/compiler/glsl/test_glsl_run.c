@@ -407,6 +407,16 @@ static void constructor_as_lvalue(void) {
     check_pixel(src, NULL, 0, 0.25f, 0.5f, 1, 1);
 }
 
+/* HLSL before SM6 evaluates both operands of ?: : f3 = c ? (f1 = 0.5) + 0.2 : (f2 = 0.6) with
+ * c true leaves f1 = 0.5 and f2 = 0.6, and f3 = 0.7. Output (f1, f2, f3, 1). */
+static void select_evaluates_both_operands(void) {
+    const char *src = "float C;\n" VS_PASS
+        "float4 ps() : COLOR { float f1 = 0, f2 = 0, f3; f3 = C > 0 ? (f1 = 0.5) + 0.2 : (f2 = 0.6); return float4(f1, f2, f3, 1); }\n"
+        TECH("ps()");
+    const uval u[] = {{"C", 'f', 1, {1}, {0}}};
+    check_pixel(src, u, 1, 0.5f, 0.6f, 0.7f, 1);
+}
+
 static void more_intrinsics(void) {
     /* atan2(1, -1) = 3*pi/4 = 2.35619 -> / 4 = 0.589; log10(100) = 2 -> / 4; step(0.5, 0.7) = 1;
      * pow(2, 3) = 8 -> / 16; */
@@ -515,6 +525,7 @@ int main(void) {
     RUN(pow_of_negative_base);
     RUN(vector_cast_to_array);
     RUN(constructor_as_lvalue);
+    RUN(select_evaluates_both_operands);
     RUN(mul_column_vector);
     RUN(mul_translation);
     RUN(mul_truncated);
