@@ -1,6 +1,7 @@
 /* eval.c: Direct3D's arithmetic on constants (see eval.h for the rules). */
 #include "eval.h"
 
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -179,13 +180,20 @@ const char *hfx_ev_fn_name(hfx_ev_fn fn) { return fn >= 0 && fn < HFX_EV_FN_COUN
 static double saturate(double x) { return x > 0 ? (x < 1 ? x : 1) : 0; } /* NaN gives 0 */
 static double sign_of(double x) { return (x > 0) - (x < 0); }
 
+/* D3D9's log instruction: log2 of |x|, -FLT_MAX at 0; log and log10 scale it, sqrt takes |x|
+ * (fxc builds it from rsq, which does). */
+static double d3d_log2(double x) { return x != 0 ? log2(fabs(x)) : -FLT_MAX; }
+static double d3d_log(double x) { return d3d_log2(x) * 0.69314718055994531; }
+static double d3d_log10(double x) { return d3d_log2(x) * 0.30102999566398120; }
+static double d3d_sqrt(double x) { return sqrt(fabs(x)); }
+
 /* Componentwise float functions of one argument. */
 static bool float1(hfx_ev_fn fn, double x, double *out) {
     static double (*const libm[])(double) = {
         [HFX_EV_FN_ACOS] = acos, [HFX_EV_FN_ASIN] = asin, [HFX_EV_FN_ATAN] = atan, [HFX_EV_FN_CEIL] = ceil,
         [HFX_EV_FN_COS] = cos, [HFX_EV_FN_COSH] = cosh, [HFX_EV_FN_EXP] = exp, [HFX_EV_FN_EXP2] = exp2,
-        [HFX_EV_FN_FLOOR] = floor, [HFX_EV_FN_LOG] = log, [HFX_EV_FN_LOG10] = log10, [HFX_EV_FN_LOG2] = log2,
-        [HFX_EV_FN_SIN] = sin, [HFX_EV_FN_SINH] = sinh, [HFX_EV_FN_SQRT] = sqrt, [HFX_EV_FN_TAN] = tan,
+        [HFX_EV_FN_FLOOR] = floor, [HFX_EV_FN_LOG] = d3d_log, [HFX_EV_FN_LOG10] = d3d_log10, [HFX_EV_FN_LOG2] = d3d_log2,
+        [HFX_EV_FN_SIN] = sin, [HFX_EV_FN_SINH] = sinh, [HFX_EV_FN_SQRT] = d3d_sqrt, [HFX_EV_FN_TAN] = tan,
         [HFX_EV_FN_TANH] = tanh, [HFX_EV_FN_TRUNC] = trunc, [HFX_EV_FN_ABS] = fabs, [HFX_EV_FN_SATURATE] = saturate,
         [HFX_EV_FN_SIGN] = sign_of};
     if ((size_t)fn < sizeof libm / sizeof libm[0] && libm[fn]) *out = libm[fn](x);
@@ -193,7 +201,7 @@ static bool float1(hfx_ev_fn fn, double x, double *out) {
     else if (fn == HFX_EV_FN_RADIANS) *out = x * (3.14159265358979323846 / 180.0);
     else if (fn == HFX_EV_FN_FRAC) *out = x - floor(x);
     else if (fn == HFX_EV_FN_ROUND) *out = floor(x + 0.5);
-    else if (fn == HFX_EV_FN_RSQRT) *out = 1.0 / sqrt(x);
+    else if (fn == HFX_EV_FN_RSQRT) *out = x != 0 ? 1.0 / sqrt(fabs(x)) : FLT_MAX; /* D3D9's rsq */
     else return false;
     *out = round_float(*out);
     return true;

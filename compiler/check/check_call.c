@@ -80,6 +80,21 @@ static void convert_args(check_ctx *c, hfx_expr *e, const hfx_type *const *param
     }
 }
 
+/* f(x) of `float f(float x, float y = 3)`: the call gets the default values as arguments, so
+ * later phases see every parameter bound (the defaults are shared, checked once). */
+static void append_defaults(check_ctx *c, hfx_expr *e, const hfx_func *f) {
+    if (e->arg_count >= f->param_count) return;
+    hfx_expr **args = HFX_NEW_ARRAY(c->arena, hfx_expr *, f->param_count);
+    if (!args) return;
+    for (uint32_t i = 0; i < f->param_count; i++) {
+        if (i < e->arg_count) { args[i] = e->args[i]; continue; }
+        hfx_expr *init = f->params[i]->init;
+        args[i] = ck_is_err(c, ck_expr(c, init)) ? init : ck_convert_arg(c, init, f->params[i]->type, true, e);
+    }
+    e->args = args;
+    e->arg_count = f->param_count;
+}
+
 static const hfx_type *call_user(check_ctx *c, hfx_expr *e, hfx_decl *fd) {
     hfx_func *f = fd->func;
     const hfx_type *params[MAX_ARGS];
@@ -91,6 +106,7 @@ static const hfx_type *call_user(check_ctx *c, hfx_expr *e, hfx_decl *fd) {
     e->fn = f;
     ck_record_call(c, f, e->loc, false);
     convert_args(c, e, params, outs, true);
+    append_defaults(c, e, f);
     return set_type(e, f->ret);
 }
 

@@ -23,6 +23,7 @@ enum {
     X_NOT_INDEXABLE = 3121,      /* array, matrix, vector, or indexable object type expected */
     X_INDEX_RANGE = 3504,        /* array index out of bounds */
     X_BAD_JUMP = 3518,           /* break/continue outside a loop */
+    X_CASE_FALLTHROUGH = 3533,   /* non-empty case statements must have break or return */
     X_RECURSION = 3500,          /* recursive calls */
     X_UNDEFINED = 3501,          /* entrypoint not found / declared but not defined */
     X_LOOP_VAR_CONFLICT = 3078,  /* warning: a for-init variable hides an earlier one */

@@ -430,7 +430,7 @@ const hfx_type *ck_expr(check_ctx *c, hfx_expr *e) {
     if (e->type) return e->type; /* shared subtrees (split initializers) are checked once */
     e->intrinsic = -1;
     switch (e->kind) {
-    case EX_INT: return set_type(e, hfx_type_scalar(c->types, B_INT));
+    case EX_INT: return set_type(e, hfx_type_scalar(c->types, e->is_unsigned ? B_UINT : B_INT));
     case EX_FLOAT: return set_type(e, hfx_type_scalar(c->types, B_FLOAT));
     case EX_BOOL: return set_type(e, hfx_type_scalar(c->types, B_BOOL));
     case EX_STRING: return set_type(e, hfx_type_object(c->types, TY_STRING, DIM_GENERIC));

@@ -50,6 +50,35 @@ static void check_return(check_ctx *c, hfx_stmt *s) {
     }
 }
 
+static bool is_label(const hfx_stmt *s) { return s->kind == ST_CASE || s->kind == ST_DEFAULT; }
+
+/* Whether control cannot run past the end of s: break, continue, return, discard, or a block
+ * ending in one. */
+static bool ends_in_jump(const hfx_stmt *s) {
+    switch (s->kind) {
+    case ST_BREAK: case ST_CONTINUE: case ST_RETURN: case ST_DISCARD: return true;
+    case ST_BLOCK: return s->body_count && ends_in_jump(s->body[s->body_count - 1]);
+    case ST_IF: return s->else_stmt && ends_in_jump(s->then_stmt) && ends_in_jump(s->else_stmt);
+    default: return false;
+    }
+}
+
+/* fxc refuses `case 2: v += 2; case 3: ...`: a case with statements may not fall into the next
+ * label (empty cases sharing a body are fine). */
+static void check_fallthrough(check_ctx *c, const hfx_stmt *s) {
+    bool open = false; /* statements since the last label that do not end in a jump */
+    for (uint32_t i = 0; i < s->body_count; i++) {
+        const hfx_stmt *st = s->body[i];
+        if (is_label(st)) {
+            if (open)
+                hfx_error(c->diags, st->loc, X_CASE_FALLTHROUGH, "non-empty case statements must have break or return");
+            open = false;
+        } else if (st->kind != ST_EMPTY) {
+            open = !ends_in_jump(st);
+        }
+    }
+}
+
 static void check_switch(check_ctx *c, hfx_stmt *s) {
     const hfx_type *t = ck_expr(c, s->expr);
     if (!ck_is_err(c, t)) {
@@ -65,6 +94,7 @@ static void check_switch(check_ctx *c, hfx_stmt *s) {
     check_block_items(c, s->body, s->body_count);
     ck_scope_pop(c);
     c->switches--;
+    check_fallthrough(c, s);
 }
 
 static void check_case(check_ctx *c, hfx_stmt *s) {

@@ -120,7 +120,7 @@ static bool rule_tex(const rule *r, hfx_intrinsic_match *m) {
 
 static bool rule_lit(const rule *r, hfx_intrinsic_match *m) {
     for (unsigned i = 0; i < r->n; i++)
-        if (!hfx_type_is_numeric(r->args[i])) return false;
+        if (!hfx_type_is_scalarlike(r->args[i])) return false;
     all_params(m, hfx_type_scalar(r->t, B_FLOAT), r->n);
     m->ret = hfx_type_vector(r->t, B_FLOAT, 4);
     return true;
@@ -128,6 +128,12 @@ static bool rule_lit(const rule *r, hfx_intrinsic_match *m) {
 
 static bool rule_cross(const rule *r, hfx_intrinsic_match *m) {
     all_params(m, hfx_type_vector(r->t, B_FLOAT, 3), r->n);
+    m->ret = m->params[0];
+    return hfx_type_is_numeric(r->args[0]) && hfx_type_is_numeric(r->args[1]);
+}
+
+static bool rule_dst(const rule *r, hfx_intrinsic_match *m) {
+    all_params(m, hfx_type_vector(r->t, B_FLOAT, 4), r->n);
     m->ret = m->params[0];
     return hfx_type_is_numeric(r->args[0]) && hfx_type_is_numeric(r->args[1]);
 }
@@ -258,6 +264,7 @@ static const struct {
     [SIG_CROSS] = {rule_cross, true},          [SIG_DETERMINANT] = {rule_determinant, false},
     [SIG_TRANSPOSE] = {rule_transpose, false}, [SIG_MUL] = {rule_mul, true},
     [SIG_LIT] = {rule_lit, true},              [SIG_SINCOS] = {rule_sincos, false},
+    [SIG_DST] = {rule_dst, true},
     [SIG_OUT2] = {rule_out2, false},           [SIG_D3DCOLOR] = {rule_d3dcolor, true},
     [SIG_NOISE] = {rule_to_scalar, false},     [SIG_REINTERPRET] = {rule_reinterpret, false},
     [SIG_TEX] = {rule_tex, true},

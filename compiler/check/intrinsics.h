@@ -31,7 +31,8 @@ typedef enum {
     SIG_DETERMINANT, /* float determinant(floatNxN) */
     SIG_TRANSPOSE,   /* floatCxR transpose(floatRxC) */
     SIG_MUL,         /* the nine shapes of mul */
-    SIG_LIT,         /* float4 lit(float, float, float) */
+    SIG_LIT,         /* float4 lit(float, float, float): scalars only, fxc refuses vectors */
+    SIG_DST,         /* float4 dst(float4, float4) */
     SIG_SINCOS,      /* void sincos(T, out T, out T) */
     SIG_OUT2,        /* T f(T, out T): modf, frexp */
     SIG_D3DCOLOR,    /* int4 D3DCOLORtoUBYTE4(float4) */

@@ -57,14 +57,21 @@ static void print_for(gp *p, const ir_stmt *s) {
         for (uint32_t i = 0; i < init->count; i++) print_stmt(p, init->body[i]);
         init = NULL;
     }
+    unsigned counter = s->max_iterations ? ++p->loop_counters : 0; /* [unroll(n)]: hfx_iterK counts to n */
+    if (counter) {
+        line_start(p);
+        sb_printf(p->out, "int hfx_iter%u = 0;\n", counter);
+    }
     line_start(p);
     sb_put(p->out, "for (");
     if (init && init->kind == IS_DECL) print_decl(p, init->var, init->expr, true, "");
     else if (init && init->kind == IS_EXPR) glsl_expr(p, init->expr, PREC_COMMA);
     sb_put(p->out, ";");
-    if (s->expr) { sb_put(p->out, " "); glsl_expr(p, s->expr, PREC_COMMA); }
+    if (s->expr) { sb_put(p->out, " "); glsl_expr(p, s->expr, counter ? PREC_AND : PREC_COMMA); }
+    if (counter) sb_printf(p->out, "%shfx_iter%u < %u", s->expr ? " && " : " ", counter, (unsigned)s->max_iterations);
     sb_put(p->out, ";");
-    if (s->step) { sb_put(p->out, " "); glsl_expr(p, s->step, PREC_COMMA); }
+    if (s->step) { sb_put(p->out, " "); glsl_expr(p, s->step, counter ? PREC_ASSIGN : PREC_COMMA); }
+    if (counter) sb_printf(p->out, "%shfx_iter%u++", s->step ? ", " : " ", counter);
     sb_put(p->out, ")\n");
     print_body(p, s->then_s);
 }

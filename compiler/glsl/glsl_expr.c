@@ -505,6 +505,16 @@ static void print_convert(gp *p, const ir_expr *e, int max) {
         if (!same) sb_put(p->out, ")");
         return;
     }
+    if (to->kind == TY_MATRIX && to->cols == 1 && glsl_is_matrix(from)) { /* Nx1: column 0, a GLSL vector */
+        sb_printf(p->out, "%s(", tty);
+        for (unsigned r = 0; r < nt; r++) {
+            if (r) sb_put(p->out, ", ");
+            glsl_expr(p, x, PREC_POSTFIX);
+            sb_printf(p->out, "[%u][0]", r);
+        }
+        sb_put(p->out, ")");
+        return;
+    }
     if (strcmp(tty, fty) == 0) { glsl_expr(p, x, max); return; }
     if (nt < nf && !glsl_is_matrix(from) && strcmp(vec_prefix(p, to->base), vec_prefix(p, from->base)) == 0) {
         glsl_expr(p, x, PREC_POSTFIX);

@@ -17,6 +17,7 @@ typedef struct gp {
     bool es, legacy;          /* ES 300; GLSL 110 */
     sbuf *out;
     int indent;
+    unsigned loop_counters;     /* hfx_iterK variables of [unroll(n)] loops so far */
     sbuf helpers;             /* helper functions, in first-use order */
     const char **helper_keys; uint32_t helper_count, helper_cap;
     const hfx_type **structs; uint32_t struct_count, struct_cap; /* in dependency order */

@@ -1,5 +1,6 @@
 /* glsl_intrin.c: HLSL intrinsics in GLSL, with HLSL's meaning where the two differ (pow
  * raises |x| as D3D9's pow instruction does):
+ * log, sqrt and rsqrt take |x| as D3D9's log and rsq do, log(0) is -FLT_MAX and rsqrt(0) FLT_MAX,
  * frac is x - floor(x) (fract), fmod truncates (x - y * trunc(x / y), not GLSL mod), round is
  * floor(x + 0.5) as fxc's ps_2/3 code computes it, ddy is -dFdy (D3D's screen y goes down),
  * tex2Dlod/bias take the level from .w. */
@@ -277,13 +278,45 @@ static void lower_trunc(gp *p, const ir_expr *e, int max) {
 
 /* D3D9's pow instruction raises |x| (SM2/SM3 code from fxc computes pow(x, y) so): a
  * negative base gives |x|^y, where GLSL's pow is undefined. */
+/* D3D9's log instruction: log2(|x|), and -FLT_MAX (not -inf) at 0. */
+static void d3d_log2(gp *p, const ir_expr *x) {
+    sb_put(p->out, "max(log2(abs(");
+    glsl_expr(p, x, PREC_ASSIGN);
+    sb_put(p->out, ")), -3.40282347e+38)");
+}
+
+/* pow(x, y) is exp(y * log(x)) with D3D9's log: |x|, and pow(0, 0) = 1, pow(0, y > 0) = 0. */
 static void lower_pow(gp *p, const ir_expr *e, int max) {
     (void)max;
-    sb_put(p->out, "pow(abs(");
-    glsl_expr(p, e->a[0], PREC_ASSIGN);
-    sb_put(p->out, "), ");
-    glsl_expr(p, e->a[1], PREC_ASSIGN);
+    sb_put(p->out, "exp2(");
+    glsl_expr(p, e->a[1], PREC_MUL);
+    sb_put(p->out, " * ");
+    d3d_log2(p, e->a[0]);
     sb_put(p->out, ")");
+}
+
+/* log2, log (x ln 2) and log10 (x log10(2)) as fxc builds them on the log instruction. */
+static void lower_log(gp *p, const ir_expr *e, int max) {
+    const char *scale = e->intrin == HFX_INTR_LOG ? " * 0.693147181" : e->intrin == HFX_INTR_LOG10 ? " * 0.301029996" : "";
+    if (*scale) wrap_open(p, PREC_MUL, max);
+    d3d_log2(p, e->a[0]);
+    sb_put(p->out, scale);
+    if (*scale) wrap_close(p, PREC_MUL, max);
+}
+
+/* D3D9's rsq: 1 / sqrt(|x|), FLT_MAX at 0; sqrt is compiled as rcp(rsq(x)), so it takes |x| too. */
+static void lower_rsqrt(gp *p, const ir_expr *e, int max) {
+    (void)max;
+    sb_put(p->out, "min(inversesqrt(abs(");
+    glsl_expr(p, e->a[0], PREC_ASSIGN);
+    sb_put(p->out, ")), 3.40282347e+38)");
+}
+
+static void lower_sqrt(gp *p, const ir_expr *e, int max) {
+    (void)max;
+    sb_put(p->out, "sqrt(abs(");
+    glsl_expr(p, e->a[0], PREC_ASSIGN);
+    sb_put(p->out, "))");
 }
 
 static void lower_all_any(gp *p, const ir_expr *e, int max) {
@@ -308,13 +341,6 @@ static void lower_ddy(gp *p, const ir_expr *e, int max) {
     wrap_close(p, PREC_MUL, max);
 }
 
-static void lower_log10(gp *p, const ir_expr *e, int max) {
-    wrap_open(p, PREC_MUL, max);
-    args(p, "log2", e->a, 1);
-    sb_put(p->out, " * 0.301029996");
-    wrap_close(p, PREC_MUL, max);
-}
-
 /* floor(x + 0.5), as fxc's ps_2/3 code computes round. */
 static void lower_round(gp *p, const ir_expr *e, int max) {
     (void)max;
@@ -335,6 +361,38 @@ static void lower_lit(gp *p, const ir_expr *e, int max) {
     (void)max;
     helper_lit(p);
     args(p, "hfx_lit", e->a, 3);
+}
+
+/* asin and acos through atan(y, x): drivers' asin / acos are polynomials with errors near
+ * 2e-4 (Mesa), their atan is good to about 1e-6; (1 - x)(1 + x) keeps 1 - x^2 exact near 1. */
+static void lower_asin(gp *p, const ir_expr *e, int max) {
+    (void)max;
+    helper_typed(p, "asin", e->type, "$T hfx_asin($T x) { return atan(x, sqrt((1.0 - x) * (1.0 + x))); }\n");
+    args(p, "hfx_asin", e->a, 1);
+}
+
+static void lower_acos(gp *p, const ir_expr *e, int max) {
+    (void)max;
+    helper_typed(p, "acos", e->type, "$T hfx_acos($T x) { return atan(sqrt((1.0 - x) * (1.0 + x)), x); }\n");
+    args(p, "hfx_acos", e->a, 1);
+}
+
+/* mad(a, b, c) = a * b + c (GLSL 330 has no fma; the driver fuses it when it can). */
+static void lower_mad(gp *p, const ir_expr *e, int max) {
+    wrap_open(p, PREC_ADD, max);
+    glsl_expr(p, e->a[0], PREC_MUL);
+    sb_put(p->out, " * ");
+    glsl_expr(p, e->a[1], PREC_UNARY);
+    sb_put(p->out, " + ");
+    glsl_expr(p, e->a[2], PREC_MUL);
+    wrap_close(p, PREC_ADD, max);
+}
+
+/* dst: the distance vector of D3D's dst instruction, (1, a.y * b.y, a.z, b.w). */
+static void lower_dst(gp *p, const ir_expr *e, int max) {
+    (void)max;
+    helper_typed(p, "dst", e->type, "$T hfx_dst($T a, $T b) { return $T(1.0, a.y * b.y, a.z, b.w); }\n");
+    args(p, "hfx_dst", e->a, 2);
 }
 
 static void lower_sincos(gp *p, const ir_expr *e, int max) {
@@ -385,7 +443,14 @@ static void lower_ldexp(gp *p, const ir_expr *e, int max) {
 
 static void lower_isfinite(gp *p, const ir_expr *e, int max) {
     (void)max;
-    if (ncomp(e->a[0]->type) != 1) { glsl_error(p, e->loc, "'isfinite' of a vector is not supported"); return; }
+    if (ncomp(e->a[0]->type) != 1 && !p->legacy) { /* a component is NaN, infinite, or neither */
+        args(p, "equal(isnan", e->a, 1);
+        sb_put(p->out, ", ");
+        args(p, "isinf", e->a, 1);
+        sb_put(p->out, ")");
+        return;
+    }
+    if (ncomp(e->a[0]->type) != 1) { glsl_error(p, e->loc, "'isfinite' of a vector needs GLSL 330 or ES 300"); return; }
     helper_typed(p, "isfinite", e->a[0]->type, "bool hfx_isfinite($T x) { return !(isnan(x) || isinf(x)); }\n");
     args(p, "hfx_isfinite", e->a, 1);
 }

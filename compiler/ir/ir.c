@@ -3,6 +3,7 @@
 #include "ir/ir.h"
 
 #include <string.h>
+#include <strings.h>
 
 
 typedef struct var_map {
@@ -328,9 +329,20 @@ static const char *hint_of(const hfx_stmt *s) {
     return s->attr_count ? s->attrs[0].name : NULL;
 }
 
+/* n of [unroll(n)]: fxc unrolls n iterations and stops there, even when the loop would run more. */
+static uint32_t unroll_limit(const hfx_stmt *s) {
+    for (uint32_t i = 0; i < s->attr_count; i++) {
+        const hfx_attribute *a = &s->attrs[i];
+        if (strcasecmp(a->name, "unroll") == 0 && a->arg_count == 1 && a->args[0]->kind == EX_INT && a->args[0]->ival > 0)
+            return a->args[0]->ival > UINT32_MAX ? UINT32_MAX : (uint32_t)a->args[0]->ival;
+    }
+    return 0;
+}
+
 static ir_stmt *build_for(builder *b, const hfx_stmt *s) {
     ir_stmt *r = new_stmt(b, IS_FOR, s->loc);
     r->hint = hint_of(s);
+    r->max_iterations = unroll_limit(s);
     if (s->init) {
         stmt_list l = {0};
         build_stmt_into(b, s->init, &l);

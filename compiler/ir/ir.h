@@ -101,6 +101,7 @@ struct ir_stmt {
     ir_expr *step;           /* FOR */
     ir_stmt *then_s, *else_s;/* IF; loop body in then_s */
     const char *hint;        /* [unroll], [loop], [branch]...: printed as a comment */
+    uint32_t max_iterations; /* FOR: [unroll(n)] runs the body at most n times, as fxc does; 0: no limit */
 };
 
 struct ir_func {
@@ -139,6 +140,7 @@ int ir_lower(ir_ctx *c, ir_shader *sh);
 /* Passes (one file each in lower/). */
 void ir_pass_specialise(ir_ctx *c, ir_shader *sh);
 void ir_pass_intrinsics(ir_ctx *c, ir_shader *sh);
+void ir_pass_lvalues(ir_ctx *c, ir_shader *sh);     /* m._11_22 = v: one target per component */
 void ir_pass_fold(ir_ctx *c, ir_shader *sh);
 void ir_pass_dce(ir_ctx *c, ir_shader *sh);
 void ir_pass_globals(ir_ctx *c, ir_shader *sh);

@@ -74,6 +74,7 @@ struct hfx_expr {
     const char *profile;       /* COMPILE: "vs_3_0" */
     const hfx_type *cast_type; /* CONSTRUCT, CAST */
     int64_t ival;              /* INT, BOOL */
+    bool is_unsigned;          /* INT: a u suffix, or past int's range (4294967295, 0xffffffff) */
     double fval;               /* FLOAT */
     const char *sval;          /* STRING (joined, escapes resolved), ASM (raw text) */
     bool parenthesized;        /* written inside ( ): `Texture = (t)` */

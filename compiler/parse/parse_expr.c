@@ -3,6 +3,7 @@
  * sees), so a pathological operator chain is rejected here instead of overflowing the C stack
  * of a recursive pass later. */
 #include <errno.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -73,6 +74,7 @@ hfx_expr *pb_int(parse_ctx *ctx, const char *text, hfx_loc loc) {
     unsigned long long v = strtoull(text, NULL, 0); /* 0x.., 0.. octal; u/l suffixes stop it */
     if (errno == ERANGE) v = UINT64_MAX;
     e->ival = (int64_t)v;
+    e->is_unsigned = strpbrk(text, "uU") != NULL || v > INT32_MAX;
     return e;
 }
 

@@ -242,9 +242,11 @@ technique
     | TECHNIQUE name_opt '{' passes error '}'       { $$ = pb_technique(ctx, $1.text, $2.text, parse_vec_new(), $4, @2); }
     ;
 
+/* A technique or pass may share its name with a type (struct T {...}; technique T {...}) */
 name_opt
     : %empty                                 { $$.text = NULL; }
     | IDENT
+    | TYPE_NAME
     ;
 
 passes

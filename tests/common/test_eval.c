@@ -2,6 +2,7 @@
  * Direct3D's rules (eval.h): 32-bit wrap, shifts by the low 5 bits, truncating conversions
  * that clamp, single-precision floats, and every intrinsic it folds. NAN / INFINITY rows say
  * what IEEE arithmetic gives. A row with ok = 0 must not fold. */
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -114,9 +115,10 @@ static void scalar_intrinsics(void) {
         {HFX_EV_FN_TRUNC, F, -1.7, 0, 0, -1, 1}, {HFX_EV_FN_COS, F, 0, 0, 0, 1, 1}, {HFX_EV_FN_COSH, F, 0, 0, 0, 1, 1},
         {HFX_EV_FN_SIN, F, 0, 0, 0, 0, 1}, {HFX_EV_FN_SINH, F, 0, 0, 0, 0, 1}, {HFX_EV_FN_TAN, F, 0, 0, 0, 0, 1},
         {HFX_EV_FN_TANH, F, 0, 0, 0, 0, 1}, {HFX_EV_FN_EXP, F, 0, 0, 0, 1, 1}, {HFX_EV_FN_EXP2, F, 3, 0, 0, 8, 1},
-        {HFX_EV_FN_LOG, F, 1, 0, 0, 0, 1}, {HFX_EV_FN_LOG, F, 0, 0, 0, -INFINITY, 1}, {HFX_EV_FN_LOG2, F, 8, 0, 0, 3, 1},
-        {HFX_EV_FN_LOG10, F, 1000, 0, 0, 3, 1}, {HFX_EV_FN_SQRT, F, 16, 0, 0, 4, 1}, {HFX_EV_FN_SQRT, F, -1, 0, 0, NAN, 1},
-        {HFX_EV_FN_RSQRT, F, 4, 0, 0, 0.5, 1}, {HFX_EV_FN_RSQRT, F, 0, 0, 0, INFINITY, 1},
+        {HFX_EV_FN_LOG, F, 1, 0, 0, 0, 1}, {HFX_EV_FN_LOG, F, 0, 0, 0, (double)(float)(-FLT_MAX * 0.69314718055994531), 1} /* D3D9's log: -FLT_MAX at 0, scaled by ln 2 */, {HFX_EV_FN_LOG2, F, 8, 0, 0, 3, 1},
+        {HFX_EV_FN_LOG10, F, 1000, 0, 0, 3, 1}, {HFX_EV_FN_SQRT, F, 16, 0, 0, 4, 1}, {HFX_EV_FN_SQRT, F, -4, 0, 0, 2, 1} /* rcp(rsq(x)): rsq takes |x| */,
+        {HFX_EV_FN_RSQRT, F, 4, 0, 0, 0.5, 1}, {HFX_EV_FN_RSQRT, F, 0, 0, 0, FLT_MAX, 1} /* D3D9's rsq: FLT_MAX at 0 */,
+        {HFX_EV_FN_LOG2, F, -8, 0, 0, 3, 1}, {HFX_EV_FN_RSQRT, F, -4, 0, 0, 0.5, 1},
         {HFX_EV_FN_SATURATE, F, 1.5, 0, 0, 1, 1}, {HFX_EV_FN_SATURATE, F, -0.5, 0, 0, 0, 1},
         {HFX_EV_FN_SATURATE, F, NAN, 0, 0, 0, 1}, {HFX_EV_FN_SIGN, F, -3.5, 0, 0, -1, 1}, {HFX_EV_FN_SIGN, I, 0, 0, 0, 0, 1},
         {HFX_EV_FN_SIGN, I, 9, 0, 0, 1, 1}, {HFX_EV_FN_MIN, F, NAN, 1, 0, 1, 1}, {HFX_EV_FN_MAX, F, 1, NAN, 0, 1, 1},

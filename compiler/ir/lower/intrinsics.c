@@ -1,8 +1,10 @@
 /* intrinsics.c: rewrites intrinsic calls into forms every GLSL target expresses directly.
  * mul(float3, float4x4) reaches the IR as mul(v, (float3x4)M); since
  * mul(v, M3x4) = mul(float4(v, 0), M4x4).xyzw, the truncated matrix becomes a padded vector,
- * which needs no non-square matrix type (GLSL 110 has none) and no matrix copy. The rest of
- * the intrinsics map one to one in glsl_intrin.c. */
+ * which needs no non-square matrix type (GLSL 110 has none) and no matrix copy.
+ * Componentwise intrinsics of matrices (abs(M), lerp(M, N, t), saturate(M)...), which GLSL
+ * has only for vectors, become a matrix built row by row. The rest of the intrinsics map one
+ * to one in glsl_intrin.c. */
 #include "ir/ir.h"
 
 static bool truncated_matrix(const ir_expr *e) {
@@ -54,6 +56,52 @@ static void lower_mul(ir_ctx *c, ir_expr **slot, void *data) {
     }
 }
 
+static bool componentwise_on_matrix(const ir_expr *e) {
+    if (e->kind != IE_INTRIN || e->type->kind != TY_MATRIX || e->type->rows < 2 || e->type->cols < 2) return false;
+    hfx_sig sig = hfx_intrinsic_info_of((int)e->intrin)->sig;
+    if (sig != SIG_SAME && sig != SIG_SAME_FLOAT) return false;
+    for (uint32_t i = 0; i < e->n; i++)
+        if (!hfx_type_equal(e->a[i]->type, e->type) || ir_has_side_effects(e->a[i])) return false;
+    return true;
+}
+
+/* Row r of a matrix expression (the argument is read once per row: it has no side effects). */
+static ir_expr *row_of(ir_ctx *c, ir_expr *m, unsigned r) {
+    const hfx_type *row = hfx_type_vector(c->types, m->type->base, m->type->cols);
+    if (m->kind == IE_CONVERT && hfx_type_components(m->a[0]->type) == 1) { /* a splatted scalar */
+        ir_expr *x = ir_new_expr(c, IE_CONVERT, row, m->loc, 1);
+        x->a[0] = r ? ir_clone_expr(c, m->a[0]) : m->a[0];
+        return x;
+    }
+    if (m->kind == IE_CONST) {
+        ir_expr *x = ir_new_expr(c, IE_CONST, row, m->loc, 0);
+        for (unsigned i = 0; i < row->cols; i++) x->cval[i] = m->cval[r * m->type->cols + i];
+        return x;
+    }
+    ir_expr *x = ir_new_expr(c, IE_INDEX, row, m->loc, 2);
+    x->a[0] = r ? ir_clone_expr(c, m) : m;
+    x->a[1] = ir_const_scalar(c, hfx_type_scalar(c->types, B_INT), r, m->loc);
+    return x;
+}
+
+static void lower_matrix_componentwise(ir_ctx *c, ir_expr **slot, void *data) {
+    (void)data;
+    ir_expr *e = *slot;
+    if (!componentwise_on_matrix(e)) return;
+    const hfx_type *row = hfx_type_vector(c->types, e->type->base, e->type->cols);
+    ir_expr *m = ir_new_expr(c, IE_CONSTRUCT, e->type, e->loc, e->type->rows);
+    for (unsigned r = 0; r < e->type->rows; r++) {
+        ir_expr *call = ir_new_expr(c, IE_INTRIN, row, e->loc, e->n);
+        call->intrin = e->intrin;
+        for (uint32_t i = 0; i < e->n; i++) call->a[i] = row_of(c, e->a[i], r);
+        m->a[r] = call;
+    }
+    *slot = m;
+}
+
 void ir_pass_intrinsics(ir_ctx *c, ir_shader *sh) {
-    for (uint32_t i = 0; i < sh->func_count; i++) ir_walk_stmt_exprs(c, sh->funcs[i]->body, lower_mul, NULL);
+    for (uint32_t i = 0; i < sh->func_count; i++) {
+        ir_walk_stmt_exprs(c, sh->funcs[i]->body, lower_mul, NULL);
+        ir_walk_stmt_exprs(c, sh->funcs[i]->body, lower_matrix_componentwise, NULL);
+    }
 }

@@ -156,8 +156,8 @@ static const stmt_case CALLS_AND_OVERLOADS[] = {
            "4:float))"},
     /* int -> float beats int -> float4 (a splat) */
     {"u3", "(f(float):float (implicit:float 1:int))"},
-    /* a defaulted parameter may be left out */
-    {"u4", "(k(float,float):float (implicit:float 1:int))"},
+    /* a defaulted parameter may be left out: its default value becomes the argument */
+    {"u4", "(k(float,float):float (implicit:float 1:int) (implicit:float 2:int))"},
     /* a generic sampler feeds tex2D as it is */
     {"u5", "(#tex2D:float4 s:sampler uv:float2)"},
     {"u6", "(+:float (#length:float n:float3) (#dot:float n:float3 (implicit:float3 2:int)))"},

@@ -1,0 +1,302 @@
+/* test_semantics.c: HLSL's meaning, one row a case. Each row of tests/runtime/semantics/ (one .tbl file a topic)
+ * is a small pixel shader (an expression, or a block that writes R) and the float4 Direct3D
+ * gives for it, derived by hand from Microsoft's documentation (the table says how where it is
+ * not obvious). The row is compiled twice: once with the inputs A, B, I, M as parameters set
+ * through the runtime (the GPU computes), once with the same values as static consts (the
+ * compiler may fold): both must give the documented value. Rows that expect an error name the
+ * fxc code that the compile must report. The format is described in semantics/README. */
+#include <GL/glcorearb.h>
+#include <dirent.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "files.h"
+#include "gl_context.h"
+#include "rt_support.h"
+#include "test.h"
+
+enum { MAX_EXPECT = 4 };
+
+typedef struct row {
+    const char *file;
+    int line;
+    char *globals, *body;              /* body: an expression, or a { block } writing R */
+    char error[16];                    /* "X3013" when the row must not compile */
+    int count;                         /* expected components, 1..4 */
+    double expect[MAX_EXPECT];         /* NAN: the component must be a NaN */
+    int any[MAX_EXPECT];               /* 1: not checked */
+    double tol;
+    int modes;                         /* MODE_UNIFORM | MODE_CONST */
+} row;
+
+enum { MODE_UNIFORM = 1, MODE_CONST = 2 };
+
+typedef struct runner {
+    test_gl *gl;
+    tgl g;
+    hfx_device *dev;
+    GLuint fbo, target, quad, quad_buffer;
+    int rows, failures;
+} runner;
+
+/* The inputs every row may read; values chosen so that no two components are equal and signs vary. */
+static const float input_a[4] = {0.5f, -1.5f, 2.0f, -4.0f};
+static const float input_b[4] = {0.25f, 3.0f, -0.75f, 1.0f};
+static const int input_i[4] = {3, -7, 2, 0};
+static const float input_m[16] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16}; /* M._11, M._12, ... */
+
+static const char uniform_inputs[] = "float4 A; float4 B; int4 I; float4x4 M;\n";
+static const char const_inputs[] =
+    "static const float4 A = float4(0.5, -1.5, 2.0, -4.0);\n"
+    "static const float4 B = float4(0.25, 3.0, -0.75, 1.0);\n"
+    "static const int4 I = int4(3, -7, 2, 0);\n"
+    "static const float4x4 M = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};\n";
+
+static char *trim(char *s) {
+    while (*s == ' ' || *s == '\t') s++;
+    size_t n = strlen(s);
+    while (n && (s[n - 1] == ' ' || s[n - 1] == '\t' || s[n - 1] == '\r' || s[n - 1] == '\n')) s[--n] = 0;
+    return s;
+}
+
+static int parse_value(const char *tok, double *v, int *any) {
+    *any = 0;
+    if (strcmp(tok, "any") == 0) { *any = 1; *v = 0; return 1; }
+    if (strcmp(tok, "nan") == 0) { *v = NAN; return 1; }
+    if (strcmp(tok, "inf") == 0) { *v = INFINITY; return 1; }
+    if (strcmp(tok, "-inf") == 0) { *v = -INFINITY; return 1; }
+    char *end;
+    *v = strtod(tok, &end);
+    return *end == 0 && end != tok;
+}
+
+/* The part after "=>": values (or "error X####"), then ~tolerance, @u / @c, and a // comment. */
+static int parse_expect(row *r, char *s) {
+    char *comment = strstr(s, "//");
+    if (comment) *comment = 0;
+    r->tol = 1e-5;
+    r->modes = MODE_UNIFORM | MODE_CONST;
+    for (char *tok = strtok(s, " \t"); tok; tok = strtok(NULL, " \t")) {
+        if (strcmp(tok, "error") == 0) {
+            char *code = strtok(NULL, " \t");
+            if (!code || strlen(code) >= sizeof r->error) return 0;
+            strcpy(r->error, code);
+        } else if (tok[0] == '~') {
+            r->tol = strtod(tok + 1, NULL);
+        } else if (strcmp(tok, "@u") == 0) {
+            r->modes = MODE_UNIFORM;
+        } else if (strcmp(tok, "@c") == 0) {
+            r->modes = MODE_CONST;
+        } else {
+            if (r->count == MAX_EXPECT || !parse_value(tok, &r->expect[r->count], &r->any[r->count])) return 0;
+            r->count++;
+        }
+    }
+    return r->error[0] || r->count > 0;
+}
+
+/* "globals ;; body => expected": returns 0 for a malformed row. */
+static int parse_row(row *r, char *line) {
+    char *arrow = strstr(line, "=>");
+    if (!arrow) return 0;
+    *arrow = 0;
+    char *split = strstr(line, ";;");
+    char *body = line;
+    if (split) {
+        *split = 0;
+        r->globals = strdup(trim(line));
+        body = split + 2;
+    } else {
+        r->globals = strdup("");
+    }
+    r->body = strdup(trim(body));
+    return parse_expect(r, arrow + 2);
+}
+
+static char *row_source(const row *r, int mode) {
+    static const char *const masks[] = {"", "x", "xy", "xyz", "xyzw"};
+    const char *inputs = mode == MODE_UNIFORM ? uniform_inputs : const_inputs;
+    size_t n = strlen(inputs) + strlen(r->globals) + strlen(r->body) + 512;
+    char *src = malloc(n);
+    const char *tail = r->body[0] == '{' ? "" : ";";
+    char assign[16] = "";
+    if (r->body[0] != '{') snprintf(assign, sizeof assign, "R.%s = ", masks[r->count ? r->count : 1]);
+    snprintf(src, n,
+             "%s%s\n"
+             "float4 VS(float4 p : POSITION) : POSITION { return p; }\n"
+             "float4 PS() : COLOR {\n float4 R = 0;\n %s%s%s\n return R;\n}\n"
+             "technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }\n",
+             inputs, r->globals, assign, r->body, tail);
+    return src;
+}
+
+static void set_inputs(hfx_effect *fx) {
+    hfx_param *p;
+    if ((p = hfx_effect_param(fx, "A"))) hfx_param_set_floats(p, input_a, 4);
+    if ((p = hfx_effect_param(fx, "B"))) hfx_param_set_floats(p, input_b, 4);
+    if ((p = hfx_effect_param(fx, "I"))) hfx_param_set_ints(p, input_i, 4);
+    if ((p = hfx_effect_param(fx, "M"))) hfx_param_set_matrix(p, input_m);
+}
+
+static int near(double got, double want, int any, double tol) {
+    if (any) return 1;
+    if (isnan(want)) return isnan(got);
+    if (isinf(want)) return got == want;
+    return fabs(got - want) <= tol * fmax(1.0, fabs(want));
+}
+
+static void report(const row *r, int mode, const char *what, const char *src) {
+    fprintf(stderr, "%s:%d: [%s] %s: %s\n%s", r->file, r->line, mode == MODE_UNIFORM ? "parameters" : "static const",
+            r->body, what, getenv("HFX_SEMANTICS_VERBOSE") ? src : "");
+}
+
+/* Draws the row's effect into the 1x1 float target and returns its pixel. */
+static int draw(runner *t, hfx_effect *fx, float px[4]) {
+    set_inputs(fx);
+    t->g.ClearColor(-7, -7, -7, -7);
+    t->g.Clear(GL_COLOR_BUFFER_BIT);
+    if (hfx_pass_apply(hfx_technique_pass(hfx_effect_technique(fx, "T"), 0)) != HFX_OK) return 0;
+    t->g.BindVertexArray(t->quad);
+    t->g.DrawArrays(GL_TRIANGLES, 0, 6);
+    t->g.ReadPixels(0, 0, 1, 1, GL_RGBA, GL_FLOAT, px);
+    return t->g.GetError() == GL_NO_ERROR;
+}
+
+static int check_values(const row *r, int mode, const float px[4], const char *src) {
+    for (int i = 0; i < r->count; i++)
+        if (!near(px[i], r->expect[i], r->any[i], r->tol)) {
+            char msg[256];
+            snprintf(msg, sizeof msg, "got (%.9g, %.9g, %.9g, %.9g), component %d expected %.9g\n", px[0], px[1], px[2],
+                     px[3], i, r->expect[i]);
+            report(r, mode, msg, src);
+            return 0;
+        }
+    return 1;
+}
+
+static int check_error(const row *r, int mode, hfx_effect *fx, const char *errors, const char *src) {
+    char want[32];
+    snprintf(want, sizeof want, "error %s", r->error);
+    if (fx) { report(r, mode, "compiled, expected an error\n", src); return 0; }
+    if (!errors || !strstr(errors, want)) {
+        char msg[1024];
+        snprintf(msg, sizeof msg, "expected %s, got:\n%s", want, errors ? errors : "(no message)\n");
+        report(r, mode, msg, src);
+        return 0;
+    }
+    return 1;
+}
+
+static int run_mode(runner *t, const row *r, int mode) {
+    char *src = row_source(r, mode), *errors = NULL;
+    hfx_effect *fx = hfx_effect_load_memory(t->dev, src, strlen(src), "row.fx", NULL, &errors);
+    int ok;
+    float px[4] = {0};
+    if (r->error[0]) ok = check_error(r, mode, fx, errors, src);
+    else if (!fx) { report(r, mode, errors ? errors : "load failed\n", src); ok = 0; }
+    else if (!draw(t, fx, px)) { report(r, mode, "apply or draw failed\n", src); ok = 0; }
+    else ok = check_values(r, mode, px, src);
+    if (fx) hfx_effect_destroy(fx);
+    hfx_free(errors);
+    free(src);
+    return ok;
+}
+
+static void run_row(runner *t, row *r) {
+    int ok = 1;
+    for (int mode = MODE_UNIFORM; mode <= MODE_CONST; mode <<= 1)
+        if (r->modes & mode) ok &= run_mode(t, r, mode);
+    t->rows++;
+    if (!ok) t->failures++;
+}
+
+static void run_line(runner *t, const char *file, int line_no, char *line) {
+    char *s = trim(line);
+    if (!*s || s[0] == '#' || strncmp(s, "==", 2) == 0) return;
+    row r = {.file = file, .line = line_no};
+    if (!parse_row(&r, s)) {
+        fprintf(stderr, "%s:%d: malformed row\n", file, line_no);
+        t->failures++;
+    } else {
+        run_row(t, &r);
+    }
+    free(r.globals);
+    free(r.body);
+}
+
+static void run_file(runner *t, const char *dir, const char *name) {
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    char *text = test_read_file(path, NULL);
+    CHECK(text != NULL);
+    if (!text) return;
+    int line_no = 0;
+    for (char *line = text, *next; line; line = next) {
+        next = strchr(line, '\n');
+        if (next) *next++ = 0;
+        run_line(t, name, ++line_no, line);
+    }
+    free(text);
+}
+
+static int by_name(const struct dirent **a, const struct dirent **b) { return strcmp((*a)->d_name, (*b)->d_name); }
+
+static int is_table(const struct dirent *e) {
+    size_t n = strlen(e->d_name);
+    return n > 4 && strcmp(e->d_name + n - 4, ".tbl") == 0;
+}
+
+static void make_target(runner *t) {
+    static const float quad[12] = {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1};
+    t->g.GenTextures(1, &t->target);
+    t->g.BindTexture(GL_TEXTURE_2D, t->target);
+    t->g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, 1, 1, 0, GL_RGBA, GL_FLOAT, NULL);
+    t->g.GenFramebuffers(1, &t->fbo);
+    t->g.BindFramebuffer(GL_FRAMEBUFFER, t->fbo);
+    t->g.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t->target, 0);
+    CHECK_INT(t->g.CheckFramebufferStatus(GL_FRAMEBUFFER), GL_FRAMEBUFFER_COMPLETE);
+    t->quad = tgl_triangles(&t->g, quad, 6, &t->quad_buffer);
+    t->g.Viewport(0, 0, 1, 1);
+    hfx_device_sync(t->dev);
+}
+
+static void free_target(runner *t) {
+    t->g.DeleteBuffers(1, &t->quad_buffer);
+    t->g.DeleteVertexArrays(1, &t->quad);
+    t->g.DeleteFramebuffers(1, &t->fbo);
+    t->g.DeleteTextures(1, &t->target);
+}
+
+/* Every table; HFX_SEMANTICS_TABLE=name.tbl runs one. */
+static void semantics_tables(runner *t) {
+    const char *dir = HFX_SOURCE_DIR "/tests/runtime/semantics";
+    const char *only = getenv("HFX_SEMANTICS_TABLE");
+    struct dirent **names;
+    int n = scandir(dir, &names, is_table, by_name);
+    CHECK(n > 0);
+    for (int i = 0; i < n; i++) {
+        if (!only || strcmp(only, names[i]->d_name) == 0) run_file(t, dir, names[i]->d_name);
+        free(names[i]);
+    }
+    free(names);
+    printf("%d rows, %d failed\n", t->rows, t->failures);
+    CHECK_INT(t->failures, 0);
+}
+
+static runner t;
+
+static void all_rows(void) { semantics_tables(&t); }
+
+int main(void) {
+    t.gl = test_gl_create(4, 4);
+    if (!t.gl) test_skip("no OSMesa context");
+    tgl_load(&t.g);
+    t.dev = hfx_device_create_gl(test_gl_loader);
+    make_target(&t);
+    RUN(all_rows);
+    free_target(&t);
+    hfx_device_destroy(t.dev);
+    test_gl_destroy(t.gl);
+    return test_summary();
+}
