@@ -400,13 +400,31 @@ static const hfx_type *check_index(check_ctx *c, hfx_expr *e) {
     return set_type(e, result);
 }
 
+/* Whether every leaf of ty is a number (a struct of floats, an array of vectors...). */
+static bool numeric_leaves(const hfx_type *ty) {
+    if (hfx_type_is_numeric(ty)) return true;
+    if (ty->kind == TY_ARRAY) return numeric_leaves(ty->elem);
+    if (ty->kind != TY_STRUCT) return false;
+    for (uint32_t i = 0; i < ty->st->field_count; i++)
+        if (!numeric_leaves(ty->st->fields[i].type)) return false;
+    return true;
+}
+
+/* (S2)s1, (float4)s, (S)v: a cast to or from a struct takes the components in order when the
+ * source has at least as many (HLSL's componentwise-compatible types). */
+static bool restructure(const hfx_type *from, const hfx_type *to) {
+    if (from->kind != TY_STRUCT && to->kind != TY_STRUCT) return false;
+    unsigned nf = hfx_type_components(from), nt = hfx_type_components(to);
+    return numeric_leaves(from) && numeric_leaves(to) && nt > 0 && nf >= nt;
+}
+
 static const hfx_type *check_cast(check_ctx *c, hfx_expr *e) {
     const hfx_type *from = ck_expr(c, e->args[0]), *to = ck_resolve_type(c, e->cast_type, e->loc);
     if (ck_is_err(c, from)) return fail(c, e);
     e->cast_type = to;
     /* (VS_OUTPUT)0 and (float4[2])0: a scalar fills every component of a struct or array */
     bool fill = (to->kind == TY_STRUCT || to->kind == TY_ARRAY) && hfx_type_is_scalarlike(from);
-    if (!fill && !hfx_conv_classify(from, to, true).ok) {
+    if (!fill && !restructure(from, to) && !hfx_conv_classify(from, to, true).ok) {
         hfx_error(c->diags, ck_start(e), X_TYPE_MISMATCH, "cannot convert from '%s' to '%s'",
                   ck_type_name(c, from), ck_type_name(c, to));
         return fail(c, e);

@@ -204,6 +204,68 @@ static ir_expr *regroup(builder *b, const hfx_type *ty, ir_expr **flat, uint32_t
     return r;
 }
 
+/* The scalar components of x in order (fields, elements, rows), each reading x again. */
+static void scalars_of(builder *b, ir_expr *x, ir_expr **out, uint32_t *n) {
+    const hfx_type *ty = x->type;
+    if (ty->kind == TY_STRUCT || ty->kind == TY_ARRAY) {
+        uint32_t count = ty->kind == TY_ARRAY ? ty->array_len : ty->st->field_count;
+        for (uint32_t i = 0; i < count; i++) {
+            const hfx_type *et = ty->kind == TY_ARRAY ? ty->elem : ty->st->fields[i].type;
+            ir_expr *part = ir_new_expr(b->c, ty->kind == TY_ARRAY ? IE_INDEX : IE_FIELD, et, x->loc, ty->kind == TY_ARRAY ? 2 : 1);
+            part->a[0] = ir_clone_expr(b->c, x);
+            if (ty->kind == TY_ARRAY) part->a[1] = ir_const_scalar(b->c, hfx_type_scalar(b->c->types, B_INT), i, x->loc);
+            else part->field = i;
+            scalars_of(b, part, out, n);
+        }
+        return;
+    }
+    unsigned count = hfx_type_components(ty);
+    if (count == 1) { out[(*n)++] = x; return; }
+    for (unsigned i = 0; i < count; i++) {
+        ir_expr *one = ir_new_expr(b->c, IE_SWIZZLE, hfx_type_scalar(b->c->types, ty->base), x->loc, 1);
+        one->a[0] = ir_clone_expr(b->c, x);
+        one->comp_count = 1;
+        one->comps[0] = (uint8_t)i; /* row-major for matrices */
+        out[(*n)++] = one;
+    }
+}
+
+/* A value of type ty from scalars[*pos...], each converted to ty's element type. */
+static ir_expr *rebuild(builder *b, const hfx_type *ty, ir_expr **scalars, uint32_t *pos, hfx_loc loc) {
+    uint32_t count = ty->kind == TY_ARRAY ? ty->array_len : ty->kind == TY_STRUCT ? ty->st->field_count : hfx_type_components(ty);
+    ir_expr *r = ir_new_expr(b->c, IE_CONSTRUCT, ty, loc, count);
+    for (uint32_t i = 0; i < count; i++) {
+        if (ty->kind == TY_ARRAY || ty->kind == TY_STRUCT) {
+            r->a[i] = rebuild(b, ty->kind == TY_ARRAY ? ty->elem : ty->st->fields[i].type, scalars, pos, loc);
+            continue;
+        }
+        ir_expr *s = scalars[(*pos)++];
+        const hfx_type *want = hfx_type_scalar(b->c->types, ty->base);
+        if (s->type != want) {
+            ir_expr *conv = ir_new_expr(b->c, IE_CONVERT, want, loc, 1);
+            conv->a[0] = s;
+            s = conv;
+        }
+        r->a[i] = s;
+    }
+    if (count == 1 && hfx_type_is_numeric(ty)) return r->a[0];
+    return r;
+}
+
+/* (S2)s1, (float4)s, (S)v: the source's components in order, rebuilt as the target type. */
+static ir_expr *build_restructure(builder *b, const hfx_expr *e) {
+    ir_expr *x = build_expr(b, e->args[0]);
+    if (!x) return NULL;
+    if (ir_has_side_effects(x)) {
+        fail(b, e->loc, "a cast to or from a struct of an expression with side effects is not supported");
+        return NULL;
+    }
+    uint32_t n = 0, pos = 0;
+    ir_expr **scalars = HFX_NEW_ARRAY(b->c->arena, ir_expr *, hfx_type_components(x->type));
+    scalars_of(b, x, scalars, &n);
+    return rebuild(b, e->type, scalars, &pos, e->loc);
+}
+
 static ir_expr *build_init_list(builder *b, const hfx_expr *e) {
     ir_expr **flat = HFX_NEW_ARRAY(b->c->arena, ir_expr *, e->arg_count ? e->arg_count : 1);
     for (uint32_t i = 0; i < e->arg_count; i++)
@@ -248,6 +310,8 @@ static ir_expr *build_expr(builder *b, const hfx_expr *e) {
         if (r && r->n == 1 && hfx_type_equal(r->a[0]->type, r->type)) return r->a[0];
         return r;
     case EX_CAST:
+        if ((e->type->kind == TY_STRUCT || e->args[0]->type->kind == TY_STRUCT) && hfx_type_components(e->args[0]->type) > 1)
+            return build_restructure(b, e);
         r = build_children(b, e, IE_CONVERT, e->type);
         if (r && r->n == 1 && hfx_type_equal(r->a[0]->type, r->type)) return r->a[0];
         return r;

@@ -140,6 +140,7 @@ int ir_lower(ir_ctx *c, ir_shader *sh);
 /* Passes (one file each in lower/). */
 void ir_pass_specialise(ir_ctx *c, ir_shader *sh);
 void ir_pass_intrinsics(ir_ctx *c, ir_shader *sh);
+void ir_pass_arrays(ir_ctx *c, ir_shader *sh);      /* float a[2][3] is float a[6] */
 void ir_pass_lvalues(ir_ctx *c, ir_shader *sh);     /* m._11_22 = v: one target per component */
 void ir_pass_fold(ir_ctx *c, ir_shader *sh);
 void ir_pass_dce(ir_ctx *c, ir_shader *sh);

@@ -45,7 +45,7 @@ typedef struct entry {
  * kw_lookup applies them all. */
 static const entry b_words[] = {KEYWORD("break", BREAK), SCALAR("bool", B_BOOL)};
 static const entry c_words[] = {
-    KEYWORD("case", CASE), INTERP("centroid", MOD_CENTROID), MODIFIER_KW("column_major", MOD_COLUMN_MAJOR),
+    KEYWORD("case", CASE), KEYWORD("cbuffer", CBUFFER), INTERP("centroid", MOD_CENTROID), MODIFIER_KW("column_major", MOD_COLUMN_MAJOR),
     KEYWORD("compile", COMPILE), ANY_CASE("compile", COMPILE), MODIFIER_KW("const", MOD_CONST),
     KEYWORD("continue", CONTINUE),
 };
@@ -88,13 +88,13 @@ static const entry s_words[] = {
     KEYWORD("struct", STRUCT), KEYWORD("switch", SWITCH),
 };
 static const entry t_words[] = {
-    KEYWORD("technique", TECHNIQUE), ANY_CASE("technique", TECHNIQUE), KEYWORD("technique10", TECHNIQUE),
+    KEYWORD("tbuffer", CBUFFER), KEYWORD("technique", TECHNIQUE), ANY_CASE("technique", TECHNIQUE), KEYWORD("technique10", TECHNIQUE),
     ANY_CASE("technique10", TECHNIQUE), KEYWORD("technique11", TECHNIQUE), ANY_CASE("technique11", TECHNIQUE),
     OBJECT("texture", TY_TEXTURE, DIM_GENERIC), OBJECT("texture1d", TY_TEXTURE, DIM_1D),
     OBJECT("texture2d", TY_TEXTURE, DIM_2D), OBJECT("texture3d", TY_TEXTURE, DIM_3D),
     OBJECT("texturecube", TY_TEXTURE, DIM_CUBE), KEYWORD("true", TRUE_KW), KEYWORD("typedef", TYPEDEF),
 };
-static const entry u_words[] = {SCALAR("uint", B_UINT), MODIFIER_KW("uniform", MOD_UNIFORM)};
+static const entry u_words[] = {SCALAR("uint", B_UINT), MODIFIER_KW("uniform", MOD_UNIFORM), KEYWORD("unsigned", UNSIGNED)};
 static const entry v_words[] = {
     KEYWORD("vector", VECTOR), OBJECT("vertexshader", TY_VERTEXSHADER, DIM_GENERIC), TYPE("void", E_VOID),
     MODIFIER_KW("volatile", MOD_VOLATILE),

@@ -151,6 +151,7 @@ const hfx_type *pb_generic_matrix(parse_ctx *ctx, const hfx_type *scalar, const 
 const hfx_type *pb_array_type(parse_ctx *ctx, const hfx_type *elem, parse_vec dims);
 const hfx_type *pb_template(parse_ctx *ctx, const hfx_type *object, const hfx_type *elem, hfx_loc loc);
 const hfx_type *pb_typename(parse_ctx *ctx, const parse_tok *t, hfx_loc loc);
+const hfx_type *pb_unsigned(parse_ctx *ctx, const hfx_type *ty, hfx_loc loc); /* unsigned int */
 const hfx_type *pb_struct(parse_ctx *ctx, const char *name, parse_vec fields, hfx_loc loc);
 const hfx_type *pb_struct_ref(parse_ctx *ctx, const char *name, hfx_loc loc);
 parse_vec pb_fields(parse_ctx *ctx, parse_vec fields, parse_specs *specs, parse_vec declarators);

@@ -306,6 +306,15 @@ const hfx_type *pb_typename(parse_ctx *ctx, const parse_tok *t, hfx_loc loc) {
     return hfx_type_scalar(ctx->types, B_FLOAT);
 }
 
+/* `unsigned int` is uint (unsigned int2 is uint2). */
+const hfx_type *pb_unsigned(parse_ctx *ctx, const hfx_type *ty, hfx_loc loc) {
+    ctx->last_type = NULL;
+    if (ty && ty->kind == TY_SCALAR && ty->base == B_INT) return hfx_type_scalar(ctx->types, B_UINT);
+    if (ty && ty->kind == TY_VECTOR && ty->base == B_INT) return hfx_type_vector(ctx->types, B_UINT, ty->cols);
+    hfx_error(ctx->diags, loc, X_SYNTAX, "syntax error: 'unsigned' applies to int types");
+    return hfx_type_scalar(ctx->types, B_UINT);
+}
+
 /* `Texture2D<float4>` (SM4 spelling): the element type is dropped, D3D9 textures have none. */
 const hfx_type *pb_template(parse_ctx *ctx, const hfx_type *object, const hfx_type *elem, hfx_loc loc) {
     (void)elem;

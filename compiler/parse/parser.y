@@ -42,7 +42,7 @@ static void yyerror(YYLTYPE *loc, parse_ctx *ctx, const char *msg);
 %token <tok> IDENT TYPE_NAME INTCONST FLOATCONST STRING ASM_BLOCK MODIFIER ASSIGN_OP
 %token <tok> STRUCT TYPEDEF TECHNIQUE PASS COMPILE SAMPLER_STATE REGISTER TRUE_KW FALSE_KW NULL_KW
 %token <tok> IF ELSE FOR WHILE DO SWITCH CASE DEFAULT BREAK CONTINUE DISCARD RETURN VECTOR MATRIX
-%token <tok> LE GE EQ NE ANDAND OROR SHL SHR INC DEC OTHER
+%token <tok> LE GE EQ NE ANDAND OROR SHL SHR INC DEC OTHER CBUFFER UNSIGNED
 
 %precedence LOWER_THAN_ELSE
 %precedence ELSE
@@ -86,9 +86,22 @@ global
     | TYPEDEF decl_specs declarators ';'     { pb_globals(ctx, pb_typedefs(ctx, $2, $3)); }
     | function                               { pb_global(ctx, $1); }
     | technique                              { pb_global(ctx, $1); }
+    | CBUFFER name_opt cbuffer_register '{' cbuffer_members '}'
     | ';'
     | error ';'
     | error '}'
+    ;
+
+/* SM4 constant buffers in SM2/SM3 code: the members are ordinary globals (parameters). */
+cbuffer_register
+    : %empty
+    | ':' REGISTER '(' IDENT ')'
+    ;
+
+cbuffer_members
+    : %empty
+    | cbuffer_members decl_specs declarators ';' { pb_globals(ctx, pb_vars(ctx, $2, $3, true)); }
+    | cbuffer_members error ';'
     ;
 
 /* ---- types and declarations ---- */
@@ -112,6 +125,7 @@ ctor_type
     : TYPE_NAME                              { $$ = pb_typename(ctx, &$1, @1); }
     | TYPE_NAME '<' ctor_type '>'            { $$ = pb_template(ctx, pb_typename(ctx, &$1, @1), $3, @2); }
     | TYPE_NAME '<' ctor_type ',' INTCONST '>' { $$ = pb_template(ctx, pb_typename(ctx, &$1, @1), $3, @2); }
+    | UNSIGNED TYPE_NAME                     { $$ = pb_unsigned(ctx, pb_typename(ctx, &$2, @2), @1); }
     | VECTOR                                 { $$ = pb_generic_vector(ctx, NULL, NULL, @1); }
     | VECTOR '<' TYPE_NAME ',' INTCONST '>'  { $$ = pb_generic_vector(ctx, $3.type, $5.text, @3); }
     | MATRIX                                 { $$ = pb_generic_matrix(ctx, NULL, NULL, NULL, @1); }

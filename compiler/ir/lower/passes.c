@@ -4,6 +4,7 @@
 int ir_lower(ir_ctx *c, ir_shader *sh) {
     uint32_t errors = c->diags->errors;
     ir_pass_specialise(c, sh); /* compile arguments replace the entry's uniform parameters */
+    ir_pass_arrays(c, sh);     /* arrays of arrays flattened (GLSL 330 has none) */
     ir_pass_intrinsics(c, sh); /* mul by a truncated matrix: pad the vector instead; abs(M) row by row */
     ir_pass_lvalues(c, sh);    /* m._11_22 = v: a constructor of single components as the target */
     ir_pass_fold(c, sh);       /* constant folding and propagation of const variables */
