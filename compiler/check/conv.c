@@ -65,9 +65,8 @@ static hfx_conv classify_numeric(const hfx_type *from, const hfx_type *to, bool 
     /* vector <-> vector, vector <-> matrix */
     if (tc == fc && (is_linear(from) || is_linear(to))) return shape(CONV_SHAPE_RESHAPE, b);
     if (tc < fc && is_linear(from) && is_linear(to)) return shape(CONV_SHAPE_TRUNC, b);
-    if (explicit_cast && tc == fc) return shape(CONV_SHAPE_RESHAPE, b);
-    if (explicit_cast && tc < fc) return shape(CONV_SHAPE_TRUNC, b);
-    return fail();
+    if (explicit_cast && tc == fc) return shape(CONV_SHAPE_RESHAPE, b); /* (float2x2)v4, (float4)m2x2 */
+    return fail(); /* (float4)float4x4: a matrix and a vector convert only at the same size */
 }
 
 /* `(float[4])v`: a cast from a vector or matrix to an array of as many scalars, in order. */
