@@ -106,11 +106,13 @@ static void bind_textures(hfx_effect *fx, const hfx_rt_pass *rp) {
     }
 }
 
-/* Front face (D3D's clockwise, flipped in a framebuffer object), program, its position fixup
- * and alpha-test uniforms. */
+/* Front face (D3D's clockwise, flipped in a framebuffer object), the first vertex as flat
+ * shading's provoking vertex (D3D's), program, its position fixup and alpha-test uniforms. */
 static inline void apply_program(hfx_device *dev, hfx_rt_program *prog) {
     GLenum front = dev->flip ? GL_CCW : GL_CW; /* hfx_rs_front_face */
     if (dev->state.front_face != front) dev->gl.FrontFace(dev->state.front_face = front);
+    if (dev->state.provoking != GL_FIRST_VERTEX_CONVENTION)
+        dev->gl.ProvokingVertex(dev->state.provoking = GL_FIRST_VERTEX_CONVENTION);
     if (!prog) return;
     hfx_rt_use_program(dev, prog->object);
     if (prog->pos_fixup_serial != dev->pos_fixup_serial || prog->alpha_test) hfx_rt_program_extras(dev, prog);

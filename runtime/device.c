@@ -197,6 +197,7 @@ void hfx_rt_read_state(hfx_device *dev, hfx_glstate *s) {
     s->cull = enabled(dev, GL_CULL_FACE);
     s->cull_face = get_enum(dev, GL_CULL_FACE_MODE);
     s->front_face = get_enum(dev, GL_FRONT_FACE);
+    s->provoking = get_enum(dev, GL_PROVOKING_VERTEX);
     s->polygon_mode = get_enum(dev, GL_POLYGON_MODE);
     s->depth_test = enabled(dev, GL_DEPTH_TEST);
     GLboolean b[4] = {0};
@@ -306,6 +307,7 @@ void hfx_rt_write_state(hfx_device *dev, const hfx_glstate *w) {
     set_cap(dev, GL_CULL_FACE, &s->cull, w->cull);
     if (s->cull_face != w->cull_face) dev->gl.CullFace(s->cull_face = w->cull_face);
     if (s->front_face != w->front_face) dev->gl.FrontFace(s->front_face = w->front_face);
+    if (s->provoking != w->provoking) dev->gl.ProvokingVertex(s->provoking = w->provoking);
     if (s->polygon_mode != w->polygon_mode) dev->gl.PolygonMode(GL_FRONT_AND_BACK, s->polygon_mode = w->polygon_mode);
     set_cap(dev, GL_DEPTH_TEST, &s->depth_test, w->depth_test);
     if (s->depth_mask != w->depth_mask) dev->gl.DepthMask(s->depth_mask = w->depth_mask);

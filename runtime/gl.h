@@ -75,6 +75,7 @@
     V(SamplerParameterfv, (GLuint sampler, GLenum pname, const GLfloat *param), (sampler, pname, param)) \
     V(CullFace, (GLenum mode), (mode)) \
     V(FrontFace, (GLenum mode), (mode)) \
+    V(ProvokingVertex, (GLenum mode), (mode)) \
     V(PolygonMode, (GLenum face, GLenum mode), (face, mode)) \
     V(DepthFunc, (GLenum func), (func)) \
     V(DepthMask, (GLboolean flag), (flag)) \

@@ -20,6 +20,7 @@
 typedef struct hfx_glstate {
     GLboolean cull;
     GLenum cull_face, front_face, polygon_mode;
+    GLenum provoking;      /* GL_FIRST_VERTEX_CONVENTION: D3D's flat shading takes the first vertex */
     GLboolean depth_test, depth_mask;
     GLenum depth_func;
     GLboolean blend;

@@ -231,6 +231,7 @@ static void want_groups(const hfx_device *dev, uint32_t groups, hfx_glstate *w) 
         int32_t c = rs[HFX_ST_CULLMODE].i;
         w->cull = c == 2 || c == 3;
         w->front_face = dev->flip ? GL_CCW : GL_CW;
+        w->provoking = GL_FIRST_VERTEX_CONVENTION;
         if (w->cull) w->cull_face = c == 3 ? GL_BACK : GL_FRONT;
     }
     if (groups & G_FILL) {
@@ -311,7 +312,7 @@ static const char *unsupported(uint32_t id, const hfx_rs_value *v, int has_alpha
     case HFX_ST_ALPHATESTENABLE: case HFX_ST_ALPHAREF: case HFX_ST_ALPHAFUNC:
         return has_alpha_test ? NULL : "alpha test needs the pass's pixel shader to carry it (no hfx_alpha_func uniform); ignored";
     case HFX_ST_LASTPIXEL: return v->i ? "LastPixel = TRUE: GL never draws the last pixel of a line" : NULL;
-    case HFX_ST_SHADEMODE: return v->i == 2 ? NULL : "ShadeMode other than Gouraud needs flat interpolation in the shaders; ignored";
+    case HFX_ST_SHADEMODE: return NULL; /* FLAT: the compiler made the pass's COLOR varyings flat */
     case HFX_ST_CLIPPING: return v->i ? NULL : "Clipping = FALSE cannot be turned off in GL; ignored";
     case HFX_ST_CLIPPLANEENABLE: return v->i ? "ClipPlaneEnable enables GL clip distances; the shaders must write gl_ClipDistance" : NULL;
     case HFX_ST_FOGENABLE: return v->i ? "fixed-function fog is not available in GL core; ignored" : NULL;

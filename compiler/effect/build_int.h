@@ -20,6 +20,7 @@ enum {
 /* One program made so far, with the shader pair that made it (for deduplication). */
 typedef struct hfx_program_key {
     const hfx_expr *vs, *ps;
+    bool flat_colors;              /* the pass's ShadeMode is FLAT */
 } hfx_program_key;
 
 typedef struct hfx_builder {

@@ -289,10 +289,10 @@ static bool same_compile(hfx_builder *b, const hfx_expr *x, const hfx_expr *y) {
 }
 
 /* The program for a (vs, ps) pair: an earlier identical one, or a new one from the codegen. */
-static uint32_t program_for(hfx_builder *b, const hfx_expr *vs, const hfx_expr *ps, hfx_loc loc) {
+static uint32_t program_for(hfx_builder *b, const hfx_expr *vs, const hfx_expr *ps, bool flat, hfx_loc loc) {
     hfx_fx_effect *fx = b->fx;
     for (uint32_t i = 0; i < fx->program_count; i++)
-        if (same_compile(b, b->keys[i].vs, vs) && same_compile(b, b->keys[i].ps, ps)) return i;
+        if (same_compile(b, b->keys[i].vs, vs) && same_compile(b, b->keys[i].ps, ps) && b->keys[i].flat_colors == flat) return i;
     if (!b->cg)
         b->cg = hfx_codegen_new(b->arena, b->diags, b->types, b->ast, fx, b->targets,
                                 (b->diags->flags & HFXC_PACK_UNIFORMS) != 0); /* the diags carry hfxc_options.flags */
@@ -303,7 +303,7 @@ static uint32_t program_for(hfx_builder *b, const hfx_expr *vs, const hfx_expr *
     hfx_fx_program prog;
     memset(&prog, 0, sizeof prog);
     uint32_t errors = b->diags->errors;
-    if (hfx_codegen_program(b->cg, vs, ps, &prog) != 0) {
+    if (hfx_codegen_program(b->cg, vs, ps, flat, &prog) != 0) {
         hfx_fx_program_clear(&prog);
         if (b->diags->errors == errors)
             hfx_error(b->diags, loc, X_UNSUPPORTED, "code generation failed for this pass");
@@ -323,7 +323,7 @@ static uint32_t program_for(hfx_builder *b, const hfx_expr *vs, const hfx_expr *
         }
         b->keys = k;
     }
-    b->keys[fx->program_count] = (hfx_program_key){vs, ps};
+    b->keys[fx->program_count] = (hfx_program_key){vs, ps, flat};
     fx->programs[fx->program_count] = prog;
     return fx->program_count++;
 }
@@ -333,6 +333,7 @@ static uint32_t program_for(hfx_builder *b, const hfx_expr *vs, const hfx_expr *
 typedef struct pass_shaders {
     const hfx_expr *vs, *ps;  /* the compile expressions the pass's shader states lead to */
     bool any;                 /* a shader state was set (even to NULL) */
+    bool flat_colors;         /* ShadeMode = FLAT: COLOR varyings are not interpolated */
     shader_select sel[2];     /* vertex, pixel: a shader array chosen at Apply (array NULL: none) */
     uint32_t sel_state[2];    /* the EXPR state computing that index */
 } pass_shaders;
@@ -372,7 +373,9 @@ static void pass_state(hfx_builder *b, const hfx_state_assign *sa, pass_shaders 
         add_state(b, &st);
         return;
     }
-    if (state_value(b, info, sa->value, &st)) add_state(b, &st);
+    if (!state_value(b, info, sa->value, &st)) return;
+    if (info->id == HFX_ST_SHADEMODE && st.kind == HFX_FX_VALUE_INT) sh->flat_colors = st.i == 1; /* D3DSHADE_FLAT */
+    add_state(b, &st);
 }
 
 /* --- shader arrays chosen at Apply ---------------------------------------------------------- */
@@ -416,7 +419,7 @@ static uint32_t variant_program(hfx_builder *b, const pass_shaders *sh, const ui
     const hfx_expr *c[2] = {sh->vs, sh->ps};
     for (int s = 0; s < 2; s++)
         if (idx[s] != HFX_NONE && shader_compile(b, sh->sel[s].array->args[idx[s]], &c[s], NULL, 0) < 0) return HFX_NONE;
-    return program_for(b, c[0], c[1], loc);
+    return program_for(b, c[0], c[1], sh->flat_colors, loc);
 }
 
 static void add_variant(hfx_builder *b, uint32_t pass, const uint32_t idx[2], uint32_t program) {
@@ -461,7 +464,7 @@ static void build_pass(hfx_builder *b, const hfx_pass_ast *pa, hfx_fx_pass *pass
     for (uint32_t i = 0; i < pa->state_count; i++) pass_state(b, &pa->states[i], &sh);
     pass->state_count = b->fx->state_count - pass->first_state;
     if (sh.sel[0].array || sh.sel[1].array) build_variants(b, &sh, b->fx->pass_count, pa->loc);
-    else if (sh.any && (sh.vs || sh.ps)) pass->program = program_for(b, sh.vs, sh.ps, pa->loc);
+    else if (sh.any && (sh.vs || sh.ps)) pass->program = program_for(b, sh.vs, sh.ps, sh.flat_colors, pa->loc);
     for (uint32_t i = 0; i < pass->state_count; i++) {
         hfx_fx_state *st = &b->fx->states[pass->first_state + i];
         if (st->kind == HFX_FX_VALUE_PROGRAM) st->ref = pass->program;

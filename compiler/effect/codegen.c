@@ -158,30 +158,43 @@ static void assign_registers(const hfx_fx_effect *fx, hfx_fx_program *p) {
     }
 }
 
-static int build_interface(hfx_codegen *cg, ir_shader *vs, ir_shader *ps, glsl_iface *io) {
+/* flat_colors: the pass sets ShadeMode = FLAT, under which D3D9 does not interpolate COLOR inputs. */
+static int build_interface(hfx_codegen *cg, ir_shader *vs, ir_shader *ps, bool flat_colors, glsl_iface *io) {
     hfx_arena *a = cg->c.arena;
-    strset vary = {0}, writes = {0}, attrs = {0};
+    strset vary = {0}, writes = {0}, attrs = {0}, flat = {0};
     ir_leaf *l;
     int n;
     if (ps) {
         if ((n = ir_entry_leaves(&cg->c, ps->entry, false, &l)) < 0) return -1;
-        for (int i = 0; i < n; i++) if (is_varying(l[i].semantic, true)) set_add(a, &vary, l[i].semantic);
+        for (int i = 0; i < n; i++) {
+            if (!is_varying(l[i].semantic, true)) continue;
+            set_add(a, &vary, l[i].semantic);
+            if (l[i].flat) set_add(a, &flat, l[i].semantic);
+        }
     }
     if (vs) {
         if ((n = ir_entry_leaves(&cg->c, vs->entry, true, &l)) < 0) return -1;
         for (int i = 0; i < n; i++)
-            if (is_varying(l[i].semantic, false)) { set_add(a, &vary, l[i].semantic); set_add(a, &writes, l[i].semantic); }
+            if (is_varying(l[i].semantic, false)) {
+                set_add(a, &vary, l[i].semantic);
+                set_add(a, &writes, l[i].semantic);
+                if (l[i].flat) set_add(a, &flat, l[i].semantic); /* either stage's nointerpolation makes it flat */
+            }
         if ((n = ir_entry_leaves(&cg->c, vs->entry, false, &l)) < 0) return -1;
         for (int i = 0; i < n; i++) set_add(a, &attrs, l[i].semantic);
     } else { /* fixed-function stand-in: position plus whatever the pixel shader reads */
         set_add(a, &attrs, "POSITION0");
         for (uint32_t i = 0; i < vary.count; i++) { set_add(a, &attrs, vary.items[i]); set_add(a, &writes, vary.items[i]); }
     }
+    for (uint32_t i = 0; i < vary.count && flat_colors; i++)
+        if (strncmp(vary.items[i], "COLOR", 5) == 0) set_add(a, &flat, vary.items[i]);
     if (vary.count) qsort(vary.items, vary.count, sizeof *vary.items, cmp_str);
     io->varyings = vary.items;
     io->varying_count = vary.count;
     io->vs_writes = writes.items;
     io->vs_write_count = writes.count;
+    io->flat = flat.items;
+    io->flat_count = flat.count;
     io->attrs = assign_locations(a, &attrs);
     io->attr_count = attrs.count;
     const char *prof = vs && vs->compile->profile ? vs->compile->profile : "vs_3_0";
@@ -222,13 +235,13 @@ static char *spoil(char *text) {
     return p;
 }
 
-int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps, hfx_fx_program *out) {
+int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps, bool flat_colors, hfx_fx_program *out) {
     memset(out, 0, sizeof *out);
     uint32_t errors = cg->c.diags->errors;
     ir_shader *sh[2] = { stage(cg, vs, IR_VERTEX), stage(cg, ps, IR_PIXEL) };
     if (cg->c.diags->errors > errors) return -1;
     glsl_iface io = {0};
-    if (build_interface(cg, sh[0], sh[1], &io) != 0) return -1;
+    if (build_interface(cg, sh[0], sh[1], flat_colors, &io) != 0) return -1;
     if (copy_attributes(&io, out) != 0 || record_uses(cg, sh, out) != 0) goto oom;
     qsort(out->uniforms, out->uniform_count, sizeof *out->uniforms, cmp_uniform);
     if (cg->pack) assign_registers(cg->c.fx, out);

@@ -18,6 +18,6 @@ hfx_codegen *hfx_codegen_new(hfx_arena *arena, hfx_diags *diags, hfx_types *type
 /* vs, ps: the pass's VertexShader / PixelShader values (EX_COMPILE; NULL when not set).
  * Fills *out (malloc'ed members, freed with the effect); may set fx->samplers[i].dim.
  * Returns 0, or -1 with errors in diags. */
-int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps, hfx_fx_program *out);
+int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps, bool flat_colors, hfx_fx_program *out);
 
 #endif

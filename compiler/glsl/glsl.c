@@ -203,6 +203,13 @@ static void write_vec4(gp *p, const ir_leaf *l, const char *dst, bool clamp) {
     sb_put(p->out, ";\n");
 }
 
+/* GLSL 110 has no flat varyings: there nointerpolation is ignored. */
+static bool is_flat(const glsl_iface *io, const char *sem) {
+    for (uint32_t i = 0; i < io->flat_count; i++)
+        if (strcmp(io->flat[i], sem) == 0) return true;
+    return false;
+}
+
 static void declare_interface(gp *p) {
     bool modern = !p->legacy;
     const glsl_iface *io = p->io;
@@ -214,8 +221,8 @@ static void declare_interface(gp *p) {
         if (p->sh) sb_put(p->out, "uniform vec4 hfx_pos_fixup;\n");
     }
     for (uint32_t i = 0; i < io->varying_count; i++)
-        sb_printf(p->out, "%s vec4 %s;\n", !modern ? "varying" : p->stage == IR_VERTEX ? "out" : "in",
-                  varying_name(p, io->varyings[i]));
+        sb_printf(p->out, "%s%s vec4 %s;\n", modern && is_flat(io, io->varyings[i]) ? "flat " : "",
+                  !modern ? "varying" : p->stage == IR_VERTEX ? "out" : "in", varying_name(p, io->varyings[i]));
     if (p->stage == IR_PIXEL) {
         bool vpos = false, color[4] = { !p->sh, false, false, false };
         for (int i = 0; i < p->in_count; i++) vpos |= is_vpos(p->in[i].semantic);

@@ -181,6 +181,7 @@ typedef struct ir_leaf {
      * input's registers hold D3D9's columns (column_major packing): the GLSL transposes it. */
     const char *matrix_path;
     const hfx_type *matrix_type;
+    bool flat;               /* nointerpolation: the first vertex's value, as D3D's flat shading */
 } ir_leaf;
 
 /* The entry's inputs (outputs false) or outputs; reports X3502 for a value without a

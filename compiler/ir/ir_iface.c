@@ -26,9 +26,9 @@ const char *ir_canonical_semantic(hfx_arena *a, const char *semantic) {
 
 typedef struct leaves { ir_leaf *items; uint32_t count, cap; bool bad; } leaves;
 
-static void push(ir_ctx *c, leaves *l, const char *sem, const hfx_type *ty, const char *path, hfx_loc loc) {
+static void push(ir_ctx *c, leaves *l, const char *sem, const hfx_type *ty, const char *path, hfx_loc loc, bool flat) {
     if (!HFX_ARENA_GROW(c->arena, l->items, l->count, l->cap, 8)) return;
-    l->items[l->count++] = (ir_leaf){ ir_canonical_semantic(c->arena, sem), ty, path, loc, NULL, NULL };
+    l->items[l->count++] = (ir_leaf){ ir_canonical_semantic(c->arena, sem), ty, path, loc, NULL, NULL, flat };
 }
 
 /* The semantic `k` registers after sem: TEXCOORD1 + 2 = TEXCOORD3. */
@@ -40,12 +40,13 @@ static const char *semantic_plus(ir_ctx *c, const char *sem, uint32_t k) {
 }
 
 static void walk(ir_ctx *c, leaves *l, const hfx_type *ty, const char *sem, const char *path, hfx_loc loc,
-                 const char *fn, const char *what) {
+                 const char *fn, const char *what, uint32_t mods) {
+    bool flat = (mods & MOD_NOINTERPOLATION) != 0;
     if (ty->kind == TY_STRUCT) {
         for (uint32_t i = 0; i < ty->st->field_count; i++) {
             const hfx_field *f = &ty->st->fields[i];
             const char *p = hfx_arena_printf(c->arena, "%s.%s", path, hfx_glsl_name(c->arena, f->name));
-            walk(c, l, f->type, f->semantic, p, f->loc, fn, what);
+            walk(c, l, f->type, f->semantic, p, f->loc, fn, what, f->mods);
         }
         return;
     }
@@ -56,13 +57,13 @@ static void walk(ir_ctx *c, leaves *l, const hfx_type *ty, const char *sem, cons
     }
     if (ty->kind == TY_ARRAY && ty->elem && ty->array_len) { /* `float2 uv[8] : TEXCOORD0`: one register each */
         for (uint32_t i = 0; i < ty->array_len; i++)
-            walk(c, l, ty->elem, semantic_plus(c, sem, i), hfx_arena_printf(c->arena, "%s[%u]", path, i), loc, fn, what);
+            walk(c, l, ty->elem, semantic_plus(c, sem, i), hfx_arena_printf(c->arena, "%s[%u]", path, i), loc, fn, what, mods);
         return;
     }
     if (ty->kind == TY_MATRIX && ty->rows > 1 && ty->cols > 1) {
         for (uint32_t r = 0; r < ty->rows; r++)
             push(c, l, semantic_plus(c, sem, r), hfx_type_vector(c->types, ty->base, ty->cols),
-                 hfx_arena_printf(c->arena, "%s[%u]", path, r), loc);
+                 hfx_arena_printf(c->arena, "%s[%u]", path, r), loc, flat);
         if (l->count) l->items[l->count - 1].matrix_path = path, l->items[l->count - 1].matrix_type = ty;
         return;
     }
@@ -71,7 +72,7 @@ static void walk(ir_ctx *c, leaves *l, const hfx_type *ty, const char *sem, cons
         l->bad = true;
         return;
     }
-    push(c, l, sem, ty, path, loc);
+    push(c, l, sem, ty, path, loc, flat);
 }
 
 int ir_entry_leaves(ir_ctx *c, const ir_func *entry, bool outputs, ir_leaf **out) {
@@ -82,10 +83,10 @@ int ir_entry_leaves(ir_ctx *c, const ir_func *entry, bool outputs, ir_leaf **out
         if (outputs ? !is_out : !is_in) continue;
         const char *what = hfx_arena_printf(c->arena, "%s parameter '%s'", outputs ? "output" : "input", v->name);
         walk(c, &l, v->type, v->decl ? v->decl->semantic : NULL, hfx_arena_printf(c->arena, "hfx_arg%u", i),
-             v->decl ? v->decl->loc : entry->src->loc, entry->name, what);
+             v->decl ? v->decl->loc : entry->src->loc, entry->name, what, v->mods);
     }
     if (outputs && entry->ret && entry->ret->kind != TY_VOID)
-        walk(c, &l, entry->ret, entry->ret_semantic, "hfx_ret", entry->src->loc, entry->name, "function return value");
+        walk(c, &l, entry->ret, entry->ret_semantic, "hfx_ret", entry->src->loc, entry->name, "function return value", 0);
     *out = l.items;
     return l.bad ? -1 : (int)l.count;
 }
