@@ -196,20 +196,12 @@ static const hfx_type *binary_operand_type(check_ctx *c, hfx_expr *e, hfx_op op,
     return t;
 }
 
-/* GLSL has no bool matrices: `!M`, `M > 6` and `M && N` are refused here, at their position. */
-static bool bool_matrix(check_ctx *c, const hfx_expr *e, const hfx_type *t) {
-    if (t->kind != TY_MATRIX || t->rows < 2 || t->cols < 2) return false;
-    hfx_error(c->diags, ck_start(e), X_UNSUPPORTED, "bool matrices (! or a comparison of matrices) are not supported");
-    return true;
-}
-
 static const hfx_type *check_binary(check_ctx *c, hfx_expr *e) {
     const hfx_type *ta = ck_expr(c, e->args[0]), *tb = ck_expr(c, e->args[1]);
     if (ck_is_err(c, ta) || ck_is_err(c, tb)) return fail(c, e);
     if (state_operand(c, ta) || state_operand(c, tb)) return set_type(e, hfx_type_void(c->types));
     const hfx_type *t = binary_operand_type(c, e, e->op, e->args[0], e->args[1]);
     if (!t) return fail(c, e);
-    if ((is_compare(e->op) || t->base == B_BOOL) && bool_matrix(c, e, t)) return fail(c, e);
     e->args[0] = ck_implicit_cast(c, e->args[0], t);
     e->args[1] = ck_implicit_cast(c, e->args[1], t);
     if (is_compare(e->op)) return set_type(e, hfx_type_with_base(c->types, t, B_BOOL));
@@ -224,7 +216,6 @@ static const hfx_type *check_unary(check_ctx *c, hfx_expr *e) {
     switch (e->op) {
     case OP_NOT:
         t = hfx_type_with_base(c->types, t, B_BOOL);
-        if (bool_matrix(c, e, t)) return fail(c, e);
         break;
     case OP_BITNOT:
         if (hfx_base_is_float(t->base)) {

@@ -3,7 +3,7 @@
  * mul(v, M3x4) = mul(float4(v, 0), M4x4).xyzw, the truncated matrix becomes a padded vector,
  * which needs no non-square matrix type (GLSL 110 has none) and no matrix copy.
  * Componentwise intrinsics of matrices (abs(M), lerp(M, N, t), saturate(M)...), which GLSL
- * has only for vectors, become a matrix built row by row. The rest of the intrinsics map one
+ * has only for vectors, become a matrix built row by row; so do bool matrices (M <= d). The rest of the intrinsics map one
  * to one in glsl_intrin.c. */
 #include "ir/ir.h"
 
@@ -99,9 +99,58 @@ static void lower_matrix_componentwise(ir_ctx *c, ir_expr **slot, void *data) {
     *slot = m;
 }
 
+/* Bool matrices (M <= d, !M, M && N), which GLSL lacks, live only row by row: converted to a
+ * numeric matrix ((float2x2)(samples <= depth)) or indexed with a constant ((M > 6)[1]). */
+static bool is_bool_matrix(const ir_expr *e) {
+    return e->type->kind == TY_MATRIX && e->type->base == B_BOOL && e->type->rows > 1 && e->type->cols > 1;
+}
+
+static ir_expr *bool_row(ir_ctx *c, ir_expr *e, unsigned r) {
+    const hfx_type *bvec = hfx_type_vector(c->types, B_BOOL, e->type->cols);
+    if (e->kind == IE_CONVERT && e->a[0]->type->kind == TY_MATRIX && e->a[0]->type->rows == e->type->rows &&
+        e->a[0]->type->cols == e->type->cols && !ir_has_side_effects(e)) { /* (bool2x2)m: a row of m */
+        ir_expr *x = ir_new_expr(c, IE_CONVERT, bvec, e->loc, 1);
+        if (!(x->a[0] = is_bool_matrix(e->a[0]) ? bool_row(c, e->a[0], r) : row_of(c, e->a[0], r))) return NULL;
+        return x;
+    }
+    bool binary = e->kind == IE_BINARY && e->op >= OP_LT && e->op <= OP_OR;
+    bool negation = e->kind == IE_UNARY && e->op == OP_NOT;
+    if ((!binary && !negation) || ir_has_side_effects(e)) return NULL;
+    ir_expr *x = ir_new_expr(c, e->kind, bvec, e->loc, e->n);
+    x->op = e->op;
+    for (uint32_t i = 0; i < e->n; i++) {
+        ir_expr *a = e->a[i];
+        if (!(x->a[i] = is_bool_matrix(a) ? bool_row(c, a, r) : row_of(c, a, r))) return NULL;
+    }
+    return x;
+}
+
+static void lower_bool_matrix(ir_ctx *c, ir_expr **slot, void *data) {
+    (void)data;
+    ir_expr *e = *slot;
+    if (e->kind == IE_INDEX && is_bool_matrix(e->a[0]) && ir_is_const(e->a[1])) {
+        ir_expr *row = bool_row(c, e->a[0], (unsigned)e->a[1]->cval[0]);
+        if (row) *slot = row;
+        return;
+    }
+    if (e->kind != IE_CONVERT || !is_bool_matrix(e->a[0]) || e->type->kind != TY_MATRIX || e->type->rows != e->a[0]->type->rows ||
+        e->type->cols != e->a[0]->type->cols)
+        return;
+    ir_expr *m = ir_new_expr(c, IE_CONSTRUCT, e->type, e->loc, e->type->rows);
+    for (unsigned r = 0; r < e->type->rows; r++) {
+        ir_expr *row = bool_row(c, e->a[0], r);
+        if (!row) return;
+        ir_expr *conv = ir_new_expr(c, IE_CONVERT, hfx_type_vector(c->types, e->type->base, e->type->cols), e->loc, 1);
+        conv->a[0] = row;
+        m->a[r] = conv;
+    }
+    *slot = m;
+}
+
 void ir_pass_intrinsics(ir_ctx *c, ir_shader *sh) {
     for (uint32_t i = 0; i < sh->func_count; i++) {
         ir_walk_stmt_exprs(c, sh->funcs[i]->body, lower_mul, NULL);
         ir_walk_stmt_exprs(c, sh->funcs[i]->body, lower_matrix_componentwise, NULL);
+        ir_walk_stmt_exprs(c, sh->funcs[i]->body, lower_bool_matrix, NULL);
     }
 }

@@ -14,6 +14,13 @@ static void check_expr(ir_ctx *c, ir_expr **slot, void *data) {
         hfx_error(c->diags, e->loc, X_UNSUPPORTED, "assignment to a multi-component matrix swizzle is not supported");
         (*bad)++;
     }
+    if (e->type->kind == TY_MATRIX && e->type->base == B_BOOL && e->type->rows > 1 && e->type->cols > 1 &&
+        !(e->kind == IE_VAR && e->var->kind == IRV_UNIFORM)) {
+        hfx_error(c->diags, e->loc, X_UNSUPPORTED,
+                  "a bool matrix is supported only converted whole to a numeric matrix or indexed by a constant");
+        (*bad)++;
+        return;
+    }
     if (e->kind == IE_INDEX && e->a[0]->type->kind == TY_ARRAY && e->a[0]->type->elem->kind == TY_SAMPLER) {
         hfx_error(c->diags, e->loc, X_UNSUPPORTED, "arrays of samplers are not supported");
         (*bad)++;
