@@ -143,6 +143,7 @@ void ir_pass_intrinsics(ir_ctx *c, ir_shader *sh);
 void ir_pass_arrays(ir_ctx *c, ir_shader *sh);      /* float a[2][3] is float a[6] */
 void ir_pass_lvalues(ir_ctx *c, ir_shader *sh);     /* m._11_22 = v: one target per component */
 void ir_pass_fold(ir_ctx *c, ir_shader *sh);
+void ir_pass_calls(ir_ctx *c, ir_shader *sh);       /* copies of callees with constant arguments bound */
 void ir_pass_dce(ir_ctx *c, ir_shader *sh);
 void ir_pass_globals(ir_ctx *c, ir_shader *sh);
 int ir_pass_check(ir_ctx *c, ir_shader *sh);   /* target limits: reports what GLSL cannot express */

@@ -8,6 +8,7 @@ int ir_lower(ir_ctx *c, ir_shader *sh) {
     ir_pass_intrinsics(c, sh); /* mul by a truncated matrix: pad the vector instead; abs(M) row by row */
     ir_pass_lvalues(c, sh);    /* m._11_22 = v: a constructor of single components as the target */
     ir_pass_fold(c, sh);       /* constant folding and propagation of const variables */
+    ir_pass_calls(c, sh);      /* f(x, 1): a copy of f with the 1 bound, as fxc inlines it */
     ir_pass_dce(c, sh);        /* if (false) branches, code after return, unreached functions */
     ir_pass_globals(c, sh);    /* private copies of the uniforms some function writes */
     ir_pass_uses(c, sh);       /* globals and samplers the stage reads, in first-use order */

@@ -173,6 +173,21 @@ static void vertex_texture_fetch_and_outputs(void) {
     hfxc_result_free(r);
 }
 
+/* A generic sampler takes the dimension of the parameter it is passed to, and a call with
+ * constant arguments compiles only the branch they select (fxc inlines calls): the tex2D
+ * branch, which would make the same sampler 2D too, is gone from F(1)'s copy. DigitalRise's
+ * VolumetricLight.fx and CubeMapShadowMask.fx. */
+static void constant_arguments_select_the_code(void) {
+    CHECK(links("texture t; sampler s = sampler_state { Texture = <t>; };\n"
+                "float4 cube(samplerCUBE c, float3 d) { return texCUBE(c, d); }\n"
+                "float4 F(float3 d, int mode) { if (mode == 1) return cube(s, d); return tex2D(s, d.xy); }\n"
+                "float4 ps(float3 d : TEXCOORD0) : COLOR { return F(d, 1); }\n", MODERN));
+    CHECK(links("texture t; sampler s = sampler_state { Texture = <t>; };\n"
+                "static const int Mode = 2;\n"
+                "float4 G(float2 uv, int mode, float k) { if (mode == 2) return tex2D(s, uv) * k; return texCUBE(s, uv.xyx); }\n"
+                "float4 ps(float2 uv : TEXCOORD0) : COLOR { return G(uv, Mode, 2) + G(uv * 2, Mode, 2); }\n", MODERN));
+}
+
 int main(void) {
     RUN(float_intrinsics);
     RUN(integer_and_bool_ops);
@@ -181,5 +196,6 @@ int main(void) {
     RUN(texture_forms);
     RUN(sampler_parameters_and_odd_shapes);
     RUN(vertex_texture_fetch_and_outputs);
+    RUN(constant_arguments_select_the_code);
     return test_summary();
 }

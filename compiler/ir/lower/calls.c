@@ -1,0 +1,204 @@
+/* calls.c: a call with constant arguments gets a copy of its callee with those parameters
+ * bound, as fxc (which inlines every call) sees it: PS(uv, ray, LightTypePoint) compiles only
+ * the point-light branch, so what the other branches sample, and their errors, vanish (fold
+ * and dce then remove them). A parameter the callee writes stays a parameter. Copies are
+ * shared by calls with the same constants, and named <callee>_hfxK. */
+#include <string.h>
+
+#include "ir/ir.h"
+
+enum { MAX_COPIES = 256 }; /* per shader: past it, calls keep the general function */
+
+typedef struct copy { ir_func *from, *to; ir_expr **args; } copy;
+
+typedef struct var_map { ir_var **from, **to; uint32_t count, cap; } var_map;
+
+typedef struct specialiser {
+    ir_shader *sh;
+    copy copies[MAX_COPIES];
+    uint32_t copy_count;
+    bool changed;
+} specialiser;
+
+/* ---- whether a parameter is written ---- */
+
+static void note_write(ir_ctx *c, ir_expr **slot, void *data) {
+    (void)c;
+    const ir_expr *e = *slot;
+    const ir_var **v = data;
+    bool writes = e->kind == IE_ASSIGN || (e->kind == IE_UNARY && e->op >= OP_PREINC && e->op <= OP_POSTDEC);
+    if (writes && ir_lvalue_root(e->a[0]) == *v) *v = NULL;
+    if (e->kind == IE_CALL) /* passed on as an out argument */
+        for (uint32_t i = 0; i < e->n && i < e->fn->param_count; i++)
+            if ((e->fn->params[i]->mods & MOD_OUT) && ir_lvalue_root(e->a[i]) == *v) *v = NULL;
+    if (e->kind == IE_INTRIN) /* sincos, modf, frexp write their later arguments */
+        for (uint32_t i = 1; i < e->n; i++)
+            if (ir_has_side_effects(e) && ir_lvalue_root(e->a[i]) == *v) *v = NULL;
+}
+
+static bool written(ir_ctx *c, const ir_func *f, const ir_var *p) {
+    const ir_var *v = p;
+    ir_walk_stmt_exprs(c, f->body, note_write, &v);
+    return v == NULL;
+}
+
+/* Argument i can be bound: a constant for an `in` numeric parameter the callee never writes. */
+static bool bindable(ir_ctx *c, const ir_func *f, const ir_expr *call, uint32_t i) {
+    const ir_var *p = f->params[i];
+    return ir_is_const(call->a[i]) && !(p->mods & MOD_OUT) && hfx_type_is_numeric(p->type) &&
+           hfx_type_equal(call->a[i]->type, p->type) && !written(c, f, p);
+}
+
+/* ---- copying a function ---- */
+
+static ir_var *mapped(const var_map *m, ir_var *v) {
+    for (uint32_t i = 0; i < m->count; i++)
+        if (m->from[i] == v) return m->to[i];
+    return v; /* globals are shared */
+}
+
+static void map_add(ir_ctx *c, var_map *m, ir_var *from, ir_var *to) {
+    uint32_t cap = m->cap;
+    if (!HFX_ARENA_GROW(c->arena, m->from, m->count, m->cap, 16)) return;
+    if (cap != m->cap) { /* keep the parallel array as long */
+        ir_var **t = HFX_NEW_ARRAY(c->arena, ir_var *, m->cap);
+        if (!t) return;
+        if (m->count) memcpy(t, m->to, sizeof *t * m->count);
+        m->to = t;
+    }
+    m->from[m->count] = from;
+    m->to[m->count++] = to;
+}
+
+static ir_var *copy_var(ir_ctx *c, var_map *m, ir_var *v) {
+    ir_var *n = HFX_NEW(c->arena, ir_var);
+    if (!n) return v;
+    *n = *v;
+    n->konst = NULL;
+    map_add(c, m, v, n);
+    return n;
+}
+
+typedef struct remap { const var_map *map; } remap;
+
+static void remap_var(ir_ctx *c, ir_expr **slot, void *data) {
+    (void)c;
+    ir_expr *e = *slot;
+    const remap *r = data;
+    if (e->kind == IE_VAR) {
+        ir_var *v = mapped(r->map, e->var);
+        if (v->bound) *slot = ir_clone_expr(c, v->bound);
+        else e->var = v;
+    }
+}
+
+static ir_stmt *copy_stmt(ir_ctx *c, var_map *m, const ir_stmt *s) {
+    if (!s) return NULL;
+    ir_stmt *n = HFX_NEW(c->arena, ir_stmt);
+    if (!n) return NULL;
+    *n = *s;
+    if (s->kind == IS_DECL) n->var = copy_var(c, m, s->var);
+    n->expr = ir_clone_expr(c, s->expr);
+    n->step = ir_clone_expr(c, s->step);
+    n->init = copy_stmt(c, m, s->init);
+    n->then_s = copy_stmt(c, m, s->then_s);
+    n->else_s = copy_stmt(c, m, s->else_s);
+    if (s->count) {
+        n->body = HFX_NEW_ARRAY(c->arena, ir_stmt *, s->count);
+        for (uint32_t i = 0; i < s->count; i++) n->body[i] = copy_stmt(c, m, s->body[i]);
+    }
+    return n;
+}
+
+/* f with the bindable arguments of call bound; the call's other arguments stay parameters. */
+static ir_func *copy_func(ir_ctx *c, specialiser *sp, ir_func *f, const ir_expr *call, const bool *bind) {
+    ir_func *n = HFX_NEW(c->arena, ir_func);
+    var_map m = {0};
+    if (!n) return NULL;
+    *n = *f;
+    n->glsl = hfx_arena_printf(c->arena, "%s_hfx%u", f->glsl, sp->copy_count + 1);
+    n->params = HFX_NEW_ARRAY(c->arena, ir_var *, f->param_count ? f->param_count : 1);
+    n->param_count = 0;
+    for (uint32_t i = 0; i < f->param_count; i++) {
+        ir_var *p = copy_var(c, &m, f->params[i]);
+        p->bound = bind[i] ? call->a[i] : NULL;
+        if (!bind[i]) n->params[n->param_count++] = p;
+    }
+    n->body = copy_stmt(c, &m, f->body);
+    remap r = {&m};
+    ir_walk_stmt_exprs(c, n->body, remap_var, &r);
+    return n;
+}
+
+/* ---- calls ---- */
+
+static bool same_constants(const copy *k, const ir_func *f, const ir_expr *call, const bool *bind) {
+    if (k->from != f) return false;
+    for (uint32_t i = 0; i < f->param_count; i++) {
+        if (bind[i] != (k->args[i] != NULL)) return false;
+        if (bind[i] && memcmp(k->args[i]->cval, call->a[i]->cval, sizeof call->a[i]->cval) != 0) return false;
+    }
+    return true;
+}
+
+/* Puts the copy right after its original: after its callees, before every caller. */
+static void insert_after(ir_ctx *c, ir_shader *sh, const ir_func *f, ir_func *n) {
+    if (!HFX_ARENA_GROW(c->arena, sh->funcs, sh->func_count, sh->func_cap, 8)) return;
+    uint32_t at = 0;
+    while (at < sh->func_count && sh->funcs[at] != f) at++;
+    at = at < sh->func_count ? at + 1 : 0;
+    memmove(&sh->funcs[at + 1], &sh->funcs[at], sizeof *sh->funcs * (sh->func_count - at));
+    sh->funcs[at] = n;
+    sh->func_count++;
+}
+
+static ir_func *copy_for(ir_ctx *c, specialiser *sp, ir_func *f, const ir_expr *call, const bool *bind) {
+    for (uint32_t i = 0; i < sp->copy_count; i++)
+        if (same_constants(&sp->copies[i], f, call, bind)) return sp->copies[i].to;
+    if (sp->copy_count == MAX_COPIES) return NULL;
+    ir_func *n = copy_func(c, sp, f, call, bind);
+    ir_expr **args = HFX_NEW_ARRAY(c->arena, ir_expr *, f->param_count ? f->param_count : 1);
+    if (!n || !args) return NULL;
+    for (uint32_t i = 0; i < f->param_count; i++) args[i] = bind[i] ? call->a[i] : NULL;
+    sp->copies[sp->copy_count++] = (copy){f, n, args};
+    insert_after(c, sp->sh, f, n);
+    return n;
+}
+
+static void specialise_call(ir_ctx *c, ir_expr **slot, void *data) {
+    specialiser *sp = data;
+    ir_expr *e = *slot;
+    if (e->kind != IE_CALL || e->n != e->fn->param_count || e->n > 64) return;
+    bool bind[64], any = false;
+    for (uint32_t i = 0; i < e->n; i++) any |= bind[i] = bindable(c, e->fn, e, i);
+    if (!any) return;
+    ir_func *n = copy_for(c, sp, e->fn, e, bind);
+    if (!n) return;
+    uint32_t kept = 0;
+    for (uint32_t i = 0; i < e->n; i++)
+        if (!bind[i]) e->a[kept++] = e->a[i];
+    e->n = kept;
+    e->fn = n;
+    sp->changed = true;
+}
+
+/* One round over every function, callees first; true when some call changed. */
+static bool round_of(ir_ctx *c, specialiser *sp) {
+    ir_shader *sh = sp->sh;
+    uint32_t n = sh->func_count;
+    ir_func **funcs = HFX_NEW_ARRAY(c->arena, ir_func *, n ? n : 1);
+    if (!funcs) return false;
+    memcpy(funcs, sh->funcs, sizeof *funcs * n);
+    sp->changed = false;
+    for (uint32_t i = 0; i < n; i++) ir_walk_stmt_exprs(c, funcs[i]->body, specialise_call, sp);
+    return sp->changed;
+}
+
+/* Rounds until no call changes: a bound parameter folds, which can make the copy's own calls'
+ * arguments constant. */
+void ir_pass_calls(ir_ctx *c, ir_shader *sh) {
+    specialiser *sp = HFX_NEW(c->arena, specialiser);
+    if (!sp) return;
+    sp->sh = sh;
+    for (int round = 0; round < 8 && round_of(c, sp); round++) ir_pass_fold(c, sh);
+}
