@@ -39,17 +39,18 @@ enum {
     R_UNIFORM_USE = 2, R_PASS = 6, R_TECHNIQUE = 5, R_VARIANT = 4
 };
 
-/* CRC-32 (IEEE 802.3, as zlib), four bits at a time from a 16-entry table. */
+/* CRC-32 (IEEE 802.3, as zlib), a byte at a time. The table is a constant expression: entry
+ * c is c shifted through the polynomial eight times (no table to fill at run time). */
+#define CRC_BIT(c) (((c) & 1u) ? 0xedb88320u ^ ((c) >> 1) : (c) >> 1)
+#define CRC_ENTRY(c) CRC_BIT(CRC_BIT(CRC_BIT(CRC_BIT(CRC_BIT(CRC_BIT(CRC_BIT(CRC_BIT((uint32_t)(c)))))))))
+#define CRC_4(c) CRC_ENTRY(c), CRC_ENTRY((c) + 1), CRC_ENTRY((c) + 2), CRC_ENTRY((c) + 3)
+#define CRC_16(c) CRC_4(c), CRC_4((c) + 4), CRC_4((c) + 8), CRC_4((c) + 12)
+#define CRC_64(c) CRC_16(c), CRC_16((c) + 16), CRC_16((c) + 32), CRC_16((c) + 48)
+
 static uint32_t crc32_of(const uint8_t *p, size_t n) {
-    static const uint32_t nibble[16] = {
-        0x00000000, 0x1db71064, 0x3b6e20c8, 0x26d930ac, 0x76dc4190, 0x6b6b51f4, 0x4db26158, 0x5005713c,
-        0xedb88320, 0xf00f9344, 0xd6d6a3e8, 0xcb61b38c, 0x9b64c2b0, 0x86d3d2d4, 0xa00ae278, 0xbdbdf21c};
+    static const uint32_t table[256] = {CRC_64(0), CRC_64(64), CRC_64(128), CRC_64(192)};
     uint32_t crc = 0xffffffffu;
-    for (size_t i = 0; i < n; i++) {
-        crc ^= p[i];
-        crc = (crc >> 4) ^ nibble[crc & 15];
-        crc = (crc >> 4) ^ nibble[crc & 15];
-    }
+    for (size_t i = 0; i < n; i++) crc = (crc >> 8) ^ table[(crc ^ p[i]) & 0xffu];
     return ~crc;
 }
 
