@@ -163,7 +163,10 @@ static void print_func(gp *p, const ir_func *f) {
         const ir_var *v = f->params[i];
         if (i) sb_put(p->out, ", ");
         if (v->mods & MOD_OUT) sb_put(p->out, (v->mods & MOD_IN) ? "inout " : "out ");
-        sb_put(p->out, glsl_decl(p, v->type, v->glsl));
+        const hfx_type *t = v->type;
+        if (t->kind == TY_SAMPLER && t->dim == DIM_GENERIC && v->dim != DIM_GENERIC) /* `sampler s` sampled as a cube */
+            t = hfx_type_object(p->c->types, TY_SAMPLER, v->dim);
+        sb_put(p->out, glsl_decl(p, t, v->glsl));
     }
     sb_put(p->out, ")\n");
     print_stmt(p, f->body);

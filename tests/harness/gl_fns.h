@@ -46,7 +46,8 @@ typedef void(APIENTRYP test_gl_bind_texture)(GLenum, GLuint);
     X(PFNGLUNIFORMMATRIX4FVPROC, UniformMatrix4fv) X(PFNGLUNIFORMMATRIX3X4FVPROC, UniformMatrix3x4fv) \
     X(PFNGLUNIFORMMATRIX4X3FVPROC, UniformMatrix4x3fv) X(PFNGLGENERATEMIPMAPPROC, GenerateMipmap) \
     X(PFNGLGETTEXPARAMETERIVPROC, GetTexParameteriv) X(PFNGLVERTEXATTRIB4FPROC, VertexAttrib4f) \
-    X(PFNGLREADPIXELSPROC, ReadPixels) X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus)
+    X(PFNGLREADPIXELSPROC, ReadPixels) X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus) \
+    X(PFNGLTEXIMAGE3DPROC, TexImage3D)
 
 typedef struct test_gl_fns {
 #define TEST_GL_FN_FIELD_(type, name) type name;

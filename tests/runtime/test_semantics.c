@@ -37,6 +37,7 @@ typedef struct runner {
     tgl g;
     hfx_device *dev;
     GLuint fbo, target, quad, quad_buffer;
+    GLuint tex2d, texcube, tex3d;   /* the textures of T2, TC and T3 (see README) */
     int rows, failures;
 } runner;
 
@@ -46,12 +47,23 @@ static const float input_b[4] = {0.25f, 3.0f, -0.75f, 1.0f};
 static const int input_i[4] = {3, -7, 2, 0};
 static const float input_m[16] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16}; /* M._11, M._12, ... */
 
-static const char uniform_inputs[] = "float4 A; float4 B; int4 I; float4x4 M;\n";
+/* Samplers every row may read, the same in both modes; textures in make_textures. */
+#define SAMPLERS \
+    "texture T2; texture TC; texture T3;\n" \
+    "sampler2D S2 = sampler_state { Texture = <T2>; MinFilter = Point; MagFilter = Point; MipFilter = Point; AddressU = Clamp; AddressV = Clamp; };\n" \
+    "sampler2D S2L = sampler_state { Texture = <T2>; MinFilter = Linear; MagFilter = Linear; MipFilter = Point; AddressU = Clamp; AddressV = Clamp; };\n" \
+    "sampler2D S2W = sampler_state { Texture = <T2>; MinFilter = Point; MagFilter = Point; MipFilter = Point; AddressU = Wrap; AddressV = Mirror; };\n" \
+    "sampler2D S2N = sampler_state { Texture = <T2>; MinFilter = Point; MagFilter = Point; MipFilter = None; };\n" \
+    "sampler2D S2B = sampler_state { Texture = <T2>; MinFilter = Point; MagFilter = Point; AddressU = Border; AddressV = Border; BorderColor = 0xFF4080C0; };\n" \
+    "samplerCUBE SC = sampler_state { Texture = <TC>; MinFilter = Point; MagFilter = Point; MipFilter = None; };\n" \
+    "sampler3D S3 = sampler_state { Texture = <T3>; MinFilter = Point; MagFilter = Point; MipFilter = None; AddressW = Clamp; };\n"
+
+static const char uniform_inputs[] = "float4 A; float4 B; int4 I; float4x4 M;\n" SAMPLERS;
 static const char const_inputs[] =
     "static const float4 A = float4(0.5, -1.5, 2.0, -4.0);\n"
     "static const float4 B = float4(0.25, 3.0, -0.75, 1.0);\n"
     "static const int4 I = int4(3, -7, 2, 0);\n"
-    "static const float4x4 M = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};\n";
+    "static const float4x4 M = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};\n" SAMPLERS;
 
 static char *trim(char *s) {
     while (*s == ' ' || *s == '\t') s++;
@@ -131,8 +143,11 @@ static char *row_source(const row *r, int mode) {
     return src;
 }
 
-static void set_inputs(hfx_effect *fx) {
+static void set_inputs(runner *t, hfx_effect *fx) {
     hfx_param *p;
+    if ((p = hfx_effect_param(fx, "T2"))) hfx_param_set_texture(p, t->tex2d);
+    if ((p = hfx_effect_param(fx, "TC"))) hfx_param_set_texture(p, t->texcube);
+    if ((p = hfx_effect_param(fx, "T3"))) hfx_param_set_texture(p, t->tex3d);
     if ((p = hfx_effect_param(fx, "A"))) hfx_param_set_floats(p, input_a, 4);
     if ((p = hfx_effect_param(fx, "B"))) hfx_param_set_floats(p, input_b, 4);
     if ((p = hfx_effect_param(fx, "I"))) hfx_param_set_ints(p, input_i, 4);
@@ -153,7 +168,7 @@ static void report(const row *r, int mode, const char *what, const char *src) {
 
 /* Draws the row's effect into the 1x1 float target and returns its pixel. */
 static int draw(runner *t, hfx_effect *fx, float px[4]) {
-    set_inputs(fx);
+    set_inputs(t, fx);
     t->g.ClearColor(-7, -7, -7, -7);
     t->g.Clear(GL_COLOR_BUFFER_BIT);
     if (hfx_pass_apply(hfx_technique_pass(hfx_effect_technique(fx, "T"), 0)) != HFX_OK) return 0;
@@ -261,7 +276,35 @@ static void make_target(runner *t) {
     hfx_device_sync(t->dev);
 }
 
+/* T2: 2x2 RGBA32F, texel (x, y) of row y (v = 0 is the first row, as in D3D and GL) is
+ * (0.1 + 0.2x, 0.3 + 0.4y, 0.9, 1); its 1x1 level 1 is (0.5, 0.5, 0.5, 0.5). TC: 1x1 faces,
+ * face f (+X, -X, +Y, -Y, +Z, -Z) is (0.1f, 1 - 0.1f, 0.25, 1). T3: 1x1x2, slice z is (z, 0.5, 0.75, 1). */
+static void make_textures(runner *t) {
+    static const float level0[16] = {0.1f, 0.3f, 0.9f, 1, 0.3f, 0.3f, 0.9f, 1, 0.1f, 0.7f, 0.9f, 1, 0.3f, 0.7f, 0.9f, 1};
+    static const float level1[4] = {0.5f, 0.5f, 0.5f, 0.5f};
+    static const float slices[8] = {0, 0.5f, 0.75f, 1, 1, 0.5f, 0.75f, 1};
+    t->g.GenTextures(1, &t->tex2d);
+    t->g.BindTexture(GL_TEXTURE_2D, t->tex2d);
+    t->g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, 2, 2, 0, GL_RGBA, GL_FLOAT, level0);
+    t->g.TexImage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, 1, 1, 0, GL_RGBA, GL_FLOAT, level1);
+    t->g.GenTextures(1, &t->texcube);
+    t->g.BindTexture(GL_TEXTURE_CUBE_MAP, t->texcube);
+    for (int f = 0; f < 6; f++) {
+        float texel[4] = {0.1f * (float)f, 1 - 0.1f * (float)f, 0.25f, 1};
+        t->g.TexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f, 0, GL_RGBA32F, 1, 1, 0, GL_RGBA, GL_FLOAT, texel);
+    }
+    t->g.GenTextures(1, &t->tex3d);
+    t->g.BindTexture(GL_TEXTURE_3D, t->tex3d);
+    t->g.TexImage3D(GL_TEXTURE_3D, 0, GL_RGBA32F, 1, 1, 2, 0, GL_RGBA, GL_FLOAT, slices);
+    hfx_device_texture_changed(t->dev, t->tex2d);
+    hfx_device_texture_changed(t->dev, t->texcube);
+    hfx_device_texture_changed(t->dev, t->tex3d);
+    hfx_device_sync(t->dev);
+}
+
 static void free_target(runner *t) {
+    GLuint tex[3] = {t->tex2d, t->texcube, t->tex3d};
+    t->g.DeleteTextures(3, tex);
     t->g.DeleteBuffers(1, &t->quad_buffer);
     t->g.DeleteVertexArrays(1, &t->quad);
     t->g.DeleteFramebuffers(1, &t->fbo);
@@ -294,6 +337,7 @@ int main(void) {
     tgl_load(&t.g);
     t.dev = hfx_device_create_gl(test_gl_loader);
     make_target(&t);
+    make_textures(&t);
     RUN(all_rows);
     free_target(&t);
     hfx_device_destroy(t.dev);
