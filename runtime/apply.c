@@ -74,14 +74,25 @@ static int same_semantic(const char *canonical, const char *s) {
     return n && !isdigit((unsigned char)s[n - 1]) && strncasecmp(canonical, s, n) == 0 && strcmp(canonical + n, "0") == 0;
 }
 
+static int program_location(const hfx_fx_effect *fx, uint32_t prog, const char *semantic) {
+    if (prog == HFX_NONE) return -1;
+    const hfx_fx_program *fp = &fx->programs[prog];
+    for (uint32_t i = 0; i < fp->attribute_count; i++)
+        if (fp->attributes[i].semantic && same_semantic(fp->attributes[i].semantic, semantic)) return fp->attributes[i].location;
+    return -1;
+}
+
+/* A pass with shader variants (ShaderIndex): the location any of its programs gives the
+ * semantic (the compiler fixes a location per semantic, so they agree). */
 int hfx_pass_attribute_location(const hfx_pass *p, const char *semantic) {
     if (!p || !semantic) return -1;
     const hfx_rt_pass *rp = &p->fx->sh->passes[p->index];
-    uint32_t prog = rp->program != HFX_NONE ? rp->program : rp->variant_count ? rp->variants[0].program : HFX_NONE;
-    if (prog == HFX_NONE) return -1; /* a variant pass: the locations are the semantics', the same in all */
-    const hfx_fx_program *fp = &p->fx->sh->fx->programs[prog];
-    for (uint32_t i = 0; i < fp->attribute_count; i++)
-        if (fp->attributes[i].semantic && same_semantic(fp->attributes[i].semantic, semantic)) return fp->attributes[i].location;
+    const hfx_fx_effect *fx = p->fx->sh->fx;
+    if (rp->program != HFX_NONE) return program_location(fx, rp->program, semantic);
+    for (uint32_t v = 0; v < rp->variant_count; v++) {
+        int loc = program_location(fx, rp->variants[v].program, semantic);
+        if (loc >= 0) return loc;
+    }
     return -1;
 }
 

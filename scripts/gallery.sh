@@ -74,9 +74,11 @@ render fx "$root/fx/shading_models.fx" "Gouraud GouraudBlinn Phong BlinnPhong" -
 render fx "$root/fx/point_lights.fx" - -- --mesh sphere
 render fx "$root/fx/multipass.fx" - -- --mesh torus
 render fx "$root/fx/sas_blinn.fx" - -- --mesh teapot
+render fx "$root/fx/basic_lighting.fx" - -- --mesh teapot --set ShaderIndex=8 --set DiffuseColor=0.8,0.8,1,1 \
+  --set DirLight0DiffuseColor=1,0.8,0.6 --set DirLight0Direction=-0.5,-0.7,-0.5 --set DirLight0SpecularColor=1,1,1
 for f in "$root"/fx/*.fx; do # effects added later still show up, with default options
   case $(basename "$f") in
-    textured.fx|ambient.fx|directional.fx|point.fx|spot.fx|shading_models.fx|point_lights.fx|multipass.fx|sas_blinn.fx) ;;
+    textured.fx|ambient.fx|directional.fx|point.fx|spot.fx|shading_models.fx|point_lights.fx|multipass.fx|sas_blinn.fx|basic_lighting.fx) ;;
     *) render fx "$f" - -- ;;
   esac
 done
