@@ -35,7 +35,8 @@ static const hfx_state_enum_value clipplane[] = {
     {"ClipPlane5", 32}, END};
 static const hfx_state_enum_value patchedge[] = {{"Discrete", 0}, {"Continuous", 1}, END};
 static const hfx_state_enum_value dmt[] = {{"Enable", 0}, {"Disable", 1}, END};
-static const hfx_state_enum_value colorwrite[] = {{"Red", 1}, {"Green", 2}, {"Blue", 4}, {"Alpha", 8}, END};
+/* All and None are MonoGame's spellings (ColorWriteChannels), which its effect compiler takes. */
+static const hfx_state_enum_value colorwrite[] = {{"Red", 1}, {"Green", 2}, {"Blue", 4}, {"Alpha", 8}, {"All", 15}, {"None", 0}, END};
 static const hfx_state_enum_value blendop[] = {
     {"Add", 1}, {"Subtract", 2}, {"RevSubtract", 3}, {"Min", 4}, {"Max", 5}, END};
 static const hfx_state_enum_value degree[] = {{"Linear", 1}, {"Quadratic", 2}, {"Cubic", 3}, {"Quintic", 5}, END};

@@ -89,6 +89,8 @@ static void test_d3d9_enum_values(void) {
     CHECK_INT(value("BlendOpAlpha", "Max"), 5);
     CHECK_INT(value("ColorWriteEnable", "Alpha"), 8);
     CHECK_INT(value("ColorWriteEnable3", "Blue"), 4);
+    CHECK_INT(value("ColorWriteEnable", "All"), 15); /* MonoGame's names (MonoGame's Tests/Assets/Effects/ParserTest.fx) */
+    CHECK_INT(value("ColorWriteEnable", "none"), 0);
     CHECK_INT(value("ZEnable", "UseW"), 2);
     CHECK_INT(value("ZEnable", "TRUE"), 1);
     CHECK_INT(value("ZWriteEnable", "false"), 0);
