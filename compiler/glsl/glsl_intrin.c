@@ -73,10 +73,11 @@ static void helper_lit(gp *p) {
 static void helper_typed(gp *p, const char *name, const hfx_type *t, const char *fmt) {
     const char *tn = ty(p, t);
     if (!glsl_helper(p, hfx_arena_printf(p->c->arena, "%s %s", name, tn))) return;
-    /* fmt uses %1$s for the type: spelled out to stay portable */
+    /* fmt writes $T for the type and $N for its component count */
     const char *s = fmt;
     for (; *s; s++) {
         if (s[0] == '$' && s[1] == 'T') { sb_put(&p->helpers, tn); s++; continue; }
+        if (s[0] == '$' && s[1] == 'N') { sb_printf(&p->helpers, "%u", ncomp(t)); s++; continue; } /* components */
         char c[2] = { *s, 0 };
         sb_put(&p->helpers, c);
     }
@@ -457,7 +458,14 @@ static void lower_isfinite(gp *p, const ir_expr *e, int max) {
 
 static void lower_frexp(gp *p, const ir_expr *e, int max) {
     (void)max;
-    if (ncomp(e->a[0]->type) != 1) { glsl_error(p, e->loc, "'frexp' of a vector is not supported"); return; }
+    if (ncomp(e->a[0]->type) != 1 && !p->legacy) { /* per component; 0 has exponent 0 and mantissa 0 */
+        helper_typed(p, "frexp", e->type,
+                     "$T hfx_frexp($T x, out $T e)\n{\n    bvec$N zero = equal(x, $T(0.0));\n"
+                     "    e = mix(floor(log2(abs(x))) + 1.0, $T(0.0), zero);\n    return mix(x * exp2(-e), $T(0.0), zero);\n}\n");
+        args_out2(p, "hfx_frexp", e->a);
+        return;
+    }
+    if (ncomp(e->a[0]->type) != 1) { glsl_error(p, e->loc, "'frexp' of a vector needs GLSL 330 or ES 300"); return; }
     helper_typed(p, "frexp", e->type,
                  "float hfx_frexp(float x, out float e)\n{\n    if (x == 0.0) { e = 0.0; return 0.0; }\n"
                  "    e = floor(log2(abs(x))) + 1.0;\n    return x * exp2(-e);\n}\n");
