@@ -3,11 +3,13 @@
  * gives for it, derived by hand from Microsoft's documentation (the table says how where it is
  * not obvious). The row is compiled twice: once with the inputs A, B, I, M as parameters set
  * through the runtime (the GPU computes), once with the same values as static consts (the
- * compiler may fold): both must give the documented value. Rows that expect an error name the
+ * compiler may fold), and a third time in the vertex shader (rows that only a pixel shader can
+ * run excepted): all must give the documented value. Rows that expect an error name the
  * fxc code that the compile must report. The format is described in semantics/README. */
 #include <GL/glcorearb.h>
 #include <dirent.h>
 #include <math.h>
+#include <stdbool.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -27,10 +29,19 @@ typedef struct row {
     double expect[MAX_EXPECT];         /* NAN: the component must be a NaN */
     int any[MAX_EXPECT];               /* 1: not checked */
     double tol;
-    int modes;                         /* MODE_UNIFORM | MODE_CONST */
+    int modes;                         /* MODE_UNIFORM | MODE_CONST | MODE_VERTEX */
 } row;
 
-enum { MODE_UNIFORM = 1, MODE_CONST = 2 };
+/* MODE_VERTEX: the row in the vertex shader (parameters), its R passed on flat to the pixel shader. */
+enum { MODE_UNIFORM = 1, MODE_CONST = 2, MODE_VERTEX = 4 };
+
+/* What only a pixel shader has: rows naming these do not run in the vertex shader. */
+static bool pixel_only(const char *body) {
+    static const char *const words[] = {"ddx", "ddy", "fwidth", "clip", "discard", "tex"};
+    for (size_t i = 0; i < sizeof words / sizeof words[0]; i++)
+        if (strstr(body, words[i])) return true;
+    return false;
+}
 
 typedef struct runner {
     test_gl *gl;
@@ -39,6 +50,7 @@ typedef struct runner {
     GLuint fbo, target, quad, quad_buffer;
     GLuint tex2d, texcube, tex3d;   /* the textures of T2, TC and T3 (see README) */
     int rows, failures;
+    int runs[3];                    /* per mode: parameters, static const, vertex shader */
 } runner;
 
 /* The inputs every row may read; values chosen so that no two components are equal and signs vary. */
@@ -88,7 +100,7 @@ static int parse_expect(row *r, char *s) {
     char *comment = strstr(s, "//");
     if (comment) *comment = 0;
     r->tol = 1e-5;
-    r->modes = MODE_UNIFORM | MODE_CONST;
+    r->modes = MODE_UNIFORM | MODE_CONST | MODE_VERTEX;
     for (char *tok = strtok(s, " \t"); tok; tok = strtok(NULL, " \t")) {
         if (strcmp(tok, "error") == 0) {
             char *code = strtok(NULL, " \t");
@@ -97,7 +109,7 @@ static int parse_expect(row *r, char *s) {
         } else if (tok[0] == '~') {
             r->tol = strtod(tok + 1, NULL);
         } else if (strcmp(tok, "@u") == 0) {
-            r->modes = MODE_UNIFORM;
+            r->modes = MODE_UNIFORM | MODE_VERTEX;
         } else if (strcmp(tok, "@c") == 0) {
             r->modes = MODE_CONST;
         } else {
@@ -105,6 +117,7 @@ static int parse_expect(row *r, char *s) {
             r->count++;
         }
     }
+    if (r->error[0] || pixel_only(r->body)) r->modes &= ~MODE_VERTEX;
     return r->error[0] || r->count > 0;
 }
 
@@ -128,18 +141,27 @@ static int parse_row(row *r, char *line) {
 
 static char *row_source(const row *r, int mode) {
     static const char *const masks[] = {"", "x", "xy", "xyz", "xyzw"};
-    const char *inputs = mode == MODE_UNIFORM ? uniform_inputs : const_inputs;
+    const char *inputs = mode == MODE_CONST ? const_inputs : uniform_inputs;
     size_t n = strlen(inputs) + strlen(r->globals) + strlen(r->body) + 512;
     char *src = malloc(n);
     const char *tail = r->body[0] == '{' ? "" : ";";
     char assign[16] = "";
     if (r->body[0] != '{') snprintf(assign, sizeof assign, "R.%s = ", masks[r->count ? r->count : 1]);
-    snprintf(src, n,
-             "%s%s\n"
-             "float4 VS(float4 p : POSITION) : POSITION { return p; }\n"
-             "float4 PS() : COLOR {\n float4 R = 0;\n %s%s%s\n return R;\n}\n"
-             "technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }\n",
-             inputs, r->globals, assign, r->body, tail);
+    if (mode == MODE_VERTEX)
+        snprintf(src, n,
+                 "%s%s\n"
+                 "struct VO { float4 p : POSITION; nointerpolation float4 r : TEXCOORD0; };\n"
+                 "VO VS(float4 p : POSITION) {\n float4 R = 0;\n %s%s%s\n VO o; o.p = p; o.r = R; return o;\n}\n"
+                 "float4 PS(nointerpolation float4 r : TEXCOORD0) : COLOR { return r; }\n"
+                 "technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }\n",
+                 inputs, r->globals, assign, r->body, tail);
+    else
+        snprintf(src, n,
+                 "%s%s\n"
+                 "float4 VS(float4 p : POSITION) : POSITION { return p; }\n"
+                 "float4 PS() : COLOR {\n float4 R = 0;\n %s%s%s\n return R;\n}\n"
+                 "technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }\n",
+                 inputs, r->globals, assign, r->body, tail);
     return src;
 }
 
@@ -162,7 +184,8 @@ static int near(double got, double want, int any, double tol) {
 }
 
 static void report(const row *r, int mode, const char *what, const char *src) {
-    fprintf(stderr, "%s:%d: [%s] %s: %s\n%s", r->file, r->line, mode == MODE_UNIFORM ? "parameters" : "static const",
+    fprintf(stderr, "%s:%d: [%s] %s: %s\n%s", r->file, r->line,
+            mode == MODE_UNIFORM ? "parameters" : mode == MODE_CONST ? "static const" : "vertex shader",
             r->body, what, getenv("HFX_SEMANTICS_VERBOSE") ? src : "");
 }
 
@@ -220,8 +243,8 @@ static int run_mode(runner *t, const row *r, int mode) {
 
 static void run_row(runner *t, row *r) {
     int ok = 1;
-    for (int mode = MODE_UNIFORM; mode <= MODE_CONST; mode <<= 1)
-        if (r->modes & mode) ok &= run_mode(t, r, mode);
+    for (int mode = MODE_UNIFORM; mode <= MODE_VERTEX; mode <<= 1)
+        if (r->modes & mode) ok &= run_mode(t, r, mode), t->runs[mode == MODE_UNIFORM ? 0 : mode == MODE_CONST ? 1 : 2]++;
     t->rows++;
     if (!ok) t->failures++;
 }
@@ -323,7 +346,8 @@ static void semantics_tables(runner *t) {
         free(names[i]);
     }
     free(names);
-    printf("%d rows, %d failed\n", t->rows, t->failures);
+    printf("%d rows, %d failed (runs: %d with parameters, %d with static consts, %d in the vertex shader)\n", t->rows,
+           t->failures, t->runs[0], t->runs[1], t->runs[2]);
     CHECK_INT(t->failures, 0);
 }
 
