@@ -425,11 +425,12 @@ static void declare_globals(gp *p) {
     }
 }
 
+/* ES 300 has no default precision for sampler3D in either stage (vertex texture fetch included),
+ * and only lowp ones for sampler2D / samplerCube: both stages declare all three. */
 static const char *header(gp *p) {
     if (p->target == HFX_TARGET_GLSLES300)
-        return p->stage == IR_VERTEX ? "#version 300 es\nprecision highp float;\nprecision highp int;\n"
-                                     : "#version 300 es\nprecision highp float;\nprecision highp int;\n"
-                                       "precision highp sampler2D;\nprecision highp sampler3D;\nprecision highp samplerCube;\n";
+        return "#version 300 es\nprecision highp float;\nprecision highp int;\n"
+               "precision highp sampler2D;\nprecision highp sampler3D;\nprecision highp samplerCube;\n";
     if (p->target == HFX_TARGET_GLSL110) return "#version 110\n";
     return "#version 330 core\n";
 }

@@ -35,12 +35,19 @@ typedef struct row {
 /* MODE_VERTEX: the row in the vertex shader (parameters), its R passed on flat to the pixel shader. */
 enum { MODE_UNIFORM = 1, MODE_CONST = 2, MODE_VERTEX = 4 };
 
-/* What only a pixel shader has: rows naming these do not run in the vertex shader. */
+static int count_of(const char *s, const char *word) {
+    int n = 0;
+    for (const char *at = strstr(s, word); at; at = strstr(at + 1, word)) n++;
+    return n;
+}
+
+/* What only a pixel shader has: rows naming these do not run in the vertex shader. Sampling
+ * with an explicit level (tex2Dlod...) is vertex texture fetch, which vs_3_0 has. */
 static bool pixel_only(const char *body) {
-    static const char *const words[] = {"ddx", "ddy", "fwidth", "clip", "discard", "tex"};
+    static const char *const words[] = {"ddx", "ddy", "fwidth", "clip", "discard"};
     for (size_t i = 0; i < sizeof words / sizeof words[0]; i++)
         if (strstr(body, words[i])) return true;
-    return false;
+    return count_of(body, "tex") != count_of(body, "lod(");
 }
 
 typedef struct runner {
