@@ -77,12 +77,14 @@ static const float input_m[16] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14,
     "samplerCUBE SC = sampler_state { Texture = <TC>; MinFilter = Point; MagFilter = Point; MipFilter = None; };\n" \
     "sampler3D S3 = sampler_state { Texture = <T3>; MinFilter = Point; MagFilter = Point; MipFilter = None; AddressW = Clamp; };\n"
 
-static const char uniform_inputs[] = "float4 A; float4 B; int4 I; float4x4 M;\n" SAMPLERS;
+static const char uniform_inputs[] = "float4 A; float4 B; int4 I; float4x4 M; bool T1; bool F1; half2 H; int N1;\n" SAMPLERS;
 static const char const_inputs[] =
     "static const float4 A = float4(0.5, -1.5, 2.0, -4.0);\n"
     "static const float4 B = float4(0.25, 3.0, -0.75, 1.0);\n"
     "static const int4 I = int4(3, -7, 2, 0);\n"
-    "static const float4x4 M = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};\n" SAMPLERS;
+    "static const float4x4 M = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};\n"
+    "static const bool T1 = true; static const bool F1 = false; static const half2 H = half2(0.75, -2.5);\n"
+    "static const int N1 = -9;\n" SAMPLERS;
 
 static char *trim(char *s) {
     while (*s == ' ' || *s == '\t') s++;
@@ -181,6 +183,11 @@ static void set_inputs(runner *t, hfx_effect *fx) {
     if ((p = hfx_effect_param(fx, "B"))) hfx_param_set_floats(p, input_b, 4);
     if ((p = hfx_effect_param(fx, "I"))) hfx_param_set_ints(p, input_i, 4);
     if ((p = hfx_effect_param(fx, "M"))) hfx_param_set_matrix(p, input_m);
+    if ((p = hfx_effect_param(fx, "T1"))) hfx_param_set_bool(p, 1);
+    if ((p = hfx_effect_param(fx, "F1"))) hfx_param_set_bool(p, 0);
+    if ((p = hfx_effect_param(fx, "N1"))) hfx_param_set_int(p, -9);
+    static const float h[2] = {0.75f, -2.5f};
+    if ((p = hfx_effect_param(fx, "H"))) hfx_param_set_floats(p, h, 2);
 }
 
 static int near(double got, double want, int any, double tol) {
