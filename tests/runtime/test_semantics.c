@@ -55,7 +55,7 @@ typedef struct runner {
     tgl g;
     hfx_device *dev;
     GLuint fbo, target, quad, quad_buffer;
-    GLuint tex2d, texcube, tex3d;   /* the textures of T2, TC and T3 (see README) */
+    GLuint tex2d, texcube, tex3d, tex1d; /* the textures of T2, TC, T3 and T1D (see README) */
     int rows, failures;
     int runs[3];                    /* per mode: parameters, static const, vertex shader */
 } runner;
@@ -68,7 +68,8 @@ static const float input_m[16] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14,
 
 /* Samplers every row may read, the same in both modes; textures in make_textures. */
 #define SAMPLERS \
-    "texture T2; texture TC; texture T3;\n" \
+    "texture T2; texture TC; texture T3; texture T1D;\n" \
+    "sampler1D S1 = sampler_state { Texture = <T1D>; MinFilter = Point; MagFilter = Point; MipFilter = None; AddressU = Clamp; };\n" \
     "sampler2D S2 = sampler_state { Texture = <T2>; MinFilter = Point; MagFilter = Point; MipFilter = Point; AddressU = Clamp; AddressV = Clamp; };\n" \
     "sampler2D S2L = sampler_state { Texture = <T2>; MinFilter = Linear; MagFilter = Linear; MipFilter = Point; AddressU = Clamp; AddressV = Clamp; };\n" \
     "sampler2D S2W = sampler_state { Texture = <T2>; MinFilter = Point; MagFilter = Point; MipFilter = Point; AddressU = Wrap; AddressV = Mirror; };\n" \
@@ -179,6 +180,7 @@ static void set_inputs(runner *t, hfx_effect *fx) {
     if ((p = hfx_effect_param(fx, "T2"))) hfx_param_set_texture(p, t->tex2d);
     if ((p = hfx_effect_param(fx, "TC"))) hfx_param_set_texture(p, t->texcube);
     if ((p = hfx_effect_param(fx, "T3"))) hfx_param_set_texture(p, t->tex3d);
+    if ((p = hfx_effect_param(fx, "T1D"))) hfx_param_set_texture(p, t->tex1d);
     if ((p = hfx_effect_param(fx, "A"))) hfx_param_set_floats(p, input_a, 4);
     if ((p = hfx_effect_param(fx, "B"))) hfx_param_set_floats(p, input_b, 4);
     if ((p = hfx_effect_param(fx, "I"))) hfx_param_set_ints(p, input_i, 4);
@@ -315,7 +317,8 @@ static void make_target(runner *t) {
 
 /* T2: 2x2 RGBA32F, texel (x, y) of row y (v = 0 is the first row, as in D3D and GL) is
  * (0.1 + 0.2x, 0.3 + 0.4y, 0.9, 1); its 1x1 level 1 is (0.5, 0.5, 0.5, 0.5). TC: 1x1 faces,
- * face f (+X, -X, +Y, -Y, +Z, -Z) is (0.1f, 1 - 0.1f, 0.25, 1). T3: 1x1x2, slice z is (z, 0.5, 0.75, 1). */
+ * face f (+X, -X, +Y, -Y, +Z, -Z) is (0.1f, 1 - 0.1f, 0.25, 1). T3: 1x1x2, slice z is (z, 0.5, 0.75, 1).
+ * T1D: a 2x1 2D texture (D3D9's 1D textures are 2D ones a texel high): (0.2, 0.4, 0.6, 0.8), (0.9, 0.7, 0.5, 0.3). */
 static void make_textures(runner *t) {
     static const float level0[16] = {0.1f, 0.3f, 0.9f, 1, 0.3f, 0.3f, 0.9f, 1, 0.1f, 0.7f, 0.9f, 1, 0.3f, 0.7f, 0.9f, 1};
     static const float level1[4] = {0.5f, 0.5f, 0.5f, 0.5f};
@@ -333,6 +336,11 @@ static void make_textures(runner *t) {
     t->g.GenTextures(1, &t->tex3d);
     t->g.BindTexture(GL_TEXTURE_3D, t->tex3d);
     t->g.TexImage3D(GL_TEXTURE_3D, 0, GL_RGBA32F, 1, 1, 2, 0, GL_RGBA, GL_FLOAT, slices);
+    static const float row[8] = {0.2f, 0.4f, 0.6f, 0.8f, 0.9f, 0.7f, 0.5f, 0.3f};
+    t->g.GenTextures(1, &t->tex1d);
+    t->g.BindTexture(GL_TEXTURE_2D, t->tex1d);
+    t->g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, 2, 1, 0, GL_RGBA, GL_FLOAT, row);
+    hfx_device_texture_changed(t->dev, t->tex1d);
     hfx_device_texture_changed(t->dev, t->tex2d);
     hfx_device_texture_changed(t->dev, t->texcube);
     hfx_device_texture_changed(t->dev, t->tex3d);
@@ -340,8 +348,8 @@ static void make_textures(runner *t) {
 }
 
 static void free_target(runner *t) {
-    GLuint tex[3] = {t->tex2d, t->texcube, t->tex3d};
-    t->g.DeleteTextures(3, tex);
+    GLuint tex[4] = {t->tex2d, t->texcube, t->tex3d, t->tex1d};
+    t->g.DeleteTextures(4, tex);
     t->g.DeleteBuffers(1, &t->quad_buffer);
     t->g.DeleteVertexArrays(1, &t->quad);
     t->g.DeleteFramebuffers(1, &t->fbo);
