@@ -13,14 +13,21 @@ typedef struct copy { ir_func *from, *to; ir_expr **args; } copy;
 
 typedef struct var_map { ir_var **from, **to; uint32_t count, cap; } var_map;
 
+/* The parameters a function writes, as a bit mask (params 0..63), found once per function. */
+typedef struct writes { const ir_func *fn; uint64_t mask; } writes;
+
 typedef struct specialiser {
     ir_shader *sh;
     copy copies[MAX_COPIES];
     uint32_t copy_count;
+    writes *writes; uint32_t write_count, write_cap;
     bool changed;
 } specialiser;
 
 /* ---- whether a parameter is written ---- */
+
+/* An `in` numeric parameter: what a constant argument may replace. */
+static bool bindable_param(const ir_var *p) { return !(p->mods & MOD_OUT) && hfx_type_is_numeric(p->type); }
 
 static void note_write(ir_ctx *c, ir_expr **slot, void *data) {
     (void)c;
@@ -42,11 +49,22 @@ static bool written(ir_ctx *c, const ir_func *f, const ir_var *p) {
     return v == NULL;
 }
 
+static uint64_t written_mask(ir_ctx *c, specialiser *sp, const ir_func *f) {
+    for (uint32_t i = 0; i < sp->write_count; i++)
+        if (sp->writes[i].fn == f) return sp->writes[i].mask;
+    uint64_t mask = 0;
+    for (uint32_t i = 0; i < f->param_count && i < 64; i++)
+        if (bindable_param(f->params[i]) && written(c, f, f->params[i])) mask |= (uint64_t)1 << i;
+    if (HFX_ARENA_GROW(c->arena, sp->writes, sp->write_count, sp->write_cap, 16))
+        sp->writes[sp->write_count++] = (writes){f, mask};
+    return mask;
+}
+
 /* Argument i can be bound: a constant for an `in` numeric parameter the callee never writes. */
-static bool bindable(ir_ctx *c, const ir_func *f, const ir_expr *call, uint32_t i) {
+static bool bindable(ir_ctx *c, specialiser *sp, const ir_func *f, const ir_expr *call, uint32_t i) {
     const ir_var *p = f->params[i];
-    return ir_is_const(call->a[i]) && !(p->mods & MOD_OUT) && hfx_type_is_numeric(p->type) &&
-           hfx_type_equal(call->a[i]->type, p->type) && !written(c, f, p);
+    return ir_is_const(call->a[i]) && bindable_param(p) && hfx_type_equal(call->a[i]->type, p->type) &&
+           !(written_mask(c, sp, f) & ((uint64_t)1 << i));
 }
 
 /* ---- copying a function ---- */
@@ -170,7 +188,7 @@ static void specialise_call(ir_ctx *c, ir_expr **slot, void *data) {
     ir_expr *e = *slot;
     if (e->kind != IE_CALL || e->n != e->fn->param_count || e->n > 64) return;
     bool bind[64], any = false;
-    for (uint32_t i = 0; i < e->n; i++) any |= bind[i] = bindable(c, e->fn, e, i);
+    for (uint32_t i = 0; i < e->n; i++) any |= bind[i] = bindable(c, sp, e->fn, e, i);
     if (!any) return;
     ir_func *n = copy_for(c, sp, e->fn, e, bind);
     if (!n) return;
