@@ -149,10 +149,21 @@ static hfx_rt_program *variant_program(hfx_effect *fx, const hfx_rt_pass *rp) {
     return NULL;
 }
 
+/* The program of a pass with shader arrays: chosen again only when a parameter changed since. */
+static hfx_rt_program *chosen_program(hfx_pass *p) {
+    hfx_effect *fx = p->fx;
+    if (p->chosen && p->chosen_seen == fx->log_len + 1) return p->chosen;
+    p->chosen = variant_program(fx, p->rt);
+    p->chosen_seen = fx->log_len + 1;
+    return p->chosen;
+}
+
 /* Everything a pass sets: render states, program, uploads, textures. */
-static int apply_full(hfx_effect *fx, const hfx_rt_pass *rp) {
+static int apply_full(hfx_pass *p) {
+    hfx_effect *fx = p->fx;
+    const hfx_rt_pass *rp = p->rt;
     if (rp->render_state_count) hfx_rs_apply(fx, rp); /* first: the alpha test reads these states */
-    hfx_rt_program *prog = rp->variant_count ? variant_program(fx, rp) : rp->prog;
+    hfx_rt_program *prog = rp->variant_count ? chosen_program(p) : rp->prog;
     if (rp->variant_count && !prog) return HFX_ERR_NOT_FOUND;
     apply_program(fx->dev, prog);
     if (prog && (prog->memo_seen != fx->log_len || prog->memo_effect != fx->id)) hfx_rt_upload_changed(fx, prog);
@@ -164,7 +175,7 @@ static int apply_full(hfx_effect *fx, const hfx_rt_pass *rp) {
 static __attribute__((noinline)) int apply_first(hfx_pass *p) {
     hfx_device *dev = p->fx->dev;
     dev->applied = NULL;
-    int rc = apply_full(p->fx, p->rt);
+    int rc = apply_full(p);
     if (p->rt->direct) dev->applied = p;
     return rc;
 }

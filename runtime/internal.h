@@ -259,6 +259,10 @@ struct hfx_pass {
     hfx_effect *fx;
     const hfx_rt_pass *rt;    /* &fx->sh->passes[index] */
     uint32_t index;
+    /* shader arrays: the program the selectors chose, and the change log's length then (the
+     * selectors run again only after a parameter changed); chosen_seen = 0: never chosen */
+    hfx_rt_program *chosen;
+    uint64_t chosen_seen;
 };
 
 /* What hfx_effect_begin saved. */
