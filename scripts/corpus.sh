@@ -27,13 +27,21 @@ extract() {
     done
 }
 
+# Include folders for an effect: every folder above it inside its repository, since games load
+# effects from their working folder (`#include "DATA\Shader\Blur.inc"` in a game's DATA/Shader).
+include_dirs() {
+    local d; d=$(dirname "$1")
+    while [ "$d" != . ] && [ "${d#*/}" != "$d" ]; do d=$(dirname "$d"); printf -- "-I\n%s\n" "$d"; done
+}
+
 # One effect: "compile330 compileES validate render" as ok / FAIL / - columns.
 one() {
     local fx=$1 out=$2 hfxc=$3 view=$4 name c330=FAIL ces=FAIL val=- ren=-
     name=$(echo "$fx" | tr '/' '_')
     mkdir -p "$out/glsl/$name.330" "$out/glsl/$name.es"
-    "$hfxc" --quiet --target glsl330 --emit-glsl "$out/glsl/$name.330" "$fx" >"$out/log/$name.330" 2>&1 && c330=ok
-    "$hfxc" --quiet --target glsles300 --emit-glsl "$out/glsl/$name.es" "$fx" >"$out/log/$name.es" 2>&1 && ces=ok
+    local -a inc; mapfile -t inc < <(include_dirs "$fx")
+    "$hfxc" --quiet "${inc[@]}" --target glsl330 --emit-glsl "$out/glsl/$name.330" "$fx" >"$out/log/$name.330" 2>&1 && c330=ok
+    "$hfxc" --quiet "${inc[@]}" --target glsles300 --emit-glsl "$out/glsl/$name.es" "$fx" >"$out/log/$name.es" 2>&1 && ces=ok
     if [ $c330 = ok ] && [ $ces = ok ]; then
         val=ok
         for s in "$out/glsl/$name".*/*; do
@@ -54,7 +62,7 @@ run() {
     [ -x "$view" ] || view=
     local out; out=$(mktemp -d /tmp/hfx-corpus-XXXXXX)
     mkdir -p "$out/log" "$out/png" "$out/glsl"
-    export -f one
+    export -f one include_dirs
     printf "%-6s %-6s %-8s %-6s %s\n" "330" "ES300" "validate" "render" "effect"
     (cd "$dir" && tail -n +2 "$list" | awk -F'\t' '$4 == "root" { gsub("/", "+", $1); print $1 "/" $3 }' |
         xargs -d '\n' -P "$(nproc)" -I{} bash -c 'one "$@"' _ {} "$out" "$hfxc" "$view") | sort -k5 | tee "$out/table.txt"
