@@ -50,7 +50,7 @@ one() {
         done
     fi
     if [ -n "$view" ] && [ $c330 = ok ]; then
-        timeout 60 "$view" "$fx" -o "$out/png/$name.png" --size 128x128 >"$out/log/$name.view" 2>&1 && ren=ok || ren=FAIL
+        timeout 60 "$view" "${inc[@]}" "$fx" -o "$out/png/$name.png" --size 128x128 >"$out/log/$name.view" 2>&1 && ren=ok || ren=FAIL
     fi
     printf "%-6s %-6s %-8s %-6s %s\n" "$c330" "$ces" "$val" "$ren" "$fx"
 }
