@@ -133,10 +133,13 @@ static bool is_shadowed(const parse_ctx *ctx, const hfx_token *t) {
 }
 
 /* True when the builtin type spelling t is a name here (and remembers a new one). A
- * semantic spelled like a type (`Texture xTexture : TEXTURE;`) is a name too. */
+ * semantic spelled like a type (`Texture xTexture : TEXTURE;`) is a name too, and so is a
+ * function named like one (`float4 PixelShader(float2 uv : TEXCOORD0) : COLOR0`, as XNA
+ * tutorials write it) and a name after a template type (`Texture2D<float4> Texture`). */
 static bool type_spelling_is_name(parse_ctx *ctx, const hfx_token *t) {
     if (ctx->prev_code == ':' && ends_declarator(t->next) && !is_punct(t->next, P_COLON)) return true;
-    if (ctx->prev_code == TYPE_NAME && ends_declarator(t->next)) {
+    bool after_type = ctx->prev_code == TYPE_NAME || (ctx->prev_code == '>' && ctx->brace_depth == 0);
+    if (after_type && (ends_declarator(t->next) || (ctx->prev_code == TYPE_NAME && is_punct(t->next, P_LPAREN)))) {
         if (!is_shadowed(ctx, t) && HFX_ARENA_GROW(ctx->arena, ctx->shadows, ctx->shadow_count, ctx->shadow_cap, 8))
             ctx->shadows[ctx->shadow_count++] = t->text;
         return true;

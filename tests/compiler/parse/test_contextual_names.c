@@ -36,6 +36,34 @@ static void xna_declare_texture(void) {
     compiles_clean(src, names, 2);
 }
 
+/* XNA tutorials name their entry points after the types (petriw's XNA-Shader-Programming,
+ * Biophage's GaussianBlur.fx): `float4 PixelShader(...)`, compiled by `compile ps_2_0
+ * PixelShader()`, and the pass still sets the PixelShader state; VertexShader stays a type
+ * where a name follows it. */
+static void functions_named_like_shader_types(void) {
+    const char *src =
+        "float4x4 WVP;\n"
+        "struct OUT { float4 Pos : POSITION; };\n"
+        "OUT VertexShader(float4 Pos : POSITION) { OUT o; o.Pos = mul(Pos, WVP); return o; }\n"
+        "float4 PixelShader(float2 uv : TEXCOORD0) : COLOR0 { return float4(uv, 0, 1); }\n"
+        "VertexShader Shaders[1] = { compile vs_2_0 VertexShader() };\n"
+        "technique T { pass P { VertexShader = compile vs_2_0 VertexShader(); PixelShader = compile ps_2_0 PixelShader(); } }\n";
+    const char *const names[] = {"WVP", "Shaders"};
+    compiles_clean(src, names, 2);
+}
+
+/* MonoGame's DECLARE_TEXTURE for SM4 spells `Texture2D<float4> Texture : register(t0);` (the
+ * id Software RTCW port's SkeletalEffect.fx). */
+static void name_after_a_template_type(void) {
+    const char *src =
+        "Texture2D<float4> Texture : register(t0);\n"
+        "sampler TextureSampler : register(s0) = sampler_state { Texture = (Texture); };\n"
+        "float4 ps(float2 uv : TEXCOORD0) : COLOR0 { return tex2D(TextureSampler, uv); }\n"
+        "technique T { pass P { PixelShader = compile ps_2_0 ps(); } }\n";
+    const char *const names[] = {"Texture", "TextureSampler"};
+    compiles_clean(src, names, 2);
+}
+
 static void sampler_and_texture_names(void) {
     const char *src =
         "texture Texture;\n"
@@ -51,6 +79,8 @@ static void sampler_and_texture_names(void) {
 
 int main(void) {
     RUN(xna_declare_texture);
+    RUN(functions_named_like_shader_types);
+    RUN(name_after_a_template_type);
     RUN(sampler_and_texture_names);
     return test_summary();
 }
