@@ -2,6 +2,8 @@
 find_package(BISON 3.5 REQUIRED)
 find_program(RE2C_EXECUTABLE re2c REQUIRED)
 find_package(PkgConfig REQUIRED)
+# zlib: the .hfxo checksum (CRC-32) in the common library.
+find_package(ZLIB REQUIRED)
 
 # OSMesa: headless OpenGL for tests, hfxview and examples.
 pkg_check_modules(OSMESA IMPORTED_TARGET osmesa)

@@ -9,6 +9,8 @@
 #                                           and GLSL ES 300, validate each shader with
 #                                           glslangValidator, render it with hfxview; print a
 #                                           table, the failures' first lines, `N/M compiled`
+#   scripts/corpus.sh roots                 the root effects' paths relative to DIR, one a line
+#                                           (bench/bench_corpus DIR LIST times their compile)
 #
 # BUILD is a build folder of this checkout (default build/test). Output files go to a
 # temporary folder (kept: its path is printed), PNGs under <tmp>/png for a contact sheet.
@@ -55,6 +57,10 @@ one() {
     printf "%-6s %-6s %-8s %-6s %s\n" "$c330" "$ces" "$val" "$ren" "$fx"
 }
 
+roots() {
+    tail -n +2 "$list" | awk -F'\t' '$4 == "root" { gsub("/", "+", $1); print $1 "/" $3 }'
+}
+
 run() {
     local dir=$1 build=${2:-$here/build/test}
     local hfxc=$build/compiler/hfxc view=$build/tools/hfxview/hfxview
@@ -64,7 +70,7 @@ run() {
     mkdir -p "$out/log" "$out/png" "$out/glsl"
     export -f one include_dirs
     printf "%-6s %-6s %-8s %-6s %s\n" "330" "ES300" "validate" "render" "effect"
-    (cd "$dir" && tail -n +2 "$list" | awk -F'\t' '$4 == "root" { gsub("/", "+", $1); print $1 "/" $3 }' |
+    (cd "$dir" && roots |
         xargs -d '\n' -P "$(nproc)" -I{} bash -c 'one "$@"' _ {} "$out" "$hfxc" "$view") | sort -k5 | tee "$out/table.txt"
     local total ok
     total=$(wc -l < "$out/table.txt")
@@ -81,5 +87,6 @@ run() {
 case "${1:-}" in
 extract) extract "$2" "$3" ;;
 run) run "$2" "${3:-}" ;;
-*) sed -n '2,14p' "$0"; exit 2 ;;
+roots) roots ;;
+*) sed -n '2,16p' "$0"; exit 2 ;;
 esac

@@ -3,6 +3,7 @@
 #ifndef HFX_SBUF_H
 #define HFX_SBUF_H
 
+#include <stdarg.h>
 #include <stdbool.h>
 #include <stddef.h>
 
@@ -11,6 +12,7 @@ typedef struct sbuf { char *d; size_t len, cap; bool oom; } sbuf;
 void sb_put(sbuf *b, const char *s);                    /* appends a string */
 void sb_putn(sbuf *b, const char *s, size_t n);         /* appends n bytes of s */
 void sb_printf(sbuf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3))); /* appends formatted text */
+void sb_vprintf(sbuf *b, const char *fmt, va_list ap);     /* appends formatted text */
 char *sb_take(sbuf *b); /* the text, the caller's to free; NULL (and freed) after a failed allocation */
 
 #endif

@@ -288,6 +288,8 @@ static bool same_compile(hfx_builder *b, const hfx_expr *x, const hfx_expr *y) {
     return true;
 }
 
+static bool same_compile_cb(void *b, const hfx_expr *x, const hfx_expr *y) { return same_compile(b, x, y); }
+
 /* The program for a (vs, ps) pair: an earlier identical one, or a new one from the codegen. */
 static uint32_t program_for(hfx_builder *b, const hfx_expr *vs, const hfx_expr *ps, bool flat, hfx_loc loc) {
     hfx_fx_effect *fx = b->fx;
@@ -295,7 +297,8 @@ static uint32_t program_for(hfx_builder *b, const hfx_expr *vs, const hfx_expr *
         if (same_compile(b, b->keys[i].vs, vs) && same_compile(b, b->keys[i].ps, ps) && b->keys[i].flat_colors == flat) return i;
     if (!b->cg)
         b->cg = hfx_codegen_new(b->arena, b->diags, b->types, b->ast, fx, b->targets,
-                                (b->diags->flags & HFXC_PACK_UNIFORMS) != 0); /* the diags carry hfxc_options.flags */
+                                (b->diags->flags & HFXC_PACK_UNIFORMS) != 0, /* the diags carry hfxc_options.flags */
+                                same_compile_cb, b);
     if (!b->cg) {
         hfx_error(b->diags, loc, X_UNSUPPORTED, "the code generator could not start");
         return HFX_NONE;

@@ -8,19 +8,33 @@
 
 #include "glsl/glsl.h"
 
+/* A stage built and lowered once: programs share it (BasicEffect's 32 programs use 20 vertex
+ * and 4 pixel shaders; the IR is only read after lowering). */
+typedef struct built_stage {
+    const hfx_expr *compile;
+    ir_stage stage;
+    ir_shader *sh;  /* NULL when it failed */
+} built_stage;
+
 struct hfx_codegen {
     ir_ctx c;
     unsigned targets;
     bool pack;
+    hfx_same_compile_fn same;
+    void *same_ctx;
+    built_stage *built;
+    uint32_t built_count, built_cap;
 };
 
 hfx_codegen *hfx_codegen_new(hfx_arena *arena, hfx_diags *diags, hfx_types *types, hfx_ast *ast,
-                             hfx_fx_effect *fx, unsigned targets, bool pack) {
+                             hfx_fx_effect *fx, unsigned targets, bool pack, hfx_same_compile_fn same, void *same_ctx) {
     hfx_codegen *cg = HFX_NEW(arena, hfx_codegen);
     if (!cg) return NULL;
     cg->c = (ir_ctx){ arena, diags, types, ast, fx };
     cg->targets = targets;
     cg->pack = pack;
+    cg->same = same;
+    cg->same_ctx = same_ctx;
     return cg;
 }
 
@@ -83,16 +97,36 @@ static hfx_fx_attribute *assign_locations(hfx_arena *a, const strset *sems) {
     return at;
 }
 
-static ir_shader *stage(hfx_codegen *cg, const hfx_expr *e, ir_stage st) {
-    if (!e || e->kind == EX_NULL) return NULL;
+static ir_shader *build_stage(hfx_codegen *cg, const hfx_expr *e, ir_stage st) {
+    uint32_t errors = cg->c.diags->errors;
+    ir_shader *sh = ir_build(&cg->c, e, st);
+    if (!sh || cg->c.diags->errors > errors || ir_lower(&cg->c, sh) != 0) return NULL;
+    return sh;
+}
+
+static const built_stage *find_built(const hfx_codegen *cg, const hfx_expr *e, ir_stage st) {
+    for (uint32_t i = 0; i < cg->built_count; i++) {
+        const built_stage *b = &cg->built[i];
+        if (b->stage == st && (b->compile == e || (cg->same && cg->same(cg->same_ctx, b->compile, e)))) return b;
+    }
+    return NULL;
+}
+
+/* The lowered shader of a compile expression (*sh NULL for no shader); false when it failed. */
+static bool stage(hfx_codegen *cg, const hfx_expr *e, ir_stage st, ir_shader **sh) {
+    *sh = NULL;
+    if (!e || e->kind == EX_NULL) return true;
     if (e->kind != EX_COMPILE) {
         hfx_error(cg->c.diags, e->loc, X_UNSUPPORTED, "%s", e->kind == EX_ASM ? "asm blocks are not supported"
                                                                                  : "shader must be a compile expression");
-        return NULL;
+        return false;
     }
-    ir_shader *sh = ir_build(&cg->c, e, st);
-    if (sh && ir_lower(&cg->c, sh) != 0) return NULL;
-    return sh;
+    const built_stage *b = find_built(cg, e, st);
+    if (b) return (*sh = b->sh) != NULL;
+    *sh = build_stage(cg, e, st);
+    if (HFX_ARENA_GROW(cg->c.arena, cg->built, cg->built_count, cg->built_cap, 8))
+        cg->built[cg->built_count++] = (built_stage){e, st, *sh};
+    return *sh != NULL;
 }
 
 static char *dup_str(const char *s) {
@@ -237,9 +271,9 @@ static char *spoil(char *text) {
 
 int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps, bool flat_colors, hfx_fx_program *out) {
     memset(out, 0, sizeof *out);
-    uint32_t errors = cg->c.diags->errors;
-    ir_shader *sh[2] = { stage(cg, vs, IR_VERTEX), stage(cg, ps, IR_PIXEL) };
-    if (cg->c.diags->errors > errors) return -1;
+    ir_shader *sh[2];
+    bool vs_ok = stage(cg, vs, IR_VERTEX, &sh[0]), ps_ok = stage(cg, ps, IR_PIXEL, &sh[1]);
+    if (!vs_ok || !ps_ok) return -1;
     glsl_iface io = {0};
     if (build_interface(cg, sh[0], sh[1], flat_colors, &io) != 0) return -1;
     if (copy_attributes(&io, out) != 0 || record_uses(cg, sh, out) != 0) goto oom;

@@ -12,9 +12,13 @@
 
 typedef struct hfx_codegen hfx_codegen;
 
-/* pack: HFXC_PACK_UNIFORMS (effect.h, "hfx_c"). */
+/* Do two compile expressions build the same shader (same entry, profile and argument values)? */
+typedef bool (*hfx_same_compile_fn)(void *ctx, const hfx_expr *x, const hfx_expr *y);
+
+/* pack: HFXC_PACK_UNIFORMS (effect.h, "hfx_c"). same (with same_ctx): stages are built and
+ * lowered once per distinct compile expression and shared by every program that uses them. */
 hfx_codegen *hfx_codegen_new(hfx_arena *arena, hfx_diags *diags, hfx_types *types, hfx_ast *ast,
-                             hfx_fx_effect *fx, unsigned targets, bool pack);
+                             hfx_fx_effect *fx, unsigned targets, bool pack, hfx_same_compile_fn same, void *same_ctx);
 /* vs, ps: the pass's VertexShader / PixelShader values (EX_COMPILE; NULL when not set).
  * Fills *out (malloc'ed members, freed with the effect); may set fx->samplers[i].dim.
  * Returns 0, or -1 with errors in diags. */

@@ -36,7 +36,7 @@ static void print_body(gp *p, const ir_stmt *s) {
 }
 
 static void print_decl(gp *p, const ir_var *v, const ir_expr *init, bool zero, const char *end) {
-    sb_put(p->out, glsl_decl(p, v->type, v->glsl));
+    glsl_decl(p, p->out, v->type, v->glsl);
     if (init) {
         sb_put(p->out, " = ");
         glsl_expr(p, init, PREC_ASSIGN);
@@ -166,7 +166,7 @@ static void print_func(gp *p, const ir_func *f) {
         const hfx_type *t = v->type;
         if (t->kind == TY_SAMPLER && t->dim == DIM_GENERIC && v->dim != DIM_GENERIC) /* `sampler s` sampled as a cube */
             t = hfx_type_object(p->c->types, TY_SAMPLER, v->dim);
-        sb_put(p->out, glsl_decl(p, t, v->glsl));
+        glsl_decl(p, p->out, t, v->glsl);
     }
     sb_put(p->out, ")\n");
     print_stmt(p, f->body);
@@ -347,7 +347,7 @@ static void print_main(gp *p) {
     init_privates(p);
     for (uint32_t i = 0; i < f->param_count; i++) {
         line_start(p);
-        sb_put(p->out, glsl_decl(p, f->params[i]->type, hfx_arena_printf(p->c->arena, "hfx_arg%u", i)));
+        glsl_decl(p, p->out, f->params[i]->type, hfx_arena_printf(p->c->arena, "hfx_arg%u", i));
         sb_put(p->out, " = ");
         glsl_zero(p, f->params[i]->type);
         sb_put(p->out, ";\n");
@@ -355,7 +355,7 @@ static void print_main(gp *p) {
     for (int i = 0; i < nin; i++) feed_input(p, &in[i]);
     for (int i = 0; p->stage == IR_VERTEX && i < nin; i++) transpose_input(p, &in[i]);
     line_start(p);
-    if (f->ret && f->ret->kind != TY_VOID) sb_printf(p->out, "%s = ", glsl_decl(p, f->ret, "hfx_ret"));
+    if (f->ret && f->ret->kind != TY_VOID) { glsl_decl(p, p->out, f->ret, "hfx_ret"); sb_put(p->out, " = "); }
     sb_printf(p->out, "%s(", f->glsl);
     for (uint32_t i = 0; i < f->param_count; i++) sb_printf(p->out, "%shfx_arg%u", i ? ", " : "", i);
     sb_put(p->out, ");\n");
@@ -417,10 +417,12 @@ static void declare_globals(gp *p) {
         } else if (v->kind == IRV_SAMPLER) {
             sb_printf(p->out, "uniform %s %s;\n", v->dim == DIM_CUBE ? "samplerCube" : v->dim == DIM_3D ? "sampler3D" : "sampler2D", v->glsl);
         } else if (v->kind == IRV_UNIFORM) {
-            sb_printf(p->out, "uniform %s;\n", glsl_decl(p, v->type, v->glsl));
+            sb_put(p->out, "uniform ");
+            glsl_decl(p, p->out, v->type, v->glsl);
+            sb_put(p->out, ";\n");
         } else if (v->kind == IRV_PRIVATE) {
-            sb_printf(p->out, "%s;%s\n", glsl_decl(p, v->type, v->glsl),
-                      v->copy_of ? " // written by the shader: a private copy of the uniform" : "");
+            glsl_decl(p, p->out, v->type, v->glsl);
+            sb_put(p->out, v->copy_of ? "; // written by the shader: a private copy of the uniform\n" : ";\n");
         }
     }
 }

@@ -28,13 +28,23 @@ static const char *scalar_name(gp *p, hfx_base b) {
     }
 }
 
-static const char *vec_prefix(gp *p, hfx_base b) {
-    switch (b) {
-    case B_BOOL: return "b";
-    case B_INT: return "i";
-    case B_UINT: return p->legacy ? "i" : "u";
-    default: return "";
-    }
+/* Type names from tables: the printer asks for one per declaration and constructor. */
+static const char *vec_name(gp *p, hfx_base b, unsigned n) {
+    static const char *const names[4][5] = {
+        {"", "float", "vec2", "vec3", "vec4"},
+        {"", "bool", "bvec2", "bvec3", "bvec4"},
+        {"", "int", "ivec2", "ivec3", "ivec4"},
+        {"", "uint", "uvec2", "uvec3", "uvec4"},
+    };
+    int row = b == B_BOOL ? 1 : b == B_INT ? 2 : b == B_UINT ? (p->legacy ? 2 : 3) : 0;
+    return n <= 4 ? names[row][n] : "float";
+}
+
+static const char *mat_name(unsigned rows, unsigned cols) {
+    static const char *const names[3][3] = {
+        {"mat2", "mat2x3", "mat2x4"}, {"mat3x2", "mat3", "mat3x4"}, {"mat4x2", "mat4x3", "mat4"},
+    };
+    return rows >= 2 && rows <= 4 && cols >= 2 && cols <= 4 ? names[rows - 2][cols - 2] : "float";
 }
 
 static void add_struct(gp *p, const hfx_type *t) {
@@ -50,7 +60,9 @@ static void add_struct(gp *p, const hfx_type *t) {
     sb_printf(&p->structs_text, "struct %s\n{\n", glsl_type(p, t));
     for (uint32_t i = 0; i < t->st->field_count; i++) {
         const hfx_field *f = &t->st->fields[i];
-        sb_printf(&p->structs_text, "    %s;\n", glsl_decl(p, f->type, hfx_glsl_name(p->c->arena, f->name)));
+        sb_put(&p->structs_text, "    ");
+        glsl_decl(p, &p->structs_text, f->type, hfx_glsl_name(p->c->arena, f->name));
+        sb_put(&p->structs_text, ";\n");
     }
     sb_put(&p->structs_text, "};\n\n");
 }
@@ -60,14 +72,12 @@ const char *glsl_type(gp *p, const hfx_type *t) {
     switch (t->kind) {
     case TY_VOID: return "void";
     case TY_SCALAR: return scalar_name(p, t->base);
-    case TY_VECTOR:
-        return t->cols == 1 ? scalar_name(p, t->base) : hfx_arena_printf(a, "%svec%u", vec_prefix(p, t->base), t->cols);
+    case TY_VECTOR: return t->cols == 1 ? scalar_name(p, t->base) : vec_name(p, t->base, t->cols);
     case TY_MATRIX:
         if (t->rows == 1 && t->cols == 1) return scalar_name(p, t->base);
-        if (t->rows == 1 || t->cols == 1)
-            return hfx_arena_printf(a, "%svec%u", vec_prefix(p, t->base), t->rows * t->cols);
+        if (t->rows == 1 || t->cols == 1) return vec_name(p, t->base, t->rows * t->cols);
         if (t->rows != t->cols && p->legacy) p->nonsquare = true; /* reported once, by glsl_print */
-        return t->rows == t->cols ? hfx_arena_printf(a, "mat%u", t->rows) : hfx_arena_printf(a, "mat%ux%u", t->rows, t->cols);
+        return mat_name(t->rows, t->cols);
     case TY_ARRAY: return glsl_type(p, t->elem);
     case TY_STRUCT: {
         const char *name = t->st->name ? hfx_glsl_name(a, t->st->name)
@@ -95,20 +105,26 @@ const char *glsl_ctor_type(gp *p, const hfx_type *t) {
     return hfx_arena_printf(p->c->arena, "%s[%u]", glsl_ctor_type(p, t->elem), t->array_len);
 }
 
-const char *glsl_decl(gp *p, const hfx_type *t, const char *name) {
+void glsl_decl(gp *p, sbuf *out, const hfx_type *t, const char *name) {
     use_type(p, t);
-    if (t->kind != TY_ARRAY) return hfx_arena_printf(p->c->arena, "%s %s", glsl_type(p, t), name);
-    const char *dims = "";
     const hfx_type *e = t;
-    for (; e->kind == TY_ARRAY; e = e->elem) dims = hfx_arena_printf(p->c->arena, "%s[%u]", dims, e->array_len);
-    return hfx_arena_printf(p->c->arena, "%s %s%s", glsl_type(p, e), name, dims);
+    while (e->kind == TY_ARRAY) e = e->elem;
+    sb_put(out, glsl_type(p, e));
+    sb_putn(out, " ", 1);
+    sb_put(out, name);
+    for (e = t; e->kind == TY_ARRAY; e = e->elem) sb_printf(out, "[%u]", e->array_len);
 }
 
 static void put_float(gp *p, double v) {
     char buf[48];
     if (isnan(v)) { sb_put(p->out, "(0.0 / 0.0)"); return; }
     if (isinf(v)) { sb_put(p->out, v > 0 ? "3.40282347e+38" : "-3.40282347e+38"); return; }
-    snprintf(buf, sizeof buf, "%.9g", (double)(float)v);
+    float f = (float)v;
+    if (f == truncf(f) && fabsf(f) < 1e9f) { /* what %.9g prints for integers, without snprintf */
+        sb_printf(p->out, "%s%lld.0", signbit(f) && f == 0 ? "-" : "", (long long)f);
+        return;
+    }
+    snprintf(buf, sizeof buf, "%.9g", (double)f);
     if (!strpbrk(buf, ".e")) strcat(buf, ".0");
     sb_put(p->out, buf);
 }
@@ -516,7 +532,7 @@ static void print_convert(gp *p, const ir_expr *e, int max) {
         return;
     }
     if (strcmp(tty, fty) == 0) { glsl_expr(p, x, max); return; }
-    if (nt < nf && !glsl_is_matrix(from) && strcmp(vec_prefix(p, to->base), vec_prefix(p, from->base)) == 0) {
+    if (nt < nf && !glsl_is_matrix(from) && strcmp(scalar_name(p, to->base), scalar_name(p, from->base)) == 0) {
         glsl_expr(p, x, PREC_POSTFIX);
         sb_printf(p->out, ".%.*s", (int)nt, "xyzw");
         return;

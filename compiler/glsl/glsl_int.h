@@ -36,7 +36,7 @@ enum { PREC_PRIMARY = 1, PREC_POSTFIX, PREC_UNARY, PREC_MUL, PREC_ADD, PREC_SHIF
 
 const char *glsl_type(gp *p, const hfx_type *t);        /* "vec4", "mat3x4", "LuzSpot"; arrays: the element */
 const char *glsl_ctor_type(gp *p, const hfx_type *t);   /* arrays as "float[3]" */
-const char *glsl_decl(gp *p, const hfx_type *t, const char *name); /* "float a[3]" */
+void glsl_decl(gp *p, sbuf *out, const hfx_type *t, const char *name); /* appends "float a[3]" */
 bool glsl_is_matrix(const hfx_type *t);                 /* a matrix GLSL keeps as one (no 1xN / Nx1) */
 void glsl_zero(gp *p, const hfx_type *t);               /* a zero value of t */
 void glsl_expr(gp *p, const ir_expr *e, int max_prec);

@@ -28,8 +28,9 @@ void glsl_declare_regs(gp *p) {
 void glsl_declare_packed(gp *p, const ir_var *v, uint32_t reg) {
     const hfx_type *t = v->type;
     uint32_t n = t->kind == TY_MATRIX ? t->rows : 1;
-    if (n > 1) sb_printf(p->out, "%s; // %s[%u..%u]\n", glsl_decl(p, t, v->glsl), HFX_FX_REGS_NAME, reg, reg + n - 1);
-    else sb_printf(p->out, "%s; // %s[%u]\n", glsl_decl(p, t, v->glsl), HFX_FX_REGS_NAME, reg);
+    glsl_decl(p, p->out, t, v->glsl);
+    if (n > 1) sb_printf(p->out, "; // %s[%u..%u]\n", HFX_FX_REGS_NAME, reg, reg + n - 1);
+    else sb_printf(p->out, "; // %s[%u]\n", HFX_FX_REGS_NAME, reg);
 }
 
 /* Register r, narrowed to its first n components. */

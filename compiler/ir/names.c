@@ -44,10 +44,24 @@ static const char *const reserved[] = {
     "uvec3", "uvec4", "varying", "vec2", "vec3", "vec4", "void", "volatile", "while", "writeonly",
 };
 
-static int cmp(const void *a, const void *b) { return strcmp(*(const char *const *)a, *(const char *const *)b); }
+/* Binary search deciding on the first byte where it can: every declaration, field and struct
+ * name the printer writes comes here. */
+static bool is_reserved(const char *name) {
+    size_t lo = 0, hi = sizeof reserved / sizeof *reserved;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        const char *r = reserved[mid];
+        int c = (unsigned char)name[0] - (unsigned char)r[0];
+        if (c == 0) c = strcmp(name, r);
+        if (c == 0) return true;
+        if (c < 0) hi = mid;
+        else lo = mid + 1;
+    }
+    return false;
+}
 
 const char *hfx_glsl_name(hfx_arena *arena, const char *name) {
     int clash = strncmp(name, "gl_", 3) == 0 || strstr(name, "__") != NULL || strncmp(name, "hfx_", 4) == 0 ||
-                bsearch(&name, reserved, sizeof reserved / sizeof *reserved, sizeof *reserved, cmp) != NULL;
+                is_reserved(name);
     return clash ? hfx_arena_printf(arena, "hfx_%s", name) : name;
 }
