@@ -45,6 +45,11 @@ static void names_and_semantics(void) {
     expect("WorldViewProj", 0, wvp);
     expect("WvpXf", 0, wvp);
     expect("g_mWorldViewProjection", 0, wvp);
+    expect("xWorld", 0, w);            /* Riemer's XNA tutorials and the Apress recipes */
+    expect("xViewProjection", 0, vp);
+    expect("_world", 0, w);            /* DigitalRise's private-member style */
+    expect("_worldViewProj", 0, wvp);
+    expect("fxWVP", 0, wvp);
     hv_mat4_invert(inv, v);
     expect("ViewInverse", 1, inv);
     expect("ViewIXf", 0, inv);
@@ -58,6 +63,7 @@ static void names_and_semantics(void) {
     float m[16];
     CHECK(!hv_scene_matrix(&scene, "BoneMatrices", 0, m));
     CHECK(!hv_scene_matrix(&scene, "Worldly", 0, m));
+    CHECK(!hv_scene_matrix(&scene, "xworld", 0, m)); /* a lower-case x is part of the name */
     CHECK(!hv_scene_matrix(&scene, "", 1, m));
 }
 

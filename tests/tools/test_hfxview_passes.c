@@ -118,6 +118,29 @@ static void blend_passes_add(void) {
     view_png_free(&img);
 }
 
+/* Without --technique, the first technique that has a pass: the effect begins with an empty
+ * one, as an effect does that includes a file whose technique is commented out. */
+static void default_is_the_first_technique_that_draws(void) {
+    char *saved = fx;
+    fx = view_format("%s/empty_first.fx", tmp);
+    FILE *f = fopen(fx, "w");
+    fputs("float4x4 WorldViewProjection : WORLDVIEWPROJECTION;\n"
+          "float4 VS(float3 p : POSITION0) : POSITION0 { return mul(float4(p, 1), WorldViewProjection); }\n"
+          "float4 Green() : COLOR0 { return float4(0, 0.5, 0, 1); }\n"
+          "technique Empty { }\n"
+          "technique Draws { pass { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 Green(); } }\n", f);
+    fclose(f);
+    view_png img;
+    if (render("", &img)) CHECK(view_pixel_near(&img, 32, 32, 0, 128, 0, 1));
+    else CHECK(0);
+    view_png_free(&img);
+    if (render("--technique Empty", &img)) CHECK(view_pixel_near(&img, 32, 32, 0, 0, 0, 0)); /* asked for: nothing */
+    else CHECK(0);
+    view_png_free(&img);
+    free(fx);
+    fx = saved;
+}
+
 /* The same on EGL (a framebuffer object, front faces flipped by the runtime), when built. */
 static void egl_too(void) {
     view_png img;
@@ -145,6 +168,7 @@ int main(void) {
     RUN(culling_carries_over);
     RUN(a_pass_overrides_what_it_names);
     RUN(blend_passes_add);
+    RUN(default_is_the_first_technique_that_draws);
     RUN(egl_too);
     char *rm = view_format("rm -rf %s", tmp);
     view_run(rm, NULL);

@@ -180,6 +180,34 @@ static void passes(void) {
     free(out);
 }
 
+/* --mesh screen: the image's rectangle in pixels, for post-processing vertex shaders that map
+ * pixels to projection space themselves, here by a ViewportSize bound by name (DigitalRise's
+ * ScreenToProjection without its half-pixel step). The pixel shader shows the texture
+ * coordinate: D3D9 samples pixel (x, y) at integer coordinates, so pixel (8, 56) of a 64 x 64
+ * image reads uv (8/64, 56/64) = (0.125, 0.875) -> (32, 223); uv (0, 0) is the top left. */
+static void screen_mesh_and_viewport_size(void) {
+    char *path = view_format("%s/screen.fx", tmp);
+    FILE *f = fopen(path, "w");
+    fputs("float2 ViewportSize;\n"
+          "void VS(float4 p : POSITION, float2 uv : TEXCOORD0, out float4 o : POSITION, out float2 t : TEXCOORD0) {\n"
+          "  o = p; o.xy = p.xy / ViewportSize * float2(2, -2) - float2(1, -1); t = uv; }\n"
+          "float4 PS(float2 t : TEXCOORD0) : COLOR0 { return float4(t, 0, 1); }\n"
+          "technique T { pass { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n", f);
+    fclose(f);
+    view_png img;
+    char *args = view_format("%s --mesh screen --size 64x64", path);
+    if (render(args, "screen.png", &img)) {
+        CHECK(view_pixel_near(&img, 8, 56, 32, 223, 0, 2));
+        CHECK(view_pixel_near(&img, 1, 1, 4, 4, 0, 1)); /* covered to the corners (the edges */
+        CHECK(view_pixel_near(&img, 62, 62, 247, 247, 0, 1)); /* themselves cross pixel centres) */
+    } else {
+        CHECK(0);
+    }
+    view_png_free(&img);
+    free(args);
+    free(path);
+}
+
 static void exit_codes_and_messages(void) {
     char *out = NULL;
     CHECK_INT(hv(&out, ""), 2);
@@ -259,6 +287,7 @@ int main(void) {
     RUN(texture_from_a_png);
     RUN(obj_mesh_size_and_background);
     RUN(passes);
+    RUN(screen_mesh_and_viewport_size);
     RUN(exit_codes_and_messages);
     RUN(effect_errors);
     RUN(renders_hfxo);

@@ -37,13 +37,17 @@ static int ends_with(const char *s, const char *suffix) {
     return n > k && !strcmp(s + n - k, suffix);
 }
 
-/* "g_mWorldViewProj", "matWorld", "WorldITXf", "worldMatrix" -> "worldviewproj", "world",
- * "worldit", "world": the decorations of the DirectX SDK, NVIDIA and XNA samples. */
+/* "g_mWorldViewProj", "matWorld", "WorldITXf", "worldMatrix", "xWorld", "_world", "fxWVP" ->
+ * "worldviewproj", "world", "worldit", "world", "world", "world", "wvp": the decorations of the
+ * DirectX SDK, NVIDIA and XNA samples, Riemer's XNA tutorials (and the books after them), and
+ * engines that mark private members with an underscore. */
 static void matrix_stem(char *out, size_t cap, const char *name) {
+    while (*name == '_') name++;
     if (!strncmp(name, "g_", 2)) name += 2;
     if (!strncmp(name, "m_", 2)) name += 2;
     if (!strncmp(name, "mat", 3) && isupper((unsigned char)name[3])) name += 3;
-    else if (name[0] == 'm' && isupper((unsigned char)name[1])) name++;
+    else if (!strncmp(name, "fx", 2) && isupper((unsigned char)name[2])) name += 2;
+    else if ((name[0] == 'm' || name[0] == 'x') && isupper((unsigned char)name[1])) name++;
     lower_copy(out, cap, name);
     static const char *const suffixes[] = {"matrix", "mat", "xf", "_"};
     for (size_t i = 0; i < sizeof suffixes / sizeof suffixes[0]; i++)
@@ -306,6 +310,16 @@ static int bind_struct(hfx_param *p, const hv_scene *s) {
 
 /* ---- the whole effect -------------------------------------------------------------------- */
 
+/* SAS's ViewportPixelSize; DigitalRise's VIEWPORTSIZE semantic and ViewportSize name. */
+static int is_viewport_size(const char *lower) {
+    return !strcmp(lower, "viewportpixelsize") || !strcmp(lower, "viewportsize");
+}
+
+static int set_viewport_size(hfx_param *p, const hv_scene *s) {
+    float wh[2] = {(float)s->width, (float)s->height};
+    return set_vector(p, wh, 2, 0);
+}
+
 static int bind_one(hfx_param *p, const hv_scene *s) {
     float m[16], v = 0;
     const char *sem = hfx_param_semantic(p);
@@ -321,11 +335,11 @@ static int bind_one(hfx_param *p, const hv_scene *s) {
         lower_copy(low, sizeof low, sem);
         if (!strcmp(low, "cameraposition") || !strcmp(low, "viewposition") || !strcmp(low, "eyeposition"))
             return bind_role(p, R_CAMERA, 0, s);
-        if (!strcmp(low, "viewportpixelsize")) {
-            float wh[2] = {(float)s->width, (float)s->height};
-            return set_vector(p, wh, 2, 0);
-        }
+        if (is_viewport_size(low)) return set_viewport_size(p, s);
     }
+    char low_name[64];
+    lower_copy(low_name, sizeof low_name, hfx_param_name(p));
+    if (is_viewport_size(low_name)) return set_viewport_size(p, s);
     role r = role_of(hfx_param_name(p), &v);
     return bind_role(p, r, v, s);
 }

@@ -84,11 +84,21 @@ static void list_effect(hfx_effect *fx) {
     }
 }
 
+/* The first technique that draws something: an effect may include a file whose technique is
+ * empty (MagicCarpet's SkyDome.fx includes Common.fx's commented-out one), and a game would
+ * set CurrentTechnique to its own. */
+static hfx_technique *default_technique(hfx_effect *fx) {
+    size_t count = hfx_effect_technique_count(fx);
+    for (size_t i = 0; i < count; i++)
+        if (hfx_technique_pass_count(hfx_effect_technique_at(fx, i)) > 0) return hfx_effect_technique_at(fx, i);
+    return count ? hfx_effect_technique_at(fx, 0) : NULL;
+}
+
 static int pick_technique(viewer *v) {
     hfx_effect *fx = v->fx;
     size_t count = hfx_effect_technique_count(fx);
     const char *want = v->opt.technique;
-    if (!want) v->technique = count ? hfx_effect_technique_at(fx, 0) : NULL;
+    if (!want) v->technique = default_technique(fx);
     else if (!(v->technique = hfx_effect_technique(fx, want))) {
         char *end;
         unsigned long i = strtoul(want, &end, 10);
@@ -179,7 +189,11 @@ static int show_window(viewer *v) {
 
 static int run(viewer *v) {
     int rc;
-    if (hv_mesh_load(&v->mesh, v->opt.mesh, v->err, sizeof v->err) != 0) return input_error(v->err);
+    if (!strcmp(v->opt.mesh, "screen")) {
+        if (hv_mesh_screen(&v->mesh, v->opt.width, v->opt.height) != 0) return input_error("out of memory building the screen mesh");
+    } else if (hv_mesh_load(&v->mesh, v->opt.mesh, v->err, sizeof v->err) != 0) {
+        return input_error(v->err);
+    }
     int kind = v->opt.window ? HV_CONTEXT_WINDOW : v->opt.egl ? HV_CONTEXT_EGL : HV_CONTEXT_OSMESA;
     v->ctx = hv_context_create(v->opt.width, v->opt.height, kind, v->err, sizeof v->err);
     if (v->err[0]) fprintf(stderr, "hfxview: %s\n", v->err);

@@ -292,3 +292,22 @@ int hv_mesh_load(hv_mesh *m, const char *spec, char *err, size_t errlen) {
         }
     return hv_mesh_load_obj(m, spec, err, errlen);
 }
+
+/* Two triangles covering a width x height image in pixels, x right and y down from the top-left
+ * corner, z 0, uv 0..1 with v = 0 at the top (Direct3D's convention), clockwise on screen: the
+ * input of post-processing vertex shaders that divide by the viewport size (DigitalRise's
+ * ScreenToProjection). Not fitted to the unit sphere: the positions are the point. */
+int hv_mesh_screen(hv_mesh *m, int width, int height) {
+    memset(m, 0, sizeof *m);
+    const float w = (float)width, h = (float)height, n[3] = {0, 0, -1};
+    const float pos[4][3] = {{0, 0, 0}, {w, 0, 0}, {w, h, 0}, {0, h, 0}}, uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    uint32_t idx[4];
+    for (int i = 0; i < 4; i++) idx[i] = hv_mesh_add_vertex(m, pos[i], n, uv[i]);
+    hv_mesh_add_triangle(m, idx[0], idx[1], idx[2]);
+    hv_mesh_add_triangle(m, idx[0], idx[2], idx[3]);
+    for (size_t i = 0; i < m->vcount && !m->oom; i++) {
+        m->v[i].tangent[0] = 1;
+        m->v[i].binormal[1] = 1;
+    }
+    return m->oom ? -1 : 0;
+}

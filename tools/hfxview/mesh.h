@@ -30,6 +30,7 @@ extern const char *const hv_mesh_names[];
 int hv_mesh_builtin(hv_mesh *m, const char *name);                           /* 0, or -1 if unknown */
 int hv_mesh_load_obj(hv_mesh *m, const char *path, char *err, size_t errlen); /* 0, or -1 with err */
 int hv_mesh_load(hv_mesh *m, const char *spec, char *err, size_t errlen);     /* a built-in name or an .obj path */
+int hv_mesh_screen(hv_mesh *m, int width, int height); /* "screen": the image's rectangle in pixels; 0 or -1 */
 void hv_mesh_free(hv_mesh *m);
 
 /* Building blocks, shared by the shapes and the OBJ reader. */
