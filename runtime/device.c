@@ -14,6 +14,11 @@ const char *hfx_gl_load(hfx_gl *gl, hfx_gl_loader load) {
     HFX_GL_FUNCS(HFX_GL_V_, HFX_GL_R_)
 #undef HFX_GL_V_
 #undef HFX_GL_R_
+#define HFX_GL_V_(name, params, args) *(void **)&gl->name = load("gl" #name);
+#define HFX_GL_R_(ret, name, params, args) HFX_GL_V_(name, params, args)
+    HFX_GL_OPTIONAL_FUNCS(HFX_GL_V_, HFX_GL_R_)
+#undef HFX_GL_V_
+#undef HFX_GL_R_
     return NULL;
 }
 
@@ -157,6 +162,7 @@ void hfx_device_destroy(hfx_device *dev) {
     if (!dev) return;
     hfx_rt_textures_free(dev);
     free(dev->scratch);
+    free(dev->program_cache);
     free(dev);
 }
 

@@ -90,6 +90,14 @@
     V(SampleMaski, (GLuint index, GLbitfield mask), (index, mask)) \
     V(Viewport, (GLint x, GLint y, GLsizei width, GLsizei height), (x, y, width, height))
 
+/* Entry points hfx uses when the driver has them (GL 4.1 / ARB_get_program_binary): NULL
+ * otherwise, and the feature that needs them is off. */
+#define HFX_GL_OPTIONAL_FUNCS(V, R) \
+    V(ProgramParameteri, (GLuint program, GLenum pname, GLint value), (program, pname, value)) \
+    V(GetProgramBinary, (GLuint program, GLsizei size, GLsizei *length, GLenum *format, void *binary), \
+      (program, size, length, format, binary)) \
+    V(ProgramBinary, (GLuint program, GLenum format, const void *binary, GLsizei length), (program, format, binary, length))
+
 #ifndef APIENTRYP
 #define APIENTRYP APIENTRY *
 #endif
@@ -98,11 +106,13 @@ typedef struct hfx_gl {
 #define HFX_GL_V_(name, params, args) void(APIENTRYP name) params;
 #define HFX_GL_R_(ret, name, params, args) ret(APIENTRYP name) params;
     HFX_GL_FUNCS(HFX_GL_V_, HFX_GL_R_)
+    HFX_GL_OPTIONAL_FUNCS(HFX_GL_V_, HFX_GL_R_)
 #undef HFX_GL_V_
 #undef HFX_GL_R_
 } hfx_gl;
 
-/* Fills the table; returns NULL, or the name of the first entry point the loader lacks. */
+/* Fills the table; returns NULL, or the name of the first required entry point the loader
+ * lacks (optional ones stay NULL). */
 const char *hfx_gl_load(hfx_gl *gl, hfx_gl_loader load);
 
 #endif

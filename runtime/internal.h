@@ -94,6 +94,7 @@ struct hfx_device {
     float *scratch;                /* for uploads that convert int <-> float */
     size_t scratch_size;
     hfx_texture_set checked;       /* textures whose mip levels texture.c has made complete */
+    char *program_cache;           /* hfx_device_set_program_cache's folder, or NULL */
 };
 
 /* D3D9's sampler state for one sampler stage. */
@@ -328,6 +329,12 @@ void hfx_rt_save_units(hfx_device *dev, hfx_saved *s, uint32_t mask);
 int hfx_rt_program_build(hfx_shared *sh, uint32_t index, hfx_target target);
 /* Links vs + fs into p->object (fp's attribute locations bound first; NULL for SPIR-V). */
 int hfx_rt_program_link(hfx_shared *sh, hfx_rt_program *p, const hfx_fx_program *fp, GLuint vs, GLuint fs);
+/* program_cache.c: link through the device's program cache when it has one (a hit loads the
+ * driver's binary; a miss calls link and stores the result); hint before glLinkProgram. */
+int hfx_rt_program_cached_link(hfx_shared *sh, hfx_rt_program *p, const hfx_fx_program *fp, const char *vs_src,
+                               const char *fs_src, int (*link)(hfx_shared *, hfx_rt_program *, const hfx_fx_program *,
+                                                               const char *, const char *));
+void hfx_rt_program_binary_hint(hfx_device *dev, GLuint program);
 void hfx_rt_program_free(hfx_device *dev, hfx_rt_program *p);
 void hfx_rt_upload_all(hfx_effect *fx, hfx_rt_program *p);
 void hfx_rt_upload_slow(hfx_device *dev, const hfx_upload *up, const uint32_t *values);

@@ -53,6 +53,7 @@ int hfx_rt_program_link(hfx_shared *sh, hfx_rt_program *p, const hfx_fx_program 
     for (uint32_t a = 0; fp && a < fp->attribute_count; a++)
         if (fp->attributes[a].glsl_name && fp->attributes[a].location >= 0)
             gl->BindAttribLocation(p->object, (GLuint)fp->attributes[a].location, fp->attributes[a].glsl_name);
+    hfx_rt_program_binary_hint(sh->dev, p->object);
     gl->LinkProgram(p->object);
     gl->DetachShader(p->object, vs);
     gl->DetachShader(p->object, fs);
@@ -317,6 +318,17 @@ static void set_sampler_units(hfx_shared *sh, hfx_rt_program *p, const hfx_fx_pr
     gl->UseProgram((GLuint)current);
 }
 
+/* Both stages compiled from GLSL and linked into p->object. */
+static int link_sources(hfx_shared *sh, hfx_rt_program *p, const hfx_fx_program *fp, const char *vs_src,
+                        const char *fs_src) {
+    GLuint vs = compile_stage(sh, GL_VERTEX_SHADER, vs_src, "vertex");
+    GLuint fs = vs ? compile_stage(sh, GL_FRAGMENT_SHADER, fs_src, "fragment") : 0;
+    int rc = vs && fs ? hfx_rt_program_link(sh, p, fp, vs, fs) : HFX_ERR_GL;
+    if (vs) sh->dev->gl.DeleteShader(vs);
+    if (fs) sh->dev->gl.DeleteShader(fs);
+    return rc;
+}
+
 int hfx_rt_program_build(hfx_shared *sh, uint32_t index, hfx_target target) {
     const hfx_fx_program *fp = &sh->fx->programs[index];
     hfx_rt_program *p = &sh->programs[index];
@@ -325,11 +337,7 @@ int hfx_rt_program_build(hfx_shared *sh, uint32_t index, hfx_target target) {
     if (!vs_src || !fs_src)
         return hfx_rt_fail(sh->dev, HFX_ERR_LOAD, "%s: program %u has no code for the requested GLSL target",
                            sh->fx->source_name ? sh->fx->source_name : "effect", (unsigned)index);
-    GLuint vs = compile_stage(sh, GL_VERTEX_SHADER, vs_src, "vertex");
-    GLuint fs = vs ? compile_stage(sh, GL_FRAGMENT_SHADER, fs_src, "fragment") : 0;
-    int rc = vs && fs ? hfx_rt_program_link(sh, p, fp, vs, fs) : HFX_ERR_GL;
-    if (vs) sh->dev->gl.DeleteShader(vs);
-    if (fs) sh->dev->gl.DeleteShader(fs);
+    int rc = hfx_rt_program_cached_link(sh, p, fp, vs_src, fs_src, link_sources);
     if (rc) return rc;
     build b = {sh, p, NULL, 0, 0};
     rc = read_active(&b);

@@ -67,6 +67,10 @@ const char *hfx_device_last_error(const hfx_device *dev);        /* message of t
 /* glViewport, remembered for D3D9's pixel centres (hfx_pos_fixup); hfx_effect_begin also reads it. */
 void hfx_device_set_viewport(hfx_device *dev, int x, int y, int width, int height);
 void hfx_device_sync(hfx_device *dev);  /* re-read GL state the application changed behind hfx's back */
+/* Keeps linked programs' driver binaries in folder dir (which must exist) and reads them back on
+ * later loads, skipping GLSL compilation; NULL turns it off. Entries are checked (driver, hash,
+ * CRC) and rebuilt when they do not match. Without GL_ARB_get_program_binary it does nothing. */
+int hfx_device_set_program_cache(hfx_device *dev, const char *dir);
 /* A texture hfx has bound got new mip levels, or its name a new texture: check its levels at the next bind. */
 void hfx_device_texture_changed(hfx_device *dev, unsigned int texture);
 void hfx_free(void *p);                                          /* frees strings hfx hands out */
