@@ -238,6 +238,9 @@ int hfx_effect_begin(hfx_effect *fx) {
     s->program = (GLint)dev->program;
     s->active_unit = (GLint)dev->active_unit;
     hfx_rt_save_units(dev, s, fx->sh->unit_mask);
+    s->alpha_test[0] = dev->rs[HFX_ST_ALPHATESTENABLE];
+    s->alpha_test[1] = dev->rs[HFX_ST_ALPHAFUNC];
+    s->alpha_test[2] = dev->rs[HFX_ST_ALPHAREF];
     s->active = 1;
     return HFX_OK;
 }
@@ -260,6 +263,11 @@ int hfx_effect_end(hfx_effect *fx) {
     }
     dev->gl.ActiveTexture((GLenum)s->active_unit);
     dev->active_unit = (GLenum)s->active_unit;
+    /* D3DX's End restores the states the passes set; GL's are restored above, the alpha test
+     * lives in hfx's shadow and reaches the shaders at the next Apply */
+    dev->rs[HFX_ST_ALPHATESTENABLE] = s->alpha_test[0];
+    dev->rs[HFX_ST_ALPHAFUNC] = s->alpha_test[1];
+    dev->rs[HFX_ST_ALPHAREF] = s->alpha_test[2];
     s->active = 0;
     return HFX_OK;
 }

@@ -272,6 +272,7 @@ typedef struct hfx_saved {
     hfx_glstate state;
     GLint program, active_unit;
     struct { GLint tex[4], sampler; } units[HFX_MAX_UNITS]; /* 1D, 2D, 3D, cube */
+    hfx_rs_value alpha_test[3]; /* AlphaTestEnable, AlphaFunc, AlphaRef: D3D states GL does not hold */
 } hfx_saved;
 
 struct hfx_effect {

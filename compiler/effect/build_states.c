@@ -290,6 +290,31 @@ static bool same_compile(hfx_builder *b, const hfx_expr *x, const hfx_expr *y) {
 
 static bool same_compile_cb(void *b, const hfx_expr *x, const hfx_expr *y) { return same_compile(b, x, y); }
 
+/* Does a pass enable D3D9's alpha test (AlphaTestEnable = anything but a constant false)? Render
+ * states are set only by passes (and stay set for the next), so when none does, no program
+ * needs the test's code, and an effect that never uses it never pays for it. */
+static bool pass_enables_alpha_test(hfx_builder *b, const hfx_pass_ast *pass) {
+    for (uint32_t i = 0; i < pass->state_count; i++) {
+        const hfx_state_assign *s = &pass->states[i];
+        if (strcasecmp(s->name, "AlphaTestEnable") != 0 || !s->value) continue;
+        hfx_cvec v = {0};
+        bool off = hfx_build_eval(b, s->value, &v, hfx_state_lookup(s->name)) && v.n >= 1 && v.v[0] == 0;
+        hfx_cvec_free(&v);
+        if (!off) return true;
+    }
+    return false;
+}
+
+static bool effect_enables_alpha_test(hfx_builder *b) {
+    for (uint32_t i = 0; i < b->ast->decl_count; i++) {
+        const hfx_decl *d = b->ast->decls[i];
+        if (d->kind != DECL_TECHNIQUE || !d->technique) continue;
+        for (uint32_t k = 0; k < d->technique->pass_count; k++)
+            if (pass_enables_alpha_test(b, &d->technique->passes[k])) return true;
+    }
+    return false;
+}
+
 /* The program for a (vs, ps) pair: an earlier identical one, or a new one from the codegen. */
 static uint32_t program_for(hfx_builder *b, const hfx_expr *vs, const hfx_expr *ps, bool flat, hfx_loc loc) {
     hfx_fx_effect *fx = b->fx;
@@ -299,6 +324,7 @@ static uint32_t program_for(hfx_builder *b, const hfx_expr *vs, const hfx_expr *
         b->cg = hfx_codegen_new(b->arena, b->diags, b->types, b->ast, fx, b->targets,
                                 (b->diags->flags & HFXC_PACK_UNIFORMS) != 0, /* the diags carry hfxc_options.flags */
                                 same_compile_cb, b);
+    if (b->cg) hfx_codegen_set_alpha_test(b->cg, effect_enables_alpha_test(b));
     if (!b->cg) {
         hfx_error(b->diags, loc, X_UNSUPPORTED, "the code generator could not start");
         return HFX_NONE;

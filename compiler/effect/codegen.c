@@ -24,7 +24,10 @@ struct hfx_codegen {
     void *same_ctx;
     built_stage *built;
     uint32_t built_count, built_cap;
+    bool alpha_test;
 };
+
+void hfx_codegen_set_alpha_test(hfx_codegen *cg, bool on) { cg->alpha_test = on; }
 
 hfx_codegen *hfx_codegen_new(hfx_arena *arena, hfx_diags *diags, hfx_types *types, hfx_ast *ast,
                              hfx_fx_effect *fx, unsigned targets, bool pack, hfx_same_compile_fn same, void *same_ctx) {
@@ -282,6 +285,7 @@ int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps,
     io.uniforms = out->uniforms;
     io.uniform_count = out->uniform_count;
     io.reg_count = out->reg_count;
+    io.alpha_test = cg->alpha_test;
     for (int t = 0; t < HFX_TARGET_COUNT; t++) {
         if (!(cg->targets & (1u << t)) || t == HFX_TARGET_SPIRV) continue;
         for (int s = 0; s < 2; s++) {
@@ -292,7 +296,7 @@ int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps,
             out->code[s][t].size = strlen(text);
         }
     }
-    if (writes_color0(cg, sh[1])) out->flags |= HFX_FX_PROGRAM_ALPHA_TEST;
+    if (cg->alpha_test && writes_color0(cg, sh[1])) out->flags |= HFX_FX_PROGRAM_ALPHA_TEST;
     return 0;
 oom:
     hfx_error(cg->c.diags, vs ? vs->loc : ps ? ps->loc : (hfx_loc){0, 0, 0}, X_UNSUPPORTED, "out of memory");

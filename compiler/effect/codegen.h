@@ -19,6 +19,8 @@ typedef bool (*hfx_same_compile_fn)(void *ctx, const hfx_expr *x, const hfx_expr
  * lowered once per distinct compile expression and shared by every program that uses them. */
 hfx_codegen *hfx_codegen_new(hfx_arena *arena, hfx_diags *diags, hfx_types *types, hfx_ast *ast,
                              hfx_fx_effect *fx, unsigned targets, bool pack, hfx_same_compile_fn same, void *same_ctx);
+/* Some pass of the effect enables the alpha test: pixel shaders writing COLOR0 carry it. */
+void hfx_codegen_set_alpha_test(hfx_codegen *cg, bool on);
 /* vs, ps: the pass's VertexShader / PixelShader values (EX_COMPILE; NULL when not set).
  * Fills *out (malloc'ed members, freed with the effect); may set fx->samplers[i].dim.
  * Returns 0, or -1 with errors in diags. */

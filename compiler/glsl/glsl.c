@@ -234,7 +234,7 @@ static void declare_interface(gp *p) {
                 p->outv[i].semantic[5] <= '3' && !p->outv[i].semantic[6])
                 color[p->outv[i].semantic[5] - '0'] = true;
         if (vpos || p->uses_fixup) sb_put(p->out, "uniform vec4 hfx_pos_fixup;\n");
-        sb_put(p->out, "uniform int hfx_alpha_func;\nuniform float hfx_alpha_ref;\n");
+        if (p->io->alpha_test) sb_put(p->out, "uniform int hfx_alpha_func;\nuniform float hfx_alpha_ref;\n");
         for (int i = 0; i < 4 && modern; i++)
             if (color[i]) sb_printf(p->out, "layout(location = %d) out vec4 hfx_o_COLOR%d;\n", i, i);
     }
@@ -320,6 +320,7 @@ static void init_privates(gp *p) {
 }
 
 static void alpha_test(gp *p, const char *color) {
+    if (!p->io->alpha_test) return; /* no pass of the effect turns it on: no code, no cost */
     /* D3DCMPFUNC in hfx_alpha_func (0 or ALWAYS: off); reference in 0..1 */
     if (glsl_helper(p, "alpha"))
         sb_put(&p->helpers,

@@ -13,6 +13,7 @@ typedef struct glsl_iface {
     bool clamp_vs_colors;    /* vs_1_1 / vs_2_x COLOR outputs saturate as D3D9's oD0/oD1 */
     const hfx_fx_uniform_use *uniforms; uint32_t uniform_count; /* the program's, with their registers */
     uint32_t reg_count;      /* HFXC_PACK_UNIFORMS: size of hfx_c in both stages (0: nothing packed) */
+    bool alpha_test;         /* some pass of the effect enables D3D9's alpha test: COLOR0 carries it */
 } glsl_iface;
 
 /* Prints one stage for one target (sh NULL: the fixed-function stand-in); malloc'ed text,

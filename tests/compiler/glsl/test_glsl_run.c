@@ -337,10 +337,13 @@ static void pos_fixup_gives_d3d9_centres(void) {
     CHECK_NEAR(px[3], 7.0 / 8, TOL);
 }
 
-/* D3D9's alpha test, carried by the pixel shader: GREATER (5) against 0.5 keeps alpha 0.75
- * and discards alpha 0.25; function 0 (unset) keeps everything. */
+/* D3D9's alpha test, carried by the pixel shader of an effect whose pass turns it on: GREATER
+ * (5) against 0.5 keeps alpha 0.75 and discards alpha 0.25; function 0 (unset) keeps
+ * everything. */
 static void alpha_test_in_shader(void) {
-    const char *src = "float a;\n" VS_PASS "float4 ps() : COLOR { return float4(1, 1, 1, a); }\n" TECH("ps()");
+    const char *src = "float a;\n" VS_PASS "float4 ps() : COLOR { return float4(1, 1, 1, a); }\n"
+                      "technique T { pass P { AlphaTestEnable = TRUE;\n"
+                      "    VertexShader = compile vs_3_0 vs(); PixelShader = compile ps_3_0 ps(); } }\n";
     const uval keep[] = { {"a", 'f', 1, {0.75f}, {0}}, {"hfx_alpha_func", 'i', 1, {0}, {5}}, {"hfx_alpha_ref", 'f', 1, {0.5f}, {0}} };
     const uval drop[] = { {"a", 'f', 1, {0.25f}, {0}}, {"hfx_alpha_func", 'i', 1, {0}, {5}}, {"hfx_alpha_ref", 'f', 1, {0.5f}, {0}} };
     const uval off[] = { {"a", 'f', 1, {0.25f}, {0}} };

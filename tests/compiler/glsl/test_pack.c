@@ -176,6 +176,7 @@ static void off_by_default(void) {
     hfxc_result_free(r);
 }
 
+/* No pass turns the alpha test on: the pixel shader carries none of its code. */
 static const char small_fx[] =
     "float4 Tint;\nfloat Gain;\nfloat3x3 M;\nint N;\n"
     "float4 PS(float4 c : COLOR0) : COLOR0 { return float4(mul(c.rgb, M), 1) * Tint * Gain + N; }\n"
@@ -191,22 +192,7 @@ static const char small_frag[] =
     "float Gain; // hfx_c[1]\n"
     "uniform int N;\n"
     "in vec4 hfx_v_COLOR0;\n"
-    "uniform int hfx_alpha_func;\n"
-    "uniform float hfx_alpha_ref;\n"
     "layout(location = 0) out vec4 hfx_o_COLOR0;\n"
-    "\n"
-    "bool hfx_alpha_pass(float a)\n"
-    "{\n"
-    "    float r = hfx_alpha_ref;\n"
-    "    if (hfx_alpha_func == 1) return false;\n"
-    "    if (hfx_alpha_func == 2) return a < r;\n"
-    "    if (hfx_alpha_func == 3) return a == r;\n"
-    "    if (hfx_alpha_func == 4) return a <= r;\n"
-    "    if (hfx_alpha_func == 5) return a > r;\n"
-    "    if (hfx_alpha_func == 6) return a != r;\n"
-    "    if (hfx_alpha_func == 7) return a >= r;\n"
-    "    return true;\n"
-    "}\n"
     "\n"
     "// PS (entry point)\n"
     "vec4 PS(vec4 c)\n"
@@ -223,7 +209,6 @@ static const char small_frag[] =
     "    hfx_arg0 = hfx_v_COLOR0;\n"
     "    vec4 hfx_ret = PS(hfx_arg0);\n"
     "    hfx_o_COLOR0 = hfx_ret;\n"
-    "    if (!hfx_alpha_pass(hfx_o_COLOR0.a)) discard;\n"
     "}\n";
 
 static void exact_small_stage(void) {
