@@ -1,0 +1,395 @@
+/* bench_gpu.c: what the shaders hfx emits cost on the GPU, against hand-written GLSL for the same
+ * equations (matrices multiplied on the CPU, uniform-only maths on the CPU, no emulation), in the
+ * same OSMesa context, alternating, best of `rounds`:
+ *   pixel-bound:  a plane filling a 2048 x 2048 target (two triangles);
+ *   vertex-bound: the same plane as a 1001 x 1001 grid (2 M triangles) at 256 x 256.
+ * Each case also compares the two pictures (largest channel difference, /255): a ratio only
+ * counts when they agree (BENCH_GPU_PNG=1 writes the last pair to /tmp). Prints frame times and
+ * the ratio hfx / hand-written. Covered so far:
+ * ambient.fx, point_specular.fx and spot_specular.fx (both techniques; specular and distance
+ * attenuation on). Run by hand: bench_gpu [rounds]. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bench.h"
+#include "files.h"
+#include "gl_context.h"
+#include "gl_fns.h"
+#include "hfx/hfx.h"
+
+enum { BIG = 2048, SMALL = 256, GRID = 1001 };
+
+static test_gl *gl;
+static test_gl_fns f;
+static PFNGLDRAWELEMENTSPROC draw_elements;
+
+/* ---- the scene: a plane at z = 0 seen from (0, 0, 1.5), 90 degrees, light in front ---- */
+
+typedef struct scene { float world[16], view[16], proj[16], eye[3], light[3], target[3]; } scene;
+
+static void identity(float m[16]) {
+    memset(m, 0, 16 * sizeof *m);
+    m[0] = m[5] = m[10] = m[15] = 1;
+}
+
+/* XNA's conventions: row vectors, row-major, translation in 12..14; right-handed. */
+static void look_at(float m[16], const float eye[3]) {
+    identity(m);
+    m[12] = -eye[0];
+    m[13] = -eye[1];
+    m[14] = -eye[2];
+}
+
+static void perspective(float m[16], float fov, float zn, float zf) {
+    float ys = 1.0f / tanf(fov / 2);
+    memset(m, 0, 16 * sizeof *m);
+    m[0] = ys;
+    m[5] = ys;
+    m[10] = zf / (zn - zf); /* D3D depth 0..1 */
+    m[11] = -1;
+    m[14] = zn * zf / (zn - zf);
+}
+
+static void mul4(float out[16], const float a[16], const float b[16]) {
+    float r[16];
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) {
+            float s = 0;
+            for (int k = 0; k < 4; k++) s += a[i * 4 + k] * b[k * 4 + j];
+            r[i * 4 + j] = s;
+        }
+    memcpy(out, r, sizeof r);
+}
+
+static scene make_scene(void) {
+    scene s;
+    identity(s.world);
+    s.eye[0] = 0, s.eye[1] = 0, s.eye[2] = 1.5f;
+    look_at(s.view, s.eye);
+    perspective(s.proj, 3.14159265f / 2, 0.1f, 100.0f);
+    s.light[0] = 0.4f, s.light[1] = 0.3f, s.light[2] = 1.2f;
+    s.target[0] = 0, s.target[1] = 0, s.target[2] = 0;
+    return s;
+}
+
+/* ---- meshes: position (3), normal (3), uv (2) ---- */
+
+typedef struct mesh { GLuint vbo, ibo; GLsizei count; } mesh;
+
+static mesh make_grid(int n, float half) {
+    float *v = malloc((size_t)n * n * 8 * sizeof *v);
+    GLuint *idx = malloc((size_t)(n - 1) * (n - 1) * 6 * sizeof *idx);
+    for (int y = 0; y < n; y++)
+        for (int x = 0; x < n; x++) {
+            float *p = v + ((size_t)y * n + x) * 8, u = (float)x / (float)(n - 1), t = (float)y / (float)(n - 1);
+            p[0] = -half + 2 * half * u, p[1] = half - 2 * half * t, p[2] = 0;
+            p[3] = 0, p[4] = 0, p[5] = 1;
+            p[6] = u * 8, p[7] = t * 8;
+        }
+    size_t k = 0;
+    for (int y = 0; y + 1 < n; y++)
+        for (int x = 0; x + 1 < n; x++) { /* clockwise seen from +z: D3D's front faces */
+            GLuint a = (GLuint)(y * n + x), b = a + 1, c = a + (GLuint)n, d = c + 1;
+            idx[k++] = a, idx[k++] = b, idx[k++] = c, idx[k++] = b, idx[k++] = d, idx[k++] = c;
+        }
+    mesh m = {0, 0, (GLsizei)k};
+    f.GenBuffers(1, &m.vbo);
+    f.BindBuffer(GL_ARRAY_BUFFER, m.vbo);
+    f.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)((size_t)n * n * 8 * sizeof *v), v, GL_STATIC_DRAW);
+    f.GenBuffers(1, &m.ibo);
+    f.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, m.ibo);
+    f.BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)(k * sizeof *idx), idx, GL_STATIC_DRAW);
+    free(v);
+    free(idx);
+    return m;
+}
+
+/* A vertex array over m with position, normal and uv at the given locations (-1: unused). */
+static GLuint bind_mesh(const mesh *m, int pos, int normal, int uv) {
+    GLuint vao;
+    f.GenVertexArrays(1, &vao);
+    f.BindVertexArray(vao);
+    f.BindBuffer(GL_ARRAY_BUFFER, m->vbo);
+    f.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, m->ibo);
+    const int loc[3] = {pos, normal, uv}, size[3] = {3, 3, 2}, offset[3] = {0, 3, 6};
+    for (int i = 0; i < 3; i++) {
+        if (loc[i] < 0) continue;
+        f.VertexAttribPointer((GLuint)loc[i], size[i], GL_FLOAT, GL_FALSE, 8 * sizeof(float),
+                              (void *)(size_t)(offset[i] * sizeof(float)));
+        f.EnableVertexAttribArray((GLuint)loc[i]);
+    }
+    return vao;
+}
+
+static GLuint make_texture(void) {
+    enum { T = 256 };
+    unsigned char *px = malloc(T * T * 4);
+    for (int y = 0; y < T; y++)
+        for (int x = 0; x < T; x++) {
+            unsigned char *p = px + (y * T + x) * 4, c = ((x / 32) ^ (y / 32)) & 1 ? 230 : 60;
+            p[0] = c, p[1] = (unsigned char)(x * 255 / T), p[2] = (unsigned char)(y * 255 / T), p[3] = 255;
+        }
+    GLuint t;
+    f.GenTextures(1, &t);
+    f.BindTexture(GL_TEXTURE_2D, t);
+    f.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, T, T, 0, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    f.GenerateMipmap(GL_TEXTURE_2D);
+    f.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR); /* the seeds' sampler_state */
+    f.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    f.BindTexture(GL_TEXTURE_2D, 0);
+    free(px);
+    return t;
+}
+
+/* ---- the hand-written programs ---- */
+
+static const char hand_vs[] =
+    "#version 330 core\n"
+    "layout(location = 0) in vec3 pos;\nlayout(location = 1) in vec3 normal;\nlayout(location = 2) in vec2 uv;\n"
+    "uniform mat4 mvp, world;\n"
+    "out vec3 wp, wn;\nout vec2 tc;\n"
+    "void main() {\n"
+    "  gl_Position = mvp * vec4(pos, 1.0);\n"
+    "  wp = (world * vec4(pos, 1.0)).xyz;\n  wn = (world * vec4(normal, 0.0)).xyz;\n  tc = uv;\n}\n";
+
+static const char hand_ambient_vs[] =
+    "#version 330 core\nlayout(location = 0) in vec3 pos;\nuniform mat4 mvp;\n"
+    "void main() { gl_Position = mvp * vec4(pos, 1.0); }\n";
+
+static const char hand_ambient_fs[] =
+    "#version 330 core\nuniform vec4 ambient;\nout vec4 o;\nvoid main() { o = ambient; }\n";
+
+/* 003's point and spot lights, specular (Código 7-7) and distance attenuation on; SPOT adds the
+ * cone with its cosines computed on the CPU; TEXTURED multiplies the texture in. */
+static const char hand_light_fs[] =
+    "in vec3 wp, wn;\nin vec2 tc;\n"
+    "uniform vec3 light, cam, spot_dir, atten;\n"
+    "uniform vec4 diffuse, ambient, specular;\n"
+    "uniform float ks, shininess, range, cos_inner, cos_outer, falloff;\n"
+    "uniform sampler2D tex;\n"
+    "out vec4 o;\n"
+    "void main() {\n"
+    "  vec3 l = normalize(light - wp);\n"
+    "  float d = max(dot(l, wn), 0.0);\n"
+    "  vec4 c = diffuse * d;\n"
+    "  vec3 r = normalize(2.0 * wn * d - l);\n"
+    "  c += ks * pow(max(dot(r, normalize(cam - wp)), 0.0), shininess) * specular * d;\n"
+    "#ifdef SPOT\n"
+    "  float ca = max(dot(spot_dir, l), 0.0);\n"
+    "  if (ca < cos_inner && ca > cos_outer) c *= pow((ca - cos_outer) / (cos_inner - cos_outer), falloff);\n"
+    "  else if (ca <= cos_outer) c = vec4(0.0);\n"
+    "#endif\n"
+    "  float dist = distance(wp, light);\n"
+    "  c *= dist <= range ? min(1.0 / (atten.x + atten.y * dist + atten.z * dist * dist), 1.0) : 0.0;\n"
+    "  c += ambient;\n"
+    "#ifdef TEXTURED\n"
+    "  c *= texture(tex, tc);\n"
+    "#endif\n"
+    "  o = vec4(c.rgb, 1.0);\n"
+    "}\n";
+
+static GLuint compile(GLenum type, const char *const *parts, int n) {
+    GLuint s = f.CreateShader(type);
+    f.ShaderSource(s, n, parts, NULL);
+    f.CompileShader(s);
+    GLint ok = 0;
+    f.GetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        char log[1024];
+        f.GetShaderInfoLog(s, sizeof log, NULL, log);
+        fprintf(stderr, "hand-written shader: %s\n", log);
+    }
+    return s;
+}
+
+static GLuint hand_program(const char *vs, const char *fs, const char *defines) {
+    const char *vparts[] = {vs}, *fparts[] = {"#version 330 core\n", defines, fs};
+    GLuint v = compile(GL_VERTEX_SHADER, vparts, 1), p = f.CreateProgram();
+    GLuint s = compile(GL_FRAGMENT_SHADER, fs == hand_ambient_fs ? (const char *[]){fs} : fparts, fs == hand_ambient_fs ? 1 : 3);
+    f.AttachShader(p, v);
+    f.AttachShader(p, s);
+    f.LinkProgram(p);
+    f.DeleteShader(v);
+    f.DeleteShader(s);
+    return p;
+}
+
+static void u1(GLuint p, const char *n, float v) { f.Uniform1fv(f.GetUniformLocation(p, n), 1, &v); }
+static void u3(GLuint p, const char *n, const float *v) { f.Uniform3fv(f.GetUniformLocation(p, n), 1, v); }
+static void u4(GLuint p, const char *n, const float *v) { f.Uniform4fv(f.GetUniformLocation(p, n), 1, v); }
+
+/* ---- the cases ---- */
+
+typedef struct material {
+    float diffuse[4], ambient[4], specular[4], ks, shininess, c[3], range, inner, outer, falloff;
+} material;
+
+static const material mat = {{0.24f, 0.34f, 0.39f, 1}, {0.07f, 0.07f, 0.07f, 1}, {1, 1, 1, 1}, 0.5f, 16,
+                             {1, 0.1f, 0.01f}, 20, 0.3f, 0.6f, 2};
+
+/* The hand-written side folds into its matrix what hfx does per vertex: GL's depth range (a GL
+ * projection) and D3D9's pixel centres (x + 1 / w, y - 1 / h in clip space, times w, as
+ * hfx_pos_fixup), so both draw the same picture. */
+static void hand_mvp(const scene *s, int size, float mvp[16]) {
+    float m[16], gl_proj[16], centres[16];
+    memcpy(gl_proj, s->proj, sizeof gl_proj);
+    gl_proj[10] = (100.0f + 0.1f) / (0.1f - 100.0f);
+    gl_proj[14] = 2 * 100.0f * 0.1f / (0.1f - 100.0f);
+    identity(centres);
+    centres[12] = 1.0f / (float)size;
+    centres[13] = -1.0f / (float)size;
+    mul4(m, s->world, s->view);
+    mul4(m, m, gl_proj);
+    mul4(mvp, m, centres);
+}
+
+static void set_hand_uniforms(GLuint p, const scene *s, GLuint texture, int size) {
+    float mvp[16];
+    hand_mvp(s, size, mvp);
+    f.UseProgram(p);
+    f.UniformMatrix4fv(f.GetUniformLocation(p, "mvp"), 1, GL_FALSE, mvp);
+    f.UniformMatrix4fv(f.GetUniformLocation(p, "world"), 1, GL_FALSE, s->world);
+    float dir[3] = {s->light[0] - s->target[0], s->light[1] - s->target[1], s->light[2] - s->target[2]};
+    float len = sqrtf(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+    for (int i = 0; i < 3; i++) dir[i] /= len;
+    u3(p, "light", s->light), u3(p, "cam", s->eye), u3(p, "spot_dir", dir), u3(p, "atten", mat.c);
+    u4(p, "diffuse", mat.diffuse), u4(p, "ambient", mat.ambient), u4(p, "specular", mat.specular);
+    u1(p, "ks", mat.ks), u1(p, "shininess", mat.shininess), u1(p, "range", mat.range);
+    u1(p, "cos_inner", cosf(mat.inner)), u1(p, "cos_outer", cosf(mat.outer)), u1(p, "falloff", mat.falloff);
+    f.Uniform1i(f.GetUniformLocation(p, "tex"), 0);
+    f.ActiveTexture(GL_TEXTURE0);
+    f.BindTexture(GL_TEXTURE_2D, texture);
+}
+
+static void set_param(hfx_effect *fx, const char *name, const float *v, size_t n) {
+    hfx_param *p = hfx_effect_param(fx, name);
+    if (p) hfx_param_set_floats(p, v, n);
+}
+
+static void set_effect_params(hfx_effect *fx, const scene *s, GLuint texture) {
+    hfx_param_set_matrix(hfx_effect_param(fx, "world"), s->world);
+    hfx_param_set_matrix(hfx_effect_param(fx, "view"), s->view);
+    hfx_param_set_matrix(hfx_effect_param(fx, "projection"), s->proj);
+    set_param(fx, "posicionLuz", s->light, 3), set_param(fx, "blancoLuz", s->target, 3);
+    set_param(fx, "posicionCamara", s->eye, 3);
+    set_param(fx, "colorMaterialDifuso", mat.diffuse, 4), set_param(fx, "colorMaterialAmbiental", mat.ambient, 4);
+    set_param(fx, "colorMaterialEspecular", mat.specular, 4);
+    set_param(fx, "ks", &mat.ks, 1), set_param(fx, "n", &mat.shininess, 1), set_param(fx, "rango", &mat.range, 1);
+    set_param(fx, "c1", &mat.c[0], 1), set_param(fx, "c2", &mat.c[1], 1), set_param(fx, "c3", &mat.c[2], 1);
+    set_param(fx, "anguloInterno", &mat.inner, 1), set_param(fx, "anguloExterno", &mat.outer, 1);
+    set_param(fx, "falloff", &mat.falloff, 1);
+    hfx_param *b;
+    if ((b = hfx_effect_param(fx, "modIluEsp"))) hfx_param_set_bool(b, 1);
+    if ((b = hfx_effect_param(fx, "atenuado"))) hfx_param_set_bool(b, 1);
+    if ((b = hfx_effect_param(fx, "texturaModelo"))) hfx_param_set_texture(b, texture);
+}
+
+typedef struct bench_case { const char *file, *technique, *fs_defines; int ambient; } bench_case;
+
+static const bench_case cases[] = {
+    {"ambient.fx", "ModeloAmbiental", NULL, 1},
+    {"point_specular.fx", "Material", "", 0},
+    {"point_specular.fx", "Texturizado", "#define TEXTURED\n", 0},
+    {"spot_specular.fx", "Material", "#define SPOT\n", 0},
+    {"spot_specular.fx", "Texturizado", "#define SPOT\n#define TEXTURED\n", 0},
+};
+enum { CASES = sizeof cases / sizeof *cases };
+
+typedef struct side { hfx_effect *fx; hfx_pass *pass; GLuint program, vao; } side;
+
+/* Seconds for `frames` frames of one side, after glFinish on both ends. */
+static double frame_time(hfx_device *dev, side *sd, const mesh *m, int frames) {
+    f.Finish();
+    double t0 = now();
+    for (int i = 0; i < frames; i++) {
+        f.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        if (sd->fx) {
+            hfx_effect_begin(sd->fx);
+            hfx_pass_apply(sd->pass);
+        } else {
+            f.UseProgram(sd->program);
+        }
+        f.BindVertexArray(sd->vao);
+        draw_elements(GL_TRIANGLES, m->count, GL_UNSIGNED_INT, NULL);
+        if (sd->fx) hfx_effect_end(sd->fx);
+    }
+    f.Finish();
+    (void)dev;
+    return (now() - t0) / frames;
+}
+
+/* Largest channel difference between the two sides' pictures of the current viewport. */
+static int picture_difference(hfx_device *dev, side *a, side *b, const mesh *m, int w, int h) {
+    unsigned char *pa = malloc((size_t)w * h * 4), *pb = malloc((size_t)w * h * 4);
+    frame_time(dev, a, m, 1);
+    f.ReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, pa);
+    if (getenv("BENCH_GPU_PNG")) test_gl_write_png(gl, "/tmp/bench_gpu_hfx.png");
+    frame_time(dev, b, m, 1);
+    f.ReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, pb);
+    if (getenv("BENCH_GPU_PNG")) test_gl_write_png(gl, "/tmp/bench_gpu_hand.png");
+    int worst = 0;
+    for (size_t i = 0; i < (size_t)w * h * 4; i++) {
+        int d = abs(pa[i] - pb[i]);
+        if (d > worst) worst = d;
+    }
+    free(pa);
+    free(pb);
+    return worst;
+}
+
+static void run_case(hfx_device *dev, const bench_case *c, const mesh *quad, const mesh *grid, GLuint texture, int rounds) {
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s", HFX_SEED_DIR, c->file);
+    char *errors = NULL;
+    hfx_effect *fx = hfx_effect_load(dev, path, NULL, &errors);
+    if (!fx) { printf("%-18s %-15s did not load: %s\n", c->file, c->technique, errors ? errors : ""); hfx_free(errors); return; }
+    hfx_free(errors);
+    scene s = make_scene();
+    set_effect_params(fx, &s, texture);
+    side h = {fx, hfx_technique_pass(hfx_effect_technique(fx, c->technique), 0), 0, 0};
+    side r = {NULL, NULL, c->ambient ? hand_program(hand_ambient_vs, hand_ambient_fs, "")
+                                     : hand_program(hand_vs, hand_light_fs, c->fs_defines), 0};
+    const struct { const char *name; const mesh *m; int size; } shapes[2] = {{"pixel", quad, BIG}, {"vertex", grid, SMALL}};
+    for (int k = 0; k < 2; k++) {
+        const mesh *m = shapes[k].m;
+        h.vao = bind_mesh(m, hfx_pass_attribute_location(h.pass, "POSITION"), hfx_pass_attribute_location(h.pass, "NORMAL"),
+                          hfx_pass_attribute_location(h.pass, "TEXCOORD0"));
+        r.vao = bind_mesh(m, 0, c->ambient ? -1 : 1, c->ambient ? -1 : 2);
+        hfx_device_set_viewport(dev, 0, 0, shapes[k].size, shapes[k].size);
+        set_hand_uniforms(r.program, &s, texture, shapes[k].size);
+        int diff = picture_difference(dev, &h, &r, m, shapes[k].size, shapes[k].size);
+        double best_h = 1e9, best_r = 1e9;
+        for (int i = 0; i < rounds; i++) {
+            double th = frame_time(dev, &h, m, 2), tr = frame_time(dev, &r, m, 2);
+            if (th < best_h) best_h = th;
+            if (tr < best_r) best_r = tr;
+        }
+        printf("%-18s %-15s %-6s %9.2f %9.2f %7.2fx %5d/255\n", c->file, c->technique, shapes[k].name, best_h * 1e3,
+               best_r * 1e3, best_h / best_r, diff);
+        f.DeleteVertexArrays(1, &h.vao);
+        f.DeleteVertexArrays(1, &r.vao);
+    }
+    f.DeleteProgram(r.program);
+    hfx_effect_destroy(fx);
+}
+
+int main(int argc, char **argv) {
+    int rounds = argc > 1 ? atoi(argv[1]) : 5;
+    if (!test_seed_dir()) { fprintf(stderr, "the seed effects (../shared/seed-fx) are absent\n"); return 1; }
+    gl = test_gl_create(BIG, BIG);
+    if (!gl) { fprintf(stderr, "no OSMesa context\n"); return 1; }
+    test_gl_fns_load(&f);
+    draw_elements = (PFNGLDRAWELEMENTSPROC)test_gl_proc("glDrawElements");
+    hfx_device *dev = hfx_device_create_gl(test_gl_loader);
+    mesh quad = make_grid(2, 2.0f), grid = make_grid(GRID, 2.0f);
+    GLuint texture = make_texture();
+    f.ClearColor(0, 0, 0, 1);
+    printf("llvmpipe, ms per frame, best of %d; ratio = hfx / hand-written; diff = largest channel difference\n", rounds);
+    printf("%-18s %-15s %-6s %9s %9s %8s %9s\n", "effect", "technique", "case", "hfx", "hand", "ratio", "diff");
+    for (int i = 0; i < CASES; i++) run_case(dev, &cases[i], &quad, &grid, texture, rounds);
+    hfx_device_destroy(dev);
+    test_gl_destroy(gl);
+    return 0;
+}
