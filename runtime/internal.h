@@ -8,6 +8,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "compile.h"
 #include "effect.h"
 #include "gl.h"
 #include "grow.h"
@@ -265,6 +266,18 @@ struct hfx_pass {
     uint64_t chosen_seen;
 };
 
+/* A file's modification time and size as last seen; exists = 0 for a missing file. */
+typedef struct hfx_file_stamp {
+    int64_t sec, nsec, size;
+    int exists;
+} hfx_file_stamp;
+
+/* The files an effect came from (hfx_effect_dependencies) and their stamps (watch.c). */
+typedef struct hfx_watch {
+    struct hfx_rt_files files;  /* compile.h */
+    hfx_file_stamp *stamps;     /* one per file */
+} hfx_watch;
+
 /* What hfx_effect_begin saved. */
 typedef struct hfx_saved {
     int active;
@@ -293,6 +306,7 @@ struct hfx_effect {
     uint32_t current;       /* technique index */
     hfx_saved saved;
     char *path;             /* the file hfx_effect_load read (owned), for hfx_effect_reload; NULL from memory */
+    hfx_watch watch;        /* the files it was loaded from, for hfx_effect_reload_if_changed */
 };
 
 /* A top-level parameter's value changed: a new version, and an entry in the change log. */
@@ -421,6 +435,11 @@ void hfx_rs_front_face(hfx_device *dev);
 /* params.c */
 void hfx_rt_param_changed(hfx_effect *fx, uint32_t root);
 uint32_t hfx_rt_param_accept(const hfx_fx_param *i);
+
+/* watch.c */
+int hfx_rt_watch_set(hfx_watch *w, struct hfx_rt_files *files); /* takes files; 0 or -1 */
+int hfx_rt_watch_copy(hfx_watch *to, const hfx_watch *from);
+void hfx_rt_watch_free(hfx_watch *w);
 
 /* load.c */
 /* Loads a compiled effect built by hand (tests, tools); takes fx, even on failure. */

@@ -87,6 +87,14 @@ int hfx_effect_end(hfx_effect *fx);                              /* restore what
  * technique is kept by name. On failure nothing changes and errors (may be NULL; hfx_free) says why.
  * Parameter, technique, pass and annotation handles taken before a successful reload are invalid. */
 int hfx_effect_reload(hfx_effect *fx, const char *path, const hfx_load_options *opt, char **errors);
+/* The files the effect was loaded from: a .fx and every file it included (paths as the compiler
+ * opened them), or the .hfxo; from memory, only what it included. *count gets their number. */
+const char *const *hfx_effect_dependencies(const hfx_effect *fx, size_t *count);
+/* Cheap enough for every frame (one stat per dependency, no allocation): when a dependency's
+ * modification time or size changed since the last load or check, hfx_effect_reload from the
+ * file it was loaded from. Returns 1 reloaded, 0 nothing changed, or hfx_effect_reload's error
+ * (the old effect stays; the same files are not tried again until they change again). */
+int hfx_effect_reload_if_changed(hfx_effect *fx, const hfx_load_options *opt, char **errors);
 
 /* Parameters: Parameters["name"], Elements[i], StructureMembers["name"]. */
 hfx_param *hfx_effect_param(hfx_effect *fx, const char *name);
