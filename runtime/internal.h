@@ -307,6 +307,9 @@ struct hfx_effect {
     hfx_saved saved;
     char *path;             /* the file hfx_effect_load read (owned), for hfx_effect_reload; NULL from memory */
     hfx_watch watch;        /* the files it was loaded from, for hfx_effect_reload_if_changed */
+    uint32_t *sas_plan;     /* scene.c: parameters with a standard semantic, (index << 8 | id) */
+    uint32_t sas_count;
+    int sas_ready;          /* sas_plan made (on the first hfx_effect_bind_scene) */
 };
 
 /* A top-level parameter's value changed: a new version, and an entry in the change log. */

@@ -112,6 +112,7 @@ static void instance_free(hfx_effect *e) {
     free(e->log);
     free(e->path);
     hfx_rt_watch_free(&e->watch);
+    free(e->sas_plan);
     free(e);
 }
 

@@ -96,6 +96,25 @@ const char *const *hfx_effect_dependencies(const hfx_effect *fx, size_t *count);
  * (the old effect stays; the same files are not tried again until they change again). */
 int hfx_effect_reload_if_changed(hfx_effect *fx, const hfx_load_options *opt, char **errors);
 
+/* What hfx_effect_bind_scene fills parameters from. Matrices in XNA order (row-major, row
+ * vectors, translation in m[12..14]), projection Direct3D style. */
+typedef struct hfx_scene {
+    float world[16], view[16], projection[16];
+    float time, elapsed_time;               /* seconds: Time, ElapsedTime */
+    float viewport_width, viewport_height;  /* pixels: ViewportPixelSize */
+} hfx_scene;
+
+/* FX Composer / DirectX SAS binding: every float parameter whose semantic (case-insensitive) is
+ * World, View, Projection, WorldView, ViewProjection or WorldViewProjection (also WorldViewProj,
+ * ViewProj), each plain or with Inverse, Transpose or InverseTranspose after it, takes that
+ * matrix (a float3x3 or 4x3 its upper-left block); CameraPosition / ViewPosition / EyePosition
+ * the camera (ViewInverse's translation, w = 1); Time, ElapsedTime, ViewportPixelSize (and
+ * ViewportSize) the scene's. Each matrix is computed at most once per call, and a parameter
+ * whose value is unchanged is not set (Apply then sends nothing). Returns how many parameters
+ * the effect binds, or an error code. */
+int hfx_effect_bind_scene(hfx_effect *fx, const hfx_scene *scene);
+int hfx_scene_semantic_known(const char *semantic); /* 1 when hfx_effect_bind_scene fills this semantic */
+
 /* Parameters: Parameters["name"], Elements[i], StructureMembers["name"]. */
 hfx_param *hfx_effect_param(hfx_effect *fx, const char *name);
 hfx_param *hfx_effect_param_by_semantic(hfx_effect *fx, const char *semantic); /* case-insensitive */
