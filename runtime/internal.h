@@ -310,6 +310,7 @@ struct hfx_effect {
     uint32_t *sas_plan;     /* scene.c: parameters with a standard semantic, (index << 8 | id) */
     uint32_t sas_count;
     int sas_ready;          /* sas_plan made (on the first hfx_effect_bind_scene) */
+    struct hfx_pool *pool;  /* pool.c: the pool whose `shared` parameters it shares, or NULL */
 };
 
 /* A top-level parameter's value changed: a new version, and an entry in the change log. */
@@ -438,6 +439,17 @@ void hfx_rs_front_face(hfx_device *dev);
 /* params.c */
 void hfx_rt_param_changed(hfx_effect *fx, uint32_t root);
 uint32_t hfx_rt_param_accept(const hfx_fx_param *i);
+
+/* pool.c */
+int hfx_rt_pool_join(struct hfx_pool *pool, hfx_effect *e); /* checks shared types, takes the pool's values */
+void hfx_rt_pool_leave(hfx_effect *e);
+void hfx_rt_pool_share(hfx_effect *e, uint32_t root);        /* after a set of e's top-level parameter root */
+void hfx_rt_pool_swapped(hfx_effect *fx, hfx_effect *next);  /* hfx_effect_reload swapped their contents */
+
+/* reload.c: parameter j of b has parameter i of a's shape (same words in the same places). */
+int hfx_rt_same_shape(const hfx_fx_effect *a, uint32_t i, const hfx_fx_effect *b, uint32_t j);
+/* The textures of from's parameter i and its members / elements into to's j (the same shape). */
+void hfx_rt_copy_textures(hfx_effect *to, uint32_t j, const hfx_effect *from, uint32_t i);
 
 /* watch.c */
 int hfx_rt_watch_set(hfx_watch *w, struct hfx_rt_files *files); /* takes files; 0 or -1 */

@@ -179,12 +179,24 @@ static char *append_line(char *text, const char *name, const char *msg) {
     return t;
 }
 
+/* Joins the pool the options name (which must be this device's). */
+static int join_pool(hfx_pool *pool, hfx_effect *e) {
+    if (hfx_pool_device(pool) != e->dev)
+        return hfx_rt_fail(e->dev, HFX_ERR_LOAD, "the effect pool belongs to another device");
+    return hfx_rt_pool_join(pool, e);
+}
+
 /* Loads a compiled effect (taking it); on failure frees it and reports in dev and *errors. */
 static hfx_effect *load_compiled(hfx_device *dev, hfx_fx_effect *fx, const hfx_load_options *opt, char **errors) {
     hfx_target target = opt ? opt->target : HFX_TARGET_GLSL330;
     if ((unsigned)target >= HFX_TARGET_COUNT) target = HFX_TARGET_GLSL330;
     hfx_shared *sh = shared_create(dev, fx, target);
     hfx_effect *e = sh ? instance_create(sh, NULL) : NULL;
+    if (e && opt && opt->pool && join_pool(opt->pool, e) != HFX_OK) {
+        if (errors) *errors = *errors ? append_line(*errors, NULL, dev->error) : dup_string(dev->error);
+        hfx_effect_destroy(e);
+        return NULL;
+    }
     if (!e) {
         if (sh) shared_free(sh);
         else hfx_fx_effect_free(fx);
@@ -314,6 +326,10 @@ hfx_effect *hfx_effect_clone(const hfx_effect *src) {
         instance_free(e); /* a clone reloads from the same files */
         e = NULL;
     }
+    if (e && src->pool && hfx_rt_pool_join(src->pool, e) != HFX_OK) { /* D3DX's clones keep the pool */
+        instance_free(e);
+        return NULL;
+    }
     if (!e) {
         hfx_rt_fail(src->dev, HFX_ERR_MEMORY, "out of memory");
         return NULL;
@@ -324,6 +340,7 @@ hfx_effect *hfx_effect_clone(const hfx_effect *src) {
 
 void hfx_effect_destroy(hfx_effect *e) {
     if (!e) return;
+    hfx_rt_pool_leave(e);
     if (e->dev->applied && e->dev->applied->fx == e) e->dev->applied = NULL; /* its address may come back */
     if (--e->sh->refs == 0) shared_free(e->sh);
     instance_free(e);

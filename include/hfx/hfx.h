@@ -17,6 +17,7 @@ typedef struct hfx_param hfx_param;
 typedef struct hfx_technique hfx_technique;
 typedef struct hfx_pass hfx_pass;
 typedef struct hfx_annotation hfx_annotation;
+typedef struct hfx_pool hfx_pool;
 
 /* Return codes. */
 enum {
@@ -58,6 +59,7 @@ typedef struct hfx_load_options {
     int separate_uniforms;           /* .fx only: 1 = one GLSL uniform per parameter; 0 = float parameters
                                         packed in vec4 registers, sent in one call per Apply (default) */
     int no_self_check;               /* .fx only: 1 = skip glslang's check of the emitted GLSL (faster loads) */
+    hfx_pool *pool;                  /* NULL, or the pool whose `shared` parameters the effect shares */
 } hfx_load_options;
 
 /* Device: one per GL context, which must be current on every call. */
@@ -70,6 +72,15 @@ void hfx_device_sync(hfx_device *dev);  /* re-read GL state the application chan
 /* A texture hfx has bound got new mip levels, or its name a new texture: check its levels at the next bind. */
 void hfx_device_texture_changed(hfx_device *dev, unsigned int texture);
 void hfx_free(void *p);                                          /* frees strings hfx hands out */
+
+/* Effect pools (D3DX's ID3DXEffectPool): effects loaded with the same hfx_load_options.pool
+ * share every top-level parameter declared `shared`, by name: a value set through any of them is
+ * seen by all and reaches each program when it next applies. An effect joining takes the pool's
+ * value; the same shared name with another type (or struct layout) fails the load with both
+ * declarations' positions (X9001). Clones and reloads stay in the pool. */
+hfx_pool *hfx_pool_create(hfx_device *dev);
+void hfx_pool_destroy(hfx_pool *pool);                           /* effects still in it carry on unpooled */
+hfx_device *hfx_pool_device(const hfx_pool *pool);
 
 /* Effects. */
 hfx_effect *hfx_effect_load(hfx_device *dev, const char *path, const hfx_load_options *opt, char **errors);
