@@ -1,7 +1,8 @@
 # install.cmake: `cmake --install BUILD [--prefix P]` puts in place
 #   include/hfx/*.h, lib/libhfx{,_runtime,_compiler,_common}.a, bin/hfxc, bin/hfxview,
-#   lib/pkgconfig/hfx.pc (and hfx-runtime.pc) and lib/cmake/hfx/ (find_package(hfx): hfx::hfx,
-#   hfx::hfx_runtime, hfx::hfx_compiler, hfx::hfx_common).
+#   lib/pkgconfig/hfx.pc (and hfx-runtime.pc; `pkg-config --variable=hfxc hfx` is hfxc's path) and
+#   lib/cmake/hfx/ (find_package(hfx): hfx::hfx, hfx::hfx_runtime, hfx::hfx_compiler, hfx::hfx_common,
+#   HFX_HFXC_EXECUTABLE and hfx_add_effects from hfxEffects.cmake).
 # The libraries are static; the compiler carries glslang (C++ inside), so programs linking
 # hfx also link glslang's libraries, libstdc++, pthread and libm: both files list them.
 include(CMakePackageConfigHelpers)
@@ -58,4 +59,4 @@ configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/hfxConfig.cmake.in
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/hfxConfigVersion.cmake
   VERSION ${PROJECT_VERSION} COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/hfxConfig.cmake ${PROJECT_BINARY_DIR}/hfxConfigVersion.cmake
-  DESTINATION ${HFX_INSTALL_CMAKEDIR})
+  ${CMAKE_CURRENT_LIST_DIR}/hfxEffects.cmake DESTINATION ${HFX_INSTALL_CMAKEDIR})

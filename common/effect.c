@@ -27,6 +27,7 @@ void hfx_fx_effect_free(hfx_fx_effect *fx) {
         free(fx->params[i].semantic);
         free(fx->params[i].glsl_name);
         free(fx->params[i].string);
+        free(fx->params[i].file);
     }
     free(fx->params);
     free(fx->values);

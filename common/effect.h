@@ -54,6 +54,8 @@ typedef struct hfx_fx_param {
     uint32_t sampler;      /* index into samplers for a sampler parameter, else HFX_NONE */
     uint32_t flags;
     char *string;          /* a string parameter's initial value (`string s = "..."`); NULL otherwise */
+    char *file;            /* top level: the file that declares it, as the #include named it; NULL when unknown */
+    uint32_t line, col;    /* ... and where (the name); 0 when unknown (a .hfxo from before they were kept) */
 } hfx_fx_param;
 
 /* How a state's value is given. */

@@ -32,9 +32,10 @@ enum {
     SEC_VARIANTS = FOURCC('V', 'A', 'R', 'I')
 };
 
-/* Words per record in version 2 (readers accept longer records and ignore the tail). */
+/* Words per record in version 2 (readers accept longer records and ignore the tail). PARM
+ * records grew by 3 (file, line, col) within version 2: readers take 18 or more. */
 enum {
-    R_EFFECT = 3, R_PARAM = 18, R_ANNOTATION = 8, R_STATE = 12, R_SAMPLER = 5,
+    R_EFFECT = 3, R_PARAM = 18, R_PARAM_WRITTEN = 21, R_ANNOTATION = 8, R_STATE = 12, R_SAMPLER = 5,
     P_CODE = 7, P_REG_COUNT = P_CODE + 2 * HFX_STAGE_COUNT * HFX_TARGET_COUNT, /* program record fields */
     R_PROGRAM = P_REG_COUNT + 1, R_ATTRIBUTE = 3, R_SAMPLER_USE = 3,
     R_UNIFORM_USE = 2, R_PASS = 6, R_TECHNIQUE = 5, R_VARIANT = 4
@@ -175,14 +176,14 @@ static void table_begin(writer *w, uint32_t id, uint32_t count, uint32_t words) 
 static uint32_t str(writer *w, const char *s) { return pool_add(&w->strings, s); }
 
 static void write_params(writer *w, const hfx_fx_effect *fx) {
-    table_begin(w, SEC_PARAMS, fx->param_count, R_PARAM);
+    table_begin(w, SEC_PARAMS, fx->param_count, R_PARAM_WRITTEN);
     for (uint32_t i = 0; i < fx->param_count; i++) {
         const hfx_fx_param *p = &fx->params[i];
-        uint32_t r[R_PARAM] = {str(w, p->name), str(w, p->semantic), str(w, p->glsl_name), str(w, p->string),
-                               (uint32_t)p->klass, (uint32_t)p->type, p->rows, p->cols, p->elements, p->parent,
-                               p->first_child, p->child_count, p->offset, p->words, p->first_annotation,
-                               p->annotation_count, p->sampler, p->flags};
-        for (int k = 0; k < R_PARAM; k++) put32(&w->out, r[k]);
+        uint32_t r[R_PARAM_WRITTEN] = {str(w, p->name), str(w, p->semantic), str(w, p->glsl_name), str(w, p->string),
+                                       (uint32_t)p->klass, (uint32_t)p->type, p->rows, p->cols, p->elements, p->parent,
+                                       p->first_child, p->child_count, p->offset, p->words, p->first_annotation,
+                                       p->annotation_count, p->sampler, p->flags, str(w, p->file), p->line, p->col};
+        for (int k = 0; k < R_PARAM_WRITTEN; k++) put32(&w->out, r[k]);
     }
     section_end(w);
     section_begin(w, SEC_VALUES);
@@ -534,6 +535,11 @@ static bool read_params(reader *r, hfx_fx_effect *fx) {
         p->annotation_count = field(t, i, 15);
         p->sampler = field(t, i, 16);
         p->flags = field(t, i, 17);
+        if (t->stride >= 4 * R_PARAM_WRITTEN) {
+            if (!get_string(r, field(t, i, 18), false, &p->file)) return false;
+            p->line = field(t, i, 19);
+            p->col = field(t, i, 20);
+        }
     }
     fx->value_words = r->value_words;
     if (!(fx->values = alloc_array(r, r->value_words, sizeof *fx->values))) return false;

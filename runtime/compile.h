@@ -12,4 +12,15 @@
 hfx_fx_effect *hfx_rt_compile_fx(const char *path, const void *data, size_t size, const char *name,
                                  const hfx_load_options *opt, char **errors);
 
+/* Files a compile read (hfxc_dependency_at): malloc'ed paths in a malloc'ed array. */
+typedef struct hfx_rt_files {
+    char **paths;
+    size_t count;
+} hfx_rt_files;
+
+void hfx_rt_files_free(hfx_rt_files *f);
+/* hfx_rt_compile_fx that also hands back, in *deps (may be NULL), the files the compile read. */
+hfx_fx_effect *hfx_rt_compile_fx_deps(const char *path, const void *data, size_t size, const char *name,
+                                      const hfx_load_options *opt, char **errors, hfx_rt_files *deps);
+
 #endif

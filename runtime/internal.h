@@ -8,6 +8,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "compile.h"
 #include "effect.h"
 #include "gl.h"
 #include "grow.h"
@@ -266,6 +267,18 @@ struct hfx_pass {
     uint64_t chosen_seen;
 };
 
+/* A file's modification time and size as last seen; exists = 0 for a missing file. */
+typedef struct hfx_file_stamp {
+    int64_t sec, nsec, size;
+    int exists;
+} hfx_file_stamp;
+
+/* The files an effect came from (hfx_effect_dependencies) and their stamps (watch.c). */
+typedef struct hfx_watch {
+    struct hfx_rt_files files;  /* compile.h */
+    hfx_file_stamp *stamps;     /* one per file */
+} hfx_watch;
+
 /* What hfx_effect_begin saved. */
 typedef struct hfx_saved {
     int active;
@@ -295,6 +308,11 @@ struct hfx_effect {
     uint32_t current;       /* technique index */
     hfx_saved saved;
     char *path;             /* the file hfx_effect_load read (owned), for hfx_effect_reload; NULL from memory */
+    hfx_watch watch;        /* the files it was loaded from, for hfx_effect_reload_if_changed */
+    uint32_t *sas_plan;     /* scene.c: parameters with a standard semantic, (index << 8 | id) */
+    uint32_t sas_count;
+    int sas_ready;          /* sas_plan made (on the first hfx_effect_bind_scene) */
+    struct hfx_pool *pool;  /* pool.c: the pool whose `shared` parameters it shares, or NULL */
 };
 
 /* A top-level parameter's value changed: a new version, and an entry in the change log. */
@@ -429,6 +447,22 @@ void hfx_rs_front_face(hfx_device *dev);
 /* params.c */
 void hfx_rt_param_changed(hfx_effect *fx, uint32_t root);
 uint32_t hfx_rt_param_accept(const hfx_fx_param *i);
+
+/* pool.c */
+int hfx_rt_pool_join(struct hfx_pool *pool, hfx_effect *e); /* checks shared types, takes the pool's values */
+void hfx_rt_pool_leave(hfx_effect *e);
+void hfx_rt_pool_share(hfx_effect *e, uint32_t root);        /* after a set of e's top-level parameter root */
+void hfx_rt_pool_swapped(hfx_effect *fx, hfx_effect *next);  /* hfx_effect_reload swapped their contents */
+
+/* reload.c: parameter j of b has parameter i of a's shape (same words in the same places). */
+int hfx_rt_same_shape(const hfx_fx_effect *a, uint32_t i, const hfx_fx_effect *b, uint32_t j);
+/* The textures of from's parameter i and its members / elements into to's j (the same shape). */
+void hfx_rt_copy_textures(hfx_effect *to, uint32_t j, const hfx_effect *from, uint32_t i);
+
+/* watch.c */
+int hfx_rt_watch_set(hfx_watch *w, struct hfx_rt_files *files); /* takes files; 0 or -1 */
+int hfx_rt_watch_copy(hfx_watch *to, const hfx_watch *from);
+void hfx_rt_watch_free(hfx_watch *w);
 
 /* load.c */
 /* Loads a compiled effect built by hand (tests, tools); takes fx, even on failure. */

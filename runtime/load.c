@@ -111,6 +111,8 @@ static void instance_free(hfx_effect *e) {
     free(e->values), free(e->stamps), free(e->textures), free(e->params), free(e->techniques), free(e->passes);
     free(e->log);
     free(e->path);
+    hfx_rt_watch_free(&e->watch);
+    free(e->sas_plan);
     free(e);
 }
 
@@ -177,12 +179,24 @@ static char *append_line(char *text, const char *name, const char *msg) {
     return t;
 }
 
+/* Joins the pool the options name (which must be this device's). */
+static int join_pool(hfx_pool *pool, hfx_effect *e) {
+    if (hfx_pool_device(pool) != e->dev)
+        return hfx_rt_fail(e->dev, HFX_ERR_LOAD, "the effect pool belongs to another device");
+    return hfx_rt_pool_join(pool, e);
+}
+
 /* Loads a compiled effect (taking it); on failure frees it and reports in dev and *errors. */
 static hfx_effect *load_compiled(hfx_device *dev, hfx_fx_effect *fx, const hfx_load_options *opt, char **errors) {
     hfx_target target = opt ? opt->target : HFX_TARGET_GLSL330;
     if ((unsigned)target >= HFX_TARGET_COUNT) target = HFX_TARGET_GLSL330;
     hfx_shared *sh = shared_create(dev, fx, target);
     hfx_effect *e = sh ? instance_create(sh, NULL) : NULL;
+    if (e && opt && opt->pool && join_pool(opt->pool, e) != HFX_OK) {
+        if (errors) *errors = *errors ? append_line(*errors, NULL, dev->error) : dup_string(dev->error);
+        hfx_effect_destroy(e);
+        return NULL;
+    }
     if (!e) {
         if (sh) shared_free(sh);
         else hfx_fx_effect_free(fx);
@@ -193,8 +207,9 @@ static hfx_effect *load_compiled(hfx_device *dev, hfx_fx_effect *fx, const hfx_l
     return e;
 }
 
+/* deps receives the files a .fx compile read (empty for a .hfxo). */
 static hfx_effect *load(hfx_device *dev, const char *path, const void *data, size_t size, const char *name,
-                        const hfx_load_options *opt, char **errors) {
+                        const hfx_load_options *opt, char **errors, hfx_rt_files *deps) {
     if (errors) *errors = NULL;
     if (!dev) return NULL;
     dev->error[0] = '\0';
@@ -205,7 +220,7 @@ static hfx_effect *load(hfx_device *dev, const char *path, const void *data, siz
         if (!fx) hfx_rt_fail(dev, HFX_ERR_LOAD, "%s: %s", name, err);
     } else {
         char *diag = NULL;
-        fx = hfx_rt_compile_fx(path, data, size, name, opt, &diag);
+        fx = hfx_rt_compile_fx_deps(path, data, size, name, opt, &diag, deps);
         if (!fx && (!diag || !strstr(diag, "error"))) diag = append_line(diag, name, "error: the effect did not compile");
         if (!fx) hfx_rt_fail(dev, HFX_ERR_LOAD, "%s", diag ? diag : "the effect did not compile");
         if (errors) *errors = diag;
@@ -217,6 +232,13 @@ static hfx_effect *load(hfx_device *dev, const char *path, const void *data, siz
     }
     if (!fx->source_name) fx->source_name = dup_string(name);
     return load_compiled(dev, fx, opt, errors);
+}
+
+/* The list holding path alone (empty when out of memory). */
+static hfx_rt_files one_file(const char *path) {
+    hfx_rt_files f = {calloc(1, sizeof(char *)), 0};
+    if (f.paths && (f.paths[0] = dup_string(path))) f.count = 1;
+    return f;
 }
 
 static int is_hfxo_file(const char *path, void **data, size_t *size) {
@@ -251,14 +273,17 @@ hfx_effect *hfx_effect_load(hfx_device *dev, const char *path, const hfx_load_op
         if (errors) *errors = dup_string(dev->error);
         return NULL;
     }
-    hfx_effect *e = load(dev, path, data, size, path, opt, errors);
+    hfx_rt_files deps = {NULL, 0};
+    hfx_effect *e = load(dev, path, data, size, path, opt, errors, &deps);
     free(data);
-    if (e && !(e->path = dup_string(path))) { /* hfx_effect_reload reads it again */
+    if (e && !deps.count) hfx_rt_files_free(&deps), deps = one_file(path); /* a .hfxo: itself */
+    if (e && (!(e->path = dup_string(path)) || hfx_rt_watch_set(&e->watch, &deps))) { /* reload reads them again */
         hfx_effect_destroy(e);
         hfx_rt_fail(dev, HFX_ERR_MEMORY, "out of memory");
         if (errors) free(*errors), *errors = dup_string(dev->error);
-        return NULL;
+        e = NULL;
     }
+    hfx_rt_files_free(&deps);
     return e;
 }
 
@@ -271,7 +296,16 @@ hfx_effect *hfx_effect_load_memory(hfx_device *dev, const void *data, size_t siz
         if (errors) *errors = dup_string(dev->error);
         return NULL;
     }
-    return load(dev, NULL, data, size, name ? name : "memory", opt, errors);
+    hfx_rt_files deps = {NULL, 0}; /* what it included, found beside name */
+    hfx_effect *e = load(dev, NULL, data, size, name ? name : "memory", opt, errors, &deps);
+    if (e && hfx_rt_watch_set(&e->watch, &deps)) {
+        hfx_effect_destroy(e);
+        hfx_rt_fail(dev, HFX_ERR_MEMORY, "out of memory");
+        if (errors) free(*errors), *errors = dup_string(dev->error);
+        e = NULL;
+    }
+    hfx_rt_files_free(&deps);
+    return e;
 }
 
 /* For tests and tools that build an effect by hand: takes fx. */
@@ -288,9 +322,13 @@ hfx_effect *hfx_rt_effect_from_fx(hfx_device *dev, hfx_fx_effect *fx, const hfx_
 hfx_effect *hfx_effect_clone(const hfx_effect *src) {
     if (!src) return NULL;
     hfx_effect *e = instance_create(src->sh, src);
-    if (e && src->path && !(e->path = dup_string(src->path))) { /* a clone reloads from the same file */
-        instance_free(e);
+    if (e && ((src->path && !(e->path = dup_string(src->path))) || hfx_rt_watch_copy(&e->watch, &src->watch))) {
+        instance_free(e); /* a clone reloads from the same files */
         e = NULL;
+    }
+    if (e && src->pool && hfx_rt_pool_join(src->pool, e) != HFX_OK) { /* D3DX's clones keep the pool */
+        instance_free(e);
+        return NULL;
     }
     if (!e) {
         hfx_rt_fail(src->dev, HFX_ERR_MEMORY, "out of memory");
@@ -302,6 +340,7 @@ hfx_effect *hfx_effect_clone(const hfx_effect *src) {
 
 void hfx_effect_destroy(hfx_effect *e) {
     if (!e) return;
+    hfx_rt_pool_leave(e);
     if (e->dev->applied && e->dev->applied->fx == e) e->dev->applied = NULL; /* its address may come back */
     if (--e->sh->refs == 0) shared_free(e->sh);
     instance_free(e);

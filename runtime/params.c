@@ -58,9 +58,15 @@ static inline int copy_changed(uint32_t *dst, const void *src, size_t n) {
     }
 }
 
+/* A new version of p's value; in a pool, a shared parameter's other copies take it too. */
+static inline void changed(hfx_param *p) {
+    hfx_rt_mark_changed(p->fx, p->root);
+    if (p->fx->pool) hfx_rt_pool_share(p->fx, p->root);
+}
+
 /* Writes words into the value buffer; a new version only when something changed. */
 static inline int store(hfx_param *p, uint32_t offset, const void *words, size_t n) {
-    if (copy_changed(p->value + offset, words, n)) hfx_rt_mark_changed(p->fx, p->root);
+    if (copy_changed(p->value + offset, words, n)) changed(p);
     return HFX_OK;
 }
 
@@ -151,7 +157,7 @@ int hfx_param_set_floats(hfx_param *p, const float *v, size_t count) {
     if (count != 4) return store_whole(p, v, count);
     if (memcmp(p->value, v, 16) == 0) return HFX_OK; /* float4: the common case, compared in place */
     memcpy(p->value, v, 16);
-    hfx_rt_mark_changed(p->fx, p->root);
+    changed(p);
     return HFX_OK;
 }
 
@@ -162,12 +168,12 @@ static __attribute__((noinline)) int set_ints_checked(hfx_param *p, const int *v
     int rc = check_count(p, count);
     if (rc) return rc;
     if (p->accept & ACC_RAW_INTS) return store(p, 0, v, count);
-    int changed = 0;
+    int any = 0;
     for (size_t k = 0; k < count; k++) { /* bools are 0/1 */
         uint32_t b = v[k] != 0;
-        if (p->value[k] != b) p->value[k] = b, changed = 1;
+        if (p->value[k] != b) p->value[k] = b, any = 1;
     }
-    if (changed) hfx_rt_mark_changed(p->fx, p->root);
+    if (any) changed(p);
     return HFX_OK;
 }
 
@@ -201,6 +207,7 @@ int hfx_param_set_texture(hfx_param *p, unsigned int tex) {
     if (!p) return HFX_ERR_NULL;
     if (!(p->accept & ACC_TEXTURE)) return fail(p, HFX_ERR_TYPE, "not a texture or sampler");
     p->fx->textures[p->index] = tex;
+    if (p->fx->pool) hfx_rt_pool_share(p->fx, p->root); /* textures are bound from each copy at Apply */
     return HFX_OK;
 }
 

@@ -37,6 +37,14 @@ static void copy_textures(hfx_effect *to, uint32_t j, const hfx_effect *from, ui
         copy_textures(to, q->first_child + c, from, p->first_child + c, depth + 1);
 }
 
+int hfx_rt_same_shape(const hfx_fx_effect *a, uint32_t i, const hfx_fx_effect *b, uint32_t j) {
+    return same_shape(a, i, b, j, 0);
+}
+
+void hfx_rt_copy_textures(hfx_effect *to, uint32_t j, const hfx_effect *from, uint32_t i) {
+    copy_textures(to, j, from, i, 0);
+}
+
 /* Old values of top-level parameters whose shape is unchanged; each is marked changed as a set
  * would, so the next Apply sends it. */
 static void carry_values(hfx_effect *to, const hfx_effect *from) {
@@ -94,6 +102,7 @@ static void swap_in(hfx_effect *fx, hfx_effect *next) {
     *next = old;
     point_back(fx);
     point_back(next);
+    hfx_rt_pool_swapped(fx, next);
     hfx_effect_destroy(next);
 }
 
@@ -110,6 +119,13 @@ int hfx_effect_reload(hfx_effect *fx, const char *path, const hfx_load_options *
     if (!path)
         return fail_with(fx->dev, errors, HFX_ERR_NOT_FOUND,
                          "hfx_effect_reload: the effect was loaded from memory; give the path to reload from");
+    hfx_load_options pooled; /* the effect stays in its pool unless opt names another */
+    if (fx->pool && (!opt || !opt->pool)) {
+        if (opt) pooled = *opt;
+        else memset(&pooled, 0, sizeof pooled);
+        pooled.pool = fx->pool;
+        opt = &pooled;
+    }
     hfx_effect *next = hfx_effect_load(fx->dev, path, opt, errors);
     if (!next) return HFX_ERR_LOAD;
     carry_values(next, fx);

@@ -2,7 +2,7 @@
 # Installs the Debian packages hfx builds and tests with (as root, or through sudo).
 # Quiet when everything is already there.
 set -euo pipefail
-pkgs=(build-essential cmake pkg-config re2c bison glslang-dev glslang-tools libosmesa6-dev
+pkgs=(build-essential cmake ninja-build pkg-config re2c bison glslang-dev glslang-tools libosmesa6-dev
       libgl-dev libegl-dev libgl1-mesa-dri libegl-mesa0 zlib1g-dev libpng-dev libcjson-dev libstb-dev libglfw3-dev libdevil-dev xvfb xauth valgrind spirv-tools)
 missing=()
 for p in "${pkgs[@]}"; do

@@ -76,3 +76,11 @@ if(TARGET runtime_test_targets)
   target_sources(runtime_test_targets PRIVATE ${HFX_RTONLY_SCENES})
   target_include_directories(runtime_test_targets PRIVATE ${HFX_RTONLY_INCLUDES})
 endif()
+
+# hfx_add_effects in an outside project: it includes cmake/hfxEffects.cmake and runs the built hfxc.
+if(TARGET tools_test_hfx_add_effects)
+  target_compile_definitions(tools_test_hfx_add_effects PRIVATE HFX_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  if(TARGET hfxc)
+    add_dependencies(tools_test_hfx_add_effects hfxc)
+  endif()
+endif()

@@ -16,7 +16,7 @@ uint32_t hfx_diags_add_file(hfx_diags *d, const char *name, const char *path, co
     if (!HFX_ARENA_GROW(d->arena, d->files, d->file_count, d->file_cap, 8)) return 0; /* out of memory: the first file stands in */
     hfx_source *s = &d->files[d->file_count];
     s->name = hfx_arena_strdup(d->arena, name);
-    s->path = hfx_arena_strdup(d->arena, path ? path : name);
+    s->path = path ? hfx_arena_strdup(d->arena, path) : NULL;
     s->text = text;
     s->size = size;
     return d->file_count++;

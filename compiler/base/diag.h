@@ -17,7 +17,7 @@ typedef struct hfx_loc {
 
 typedef struct hfx_source {
     const char *name; /* as the user or #include named it (a #line can rename) */
-    const char *path; /* where it was read from */
+    const char *path; /* where it was read from; NULL for text that is no file (memory, -D) */
     const char *text; /* UTF-8, NUL-terminated, CRLF kept as is */
     uint32_t size;
 } hfx_source;

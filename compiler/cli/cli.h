@@ -22,6 +22,10 @@ typedef struct cli_options {
     unsigned targets;        /* bits (1 << hfx_target); 0 = the library's default */
     bool reflect, annotations, ast, werror, quiet, no_warnings, pack_uniforms, no_self_check;
     int jobs;                /* 0 = one per core */
+    bool depfile;            /* -MD: write a Make / Ninja depfile per input */
+    bool depfile_phony;      /* -MP: an empty rule per include, so deleting one does not break make */
+    const char *depfile_path;/* -MF / --depfile: its name (one input); default <output minus extension>.d */
+    const char *dep_target;  /* -MT: the rule's target; default the output path */
 } cli_options;
 
 /* What compiling one input left behind, for main to print in input order. */
@@ -40,6 +44,10 @@ void cli_run_jobs(const cli_options *o, cli_job *jobs, size_t count, bool progre
 char *cli_json(const cli_job *jobs, size_t count, bool reflect);
 /* Where the .hfxo of `input` goes, or NULL when none is asked for; malloc'ed. */
 char *cli_output_path(const cli_options *o, const char *input);
+/* depfile.c: after a successful compile, the depfile naming every file r read (-MD). */
+bool cli_write_depfile(const cli_options *o, const char *input, const hfxc_result *r, char **error);
+/* The rule text: `target: dep...`, Make's escapes, one dependency a line; phony: `dep:` rules. malloc'ed. */
+char *cli_depfile_text(const char *target, const char *const *deps, size_t count, bool phony);
 const char *cli_target_name(int target);
 int cli_target_from_name(const char *name); /* -1 when unknown */
 

@@ -222,6 +222,7 @@ static void compile_one(const cli_options *o, cli_job *job) {
             warn_missing_targets(o, job, job->effect);
             write_hfxo(o, job, job->effect);
             emit_glsl(o, job, job->effect);
+            if (job->ok && o->depfile && !cli_write_depfile(o, job->input, r, &job->error)) job->ok = false;
         }
     }
     hfxc_result_free(r);

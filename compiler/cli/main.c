@@ -31,6 +31,11 @@ static const char usage_text[] =
     "  --no-warnings         drop warnings\n"
     "  --no-self-check       do not check the emitted GLSL with glslang (faster; by default a\n"
     "                        shader glslang rejects is an internal error X9000, never output)\n"
+    "  -MD                   also write a Make / Ninja depfile: the effect and every file it includes\n"
+    "  -MF FILE, --depfile FILE  the depfile's name (one input; --depfile implies -MD);\n"
+    "                        default: the output's name with .d for its extension\n"
+    "  -MT TARGET            the depfile rule's target (default: the output path)\n"
+    "  -MP                   add an empty rule per include, so deleting one does not break make\n"
     "  -j, --jobs N          compile N files at a time (default: one per core)\n"
     "  --quiet               no progress line and no summary\n"
     "  /nologo               accepted for fxc compatibility\n"
@@ -84,14 +89,17 @@ static const char *value_of(const char *arg, const char *name, int argc, char **
     return arg + n;
 }
 
-typedef enum { OPT_OUTPUT, OPT_DEFINE, OPT_INCLUDE, OPT_PROFILE, OPT_ENTRY, OPT_TARGET, OPT_EMIT, OPT_JOBS } opt_kind;
+typedef enum {
+    OPT_OUTPUT, OPT_DEFINE, OPT_INCLUDE, OPT_PROFILE, OPT_ENTRY, OPT_TARGET, OPT_EMIT, OPT_JOBS, OPT_DEPFILE, OPT_DEP_TARGET
+} opt_kind;
 
 static const struct {
     const char *name;
     opt_kind kind;
 } valued[] = {
     {"--output", OPT_OUTPUT}, {"--target", OPT_TARGET}, {"--emit-glsl", OPT_EMIT}, {"--jobs", OPT_JOBS},
-    {"--define", OPT_DEFINE}, {"--include", OPT_INCLUDE},
+    {"--define", OPT_DEFINE}, {"--include", OPT_INCLUDE}, {"--depfile", OPT_DEPFILE},
+    {"-MF", OPT_DEPFILE}, {"-MT", OPT_DEP_TARGET},
     {"-o", OPT_OUTPUT}, {"-D", OPT_DEFINE}, {"-I", OPT_INCLUDE}, {"-T", OPT_PROFILE}, {"-E", OPT_ENTRY},
     {"-j", OPT_JOBS}, {"-Fo", OPT_OUTPUT},
     {"/Fo", OPT_OUTPUT}, {"/D", OPT_DEFINE}, {"/I", OPT_INCLUDE}, {"/T", OPT_PROFILE}, {"/E", OPT_ENTRY},
@@ -106,6 +114,8 @@ static int set_valued(cli_options *o, opt_kind kind, const char *v) {
     case OPT_ENTRY: o->entry = v; break;
     case OPT_TARGET: return add_targets(o, v);
     case OPT_EMIT: o->emit_glsl = v; break;
+    case OPT_DEPFILE: o->depfile = true, o->depfile_path = v; break;
+    case OPT_DEP_TARGET: o->dep_target = v; break;
     case OPT_JOBS: {
         char *end;
         long n = strtol(v, &end, 10);
@@ -128,6 +138,8 @@ static int flag(cli_options *o, const char *a, bool *handled) {
     else if (!strcmp(a, "--pack-uniforms")) o->pack_uniforms = true; /* the default; kept for scripts */
     else if (!strcmp(a, "--separate-uniforms")) o->pack_uniforms = false;
     else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) o->quiet = true;
+    else if (!strcmp(a, "-MD") || !strcmp(a, "-MMD")) o->depfile = true; /* no system headers to leave out */
+    else if (!strcmp(a, "-MP")) o->depfile_phony = true;
     else if (!strcmp(a, "/nologo") || !strcmp(a, "-nologo")) {
     } else if (!strcmp(a, "/Zi") || !strcmp(a, "/Od") || !strcmp(a, "/Gec") || !strcmp(a, "/Gfp") ||
                (a[0] == '/' && a[1] == 'O' && a[2] >= '0' && a[2] <= '3' && !a[3])) {
@@ -190,6 +202,8 @@ static int check_inputs(const cli_options *o) {
         fprintf(stderr, "hfxc: error: cannot create folder '%s': %s\n", o->output, strerror(errno));
         return EXIT_USAGE;
     }
+    if (o->depfile_path && o->input_count > 1)
+        return usage_error("%s", "-MF / --depfile names one depfile: give one input, or -MD alone for one per output");
     if (o->profile && strcmp(o->profile, "fx_2_0") != 0 && !o->entry)
         return usage_error("profile '%s' needs an entry point (/E)", o->profile);
     return EXIT_OK;

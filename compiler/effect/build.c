@@ -131,6 +131,14 @@ static bool is_parameter(const hfx_decl *d) {
            d->type->kind != TY_FUNCTION;
 }
 
+/* Where a top-level parameter is declared, for the runtime's reports (effect pools). */
+static void declared_at(hfx_builder *b, hfx_fx_param *p, hfx_loc loc) {
+    const hfx_diags *d = b->diags;
+    p->file = loc.file < d->file_count ? hfx_build_strdup(b, d->files[loc.file].name) : NULL;
+    p->line = loc.line;
+    p->col = loc.col;
+}
+
 static uint32_t add_param(hfx_builder *b, const char *name, const char *semantic, const hfx_type *ty,
                           uint32_t parent, uint32_t offset) {
     hfx_fx_effect *fx = b->fx;
@@ -236,6 +244,7 @@ static bool build_params(hfx_builder *b) {
         d->index = p;
         b->param_decls[p] = d;
         fx->params[p].glsl_name = glsl_name_for(b, d->name, d->type);
+        declared_at(b, &fx->params[p], d->loc);
         if (d->mods & MOD_SHARED) fx->params[p].flags |= HFX_FX_PARAM_SHARED;
         if (d->mods & MOD_ROW_MAJOR) fx->params[p].flags |= HFX_FX_PARAM_ROW_MAJOR;
         if (d->mods & MOD_COLUMN_MAJOR) fx->params[p].flags |= HFX_FX_PARAM_COLUMN_MAJOR;

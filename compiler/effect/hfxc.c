@@ -15,16 +15,41 @@ struct hfxc_result {
     hfx_diags diags;
     hfx_ast *ast;
     hfx_fx_effect *effect;
+    const char **deps;     /* hfxc_dependency_at: unique paths, in the order first read */
+    size_t dep_count;
 };
 
 const char *hfxc_version(void) { return "hfxc 0.1.0"; }
+
+static hfxc_result *run_phases(const char *name, const char *text, size_t size, const hfxc_options *opt);
 
 static unsigned default_targets(const hfxc_options *opt) {
     if (opt && opt->targets) return opt->targets;
     return (1u << HFX_TARGET_GLSL330) | (1u << HFX_TARGET_GLSLES300);
 }
 
+/* Every file the preprocessor read, by the path it opened, once each (a #line entry repeats its
+ * file's path; a file included twice has two entries; text from memory or -D has none). */
+static void collect_dependencies(hfxc_result *r) {
+    const hfx_diags *d = &r->diags;
+    r->deps = HFX_NEW_ARRAY(&r->arena, const char *, d->file_count ? d->file_count : 1);
+    if (!r->deps) return;
+    for (uint32_t i = 0; i < d->file_count; i++) {
+        const char *path = d->files[i].path;
+        if (!path) continue;
+        size_t k = 0;
+        while (k < r->dep_count && strcmp(r->deps[k], path) != 0) k++;
+        if (k == r->dep_count) r->deps[r->dep_count++] = path;
+    }
+}
+
 static hfxc_result *compile(const char *name, const char *text, size_t size, const hfxc_options *opt) {
+    hfxc_result *r = run_phases(name, text, size, opt);
+    if (r) collect_dependencies(r);
+    return r;
+}
+
+static hfxc_result *run_phases(const char *name, const char *text, size_t size, const hfxc_options *opt) {
     hfxc_result *r = calloc(1, sizeof *r);
     if (!r) return NULL;
     hfx_arena_init(&r->arena);
@@ -96,4 +121,10 @@ struct hfx_fx_effect *hfxc_result_take_effect(hfxc_result *r) {
 
 char *hfxc_result_ast_dump(const hfxc_result *r) {
     return r && r->ast ? hfx_ast_dump(r->ast) : strdup("");
+}
+
+size_t hfxc_dependency_count(const hfxc_result *r) { return r ? r->dep_count : 0; }
+
+const char *hfxc_dependency_at(const hfxc_result *r, size_t i) {
+    return r && i < r->dep_count ? r->deps[i] : NULL;
 }

@@ -466,7 +466,7 @@ hfx_token *hfx_preprocess(hfx_arena *arena, hfx_diags *diags, const char *name, 
     pp->eof = pp_new_eof(pp, (hfx_loc){0, 0, 0});
     if (!name) name = "memory";
     char *copy = text ? hfx_arena_strndup(arena, text, size) : pp_read_file(arena, name, &size);
-    uint32_t f = hfx_diags_add_file(diags, name, name, copy ? copy : "", copy ? size : 0);
+    uint32_t f = hfx_diags_add_file(diags, name, text ? NULL : name, copy ? copy : "", copy ? size : 0);
     if (!copy) {
         hfx_error(diags, (hfx_loc){f, 1, 1}, X_PP_INCLUDE, "failed to open source file: '%s'", name);
         return pp_new_eof(pp, (hfx_loc){f, 1, 1});

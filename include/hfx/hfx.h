@@ -17,6 +17,7 @@ typedef struct hfx_param hfx_param;
 typedef struct hfx_technique hfx_technique;
 typedef struct hfx_pass hfx_pass;
 typedef struct hfx_annotation hfx_annotation;
+typedef struct hfx_pool hfx_pool;
 
 /* Return codes. */
 enum {
@@ -58,6 +59,7 @@ typedef struct hfx_load_options {
     int separate_uniforms;           /* .fx only: 1 = one GLSL uniform per parameter; 0 = float parameters
                                         packed in vec4 registers, sent in one call per Apply (default) */
     int no_self_check;               /* .fx only: 1 = skip glslang's check of the emitted GLSL (faster loads) */
+    hfx_pool *pool;                  /* NULL, or the pool whose `shared` parameters the effect shares */
 } hfx_load_options;
 
 /* Device: one per GL context, which must be current on every call. */
@@ -75,6 +77,15 @@ int hfx_device_set_program_cache(hfx_device *dev, const char *dir);
 void hfx_device_texture_changed(hfx_device *dev, unsigned int texture);
 void hfx_free(void *p);                                          /* frees strings hfx hands out */
 
+/* Effect pools (D3DX's ID3DXEffectPool): effects loaded with the same hfx_load_options.pool
+ * share every top-level parameter declared `shared`, by name: a value set through any of them is
+ * seen by all and reaches each program when it next applies. An effect joining takes the pool's
+ * value; the same shared name with another type (or struct layout) fails the load with both
+ * declarations' positions (X9001). Clones and reloads stay in the pool. */
+hfx_pool *hfx_pool_create(hfx_device *dev);
+void hfx_pool_destroy(hfx_pool *pool);                           /* effects still in it carry on unpooled */
+hfx_device *hfx_pool_device(const hfx_pool *pool);
+
 /* Effects. */
 hfx_effect *hfx_effect_load(hfx_device *dev, const char *path, const hfx_load_options *opt, char **errors);
 hfx_effect *hfx_effect_load_memory(hfx_device *dev, const void *data, size_t size, const char *name,
@@ -91,6 +102,33 @@ int hfx_effect_end(hfx_effect *fx);                              /* restore what
  * technique is kept by name. On failure nothing changes and errors (may be NULL; hfx_free) says why.
  * Parameter, technique, pass and annotation handles taken before a successful reload are invalid. */
 int hfx_effect_reload(hfx_effect *fx, const char *path, const hfx_load_options *opt, char **errors);
+/* The files the effect was loaded from: a .fx and every file it included (paths as the compiler
+ * opened them), or the .hfxo; from memory, only what it included. *count gets their number. */
+const char *const *hfx_effect_dependencies(const hfx_effect *fx, size_t *count);
+/* Cheap enough for every frame (one stat per dependency, no allocation): when a dependency's
+ * modification time or size changed since the last load or check, hfx_effect_reload from the
+ * file it was loaded from. Returns 1 reloaded, 0 nothing changed, or hfx_effect_reload's error
+ * (the old effect stays; the same files are not tried again until they change again). */
+int hfx_effect_reload_if_changed(hfx_effect *fx, const hfx_load_options *opt, char **errors);
+
+/* What hfx_effect_bind_scene fills parameters from. Matrices in XNA order (row-major, row
+ * vectors, translation in m[12..14]), projection Direct3D style. */
+typedef struct hfx_scene {
+    float world[16], view[16], projection[16];
+    float time, elapsed_time;               /* seconds: Time, ElapsedTime */
+    float viewport_width, viewport_height;  /* pixels: ViewportPixelSize */
+} hfx_scene;
+
+/* FX Composer / DirectX SAS binding: every float parameter whose semantic (case-insensitive) is
+ * World, View, Projection, WorldView, ViewProjection or WorldViewProjection (also WorldViewProj,
+ * ViewProj), each plain or with Inverse, Transpose or InverseTranspose after it, takes that
+ * matrix (a float3x3 or 4x3 its upper-left block); CameraPosition / ViewPosition / EyePosition
+ * the camera (ViewInverse's translation, w = 1); Time, ElapsedTime, ViewportPixelSize (and
+ * ViewportSize) the scene's. Each matrix is computed at most once per call, and a parameter
+ * whose value is unchanged is not set (Apply then sends nothing). Returns how many parameters
+ * the effect binds, or an error code. */
+int hfx_effect_bind_scene(hfx_effect *fx, const hfx_scene *scene);
+int hfx_scene_semantic_known(const char *semantic); /* 1 when hfx_effect_bind_scene fills this semantic */
 
 /* Parameters: Parameters["name"], Elements[i], StructureMembers["name"]. */
 hfx_param *hfx_effect_param(hfx_effect *fx, const char *name);

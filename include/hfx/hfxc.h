@@ -54,6 +54,12 @@ char *hfxc_diagnostics_text(const hfxc_result *r);               /* all messages
 const struct hfx_fx_effect *hfxc_result_effect(const hfxc_result *r); /* NULL when compilation failed */
 struct hfx_fx_effect *hfxc_result_take_effect(hfxc_result *r);   /* caller owns it now */
 char *hfxc_result_ast_dump(const hfxc_result *r);                /* readable AST; free() it */
+/* The files the compile read: the root (unless compiled from memory), then every #include'd file
+ * in the order first opened, each once, by the path it was opened with (an include folder or the
+ * including file's folder joined to the name, with the case found on disk). Also after errors:
+ * what was read up to them. Strings live as long as the result. */
+size_t hfxc_dependency_count(const hfxc_result *r);
+const char *hfxc_dependency_at(const hfxc_result *r, size_t i);
 const char *hfxc_version(void);
 
 #ifdef __cplusplus

@@ -30,27 +30,27 @@ static hfx_fx_effect *sample_effect(void) {
     hfx_fx_param *p = fx->params;
     /* 0: float4x4 world : World */
     p[0] = (hfx_fx_param){dup("world"), dup("World"), dup("world"), HFX_CLASS_MATRIX, HFX_TYPE_FLOAT, 4, 4, 0,
-                          HFX_NONE, HFX_NONE, 0, 0, 16, HFX_NONE, 0, HFX_NONE, 0, NULL};
+                          HFX_NONE, HFX_NONE, 0, 0, 16, HFX_NONE, 0, HFX_NONE, 0, NULL, dup("sample.fx"), 3, 7};
     /* 1: float4 color <UIName, UIMin> = {0.05, 0.05, 0.05, 1} */
     p[1] = (hfx_fx_param){dup("color"), NULL, dup("color"), HFX_CLASS_VECTOR, HFX_TYPE_FLOAT, 1, 4, 0,
-                          HFX_NONE, HFX_NONE, 0, 16, 4, 0, 2, HFX_NONE, 0, NULL};
+                          HFX_NONE, HFX_NONE, 0, 16, 4, 0, 2, HFX_NONE, 0, NULL, NULL, 0, 0};
     /* 2: struct { float3 d; int on; } lights[2] */
     p[2] = (hfx_fx_param){dup("lights"), NULL, dup("lights"), HFX_CLASS_STRUCT, HFX_TYPE_VOID, 0, 0, 2,
-                          HFX_NONE, 5, 2, 20, 8, HFX_NONE, 0, HFX_NONE, HFX_FX_PARAM_SHARED, NULL};
+                          HFX_NONE, 5, 2, 20, 8, HFX_NONE, 0, HFX_NONE, HFX_FX_PARAM_SHARED, NULL, NULL, 0, 0};
     /* 3: texture2D tex; 4: sampler s; */
     p[3] = (hfx_fx_param){dup("tex"), NULL, NULL, HFX_CLASS_OBJECT, HFX_TYPE_TEXTURE2D, 0, 0, 0,
-                          HFX_NONE, HFX_NONE, 0, 28, 0, HFX_NONE, 0, HFX_NONE, 0, NULL};
+                          HFX_NONE, HFX_NONE, 0, 28, 0, HFX_NONE, 0, HFX_NONE, 0, NULL, NULL, 0, 0};
     p[4] = (hfx_fx_param){dup("s"), NULL, dup("s"), HFX_CLASS_OBJECT, HFX_TYPE_SAMPLER, 0, 0, 0,
-                          HFX_NONE, HFX_NONE, 0, 28, 0, HFX_NONE, 0, 0, 0, NULL};
+                          HFX_NONE, HFX_NONE, 0, 28, 0, HFX_NONE, 0, 0, 0, NULL, NULL, 0, 0};
     /* 5, 6: the elements; 7, 8: the members of element 0 */
     p[5] = (hfx_fx_param){dup("lights"), NULL, NULL, HFX_CLASS_STRUCT, HFX_TYPE_VOID, 0, 0, 0,
-                          2, 7, 2, 20, 4, HFX_NONE, 0, HFX_NONE, 0, NULL};
+                          2, 7, 2, 20, 4, HFX_NONE, 0, HFX_NONE, 0, NULL, NULL, 0, 0};
     p[6] = (hfx_fx_param){dup("lights"), NULL, NULL, HFX_CLASS_STRUCT, HFX_TYPE_VOID, 0, 0, 0,
-                          2, HFX_NONE, 0, 24, 4, HFX_NONE, 0, HFX_NONE, 0, dup("not really a string param")};
+                          2, HFX_NONE, 0, 24, 4, HFX_NONE, 0, HFX_NONE, 0, dup("not really a string param"), NULL, 0, 0};
     p[7] = (hfx_fx_param){dup("d"), dup("DIR"), dup("d"), HFX_CLASS_VECTOR, HFX_TYPE_FLOAT, 1, 3, 0,
-                          5, HFX_NONE, 0, 20, 3, HFX_NONE, 0, HFX_NONE, 0, NULL};
+                          5, HFX_NONE, 0, 20, 3, HFX_NONE, 0, HFX_NONE, 0, NULL, NULL, 0, 0};
     p[8] = (hfx_fx_param){dup("on"), NULL, dup("on"), HFX_CLASS_SCALAR, HFX_TYPE_INT, 1, 1, 0,
-                          5, HFX_NONE, 0, 23, 1, HFX_NONE, 0, HFX_NONE, 0, NULL};
+                          5, HFX_NONE, 0, 23, 1, HFX_NONE, 0, HFX_NONE, 0, NULL, NULL, 0, 0};
     fx->value_words = 28;
     fx->values = calloc(28, sizeof *fx->values);
     for (int i = 0; i < 16; i++) fx->values[i] = f2u(i % 5 == 0 ? 1.0f : 0.0f);
@@ -133,6 +133,9 @@ static void compare_effects(const hfx_fx_effect *a, const hfx_fx_effect *b) {
         same_string(x->semantic, y->semantic);
         same_string(x->glsl_name, y->glsl_name);
         same_string(x->string, y->string);
+        same_string(x->file, y->file);
+        CHECK_INT(x->line, y->line);
+        CHECK_INT(x->col, y->col);
         CHECK_INT(x->klass, y->klass);
         CHECK_INT(x->type, y->type);
         CHECK_INT(x->rows, y->rows);
@@ -402,17 +405,18 @@ static void hostile_contents_are_refused(void) {
     /* A record count that would need more bytes than the section has. */
     CHECK_STR(read_patched(data, size, parm, 0x40000000u, err, sizeof err),
               "hfxo: section PARM holds 1073741824 records, more than fit");
+    CHECK_INT(get32(b + parm + 4), 84); /* 21 words a record: positions added to version 2 */
     /* Param 5 (an element) claims its parent is itself: a cycle. */
-    CHECK_STR(read_patched(data, size, parm + 8 + 5 * 72 + 9 * 4, 5, err, sizeof err),
+    CHECK_STR(read_patched(data, size, parm + 8 + 5 * 84 + 9 * 4, 5, err, sizeof err),
               "hfxo: parameter 5 is not inside its parent 2");
     /* Param 0's name points past the string table. */
     CHECK_STR(read_patched(data, size, parm + 8, 0x7fffffff, err, sizeof err),
               "hfxo: string offset 2147483647 is outside the string table");
     /* Param 1's values run past the end of the buffer. */
-    CHECK_STR(read_patched(data, size, parm + 8 + 72 + 12 * 4, 27, err, sizeof err),
+    CHECK_STR(read_patched(data, size, parm + 8 + 84 + 12 * 4, 27, err, sizeof err),
               "hfxo: parameter 1 has values outside the buffer");
     /* Param 2's children start before it. */
-    CHECK_STR(read_patched(data, size, parm + 8 + 2 * 72 + 10 * 4, 1, err, sizeof err),
+    CHECK_STR(read_patched(data, size, parm + 8 + 2 * 84 + 10 * 4, 1, err, sizeof err),
               "hfxo: parameter 2 has children that do not exist");
     /* The first pass runs a program that does not exist. */
     CHECK_STR(read_patched(data, size, pass + 8 + 5 * 4, 1, err, sizeof err), "hfxo: pass 0 is inconsistent");

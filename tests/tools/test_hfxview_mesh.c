@@ -8,6 +8,7 @@
 
 #include "../../tools/hfxview/mesh.c"
 #include "../../tools/hfxview/obj.c"
+#include "../../tools/hfxview/teapot.c"
 #include "../../tools/hfxview/vmath.c"
 
 static int unit(const float *v) { return fabsf(sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) - 1.0f) < 1e-4f; }

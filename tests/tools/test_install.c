@@ -51,7 +51,12 @@ static const char *cmake_lists =
     "find_package(PkgConfig REQUIRED)\n"
     "pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)\n"
     "add_executable(outside main.c)\n"
-    "target_link_libraries(outside PRIVATE hfx::hfx PkgConfig::OSMESA)\n";
+    "target_link_libraries(outside PRIVATE hfx::hfx PkgConfig::OSMESA)\n"
+    "hfx_add_effects(shaders white.fx)\n"; /* the installed hfxc, through hfxEffects.cmake */
+
+static const char *white_fx =
+    "float4 ps() : COLOR { return float4(1, 1, 1, 1); }\n"
+    "technique t0 { pass p0 { PixelShader = compile ps_2_0 ps(); } }\n";
 
 static void write_file(const char *path, const char *text) {
     FILE *f = fopen(path, "w");
@@ -106,6 +111,12 @@ static void builds_with_pkg_config(void) {
     check_program_output(out);
     free(out);
     free(cmd);
+    /* build scripts find hfxc through the .pc file */
+    cmd = view_format("\"$(PKG_CONFIG_PATH=%s/lib/pkgconfig pkg-config --variable=hfxc hfx)\" --version", prefix);
+    CHECK_INT(run(cmd, &out), 0);
+    CHECK_CONTAINS(out, "hfxc 0.1.0");
+    free(out);
+    free(cmd);
     free(src);
 }
 
@@ -115,12 +126,20 @@ static void builds_with_find_package(void) {
     run(mk, NULL);
     char *lists = view_format("%s/CMakeLists.txt", dir);
     write_file(lists, cmake_lists);
+    char *fx = view_format("%s/white.fx", dir);
+    write_file(fx, white_fx);
+    free(fx);
     const char *san = sanitized ? "-DCMAKE_C_FLAGS=-fsanitize=address,undefined" : "";
     char *cmd = view_format("cmake -S %s -B %s/build -DCMAKE_PREFIX_PATH=%s %s >/dev/null && "
                             "cmake --build %s/build >/dev/null && ASAN_OPTIONS=detect_leaks=0 %s/build/outside",
                             dir, dir, prefix, san, dir, dir);
     CHECK_INT(run(cmd, &out), 0);
     check_program_output(out);
+    char *hfxo = view_format("%s/build/effects/white.hfxo", dir);
+    FILE *f = fopen(hfxo, "rb");
+    CHECK(f != NULL); /* hfx_add_effects ran the installed hfxc */
+    if (f) fclose(f);
+    free(hfxo);
     free(out);
     free(cmd);
     free(lists);

@@ -324,19 +324,15 @@ static int bind_one(hfx_param *p, const hv_scene *s) {
     float m[16], v = 0;
     const char *sem = hfx_param_semantic(p);
     hfx_param_class k = hfx_param_get_class(p);
+    if (sem && *sem && hfx_scene_semantic_known(sem)) return 0; /* hfx_effect_bind_scene's, set already */
     if (k == HFX_CLASS_MATRIX && hfx_param_elements(p) == 0) {
-        if (sem && *sem && hv_scene_matrix(s, sem, 1, m)) return set_matrix_param(p, m);
+        if (sem && *sem && hv_scene_matrix(s, sem, 1, m)) return set_matrix_param(p, m); /* "WVP", "ViewI"... */
         return hv_scene_matrix(s, hfx_param_name(p), 0, m) && set_matrix_param(p, m);
     }
     if (k == HFX_CLASS_STRUCT) return bind_struct(p, s);
     if (k != HFX_CLASS_SCALAR && k != HFX_CLASS_VECTOR) return 0;
-    if (sem && *sem) {
-        char low[64];
-        lower_copy(low, sizeof low, sem);
-        if (!strcmp(low, "cameraposition") || !strcmp(low, "viewposition") || !strcmp(low, "eyeposition"))
-            return bind_role(p, R_CAMERA, 0, s);
-        if (is_viewport_size(low)) return set_viewport_size(p, s);
-    }
+    /* the runtime binds the semantics (hfx_effect_bind_scene); DigitalRise's post-processing
+     * declares its viewport size by name only */
     char low_name[64];
     lower_copy(low_name, sizeof low_name, hfx_param_name(p));
     if (is_viewport_size(low_name)) return set_viewport_size(p, s);
@@ -344,8 +340,22 @@ static int bind_one(hfx_param *p, const hv_scene *s) {
     return bind_role(p, r, v, s);
 }
 
+/* The standard SAS semantics go through the runtime (hfx_effect_bind_scene); the rest of this
+ * file guesses from names, for tutorials' effects that carry no semantics. */
+static int bind_semantics(hfx_effect *fx, const hv_scene *s) {
+    hfx_scene scene;
+    memset(&scene, 0, sizeof scene);
+    memcpy(scene.world, s->world, sizeof scene.world);
+    memcpy(scene.view, s->view, sizeof scene.view);
+    memcpy(scene.projection, s->projection, sizeof scene.projection);
+    scene.viewport_width = (float)s->width;
+    scene.viewport_height = (float)s->height;
+    int n = hfx_effect_bind_scene(fx, &scene);
+    return n > 0 ? n : 0;
+}
+
 int hv_bind_scene(hfx_effect *fx, const hv_scene *s) {
-    int n = 0;
+    int n = bind_semantics(fx, s);
     for (size_t i = 0; i < hfx_effect_param_count(fx); i++) n += bind_one(hfx_effect_param_at(fx, i), s);
     return n;
 }

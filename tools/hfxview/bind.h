@@ -1,6 +1,6 @@
-/* bind.h: filling an effect's parameters without code, the way FX Composer does: matrices by
- * semantic or name (World, View, Projection, WorldViewProjection, their Inverse / Transpose /
- * InverseTranspose forms, ViewInverse...), the camera position, and light and material
+/* bind.h: filling an effect's parameters without code, the way FX Composer does: the standard
+ * SAS semantics through the runtime's hfx_effect_bind_scene, then matrices by name or other
+ * spellings (World, matWorldViewProj, WorldITXf...), the camera position, and light and material
  * parameters the seed tutorials use (LightDirection, direccionLuz, posicionLuz, LightPosition[],
  * structs of lights...). Lights and materials are only given values when the effect left them
  * at zero (no initializer), so an effect's own defaults win, unless --light names the light;

@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "bind.h"
 #include "context.h"
@@ -25,6 +26,7 @@ typedef struct viewer {
     hv_gpu_mesh gpu;
     hv_textures textures;
     hfx_technique *technique;
+    hfx_load_options load;   /* the -D / -I the effect was loaded with, for reloads */
     char err[1024];
 } viewer;
 
@@ -49,16 +51,21 @@ static char *default_output(const char *input) {
     return out;
 }
 
-static int load_effect(viewer *v) {
-    hfx_load_options lo = {0};
-    lo.defines = v->opt.defines;
-    lo.define_count = v->opt.define_count;
-    lo.include_dirs = v->opt.include_dirs;
-    lo.include_dir_count = v->opt.include_dir_count;
-    char *errors = NULL;
-    v->fx = hfx_effect_load(v->dev, v->opt.input, &lo, &errors);
-    if (errors && *errors) fputs(errors, stderr); /* the compiler's own file(line,col): lines */
+/* The compiler's own file(line,col): lines, ending with a newline. */
+static void print_errors(const char *errors) {
+    if (errors && *errors) fputs(errors, stderr);
     if (errors && *errors && errors[strlen(errors) - 1] != '\n') fputc('\n', stderr);
+}
+
+static int load_effect(viewer *v) {
+    hfx_load_options *lo = &v->load;
+    lo->defines = v->opt.defines;
+    lo->define_count = v->opt.define_count;
+    lo->include_dirs = v->opt.include_dirs;
+    lo->include_dir_count = v->opt.include_dir_count;
+    char *errors = NULL;
+    v->fx = hfx_effect_load(v->dev, v->opt.input, lo, &errors);
+    print_errors(errors);
     if (!v->fx && !(errors && strstr(errors, "error")))
         fprintf(stderr, "%s: error: cannot load the effect: %s\n", v->opt.input, hfx_device_last_error(v->dev));
     hfx_free(errors);
@@ -165,9 +172,40 @@ static int save_png(viewer *v) {
     return rc;
 }
 
+/* --watch: reloads when the effect's files changed (1), keeping the technique by name and
+ * binding what the new code added; a broken edit prints its located errors and keeps the
+ * effect as it was (0, as when nothing changed). */
+static int watch_step(viewer *v) {
+    hfx_effect_set_current_technique(v->fx, v->technique);
+    char *errors = NULL;
+    int rc = hfx_effect_reload_if_changed(v->fx, &v->load, &errors);
+    print_errors(errors);
+    hfx_free(errors);
+    if (rc < 0) fprintf(stderr, "hfxview: %s did not reload; the last good effect stays\n", v->opt.input);
+    if (rc != 1) return 0;
+    v->technique = hfx_effect_current_technique(v->fx);
+    hv_textures_release(&v->textures, v->gl);
+    if (apply_options(v) != EXIT_OK) fprintf(stderr, "hfxview: the reloaded effect does not take the options\n");
+    fprintf(stderr, "hfxview: reloaded %s\n", v->opt.input);
+    return 1;
+}
+
+/* Headless --watch: the PNG again after each reload, until the process is stopped; a line
+ * on stderr once each is complete, for whoever waits on it. */
+static int watch_headless(viewer *v) {
+    for (int written = 1;; written++) {
+        fprintf(stderr, "hfxview: wrote %s (%d)\n", v->opt.output ? v->opt.output : "the PNG", written);
+        while (!watch_step(v)) nanosleep(&(struct timespec){0, 50 * 1000 * 1000}, NULL);
+        int rc = draw(v);
+        if (rc == EXIT_OK) rc = save_png(v);
+        if (rc != EXIT_OK) return rc;
+    }
+}
+
 /* The window loop: T cycles techniques, Left / Right turn the mesh, Escape quits. */
 static int show_window(viewer *v) {
     while (!hv_context_should_close(v->ctx)) {
+        if (v->opt.watch) watch_step(v);
         if (draw(v) != EXIT_OK) return EXIT_EFFECT;
         hv_context_present(v->ctx);
         if (hv_context_key_pressed(v->ctx, 'T')) {
@@ -222,7 +260,8 @@ static int run(viewer *v) {
         return save_png(v);
     }
     if ((rc = draw(v)) != EXIT_OK) return rc;
-    return save_png(v);
+    if ((rc = save_png(v)) != EXIT_OK || !v->opt.watch) return rc;
+    return watch_headless(v);
 }
 
 static void cleanup(viewer *v) {

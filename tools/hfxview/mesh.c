@@ -1,7 +1,5 @@
-/* mesh.c: the built-in shapes (sphere, plane, quad, cube, torus, teapot) and the steps every
- * mesh goes through (normals, tangents, winding). The teapot is not the Utah Bezier patch set:
- * it is a lathed body and lid with a tube spout and handle, which reads as a teapot at a
- * glance and costs no patch table. */
+/* mesh.c: the built-in shapes (sphere, plane, quad, cube, torus, and the Utah teapot of
+ * teapot.c) and the steps every mesh goes through (normals, tangents, winding). */
 #include "mesh.h"
 
 #include <math.h>
@@ -9,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "teapot.h"
 #include "vmath.h"
 
 #define PI 3.14159265358979323846f
@@ -212,49 +211,12 @@ static void make_cube(hv_mesh *m) {
     add_face(m, hv_vec3_make(-h, -h, h), hv_vec3_make(2 * h, 0, 0), hv_vec3_make(0, 0, -2 * h), 1);  /* -y */
 }
 
-/* Lathe: revolve a profile of (radius, height) points, listed from top to bottom, about y. */
-typedef struct { const float (*pts)[2]; int count; } lathe_ctx;
-
-static void lathe_fn(float u, float v, const void *ctx, float pos[3], float normal[3]) {
-    const lathe_ctx *l = ctx;
-    int i = (int)lroundf(v * (float)(l->count - 1));
-    int prev = i > 0 ? i - 1 : i, next = i < l->count - 1 ? i + 1 : i;
-    float dr = l->pts[next][0] - l->pts[prev][0], dy = l->pts[next][1] - l->pts[prev][1];
-    float phi = u * 2.0f * PI;
-    hv_vec3 radial = hv_vec3_make(sinf(phi), 0.0f, cosf(phi));
-    /* Going down the profile, (-dy, dr) points outward in the (radius, height) plane. */
-    hv_vec3 n = hv_vec3_normalize(hv_vec3_add(hv_vec3_scale(radial, -dy), hv_vec3_make(0, dr, 0)));
-    put3(normal, n);
-    put3(pos, hv_vec3_add(hv_vec3_scale(radial, l->pts[i][0]), hv_vec3_make(0, l->pts[i][1], 0)));
-}
-
-/* Tube: a circle of radius r(t) swept along a path in the xy plane. */
-typedef struct { hv_vec3 p0, p1, p2; float r0, r1; } tube_ctx; /* quadratic Bezier path */
-
-static void tube_fn(float u, float v, const void *ctx, float pos[3], float normal[3]) {
-    const tube_ctx *t = ctx;
-    float s = u, a = v * 2.0f * PI;
-    hv_vec3 c = hv_vec3_add(hv_vec3_add(hv_vec3_scale(t->p0, (1 - s) * (1 - s)), hv_vec3_scale(t->p1, 2 * s * (1 - s))),
-                            hv_vec3_scale(t->p2, s * s));
-    hv_vec3 d = hv_vec3_add(hv_vec3_scale(hv_vec3_sub(t->p1, t->p0), 2 * (1 - s)), hv_vec3_scale(hv_vec3_sub(t->p2, t->p1), 2 * s));
-    hv_vec3 side = hv_vec3_normalize(hv_vec3_cross(d, hv_vec3_make(0, 0, 1)));
-    hv_vec3 n = hv_vec3_add(hv_vec3_scale(side, cosf(a)), hv_vec3_make(0, 0, sinf(a)));
-    put3(normal, n);
-    put3(pos, hv_vec3_add(c, hv_vec3_scale(n, t->r0 + (t->r1 - t->r0) * s)));
-}
-
+/* The Utah teapot (teapot.c), its height centred on the origin and its lid's axis on y,
+ * scaled so the spout's tip touches the unit sphere. */
 static void make_teapot(hv_mesh *m) {
-    static const float body[][2] = {
-        {0.00f, 0.78f}, {0.07f, 0.77f}, {0.10f, 0.72f}, {0.06f, 0.66f}, {0.20f, 0.62f}, {0.38f, 0.58f},
-        {0.50f, 0.53f}, {0.56f, 0.50f}, {0.62f, 0.46f}, {0.72f, 0.36f}, {0.80f, 0.22f}, {0.84f, 0.06f},
-        {0.83f, -0.10f}, {0.78f, -0.24f}, {0.68f, -0.36f}, {0.56f, -0.42f}, {0.40f, -0.44f}, {0.00f, -0.44f}};
-    lathe_ctx l = {body, (int)(sizeof body / sizeof body[0])};
-    add_grid(m, 48, l.count - 1, lathe_fn, &l);
-    tube_ctx spout = {{0.62f, -0.12f, 0}, {1.12f, -0.05f, 0}, {1.18f, 0.42f, 0}, 0.16f, 0.06f};
-    add_grid(m, 16, 12, tube_fn, &spout);
-    tube_ctx handle = {{-0.70f, 0.36f, 0}, {-1.45f, 0.30f, 0}, {-0.74f, -0.22f, 0}, 0.06f, 0.06f};
-    add_grid(m, 16, 12, tube_fn, &handle);
-    float r = 0; /* scale about the lid's axis so the spout tip touches the unit sphere */
+    hv_teapot_add(m, 8);
+    for (size_t i = 0; i < m->vcount; i++) m->v[i].pos[1] -= 3.15f / 2.0f; /* Newell's height */
+    float r = 0;
     for (size_t i = 0; i < m->vcount; i++) r = fmaxf(r, hv_vec3_length(vpos(m, (uint32_t)i)));
     for (size_t i = 0; i < m->vcount; i++)
         for (int k = 0; k < 3; k++) m->v[i].pos[k] /= r > 0 ? r : 1;

@@ -29,6 +29,7 @@ typedef struct hv_options {
     int blend_add;           /* --blend-passes add */
     float background[4];
     int window;              /* --window: show in a GLFW window */
+    int watch;               /* --watch: reload the effect when its files change */
     int egl;                 /* --egl: headless on EGL (into a framebuffer object) instead of OSMesa */
     int list;                /* --list: print techniques and parameters */
     int help;
