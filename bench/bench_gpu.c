@@ -5,9 +5,10 @@
  *   vertex-bound: the same plane as a 1001 x 1001 grid (2 M triangles) at 256 x 256.
  * Each case also compares the two pictures (largest channel difference, /255): a ratio only
  * counts when they agree (BENCH_GPU_PNG=1 writes the last pair to /tmp). Prints frame times and
- * the ratio hfx / hand-written. Covered so far:
- * ambient.fx, point_specular.fx and spot_specular.fx (both techniques; specular and distance
- * attenuation on). Run by hand: bench_gpu [rounds]. */
+ * the ratio hfx / hand-written. Covered: the 003 tutorial's effects (ambient, ambient_textured,
+ * directional, point and spot, with and without specular, both techniques; specular and
+ * distance attenuation on). Not yet: phong, pointlights, tutorial0, fxcomposer_empty and
+ * multilights_repaired. Run by hand: bench_gpu [rounds]. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -161,33 +162,59 @@ static const char hand_ambient_vs[] =
 static const char hand_ambient_fs[] =
     "#version 330 core\nuniform vec4 ambient;\nout vec4 o;\nvoid main() { o = ambient; }\n";
 
-/* 003's point and spot lights, specular (Código 7-7) and distance attenuation on; SPOT adds the
- * cone with its cosines computed on the CPU; TEXTURED multiplies the texture in. */
+/* 003's lights (Códigos 7-3 to 7-7): DIRECTIONAL (the direction normalised on the CPU: l = -dir),
+ * else a point light, with SPOT's cone (cosines on the CPU); SPECULAR adds Código 7-7's term,
+ * ATTEN the distance attenuation; TEXTURED multiplies the texture in. The directional effects
+ * add the ambient colour before the specular term, the point and spot ones after attenuating. */
 static const char hand_light_fs[] =
     "in vec3 wp, wn;\nin vec2 tc;\n"
-    "uniform vec3 light, cam, spot_dir, atten;\n"
+    "uniform vec3 light, light_dir, cam, spot_dir, atten;\n"
     "uniform vec4 diffuse, ambient, specular;\n"
     "uniform float ks, shininess, range, cos_inner, cos_outer, falloff;\n"
     "uniform sampler2D tex;\n"
     "out vec4 o;\n"
     "void main() {\n"
+    "#ifdef DIRECTIONAL\n"
+    "  vec3 l = -light_dir;\n"
+    "#else\n"
     "  vec3 l = normalize(light - wp);\n"
+    "#endif\n"
     "  float d = max(dot(l, wn), 0.0);\n"
     "  vec4 c = diffuse * d;\n"
+    "#ifdef DIRECTIONAL\n"
+    "  c += ambient;\n"
+    "#endif\n"
+    "#ifdef SPECULAR\n"
     "  vec3 r = normalize(2.0 * wn * d - l);\n"
     "  c += ks * pow(max(dot(r, normalize(cam - wp)), 0.0), shininess) * specular * d;\n"
+    "#endif\n"
     "#ifdef SPOT\n"
     "  float ca = max(dot(spot_dir, l), 0.0);\n"
     "  if (ca < cos_inner && ca > cos_outer) c *= pow((ca - cos_outer) / (cos_inner - cos_outer), falloff);\n"
     "  else if (ca <= cos_outer) c = vec4(0.0);\n"
     "#endif\n"
+    "#ifdef ATTEN\n"
     "  float dist = distance(wp, light);\n"
     "  c *= dist <= range ? min(1.0 / (atten.x + atten.y * dist + atten.z * dist * dist), 1.0) : 0.0;\n"
+    "#endif\n"
+    "#ifndef DIRECTIONAL\n"
     "  c += ambient;\n"
+    "#endif\n"
     "#ifdef TEXTURED\n"
     "  c *= texture(tex, tc);\n"
     "#endif\n"
     "  o = vec4(c.rgb, 1.0);\n"
+    "}\n";
+
+/* ambient_textured.fx: the ambient colour, times the texture in Texturizado. */
+static const char hand_ambient_tex_fs[] =
+    "in vec3 wp, wn;\nin vec2 tc;\nuniform vec4 ambient;\nuniform sampler2D tex;\nout vec4 o;\n"
+    "void main() {\n"
+    "#ifdef TEXTURED\n"
+    "  o = ambient * texture(tex, tc);\n"
+    "#else\n"
+    "  o = ambient;\n"
+    "#endif\n"
     "}\n";
 
 static GLuint compile(GLenum type, const char *const *parts, int n) {
@@ -205,9 +232,10 @@ static GLuint compile(GLenum type, const char *const *parts, int n) {
 }
 
 static GLuint hand_program(const char *vs, const char *fs, const char *defines) {
-    const char *vparts[] = {vs}, *fparts[] = {"#version 330 core\n", defines, fs};
+    const char *vparts[] = {vs}, *whole[] = {fs}, *fparts[] = {"#version 330 core\n", defines, fs};
     GLuint v = compile(GL_VERTEX_SHADER, vparts, 1), p = f.CreateProgram();
-    GLuint s = compile(GL_FRAGMENT_SHADER, fs == hand_ambient_fs ? (const char *[]){fs} : fparts, fs == hand_ambient_fs ? 1 : 3);
+    /* hand_ambient_fs carries its own #version line */
+    GLuint s = fs == hand_ambient_fs ? compile(GL_FRAGMENT_SHADER, whole, 1) : compile(GL_FRAGMENT_SHADER, fparts, 3);
     f.AttachShader(p, v);
     f.AttachShader(p, s);
     f.LinkProgram(p);
@@ -255,6 +283,8 @@ static void set_hand_uniforms(GLuint p, const scene *s, GLuint texture, int size
     float len = sqrtf(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
     for (int i = 0; i < 3; i++) dir[i] /= len;
     u3(p, "light", s->light), u3(p, "cam", s->eye), u3(p, "spot_dir", dir), u3(p, "atten", mat.c);
+    float light_dir[3] = {-dir[0], -dir[1], -dir[2]}; /* directional: shining from the light to the target */
+    u3(p, "light_dir", light_dir);
     u4(p, "diffuse", mat.diffuse), u4(p, "ambient", mat.ambient), u4(p, "specular", mat.specular);
     u1(p, "ks", mat.ks), u1(p, "shininess", mat.shininess), u1(p, "range", mat.range);
     u1(p, "cos_inner", cosf(mat.inner)), u1(p, "cos_outer", cosf(mat.outer)), u1(p, "falloff", mat.falloff);
@@ -273,6 +303,8 @@ static void set_effect_params(hfx_effect *fx, const scene *s, GLuint texture) {
     hfx_param_set_matrix(hfx_effect_param(fx, "view"), s->view);
     hfx_param_set_matrix(hfx_effect_param(fx, "projection"), s->proj);
     set_param(fx, "posicionLuz", s->light, 3), set_param(fx, "blancoLuz", s->target, 3);
+    float dir[3] = {s->target[0] - s->light[0], s->target[1] - s->light[1], s->target[2] - s->light[2]};
+    set_param(fx, "direccionLuz", dir, 3); /* the shader normalises it */
     set_param(fx, "posicionCamara", s->eye, 3);
     set_param(fx, "colorMaterialDifuso", mat.diffuse, 4), set_param(fx, "colorMaterialAmbiental", mat.ambient, 4);
     set_param(fx, "colorMaterialEspecular", mat.specular, 4);
@@ -286,14 +318,29 @@ static void set_effect_params(hfx_effect *fx, const scene *s, GLuint texture) {
     if ((b = hfx_effect_param(fx, "texturaModelo"))) hfx_param_set_texture(b, texture);
 }
 
-typedef struct bench_case { const char *file, *technique, *fs_defines; int ambient; } bench_case;
+typedef struct bench_case { const char *file, *technique, *fs_defines; const char *fs; } bench_case;
 
+#define TEX "#define TEXTURED\n"
+#define PT "#define ATTEN\n"
+#define SP "#define SPOT\n#define ATTEN\n"
+#define DIR "#define DIRECTIONAL\n"
+#define SPEC "#define SPECULAR\n"
 static const bench_case cases[] = {
-    {"ambient.fx", "ModeloAmbiental", NULL, 1},
-    {"point_specular.fx", "Material", "", 0},
-    {"point_specular.fx", "Texturizado", "#define TEXTURED\n", 0},
-    {"spot_specular.fx", "Material", "#define SPOT\n", 0},
-    {"spot_specular.fx", "Texturizado", "#define SPOT\n#define TEXTURED\n", 0},
+    {"ambient.fx", "ModeloAmbiental", "", hand_ambient_fs},
+    {"ambient_textured.fx", "Material", "", hand_ambient_tex_fs},
+    {"ambient_textured.fx", "Texturizado", TEX, hand_ambient_tex_fs},
+    {"directional.fx", "Material", DIR, hand_light_fs},
+    {"directional.fx", "Texturizado", DIR TEX, hand_light_fs},
+    {"directional_specular.fx", "Material", DIR SPEC, hand_light_fs},
+    {"directional_specular.fx", "Texturizado", DIR SPEC TEX, hand_light_fs},
+    {"point.fx", "Material", PT, hand_light_fs},
+    {"point.fx", "Texturizado", PT TEX, hand_light_fs},
+    {"point_specular.fx", "Material", PT SPEC, hand_light_fs},
+    {"point_specular.fx", "Texturizado", PT SPEC TEX, hand_light_fs},
+    {"spot.fx", "Material", SP, hand_light_fs},
+    {"spot.fx", "Texturizado", SP TEX, hand_light_fs},
+    {"spot_specular.fx", "Material", SP SPEC, hand_light_fs},
+    {"spot_specular.fx", "Texturizado", SP SPEC TEX, hand_light_fs},
 };
 enum { CASES = sizeof cases / sizeof *cases };
 
@@ -349,14 +396,14 @@ static void run_case(hfx_device *dev, const bench_case *c, const mesh *quad, con
     scene s = make_scene();
     set_effect_params(fx, &s, texture);
     side h = {fx, hfx_technique_pass(hfx_effect_technique(fx, c->technique), 0), 0, 0};
-    side r = {NULL, NULL, c->ambient ? hand_program(hand_ambient_vs, hand_ambient_fs, "")
-                                     : hand_program(hand_vs, hand_light_fs, c->fs_defines), 0};
+    int ambient = c->fs == hand_ambient_fs;
+    side r = {NULL, NULL, hand_program(ambient ? hand_ambient_vs : hand_vs, c->fs, c->fs_defines), 0};
     const struct { const char *name; const mesh *m; int size; } shapes[2] = {{"pixel", quad, BIG}, {"vertex", grid, SMALL}};
     for (int k = 0; k < 2; k++) {
         const mesh *m = shapes[k].m;
         h.vao = bind_mesh(m, hfx_pass_attribute_location(h.pass, "POSITION"), hfx_pass_attribute_location(h.pass, "NORMAL"),
                           hfx_pass_attribute_location(h.pass, "TEXCOORD0"));
-        r.vao = bind_mesh(m, 0, c->ambient ? -1 : 1, c->ambient ? -1 : 2);
+        r.vao = bind_mesh(m, 0, ambient ? -1 : 1, ambient ? -1 : 2);
         hfx_device_set_viewport(dev, 0, 0, shapes[k].size, shapes[k].size);
         set_hand_uniforms(r.program, &s, texture, shapes[k].size);
         int diff = picture_difference(dev, &h, &r, m, shapes[k].size, shapes[k].size);
