@@ -7,8 +7,8 @@
  * counts when they agree (BENCH_GPU_PNG=1 writes the last pair to /tmp). Prints frame times and
  * the ratio hfx / hand-written. Covered: the 003 tutorial's effects (ambient, ambient_textured,
  * directional, point and spot, with and without specular, both techniques; specular and
- * distance attenuation on). Not yet: phong, pointlights, tutorial0, fxcomposer_empty and
- * multilights_repaired. Run by hand: bench_gpu [rounds]. */
+ * distance attenuation on), tutorial0, fxcomposer_empty and phong. Not yet: pointlights and
+ * multilights_repaired (arrays of lights in loops). Run by hand: bench_gpu [rounds]. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -124,7 +124,7 @@ static GLuint bind_mesh(const mesh *m, int pos, int normal, int uv) {
     return vao;
 }
 
-static GLuint make_texture(void) {
+static GLuint make_texture(GLint wrap) {
     enum { T = 256 };
     unsigned char *px = malloc(T * T * 4);
     for (int y = 0; y < T; y++)
@@ -139,6 +139,8 @@ static GLuint make_texture(void) {
     f.GenerateMipmap(GL_TEXTURE_2D);
     f.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR); /* the seeds' sampler_state */
     f.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    f.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap); /* the effect's AddressU / AddressV */
+    f.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap);
     f.BindTexture(GL_TEXTURE_2D, 0);
     free(px);
     return t;
@@ -206,6 +208,24 @@ static const char hand_light_fs[] =
     "  o = vec4(c.rgb, 1.0);\n"
     "}\n";
 
+/* tutorial0.fx: the texture. fxcomposer_empty.fx: white. */
+static const char hand_texture_fs[] =
+    "in vec3 wp, wn;\nin vec2 tc;\nuniform sampler2D tex;\nout vec4 o;\nvoid main() { o = texture(tex, tc); }\n";
+static const char hand_white_fs[] = "out vec4 o;\nvoid main() { o = vec4(1.0); }\n";
+
+/* phong.fx (000 §6): the light direction and the three colour products on the CPU. */
+static const char hand_phong_fs[] =
+    "in vec3 wp, wn;\nin vec2 tc;\n"
+    "uniform vec3 to_light, cam;\nuniform vec4 ambient_term, diffuse_term, specular_term;\n"
+    "uniform float shininess;\nuniform sampler2D tex;\nout vec4 o;\n"
+    "void main() {\n"
+    "  vec3 n = normalize(wn);\n"
+    "  float d = clamp(dot(n, to_light), 0.0, 1.0);\n"
+    "  vec3 r = normalize(2.0 * d * n - to_light);\n"
+    "  float sp = pow(clamp(dot(r, normalize(cam - wp)), 0.0, 1.0), shininess);\n"
+    "  o = ambient_term + diffuse_term * texture(tex, tc) * d + specular_term * sp;\n"
+    "}\n";
+
 /* ambient_textured.fx: the ambient colour, times the texture in Texturizado. */
 static const char hand_ambient_tex_fs[] =
     "in vec3 wp, wn;\nin vec2 tc;\nuniform vec4 ambient;\nuniform sampler2D tex;\nout vec4 o;\n"
@@ -254,6 +274,12 @@ typedef struct material {
     float diffuse[4], ambient[4], specular[4], ks, shininess, c[3], range, inner, outer, falloff;
 } material;
 
+typedef struct phong_material {
+    float light[4], specular[4], ambient[4], power, specular_intensity, ambient_intensity, diffuse_intensity;
+} phong_material;
+
+static const phong_material phong = {{0.9f, 0.8f, 0.7f, 1}, {1, 1, 1, 1}, {0.1f, 0.1f, 0.1f, 1}, 16, 0.5f, 0.5f, 1};
+
 static const material mat = {{0.24f, 0.34f, 0.39f, 1}, {0.07f, 0.07f, 0.07f, 1}, {1, 1, 1, 1}, 0.5f, 16,
                              {1, 0.1f, 0.01f}, 20, 0.3f, 0.6f, 2};
 
@@ -288,6 +314,14 @@ static void set_hand_uniforms(GLuint p, const scene *s, GLuint texture, int size
     u4(p, "diffuse", mat.diffuse), u4(p, "ambient", mat.ambient), u4(p, "specular", mat.specular);
     u1(p, "ks", mat.ks), u1(p, "shininess", mat.shininess), u1(p, "range", mat.range);
     u1(p, "cos_inner", cosf(mat.inner)), u1(p, "cos_outer", cosf(mat.outer)), u1(p, "falloff", mat.falloff);
+    float to_light[3] = {dir[0], dir[1], dir[2]}, terms[3][4];
+    for (int i = 0; i < 4; i++) {
+        terms[0][i] = phong.ambient[i] * phong.ambient_intensity;
+        terms[1][i] = phong.light[i] * phong.diffuse_intensity;
+        terms[2][i] = phong.specular[i] * phong.specular_intensity;
+    }
+    u3(p, "to_light", to_light), u4(p, "ambient_term", terms[0]), u4(p, "diffuse_term", terms[1]);
+    u4(p, "specular_term", terms[2]), u1(p, "shininess", phong.power);
     f.Uniform1i(f.GetUniformLocation(p, "tex"), 0);
     f.ActiveTexture(GL_TEXTURE0);
     f.BindTexture(GL_TEXTURE_2D, texture);
@@ -313,12 +347,30 @@ static void set_effect_params(hfx_effect *fx, const scene *s, GLuint texture) {
     set_param(fx, "anguloInterno", &mat.inner, 1), set_param(fx, "anguloExterno", &mat.outer, 1);
     set_param(fx, "falloff", &mat.falloff, 1);
     hfx_param *b;
+    const char *const upper[3] = {"World", "View", "Projection"};
+    const float *mats[3] = {s->world, s->view, s->proj};
+    for (int i = 0; i < 3; i++)
+        if ((b = hfx_effect_param(fx, upper[i]))) hfx_param_set_matrix(b, mats[i]);
+    if ((b = hfx_effect_param(fx, "WorldViewProj"))) {
+        float wvp[16];
+        mul4(wvp, s->world, s->view);
+        mul4(wvp, wvp, s->proj);
+        hfx_param_set_matrix(b, wvp);
+    }
+    set_param(fx, "LightDirection", dir, 3), set_param(fx, "camPosition", s->eye, 3);
+    set_param(fx, "LightColor", phong.light, 4), set_param(fx, "SpecularColor", phong.specular, 4);
+    set_param(fx, "AmbientColor", phong.ambient, 4), set_param(fx, "SpecularPower", &phong.power, 1);
+    set_param(fx, "SpecularIntensity", &phong.specular_intensity, 1);
+    set_param(fx, "AmbientIntensity", &phong.ambient_intensity, 1);
+    set_param(fx, "DiffuseIntensity", &phong.diffuse_intensity, 1);
+    if ((b = hfx_effect_param(fx, "diffuseTexture"))) hfx_param_set_texture(b, texture);
+    if ((b = hfx_effect_param(fx, "DiffuseTexture"))) hfx_param_set_texture(b, texture);
     if ((b = hfx_effect_param(fx, "modIluEsp"))) hfx_param_set_bool(b, 1);
     if ((b = hfx_effect_param(fx, "atenuado"))) hfx_param_set_bool(b, 1);
     if ((b = hfx_effect_param(fx, "texturaModelo"))) hfx_param_set_texture(b, texture);
 }
 
-typedef struct bench_case { const char *file, *technique, *fs_defines; const char *fs; } bench_case;
+typedef struct bench_case { const char *file, *technique, *fs_defines; const char *fs; int clamp; } bench_case;
 
 #define TEX "#define TEXTURED\n"
 #define PT "#define ATTEN\n"
@@ -326,21 +378,24 @@ typedef struct bench_case { const char *file, *technique, *fs_defines; const cha
 #define DIR "#define DIRECTIONAL\n"
 #define SPEC "#define SPECULAR\n"
 static const bench_case cases[] = {
-    {"ambient.fx", "ModeloAmbiental", "", hand_ambient_fs},
-    {"ambient_textured.fx", "Material", "", hand_ambient_tex_fs},
-    {"ambient_textured.fx", "Texturizado", TEX, hand_ambient_tex_fs},
-    {"directional.fx", "Material", DIR, hand_light_fs},
-    {"directional.fx", "Texturizado", DIR TEX, hand_light_fs},
-    {"directional_specular.fx", "Material", DIR SPEC, hand_light_fs},
-    {"directional_specular.fx", "Texturizado", DIR SPEC TEX, hand_light_fs},
-    {"point.fx", "Material", PT, hand_light_fs},
-    {"point.fx", "Texturizado", PT TEX, hand_light_fs},
-    {"point_specular.fx", "Material", PT SPEC, hand_light_fs},
-    {"point_specular.fx", "Texturizado", PT SPEC TEX, hand_light_fs},
-    {"spot.fx", "Material", SP, hand_light_fs},
-    {"spot.fx", "Texturizado", SP TEX, hand_light_fs},
-    {"spot_specular.fx", "Material", SP SPEC, hand_light_fs},
-    {"spot_specular.fx", "Texturizado", SP SPEC TEX, hand_light_fs},
+    {"ambient.fx", "ModeloAmbiental", "", hand_ambient_fs, 0},
+    {"ambient_textured.fx", "Material", "", hand_ambient_tex_fs, 0},
+    {"ambient_textured.fx", "Texturizado", TEX, hand_ambient_tex_fs, 0},
+    {"directional.fx", "Material", DIR, hand_light_fs, 0},
+    {"directional.fx", "Texturizado", DIR TEX, hand_light_fs, 0},
+    {"directional_specular.fx", "Material", DIR SPEC, hand_light_fs, 0},
+    {"directional_specular.fx", "Texturizado", DIR SPEC TEX, hand_light_fs, 0},
+    {"point.fx", "Material", PT, hand_light_fs, 0},
+    {"point.fx", "Texturizado", PT TEX, hand_light_fs, 0},
+    {"point_specular.fx", "Material", PT SPEC, hand_light_fs, 0},
+    {"point_specular.fx", "Texturizado", PT SPEC TEX, hand_light_fs, 0},
+    {"spot.fx", "Material", SP, hand_light_fs, 0},
+    {"spot.fx", "Texturizado", SP TEX, hand_light_fs, 0},
+    {"spot_specular.fx", "Material", SP SPEC, hand_light_fs, 0},
+    {"spot_specular.fx", "Texturizado", SP SPEC TEX, hand_light_fs, 0},
+    {"tutorial0.fx", "Tut0", "", hand_texture_fs, 1},
+    {"fxcomposer_empty.fx", "technique0", "", hand_white_fs, 0},
+    {"phong.fx", "Phong", "", hand_phong_fs, 1},
 };
 enum { CASES = sizeof cases / sizeof *cases };
 
@@ -386,7 +441,9 @@ static int picture_difference(hfx_device *dev, side *a, side *b, const mesh *m, 
     return worst;
 }
 
-static void run_case(hfx_device *dev, const bench_case *c, const mesh *quad, const mesh *grid, GLuint texture, int rounds) {
+static void run_case(hfx_device *dev, const bench_case *c, const mesh *quad, const mesh *grid, const GLuint textures[2],
+                     int rounds) {
+    GLuint texture = textures[c->clamp];
     char path[1024];
     snprintf(path, sizeof path, "%s/%s", HFX_SEED_DIR, c->file);
     char *errors = NULL;
@@ -431,11 +488,11 @@ int main(int argc, char **argv) {
     draw_elements = (PFNGLDRAWELEMENTSPROC)test_gl_proc("glDrawElements");
     hfx_device *dev = hfx_device_create_gl(test_gl_loader);
     mesh quad = make_grid(2, 2.0f), grid = make_grid(GRID, 2.0f);
-    GLuint texture = make_texture();
+    GLuint textures[2] = {make_texture(GL_REPEAT), make_texture(GL_CLAMP_TO_EDGE)};
     f.ClearColor(0, 0, 0, 1);
     printf("llvmpipe, ms per frame, best of %d; ratio = hfx / hand-written; diff = largest channel difference\n", rounds);
     printf("%-18s %-15s %-6s %9s %9s %8s %9s\n", "effect", "technique", "case", "hfx", "hand", "ratio", "diff");
-    for (int i = 0; i < CASES; i++) run_case(dev, &cases[i], &quad, &grid, texture, rounds);
+    for (int i = 0; i < CASES; i++) run_case(dev, &cases[i], &quad, &grid, textures, rounds);
     hfx_device_destroy(dev);
     test_gl_destroy(gl);
     return 0;
