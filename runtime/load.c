@@ -257,6 +257,14 @@ static int is_hfxo_file(const char *path, void **data, size_t *size) {
     return hfxo;
 }
 
+/* A loaded effect whose bookkeeping could not be allocated: destroyed, and the load fails. */
+static hfx_effect *drop_for_memory(hfx_effect *e, hfx_device *dev, char **errors) {
+    hfx_effect_destroy(e);
+    hfx_rt_fail(dev, HFX_ERR_MEMORY, "out of memory");
+    if (errors) free(*errors), *errors = dup_string(dev->error);
+    return NULL;
+}
+
 hfx_effect *hfx_effect_load(hfx_device *dev, const char *path, const hfx_load_options *opt, char **errors) {
     if (errors) *errors = NULL;
     if (!dev) return NULL;
@@ -277,12 +285,8 @@ hfx_effect *hfx_effect_load(hfx_device *dev, const char *path, const hfx_load_op
     hfx_effect *e = load(dev, path, data, size, path, opt, errors, &deps);
     free(data);
     if (e && !deps.count) hfx_rt_files_free(&deps), deps = one_file(path); /* a .hfxo: itself */
-    if (e && (!(e->path = dup_string(path)) || hfx_rt_watch_set(&e->watch, &deps))) { /* reload reads them again */
-        hfx_effect_destroy(e);
-        hfx_rt_fail(dev, HFX_ERR_MEMORY, "out of memory");
-        if (errors) free(*errors), *errors = dup_string(dev->error);
-        e = NULL;
-    }
+    if (e && (!(e->path = dup_string(path)) || hfx_rt_watch_set(&e->watch, &deps))) /* reload reads them again */
+        e = drop_for_memory(e, dev, errors);
     hfx_rt_files_free(&deps);
     return e;
 }
@@ -298,12 +302,7 @@ hfx_effect *hfx_effect_load_memory(hfx_device *dev, const void *data, size_t siz
     }
     hfx_rt_files deps = {NULL, 0}; /* what it included, found beside name */
     hfx_effect *e = load(dev, NULL, data, size, name ? name : "memory", opt, errors, &deps);
-    if (e && hfx_rt_watch_set(&e->watch, &deps)) {
-        hfx_effect_destroy(e);
-        hfx_rt_fail(dev, HFX_ERR_MEMORY, "out of memory");
-        if (errors) free(*errors), *errors = dup_string(dev->error);
-        e = NULL;
-    }
+    if (e && hfx_rt_watch_set(&e->watch, &deps)) e = drop_for_memory(e, dev, errors);
     hfx_rt_files_free(&deps);
     return e;
 }
