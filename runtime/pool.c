@@ -73,7 +73,7 @@ static void describe(char *out, size_t n, const hfx_fx_param *p) {
     if (p->elements && len > 0 && (size_t)len < n) snprintf(out + len, n - (size_t)len, "[%u]", p->elements);
 }
 
-/* file(line,col): error X9001: ... for e's parameter i against f's j. */
+/* file(line,col): error X9003: ... for e's parameter i against f's j. */
 static int mismatch(hfx_effect *e, uint32_t i, const hfx_effect *f, uint32_t j) {
     const hfx_fx_param *p = &e->sh->fx->params[i], *q = &f->sh->fx->params[j];
     char mine[64], theirs[64];
@@ -81,7 +81,7 @@ static int mismatch(hfx_effect *e, uint32_t i, const hfx_effect *f, uint32_t j) 
     describe(theirs, sizeof theirs, q);
     const char *pf = p->file ? p->file : e->sh->fx->source_name, *qf = q->file ? q->file : f->sh->fx->source_name;
     return hfx_rt_fail(e->dev, HFX_ERR_LOAD,
-                       "%s(%u,%u): error X9001: shared parameter '%s' is %s here but %s in the pool's %s(%u,%u)%s",
+                       "%s(%u,%u): error X9003: shared parameter '%s' is %s here but %s in the pool's %s(%u,%u)%s",
                        pf ? pf : "effect", p->line, p->col, p->name, mine, theirs, qf ? qf : "effect", q->line, q->col,
                        strcmp(mine, theirs) == 0 ? " (the struct members differ)" : "");
 }

@@ -48,7 +48,10 @@ enum {
     X_PP_UNTERMINATED_COMMENT = 1001, /* a comment continues past the end of file */
     X_PP_STRING_EOL = 1005,   /* a string continues past the end of line */
     X_UNSUPPORTED = 3094,     /* unsupported construct (asm blocks...) */
-    X_INTERNAL = 9000         /* hfx's own GLSL failed its self-check (fxc has no such code) */
+    X_INTERNAL = 9000,        /* hfx's own GLSL failed its self-check (fxc has no such code) */
+    /* 9001 and 9002: memory and source-size limits; 9003: shared parameters of a pool that do not
+     * agree, reported by the runtime (runtime/pool.c) */
+    X_POOL_MISMATCH = 9003
 };
 
 void hfx_diags_init(hfx_diags *d, hfx_arena *arena, unsigned flags);

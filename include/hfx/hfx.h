@@ -81,7 +81,7 @@ void hfx_free(void *p);                                          /* frees string
  * share every top-level parameter declared `shared`, by name: a value set through any of them is
  * seen by all and reaches each program when it next applies. An effect joining takes the pool's
  * value; the same shared name with another type (or struct layout) fails the load with both
- * declarations' positions (X9001). Clones and reloads stay in the pool. */
+ * declarations' positions (X9003). Clones and reloads stay in the pool. */
 hfx_pool *hfx_pool_create(hfx_device *dev);
 void hfx_pool_destroy(hfx_pool *pool);                           /* effects still in it carry on unpooled */
 hfx_device *hfx_pool_device(const hfx_pool *pool);

@@ -119,7 +119,7 @@ static void mismatch_names_both_declarations(void) {
     CHECK(c == NULL);
     char want[2048];
     snprintf(want, sizeof want,
-             "%s/c.fx(2,15): error X9001: shared parameter 'Tint' is float3 here but float4 in the pool's %s/a.fx(1,15)",
+             "%s/c.fx(2,15): error X9003: shared parameter 'Tint' is float3 here but float4 in the pool's %s/a.fx(1,15)",
              tmp, tmp);
     CHECK_CONTAINS(errors, want);
     hfx_free(errors);
