@@ -7,8 +7,9 @@
  * counts when they agree (BENCH_GPU_PNG=1 writes the last pair to /tmp). Prints frame times and
  * the ratio hfx / hand-written. Covered: the 003 tutorial's effects (ambient, ambient_textured,
  * directional, point and spot, with and without specular, both techniques; specular and
- * distance attenuation on), tutorial0, fxcomposer_empty and phong. Not yet: pointlights and
- * multilights_repaired (arrays of lights in loops). Run by hand: bench_gpu [rounds]. */
+ * distance attenuation on), tutorial0, fxcomposer_empty, phong and pointlights (eight lights).
+ * Not yet: multilights_repaired (two passes blended by the application). Run by hand:
+ * bench_gpu [rounds]. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -226,6 +227,27 @@ static const char hand_phong_fs[] =
     "  o = ambient_term + diffuse_term * texture(tex, tc) * d + specular_term * sp;\n"
     "}\n";
 
+/* pointlights.fx (001): eight lights in a loop; the ambient term (added once per light, as the
+ * tutorial does), the diffuse colours and the inverse radii on the CPU. */
+static const char hand_pointlights_fs[] =
+    "in vec3 wp, wn;\nin vec2 tc;\n"
+    "uniform int count;\nuniform vec3 lpos[8];\nuniform vec4 lcol[8];\nuniform float inv_radius[8];\n"
+    "uniform vec4 ambient_sum, specular_term;\nuniform float shininess;\nuniform vec3 cam;\n"
+    "uniform sampler2D tex;\nout vec4 o;\n"
+    "void main() {\n"
+    "  vec3 n = normalize(wn), v = normalize(cam - wp);\n"
+    "  vec4 dc = texture(tex, tc), c = ambient_sum;\n"
+    "  for (int i = 0; i < count; i++) {\n"
+    "    vec3 l = lpos[i] - wp;\n"
+    "    float k = 1.0 - clamp(length(l) * inv_radius[i], 0.0, 1.0);\n"
+    "    l = normalize(l);\n"
+    "    float d = clamp(dot(n, l), 0.0, 1.0);\n"
+    "    vec3 r = normalize(2.0 * d * n - l);\n"
+    "    c += k * k * lcol[i] * dc * d + specular_term * pow(clamp(dot(r, v), 0.0, 1.0), shininess);\n"
+    "  }\n"
+    "  o = c;\n"
+    "}\n";
+
 /* ambient_textured.fx: the ambient colour, times the texture in Texturizado. */
 static const char hand_ambient_tex_fs[] =
     "in vec3 wp, wn;\nin vec2 tc;\nuniform vec4 ambient;\nuniform sampler2D tex;\nout vec4 o;\n"
@@ -283,6 +305,49 @@ static const phong_material phong = {{0.9f, 0.8f, 0.7f, 1}, {1, 1, 1, 1}, {0.1f,
 static const material mat = {{0.24f, 0.34f, 0.39f, 1}, {0.07f, 0.07f, 0.07f, 1}, {1, 1, 1, 1}, 0.5f, 16,
                              {1, 0.1f, 0.01f}, 20, 0.3f, 0.6f, 2};
 
+enum { LIGHTS = 8 };
+
+/* Eight lights over the plane, in a ring, each its own colour; radius 2.5. */
+static void light_ring(float pos[LIGHTS][3], float col[LIGHTS][4]) {
+    for (int i = 0; i < LIGHTS; i++) {
+        float a = 6.2831853f * (float)i / LIGHTS;
+        pos[i][0] = 0.9f * cosf(a), pos[i][1] = 0.9f * sinf(a), pos[i][2] = 0.4f;
+        col[i][0] = 0.5f + 0.5f * cosf(a), col[i][1] = 0.5f + 0.5f * sinf(a), col[i][2] = 0.6f, col[i][3] = 1;
+    }
+}
+
+static const float light_radius = 2.5f;
+
+static void set_hand_pointlights(GLuint p) {
+    float pos[LIGHTS][3], col[LIGHTS][4], inv[LIGHTS], amb[4];
+    light_ring(pos, col);
+    for (int i = 0; i < LIGHTS; i++) {
+        inv[i] = 1.0f / light_radius;
+        for (int k = 0; k < 4; k++) col[i][k] *= phong.diffuse_intensity;
+    }
+    for (int k = 0; k < 4; k++) amb[k] = phong.ambient[k] * phong.ambient_intensity * LIGHTS;
+    GLint count = LIGHTS;
+    f.Uniform1iv(f.GetUniformLocation(p, "count"), 1, &count);
+    f.Uniform3fv(f.GetUniformLocation(p, "lpos"), LIGHTS, pos[0]);
+    f.Uniform4fv(f.GetUniformLocation(p, "lcol"), LIGHTS, col[0]);
+    f.Uniform1fv(f.GetUniformLocation(p, "inv_radius"), LIGHTS, inv);
+    u4(p, "ambient_sum", amb);
+}
+
+static void set_effect_pointlights(hfx_effect *fx) {
+    hfx_param *b = hfx_effect_param(fx, "activeLights");
+    if (!b) return;
+    float pos[LIGHTS][3], col[LIGHTS][4], radius[LIGHTS];
+    light_ring(pos, col);
+    for (int i = 0; i < LIGHTS; i++) {
+        radius[i] = light_radius;
+        hfx_param_set_floats(hfx_param_element(hfx_effect_param(fx, "LightPosition"), (size_t)i), pos[i], 3);
+        hfx_param_set_floats(hfx_param_element(hfx_effect_param(fx, "LightColor"), (size_t)i), col[i], 4);
+        hfx_param_set_floats(hfx_param_element(hfx_effect_param(fx, "LightRadius"), (size_t)i), &radius[i], 1);
+    }
+    hfx_param_set_int(b, LIGHTS);
+}
+
 /* The hand-written side folds into its matrix what hfx does per vertex: GL's depth range (a GL
  * projection) and D3D9's pixel centres (x + 1 / w, y - 1 / h in clip space, times w, as
  * hfx_pos_fixup), so both draw the same picture. */
@@ -322,6 +387,7 @@ static void set_hand_uniforms(GLuint p, const scene *s, GLuint texture, int size
     }
     u3(p, "to_light", to_light), u4(p, "ambient_term", terms[0]), u4(p, "diffuse_term", terms[1]);
     u4(p, "specular_term", terms[2]), u1(p, "shininess", phong.power);
+    set_hand_pointlights(p);
     f.Uniform1i(f.GetUniformLocation(p, "tex"), 0);
     f.ActiveTexture(GL_TEXTURE0);
     f.BindTexture(GL_TEXTURE_2D, texture);
@@ -366,6 +432,7 @@ static void set_effect_params(hfx_effect *fx, const scene *s, GLuint texture) {
     if ((b = hfx_effect_param(fx, "diffuseTexture"))) hfx_param_set_texture(b, texture);
     if ((b = hfx_effect_param(fx, "DiffuseTexture"))) hfx_param_set_texture(b, texture);
     if ((b = hfx_effect_param(fx, "modIluEsp"))) hfx_param_set_bool(b, 1);
+    set_effect_pointlights(fx);
     if ((b = hfx_effect_param(fx, "atenuado"))) hfx_param_set_bool(b, 1);
     if ((b = hfx_effect_param(fx, "texturaModelo"))) hfx_param_set_texture(b, texture);
 }
@@ -396,6 +463,7 @@ static const bench_case cases[] = {
     {"tutorial0.fx", "Tut0", "", hand_texture_fs, 1},
     {"fxcomposer_empty.fx", "technique0", "", hand_white_fs, 0},
     {"phong.fx", "Phong", "", hand_phong_fs, 1},
+    {"pointlights.fx", "PointLights", "", hand_pointlights_fs, 1},
 };
 enum { CASES = sizeof cases / sizeof *cases };
 
