@@ -272,6 +272,14 @@ static char *spoil(char *text) {
     return p;
 }
 
+/* One stage for one target; ES 300 from the GLSL 330 text already printed, when there is one. */
+static char *print_stage(hfx_codegen *cg, const ir_shader *sh, int s, const glsl_iface *io, hfx_target t,
+                         const hfx_fx_program *out) {
+    const char *twin = t == HFX_TARGET_GLSLES300 ? out->code[s][HFX_TARGET_GLSL330].data : NULL;
+    char *text = twin && !(cg->c.diags->flags & HFXC_TEST_BREAK_GLSL) ? glsl_retarget(twin, HFX_TARGET_GLSL330, t) : NULL;
+    return text ? text : glsl_print(&cg->c, sh, s == 0 ? IR_VERTEX : IR_PIXEL, io, t);
+}
+
 int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps, bool flat_colors, hfx_fx_program *out) {
     memset(out, 0, sizeof *out);
     ir_shader *sh[2];
@@ -289,7 +297,7 @@ int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps,
     for (int t = 0; t < HFX_TARGET_COUNT; t++) {
         if (!(cg->targets & (1u << t)) || t == HFX_TARGET_SPIRV) continue;
         for (int s = 0; s < 2; s++) {
-            char *text = glsl_print(&cg->c, sh[s], s == 0 ? IR_VERTEX : IR_PIXEL, &io, (hfx_target)t);
+            char *text = print_stage(cg, sh[s], s, &io, (hfx_target)t, out);
             if (!text) return -1;
             if (cg->c.diags->flags & HFXC_TEST_BREAK_GLSL) text = spoil(text);
             out->code[s][t].data = text;

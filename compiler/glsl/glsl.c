@@ -430,12 +430,27 @@ static void declare_globals(gp *p) {
 
 /* ES 300 has no default precision for sampler3D in either stage (vertex texture fetch included),
  * and only lowp ones for sampler2D / samplerCube: both stages declare all three. */
-static const char *header(gp *p) {
-    if (p->target == HFX_TARGET_GLSLES300)
+static const char *header_of(hfx_target t) {
+    if (t == HFX_TARGET_GLSLES300)
         return "#version 300 es\nprecision highp float;\nprecision highp int;\n"
                "precision highp sampler2D;\nprecision highp sampler3D;\nprecision highp samplerCube;\n";
-    if (p->target == HFX_TARGET_GLSL110) return "#version 110\n";
+    if (t == HFX_TARGET_GLSL110) return "#version 110\n";
     return "#version 330 core\n";
+}
+
+static const char *header(gp *p) { return header_of(p->target); }
+
+/* GLSL 330 and ES 300 texts differ only in their headers: printing a stage once and swapping the
+ * header halves the printer's work when an effect is compiled for both (the default). */
+char *glsl_retarget(const char *text, hfx_target from, hfx_target to) {
+    const char *have = header_of(from), *want = header_of(to);
+    size_t h = strlen(have), w = strlen(want), n = strlen(text);
+    if (strncmp(text, have, h) != 0) return NULL;
+    char *out = malloc(n - h + w + 1);
+    if (!out) return NULL;
+    memcpy(out, want, w);
+    memcpy(out + w, text + h, n - h + 1);
+    return out;
 }
 
 char *glsl_print(ir_ctx *c, const ir_shader *sh, ir_stage stage, const glsl_iface *io, hfx_target target) {
@@ -445,7 +460,6 @@ char *glsl_print(ir_ctx *c, const ir_shader *sh, ir_stage stage, const glsl_ifac
     p.stage = stage;
     p.io = io;
     p.target = target;
-    p.es = target == HFX_TARGET_GLSLES300;
     p.legacy = target == HFX_TARGET_GLSL110;
     sbuf decls = {0}, funcs = {0}, all = {0};
     if (sh) {

@@ -14,7 +14,8 @@ typedef struct gp {
     ir_stage stage;
     const glsl_iface *io;
     hfx_target target;
-    bool es, legacy;          /* ES 300; GLSL 110 */
+    bool legacy;              /* GLSL 110. Nothing is decided on ES 300 against GLSL 330 but the
+                                 header: codegen makes one text from the other (glsl_retarget) */
     sbuf *out;
     int indent;
     unsigned loop_counters;     /* hfx_iterK variables of [unroll(n)] loops so far */
