@@ -7,9 +7,10 @@
  *   mesa:   the load again without hfx's cache: Mesa's own shader cache (a per-user disk cache
  *           many drivers lack) now knows the shaders; shown for comparison.
  * A cold load can only happen once per process, so each figure is one measurement; Mesa's disk
- * cache is pointed at an empty temporary folder at start. The .fx columns load the source
- * afterwards (hfx's compile with its self-check, then GL from hfx's cache or Mesa's): the part
- * of a .fx load the program cache cannot remove. Run by hand: bench_load. */
+ * cache is pointed at an empty temporary folder at start, and the .hfxo and .fx loads run in
+ * processes of their own. A cached .fx load compiles without glslang's self-check (the cached
+ * binaries were checked when written) and builds every program from the cache. Run by hand:
+ * bench_load (both kinds), bench_load hfxo, bench_load fx. */
 #define _DEFAULT_SOURCE /* mkdtemp, setenv */
 #include <dirent.h>
 #include <stdio.h>
@@ -72,15 +73,16 @@ static const char *base_name(const char *p) {
     return s ? s + 1 : p;
 }
 
-int main(void) {
+/* One kind of load (".fx" or ".hfxo") for every effect, in a process of its own: a cold load
+ * happens once per Mesa cache, and the two kinds share their GLSL. */
+static int run_kind(int fx_source) {
     char cache[] = "/tmp/hfx_bench_load_XXXXXX", mesa_cache[] = "/tmp/hfx_bench_mesa_XXXXXX";
     if (!mkdtemp(cache) || !mkdtemp(mesa_cache)) return 1;
     setenv("MESA_SHADER_CACHE_DIR", mesa_cache, 1); /* Mesa's program binaries need its cache on */
     test_gl *gl = test_gl_create(64, 64);
     if (!gl) { fprintf(stderr, "no OSMesa context\n"); return 1; }
-    printf("load times on llvmpipe, ms (one measurement each: a cold load happens once)\n");
-    printf("%-26s %5s | %8s %8s %7s %8s | %8s %8s\n", "effect", "progs", "cold", "cached", "ratio", "mesa",
-           ".fx hfx", ".fx mesa");
+    printf("%s loads on llvmpipe, ms (one measurement each: a cold load happens once)\n", fx_source ? ".fx" : ".hfxo");
+    printf("%-26s %5s | %8s %8s %7s | %8s\n", "effect", "progs", "cold", "cached", "ratio", "mesa");
     double sum_first = 0, sum_second = 0;
     for (int i = 0; i < FILES; i++) {
         size_t src_size = 0;
@@ -94,21 +96,19 @@ int main(void) {
         if (!fx || hfx_fx_write_hfxo(fx, &bytes, &size) != 0) {
             printf("%-26s (not compiled)\n", base_name(files[i]));
         } else {
-            /* the .hfxo first: the .fx carries the same GLSL, so whatever runs second is warm for Mesa */
             empty_folder(cache);
-            timing h = measure(bytes, size, files[i], cache);
-            timing f = measure(src, src_size, files[i], cache); /* f.cold: hfx's cache has the binaries */
-            sum_first += h.cold;
-            sum_second += h.cached;
-            printf("%-26s %5u | %8.2f %8.2f %6.1fx %8.2f | %8.2f %8.2f\n", base_name(files[i]), fx->program_count,
-                   h.cold * 1e3, h.cached * 1e3, h.cold / h.cached, h.mesa * 1e3, f.cached * 1e3, f.mesa * 1e3);
+            timing t = fx_source ? measure(src, src_size, files[i], cache) : measure(bytes, size, files[i], cache);
+            sum_first += t.cold;
+            sum_second += t.cached;
+            printf("%-26s %5u | %8.2f %8.2f %6.1fx | %8.2f\n", base_name(files[i]), fx->program_count, t.cold * 1e3,
+                   t.cached * 1e3, t.cold / t.cached, t.mesa * 1e3);
         }
         free(bytes);
         hfxc_result_free(r);
         free(src);
     }
-    printf("all .hfxo loads: cold %.1f ms, cached %.1f ms: %.1fx\n", sum_first * 1e3, sum_second * 1e3,
-           sum_first / sum_second);
+    printf("all %s loads: cold %.1f ms, cached %.1f ms: %.1fx\n\n", fx_source ? ".fx" : ".hfxo", sum_first * 1e3,
+           sum_second * 1e3, sum_first / sum_second);
     empty_folder(cache);
     remove(cache);
     char cmd[128];
@@ -116,4 +116,12 @@ int main(void) {
     if (system(cmd) != 0) fprintf(stderr, "could not remove %s\n", mesa_cache);
     test_gl_destroy(gl);
     return 0;
+}
+
+int main(int argc, char **argv) {
+    if (argc > 1) return run_kind(strcmp(argv[1], "fx") == 0);
+    char cmd[4096];
+    snprintf(cmd, sizeof cmd, "'%s' hfxo && '%s' fx", argv[0], argv[0]);
+    fflush(stdout);
+    return system(cmd) == 0 ? 0 : 1;
 }

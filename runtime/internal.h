@@ -96,6 +96,7 @@ struct hfx_device {
     size_t scratch_size;
     hfx_texture_set checked;       /* textures whose mip levels texture.c has made complete */
     char *program_cache;           /* hfx_device_set_program_cache's folder, or NULL */
+    int cache_only;                /* while set, a program missing from the cache fails to build */
 };
 
 /* D3D9's sampler state for one sampler stage. */
@@ -354,6 +355,7 @@ int hfx_rt_program_cached_link(hfx_shared *sh, hfx_rt_program *p, const hfx_fx_p
                                const char *fs_src, int (*link)(hfx_shared *, hfx_rt_program *, const hfx_fx_program *,
                                                                const char *, const char *));
 void hfx_rt_program_binary_hint(hfx_device *dev, GLuint program);
+int hfx_rt_program_cache_usable(const hfx_device *dev); /* a folder, and a driver that hands out binaries */
 void hfx_rt_program_free(hfx_device *dev, hfx_rt_program *p);
 void hfx_rt_upload_all(hfx_effect *fx, hfx_rt_program *p);
 void hfx_rt_upload_slow(hfx_device *dev, const hfx_upload *up, const uint32_t *values);

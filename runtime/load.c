@@ -207,6 +207,31 @@ static hfx_effect *load_compiled(hfx_device *dev, hfx_fx_effect *fx, const hfx_l
     return e;
 }
 
+/* A .fx whose every program the device's cache holds: compiled without glslang's self-check
+ * (the cached binaries were made from this very GLSL, checked when they were written) and
+ * built from the cache alone. NULL when anything is missing or fails: the caller then loads
+ * the usual way, self-check included. Saves most of a cached .fx load (bench/bench_load). */
+static hfx_effect *load_cached_fx(hfx_device *dev, const char *path, const void *data, size_t size, const char *name,
+                                  const hfx_load_options *opt, char **errors, hfx_rt_files *deps) {
+    if ((opt && (opt->no_self_check || opt->target == HFX_TARGET_SPIRV)) || !hfx_rt_program_cache_usable(dev)) return NULL;
+    hfx_load_options quick = opt ? *opt : (hfx_load_options){0};
+    quick.no_self_check = 1;
+    char *diag = NULL;
+    hfx_fx_effect *fx = hfx_rt_compile_fx_deps(path, data, size, name, &quick, &diag, deps);
+    hfx_effect *e = NULL;
+    if (fx) {
+        if (!fx->source_name) fx->source_name = dup_string(name);
+        dev->cache_only = 1;
+        e = load_compiled(dev, fx, &quick, NULL);
+        dev->cache_only = 0;
+    }
+    if (e && errors) *errors = diag; /* the warnings, as a load's */
+    else free(diag);
+    if (!e && deps) hfx_rt_files_free(deps);
+    dev->error[0] = '\0';
+    return e;
+}
+
 /* deps receives the files a .fx compile read (empty for a .hfxo). */
 static hfx_effect *load(hfx_device *dev, const char *path, const void *data, size_t size, const char *name,
                         const hfx_load_options *opt, char **errors, hfx_rt_files *deps) {
@@ -214,7 +239,10 @@ static hfx_effect *load(hfx_device *dev, const char *path, const void *data, siz
     if (!dev) return NULL;
     dev->error[0] = '\0';
     hfx_fx_effect *fx;
-    if (data && hfx_fx_is_hfxo(data, size)) {
+    bool is_hfxo = data && hfx_fx_is_hfxo(data, size);
+    hfx_effect *cached = is_hfxo ? NULL : load_cached_fx(dev, path, data, size, name, opt, errors, deps);
+    if (cached) return cached;
+    if (is_hfxo) {
         char err[512] = "";
         fx = hfx_fx_read_hfxo(data, size, err, sizeof err);
         if (!fx) hfx_rt_fail(dev, HFX_ERR_LOAD, "%s: %s", name, err);

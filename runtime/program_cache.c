@@ -35,6 +35,13 @@ static int cache_on(const hfx_device *dev) {
     return dev->program_cache && dev->gl.ProgramParameteri && dev->gl.GetProgramBinary && dev->gl.ProgramBinary;
 }
 
+int hfx_rt_program_cache_usable(const hfx_device *dev) {
+    GLint formats = 0;
+    if (!cache_on(dev)) return 0;
+    dev->gl.GetIntegerv(GL_NUM_PROGRAM_BINARY_FORMATS, &formats);
+    return formats > 0;
+}
+
 static uint64_t fnv1a(uint64_t h, const void *data, size_t n) {
     const unsigned char *p = data;
     for (size_t i = 0; i < n; i++) h = (h ^ p[i]) * 0x100000001b3ull;
@@ -164,6 +171,7 @@ int hfx_rt_program_cached_link(hfx_shared *sh, hfx_rt_program *p, const hfx_fx_p
     driver_string(dev, driver, sizeof driver);
     uint64_t key = program_key(fp, vs_src, fs_src, driver);
     if (try_cached(dev, p, key, driver) == HFX_OK) return HFX_OK;
+    if (dev->cache_only) return hfx_rt_fail(dev, HFX_ERR_NOT_FOUND, "a program is not in the cache");
     int rc = link(sh, p, fp, vs_src, fs_src);
     if (rc == HFX_OK) store(dev, p, key, driver);
     return rc;

@@ -153,6 +153,28 @@ static void damaged_entries_are_rebuilt(void) {
     damaged("refused binary", garbage_with_good_crc);
 }
 
+/* A cached .fx load (compiled without the self-check, built from the cache alone) still hands
+ * back the compile's warnings, as any load does. */
+static void cached_loads_keep_warnings(void) {
+    static const char warns[] =
+        "float4 VS(float4 p : POSITION0) : POSITION0 { return p; }\n"
+        "float4 PS() : COLOR0 { float2 t = float4(0.2, 0.4, 0.6, 1); return float4(t, 0, 1); }\n"
+        "technique T { pass { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n";
+    for (int round = 0; round < 2; round++) {
+        hfx_device *dev = hfx_device_create_gl(tc_loader);
+        CHECK_INT(hfx_device_set_program_cache(dev, dir), HFX_OK);
+        tc_reset();
+        char *errors = NULL;
+        hfx_effect *fx = hfx_effect_load_memory(dev, warns, sizeof warns - 1, "warns.fx", NULL, &errors);
+        CHECK(fx != NULL);
+        CHECK_INT(tc_count("glCompileShader"), round == 0 ? 2 : 0);
+        CHECK_STR(errors ? errors : "", "warns.fx(2,35): warning X3206: implicit truncation of vector type\n");
+        hfx_free(errors);
+        hfx_effect_destroy(fx);
+        hfx_device_destroy(dev);
+    }
+}
+
 static void off_writes_nothing(void) {
     char empty[] = "/tmp/hfx_program_cache_off_XXXXXX";
     CHECK(mkdtemp(empty) != NULL);
@@ -187,6 +209,7 @@ int main(void) {
     if (!mkdtemp(dir)) test_skip("mkdtemp failed");
     RUN(first_load_writes_second_compiles_nothing);
     RUN(damaged_entries_are_rebuilt);
+    RUN(cached_loads_keep_warnings);
     RUN(off_writes_nothing);
     char p[8][512];
     for (int i = entries(p); i-- > 0;) remove(p[i]);
