@@ -367,7 +367,7 @@ static void print_scatter(gp *p, const ir_expr *e) {
     for (uint32_t i = 0; i < ctor->n; i++) {
         unsigned n = ncomp(ctor->a[i]->type);
         sb_printf(&sig, "out %s a%u, ", glsl_type(p, ctor->a[i]->type), i);
-        sb_printf(&body, "a%u = v.%.*s; ", i, (int)n, "xyzw" + at);
+        sb_printf(&body, "a%u = v.%.*s; ", i, (int)n, &"xyzw"[at]);
         at += n;
     }
     const char *key = hfx_arena_printf(p->c->arena, "scatter %s%s", sig.d ? sig.d : "", vt);

@@ -376,9 +376,11 @@ static hfx_token *do_pragma(hfx_pp *pp, hfx_token *hash, hfx_token *name) {
     return rest;
 }
 
+/* An #error with no text still says what stopped the compile (an empty message reads as a bug). */
 static hfx_token *do_error(hfx_pp *pp, hfx_token *hash, hfx_token *name) {
     hfx_token *end = pp_line_end(name->next);
-    pp_error(pp, hash->loc, X_PP_ERROR_DIRECTIVE, "%s", pp_join(pp, name->next, end));
+    const char *text = pp_join(pp, name->next, end);
+    pp_error(pp, hash->loc, X_PP_ERROR_DIRECTIVE, "%s", text && *text ? text : "#error");
     return end;
 }
 
