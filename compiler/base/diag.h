@@ -48,7 +48,9 @@ enum {
     X_PP_UNTERMINATED_COMMENT = 1001, /* a comment continues past the end of file */
     X_PP_STRING_EOL = 1005,   /* a string continues past the end of line */
     X_UNSUPPORTED = 3094,     /* unsupported construct (asm blocks...) */
-    X_INTERNAL = 9000         /* hfx's own GLSL failed its self-check (fxc has no such code) */
+    X_INTERNAL = 9000,        /* hfx's own GLSL failed its self-check (fxc has no such code) */
+    X_MEMORY_LIMIT = 9001,    /* out of memory, or past the memory a source of its size may use (hfx's own) */
+    X_SOURCE_TOO_LARGE = 9002 /* a source file past HFXC_MAX_SOURCE_BYTES (hfx's own) */
 };
 
 void hfx_diags_init(hfx_diags *d, hfx_arena *arena, unsigned flags);

@@ -6,13 +6,22 @@
 #include <string.h>
 
 #include "base/sbuf.h"
+#include "base/arena.h"
+
+/* A bigger block for the text: realloc, or a new arena block holding the old text. */
+static char *grow_text(sbuf *b, size_t cap) {
+    if (!b->arena) return realloc(b->d, cap);
+    char *d = hfx_arena_alloc_raw(b->arena, cap);
+    if (d && b->len) memcpy(d, b->d, b->len + 1);
+    return d;
+}
 
 void sb_putn(sbuf *b, const char *s, size_t n) {
     if (b->oom) return;
     if (b->len + n + 1 > b->cap) {
         size_t cap = b->cap ? b->cap : 256;
         while (cap < b->len + n + 1) cap *= 2;
-        char *d = realloc(b->d, cap);
+        char *d = grow_text(b, cap);
         if (!d) { b->oom = true; return; }
         b->d = d;
         b->cap = cap;
@@ -43,8 +52,13 @@ void sb_printf(sbuf *b, const char *fmt, ...) {
 
 char *sb_take(sbuf *b) {
     if (b->oom) {
-        free(b->d);
+        sb_free(b);
         b->d = NULL;
     }
+    if (b->arena && b->d) return strdup(b->d);
     return b->d;
+}
+
+void sb_free(sbuf *b) {
+    if (!b->arena) free(b->d);
 }

@@ -444,7 +444,8 @@ char *glsl_print(ir_ctx *c, const ir_shader *sh, ir_stage stage, const glsl_ifac
     p.target = target;
     p.es = target == HFX_TARGET_GLSLES300;
     p.legacy = target == HFX_TARGET_GLSL110;
-    sbuf decls = {0}, funcs = {0}, all = {0};
+    sbuf decls = {.arena = c->arena}, funcs = {.arena = c->arena}, all = {.arena = c->arena};
+    p.helpers.arena = p.structs_text.arena = c->arena;
     if (sh) {
         p.in_count = ir_entry_leaves(c, sh->entry, false, &p.in);
         p.out_count = ir_entry_leaves(c, sh->entry, true, &p.outv);
@@ -475,14 +476,7 @@ char *glsl_print(ir_ctx *c, const ir_shader *sh, ir_stage stage, const glsl_ifac
     if (p.helpers.d) { sb_put(&all, p.helpers.d); sb_put(&all, "\n"); }
     if (funcs.d) sb_put(&all, funcs.d);
     bool oom = decls.oom || funcs.oom || all.oom || p.helpers.oom || p.structs_text.oom;
-    free(decls.d);
-    free(funcs.d);
-    free(p.helpers.d);
-    free(p.structs_text.d);
-    if (p.failed || oom) {
-        if (oom && !p.failed) hfx_error(c->diags, (hfx_loc){0, 0, 0}, X_UNSUPPORTED, "out of memory printing GLSL");
-        free(all.d);
-        return NULL;
-    }
-    return all.d;
+    char *text = p.failed || oom ? NULL : sb_take(&all);
+    if (!p.failed && !text) hfx_error(c->diags, (hfx_loc){0, 1, 1}, X_MEMORY_LIMIT, "out of memory printing GLSL");
+    return text;
 }

@@ -362,7 +362,7 @@ static void print_select(gp *p, const ir_expr *e, int max) {
 static void print_scatter(gp *p, const ir_expr *e) {
     const ir_expr *ctor = e->a[0];
     const char *vt = glsl_type(p, ctor->type);
-    sbuf sig = {0}, body = {0};
+    sbuf sig = {.arena = p->c->arena}, body = {.arena = p->c->arena};
     unsigned at = 0;
     for (uint32_t i = 0; i < ctor->n; i++) {
         unsigned n = ncomp(ctor->a[i]->type);
@@ -373,8 +373,6 @@ static void print_scatter(gp *p, const ir_expr *e) {
     const char *key = hfx_arena_printf(p->c->arena, "scatter %s%s", sig.d ? sig.d : "", vt);
     if (glsl_helper(p, key))
         sb_printf(&p->helpers, "%s hfx_scatter(%s%s v) { %sreturn v; }\n", vt, sig.d ? sig.d : "", vt, body.d ? body.d : "");
-    free(sig.d);
-    free(body.d);
     sb_put(p->out, "hfx_scatter(");
     for (uint32_t i = 0; i < ctor->n; i++) {
         glsl_lvalue(p, ctor->a[i], PREC_ASSIGN);
@@ -560,13 +558,12 @@ static void print_guarded_read(gp *p, const ir_expr *e) {
     const char *fn = hfx_arena_printf(p->c->arena, "hfx_read_%s", v->glsl);
     if (glsl_helper(p, fn)) {
         sbuf *saved = p->out;
-        sbuf tmp = {0};
+        sbuf tmp = {.arena = p->c->arena};
         p->out = &tmp;
         glsl_zero(p, at->elem);
         p->out = saved;
         sb_printf(&p->helpers, "%s %s(int i)\n{\n    if (i < 0 || i >= %u) return %s;\n    return %s[i];\n}\n",
                   glsl_ctor_type(p, at->elem), fn, at->array_len, tmp.d ? tmp.d : "0", v->glsl);
-        free(tmp.d);
     }
     sb_printf(p->out, "%s(", fn);
     if (e->a[1]->type->base != B_INT) sb_put(p->out, "int(");

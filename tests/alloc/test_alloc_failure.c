@@ -30,8 +30,9 @@ void *__real_realloc(void *p, size_t n);
 char *__real_strdup(const char *s);
 
 static long counted, fail_at; /* fail_at 0: nothing fails */
+static int persistent;        /* 1: allocation fail_at and every later one fail (memory stays short) */
 
-static int fail_now(void) { return fail_at && ++counted == fail_at; }
+static int fail_now(void) { return fail_at && (++counted == fail_at || (persistent && counted > fail_at)); }
 void *__wrap_malloc(size_t n) { return fail_now() ? NULL : __real_malloc(n); }
 void *__wrap_calloc(size_t n, size_t size) { return fail_now() ? NULL : __real_calloc(n, size); }
 void *__wrap_realloc(void *p, size_t n) { return fail_now() ? NULL : __real_realloc(p, n); }
@@ -52,6 +53,65 @@ static bytes hfxo_of(const hfxc_result *r) {
     bytes b = {NULL, 0};
     if (hfxc_result_effect(r)) CHECK_INT(hfx_fx_write_hfxo(hfxc_result_effect(r), &b.data, &b.size), 0);
     return b;
+}
+
+static int same_bytes(bytes a, bytes b) { return a.size == b.size && memcmp(a.data, b.data, a.size) == 0; }
+
+/* ---- compiling ---- */
+
+/* Refused, and says why: with memory short for good, even the message may not fit. */
+static int says_out_of_memory(const hfxc_result *r) {
+    char *text = hfxc_diagnostics_text(r);
+    int said = text && strstr(text, "error X9001: out of memory");
+    int ok = (said || persistent) && !hfxc_result_ok(r) && !hfxc_result_effect(r);
+    if (!ok) fprintf(stderr, "a failed compile says:\n%s\n", text ? text : "(nothing)");
+    free(text);
+    return ok;
+}
+
+/* One compile with allocation n failing; returns 0 once n is past the last allocation. */
+static int compile_failing(const char *src, size_t size, long n, bytes reference, int *refused) {
+    arm(n);
+    hfxc_result *r = hfxc_compile_memory(src, size, "seed.fx", NULL);
+    int reached = disarm();
+    if (reached && r && !hfxc_result_ok(r)) {
+        CHECK(says_out_of_memory(r));
+        ++*refused;
+    } else if (r) { /* the failure was absorbed (a retry, an optional cache): the same output */
+        bytes b = hfxo_of(r);
+        if (!same_bytes(b, reference)) fprintf(stderr, "allocation %ld: a different effect\n", n);
+        CHECK(same_bytes(b, reference));
+        free(b.data);
+    }
+    hfxc_result_free(r);
+    return reached;
+}
+
+static void compile_seeds_failing(void) {
+    for (size_t s = 0; s < sizeof seeds / sizeof *seeds; s++) {
+        size_t size;
+        char *path = test_seed_path(seeds[s]), *src = test_read_file(path, &size);
+        hfxc_result *r = hfxc_compile_memory(src, size, "seed.fx", NULL);
+        bytes reference = hfxo_of(r);
+        hfxc_result_free(r);
+        long n = 1;
+        int refused = 0;
+        while (compile_failing(src, size, n, reference, &refused)) n++;
+        printf("  %s: compiled with allocation 1..%ld failing%s (%d refused)\n", seeds[s], n - 1,
+               persistent ? ", and all after it" : "", refused);
+        CHECK(n > 20 && refused > 0);
+        free(reference.data);
+        free(src);
+        free(path);
+    }
+}
+
+static void compile_every_allocation_failing(void) { compile_seeds_failing(); }
+
+static void compile_with_memory_short_from_every_allocation(void) {
+    persistent = 1;
+    compile_seeds_failing();
+    persistent = 0;
 }
 
 /* ---- loading, applying, reloading ---- */
@@ -176,6 +236,8 @@ static void reload_every_allocation_failing(void) {
 
 int main(void) {
     test_require_seeds();
+    RUN(compile_every_allocation_failing);
+    RUN(compile_with_memory_short_from_every_allocation);
     test_gl *gl = test_gl_create(32, 32);
     if (!gl) test_skip("no OSMesa context");
     dev = hfx_device_create_gl(test_gl_loader);
