@@ -1,10 +1,11 @@
-/* Allocation failure: allocation number N fails, for every N, while the runtime loads two seed
- * effects (.hfxo bytes: the reader, then GL objects), applies every pass and destroys them, and
- * while it reloads one from a file. Every run must end in a clean error (NULL or an error code,
- * with "out of memory" in hfx_device_last_error) or in a working effect; LSan (the ASan build)
- * checks nothing leaks, and the caller's objects (the device, a second effect, the effect being
- * reloaded) keep their values and keep applying. The compiler is not covered yet: its arena
- * allocations are not checked for NULL everywhere (allocation 2 of a compile crashes the parser).
+/* Allocation failure: allocation number N fails, for every N, while the compiler compiles two
+ * seed effects (once with only allocation N failing, once with N and every later one failing),
+ * while the runtime loads them (.hfxo bytes: the reader, then GL objects), applies every pass
+ * and destroys them, and while it reloads one from a file. Every run must end in a clean error
+ * (X9001 "out of memory"; NULL or an error code with "out of memory" in hfx_device_last_error)
+ * or in exactly the result of a run without failure; LSan (the ASan build) checks nothing
+ * leaks, and the caller's objects (the device, a second effect, the effect being reloaded) keep
+ * their values and keep applying.
  *
  * The hook: this program is linked with -Wl,--wrap=malloc,... (tests/extra.cmake), so every
  * malloc, calloc, realloc and strdup the hfx libraries make goes through the __wrap_ functions
