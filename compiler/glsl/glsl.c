@@ -35,12 +35,21 @@ static void print_body(gp *p, const ir_stmt *s) {
     sb_put(p->out, "}\n");
 }
 
+/* GLSL 110 cannot write an array's value in one expression (no array constructors; found by
+ * fuzz/fuzz_diff.c), so there arrays, and structs holding one, keep HLSL's undefined start. */
+static bool zero_printable(gp *p, const hfx_type *t) {
+    if (!p->legacy || t->kind == TY_ARRAY) return !p->legacy;
+    for (uint32_t i = 0; t->kind == TY_STRUCT && i < t->st->field_count; i++)
+        if (!zero_printable(p, t->st->fields[i].type)) return false;
+    return true;
+}
+
 static void print_decl(gp *p, const ir_var *v, const ir_expr *init, bool zero, const char *end) {
     sb_put(p->out, glsl_decl(p, v->type, v->glsl));
     if (init) {
         sb_put(p->out, " = ");
         glsl_expr(p, init, PREC_ASSIGN);
-    } else if (zero) { /* HLSL leaves it undefined; zero keeps the output deterministic */
+    } else if (zero && zero_printable(p, v->type)) { /* HLSL leaves it undefined; zero keeps the output deterministic */
         sb_put(p->out, " = ");
         glsl_zero(p, v->type);
     }
@@ -123,6 +132,10 @@ static void print_stmt(gp *p, const ir_stmt *s) {
         sb_put(p->out, ");\n");
         return;
     case IS_SWITCH:
+        if (p->legacy) { /* found by fuzz/fuzz_diff.c: glslang's "Reserved word" */
+            glsl_error(p, s->loc, "switch statements need GLSL 330 or ES 300");
+            return;
+        }
         line_start(p);
         sb_put(p->out, "switch (");
         if (s->expr->type->base != B_INT) sb_put(p->out, "int(");
@@ -309,7 +322,7 @@ static void write_pixel_output(gp *p, const ir_leaf *l) {
 static void init_privates(gp *p) {
     for (uint32_t i = 0; i < p->sh->global_count; i++) {
         const ir_var *v = p->sh->globals[i];
-        if (v->kind != IRV_PRIVATE) continue;
+        if (v->kind != IRV_PRIVATE || (!v->copy_of && !v->init && !zero_printable(p, v->type))) continue;
         line_start(p);
         sb_printf(p->out, "%s = ", v->glsl);
         if (v->copy_of) sb_put(p->out, v->copy_of->glsl);

@@ -414,6 +414,10 @@ static void print_assign(gp *p, const ir_expr *e, int max) {
 /* Constructor arguments: GLSL forbids matrices among several matrix-constructor arguments,
  * so such a matrix is passed row by row (HLSL rows are GLSL columns). */
 static void print_construct(gp *p, const ir_expr *e) {
+    if (p->legacy && e->type->kind == TY_ARRAY) { /* 110 has no array constructors (found by fuzz/fuzz_diff.c) */
+        glsl_error(p, e->loc, "array initializers and constructors need GLSL 330 or ES 300");
+        return;
+    }
     const char *ty = glsl_ctor_type(p, e->type);
     if (glsl_is_matrix(e->type) && e->n == 1 && ncomp(e->a[0]->type) == 1) { /* a scalar spread */
         helper_splat_matrix(p, e->type);
@@ -439,6 +443,16 @@ static void print_construct(gp *p, const ir_expr *e) {
 }
 
 static void print_convert(gp *p, const ir_expr *e, int max);
+
+/* The upper-left part of a matrix as column vectors, `m[0].xyz, m[1].xyz, m[2].xyz`, for GLSL
+ * 110, which builds matrices from vectors only (found by fuzz/fuzz_diff.c). */
+static void print_submatrix_columns(gp *p, const hfx_type *to, const ir_expr *x) {
+    for (unsigned c = 0; c < to->rows; c++) {
+        if (c) sb_put(p->out, ", ");
+        glsl_expr(p, x, PREC_POSTFIX);
+        sb_printf(p->out, "[%u].%.*s", c, (int)to->cols, "xyzw");
+    }
+}
 
 /* A scalar cast to a struct or an array fills every component: `(VS_OUTPUT)0` zeroes each
  * member (nested structs, arrays and matrices too), as HLSL defines the cast. */
@@ -491,7 +505,8 @@ static void print_convert(gp *p, const ir_expr *e, int max) {
             return;
         }
         sb_printf(p->out, "%s(", tty); /* submatrix, or components in order from a vector */
-        glsl_expr(p, x, PREC_ASSIGN);
+        if (p->legacy && glsl_is_matrix(from)) print_submatrix_columns(p, to, x); /* 110: no mat3(mat4) */
+        else glsl_expr(p, x, PREC_ASSIGN);
         sb_put(p->out, ")");
         return;
     }

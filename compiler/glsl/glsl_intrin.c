@@ -191,6 +191,10 @@ static void lower_tex(gp *p, const ir_expr *e, int max) {
     hfx_dim dim = info->dim;
     int form = info->form == TEXF_PLAIN && e->n == 4 ? TEXF_GRAD : info->form;
     if (e->n < 2) { glsl_error(p, e->loc, "texture sampling needs coordinates"); return; }
+    if (p->legacy && form == TEXF_LOD && p->stage == IR_PIXEL) { /* 110 has texture2DLod in vertex shaders only */
+        glsl_error(p, e->loc, "tex*Dlod in a pixel shader needs GLSL 330 or ES 300");
+        return;
+    }
     sb_printf(p->out, "%s(", tex_function(p, dim, form));
     glsl_expr(p, e->a[0], PREC_ASSIGN);
     sb_put(p->out, ", ");
@@ -223,7 +227,12 @@ static bool legacy_intrinsic(gp *p, const ir_expr *e) {
     case HFX_INTR_DETERMINANT:
         if (t->rows == 2) { name = "hfx_determinant"; text = "float hfx_determinant($T m) { return m[0][0] * m[1][1] - m[0][1] * m[1][0]; }\n"; }
         else if (t->rows == 3) { name = "hfx_determinant"; text = "float hfx_determinant($T m) { return dot(m[0], cross(m[1], m[2])); }\n"; }
-        else return false;
+        else if (t->rows == 4) { /* along the first column, each minor as dot(u, cross(v, w)); found by fuzz/fuzz_diff.c */
+            name = "hfx_determinant";
+            text = "float hfx_determinant($T m) { return m[0].x * dot(m[1].yzw, cross(m[2].yzw, m[3].yzw)) - "
+                   "m[0].y * dot(m[1].xzw, cross(m[2].xzw, m[3].xzw)) + m[0].z * dot(m[1].xyw, cross(m[2].xyw, m[3].xyw)) - "
+                   "m[0].w * dot(m[1].xyz, cross(m[2].xyz, m[3].xyz)); }\n";
+        } else return false;
         break;
     case HFX_INTR_TRANSPOSE:
         if (t->rows == 2) { name = "hfx_transpose"; text = "$T hfx_transpose($T m) { return $T(m[0][0], m[1][0], m[0][1], m[1][1]); }\n"; }
@@ -475,8 +484,13 @@ static void lower_isfinite(gp *p, const ir_expr *e, int max) {
         sb_put(p->out, ")");
         return;
     }
-    if (ncomp(e->a[0]->type) != 1) { glsl_error(p, e->loc, "'isfinite' of a vector needs GLSL 330 or ES 300"); return; }
-    helper_typed(p, "isfinite", e->a[0]->type, "bool hfx_isfinite($T x) { return !(isnan(x) || isinf(x)); }\n");
+    /* GLSL 110 has neither isnan nor isinf (found by fuzz/fuzz_diff.c): x == x rules out NaN,
+     * and x * 0 is 0 only when x is finite */
+    if (ncomp(e->a[0]->type) == 1)
+        helper_typed(p, "isfinite", e->a[0]->type, "bool hfx_isfinite($T x) { return x == x && x * 0.0 == 0.0; }\n");
+    else
+        helper_typed(p, "isfinite", e->a[0]->type,
+                     "bvec$N hfx_isfinite($T x) { return bvec$N(vec$N(equal(x, x)) * vec$N(equal(x * 0.0, $T(0.0)))); }\n");
     args(p, "hfx_isfinite", e->a, 1);
 }
 
