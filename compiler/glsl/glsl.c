@@ -226,6 +226,14 @@ static bool is_flat(const glsl_iface *io, const char *sem) {
     return false;
 }
 
+/* The render target of a pixel shader output, COLOR0..COLOR3, or -1: one rule for declaring
+ * and writing (atoi once read "COLOR0X" as COLOR0 and wrote an undeclared output; found by
+ * fuzz/fuzz_diff.c). */
+static int color_target(const char *semantic) {
+    bool color = strncmp(semantic, "COLOR", 5) == 0 && semantic[5] >= '0' && semantic[5] <= '3' && !semantic[6];
+    return color ? semantic[5] - '0' : -1;
+}
+
 static void declare_interface(gp *p) {
     bool modern = !p->legacy;
     const glsl_iface *io = p->io;
@@ -243,9 +251,7 @@ static void declare_interface(gp *p) {
         bool vpos = false, color[4] = { !p->sh, false, false, false };
         for (int i = 0; i < p->in_count; i++) vpos |= is_vpos(p->in[i].semantic);
         for (int i = 0; i < p->out_count; i++)
-            if (strncmp(p->outv[i].semantic, "COLOR", 5) == 0 && p->outv[i].semantic[5] >= '0' &&
-                p->outv[i].semantic[5] <= '3' && !p->outv[i].semantic[6])
-                color[p->outv[i].semantic[5] - '0'] = true;
+            if (color_target(p->outv[i].semantic) >= 0) color[color_target(p->outv[i].semantic)] = true;
         if (vpos || p->uses_fixup) sb_put(p->out, "uniform vec4 hfx_pos_fixup;\n");
         sb_put(p->out, "uniform int hfx_alpha_func;\nuniform float hfx_alpha_ref;\n");
         for (int i = 0; i < 4 && modern; i++)
@@ -313,8 +319,8 @@ static void write_pixel_output(gp *p, const ir_leaf *l) {
         sb_printf(p->out, "gl_FragDepth = float(%s%s);\n", l->path, hfx_type_components(l->type) > 1 ? ".x" : "");
         return;
     }
-    int n = strncmp(l->semantic, "COLOR", 5) == 0 ? atoi(l->semantic + 5) : -1;
-    if (n < 0 || n > 3) { glsl_error(p, l->loc, hfx_arena_printf(p->c->arena, "'%s': invalid pixel shader output semantic", l->semantic)); return; }
+    int n = color_target(l->semantic);
+    if (n < 0) { glsl_error(p, l->loc, hfx_arena_printf(p->c->arena, "'%s': invalid pixel shader output semantic", l->semantic)); return; }
     const char *dst = p->legacy ? hfx_arena_printf(p->c->arena, "gl_FragData[%d]", n) : hfx_arena_printf(p->c->arena, "hfx_o_COLOR%d", n);
     write_vec4(p, l, dst, false);
 }

@@ -45,6 +45,14 @@ static void missing_return_semantic(void) {
     free(d);
 }
 
+/* Found by fuzz/fuzz_diff.c: "COLOR0x" was written as COLOR0 but never declared (X9000). */
+static void odd_color_semantic_is_reported(void) {
+    char *d = diagnostics(VS "float4 ps() : COLOR0x { return 1; }\n"
+                          "technique T { pass P { VertexShader = compile vs_3_0 vs(); PixelShader = compile ps_3_0 ps(); } }\n");
+    CHECK_STR(d, "e.fx(2,8): error X3094: 'COLOR0X0': invalid pixel shader output semantic\n");
+    free(d);
+}
+
 /* A pass without a pixel shader (fixed function) still gets a program that links. */
 static void fixed_function_pixel_stage(void) {
     const char *src = "struct V { float4 p : POSITION; float4 c : COLOR0; };\n"
@@ -105,6 +113,7 @@ int main(void) {
     RUN(asm_block_is_reported);
     RUN(missing_input_semantic);
     RUN(missing_return_semantic);
+    RUN(odd_color_semantic_is_reported);
     RUN(fixed_function_pixel_stage);
     RUN(glsl110_limits_are_reported);
     RUN(glsl110_switch_lod_and_array_constructors);
