@@ -21,7 +21,7 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 build() {
   cmake -S . -B $out -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHFX_FUZZ=ON -DHFX_TESTS=OFF -DHFX_TOOLS=OFF \
     -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 -DHFX_WERROR=ON >/dev/null
-  cmake --build $out -j "${HFX_FUZZ_JOBS:-2}" >/dev/null
+  cmake --build $out -j "${HFX_FUZZ_JOBS:-2}" > $out/build.log 2>&1 || { cat $out/build.log; exit 1; }
 }
 
 # One effect per row of the semantics tables: the row's globals and body in a pixel shader.
