@@ -484,9 +484,11 @@ static void lower_isfinite(gp *p, const ir_expr *e, int max) {
         sb_put(p->out, ")");
         return;
     }
-    /* GLSL 110 has neither isnan nor isinf (found by fuzz/fuzz_diff.c): x == x rules out NaN,
-     * and x * 0 is 0 only when x is finite */
-    if (ncomp(e->a[0]->type) == 1)
+    /* GLSL 110 has neither isnan nor isinf (found by fuzz/fuzz_diff.c): there x == x rules out
+     * NaN, and x * 0 is 0 only when x is finite, as hfx_isnan / hfx_isinf test them */
+    if (ncomp(e->a[0]->type) == 1 && !p->legacy)
+        helper_typed(p, "isfinite", e->a[0]->type, "bool hfx_isfinite($T x) { return !(isnan(x) || isinf(x)); }\n");
+    else if (ncomp(e->a[0]->type) == 1)
         helper_typed(p, "isfinite", e->a[0]->type, "bool hfx_isfinite($T x) { return x == x && x * 0.0 == 0.0; }\n");
     else
         helper_typed(p, "isfinite", e->a[0]->type,
