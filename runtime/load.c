@@ -278,7 +278,8 @@ static int is_hfxo_file(const char *path, void **data, size_t *size) {
     if (hfxo && fseek(f, 0, SEEK_END) == 0) {
         long len = ftell(f);
         *data = len > 0 ? malloc((size_t)len) : NULL;
-        if (*data && fseek(f, 0, SEEK_SET) == 0 && fread(*data, 1, (size_t)len, f) == (size_t)len) *size = (size_t)len;
+        if (len > 0 && !*data) hfxo = -2; /* out of memory, not a bad file */
+        else if (*data && fseek(f, 0, SEEK_SET) == 0 && fread(*data, 1, (size_t)len, f) == (size_t)len) *size = (size_t)len;
         else free(*data), *data = NULL, hfxo = -1;
     }
     fclose(f);
@@ -305,7 +306,8 @@ hfx_effect *hfx_effect_load(hfx_device *dev, const char *path, const hfx_load_op
     size_t size = 0;
     int kind = is_hfxo_file(path, &data, &size);
     if (kind < 0) {
-        hfx_rt_fail(dev, HFX_ERR_LOAD, "%s: cannot read the file", path);
+        if (kind == -2) hfx_rt_fail(dev, HFX_ERR_MEMORY, "%s: out of memory reading the file", path);
+        else hfx_rt_fail(dev, HFX_ERR_LOAD, "%s: cannot read the file", path);
         if (errors) *errors = dup_string(dev->error);
         return NULL;
     }

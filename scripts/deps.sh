@@ -3,7 +3,8 @@
 # Quiet when everything is already there.
 set -euo pipefail
 pkgs=(build-essential cmake ninja-build pkg-config re2c bison glslang-dev glslang-tools libosmesa6-dev
-      libgl-dev libegl-dev libgl1-mesa-dri libegl-mesa0 zlib1g-dev libpng-dev libcjson-dev libstb-dev libglfw3-dev libdevil-dev xvfb xauth valgrind spirv-tools)
+      libgl-dev libegl-dev libgl1-mesa-dri libegl-mesa0 zlib1g-dev libpng-dev libcjson-dev libstb-dev libglfw3-dev libdevil-dev xvfb xauth valgrind spirv-tools
+      clang-14 libclang-rt-14-dev) # clang: the fuzz harnesses (libFuzzer) and their sanitizer runtimes
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

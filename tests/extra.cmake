@@ -84,3 +84,12 @@ if(TARGET tools_test_hfx_add_effects)
     add_dependencies(tools_test_hfx_add_effects hfxc)
   endif()
 endif()
+
+# Allocation failure (tests/alloc): the program wraps the allocator at link time, so the
+# libraries carry no hook; allocation N fails for every N in turn.
+add_executable(alloc_test_alloc_failure ${CMAKE_CURRENT_SOURCE_DIR}/alloc/test_alloc_failure.c)
+target_include_directories(alloc_test_alloc_failure PRIVATE ${PROJECT_SOURCE_DIR}/common)
+target_link_libraries(alloc_test_alloc_failure PRIVATE hfx hfx_test_harness m)
+target_link_options(alloc_test_alloc_failure PRIVATE -Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc,--wrap=strdup)
+add_test(NAME alloc/test_alloc_failure COMMAND alloc_test_alloc_failure WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties(alloc/test_alloc_failure PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 900 LABELS alloc)

@@ -25,16 +25,18 @@ uint32_t hfx_diags_add_file(hfx_diags *d, const char *name, const char *path, co
 static void add(hfx_diags *d, hfxc_severity sev, hfx_loc loc, unsigned code, const char *fmt, va_list ap) {
     if (sev == HFXC_WARNING && (d->flags & HFXC_NO_WARNINGS)) return;
     if (sev == HFXC_WARNING && (d->flags & HFXC_WERROR)) sev = HFXC_ERROR;
-    if (!HFX_ARENA_GROW(d->arena, d->items, d->count, d->cap, 16)) return;
     char buf[1024];
     vsnprintf(buf, sizeof buf, fmt, ap);
+    /* the message first: a failure escaping from either allocation leaves no half-made item */
+    char *message = hfx_arena_strdup(d->arena, buf);
+    if (!message || !HFX_ARENA_GROW(d->arena, d->items, d->count, d->cap, 16)) return;
     hfxc_diag *g = &d->items[d->count++];
     g->severity = sev;
     g->file = loc.file < d->file_count ? d->files[loc.file].name : "<unknown>";
     g->line = loc.line;
     g->col = loc.col;
     g->code = code;
-    g->message = hfx_arena_strdup(d->arena, buf);
+    g->message = message;
     if (sev == HFXC_ERROR) d->errors++;
     else if (sev == HFXC_WARNING) d->warnings++;
 }

@@ -49,9 +49,9 @@ enum {
     X_PP_STRING_EOL = 1005,   /* a string continues past the end of line */
     X_UNSUPPORTED = 3094,     /* unsupported construct (asm blocks...) */
     X_INTERNAL = 9000,        /* hfx's own GLSL failed its self-check (fxc has no such code) */
-    /* 9001 and 9002: memory and source-size limits; 9003: shared parameters of a pool that do not
-     * agree, reported by the runtime (runtime/pool.c) */
-    X_POOL_MISMATCH = 9003
+    X_MEMORY_LIMIT = 9001,    /* out of memory, or past the memory a source of its size may use (hfx's own) */
+    X_SOURCE_TOO_LARGE = 9002, /* a source file past HFXC_MAX_SOURCE_BYTES (hfx's own) */
+    X_POOL_MISMATCH = 9003    /* shared parameters of a pool that do not agree: the runtime's (runtime/pool.c) */
 };
 
 void hfx_diags_init(hfx_diags *d, hfx_arena *arena, unsigned flags);

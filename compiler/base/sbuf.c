@@ -7,17 +7,31 @@
 #include <string.h>
 
 #include "base/sbuf.h"
+#include "base/arena.h"
+
+/* A bigger block for the text: realloc, or a new arena block holding the old text. */
+static char *grow_text(sbuf *b, size_t cap) {
+    if (!b->arena) return realloc(b->d, cap);
+    char *d = hfx_arena_alloc_raw(b->arena, cap);
+    if (d && b->len) memcpy(d, b->d, b->len + 1);
+    return d;
+}
+
+/* Room for n more bytes and the NUL; false (and oom) when it cannot be had. */
+static bool reserve(sbuf *b, size_t n) {
+    if (b->oom) return false;
+    if (b->len + n + 1 <= b->cap) return true;
+    size_t cap = b->cap ? b->cap : 256;
+    while (cap < b->len + n + 1) cap *= 2;
+    char *d = grow_text(b, cap);
+    if (!d) { b->oom = true; return false; }
+    b->d = d;
+    b->cap = cap;
+    return true;
+}
 
 void sb_putn(sbuf *b, const char *s, size_t n) {
-    if (b->oom) return;
-    if (b->len + n + 1 > b->cap) {
-        size_t cap = b->cap ? b->cap : 256;
-        while (cap < b->len + n + 1) cap *= 2;
-        char *d = realloc(b->d, cap);
-        if (!d) { b->oom = true; return; }
-        b->d = d;
-        b->cap = cap;
-    }
+    if (!reserve(b, n)) return;
     memcpy(b->d + b->len, s, n);
     b->len += n;
     b->d[b->len] = 0;
@@ -115,18 +129,17 @@ static bool put_plain(sbuf *b, const fmt_spec *s, va_list *ap) {
      : (s)->stars == 1 ? snprintf(out, size, spec, (star)[0], arg) \
                        : snprintf(out, size, spec, (star)[0], (star)[1], arg))
 
-/* Appends what HFX_FMT_ONE gives, through the heap when it is longer than a line. */
+/* Appends what HFX_FMT_ONE gives: through a line buffer, or straight into the text when longer
+ * (no malloc of its own: an arena buffer's allocation failure may longjmp; base/arena.h). */
 #define HFX_FMT_PUT(b, s, spec, star, arg) \
     do { \
         char small_[256]; \
         int n_ = HFX_FMT_ONE(small_, sizeof small_, s, spec, star, arg); \
         if (n_ < 0) break; \
         if ((size_t)n_ < sizeof small_) { sb_putn(b, small_, (size_t)n_); break; } \
-        char *big_ = malloc((size_t)n_ + 1); \
-        if (!big_) { (b)->oom = true; break; } \
-        HFX_FMT_ONE(big_, (size_t)n_ + 1, s, spec, star, arg); \
-        sb_putn(b, big_, (size_t)n_); \
-        free(big_); \
+        if (!reserve(b, (size_t)n_)) break; \
+        HFX_FMT_ONE((b)->d + (b)->len, (size_t)n_ + 1, s, spec, star, arg); \
+        (b)->len += (size_t)n_; \
     } while (0)
 
 static void put_integer(sbuf *b, const fmt_spec *s, const char *spec, const int *star, va_list *ap) {
@@ -191,8 +204,13 @@ void sb_printf(sbuf *b, const char *fmt, ...) {
 
 char *sb_take(sbuf *b) {
     if (b->oom) {
-        free(b->d);
+        sb_free(b);
         b->d = NULL;
     }
+    if (b->arena && b->d) return strdup(b->d);
     return b->d;
+}
+
+void sb_free(sbuf *b) {
+    if (!b->arena) free(b->d);
 }

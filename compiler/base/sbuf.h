@@ -1,5 +1,6 @@
 /* sbuf.h: a growable, NUL-terminated text buffer. A failed allocation sets `oom` and later
- * writes do nothing, so callers check once at the end. */
+ * writes do nothing, so callers check once at the end. With `arena` set the text lives in the
+ * arena (nothing to free, nothing lost if an allocation failure escapes; base/arena.h). */
 #ifndef HFX_SBUF_H
 #define HFX_SBUF_H
 
@@ -7,12 +8,14 @@
 #include <stdbool.h>
 #include <stddef.h>
 
-typedef struct sbuf { char *d; size_t len, cap; bool oom; } sbuf;
+struct hfx_arena;
+typedef struct sbuf { char *d; size_t len, cap; bool oom; struct hfx_arena *arena; } sbuf;
 
 void sb_put(sbuf *b, const char *s);                    /* appends a string */
 void sb_putn(sbuf *b, const char *s, size_t n);         /* appends n bytes of s */
 void sb_printf(sbuf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3))); /* appends formatted text */
 void sb_vprintf(sbuf *b, const char *fmt, va_list ap);     /* appends formatted text */
-char *sb_take(sbuf *b); /* the text, the caller's to free; NULL (and freed) after a failed allocation */
+char *sb_take(sbuf *b); /* the text, the caller's to free (a malloc'ed copy for an arena buffer); NULL after a failed allocation */
+void sb_free(sbuf *b);  /* frees the text unless it lives in an arena */
 
 #endif

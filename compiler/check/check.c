@@ -47,7 +47,7 @@ uint32_t ck_lookup_funcs(check_ctx *c, const char *name, hfx_decl **out, uint32_
 }
 
 static void push_entry(check_ctx *c, hfx_decl *d) {
-    if (!HFX_GROW(c->entries, c->entry_count, c->entry_cap, 256)) { c->oom = true; return; }
+    if (!HFX_ARENA_GROW(c->arena, c->entries, c->entry_count, c->entry_cap, 256)) { c->oom = true; return; }
     uint32_t h = hash_name(d->name);
     c->entries[c->entry_count] = (check_entry){d->name, d, c->depth, c->buckets[h]};
     c->buckets[h] = (int32_t)c->entry_count++;
@@ -185,7 +185,7 @@ void ck_annotations(check_ctx *c, hfx_annotation_ast *a, uint32_t n) {
 static hfx_func *defined(hfx_func *f) { return f && f->definition ? f->definition : f; }
 
 void ck_record_call(check_ctx *c, hfx_func *to, hfx_loc loc, bool compile) {
-    if (!HFX_GROW(c->edges, c->edge_count, c->edge_cap, 64)) { c->oom = true; return; }
+    if (!HFX_ARENA_GROW(c->arena, c->edges, c->edge_count, c->edge_cap, 64)) { c->oom = true; return; }
     c->edges[c->edge_count++] = (check_edge){c->func ? c->func->func : NULL, to, loc, compile};
 }
 
@@ -226,11 +226,11 @@ static bool build_graph(check_ctx *c, call_graph *g, uint32_t *src, uint32_t *to
     uint32_t ne = c->edge_count;
     g->cap = 16;
     while (g->cap < ne * 4 + 16) g->cap *= 2;
-    g->keys = calloc(g->cap, sizeof *g->keys);
-    g->ids = calloc(g->cap, sizeof *g->ids);
-    g->first = calloc(ne * 2 + 2, sizeof *g->first);
-    g->dst = malloc(sizeof *g->dst * (ne + 1));
-    g->edge = malloc(sizeof *g->edge * (ne + 1));
+    g->keys = HFX_NEW_ARRAY(c->arena, hfx_func *, g->cap);
+    g->ids = HFX_NEW_ARRAY(c->arena, uint32_t, g->cap);
+    g->first = HFX_NEW_ARRAY(c->arena, uint32_t, ne * 2 + 2);
+    g->dst = HFX_NEW_ARRAY(c->arena, uint32_t, ne + 1);
+    g->edge = HFX_NEW_ARRAY(c->arena, uint32_t, ne + 1);
     if (!g->keys || !g->ids || !g->first || !g->dst || !g->edge) return false;
     for (uint32_t i = 0; i < ne; i++) {
         src[i] = c->edges[i].from ? node_of(g, defined(c->edges[i].from)) : UINT32_MAX;
@@ -238,7 +238,7 @@ static bool build_graph(check_ctx *c, call_graph *g, uint32_t *src, uint32_t *to
         if (src[i] != UINT32_MAX) g->first[src[i] + 1]++;
     }
     for (uint32_t i = 0; i < g->nodes; i++) g->first[i + 1] += g->first[i];
-    uint32_t *fill = calloc(g->nodes + 1, sizeof *fill);
+    uint32_t *fill = HFX_NEW_ARRAY(c->arena, uint32_t, g->nodes + 1);
     if (!fill) return false;
     for (uint32_t i = 0; i < ne; i++) {
         if (src[i] == UINT32_MAX) continue;
@@ -246,7 +246,6 @@ static bool build_graph(check_ctx *c, call_graph *g, uint32_t *src, uint32_t *to
         g->dst[k] = to[i];
         g->edge[k] = i;
     }
-    free(fill);
     return true;
 }
 
@@ -254,8 +253,9 @@ static bool build_graph(check_ctx *c, call_graph *g, uint32_t *src, uint32_t *to
  * cycle and is reported (once per calling function). O(functions + calls). */
 static void find_cycles(check_ctx *c, const call_graph *g) {
     enum { WHITE, GREY, BLACK };
-    unsigned char *color = calloc(g->nodes + 1, 1), *reported = calloc(g->nodes + 1, 1);
-    uint32_t *stack = malloc(sizeof *stack * (g->nodes + 1)), *cursor = malloc(sizeof *cursor * (g->nodes + 1));
+    unsigned char *color = HFX_NEW_ARRAY(c->arena, unsigned char, g->nodes + 1);
+    unsigned char *reported = HFX_NEW_ARRAY(c->arena, unsigned char, g->nodes + 1);
+    uint32_t *stack = HFX_NEW_ARRAY(c->arena, uint32_t, g->nodes + 1), *cursor = HFX_NEW_ARRAY(c->arena, uint32_t, g->nodes + 1);
     for (uint32_t root = 0; color && reported && stack && cursor && root < g->nodes; root++) {
         if (color[root] != WHITE) continue;
         uint32_t top = 0;
@@ -281,24 +281,13 @@ static void find_cycles(check_ctx *c, const call_graph *g) {
             }
         }
     }
-    free(color);
-    free(reported);
-    free(stack);
-    free(cursor);
 }
 
 static void check_recursion(check_ctx *c) {
     call_graph g;
     memset(&g, 0, sizeof g);
-    uint32_t *src = malloc(sizeof *src * (c->edge_count + 1)), *to = malloc(sizeof *to * (c->edge_count + 1));
+    uint32_t *src = HFX_NEW_ARRAY(c->arena, uint32_t, c->edge_count + 1), *to = HFX_NEW_ARRAY(c->arena, uint32_t, c->edge_count + 1);
     if (src && to && build_graph(c, &g, src, to)) find_cycles(c, &g);
-    free(src);
-    free(to);
-    free(g.keys);
-    free(g.ids);
-    free(g.first);
-    free(g.dst);
-    free(g.edge);
 }
 
 /* ---- top-level declarations ---- */
@@ -362,7 +351,5 @@ bool hfx_check(hfx_arena *arena, hfx_diags *diags, hfx_types *types, hfx_ast *as
         if (ast->decls[i]) check_decl(&c, ast->decls[i]);
     check_undefined(&c);
     if (!diags->errors) check_recursion(&c);
-    free(c.entries);
-    free(c.edges);
     return diags->errors == 0 && !c.oom;
 }

@@ -51,7 +51,7 @@ typedef struct check_ctx {
     hfx_diags *diags;
     hfx_types *types;
     const hfx_type *err;         /* the type of an erroneous expression: no further reports */
-    check_entry *entries; uint32_t entry_count, entry_cap; /* malloc'ed, freed by hfx_check */
+    check_entry *entries; uint32_t entry_count, entry_cap; /* in the arena */
     int32_t buckets[CHECK_BUCKETS];
     uint32_t depth;              /* 0: globals */
     hfx_decl *func;              /* the function whose body is checked, NULL at top level */
@@ -59,7 +59,7 @@ typedef struct check_ctx {
     bool in_state;               /* a state value: unknown names are state constants */
     bool oom;
     uint32_t global_count;
-    check_edge *edges; uint32_t edge_count, edge_cap;  /* malloc'ed, freed by hfx_check */
+    check_edge *edges; uint32_t edge_count, edge_cap;  /* in the arena */
 } check_ctx;
 
 /* check.c: the call graph */

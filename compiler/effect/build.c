@@ -142,18 +142,12 @@ static void declared_at(hfx_builder *b, hfx_fx_param *p, hfx_loc loc) {
 static uint32_t add_param(hfx_builder *b, const char *name, const char *semantic, const hfx_type *ty,
                           uint32_t parent, uint32_t offset) {
     hfx_fx_effect *fx = b->fx;
-    uint32_t cap = b->param_cap;
-    if (!HFX_BUILD_GROW(b, fx->params, fx->param_count, b->param_cap)) return HFX_NONE;
-    if (cap != b->param_cap) {
-        cap = b->param_cap;
-        const hfx_type **t = realloc(b->param_types, sizeof *t * cap);
-        if (t) b->param_types = t;
-        hfx_decl **d = realloc(b->param_decls, sizeof *d * cap);
-        if (d) b->param_decls = d;
-        if (!t || !d) {
-            b->failed_alloc = true;
-            return HFX_NONE;
-        }
+    /* three arrays, three capacities: a failure between growths cannot leave one short */
+    if (!HFX_ARENA_GROW(b->arena, b->param_types, fx->param_count, b->param_type_cap, 8) ||
+        !HFX_ARENA_GROW(b->arena, b->param_decls, fx->param_count, b->param_decl_cap, 8) ||
+        !HFX_BUILD_GROW(b, fx->params, fx->param_count, b->param_cap)) {
+        b->failed_alloc = true;
+        return HFX_NONE;
     }
     uint32_t i = fx->param_count++;
     hfx_fx_param *p = &fx->params[i];
@@ -256,7 +250,7 @@ static bool build_params(hfx_builder *b) {
     if (b->failed_alloc) return false;
     fx->value_words = offset;
     fx->values = calloc(offset ? offset : 1, sizeof *fx->values);
-    if (!fx->values) return false;
+    if (!fx->values) return !(b->failed_alloc = true);
     for (uint32_t i = 0; i < fx->top_param_count; i++) {
         hfx_decl *d = b->param_decls[i];
         store_default(b, d, &fx->params[i]);
@@ -363,15 +357,23 @@ uint32_t hfx_build_annotations(hfx_builder *b, const hfx_annotation_ast *list, u
 
 /* --- the driver -------------------------------------------------------------------------- */
 
-static void builder_free(hfx_builder *b) {
-    free(b->param_types);
-    free(b->param_decls);
-    free(b->keys);
+/* If an allocation failure escapes the build (base/arena.h), everything malloc'ed so far. */
+static void builder_abandon(void *ctx) {
+    hfx_builder *b = ctx;
+    hfx_fx_program_clear(&b->pending);
+    hfx_fx_effect_free(b->fx);
 }
 
-static bool builder_start(hfx_builder *b, hfx_arena *arena, hfx_diags *diags, hfx_types *types, hfx_ast *ast,
-                          const char *source_name, unsigned targets) {
-    memset(b, 0, sizeof *b);
+static hfx_fx_effect *out_of_memory(hfx_diags *diags) {
+    hfx_error(diags, (hfx_loc){0, 1, 1}, X_MEMORY_LIMIT, "out of memory building the effect");
+    return NULL;
+}
+
+/* The builder lives in the arena, so that builder_abandon can still reach it after an escape. */
+static hfx_builder *builder_start(hfx_arena *arena, hfx_diags *diags, hfx_types *types, hfx_ast *ast,
+                                  const char *source_name, unsigned targets) {
+    hfx_builder *b = HFX_NEW(arena, hfx_builder);
+    if (!b || !(b->cleanup = hfx_arena_on_escape(arena, builder_abandon, b))) return NULL;
     b->arena = arena;
     b->diags = diags;
     b->types = types;
@@ -379,10 +381,13 @@ static bool builder_start(hfx_builder *b, hfx_arena *arena, hfx_diags *diags, hf
     b->targets = targets;
     if (targets & (1u << HFX_TARGET_SPIRV)) b->targets |= 1u << HFX_TARGET_GLSL330; /* SPIR-V is made from it */
     b->fx = ast ? calloc(1, sizeof *b->fx) : NULL;
-    if (!b->fx) return false;
+    if (!b->fx) {
+        hfx_arena_forget(arena, b->cleanup);
+        return NULL;
+    }
     b->fx->source_name = hfx_build_strdup(b, source_name ? source_name : "");
     b->fx->targets = targets;
-    return true;
+    return b;
 }
 
 /* The targets every program has code for (what was asked for when there is no program). */
@@ -498,11 +503,14 @@ static void self_check(hfx_builder *b) {
 
 /* Hands the effect over, or frees it when anything went wrong since `errors`. */
 static hfx_fx_effect *builder_finish(hfx_builder *b, bool ok, uint32_t errors) {
+    hfx_arena_forget(b->arena, b->cleanup);
+    /* glslang's work holds its own memory and process state: failures return NULL here */
+    hfx_arena_escape_off(b->arena);
     if (ok && !b->failed_alloc && b->diags->errors == errors) self_check(b);
     if (ok && !b->failed_alloc && b->diags->errors == errors) build_spirv(b, b->fx->targets);
+    hfx_arena_escape_on(b->arena);
     b->fx->targets = present_targets(b->fx);
-    if (b->failed_alloc) hfx_error(b->diags, (hfx_loc){0, 0, 0}, X_UNSUPPORTED, "out of memory building the effect");
-    builder_free(b);
+    if (b->failed_alloc) hfx_error(b->diags, (hfx_loc){0, 1, 1}, X_MEMORY_LIMIT, "out of memory building the effect");
     if (!ok || b->failed_alloc || b->diags->errors > errors) {
         hfx_fx_effect_free(b->fx);
         return NULL;
@@ -512,11 +520,11 @@ static hfx_fx_effect *builder_finish(hfx_builder *b, bool ok, uint32_t errors) {
 
 hfx_fx_effect *hfx_build_effect(hfx_arena *arena, hfx_diags *diags, hfx_types *types, hfx_ast *ast,
                                 const char *source_name, unsigned targets) {
-    hfx_builder b;
     uint32_t errors = diags->errors;
-    if (!builder_start(&b, arena, diags, types, ast, source_name, targets)) return NULL;
-    bool ok = build_params(&b) && hfx_build_samplers(&b) && hfx_build_techniques(&b);
-    return builder_finish(&b, ok, errors);
+    hfx_builder *b = builder_start(arena, diags, types, ast, source_name, targets);
+    if (!b) return out_of_memory(diags);
+    bool ok = build_params(b) && hfx_build_samplers(b) && hfx_build_techniques(b);
+    return builder_finish(b, ok, errors);
 }
 
 static hfx_decl *find_function(hfx_ast *ast, const char *name) {
@@ -578,11 +586,11 @@ hfx_fx_effect *hfx_build_entry_effect(hfx_arena *arena, hfx_diags *diags, hfx_ty
                   entry ? entry : "");
         return NULL;
     }
-    hfx_builder b;
     uint32_t errors = diags->errors;
-    if (!builder_start(&b, arena, diags, types, ast, source_name, targets)) return NULL;
-    bool ok = build_params(&b) && hfx_build_samplers(&b);
-    hfx_technique_ast *t = ok && entry ? entry_technique(&b, entry, profile) : NULL;
-    if (t) hfx_build_technique(&b, t);
-    return builder_finish(&b, ok && t, errors);
+    hfx_builder *b = builder_start(arena, diags, types, ast, source_name, targets);
+    if (!b) return out_of_memory(diags);
+    bool ok = build_params(b) && hfx_build_samplers(b);
+    hfx_technique_ast *t = ok && entry ? entry_technique(b, entry, profile) : NULL;
+    if (t) hfx_build_technique(b, t);
+    return builder_finish(b, ok && t, errors);
 }

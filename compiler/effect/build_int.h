@@ -33,10 +33,14 @@ typedef struct hfx_builder {
     uint32_t param_cap, value_cap, annotation_cap, state_cap, sampler_cap, program_cap, pass_cap, technique_cap;
     uint32_t expr_cap;             /* of fx->exprs */
     uint32_t variant_cap;          /* of fx->variants */
-    const hfx_type **param_types;  /* parallel to fx->params: the HLSL type each param has */
-    hfx_decl **param_decls;        /* parallel to fx->params: the global (top level only) */
-    hfx_program_key *keys;         /* parallel to fx->programs */
+    const hfx_type **param_types;  /* parallel to fx->params: the HLSL type each param has (arena) */
+    hfx_decl **param_decls;        /* parallel to fx->params: the global (top level only) (arena) */
+    uint32_t param_type_cap, param_decl_cap;
+    hfx_program_key *keys;         /* parallel to fx->programs, in the arena */
+    uint32_t key_cap;
     hfx_codegen *cg;
+    hfx_fx_program pending;        /* the program the codegen is filling, before it joins fx */
+    hfx_arena_cleanup *cleanup;    /* frees fx and pending if a failure escapes */
     bool failed_alloc;
 } hfx_builder;
 

@@ -329,31 +329,25 @@ static uint32_t program_for(hfx_builder *b, const hfx_expr *vs, const hfx_expr *
         hfx_error(b->diags, loc, X_UNSUPPORTED, "the code generator could not start");
         return HFX_NONE;
     }
-    hfx_fx_program prog;
-    memset(&prog, 0, sizeof prog);
+    hfx_fx_program *prog = &b->pending; /* the builder's, so an escaping failure frees it */
     uint32_t errors = b->diags->errors;
-    if (hfx_codegen_program(b->cg, vs, ps, flat, &prog) != 0) {
-        hfx_fx_program_clear(&prog);
+    if (hfx_codegen_program(b->cg, vs, ps, flat, prog) != 0) {
+        hfx_fx_program_clear(prog);
         if (b->diags->errors == errors)
             hfx_error(b->diags, loc, X_UNSUPPORTED, "code generation failed for this pass");
         return HFX_NONE;
     }
-    uint32_t cap = b->program_cap;
-    if (!HFX_BUILD_GROW(b, fx->programs, fx->program_count, b->program_cap)) {
-        hfx_fx_program_clear(&prog);
+    /* the keys have their own capacity (in the arena): a failure between the two growths
+     * once left them shorter than the programs (found by tests/alloc) */
+    if (!HFX_ARENA_GROW(b->arena, b->keys, fx->program_count, b->key_cap, 8) ||
+        !HFX_BUILD_GROW(b, fx->programs, fx->program_count, b->program_cap)) {
+        b->failed_alloc = true;
+        hfx_fx_program_clear(prog);
         return HFX_NONE;
     }
-    if (cap != b->program_cap) {
-        hfx_program_key *k = realloc(b->keys, sizeof *k * b->program_cap);
-        if (!k) {
-            b->failed_alloc = true;
-            hfx_fx_program_clear(&prog);
-            return HFX_NONE;
-        }
-        b->keys = k;
-    }
     b->keys[fx->program_count] = (hfx_program_key){vs, ps, flat};
-    fx->programs[fx->program_count] = prog;
+    fx->programs[fx->program_count] = *prog;
+    memset(prog, 0, sizeof *prog);
     return fx->program_count++;
 }
 
@@ -470,7 +464,7 @@ static void build_variants(hfx_builder *b, const pass_shaders *sh, uint32_t pass
         hfx_error(b->diags, loc, X_UNSUPPORTED, "shader arrays chosen by more than one int parameter are not supported");
         return;
     }
-    uint32_t *values = malloc((fx->value_words ? fx->value_words : 1) * sizeof *values);
+    uint32_t *values = HFX_NEW_ARRAY(b->arena, uint32_t, fx->value_words ? fx->value_words : 1);
     if (!values) { b->failed_alloc = true; return; }
     memcpy(values, fx->values, fx->value_words * sizeof *values);
     for (int v = 0; v < (driver == HFX_NONE ? 1 : MAX_DRIVER_VALUE); v++) {
@@ -481,10 +475,9 @@ static void build_variants(hfx_builder *b, const pass_shaders *sh, uint32_t pass
             known |= fx->variants[i].pass == pass && fx->variants[i].vs == idx[0] && fx->variants[i].ps == idx[1];
         if (!known && (prog = variant_program(b, sh, idx, loc)) != HFX_NONE) add_variant(b, pass, idx, prog);
     }
-    free(values);
 }
 
-static void build_pass(hfx_builder *b, const hfx_pass_ast *pa, hfx_fx_pass *pass) {
+static void build_pass(hfx_builder *b, const hfx_pass_ast *pa, hfx_fx_pass *pass, uint32_t index) {
     pass->name = hfx_build_strdup(b, pa->name ? pa->name : "");
     pass->annotation_count = hfx_build_annotations(b, pa->annotations, pa->annotation_count, &pass->first_annotation);
     pass->first_state = b->fx->state_count;
@@ -492,7 +485,7 @@ static void build_pass(hfx_builder *b, const hfx_pass_ast *pa, hfx_fx_pass *pass
     pass_shaders sh = {0};
     for (uint32_t i = 0; i < pa->state_count; i++) pass_state(b, &pa->states[i], &sh);
     pass->state_count = b->fx->state_count - pass->first_state;
-    if (sh.sel[0].array || sh.sel[1].array) build_variants(b, &sh, b->fx->pass_count, pa->loc);
+    if (sh.sel[0].array || sh.sel[1].array) build_variants(b, &sh, index, pa->loc);
     else if (sh.any && (sh.vs || sh.ps)) pass->program = program_for(b, sh.vs, sh.ps, sh.flat_colors, pa->loc);
     for (uint32_t i = 0; i < pass->state_count; i++) {
         hfx_fx_state *st = &b->fx->states[pass->first_state + i];
@@ -510,11 +503,12 @@ void hfx_build_technique(hfx_builder *b, const hfx_technique_ast *ta) {
     fx->techniques[t].first_pass = fx->pass_count;
     for (uint32_t i = 0; i < ta->pass_count; i++) {
         if (!HFX_BUILD_GROW(b, fx->passes, fx->pass_count, b->pass_cap)) return;
-        hfx_fx_pass pass;
-        memset(&pass, 0, sizeof pass);
-        build_pass(b, &ta->passes[i], &pass);
-        /* build_pass may grow other arrays but not passes, so the slot is still there. */
-        fx->passes[fx->pass_count++] = pass;
+        /* built in its slot, already counted, so that the effect owns its name at once (an
+         * escaping allocation failure frees it with the effect); build_pass may grow other
+         * arrays but not passes, so the slot stays where it is */
+        hfx_fx_pass *pass = &fx->passes[fx->pass_count];
+        memset(pass, 0, sizeof *pass);
+        build_pass(b, &ta->passes[i], pass, fx->pass_count++);
         fx->techniques[t].pass_count++;
     }
 }

@@ -10,13 +10,11 @@
 
 enum { MAX_DEPTH = 64 };
 
-void hfx_cvec_free(hfx_cvec *c) {
-    free(c->v);
-    memset(c, 0, sizeof *c);
-}
+/* The components live in the arena (nothing lost if an allocation failure escapes). */
+void hfx_cvec_free(hfx_cvec *c) { memset(c, 0, sizeof *c); }
 
 static bool push(hfx_builder *b, hfx_cvec *c, double v) {
-    if (!HFX_BUILD_GROW(b, c->v, c->n, c->cap)) return false;
+    if (!HFX_ARENA_GROW(b->arena, c->v, c->n, c->cap, 8)) return !(b->failed_alloc = true);
     c->v[c->n++] = v;
     return true;
 }

@@ -307,6 +307,6 @@ int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps,
     if (cg->alpha_test && writes_color0(cg, sh[1])) out->flags |= HFX_FX_PROGRAM_ALPHA_TEST;
     return 0;
 oom:
-    hfx_error(cg->c.diags, vs ? vs->loc : ps ? ps->loc : (hfx_loc){0, 0, 0}, X_UNSUPPORTED, "out of memory");
+    hfx_error(cg->c.diags, vs ? vs->loc : ps ? ps->loc : (hfx_loc){0, 1, 1}, X_MEMORY_LIMIT, "out of memory");
     return -1;
 }

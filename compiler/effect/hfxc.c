@@ -2,6 +2,8 @@
  * (preprocess -> parse -> check -> build) over one arena and one diagnostics list. */
 #include "hfx/hfxc.h"
 
+#include <setjmp.h>
+#include <stdbool.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -15,17 +17,57 @@ struct hfxc_result {
     hfx_diags diags;
     hfx_ast *ast;
     hfx_fx_effect *effect;
+    bool oom;         /* an allocation failed: never ok, even if the message could not be stored */
     const char **deps;     /* hfxc_dependency_at: unique paths, in the order first read */
     size_t dep_count;
 };
 
 const char *hfxc_version(void) { return "hfxc 0.1.0"; }
 
-static hfxc_result *run_phases(const char *name, const char *text, size_t size, const hfxc_options *opt);
-
 static unsigned default_targets(const hfxc_options *opt) {
     if (opt && opt->targets) return opt->targets;
     return (1u << HFX_TARGET_GLSL330) | (1u << HFX_TARGET_GLSLES300);
+}
+
+/* The phases in a straight line; an allocation failure anywhere longjmps out (base/arena.h). */
+static void run_phases(hfxc_result *r, const char *name, const char *text, size_t size, const hfxc_options *opt) {
+    hfx_pp_options pp;
+    memset(&pp, 0, sizeof pp);
+    if (opt) {
+        pp.defines = opt->defines;
+        pp.define_count = (uint32_t)opt->define_count;
+        pp.include_dirs = opt->include_dirs;
+        pp.include_dir_count = (uint32_t)opt->include_dir_count;
+    }
+    hfx_types *types = hfx_types_new(&r->arena);
+    hfx_token *tokens = hfx_preprocess(&r->arena, &r->diags, name, text, (uint32_t)size, &pp);
+    r->ast = hfx_parse(&r->arena, &r->diags, types, tokens);
+    if (opt && (opt->flags & HFXC_PARSE_ONLY)) return;
+    if (r->diags.errors) return;
+    if (!hfx_check(&r->arena, &r->diags, types, r->ast) || r->diags.errors) return;
+    if (opt && opt->entry)  /* fxc /E: one entry point, one profile */
+        r->effect = hfx_build_entry_effect(&r->arena, &r->diags, types, r->ast, name, default_targets(opt),
+                                           opt->entry, opt->profile);
+    else
+        r->effect = hfx_build_effect(&r->arena, &r->diags, types, r->ast, name, default_targets(opt));
+}
+
+/* After a failed allocation: nothing of the partial work is kept, and one located error says
+ * why (the arena's limit is lifted so that the message itself can be stored). */
+static void out_of_memory(hfxc_result *r) {
+    hfx_arena_run_cleanups(&r->arena);
+    hfx_fx_effect_free(r->effect);
+    r->effect = NULL;
+    r->ast = NULL;
+    r->oom = true;
+    size_t limit = r->arena.limit;
+    r->arena.limit = 0;
+    if (r->arena.over_limit)
+        hfx_error(&r->diags, (hfx_loc){0, 1, 1}, X_MEMORY_LIMIT,
+                  "out of memory: compiling this source needs more than %zu MiB (hfx allows %u MiB plus %u times the "
+                  "size of the source files)", limit >> 20, HFXC_MEMORY_FLOOR >> 20, HFXC_MEMORY_PER_BYTE);
+    else
+        hfx_error(&r->diags, (hfx_loc){0, 1, 1}, X_MEMORY_LIMIT, "out of memory");
 }
 
 /* Every file the preprocessor read, by the path it opened, once each (a #line entry repeats its
@@ -44,39 +86,27 @@ static void collect_dependencies(hfxc_result *r) {
 }
 
 static hfxc_result *compile(const char *name, const char *text, size_t size, const hfxc_options *opt) {
-    hfxc_result *r = run_phases(name, text, size, opt);
-    if (r) collect_dependencies(r);
-    return r;
-}
-
-static hfxc_result *run_phases(const char *name, const char *text, size_t size, const hfxc_options *opt) {
     hfxc_result *r = calloc(1, sizeof *r);
     if (!r) return NULL;
     hfx_arena_init(&r->arena);
+    r->arena.limit = HFXC_MEMORY_FLOOR; /* the preprocessor adds HFXC_MEMORY_PER_BYTE per byte it reads */
     hfx_diags_init(&r->diags, &r->arena, opt ? opt->flags : 0);
-    hfx_pp_options pp;
-    memset(&pp, 0, sizeof pp);
-    if (opt) {
-        pp.defines = opt->defines;
-        pp.define_count = (uint32_t)opt->define_count;
-        pp.include_dirs = opt->include_dirs;
-        pp.include_dir_count = (uint32_t)opt->include_dir_count;
+    jmp_buf escape;
+    r->arena.escape = &escape;
+    if (setjmp(escape) == 0) {
+        hfx_arena_escape_on(&r->arena);
+        run_phases(r, name, text, size, opt);
+        hfx_arena_escape_off(&r->arena);
+    } else {
+        r->arena.escape_depth = 0;
     }
-    hfx_types *types = hfx_types_new(&r->arena);
-    hfx_token *tokens = hfx_preprocess(&r->arena, &r->diags, name, text, (uint32_t)size, &pp);
-    r->ast = hfx_parse(&r->arena, &r->diags, types, tokens);
-    if (opt && (opt->flags & HFXC_PARSE_ONLY)) return r;
-    if (r->diags.errors) return r;
-    if (!hfx_check(&r->arena, &r->diags, types, r->ast) || r->diags.errors) return r;
-    if (opt && opt->entry)  /* fxc /E: one entry point, one profile */
-        r->effect = hfx_build_entry_effect(&r->arena, &r->diags, types, r->ast, name, default_targets(opt),
-                                           opt->entry, opt->profile);
-    else
-        r->effect = hfx_build_effect(&r->arena, &r->diags, types, r->ast, name, default_targets(opt));
+    r->arena.escape = NULL;
+    if (r->arena.failed) out_of_memory(r);
     if (r->diags.errors && r->effect) {
         hfx_fx_effect_free(r->effect);
         r->effect = NULL;
     }
+    collect_dependencies(r); /* outside the escape: a failure leaves the list empty */
     return r;
 }
 
@@ -96,7 +126,7 @@ void hfxc_result_free(hfxc_result *r) {
 }
 
 int hfxc_result_ok(const hfxc_result *r) {
-    return r && r->diags.errors == 0 && (r->effect || r->ast);
+    return r && !r->oom && r->diags.errors == 0 && (r->effect || r->ast);
 }
 
 size_t hfxc_diag_count(const hfxc_result *r) { return r ? r->diags.count : 0; }
@@ -119,12 +149,12 @@ struct hfx_fx_effect *hfxc_result_take_effect(hfxc_result *r) {
     return fx;
 }
 
-char *hfxc_result_ast_dump(const hfxc_result *r) {
-    return r && r->ast ? hfx_ast_dump(r->ast) : strdup("");
-}
-
 size_t hfxc_dependency_count(const hfxc_result *r) { return r ? r->dep_count : 0; }
 
 const char *hfxc_dependency_at(const hfxc_result *r, size_t i) {
     return r && i < r->dep_count ? r->deps[i] : NULL;
+}
+
+char *hfxc_result_ast_dump(const hfxc_result *r) {
+    return r && r->ast ? hfx_ast_dump(r->ast) : strdup("");
 }

@@ -35,12 +35,21 @@ static void print_body(gp *p, const ir_stmt *s) {
     sb_put(p->out, "}\n");
 }
 
+/* GLSL 110 cannot write an array's value in one expression (no array constructors; found by
+ * fuzz/fuzz_diff.c), so there arrays, and structs holding one, keep HLSL's undefined start. */
+static bool zero_printable(gp *p, const hfx_type *t) {
+    if (!p->legacy || t->kind == TY_ARRAY) return !p->legacy;
+    for (uint32_t i = 0; t->kind == TY_STRUCT && i < t->st->field_count; i++)
+        if (!zero_printable(p, t->st->fields[i].type)) return false;
+    return true;
+}
+
 static void print_decl(gp *p, const ir_var *v, const ir_expr *init, bool zero, const char *end) {
     glsl_decl(p, p->out, v->type, v->glsl);
     if (init) {
         sb_put(p->out, " = ");
         glsl_expr(p, init, PREC_ASSIGN);
-    } else if (zero) { /* HLSL leaves it undefined; zero keeps the output deterministic */
+    } else if (zero && zero_printable(p, v->type)) { /* HLSL leaves it undefined; zero keeps the output deterministic */
         sb_put(p->out, " = ");
         glsl_zero(p, v->type);
     }
@@ -123,6 +132,10 @@ static void print_stmt(gp *p, const ir_stmt *s) {
         sb_put(p->out, ");\n");
         return;
     case IS_SWITCH:
+        if (p->legacy) { /* found by fuzz/fuzz_diff.c: glslang's "Reserved word" */
+            glsl_error(p, s->loc, "switch statements need GLSL 330 or ES 300");
+            return;
+        }
         line_start(p);
         sb_put(p->out, "switch (");
         if (s->expr->type->base != B_INT) sb_put(p->out, "int(");
@@ -213,6 +226,14 @@ static bool is_flat(const glsl_iface *io, const char *sem) {
     return false;
 }
 
+/* The render target of a pixel shader output, COLOR0..COLOR3, or -1: one rule for declaring
+ * and writing (atoi once read "COLOR0X" as COLOR0 and wrote an undeclared output; found by
+ * fuzz/fuzz_diff.c). */
+static int color_target(const char *semantic) {
+    bool color = strncmp(semantic, "COLOR", 5) == 0 && semantic[5] >= '0' && semantic[5] <= '3' && !semantic[6];
+    return color ? semantic[5] - '0' : -1;
+}
+
 static void declare_interface(gp *p) {
     bool modern = !p->legacy;
     const glsl_iface *io = p->io;
@@ -230,9 +251,7 @@ static void declare_interface(gp *p) {
         bool vpos = false, color[4] = { !p->sh, false, false, false };
         for (int i = 0; i < p->in_count; i++) vpos |= is_vpos(p->in[i].semantic);
         for (int i = 0; i < p->out_count; i++)
-            if (strncmp(p->outv[i].semantic, "COLOR", 5) == 0 && p->outv[i].semantic[5] >= '0' &&
-                p->outv[i].semantic[5] <= '3' && !p->outv[i].semantic[6])
-                color[p->outv[i].semantic[5] - '0'] = true;
+            if (color_target(p->outv[i].semantic) >= 0) color[color_target(p->outv[i].semantic)] = true;
         if (vpos || p->uses_fixup) sb_put(p->out, "uniform vec4 hfx_pos_fixup;\n");
         if (p->io->alpha_test) sb_put(p->out, "uniform int hfx_alpha_func;\nuniform float hfx_alpha_ref;\n");
         for (int i = 0; i < 4 && modern; i++)
@@ -300,8 +319,8 @@ static void write_pixel_output(gp *p, const ir_leaf *l) {
         sb_printf(p->out, "gl_FragDepth = float(%s%s);\n", l->path, hfx_type_components(l->type) > 1 ? ".x" : "");
         return;
     }
-    int n = strncmp(l->semantic, "COLOR", 5) == 0 ? atoi(l->semantic + 5) : -1;
-    if (n < 0 || n > 3) { glsl_error(p, l->loc, hfx_arena_printf(p->c->arena, "'%s': invalid pixel shader output semantic", l->semantic)); return; }
+    int n = color_target(l->semantic);
+    if (n < 0) { glsl_error(p, l->loc, hfx_arena_printf(p->c->arena, "'%s': invalid pixel shader output semantic", l->semantic)); return; }
     const char *dst = p->legacy ? hfx_arena_printf(p->c->arena, "gl_FragData[%d]", n) : hfx_arena_printf(p->c->arena, "hfx_o_COLOR%d", n);
     write_vec4(p, l, dst, false);
 }
@@ -309,7 +328,7 @@ static void write_pixel_output(gp *p, const ir_leaf *l) {
 static void init_privates(gp *p) {
     for (uint32_t i = 0; i < p->sh->global_count; i++) {
         const ir_var *v = p->sh->globals[i];
-        if (v->kind != IRV_PRIVATE) continue;
+        if (v->kind != IRV_PRIVATE || (!v->copy_of && !v->init && !zero_printable(p, v->type))) continue;
         line_start(p);
         sb_printf(p->out, "%s = ", v->glsl);
         if (v->copy_of) sb_put(p->out, v->copy_of->glsl);
@@ -461,7 +480,8 @@ char *glsl_print(ir_ctx *c, const ir_shader *sh, ir_stage stage, const glsl_ifac
     p.io = io;
     p.target = target;
     p.legacy = target == HFX_TARGET_GLSL110;
-    sbuf decls = {0}, funcs = {0}, all = {0};
+    sbuf decls = {.arena = c->arena}, funcs = {.arena = c->arena}, all = {.arena = c->arena};
+    p.helpers.arena = p.structs_text.arena = c->arena;
     if (sh) {
         p.in_count = ir_entry_leaves(c, sh->entry, false, &p.in);
         p.out_count = ir_entry_leaves(c, sh->entry, true, &p.outv);
@@ -492,14 +512,7 @@ char *glsl_print(ir_ctx *c, const ir_shader *sh, ir_stage stage, const glsl_ifac
     if (p.helpers.d) { sb_put(&all, p.helpers.d); sb_put(&all, "\n"); }
     if (funcs.d) sb_put(&all, funcs.d);
     bool oom = decls.oom || funcs.oom || all.oom || p.helpers.oom || p.structs_text.oom;
-    free(decls.d);
-    free(funcs.d);
-    free(p.helpers.d);
-    free(p.structs_text.d);
-    if (p.failed || oom) {
-        if (oom && !p.failed) hfx_error(c->diags, (hfx_loc){0, 0, 0}, X_UNSUPPORTED, "out of memory printing GLSL");
-        free(all.d);
-        return NULL;
-    }
-    return all.d;
+    char *text = p.failed || oom ? NULL : sb_take(&all);
+    if (!p.failed && !text) hfx_error(c->diags, (hfx_loc){0, 1, 1}, X_MEMORY_LIMIT, "out of memory printing GLSL");
+    return text;
 }

@@ -378,19 +378,17 @@ static void print_select(gp *p, const ir_expr *e, int max) {
 static void print_scatter(gp *p, const ir_expr *e) {
     const ir_expr *ctor = e->a[0];
     const char *vt = glsl_type(p, ctor->type);
-    sbuf sig = {0}, body = {0};
+    sbuf sig = {.arena = p->c->arena}, body = {.arena = p->c->arena};
     unsigned at = 0;
     for (uint32_t i = 0; i < ctor->n; i++) {
         unsigned n = ncomp(ctor->a[i]->type);
         sb_printf(&sig, "out %s a%u, ", glsl_type(p, ctor->a[i]->type), i);
-        sb_printf(&body, "a%u = v.%.*s; ", i, (int)n, "xyzw" + at);
+        sb_printf(&body, "a%u = v.%.*s; ", i, (int)n, &"xyzw"[at]);
         at += n;
     }
     const char *key = hfx_arena_printf(p->c->arena, "scatter %s%s", sig.d ? sig.d : "", vt);
     if (glsl_helper(p, key))
         sb_printf(&p->helpers, "%s hfx_scatter(%s%s v) { %sreturn v; }\n", vt, sig.d ? sig.d : "", vt, body.d ? body.d : "");
-    free(sig.d);
-    free(body.d);
     sb_put(p->out, "hfx_scatter(");
     for (uint32_t i = 0; i < ctor->n; i++) {
         glsl_lvalue(p, ctor->a[i], PREC_ASSIGN);
@@ -432,6 +430,10 @@ static void print_assign(gp *p, const ir_expr *e, int max) {
 /* Constructor arguments: GLSL forbids matrices among several matrix-constructor arguments,
  * so such a matrix is passed row by row (HLSL rows are GLSL columns). */
 static void print_construct(gp *p, const ir_expr *e) {
+    if (p->legacy && e->type->kind == TY_ARRAY) { /* 110 has no array constructors (found by fuzz/fuzz_diff.c) */
+        glsl_error(p, e->loc, "array initializers and constructors need GLSL 330 or ES 300");
+        return;
+    }
     const char *ty = glsl_ctor_type(p, e->type);
     if (glsl_is_matrix(e->type) && e->n == 1 && ncomp(e->a[0]->type) == 1) { /* a scalar spread */
         helper_splat_matrix(p, e->type);
@@ -457,6 +459,16 @@ static void print_construct(gp *p, const ir_expr *e) {
 }
 
 static void print_convert(gp *p, const ir_expr *e, int max);
+
+/* The upper-left part of a matrix as column vectors, `m[0].xyz, m[1].xyz, m[2].xyz`, for GLSL
+ * 110, which builds matrices from vectors only (found by fuzz/fuzz_diff.c). */
+static void print_submatrix_columns(gp *p, const hfx_type *to, const ir_expr *x) {
+    for (unsigned c = 0; c < to->rows; c++) {
+        if (c) sb_put(p->out, ", ");
+        glsl_expr(p, x, PREC_POSTFIX);
+        sb_printf(p->out, "[%u].%.*s", c, (int)to->cols, "xyzw");
+    }
+}
 
 /* A scalar cast to a struct or an array fills every component: `(VS_OUTPUT)0` zeroes each
  * member (nested structs, arrays and matrices too), as HLSL defines the cast. */
@@ -509,7 +521,8 @@ static void print_convert(gp *p, const ir_expr *e, int max) {
             return;
         }
         sb_printf(p->out, "%s(", tty); /* submatrix, or components in order from a vector */
-        glsl_expr(p, x, PREC_ASSIGN);
+        if (p->legacy && glsl_is_matrix(from)) print_submatrix_columns(p, to, x); /* 110: no mat3(mat4) */
+        else glsl_expr(p, x, PREC_ASSIGN);
         sb_put(p->out, ")");
         return;
     }
@@ -576,13 +589,12 @@ static void print_guarded_read(gp *p, const ir_expr *e) {
     const char *fn = hfx_arena_printf(p->c->arena, "hfx_read_%s", v->glsl);
     if (glsl_helper(p, fn)) {
         sbuf *saved = p->out;
-        sbuf tmp = {0};
+        sbuf tmp = {.arena = p->c->arena};
         p->out = &tmp;
         glsl_zero(p, at->elem);
         p->out = saved;
         sb_printf(&p->helpers, "%s %s(int i)\n{\n    if (i < 0 || i >= %u) return %s;\n    return %s[i];\n}\n",
                   glsl_ctor_type(p, at->elem), fn, at->array_len, tmp.d ? tmp.d : "0", v->glsl);
-        free(tmp.d);
     }
     sb_printf(p->out, "%s(", fn);
     if (e->a[1]->type->base != B_INT) sb_put(p->out, "int(");

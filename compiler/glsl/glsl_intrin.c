@@ -191,6 +191,10 @@ static void lower_tex(gp *p, const ir_expr *e, int max) {
     hfx_dim dim = info->dim;
     int form = info->form == TEXF_PLAIN && e->n == 4 ? TEXF_GRAD : info->form;
     if (e->n < 2) { glsl_error(p, e->loc, "texture sampling needs coordinates"); return; }
+    if (p->legacy && form == TEXF_LOD && p->stage == IR_PIXEL) { /* 110 has texture2DLod in vertex shaders only */
+        glsl_error(p, e->loc, "tex*Dlod in a pixel shader needs GLSL 330 or ES 300");
+        return;
+    }
     sb_printf(p->out, "%s(", tex_function(p, dim, form));
     glsl_expr(p, e->a[0], PREC_ASSIGN);
     sb_put(p->out, ", ");
@@ -210,16 +214,25 @@ static bool legacy_intrinsic(gp *p, const ir_expr *e) {
     case HFX_INTR_SINH: name = "hfx_sinh"; text = "$T hfx_sinh($T x) { return (exp(x) - exp(-x)) * 0.5; }\n"; break;
     case HFX_INTR_TANH: name = "hfx_tanh"; text = "$T hfx_tanh($T x) { $T e = exp(2.0 * x); return (e - 1.0) / (e + 1.0); }\n"; break;
     case HFX_INTR_MODF: name = "hfx_modf"; text = "$T hfx_modf($T x, out $T i) { i = sign(x) * floor(abs(x)); return x - i; }\n"; break;
-    case HFX_INTR_ISNAN:
-        if (ncomp(t) != 1) return false;
-        name = "hfx_isnan"; text = "bool hfx_isnan($T x) { return !(x == x); }\n"; break;
-    case HFX_INTR_ISINF:
-        if (ncomp(t) != 1) return false;
-        name = "hfx_isinf"; text = "bool hfx_isinf($T x) { return x == x && x * 0.0 != 0.0; }\n"; break;
+    case HFX_INTR_ISNAN: /* vectors found by fuzz/fuzz_diff.c: 110 has no isnan at all */
+        name = "hfx_isnan";
+        text = ncomp(t) == 1 ? "bool hfx_isnan($T x) { return !(x == x); }\n"
+                             : "bvec$N hfx_isnan($T x) { return not(equal(x, x)); }\n";
+        break;
+    case HFX_INTR_ISINF: /* x == x, and x * 0 is NaN: the product of the two tests, per component */
+        name = "hfx_isinf";
+        text = ncomp(t) == 1 ? "bool hfx_isinf($T x) { return x == x && x * 0.0 != 0.0; }\n"
+                             : "bvec$N hfx_isinf($T x) { return bvec$N(vec$N(equal(x, x)) * vec$N(notEqual(x * 0.0, $T(0.0)))); }\n";
+        break;
     case HFX_INTR_DETERMINANT:
         if (t->rows == 2) { name = "hfx_determinant"; text = "float hfx_determinant($T m) { return m[0][0] * m[1][1] - m[0][1] * m[1][0]; }\n"; }
         else if (t->rows == 3) { name = "hfx_determinant"; text = "float hfx_determinant($T m) { return dot(m[0], cross(m[1], m[2])); }\n"; }
-        else return false;
+        else if (t->rows == 4) { /* along the first column, each minor as dot(u, cross(v, w)); found by fuzz/fuzz_diff.c */
+            name = "hfx_determinant";
+            text = "float hfx_determinant($T m) { return m[0].x * dot(m[1].yzw, cross(m[2].yzw, m[3].yzw)) - "
+                   "m[0].y * dot(m[1].xzw, cross(m[2].xzw, m[3].xzw)) + m[0].z * dot(m[1].xyw, cross(m[2].xyw, m[3].xyw)) - "
+                   "m[0].w * dot(m[1].xyz, cross(m[2].xyz, m[3].xyz)); }\n";
+        } else return false;
         break;
     case HFX_INTR_TRANSPOSE:
         if (t->rows == 2) { name = "hfx_transpose"; text = "$T hfx_transpose($T m) { return $T(m[0][0], m[1][0], m[0][1], m[1][1]); }\n"; }
@@ -265,6 +278,26 @@ static void lower_matrix(gp *p, const ir_expr *e, int max) {
     if (p->legacy && legacy_intrinsic(p, e)) return;
     if (!glsl_is_matrix(e->a[0]->type)) glsl_expr(p, e->a[0], max);
     else lower_call(p, e, max);
+}
+
+/* GLSL 110 has abs, sign, min, max and clamp for floats only: integer forms go through
+ * float, exact for every value a 110 shader's ints (at least 16 bits) can hold. */
+static void lower_numeric(gp *p, const ir_expr *e, int max) {
+    const hfx_type *t = e->type;
+    bool vector_like = t->kind != TY_MATRIX || t->rows == 1 || t->cols == 1;
+    if (!p->legacy || (t->base != B_INT && t->base != B_UINT) || !vector_like) {
+        lower_call(p, e, max);
+        return;
+    }
+    unsigned n = ncomp(t);
+    const char *ft = n == 1 ? "float" : hfx_arena_printf(p->c->arena, "vec%u", n);
+    sb_printf(p->out, "%s(%s(", ty(p, t), glsl_name_of(e->intrin));
+    for (uint32_t i = 0; i < e->n; i++) {
+        sb_printf(p->out, "%s%s(", i ? ", " : "", ft);
+        glsl_expr(p, e->a[i], PREC_ASSIGN);
+        sb_put(p->out, ")");
+    }
+    sb_put(p->out, "))");
 }
 
 /* GLSL 110 has no trunc: sign(x) * floor(abs(x)). */
@@ -451,8 +484,15 @@ static void lower_isfinite(gp *p, const ir_expr *e, int max) {
         sb_put(p->out, ")");
         return;
     }
-    if (ncomp(e->a[0]->type) != 1) { glsl_error(p, e->loc, "'isfinite' of a vector needs GLSL 330 or ES 300"); return; }
-    helper_typed(p, "isfinite", e->a[0]->type, "bool hfx_isfinite($T x) { return !(isnan(x) || isinf(x)); }\n");
+    /* GLSL 110 has neither isnan nor isinf (found by fuzz/fuzz_diff.c): there x == x rules out
+     * NaN, and x * 0 is 0 only when x is finite, as hfx_isnan / hfx_isinf test them */
+    if (ncomp(e->a[0]->type) == 1 && !p->legacy)
+        helper_typed(p, "isfinite", e->a[0]->type, "bool hfx_isfinite($T x) { return !(isnan(x) || isinf(x)); }\n");
+    else if (ncomp(e->a[0]->type) == 1)
+        helper_typed(p, "isfinite", e->a[0]->type, "bool hfx_isfinite($T x) { return x == x && x * 0.0 == 0.0; }\n");
+    else
+        helper_typed(p, "isfinite", e->a[0]->type,
+                     "bvec$N hfx_isfinite($T x) { return bvec$N(vec$N(equal(x, x)) * vec$N(equal(x * 0.0, $T(0.0)))); }\n");
     args(p, "hfx_isfinite", e->a, 1);
 }
 

@@ -19,6 +19,9 @@
 #include <stdlib.h>
 #define YYLLOC_DEFAULT(Cur, Rhs, N) do { (Cur) = (N) ? YYRHSLOC(Rhs, 1) : YYRHSLOC(Rhs, 0); } while (0)
 #define YYMAXDEPTH 50000 /* then "nesting too deep", not a crash (the C stack is not involved) */
+/* A deeper stack comes from the arena: nothing to free if an allocation failure escapes. */
+#define YYSTACK_ALLOC(n) hfx_arena_alloc_raw(ctx->arena, (n))
+#define YYSTACK_ALLOC_MAXIMUM ((size_t)1 << 30)
 static int yylex(YYSTYPE *lval, YYLTYPE *lloc, parse_ctx *ctx) { return parse_lex(lval, lloc, ctx); }
 static void yyerror(YYLTYPE *loc, parse_ctx *ctx, const char *msg);
 }

@@ -14,7 +14,11 @@
 
 char *pp_read_file(hfx_arena *arena, const char *path, uint32_t *size) {
     struct stat st;
-    if (stat(path, &st) != 0 || !S_ISREG(st.st_mode) || st.st_size >= (off_t)UINT32_MAX) return NULL;
+    if (stat(path, &st) != 0 || !S_ISREG(st.st_mode)) return NULL;
+    if (st.st_size > HFXC_MAX_SOURCE_BYTES) { /* refused before reading: the caller reports the size */
+        *size = st.st_size >= (off_t)UINT32_MAX ? UINT32_MAX : (uint32_t)st.st_size;
+        return NULL;
+    }
     FILE *f = fopen(path, "rb");
     if (!f) return NULL;
     size_t n = (size_t)st.st_size;
@@ -36,12 +40,10 @@ char *pp_dirname(hfx_arena *arena, const char *path) {
     return hfx_arena_strndup(arena, path, (size_t)(slash - path));
 }
 
+/* Into a buffer of our own: no malloc'ed string alive while the arena allocates. */
 char *pp_realpath(hfx_arena *arena, const char *path) {
-    char *r = realpath(path, NULL);
-    if (!r) return NULL;
-    char *copy = hfx_arena_strdup(arena, r);
-    free(r);
-    return copy;
+    char buf[PATH_MAX];
+    return realpath(path, buf) ? hfx_arena_strdup(arena, buf) : NULL;
 }
 
 static bool is_file(const char *path) {

@@ -237,6 +237,12 @@ static bool on_include_stack(hfx_pp *pp, const char *real) {
     return false;
 }
 
+/* Every byte of source read raises the compile's memory limit (hfxc.h: HFXC_MEMORY_PER_BYTE). */
+static void admit_source(hfx_pp *pp, uint32_t size) {
+    pp->source_bytes += size;
+    if (pp->arena->limit) pp->arena->limit += (size_t)HFXC_MEMORY_PER_BYTE * size;
+}
+
 static hfx_token *do_include(hfx_pp *pp, hfx_token *hash, hfx_token *name) {
     hfx_token *rest;
     hfx_token *line = pp_copy_line(pp, name->next, &rest);
@@ -250,6 +256,11 @@ static hfx_token *do_include(hfx_pp *pp, hfx_token *hash, hfx_token *name) {
     const char *path = pp_find_include(pp, file, angled, dir);
     uint32_t size = 0;
     char *text = path ? pp_read_file(pp->arena, path, &size) : NULL;
+    if (!text && size > HFXC_MAX_SOURCE_BYTES) {
+        pp_error(pp, hash->loc, X_SOURCE_TOO_LARGE, "'%s' is %u bytes: hfx compiles source files of up to %u MiB", file,
+                 size, HFXC_MAX_SOURCE_BYTES >> 20);
+        return rest;
+    }
     if (!text) {
         pp_error(pp, hash->loc, X_PP_INCLUDE, "failed to open source file: '%s'", file);
         return rest;
@@ -265,7 +276,7 @@ static hfx_token *do_include(hfx_pp *pp, hfx_token *hash, hfx_token *name) {
                      pp->max_include_depth);
         return rest;
     }
-    pp->source_bytes += size;
+    admit_source(pp, size);
     uint32_t f = hfx_diags_add_file(pp->diags, file, path, text, size);
     pp_file_info *fi = pp_file(pp, f);
     fi->dir = pp_dirname(pp->arena, path);
@@ -376,9 +387,11 @@ static hfx_token *do_pragma(hfx_pp *pp, hfx_token *hash, hfx_token *name) {
     return rest;
 }
 
+/* An #error with no text still says what stopped the compile (an empty message reads as a bug). */
 static hfx_token *do_error(hfx_pp *pp, hfx_token *hash, hfx_token *name) {
     hfx_token *end = pp_line_end(name->next);
-    pp_error(pp, hash->loc, X_PP_ERROR_DIRECTIVE, "%s", pp_join(pp, name->next, end));
+    const char *text = pp_join(pp, name->next, end);
+    pp_error(pp, hash->loc, X_PP_ERROR_DIRECTIVE, "%s", text && *text ? text : "#error");
     return end;
 }
 
@@ -465,13 +478,19 @@ hfx_token *hfx_preprocess(hfx_arena *arena, hfx_diags *diags, const char *name, 
     pp->max_include_depth = opt && opt->max_include_depth ? opt->max_include_depth : PP_DEFAULT_INCLUDE_DEPTH;
     pp->eof = pp_new_eof(pp, (hfx_loc){0, 0, 0});
     if (!name) name = "memory";
-    char *copy = text ? hfx_arena_strndup(arena, text, size) : pp_read_file(arena, name, &size);
+    bool too_large = text && size > HFXC_MAX_SOURCE_BYTES;
+    char *copy = too_large ? NULL : text ? hfx_arena_strndup(arena, text, size) : pp_read_file(arena, name, &size);
     uint32_t f = hfx_diags_add_file(diags, name, text ? NULL : name, copy ? copy : "", copy ? size : 0);
+    if (!copy && size > HFXC_MAX_SOURCE_BYTES) {
+        hfx_error(diags, (hfx_loc){f, 1, 1}, X_SOURCE_TOO_LARGE, "the source is %u bytes: hfx compiles source files of up to %u MiB",
+                  size, HFXC_MAX_SOURCE_BYTES >> 20);
+        return pp_new_eof(pp, (hfx_loc){f, 1, 1});
+    }
     if (!copy) {
         hfx_error(diags, (hfx_loc){f, 1, 1}, X_PP_INCLUDE, "failed to open source file: '%s'", name);
         return pp_new_eof(pp, (hfx_loc){f, 1, 1});
     }
-    pp->source_bytes = size;
+    admit_source(pp, size);
     pp_file_info *fi = pp_file(pp, f);
     fi->dir = pp->root_dir = pp_dirname(arena, name);
     fi->real = text ? NULL : pp_realpath(arena, name);

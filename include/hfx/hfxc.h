@@ -33,6 +33,12 @@ enum { /* hfxc_options.flags */
     HFXC_TEST_BREAK_GLSL = 1u << 6 /* for hfx's own tests: the code generator spoils every shader, so the self-check must fail */
 };
 
+/* Limits on untrusted input. A source file (the root or an #include) of more than
+ * HFXC_MAX_SOURCE_BYTES is refused with error X9002 at its first line (or at the #include); a
+ * compile may use HFXC_MEMORY_FLOOR bytes plus HFXC_MEMORY_PER_BYTE for each byte of source it
+ * reads, past which it stops with error X9001 (so memory grows at most linearly with input). */
+enum { HFXC_MAX_SOURCE_BYTES = 8 << 20, HFXC_MEMORY_FLOOR = 32 << 20, HFXC_MEMORY_PER_BYTE = 40 };
+
 typedef struct hfxc_options {
     const char *const *defines;      /* "NAME" or "NAME=VALUE" */
     size_t define_count;

@@ -361,6 +361,81 @@ static void test_clone_independence(void) {
     CHECK(hfx_effect_clone(NULL) == NULL);
 }
 
+/* Misuse beyond wrong types: counts on the way out, other effects' and devices' handles,
+ * annotations of another kind, NULLs everywhere; each call fails with its code and changes
+ * nothing (the output buffers included). */
+static void test_misuse_changes_nothing(void) {
+    hfx_effect *fx = load();
+    hfx_param *v = hfx_effect_param(fx, "v"), *f = hfx_effect_param(fx, "f"), *iv = hfx_effect_param(fx, "ivec");
+    float four[4] = {1, 2, 3, 4}, out[5] = {7, 7, 7, 7, 7};
+    CHECK_INT(hfx_param_set_floats(v, four, 4), HFX_OK);
+    uint64_t stamp = fx->stamps[P_V];
+    CHECK_INT(hfx_param_get_floats(v, out, 3), HFX_ERR_COUNT);
+    CHECK_INT(hfx_param_get_floats(v, out, 5), HFX_ERR_COUNT);
+    CHECK_NEAR(out[0], 7, 0); /* the caller's buffer untouched */
+    CHECK_INT(hfx_param_set_matrix_transpose(v, (float[16]){0}), HFX_ERR_TYPE);
+    CHECK_INT(hfx_param_set_texture(v, 5), HFX_ERR_TYPE);
+    CHECK_STR(hfx_device_last_error(dev), "parameter 'v': not a texture or sampler");
+    unsigned tex = 9;
+    CHECK_INT(hfx_param_get_texture(v, &tex), HFX_ERR_TYPE);
+    CHECK_INT(tex, 9);
+    int ints[4] = {5, 5, 5, 5};
+    CHECK_INT(hfx_param_get_ints(v, ints, 4), HFX_ERR_TYPE);
+    CHECK_INT(ints[0], 5);
+    CHECK_INT(hfx_param_set_ints(iv, ints, 2), HFX_ERR_COUNT);
+    CHECK_INT(hfx_param_get_ints(iv, ints, 3), HFX_OK);
+    CHECK_INT(ints[0], 0);
+    CHECK_INT(hfx_param_get_floats(v, out, 4), HFX_OK);
+    CHECK_NEAR(out[3], 4, 0);
+    CHECK(fx->stamps[P_V] == stamp);
+    hfx_annotation *name = hfx_param_annotation(f, "UIName"), *min = hfx_param_annotation(f, "UIMin");
+    float a = 3;
+    CHECK_INT(hfx_annotation_float(name, &a), HFX_ERR_TYPE);
+    CHECK_STR(hfx_device_last_error(dev), "annotation 'UIName' is not numeric");
+    CHECK_INT(hfx_annotation_floats(min, out, 2), HFX_ERR_COUNT);
+    CHECK_NEAR(a, 3, 0);
+    CHECK(hfx_annotation_string(min) == NULL);
+    CHECK(hfx_param_annotation(f, NULL) == NULL);
+    CHECK(hfx_param_element(hfx_effect_param(fx, "arr"), 4) == NULL);
+    CHECK(hfx_param_member_at(hfx_param_element(hfx_effect_param(fx, "spots"), 0), 2) == NULL);
+    CHECK_INT(hfx_pass_attribute_location(NULL, "POSITION0"), -1);
+    CHECK_INT(hfx_pass_attribute_location(hfx_technique_pass(hfx_effect_technique(fx, "A"), 0), NULL), -1);
+    CHECK_INT(hfx_effect_begin(NULL), HFX_ERR_NULL);
+    CHECK_INT(hfx_effect_end(NULL), HFX_ERR_NULL);
+    CHECK_INT(hfx_effect_reload(NULL, "x.fx", NULL, NULL), HFX_ERR_NULL);
+    CHECK(hfx_effect_technique_at(NULL, 0) == NULL);
+    CHECK(hfx_technique_pass(NULL, 0) == NULL);
+    CHECK_INT(hfx_technique_pass_count(NULL), 0);
+    hfx_effect_destroy(fx);
+}
+
+/* Handles of another effect (loaded apart, or on another device) are refused; a clone's passes
+ * apply after the effect it was cloned from is gone. */
+static void test_foreign_handles(void) {
+    hfx_effect *fx = load(), *other = load();
+    hfx_device *dev2 = hfx_device_create_gl(test_gl_loader);
+    hfx_effect *far = hfx_rt_effect_from_fx(dev2, build(), NULL, NULL);
+    CHECK(far != NULL);
+    hfx_technique *b = hfx_effect_technique(fx, "B");
+    hfx_effect_set_current_technique(fx, b);
+    hfx_effect_set_current_technique(fx, hfx_effect_technique(other, "A"));
+    CHECK_STR(hfx_device_last_error(dev), "technique does not belong to this effect");
+    hfx_effect_set_current_technique(fx, hfx_effect_technique(far, "A"));
+    CHECK(hfx_effect_current_technique(fx) == b);
+    hfx_effect *clone = hfx_effect_clone(fx);
+    hfx_effect_destroy(fx);
+    hfx_technique *cb = hfx_effect_current_technique(clone);
+    CHECK_STR(hfx_technique_name(cb), "B");
+    CHECK_INT(hfx_pass_apply(hfx_technique_pass(cb, 0)), HFX_OK);
+    CHECK_INT(hfx_pass_apply(hfx_technique_pass(hfx_effect_technique(clone, "A"), 1)), HFX_OK);
+    CHECK(hfx_effect_device(clone) == dev);
+    CHECK(hfx_effect_device(far) == dev2);
+    hfx_effect_destroy(clone);
+    hfx_effect_destroy(other);
+    hfx_effect_destroy(far);
+    hfx_device_destroy(dev2);
+}
+
 int main(void) {
     gl = test_gl_create(8, 8);
     if (!gl) test_skip("no OSMesa context");
@@ -377,6 +452,8 @@ int main(void) {
     RUN(test_annotations);
     RUN(test_techniques);
     RUN(test_clone_independence);
+    RUN(test_misuse_changes_nothing);
+    RUN(test_foreign_handles);
     hfx_device_destroy(dev);
     test_gl_destroy(gl);
     return test_summary();

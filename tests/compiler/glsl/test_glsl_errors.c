@@ -45,6 +45,14 @@ static void missing_return_semantic(void) {
     free(d);
 }
 
+/* Found by fuzz/fuzz_diff.c: "COLOR0x" was written as COLOR0 but never declared (X9000). */
+static void odd_color_semantic_is_reported(void) {
+    char *d = diagnostics(VS "float4 ps() : COLOR0x { return 1; }\n"
+                          "technique T { pass P { VertexShader = compile vs_3_0 vs(); PixelShader = compile ps_3_0 ps(); } }\n");
+    CHECK_STR(d, "e.fx(2,8): error X3094: 'COLOR0X0': invalid pixel shader output semantic\n");
+    free(d);
+}
+
 /* A pass without a pixel shader (fixed function) still gets a program that links. */
 static void fixed_function_pixel_stage(void) {
     const char *src = "struct V { float4 p : POSITION; float4 c : COLOR0; };\n"
@@ -80,12 +88,34 @@ static void glsl110_limits_are_reported(void) {
     hfxc_result_free(r);
 }
 
+/* Found by fuzz/fuzz_diff.c (glslang refused what the 110 printer made): a switch, tex2Dlod in
+ * a pixel shader and an array initializer are located errors for GLSL 110 now. */
+static void glsl110_switch_lod_and_array_constructors(void) {
+    hfxc_options o = {0};
+    o.targets = 1u << HFX_TARGET_GLSL110;
+    const char *src = VS "sampler S; int k;\n"
+                      "float4 ps(float2 uv : TEXCOORD0) : COLOR { float w[2] = {1, 2}; float4 c = tex2Dlod(S, float4(uv, 0, 0));\n"
+                      "  switch (k) { case 1: c *= 2; break; default: break; } return c * w[k]; }\n"
+                      "technique T { pass P { VertexShader = compile vs_3_0 vs(); PixelShader = compile ps_3_0 ps(); } }\n";
+    hfxc_result *r = hfxc_compile_memory(src, strlen(src), "l.fx", &o);
+    char *d = hfxc_diagnostics_text(r);
+    CHECK(!hfxc_result_ok(r));
+    CHECK_CONTAINS(d, "l.fx(3,57): error X3094: array initializers and constructors need GLSL 330 or ES 300");
+    CHECK_CONTAINS(d, "l.fx(3,76): error X3094: tex*Dlod in a pixel shader needs GLSL 330 or ES 300");
+    CHECK_CONTAINS(d, "l.fx(4,3): error X3094: switch statements need GLSL 330 or ES 300");
+    CHECK(!strstr(d, "X9000"));
+    free(d);
+    hfxc_result_free(r);
+}
+
 int main(void) {
     RUN(noise_is_reported);
     RUN(asm_block_is_reported);
     RUN(missing_input_semantic);
     RUN(missing_return_semantic);
+    RUN(odd_color_semantic_is_reported);
     RUN(fixed_function_pixel_stage);
     RUN(glsl110_limits_are_reported);
+    RUN(glsl110_switch_lod_and_array_constructors);
     return test_summary();
 }

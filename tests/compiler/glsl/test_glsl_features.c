@@ -75,6 +75,33 @@ static void integer_and_bool_ops(void) {
                 "  return float4(sel + isel, f + k + q.x + dot(iv, iv)); }\n", MODERN));
 }
 
+/* Found by fuzz/fuzz_diff.c: GLSL 110 has abs, sign, min, max and clamp for floats only, and
+ * the integer forms were printed as they are (glslang: "'abs' : no matching overloaded function"). */
+static void integer_intrinsics_in_glsl110(void) {
+    CHECK(links("int4 iv; int i;\n"
+                "float4 ps() : COLOR {\n"
+                "  int4 q = abs(iv) * sign(iv) + max(iv, i) + min(iv, 2) + clamp(iv, 0, 4);\n"
+                "  return float4(q) + abs(i) + sign(i) + max(i, 2) + min(i, 1) + clamp(i, 0, 3); }\n", ALL));
+}
+
+/* Found by fuzz/fuzz_diff.c: isnan / isinf of a vector printed GLSL 110 has no function for. */
+static void vector_isnan_isinf_in_glsl110(void) {
+    CHECK(links("float4 v; float2 w;\n"
+                "float4 ps() : COLOR {\n"
+                "  bool4 n = isnan(v), i = isinf(v);\n"
+                "  return float4(n) + float4(i) + float4(isnan(w), isinf(w)); }\n", ALL));
+}
+
+/* Found by fuzz/fuzz_diff.c: GLSL 110 lacks isnan / isinf (isfinite used them), determinant of
+ * a 4x4, mat3(mat4), and array constructors (a local array was zeroed with one). */
+static void more_glsl110_forms(void) {
+    CHECK(links("float4 v; float s; float4x4 M;\n"
+                "float4 ps() : COLOR {\n"
+                "  float a[3]; a[0] = v.x; a[1] = v.y; a[2] = a[0] + a[1];\n"
+                "  float3x3 n = (float3x3)M; float2x2 t = (float2x2)M;\n"
+                "  return float4(isfinite(v)) + isfinite(s) + determinant(M) + n[1].x + t[1].y + a[2]; }\n", ALL));
+}
+
 static void matrices(void) {
     CHECK(links("float4x4 M; float3x3 N; float4x3 R; float3x4 C; float2x2 T;\n"
                 "float4 ps(float4 v : TEXCOORD0) : COLOR {\n"
@@ -191,6 +218,9 @@ static void constant_arguments_select_the_code(void) {
 int main(void) {
     RUN(float_intrinsics);
     RUN(integer_and_bool_ops);
+    RUN(integer_intrinsics_in_glsl110);
+    RUN(vector_isnan_isinf_in_glsl110);
+    RUN(more_glsl110_forms);
     RUN(matrices);
     RUN(structs_arrays_functions);
     RUN(texture_forms);

@@ -365,6 +365,10 @@ static void error_directive(void) {
     CHECK_STR(r.diag, "t.fx(2,1): error X1003: Shader model \"3\" needed, sorry\n");
     CHECK_STR(r.out, "float a ; float b ;");
     done(&r);
+    /* found by fuzz/fuzz_compile.c: an #error without text gave an empty message */
+    pp(&r, "#error\n#error  \n");
+    CHECK_STR(r.diag, "t.fx(1,1): error X1003: #error\nt.fx(2,1): error X1003: #error\n");
+    done(&r);
 }
 
 static void line_directive(void) {
