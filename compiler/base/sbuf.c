@@ -41,13 +41,15 @@ void sb_printf(sbuf *b, const char *fmt, ...) {
     va_end(ap);
     if (n < 0) return;
     if ((size_t)n < sizeof small) { sb_putn(b, small, (size_t)n); return; }
-    char *big = malloc((size_t)n + 1);
+    /* in an arena buffer the long piece comes from the arena too: nothing to lose if growing
+     * the buffer escapes (base/arena.h) */
+    char *big = b->arena ? hfx_arena_alloc_raw(b->arena, (size_t)n + 1) : malloc((size_t)n + 1);
     if (!big) { b->oom = true; return; }
     va_start(ap, fmt);
     vsnprintf(big, (size_t)n + 1, fmt, ap);
     va_end(ap);
     sb_putn(b, big, (size_t)n);
-    free(big);
+    if (!b->arena) free(big);
 }
 
 char *sb_take(sbuf *b) {
