@@ -16,6 +16,7 @@ static uint64_t operand_words(const uint32_t *code, uint32_t at, uint32_t words)
     case HFX_EVC_CONST: return b_of(w);
     case HFX_EVC_PARAM: case HFX_EVC_SWIZZLE: return 1;
     case HFX_EVC_ELEMENT: return 3;
+    case HFX_EVC_SHUFFLE: return 2;
     case HFX_EVC_TABLE: return at + 1 < words ? 1 + (uint64_t)code[at + 1] * b_of(w) : 1;
     default: return 0;
     }
@@ -23,7 +24,7 @@ static uint64_t operand_words(const uint32_t *code, uint32_t at, uint32_t words)
 
 /* The stack values an instruction takes and leaves. */
 static void stack_effect(uint32_t w, int *pops, int *pushes) {
-    static const int take[HFX_EVC_OP_COUNT] = {0, 0, 1, 1, 1, 2, 0, 1, 3, 1};
+    static const int take[HFX_EVC_OP_COUNT] = {0, 0, 1, 1, 1, 2, 0, 1, 3, 1, 1, 2, 2};
     *pops = op_of(w) == HFX_EVC_CALL ? hfx_ev_fn_args((hfx_ev_fn)a_of(w)) : take[op_of(w)];
     *pushes = 1;
 }
@@ -34,6 +35,12 @@ static bool valid_n(uint32_t n) { return n >= 1 && n <= HFX_EV_MAX_COMPONENTS; }
 static bool element_ok(const uint32_t *w, uint32_t base, uint32_t n, uint32_t value_words) {
     uint64_t last = (uint64_t)w[0] + (uint64_t)(w[1] ? w[1] - 1 : 0) * w[2] + n;
     return base < HFX_EV_BASE_COUNT && valid_n(n) && w[1] >= 1 && last <= value_words;
+}
+
+/* r x k times k x c, each 1..4. */
+static bool matmul_ok(uint32_t a, uint32_t c) {
+    uint32_t r = a & 15u, k = a >> 4;
+    return r >= 1 && r <= 4 && k >= 1 && k <= 4 && c >= 1 && c <= 4;
 }
 
 /* The instruction's own fields; NULL when they are right, else what is wrong. */
@@ -52,6 +59,9 @@ static const char *check_fields(const uint32_t *code, uint32_t at, uint32_t valu
     case HFX_EVC_TABLE: return a < HFX_EV_BASE_COUNT && valid_n(b) && code[at + 1] >= 1 ? NULL : "a table of a wrong shape";
     case HFX_EVC_SELECT: return NULL;
     case HFX_EVC_ELEMENT: return element_ok(code + at + 1, a, b, value_words) ? NULL : "an element outside the values";
+    case HFX_EVC_SHUFFLE: return valid_n(a) ? NULL : "a shuffle of a wrong size";
+    case HFX_EVC_CONCAT: return valid_n(b) ? NULL : "a concatenation of a wrong size";
+    case HFX_EVC_MATMUL: return matmul_ok(a, b) ? NULL : "a matrix product of a wrong shape";
     default: return "an unknown instruction";
     }
 }
@@ -140,6 +150,45 @@ static bool element(hfx_ev_value *index, hfx_ev_base b, uint32_t n, const uint32
     return true;
 }
 
+/* Component i of the result is nibble i of the two words. */
+static bool shuffle(hfx_ev_value *v, uint32_t n, const uint32_t *w) {
+    hfx_ev_value r = {v->base, (uint8_t)n, {0}};
+    for (uint32_t i = 0; i < n; i++) {
+        uint32_t k = (w[i / 8] >> (4 * (i % 8))) & 15u;
+        if (k >= v->n) return false;
+        r.c[i] = v->c[k];
+    }
+    *v = r;
+    return true;
+}
+
+static bool concat(hfx_ev_value *x, const hfx_ev_value *y_in, uint32_t n) {
+    hfx_ev_value y = *y_in;
+    promote(x, &y);
+    if ((uint32_t)x->n + y.n != n) return false;
+    memcpy(x->c + x->n, y.c, y.n * sizeof *y.c);
+    x->n = (uint8_t)n;
+    return true;
+}
+
+/* Float products summed in order, each step rounded to float as the GPU's mad chain rounds. */
+static bool matmul(hfx_ev_value *x, const hfx_ev_value *y_in, uint32_t a, uint32_t c) {
+    uint32_t r = a & 15u, k = a >> 4;
+    hfx_ev_value y = *y_in;
+    if (x->n != r * k || y.n != k * c) return false;
+    hfx_ev_fit(x, HFX_EV_FLOAT, x->n, x);
+    hfx_ev_fit(&y, HFX_EV_FLOAT, y.n, &y);
+    hfx_ev_value out = {HFX_EV_FLOAT, (uint8_t)(r * c), {0}};
+    for (uint32_t i = 0; i < r; i++)
+        for (uint32_t j = 0; j < c; j++) {
+            float sum = 0.0f;
+            for (uint32_t m = 0; m < k; m++) sum += (float)x->c[i * k + m] * (float)y.c[m * c + j];
+            out.c[i * c + j] = sum;
+        }
+    *x = out;
+    return true;
+}
+
 static bool select_value(hfx_ev_value *s) {
     hfx_ev_value *x = &s[0], *y = &s[1], *c = &s[2];
     promote(x, y);
@@ -172,6 +221,9 @@ static bool step(const uint32_t *code, uint32_t at, const uint32_t *values, hfx_
         return call((hfx_ev_fn)a, &stack[*sp], (unsigned)pops, &stack[*sp]) && ++*sp;
     case HFX_EVC_TABLE: return table(top, (hfx_ev_base)a, b, code + at + 1);
     case HFX_EVC_ELEMENT: return element(top, (hfx_ev_base)a, b, code + at + 1, values);
+    case HFX_EVC_SHUFFLE: return shuffle(top, a, code + at + 1);
+    case HFX_EVC_CONCAT: (*sp)--; return concat(top - 1, top, b);
+    case HFX_EVC_MATMUL: (*sp)--; return matmul(top - 1, top, a, b);
     default: /* SELECT */
         *sp -= 2;
         return select_value(top - 2);

@@ -15,6 +15,11 @@
  *   SELECT                      pops c, y, x: x where c is true, else y (per component)
  *   ELEMENT a = base, b = n     3 words: offset, count, stride: pops an index, pushes the n words at
  *                               offset + index * stride of a parameter array (index clamped as TABLE)
+ *   SHUFFLE a = n (1..16)       2 words: component i of the result is nibble i (word i / 8): a
+ *                               matrix row, a truncated matrix, any pick of up to 16 components
+ *   CONCAT  b = n               pops y, x: x's components then y's (to the larger base), n in all
+ *   MATMUL  a = r | k << 4, b = c  pops y, x: mul(x, y) of an r x k and a k x c matrix (row-major;
+ *                               a vector is 1 x k on the left, k x 1 on the right), r * c components
  * A program leaves one value. hfx_evc_validate checks everything a run relies on (opcodes,
  * operand words present, bases, counts, stack depth, parameter words in range), so a program
  * read from a hostile file can be run safely once it passes. */
@@ -29,7 +34,8 @@
 
 typedef enum {
     HFX_EVC_CONST, HFX_EVC_PARAM, HFX_EVC_SWIZZLE, HFX_EVC_CONVERT, HFX_EVC_UNARY, HFX_EVC_BINARY,
-    HFX_EVC_CALL, HFX_EVC_TABLE, HFX_EVC_SELECT, HFX_EVC_ELEMENT, HFX_EVC_OP_COUNT
+    HFX_EVC_CALL, HFX_EVC_TABLE, HFX_EVC_SELECT, HFX_EVC_ELEMENT, HFX_EVC_SHUFFLE, HFX_EVC_CONCAT,
+    HFX_EVC_MATMUL, HFX_EVC_OP_COUNT
 } hfx_evc_op;
 
 enum { HFX_EVC_MAX_DEPTH = 8, HFX_EVC_MAX_WORDS = 1u << 20 };

@@ -118,6 +118,12 @@ static void validator_refuses(void) {
     check_invalid(binary_neg, 5, "an unknown binary operator");
     const uint32_t swz[] = {W(CONST, F, 1), 0, W(SWIZZLE, 5, 0), 0};
     check_invalid(swz, 4, "a swizzle of a wrong size");
+    const uint32_t shf[] = {W(CONST, F, 1), 0, W(SHUFFLE, 17, 0), 0, 0};
+    check_invalid(shf, 5, "a shuffle of a wrong size");
+    const uint32_t cat[] = {W(CONST, F, 1), 0, W(CONST, F, 1), 0, W(CONCAT, 0, 0)};
+    check_invalid(cat, 5, "a concatenation of a wrong size");
+    const uint32_t mm[] = {W(CONST, F, 1), 0, W(CONST, F, 1), 0, W(MATMUL, 1 | 5 << 4, 1)};
+    check_invalid(mm, 5, "a matrix product of a wrong shape");
 }
 
 /* Random word changes to a valid program: whatever the validator passes runs in bounds. */
@@ -147,12 +153,57 @@ static void random_changes_never_run_out_of_bounds(void) {
     CHECK(accepted > 0); /* some changes keep a valid program: those ran */
 }
 
+/* Preshader operations. mul(float2(1, 2), M) with M = (1 2 3; 4 5 6) (2x3): a row vector times
+ * M is (1 + 8, 2 + 10, 3 + 12) = (9, 12, 15); mul(M, float3(1, 0, -1)) is a column: (1 - 3, 4 - 6)
+ * = (-2, -2); the 2x2 product of (1 2; 3 4) with itself is (7 10; 15 22). */
+static void matrix_products(void) {
+    const uint32_t M[] = {W(CONST, F, 6), fbits(1), fbits(2), fbits(3), fbits(4), fbits(5), fbits(6)};
+    uint32_t code[32], n = 0;
+    code[n++] = W(CONST, I, 2); code[n++] = 1; code[n++] = 2;
+    for (unsigned i = 0; i < 7; i++) code[n++] = M[i];
+    code[n++] = W(MATMUL, 1 | 2 << 4, 3);
+    hfx_ev_value v;
+    CHECK(run(code, n, &v) && v.base == HFX_EV_FLOAT && v.n == 3 && v.c[0] == 9 && v.c[1] == 12 && v.c[2] == 15);
+    n = 0;
+    for (unsigned i = 0; i < 7; i++) code[n++] = M[i];
+    code[n++] = W(CONST, F, 3); code[n++] = fbits(1); code[n++] = fbits(0); code[n++] = fbits(-1);
+    code[n++] = W(MATMUL, 2 | 3 << 4, 1);
+    CHECK(run(code, n, &v) && v.n == 2 && v.c[0] == -2 && v.c[1] == -2);
+    const uint32_t sq[] = {W(CONST, F, 4), fbits(1), fbits(2), fbits(3), fbits(4),
+                           W(CONST, F, 4), fbits(1), fbits(2), fbits(3), fbits(4), W(MATMUL, 2 | 2 << 4, 2)};
+    CHECK(run(sq, 11, &v) && v.n == 4 && v.c[0] == 7 && v.c[1] == 10 && v.c[2] == 15 && v.c[3] == 22);
+    /* shapes that do not match the operands do not run */
+    const uint32_t bad[] = {W(CONST, F, 2), fbits(1), fbits(2), W(CONST, F, 2), fbits(1), fbits(2), W(MATMUL, 2 | 2 << 4, 2)};
+    CHECK(!run(bad, 7, &v));
+}
+
+/* float4(v.xyz, Ref) = (1, 2, 3, 0.5); the int index 2 joined to it first is a float; the
+ * 3x3 upper-left of a 4x4 (components 0 1 2, 4 5 6, 8 9 10) picked by SHUFFLE. */
+static void concat_and_shuffle(void) {
+    const uint32_t c4[] = {W(PARAM, F, 4), 2, W(SWIZZLE, 3, 0), 0x210u, W(PARAM, F, 1), 0, W(CONCAT, 0, 4)};
+    hfx_ev_value v;
+    CHECK(run(c4, 7, &v) && v.n == 4 && v.c[0] == 1 && v.c[2] == 3 && v.c[3] == 0.5);
+    const uint32_t c2[] = {W(PARAM, I, 1), 1, W(PARAM, F, 1), 0, W(CONCAT, 0, 2)};
+    CHECK(run(c2, 5, &v) && v.base == HFX_EV_FLOAT && v.n == 2 && v.c[0] == 2 && v.c[1] == 0.5);
+    const uint32_t wrong[] = {W(PARAM, I, 1), 1, W(PARAM, F, 1), 0, W(CONCAT, 0, 3)};
+    CHECK(!run(wrong, 5, &v));
+    uint32_t m[20], n = 0;
+    m[n++] = W(CONST, F, 16);
+    for (unsigned i = 0; i < 16; i++) m[n++] = fbits((float)i);
+    m[n++] = W(SHUFFLE, 9, 0);
+    m[n++] = 0x98654210u; /* components 0 1 2 4 5 6 8 9 */
+    m[n++] = 0xau;        /* and 10 */
+    CHECK(run(m, n, &v) && v.n == 9 && v.c[0] == 0 && v.c[3] == 4 && v.c[5] == 6 && v.c[6] == 8 && v.c[8] == 10);
+}
+
 int main(void) {
     setup();
     RUN(parameter_times_constant);
     RUN(table_index_clamps);
     RUN(swizzle_promotion_and_calls);
     RUN(select_and_failures);
+    RUN(matrix_products);
+    RUN(concat_and_shuffle);
     RUN(validator_refuses);
     RUN(random_changes_never_run_out_of_bounds);
     return test_summary();
