@@ -16,6 +16,8 @@ void hfx_fx_program_clear(hfx_fx_program *p) {
     for (uint32_t a = 0; a < p->sampler_count; a++) free(p->samplers[a].glsl_name);
     free(p->samplers);
     free(p->uniforms);
+    free(p->preshaders);
+    free(p->pre_code);
     memset(p, 0, sizeof *p);
 }
 

@@ -124,6 +124,16 @@ enum { /* hfx_fx_program.flags */
     HFX_FX_PROGRAM_ALPHA_TEST = 1u << 0 /* fragment shader has hfx_alpha_func / hfx_alpha_ref uniforms */
 };
 
+/* A preshader (HFXC_PACK_UNIFORMS): work a shader did on parameters alone, moved to the CPU as
+ * fxc does. Its common/eval_code program (words first .. first + words of the program's
+ * pre_code) runs over the effect's parameter values when one it reads changed; the result goes
+ * into registers reg .. reg + rows - 1 of hfx_c, cols components each, laid out as a packed
+ * parameter of its type (HLSL row i in register reg + i). */
+typedef struct hfx_fx_preshader {
+    uint32_t first, words;
+    uint32_t reg, rows, cols;
+} hfx_fx_preshader;
+
 /* One GLSL program: the vertex + pixel shader pair of a pass, specialised for it. */
 typedef struct hfx_fx_program {
     hfx_fx_code code[HFX_STAGE_COUNT][HFX_TARGET_COUNT];
@@ -132,6 +142,8 @@ typedef struct hfx_fx_program {
     hfx_fx_uniform_use *uniforms; uint32_t uniform_count;
     uint32_t flags;
     uint32_t reg_count;     /* vec4 registers of hfx_c (0: nothing packed) */
+    hfx_fx_preshader *preshaders; uint32_t preshader_count; /* registers after the parameters' */
+    uint32_t *pre_code; uint32_t pre_words;
 } hfx_fx_program;
 
 typedef struct hfx_fx_pass {

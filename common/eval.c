@@ -303,10 +303,11 @@ static bool vector_fn(hfx_ev_fn fn, const hfx_ev_value *a, unsigned n, hfx_ev_va
         return true;
     }
     if (fn != HFX_EV_FN_CROSS || a[0].n != 3) return false;
-    const double *x = a[0].c, *y = a[1].c;
-    out->c[0] = round_float(x[1] * y[2] - x[2] * y[1]);
-    out->c[1] = round_float(x[2] * y[0] - x[0] * y[2]);
-    out->c[2] = round_float(x[0] * y[1] - x[1] * y[0]);
+    const double *x = a[0].c, *y = a[1].c; /* out may be a[0]: all three before any is written */
+    double c0 = x[1] * y[2] - x[2] * y[1], c1 = x[2] * y[0] - x[0] * y[2], c2 = x[0] * y[1] - x[1] * y[0];
+    out->c[0] = round_float(c0);
+    out->c[1] = round_float(c1);
+    out->c[2] = round_float(c2);
     return true;
 }
 

@@ -13,7 +13,8 @@
 
 #include "eval_code.h"
 
-#define HFXO_VERSION 2u /* 2: registers of HFXC_PACK_UNIFORMS (EXPR was added as an optional section) */
+#define HFXO_VERSION 3u /* 3: preshaders (PRES, PCOD); 2: registers of HFXC_PACK_UNIFORMS (EXPR was added as an optional section) */
+#define HFXO_OLDEST 2u  /* version 2 files read as they are: they have no preshaders */
 #define HFXO_HEADER 20u /* magic 8, version, checksum, total size; then the section count */
 #define NO_STRING 0xffffffffu
 
@@ -29,7 +30,8 @@ enum {
     SEC_SAMPLER_USES = FOURCC('S', 'U', 'S', 'E'), SEC_UNIFORM_USES = FOURCC('U', 'U', 'S', 'E'),
     SEC_PASSES = FOURCC('P', 'A', 'S', 'S'), SEC_TECHNIQUES = FOURCC('T', 'E', 'C', 'H'),
     SEC_CODE = FOURCC('C', 'O', 'D', 'E'), SEC_EXPRS = FOURCC('E', 'X', 'P', 'R'),
-    SEC_VARIANTS = FOURCC('V', 'A', 'R', 'I')
+    SEC_VARIANTS = FOURCC('V', 'A', 'R', 'I'), SEC_PRESHADERS = FOURCC('P', 'R', 'E', 'S'),
+    SEC_PRE_CODE = FOURCC('P', 'C', 'O', 'D')
 };
 
 /* Words per record in version 2 (readers accept longer records and ignore the tail). PARM
@@ -38,7 +40,7 @@ enum {
     R_EFFECT = 3, R_PARAM = 18, R_PARAM_WRITTEN = 21, R_ANNOTATION = 8, R_STATE = 12, R_SAMPLER = 5,
     P_CODE = 7, P_REG_COUNT = P_CODE + 2 * HFX_STAGE_COUNT * HFX_TARGET_COUNT, /* program record fields */
     R_PROGRAM = P_REG_COUNT + 1, R_ATTRIBUTE = 3, R_SAMPLER_USE = 3,
-    R_UNIFORM_USE = 2, R_PASS = 6, R_TECHNIQUE = 5, R_VARIANT = 4
+    R_UNIFORM_USE = 2, R_PASS = 6, R_TECHNIQUE = 5, R_VARIANT = 4, R_PRESHADER = 6
 };
 
 /* CRC-32 (IEEE 802.3) by zlib, whose crc32 works on words: a byte-table loop was 7% of a
@@ -282,6 +284,29 @@ static void write_programs(writer *w, const hfx_fx_effect *fx) {
     section_end(w);
 }
 
+/* Preshaders of every program in program order, each record naming its program; their code
+ * words one program after another. */
+static void write_preshaders(writer *w, const hfx_fx_effect *fx) {
+    uint32_t count = 0, base = 0;
+    for (uint32_t i = 0; i < fx->program_count; i++) count += fx->programs[i].preshader_count;
+    table_begin(w, SEC_PRESHADERS, count, R_PRESHADER);
+    for (uint32_t i = 0; i < fx->program_count; i++) {
+        const hfx_fx_program *p = &fx->programs[i];
+        for (uint32_t k = 0; k < p->preshader_count; k++) {
+            const hfx_fx_preshader *q = &p->preshaders[k];
+            uint32_t r[R_PRESHADER] = {i, base + q->first, q->words, q->reg, q->rows, q->cols};
+            for (int f = 0; f < R_PRESHADER; f++) put32(&w->out, r[f]);
+        }
+        base += p->pre_words;
+    }
+    section_end(w);
+    section_begin(w, SEC_PRE_CODE);
+    put32(&w->out, base);
+    for (uint32_t i = 0; i < fx->program_count; i++)
+        for (uint32_t k = 0; k < fx->programs[i].pre_words; k++) put32(&w->out, fx->programs[i].pre_code[k]);
+    section_end(w);
+}
+
 static void write_techniques(writer *w, const hfx_fx_effect *fx) {
     table_begin(w, SEC_PASSES, fx->pass_count, R_PASS);
     for (uint32_t i = 0; i < fx->pass_count; i++) {
@@ -308,7 +333,7 @@ static void write_techniques(writer *w, const hfx_fx_effect *fx) {
     section_end(w);
 }
 
-enum { SECTION_COUNT = 17 };
+enum { SECTION_COUNT = 19 };
 _Static_assert(SECTION_COUNT <= 32, "the writer's section table holds 32");
 
 int hfx_fx_write_hfxo(const hfx_fx_effect *fx, void **out, size_t *out_size) {
@@ -331,6 +356,7 @@ int hfx_fx_write_hfxo(const hfx_fx_effect *fx, void **out, size_t *out_size) {
     write_annotations(&w, fx);
     write_states(&w, fx);
     write_programs(&w, fx);
+    write_preshaders(&w, fx);
     write_techniques(&w, fx);
     section_begin(&w, SEC_CODE);
     put_bytes(&w.out, w.code.data, w.code.size);
@@ -384,9 +410,10 @@ typedef struct reader {
     const uint8_t *code;
     uint32_t code_size;
     table t_effect, t_params, t_annotations, t_states, t_samplers, t_programs, t_attributes, t_sampler_uses,
-        t_uniform_uses, t_passes, t_techniques, t_variants;
-    const uint8_t *values, *adata, *exprs;
-    uint32_t value_words, adata_words, expr_words;
+        t_uniform_uses, t_passes, t_techniques, t_variants, t_preshaders;
+    const uint8_t *values, *adata, *exprs, *pre_code;
+    uint32_t value_words, adata_words, expr_words, pre_words;
+    uint32_t version;
 } reader;
 
 __attribute__((format(printf, 2, 3))) static bool fail(reader *r, const char *fmt, ...) {
@@ -451,6 +478,13 @@ static bool open_section(reader *r, uint32_t id, const uint8_t *p, uint32_t size
     case SEC_EXPRS: /* optional (older files have none), but only once */
         if (r->exprs) return fail(r, "section EXPR repeats");
         return open_words(r, p, size, &r->exprs, &r->expr_words, "EXPR");
+    case SEC_PRESHADERS: /* optional (version 2 has none) */
+        if (r->version < 3) return fail(r, "a version %u file with preshaders (they came in version 3)", r->version);
+        if (r->t_preshaders.p) return fail(r, "section PRES repeats");
+        return open_table(r, p, size, R_PRESHADER, &r->t_preshaders, "PRES");
+    case SEC_PRE_CODE:
+        if (r->pre_code) return fail(r, "section PCOD repeats");
+        return open_words(r, p, size, &r->pre_code, &r->pre_words, "PCOD");
     case SEC_SAMPLERS: return open_table(r, p, size, R_SAMPLER, &r->t_samplers, "SAMP");
     case SEC_PROGRAMS: return open_table(r, p, size, R_PROGRAM, &r->t_programs, "PROG");
     case SEC_ATTRIBUTES: return open_table(r, p, size, R_ATTRIBUTE, &r->t_attributes, "ATTR");
@@ -467,10 +501,10 @@ static bool read_header(reader *r) {
     size_t m = r->size < sizeof magic ? r->size : sizeof magic;
     if (memcmp(d, magic, m) != 0) return fail(r, "not an .hfxo file (bad magic number)");
     if (r->size < HFXO_HEADER + 4) return fail(r, "file is %zu bytes, too short for the header (truncated?)", r->size);
-    uint32_t version = rd32(d + 8);
-    if (version < HFXO_VERSION) /* nothing was released before version 2: no conversion */
-        return fail(r, "format version %u is older than this reader's %u: compile the .fx again", version, HFXO_VERSION);
-    if (version != HFXO_VERSION) return fail(r, "format version %u is not supported (this reader knows %u)", version, HFXO_VERSION);
+    uint32_t version = r->version = rd32(d + 8);
+    if (version < HFXO_OLDEST) /* nothing was released before version 2: no conversion */
+        return fail(r, "format version %u is older than this reader's %u: compile the .fx again", version, HFXO_OLDEST);
+    if (version > HFXO_VERSION) return fail(r, "format version %u is not supported (this reader knows %u)", version, HFXO_VERSION);
     if (rd32(d + 16) != r->size) return fail(r, "file is %zu bytes but its header says %u (truncated?)", r->size, rd32(d + 16));
     if (crc32_of(d + 16, r->size - 16) != rd32(d + 12)) return fail(r, "checksum mismatch (the file is corrupted)");
     uint32_t sections = rd32(d + 20);
@@ -663,6 +697,40 @@ static bool read_programs(reader *r, hfx_fx_effect *fx) {
     return true;
 }
 
+/* Program p's preshaders: the records [first, first + count) of PRES, their code copied out. */
+static bool take_preshaders(reader *r, hfx_fx_program *p, uint32_t first, uint32_t count) {
+    const table *t = &r->t_preshaders;
+    uint32_t lo = field(t, first, 1), hi = lo;
+    for (uint32_t k = first; k < first + count; k++) {
+        uint32_t f = field(t, k, 1), n = field(t, k, 2);
+        if (!range_ok(f, n, r->pre_words) || !n) return fail(r, "preshader %u has its code outside PCOD", k);
+        if (f < lo) lo = f;
+        if (f + n > hi) hi = f + n;
+    }
+    if (!(p->preshaders = alloc_array(r, count, sizeof *p->preshaders)) || !(p->pre_code = alloc_array(r, hi - lo, 4)))
+        return false;
+    p->preshader_count = count;
+    p->pre_words = hi - lo;
+    for (uint32_t k = 0; k < hi - lo; k++) p->pre_code[k] = rd32(r->pre_code + 4 * ((size_t)lo + k));
+    for (uint32_t k = 0; k < count; k++)
+        p->preshaders[k] = (hfx_fx_preshader){field(t, first + k, 1) - lo, field(t, first + k, 2), field(t, first + k, 3),
+                                              field(t, first + k, 4), field(t, first + k, 5)};
+    return true;
+}
+
+static bool read_preshaders(reader *r, hfx_fx_effect *fx) {
+    const table *t = &r->t_preshaders;
+    for (uint32_t k = 0; k < t->count;) {
+        uint32_t prog = field(t, k, 0), n = 1;
+        while (k + n < t->count && field(t, k + n, 0) == prog) n++;
+        if (prog >= fx->program_count || fx->programs[prog].preshader_count)
+            return fail(r, "preshader %u names a missing program, or its program's come apart", k);
+        if (!take_preshaders(r, &fx->programs[prog], k, n)) return false;
+        k += n;
+    }
+    return true;
+}
+
 static bool read_techniques(reader *r, hfx_fx_effect *fx) {
     const table *t = &r->t_passes;
     fx->pass_count = t->count;
@@ -779,6 +847,20 @@ static bool check_registers(reader *r, const hfx_fx_effect *fx, const hfx_fx_pro
     return true;
 }
 
+/* A preshader's program is valid over the values and its rows land inside the registers. */
+static bool check_preshaders(reader *r, const hfx_fx_effect *fx, const hfx_fx_program *p, uint32_t i) {
+    char why[96];
+    for (uint32_t k = 0; k < p->preshader_count; k++) {
+        const hfx_fx_preshader *q = &p->preshaders[k];
+        if (q->rows < 1 || q->rows > 4 || q->cols < 1 || q->cols > 4 || q->reg >= p->reg_count ||
+            q->rows > p->reg_count - q->reg)
+            return fail(r, "program %u has preshader %u outside its %u registers", i, k, p->reg_count);
+        if (hfx_evc_validate(p->pre_code + q->first, q->words, fx->value_words, why, sizeof why) != 0)
+            return fail(r, "program %u, preshader %u: %s", i, k, why);
+    }
+    return true;
+}
+
 static bool check_effect(reader *r, const hfx_fx_effect *fx) {
     if (fx->top_param_count > fx->param_count) return fail(r, "more top-level parameters than parameters");
     for (uint32_t i = 0; i < fx->param_count; i++)
@@ -799,7 +881,7 @@ static bool check_effect(reader *r, const hfx_fx_effect *fx) {
             if (p->samplers[k].sampler >= fx->sampler_count) return fail(r, "program %u uses a missing sampler", i);
         for (uint32_t k = 0; k < p->uniform_count; k++)
             if (p->uniforms[k].param >= fx->top_param_count) return fail(r, "program %u uses a missing parameter", i);
-        if (!check_registers(r, fx, p, i)) return false;
+        if (!check_registers(r, fx, p, i) || !check_preshaders(r, fx, p, i)) return false;
     }
     for (uint32_t i = 0; i < fx->pass_count; i++) {
         const hfx_fx_pass *p = &fx->passes[i];
@@ -847,7 +929,7 @@ hfx_fx_effect *hfx_fx_read_hfxo(const void *data, size_t size, char *err, size_t
     fx->targets = field(&r.t_effect, 0, 1);
     fx->top_param_count = field(&r.t_effect, 0, 2);
     ok = ok && read_params(&r, fx) && read_annotations(&r, fx) && read_states(&r, fx) && read_programs(&r, fx) &&
-         read_techniques(&r, fx) && check_effect(&r, fx);
+         read_preshaders(&r, fx) && read_techniques(&r, fx) && check_effect(&r, fx);
     if (!ok) {
         hfx_fx_effect_free(fx);
         return NULL;

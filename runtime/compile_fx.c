@@ -28,6 +28,7 @@ hfx_fx_effect *hfx_rt_compile_fx_deps(const char *path, const void *data, size_t
     /* D3D9's register model: every changed float parameter of a program goes up in one call */
     if (!opt || !opt->separate_uniforms) co.flags |= HFXC_PACK_UNIFORMS;
     if (opt && opt->no_self_check) co.flags |= HFXC_NO_SELF_CHECK;
+    if (opt && opt->no_preshaders) co.flags |= HFXC_NO_PRESHADERS;
     if (opt) {
         co.defines = opt->defines;
         co.define_count = opt->define_count;

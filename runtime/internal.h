@@ -160,7 +160,7 @@ typedef struct hfx_slot {
     uint32_t first, count;  /* all its uploads */
     uint32_t reg;           /* SLOT_REG: first register */
     uint16_t reg_rows, reg_cols; /* SLOT_REG: registers, and the components used in each */
-    uint32_t pad_;          /* 64 bytes: indexing is a shift */
+    uint16_t pre_first, pre_count; /* preshaders reading the parameter: pre_deps[pre_first ..]; 64 bytes */
 } hfx_slot;
 
 typedef struct hfx_rt_program {
@@ -184,6 +184,13 @@ typedef struct hfx_rt_program {
     int alpha_test;         /* either location is used */
     int32_t alpha_func;     /* values GL holds (-1: unknown) */
     float alpha_ref;
+    /* Preshaders (preshader.c): marked when a parameter they read changes, run before the
+     * registers are sent; pre_runs counts evaluations (tests check that nothing else runs). */
+    const hfx_fx_program *pre_source;
+    uint32_t *pre_deps;     /* per slot lists of preshader indices */
+    uint8_t *pre_dirty;     /* per preshader */
+    uint32_t pre_total, pre_pending;
+    uint64_t pre_runs;
 } hfx_rt_program;
 
 /* What a pass binds on one texture unit. */
@@ -403,6 +410,12 @@ static inline void hfx_rt_reg_send(hfx_rt_program *p, hfx_reg_range r) {
     uint32_t hi = r.hi < p->reg_active ? r.hi : p->reg_active - 1;
     p->reg_call(p->reg_locs[r.lo], (GLsizei)(hi - r.lo + 1), p->regs + 4 * (size_t)r.lo);
 }
+
+/* preshader.c: which preshaders read which slots (after the registers are set up); marking a
+ * changed slot's; running the marked ones into the register image, growing the range to send. */
+int hfx_rt_preshaders_setup(hfx_rt_program *p, const hfx_fx_effect *fx, const hfx_fx_program *fp);
+void hfx_rt_preshaders_mark(hfx_rt_program *p, const hfx_slot *s);
+void hfx_rt_preshaders_run(hfx_rt_program *p, const uint32_t *values, hfx_reg_range *regs);
 
 /* Uploads the parameters whose version differs from the one this program holds, visiting only
  * the log entries written since the program last looked when it follows this instance; returns

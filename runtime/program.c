@@ -343,6 +343,7 @@ int hfx_rt_program_build(hfx_shared *sh, uint32_t index, hfx_target target) {
     rc = read_active(&b);
     if (!rc) rc = resolve_uniforms(&b, fp);
     if (!rc) rc = hfx_rt_regs_setup(sh->dev, p, fp->reg_count, glsl_reg_location, &b);
+    if (!rc) rc = hfx_rt_preshaders_setup(p, sh->fx, fp);
     free(b.active);
     if (rc) return rc == HFX_ERR_MEMORY ? hfx_rt_fail(sh->dev, rc, "out of memory") : rc;
     set_sampler_units(sh, p, fp);
@@ -360,6 +361,8 @@ void hfx_rt_program_free(hfx_device *dev, hfx_rt_program *p) {
     free(p->uploads);
     free(p->regs);
     free(p->reg_locs);
+    free(p->pre_deps);
+    free(p->pre_dirty);
     memset(p, 0, sizeof *p);
 }
 
@@ -432,7 +435,9 @@ void hfx_rt_upload_all(hfx_effect *fx, hfx_rt_program *p) {
         s->held = fx->stamps[r];
         if (s->mode == SLOT_REG) hfx_rt_reg_copy(p, s, fx->values, &regs);
         else hfx_rt_upload_slot(fx, p, s);
+        if (s->pre_count) hfx_rt_preshaders_mark(p, s);
     }
+    if (p->pre_pending) hfx_rt_preshaders_run(p, fx->values, &regs);
     hfx_rt_reg_send(p, regs);
     p->memo_effect = fx->id;
     p->memo_seen = fx->log_len;
@@ -480,7 +485,9 @@ int hfx_rt_upload_log(hfx_effect *fx, hfx_rt_program *p) {
             hfx_rt_reg_copy(p, s, values, &regs);
         else if (s->mode == SLOT_OTHER)
             hfx_rt_upload_slot(fx, p, s);
+        if (s->pre_count) hfx_rt_preshaders_mark(p, s);
     }
+    if (p->pre_pending) hfx_rt_preshaders_run(p, values, &regs);
     hfx_rt_reg_send(p, regs);
     return HFX_OK;
 }

@@ -222,6 +222,7 @@ int hfx_rt_spirv_program_build(hfx_shared *sh, uint32_t index) {
     if (!rc) rc = resolve_uniforms(&b, fp);
     reg_ctx regs = {&b, hfx_fx_spirv_regs_location(sh->fx, fp)};
     if (!rc) rc = hfx_rt_regs_setup(sh->dev, p, fp->reg_count, spirv_reg_location, &regs);
+    if (!rc) rc = hfx_rt_preshaders_setup(p, sh->fx, fp);
     if (!rc) {
         p->pos_fixup_loc = known_location(&b, fp, "hfx_pos_fixup");
         memset(p->pos_fixup, 0, sizeof p->pos_fixup); /* GL's value for an unset uniform */

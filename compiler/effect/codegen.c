@@ -104,6 +104,7 @@ static ir_shader *build_stage(hfx_codegen *cg, const hfx_expr *e, ir_stage st) {
     uint32_t errors = cg->c.diags->errors;
     ir_shader *sh = ir_build(&cg->c, e, st);
     if (!sh || cg->c.diags->errors > errors || ir_lower(&cg->c, sh) != 0) return NULL;
+    if (cg->pack && !(cg->c.diags->flags & HFXC_NO_PRESHADERS)) ir_pass_preshade(&cg->c, sh);
     return sh;
 }
 
@@ -193,6 +194,36 @@ static void assign_registers(const hfx_fx_effect *fx, hfx_fx_program *p) {
         p->uniforms[k].reg = p->reg_count;
         p->reg_count += n;
     }
+}
+
+/* The preshaders of both stages take registers after the parameters' (the preshade pass keeps
+ * each stage within half of MAX_PACKED_REGS, so they fit); their code is copied into out. */
+static int assign_preshaders(hfx_codegen *cg, ir_shader *const sh[2], hfx_fx_program *out, glsl_iface *io) {
+    uint32_t n = 0, words = 0;
+    for (int s = 0; s < 2; s++)
+        for (uint32_t i = 0; sh[s] && i < sh[s]->pre_count; i++) n++, words += sh[s]->pres[i]->pre_words;
+    if (!n) return 0;
+    const ir_var **vars = HFX_NEW_ARRAY(cg->c.arena, const ir_var *, n);
+    uint32_t *regs = HFX_NEW_ARRAY(cg->c.arena, uint32_t, n);
+    out->preshaders = calloc(n, sizeof *out->preshaders);
+    out->pre_code = malloc(words * sizeof *out->pre_code);
+    if (!vars || !regs || !out->preshaders || !out->pre_code) return -1;
+    for (int s = 0; s < 2; s++)
+        for (uint32_t i = 0; sh[s] && i < sh[s]->pre_count; i++) {
+            const ir_var *v = sh[s]->pres[i];
+            const hfx_type *t = v->type;
+            hfx_fx_preshader *q = &out->preshaders[out->preshader_count];
+            *q = (hfx_fx_preshader){out->pre_words, v->pre_words, out->reg_count, t->kind == TY_MATRIX ? t->rows : 1, t->cols};
+            memcpy(out->pre_code + out->pre_words, v->pre_code, v->pre_words * sizeof *v->pre_code);
+            out->pre_words += v->pre_words;
+            vars[out->preshader_count] = v;
+            regs[out->preshader_count++] = out->reg_count;
+            out->reg_count += q->rows;
+        }
+    io->pre_vars = vars;
+    io->pre_regs = regs;
+    io->pre_count = n;
+    return 0;
 }
 
 /* flat_colors: the pass sets ShadeMode = FLAT, under which D3D9 does not interpolate COLOR inputs. */
@@ -290,6 +321,7 @@ int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps,
     if (copy_attributes(&io, out) != 0 || record_uses(cg, sh, out) != 0) goto oom;
     qsort(out->uniforms, out->uniform_count, sizeof *out->uniforms, cmp_uniform);
     if (cg->pack) assign_registers(cg->c.fx, out);
+    if (assign_preshaders(cg, sh, out, &io) != 0) goto oom;
     io.uniforms = out->uniforms;
     io.uniform_count = out->uniform_count;
     io.reg_count = out->reg_count;

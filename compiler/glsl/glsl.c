@@ -328,7 +328,7 @@ static void write_pixel_output(gp *p, const ir_leaf *l) {
 static void init_privates(gp *p) {
     for (uint32_t i = 0; i < p->sh->global_count; i++) {
         const ir_var *v = p->sh->globals[i];
-        if (v->kind != IRV_PRIVATE || (!v->copy_of && !v->init && !zero_printable(p, v->type))) continue;
+        if (v->kind != IRV_PRIVATE || v->pre || (!v->copy_of && !v->init && !zero_printable(p, v->type))) continue;
         line_start(p);
         sb_printf(p->out, "%s = ", v->glsl);
         if (v->copy_of) sb_put(p->out, v->copy_of->glsl);

@@ -14,6 +14,7 @@ typedef struct glsl_iface {
     const hfx_fx_uniform_use *uniforms; uint32_t uniform_count; /* the program's, with their registers */
     uint32_t reg_count;      /* HFXC_PACK_UNIFORMS: size of hfx_c in both stages (0: nothing packed) */
     bool alpha_test;         /* some pass of the effect enables D3D9's alpha test: COLOR0 carries it */
+    const ir_var **pre_vars; const uint32_t *pre_regs; uint32_t pre_count; /* preshaders' registers */
 } glsl_iface;
 
 /* Prints one stage for one target (sh NULL: the fixed-function stand-in); malloc'ed text,

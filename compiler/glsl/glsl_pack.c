@@ -6,7 +6,14 @@
  * glUniformMatrix*fv(transpose = GL_FALSE) of the same words gives the unpacked uniform. */
 #include "glsl/glsl_int.h"
 
+static uint32_t preshader_reg(const gp *p, const ir_var *v) {
+    for (uint32_t k = 0; k < p->io->pre_count; k++)
+        if (p->io->pre_vars[k] == v) return p->io->pre_regs[k];
+    return HFX_NONE;
+}
+
 uint32_t glsl_packed_reg(const gp *p, const ir_var *v) {
+    if (v->pre && p->io) return preshader_reg(p, v);
     if (v->kind != IRV_UNIFORM || v->param == HFX_NONE || !p->io) return HFX_NONE;
     for (uint32_t k = 0; k < p->io->uniform_count; k++) {
         const hfx_fx_uniform_use *u = &p->io->uniforms[k];
@@ -29,8 +36,10 @@ void glsl_declare_packed(gp *p, const ir_var *v, uint32_t reg) {
     const hfx_type *t = v->type;
     uint32_t n = t->kind == TY_MATRIX ? t->rows : 1;
     glsl_decl(p, p->out, t, v->glsl);
-    if (n > 1) sb_printf(p->out, "; // %s[%u..%u]\n", HFX_FX_REGS_NAME, reg, reg + n - 1);
-    else sb_printf(p->out, "; // %s[%u]\n", HFX_FX_REGS_NAME, reg);
+    if (n > 1) sb_printf(p->out, "; // %s[%u..%u]", HFX_FX_REGS_NAME, reg, reg + n - 1);
+    else sb_printf(p->out, "; // %s[%u]", HFX_FX_REGS_NAME, reg);
+    if (v->pre) sb_printf(p->out, " = %s, computed on the CPU (a preshader)", v->pre_text);
+    sb_put(p->out, "\n");
 }
 
 /* Register r, narrowed to its first n components. */

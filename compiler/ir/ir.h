@@ -48,6 +48,11 @@ struct ir_var {
     bool hoisted;            /* for-init variable used after its loop: declared before it */
     ir_expr *konst;          /* const variable whose initialiser folded to a constant (fold.c) */
     ir_expr *bound;          /* PARAM of the entry bound by a compile argument (specialise) */
+    /* A preshader (lower/preshade.c): the uniform-only expression this private global holds,
+     * its eval_code program and readable HLSL; main reads it from hfx_c registers. */
+    const ir_expr *pre;
+    const uint32_t *pre_code; uint32_t pre_words;
+    const char *pre_text;
 };
 
 typedef enum {
@@ -120,6 +125,7 @@ typedef struct ir_shader {
     ir_func *entry;
     ir_func **funcs; uint32_t func_count, func_cap;  /* callees before callers; entry last */
     ir_var **globals; uint32_t global_count, global_cap; /* uniforms, samplers, privates used */
+    ir_var **pres; uint32_t pre_count, pre_cap;          /* preshaders (lower/preshade.c) */
     const hfx_expr *compile;     /* the EX_COMPILE it came from */
     bool uses_discard;
 } ir_shader;
@@ -148,6 +154,13 @@ void ir_pass_dce(ir_ctx *c, ir_shader *sh);
 void ir_pass_globals(ir_ctx *c, ir_shader *sh);
 int ir_pass_check(ir_ctx *c, ir_shader *sh);   /* target limits: reports what GLSL cannot express */
 void ir_pass_uses(ir_ctx *c, ir_shader *sh);
+void ir_pass_preshade(ir_ctx *c, ir_shader *sh);    /* uniform-only work to preshaders (codegen, when packing) */
+
+/* Preshaders' pieces (pre_code.c). */
+bool ir_pre_node(const ir_ctx *c, const ir_expr *e);   /* a preshader computes e from arguments it computes */
+bool ir_pre_work(const ir_expr *e);                    /* e computes (not only moves components) */
+uint32_t *ir_pre_code(ir_ctx *c, const ir_expr *e, uint32_t *words); /* validated eval_code (arena), or NULL */
+const char *ir_pre_text(ir_ctx *c, const ir_expr *e); /* e as HLSL, for the GLSL's comment (arena) */
 
 /* Constructors shared by the passes (ir.c). */
 ir_expr *ir_new_expr(ir_ctx *c, ir_expr_kind k, const hfx_type *ty, hfx_loc loc, uint32_t n);
@@ -163,6 +176,8 @@ bool ir_const_truth(const ir_expr *e); /* the first component as a bool */
 typedef void (*ir_expr_fn)(ir_ctx *c, ir_expr **slot, void *data);
 void ir_walk_stmt_exprs(ir_ctx *c, ir_stmt *s, ir_expr_fn fn, void *data);
 void ir_walk_expr(ir_ctx *c, ir_expr **slot, ir_expr_fn fn, void *data);
+/* The same on each statement's own expression slots only (not their subexpressions). */
+void ir_walk_stmt_roots(ir_ctx *c, ir_stmt *s, ir_expr_fn fn, void *data);
 
 /* Intrinsic names (HLSL spelling) and lookup. */
 

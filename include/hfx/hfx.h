@@ -59,6 +59,8 @@ typedef struct hfx_load_options {
     int separate_uniforms;           /* .fx only: 1 = one GLSL uniform per parameter; 0 = float parameters
                                         packed in vec4 registers, sent in one call per Apply (default) */
     int no_self_check;               /* .fx only: 1 = skip glslang's check of the emitted GLSL (faster loads) */
+    int no_preshaders;               /* .fx only: 1 = parameter-only work stays in the shaders (by default it
+                                        runs on the CPU once per change, as fxc's preshaders) */
     hfx_pool *pool;                  /* NULL, or the pool whose `shared` parameters the effect shares */
 } hfx_load_options;
 

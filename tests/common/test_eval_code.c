@@ -196,6 +196,16 @@ static void concat_and_shuffle(void) {
     CHECK(run(m, n, &v) && v.n == 9 && v.c[0] == 0 && v.c[3] == 4 && v.c[5] == 6 && v.c[6] == 8 && v.c[8] == 10);
 }
 
+/* cross((0.5, -1.5, 2), (0.25, 3, -0.75)) = (1.125 - 6, 0.5 + 0.375, 1.5 + 0.375): the run
+ * writes the result over its first argument, which must not change what the later
+ * components read. */
+static void cross_over_its_argument(void) {
+    const uint32_t code[] = {W(CONST, F, 3), fbits(0.5f), fbits(-1.5f), fbits(2), W(CONST, F, 3), fbits(0.25f), fbits(3),
+                             fbits(-0.75f), W(CALL, HFX_EV_FN_CROSS, 0)};
+    hfx_ev_value v;
+    CHECK(run(code, 9, &v) && v.n == 3 && v.c[0] == -4.875 && v.c[1] == 0.875 && v.c[2] == 1.875);
+}
+
 int main(void) {
     setup();
     RUN(parameter_times_constant);
@@ -203,6 +213,7 @@ int main(void) {
     RUN(swizzle_promotion_and_calls);
     RUN(select_and_failures);
     RUN(matrix_products);
+    RUN(cross_over_its_argument);
     RUN(concat_and_shuffle);
     RUN(validator_refuses);
     RUN(random_changes_never_run_out_of_bounds);

@@ -104,8 +104,16 @@ static hfx_fx_effect *sample_effect(void) {
     pr->uniforms = calloc(2, sizeof *pr->uniforms);
     pr->uniforms[0] = (hfx_fx_uniform_use){0, 0};        /* world: packed, registers 0..3 */
     pr->uniforms[1] = (hfx_fx_uniform_use){2, HFX_NONE}; /* lights: its own uniform */
-    pr->reg_count = 4;
+    pr->reg_count = 5;
     pr->flags = HFX_FX_PROGRAM_ALPHA_TEST;
+    /* a preshader: world's diagonal (components 0, 5, 10, 15) into register 4 */
+    pr->pre_words = 4;
+    pr->pre_code = malloc(4 * sizeof *pr->pre_code);
+    uint32_t pre[4] = {hfx_evc_word(HFX_EVC_PARAM, HFX_EV_FLOAT, 16), 0, hfx_evc_word(HFX_EVC_SWIZZLE, 4, 0), 0xfa50u};
+    memcpy(pr->pre_code, pre, sizeof pre);
+    pr->preshader_count = 1;
+    pr->preshaders = calloc(1, sizeof *pr->preshaders);
+    pr->preshaders[0] = (hfx_fx_preshader){0, 4, 4, 1, 4};
 
     fx->pass_count = 2;
     fx->passes = calloc(2, sizeof *fx->passes);
@@ -210,6 +218,12 @@ static void compare_effects(const hfx_fx_effect *a, const hfx_fx_effect *b) {
             CHECK_INT(x->uniforms[k].param, y->uniforms[k].param);
             CHECK_INT(x->uniforms[k].reg, y->uniforms[k].reg);
         }
+        CHECK_INT(x->preshader_count, y->preshader_count);
+        CHECK_INT(x->pre_words, y->pre_words);
+        for (uint32_t k = 0; k < x->preshader_count && k < y->preshader_count; k++)
+            CHECK(memcmp(&x->preshaders[k], &y->preshaders[k], sizeof x->preshaders[k]) == 0);
+        if (x->pre_words == y->pre_words && x->pre_words)
+            CHECK(memcmp(x->pre_code, y->pre_code, x->pre_words * sizeof *x->pre_code) == 0);
     }
     CHECK_INT(a->pass_count, b->pass_count);
     for (uint32_t i = 0; i < a->pass_count && i < b->pass_count; i++) {
@@ -253,7 +267,7 @@ static void round_trip(void) {
     const uint8_t *b = data;
     CHECK_INT(b[0], 0x89);
     CHECK(memcmp(b + 1, "HFXO", 4) == 0);
-    CHECK_INT(get32(b + 8), 2);                         /* version */
+    CHECK_INT(get32(b + 8), 3);                         /* version */
     CHECK_INT(get32(b + 16), size);                     /* total size */
     CHECK_INT(get32(b + 12), crc32_bitwise(b + 16, size - 16));
     char err[256] = "untouched";
@@ -355,9 +369,13 @@ static void every_flipped_byte_is_refused(void) {
     CHECK_STR(err, "hfxo: not an .hfxo file (bad magic number)");
     CHECK(!hfx_fx_is_hfxo(copy, size));
     memcpy(copy, data, size);
-    put32(copy + 8, 3);
+    put32(copy + 8, 4);
     CHECK(hfx_fx_read_hfxo(copy, size, err, sizeof err) == NULL);
-    CHECK_STR(err, "hfxo: format version 3 is not supported (this reader knows 2)");
+    CHECK_STR(err, "hfxo: format version 4 is not supported (this reader knows 3)");
+    memcpy(copy, data, size);
+    put32(copy + 8, 2); /* version 2 is read, but it had no preshaders */
+    CHECK(hfx_fx_read_hfxo(copy, size, err, sizeof err) == NULL);
+    CHECK_STR(err, "hfxo: a version 2 file with preshaders (they came in version 3)");
     memcpy(copy, data, size);
     put32(copy + 8, 1);
     CHECK(hfx_fx_read_hfxo(copy, size, err, sizeof err) == NULL);
@@ -430,16 +448,30 @@ static void hostile_contents_are_refused(void) {
      * register on a parameter that cannot be packed (the struct array). */
     uint32_t uuse = section_at(b, "UUSE");
     CHECK(uuse != 0);
-    CHECK_INT(get32(b + prog + 8 + 23 * 4), 4); /* reg_count, after the code fields */
+    CHECK_INT(get32(b + prog + 8 + 23 * 4), 5); /* reg_count, after the code fields */
     CHECK_INT(get32(b + uuse + 4), 8);          /* param, reg */
     CHECK_STR(read_patched(data, size, prog + 8 + 23 * 4, 4097, err, sizeof err),
               "hfxo: program 0 has 4097 registers (at most 4096)");
     CHECK_STR(read_patched(data, size, prog + 8 + 23 * 4, 3, err, sizeof err),
               "hfxo: program 0 puts parameter 0 outside its 3 registers");
-    CHECK_STR(read_patched(data, size, uuse + 8 + 4, 1, err, sizeof err),
-              "hfxo: program 0 puts parameter 0 outside its 4 registers");
+    CHECK_STR(read_patched(data, size, uuse + 8 + 4, 2, err, sizeof err),
+              "hfxo: program 0 puts parameter 0 outside its 5 registers");
     CHECK_STR(read_patched(data, size, uuse + 8 + 4, 0xfffffffeu, err, sizeof err),
-              "hfxo: program 0 puts parameter 0 outside its 4 registers");
+              "hfxo: program 0 puts parameter 0 outside its 5 registers");
+    /* A preshader (program, first, words, reg, rows, cols) writing past the registers, its
+     * code reading past the values, its code outside PCOD, its program missing. */
+    uint32_t pres = section_at(b, "PRES"), pcod = section_at(b, "PCOD");
+    CHECK(pres != 0 && pcod != 0);
+    CHECK_STR(read_patched(data, size, pres + 8 + 3 * 4, 5, err, sizeof err),
+              "hfxo: program 0 has preshader 0 outside its 5 registers");
+    CHECK_STR(read_patched(data, size, pres + 8 + 4 * 4, 2, err, sizeof err),
+              "hfxo: program 0 has preshader 0 outside its 5 registers");
+    CHECK_STR(read_patched(data, size, pcod + 4 + 4, 20, err, sizeof err),
+              "hfxo: program 0, preshader 0: expression word 0: a parameter outside the values");
+    CHECK_STR(read_patched(data, size, pres + 8 + 2 * 4, 5, err, sizeof err),
+              "hfxo: preshader 0 has its code outside PCOD");
+    CHECK_STR(read_patched(data, size, pres + 8, 1, err, sizeof err),
+              "hfxo: preshader 0 names a missing program, or its program's come apart");
     CHECK_STR(read_patched(data, size, uuse + 8 + 8 + 4, 0, err, sizeof err),
               "hfxo: program 0 packs parameter 2, which cannot be packed");
     CHECK_STR(read_patched(data, size, prog + 8 + 23 * 4, 4096, err, sizeof err), "accepted");

@@ -80,9 +80,12 @@ static void expected_color(const shape *s, int v, float out[4]) {
     for (int k = 0; k < 4; k++) out[k] += last[k];
 }
 
+/* This file pins the parameters' registers: no preshaders (tests/runtime/test_preshaders.c). */
 static hfx_effect *load_opt(hfx_device *dev, const char *src, const hfx_load_options *opt) {
     char *errors = NULL;
-    hfx_effect *fx = hfx_effect_load_memory(dev, src, strlen(src), "paths.fx", opt, &errors);
+    hfx_load_options o = opt ? *opt : (hfx_load_options){0};
+    o.no_preshaders = 1;
+    hfx_effect *fx = hfx_effect_load_memory(dev, src, strlen(src), "paths.fx", &o, &errors);
     if (!fx) fprintf(stderr, "load: %s\n", errors ? errors : "(no message)");
     CHECK(fx != NULL);
     hfx_free(errors);
@@ -1112,6 +1115,7 @@ static void test_hfxo_round_trip(void) {
         hfx_load_options opt;
         memset(&opt, 0, sizeof opt);
         opt.separate_uniforms = separate;
+        opt.no_preshaders = 1;
         char *diag = NULL;
         hfx_fx_effect *cfx = hfx_rt_compile_fx(NULL, shapes_fx, strlen(shapes_fx), "paths.fx", &opt, &diag);
         free(diag);
@@ -1152,6 +1156,7 @@ static void spirv_hfxo(hfx_device *dev) {
         memset(&opt, 0, sizeof opt);
         opt.target = HFX_TARGET_SPIRV;
         opt.separate_uniforms = separate;
+        opt.no_preshaders = 1;
         char *diag = NULL;
         hfx_fx_effect *cfx = hfx_rt_compile_fx(NULL, shapes_fx, strlen(shapes_fx), "paths.fx", &opt, &diag);
         free(diag);

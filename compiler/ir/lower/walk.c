@@ -18,6 +18,16 @@ void ir_walk_stmt_exprs(ir_ctx *c, ir_stmt *s, ir_expr_fn fn, void *data) {
     ir_walk_stmt_exprs(c, s->else_s, fn, data);
 }
 
+void ir_walk_stmt_roots(ir_ctx *c, ir_stmt *s, ir_expr_fn fn, void *data) {
+    if (!s) return;
+    if (s->init) ir_walk_stmt_roots(c, s->init, fn, data);
+    if (s->expr) fn(c, &s->expr, data);
+    if (s->step) fn(c, &s->step, data);
+    for (uint32_t i = 0; i < s->count; i++) ir_walk_stmt_roots(c, s->body[i], fn, data);
+    ir_walk_stmt_roots(c, s->then_s, fn, data);
+    ir_walk_stmt_roots(c, s->else_s, fn, data);
+}
+
 ir_expr *ir_clone_expr(ir_ctx *c, const ir_expr *e) {
     if (!e) return NULL;
     ir_expr *r = ir_new_expr(c, e->kind, e->type, e->loc, 0);

@@ -48,11 +48,13 @@ static const char mixed_fx[] =
     "    float4 r = c * Tint + float4(Twice, 0);\n    if (Enabled) r *= Scale;\n    return r;\n}\n"
     "technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }\n";
 
+/* The registers by hand, and uploads without preshaders: this file pins the parameters' layout
+ * (preshaders take the registers after it: tests/runtime/test_preshaders.c). */
 static hfxc_result *compile_text(const char *src, const char *name, unsigned targets, unsigned flags,
                                  const char *define) {
     hfxc_options o = {0};
     o.targets = targets;
-    o.flags = flags;
+    o.flags = flags | HFXC_NO_PRESHADERS;
     o.defines = &define;
     o.define_count = define ? 1 : 0;
     hfxc_result *r = hfxc_compile_memory(src, strlen(src), name, &o);
@@ -67,7 +69,7 @@ static hfxc_result *compile_text(const char *src, const char *name, unsigned tar
 static hfxc_result *compile_path(const char *path, unsigned targets, unsigned flags) {
     hfxc_options o = {0};
     o.targets = targets;
-    o.flags = flags;
+    o.flags = flags | HFXC_NO_PRESHADERS;
     return hfxc_compile_file(path, &o);
 }
 

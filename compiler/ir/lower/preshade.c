@@ -1,0 +1,123 @@
+/* preshade.c: preshaders. fxc moves the work a shader does on parameters alone (say
+ * `mul(World, mul(View, Projection))` per vertex, `cos(ConeAngle)` per pixel) out of the shader
+ * into code the runtime runs on the CPU once per change; this pass does the same. Each maximal
+ * uniform-only subexpression that computes something (an operator, an intrinsic, a select, a
+ * varying index) becomes a private global, hfx_preN, which main reads from registers of hfx_c
+ * (codegen gives them after the program's parameters); its eval_code program (ir/pre_code.c)
+ * goes into the compiled effect. Equal expressions share one global. Runs in codegen when
+ * parameters are packed, after ir_lower, and ends with the uses pass again (parameters read
+ * only by preshaders leave the GLSL). */
+#include <string.h>
+
+#include "ir/ir.h"
+
+/* Registers a stage may take for parameters and preshaders together: two stages then always
+ * fit the program's 256 (codegen's MAX_PACKED_REGS), so every preshader gets its register. */
+enum { STAGE_REGS = 128 };
+
+/* What visit finds of a subtree: a preshader can compute it, it computes something, it reads a
+ * parameter (an expression of constants alone is the folder's, not a preshader's). */
+enum { UNI = 1, WORK = 2, READS = 4, HOIST = UNI | WORK | READS };
+
+typedef struct pre {
+    ir_ctx *c;
+    ir_shader *sh;
+    uint32_t regs; /* registers the stage uses so far */
+} pre;
+
+static unsigned regs_of(const hfx_type *t) { return t->kind == TY_MATRIX ? t->rows : 1; }
+
+static bool result_ok(const hfx_type *t) {
+    return hfx_type_is_numeric(t) && (t->base == B_FLOAT || t->base == B_HALF) && hfx_type_components(t) <= 16;
+}
+
+static ir_var *same_preshader(const pre *p, const hfx_type *t, const uint32_t *code, uint32_t words) {
+    for (uint32_t i = 0; i < p->sh->pre_count; i++) {
+        ir_var *v = p->sh->pres[i];
+        if (v->type == t && v->pre_words == words && memcmp(v->pre_code, code, words * sizeof *code) == 0) return v;
+    }
+    return NULL;
+}
+
+static ir_var *new_preshader(pre *p, const ir_expr *e, uint32_t *code, uint32_t words) {
+    if (p->regs + regs_of(e->type) > STAGE_REGS ||
+        !HFX_ARENA_GROW(p->c->arena, p->sh->pres, p->sh->pre_count, p->sh->pre_cap, 8))
+        return NULL;
+    ir_var *v = HFX_NEW(p->c->arena, ir_var);
+    *v = (ir_var){0};
+    v->kind = IRV_PRIVATE;
+    v->name = v->glsl = hfx_arena_printf(p->c->arena, "hfx_pre%u", (unsigned)p->sh->pre_count);
+    v->type = e->type;
+    v->param = HFX_NONE;
+    v->pre = e;
+    v->pre_code = code;
+    v->pre_words = words;
+    v->pre_text = ir_pre_text(p->c, e);
+    p->regs += regs_of(e->type);
+    p->sh->pres[p->sh->pre_count++] = v;
+    return v;
+}
+
+/* *slot, uniform-only and computing, read from a preshader; false when it cannot be one. */
+static bool hoist(pre *p, ir_expr **slot) {
+    ir_expr *e = *slot;
+    uint32_t words = 0, *code = result_ok(e->type) ? ir_pre_code(p->c, e, &words) : NULL;
+    if (!code) return false;
+    ir_var *v = same_preshader(p, e->type, code, words);
+    if (!v && !(v = new_preshader(p, e, code, words))) return false;
+    ir_expr *r = ir_new_expr(p->c, IE_VAR, e->type, e->loc, 0);
+    r->var = v;
+    *slot = r;
+    return true;
+}
+
+static unsigned visit(pre *p, ir_expr **slot, int depth);
+
+/* The uniform-only, computing arguments of a node that is not, each hoisted (or, when one
+ * cannot be, its own such parts). */
+static void hoist_parts(pre *p, ir_expr *e, const unsigned *flags, int depth) {
+    for (uint32_t i = 0; i < e->n; i++) {
+        if ((flags ? flags[i] : visit(p, &e->a[i], depth + 1)) != HOIST) continue;
+        if (!hoist(p, &e->a[i])) hoist_parts(p, e->a[i], NULL, depth + 1);
+    }
+}
+
+/* The flags of *slot; the uniform-only parts of what is not are hoisted on the way. */
+static unsigned visit(pre *p, ir_expr **slot, int depth) {
+    ir_expr *e = *slot;
+    if (!e || depth > 200) return 0;
+    unsigned local[8], *flags = e->n <= 8 ? local : HFX_NEW_ARRAY(p->c->arena, unsigned, e->n);
+    unsigned all = UNI, more = (ir_pre_work(e) ? WORK : 0) | (e->kind == IE_VAR ? READS : 0);
+    if (!flags) return 0;
+    for (uint32_t i = 0; i < e->n; i++) {
+        flags[i] = visit(p, &e->a[i], depth + 1);
+        all &= flags[i];
+        more |= flags[i] & (WORK | READS);
+    }
+    if (all && ir_pre_node(p->c, e)) return UNI | more;
+    hoist_parts(p, e, flags, depth);
+    return 0;
+}
+
+static void root(ir_ctx *c, ir_expr **slot, void *data) {
+    pre *p = data;
+    (void)c;
+    if (visit(p, slot, 0) == HOIST && !hoist(p, slot)) hoist_parts(p, *slot, NULL, 0);
+}
+
+static uint32_t parameter_regs(const ir_ctx *c, const ir_shader *sh) {
+    uint32_t n = 0;
+    for (uint32_t i = 0; i < sh->global_count; i++) {
+        const ir_var *v = sh->globals[i];
+        if (v->kind == IRV_UNIFORM && v->param != HFX_NONE) n += hfx_fx_param_packable(c->fx, v->param);
+    }
+    return n;
+}
+
+void ir_pass_preshade(ir_ctx *c, ir_shader *sh) {
+    pre p = {c, sh, parameter_regs(c, sh)};
+    for (uint32_t i = 0; i < sh->func_count; i++) ir_walk_stmt_roots(c, sh->funcs[i]->body, root, &p);
+    for (uint32_t i = 0; i < sh->global_count; i++)
+        if (sh->globals[i]->kind == IRV_PRIVATE && sh->globals[i]->init) root(c, &sh->globals[i]->init, &p);
+    if (sh->pre_count) ir_pass_uses(c, sh);
+}

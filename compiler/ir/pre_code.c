@@ -1,0 +1,323 @@
+/* pre_code.c: a uniform-only expression (parameters and constants, no varyings, textures or
+ * locals) as a common/eval_code program, which the runtime runs on the CPU when one of its
+ * parameters changed (a preshader, as fxc makes them), and as readable HLSL for the comment the
+ * GLSL carries beside the register that holds it. lower/preshade.c decides what is hoisted. */
+#include <string.h>
+
+#include "base/sbuf.h"
+#include "eval_code.h"
+#include "ir/ir.h"
+
+/* ---- which expressions a preshader computes ---- */
+
+static bool numeric_base(const hfx_type *t) { return hfx_type_is_numeric(t) && t->base != B_UINT && t->base < B_NONE; }
+
+/* A parameter read whole (PARAM): a numeric non-array top-level parameter the stage only reads. */
+static bool param_leaf(const ir_ctx *c, const ir_var *v) {
+    if (v->kind != IRV_UNIFORM || v->priv || v->param == HFX_NONE || v->param >= c->fx->param_count) return false;
+    const hfx_fx_param *p = &c->fx->params[v->param];
+    bool numeric = p->klass == HFX_CLASS_SCALAR || p->klass == HFX_CLASS_VECTOR || p->klass == HFX_CLASS_MATRIX;
+    return numeric && !p->elements && p->words && p->words <= HFX_EV_MAX_COMPONENTS && numeric_base(v->type) &&
+           p->words == hfx_type_components(v->type);
+}
+
+/* A parameter array of numeric elements (ELEMENT), read at an index. */
+static const hfx_fx_param *param_array(const ir_ctx *c, const ir_expr *e) {
+    if (e->kind != IE_VAR || e->var->kind != IRV_UNIFORM || e->var->priv || e->var->param >= c->fx->param_count) return NULL;
+    const hfx_fx_param *p = &c->fx->params[e->var->param];
+    if (!p->elements || p->first_child == HFX_NONE || e->type->kind != TY_ARRAY || !numeric_base(e->type->elem)) return NULL;
+    const hfx_fx_param *el = &c->fx->params[p->first_child];
+    bool numeric = el->klass == HFX_CLASS_SCALAR || el->klass == HFX_CLASS_VECTOR || el->klass == HFX_CLASS_MATRIX;
+    return numeric && el->words && el->words <= HFX_EV_MAX_COMPONENTS && el->words == hfx_type_components(e->type->elem)
+               ? p : NULL;
+}
+
+/* Inner sizes agree (the checker made them: a truncated matrix is an explicit conversion). */
+static bool mul_shapes(const ir_expr *e) {
+    if (e->n != 2) return false;
+    const hfx_type *x = e->a[0]->type, *y = e->a[1]->type;
+    if (!hfx_type_is_numeric(x) || !hfx_type_is_numeric(y)) return false;
+    if (x->kind == TY_SCALAR || y->kind == TY_SCALAR) return true;
+    unsigned inner = y->kind == TY_VECTOR ? y->cols : y->rows;
+    return x->cols == inner && x->rows <= 4 && inner <= 4 && y->cols <= 4;
+}
+
+static bool intrinsic_ok(const ir_expr *e) {
+    if (e->intrin == HFX_INTR_MUL) return mul_shapes(e);
+    if (e->intrin == HFX_INTR_TRANSPOSE) return e->n == 1;
+    const hfx_intrinsic_info *info = hfx_intrinsic_info_of((int)e->intrin);
+    return info && info->fold != HFX_EV_FN_NONE && (int)e->n == hfx_ev_fn_args(info->fold);
+}
+
+static bool binary_ok(const ir_expr *e) {
+    hfx_ev_op op;
+    if (!hfx_op_ev(e->op, &op)) return false;
+    /* an integer division by zero has no value the CPU could agree with the GPU on */
+    return !((op == HFX_EV_DIV || op == HFX_EV_MOD) && e->type->base != B_FLOAT && e->type->base != B_HALF);
+}
+
+bool ir_pre_node(const ir_ctx *c, const ir_expr *e) {
+    if (e->kind != IE_INDEX && e->kind != IE_VAR && !numeric_base(e->type)) return false;
+    switch (e->kind) {
+    case IE_CONST: return true;
+    case IE_VAR: return param_leaf(c, e->var) || param_array(c, e) != NULL;
+    case IE_UNARY: return e->op == OP_NEG || e->op == OP_POS || e->op == OP_NOT || e->op == OP_BITNOT;
+    case IE_BINARY: return binary_ok(e);
+    case IE_SELECT: case IE_CONSTRUCT: case IE_SWIZZLE: return true;
+    case IE_CONVERT: return hfx_type_is_numeric(e->a[0]->type);
+    case IE_INTRIN: return intrinsic_ok(e);
+    case IE_INDEX:
+        if (!numeric_base(e->type)) return false;
+        if (e->a[0]->kind == IE_VAR && param_array(c, e->a[0])) return true;
+        return e->a[1]->kind == IE_CONST && (e->a[0]->type->kind == TY_VECTOR || e->a[0]->type->kind == TY_MATRIX);
+    default: return false;
+    }
+}
+
+bool ir_pre_work(const ir_expr *e) {
+    return e->kind == IE_UNARY || e->kind == IE_BINARY || e->kind == IE_SELECT || e->kind == IE_INTRIN ||
+           (e->kind == IE_INDEX && e->a[1]->kind != IE_CONST);
+}
+
+/* ---- the program ---- */
+
+typedef struct pc {
+    ir_ctx *c;
+    uint32_t *w; uint32_t n, cap;
+    bool ok;
+} pc;
+
+static void put(pc *p, uint32_t w) {
+    if (!p->ok || !HFX_ARENA_GROW(p->c->arena, p->w, p->n, p->cap, 32)) {
+        p->ok = false;
+        return;
+    }
+    p->w[p->n++] = w;
+}
+
+static hfx_ev_base base_of(const hfx_type *t) { return hfx_base_ev(t->kind == TY_ARRAY ? t->elem->base : t->base); }
+
+static uint32_t bits(double v, hfx_ev_base b) {
+    if (b != HFX_EV_FLOAT) return (uint32_t)(int32_t)v;
+    float f = (float)v;
+    uint32_t w;
+    memcpy(&w, &f, sizeof w);
+    return w;
+}
+
+static void emit(pc *p, const ir_expr *e);
+
+static void constant(pc *p, const ir_expr *e) {
+    unsigned n = hfx_type_components(e->type);
+    hfx_ev_base b = base_of(e->type);
+    put(p, hfx_evc_word(HFX_EVC_CONST, b, n));
+    for (unsigned i = 0; i < n; i++) put(p, bits(e->cval[i], b));
+}
+
+static void param(pc *p, const ir_var *v) {
+    const hfx_fx_param *fp = &p->c->fx->params[v->param];
+    put(p, hfx_evc_word(HFX_EVC_PARAM, base_of(v->type), fp->words));
+    put(p, fp->offset);
+}
+
+/* Components of x picked by comps[0 .. n): SWIZZLE for up to 4, else SHUFFLE. */
+static void pick(pc *p, const uint8_t *comps, unsigned n) {
+    uint32_t w[2] = {0, 0};
+    for (unsigned i = 0; i < n; i++) w[i / 8] |= (uint32_t)(comps[i] & 15u) << (4 * (i % 8));
+    if (n <= 4) {
+        put(p, hfx_evc_word(HFX_EVC_SWIZZLE, n, 0));
+        put(p, w[0]);
+        return;
+    }
+    put(p, hfx_evc_word(HFX_EVC_SHUFFLE, n, 0));
+    put(p, w[0]);
+    put(p, w[1]);
+}
+
+static void convert_to(pc *p, const hfx_type *t) {
+    put(p, hfx_evc_word(HFX_EVC_CONVERT, base_of(t), hfx_type_components(t)));
+}
+
+/* (float3x3)M of a larger matrix keeps the upper-left rows and columns. */
+static void convert(pc *p, const ir_expr *e) {
+    const hfx_type *from = e->a[0]->type, *to = e->type;
+    emit(p, e->a[0]);
+    if (from->kind == TY_MATRIX && to->kind == TY_MATRIX && (from->rows != to->rows || from->cols != to->cols)) {
+        uint8_t comps[16];
+        unsigned n = 0;
+        for (unsigned r = 0; r < to->rows; r++)
+            for (unsigned k = 0; k < to->cols; k++) comps[n++] = (uint8_t)(r * from->cols + k);
+        pick(p, comps, n);
+    }
+    convert_to(p, to);
+}
+
+static void construct(pc *p, const ir_expr *e) {
+    unsigned total = 0;
+    for (uint32_t i = 0; i < e->n; i++) {
+        emit(p, e->a[i]);
+        total += hfx_type_components(e->a[i]->type);
+        if (i) put(p, hfx_evc_word(HFX_EVC_CONCAT, 0, total));
+    }
+    convert_to(p, e->type);
+}
+
+/* A vector element or a matrix row at a constant index; an element of a parameter array. */
+static void index_of(pc *p, const ir_expr *e) {
+    const hfx_fx_param *arr = param_array(p->c, e->a[0]);
+    if (arr) {
+        const hfx_fx_param *el = &p->c->fx->params[arr->first_child];
+        emit(p, e->a[1]);
+        put(p, hfx_evc_word(HFX_EVC_ELEMENT, base_of(e->type), el->words));
+        put(p, el->offset);
+        put(p, arr->elements);
+        put(p, arr->words / arr->elements);
+        return;
+    }
+    const hfx_type *t = e->a[0]->type;
+    unsigned width = t->kind == TY_MATRIX ? t->cols : 1, count = t->kind == TY_MATRIX ? t->rows : t->cols;
+    double i = e->a[1]->cval[0];
+    unsigned k = i < 0 ? 0 : i >= count ? count - 1 : (unsigned)i;
+    uint8_t comps[4];
+    for (unsigned j = 0; j < width; j++) comps[j] = (uint8_t)(k * width + j);
+    emit(p, e->a[0]);
+    pick(p, comps, width);
+}
+
+/* mul(x, y): a scalar scales; two vectors make a dot product; else rows times columns. */
+static void mul(pc *p, const ir_expr *e) {
+    const hfx_type *x = e->a[0]->type, *y = e->a[1]->type;
+    emit(p, e->a[0]);
+    emit(p, e->a[1]);
+    if (x->kind == TY_SCALAR || y->kind == TY_SCALAR) {
+        put(p, hfx_evc_word(HFX_EVC_BINARY, HFX_EV_MUL, 0));
+    } else if (x->kind == TY_VECTOR && y->kind == TY_VECTOR) {
+        put(p, hfx_evc_word(HFX_EVC_CALL, HFX_EV_FN_DOT, 0));
+    } else {
+        unsigned r = x->kind == TY_VECTOR ? 1 : x->rows, k = x->cols, cols = y->kind == TY_VECTOR ? 1 : y->cols;
+        put(p, hfx_evc_word(HFX_EVC_MATMUL, r | k << 4, cols));
+    }
+    convert_to(p, e->type);
+}
+
+static void transpose(pc *p, const ir_expr *e) {
+    const hfx_type *t = e->a[0]->type;
+    uint8_t comps[16];
+    unsigned n = 0, rows = t->kind == TY_MATRIX ? t->rows : 1, cols = t->cols;
+    for (unsigned k = 0; k < cols; k++)
+        for (unsigned r = 0; r < rows; r++) comps[n++] = (uint8_t)(r * cols + k);
+    emit(p, e->a[0]);
+    pick(p, comps, n);
+}
+
+static void intrinsic(pc *p, const ir_expr *e) {
+    if (e->intrin == HFX_INTR_MUL) { mul(p, e); return; }
+    if (e->intrin == HFX_INTR_TRANSPOSE) { transpose(p, e); return; }
+    for (uint32_t i = 0; i < e->n; i++) emit(p, e->a[i]);
+    put(p, hfx_evc_word(HFX_EVC_CALL, (uint32_t)hfx_intrinsic_info_of((int)e->intrin)->fold, 0));
+    convert_to(p, e->type); /* the checker's result type: a float function of ints stays float */
+}
+
+static void operation(pc *p, const ir_expr *e) {
+    hfx_ev_op op;
+    hfx_op_ev(e->op, &op);
+    for (uint32_t i = 0; i < e->n; i++) emit(p, e->a[i]);
+    put(p, hfx_evc_word(e->kind == IE_UNARY ? HFX_EVC_UNARY : HFX_EVC_BINARY, op, 0));
+}
+
+static void emit(pc *p, const ir_expr *e) {
+    if (!p->ok || !ir_pre_node(p->c, e)) { p->ok = false; return; }
+    switch (e->kind) {
+    case IE_CONST: constant(p, e); break;
+    case IE_VAR:
+        if (param_leaf(p->c, e->var)) param(p, e->var);
+        else p->ok = false; /* an array is only read through index_of */
+        break;
+    case IE_UNARY: case IE_BINARY: operation(p, e); break;
+    case IE_SELECT:
+        emit(p, e->a[1]);
+        emit(p, e->a[2]);
+        emit(p, e->a[0]);
+        put(p, hfx_evc_word(HFX_EVC_SELECT, 0, 0));
+        break;
+    case IE_CONSTRUCT: construct(p, e); break;
+    case IE_CONVERT: convert(p, e); break;
+    case IE_SWIZZLE: emit(p, e->a[0]); pick(p, e->comps, e->comp_count); break;
+    case IE_INDEX: index_of(p, e); break;
+    default: intrinsic(p, e); break;
+    }
+}
+
+uint32_t *ir_pre_code(ir_ctx *c, const ir_expr *e, uint32_t *words) {
+    pc p = {c, NULL, 0, 0, true};
+    emit(&p, e);
+    if (!p.ok || hfx_evc_validate(p.w, p.n, c->fx->value_words, NULL, 0) != 0) return NULL;
+    *words = p.n;
+    return p.w;
+}
+
+/* ---- the comment ---- */
+
+static const char *op_text(hfx_op op) {
+    static const char *const t[] = {
+        [OP_NEG] = "-", [OP_POS] = "+", [OP_NOT] = "!", [OP_BITNOT] = "~", [OP_ADD] = " + ", [OP_SUB] = " - ",
+        [OP_MUL] = " * ", [OP_DIV] = " / ", [OP_MOD] = " % ", [OP_SHL] = " << ", [OP_SHR] = " >> ",
+        [OP_BITAND] = " & ", [OP_BITOR] = " | ", [OP_BITXOR] = " ^ ", [OP_LT] = " < ", [OP_GT] = " > ",
+        [OP_LE] = " <= ", [OP_GE] = " >= ", [OP_EQ] = " == ", [OP_NE] = " != ", [OP_AND] = " && ", [OP_OR] = " || ",
+    };
+    return op < sizeof t / sizeof *t && t[op] ? t[op] : " ? ";
+}
+
+static void text(sbuf *b, hfx_arena *a, const ir_expr *e);
+
+static void args(sbuf *b, hfx_arena *a, const ir_expr *e) {
+    sb_put(b, "(");
+    for (uint32_t i = 0; i < e->n; i++) {
+        if (i) sb_put(b, ", ");
+        text(b, a, e->a[i]);
+    }
+    sb_put(b, ")");
+}
+
+static void constant_text(sbuf *b, hfx_arena *a, const ir_expr *e) {
+    unsigned n = hfx_type_components(e->type);
+    if (n > 1) sb_printf(b, "%s(", hfx_type_name(a, e->type));
+    for (unsigned i = 0; i < n; i++) sb_printf(b, "%s%g", i ? ", " : "", e->cval[i]);
+    if (n > 1) sb_put(b, ")");
+}
+
+static void swizzle_text(sbuf *b, const ir_expr *e) {
+    const hfx_type *t = e->a[0]->type;
+    sb_put(b, ".");
+    for (unsigned i = 0; i < e->comp_count; i++) {
+        unsigned k = e->comps[i];
+        if (t->kind == TY_MATRIX) sb_printf(b, "_m%u%u", k / t->cols, k % t->cols);
+        else sb_printf(b, "%c", "xyzw"[k & 3]);
+    }
+}
+
+static void text(sbuf *b, hfx_arena *a, const ir_expr *e) {
+    switch (e->kind) {
+    case IE_CONST: constant_text(b, a, e); return;
+    case IE_VAR: sb_put(b, e->var->name); return;
+    case IE_UNARY: sb_put(b, op_text(e->op)); text(b, a, e->a[0]); return;
+    case IE_BINARY: sb_put(b, "("); text(b, a, e->a[0]); sb_put(b, op_text(e->op)); text(b, a, e->a[1]); sb_put(b, ")"); return;
+    case IE_SELECT:
+        sb_put(b, "(");
+        text(b, a, e->a[0]); sb_put(b, " ? "); text(b, a, e->a[1]); sb_put(b, " : "); text(b, a, e->a[2]);
+        sb_put(b, ")");
+        return;
+    case IE_CONSTRUCT: sb_put(b, hfx_type_name(a, e->type)); args(b, a, e); return;
+    case IE_CONVERT: sb_printf(b, "(%s)", hfx_type_name(a, e->type)); text(b, a, e->a[0]); return;
+    case IE_SWIZZLE: text(b, a, e->a[0]); swizzle_text(b, e); return;
+    case IE_INDEX: text(b, a, e->a[0]); sb_put(b, "["); text(b, a, e->a[1]); sb_put(b, "]"); return;
+    case IE_INTRIN: sb_put(b, hfx_intrinsic_name((int)e->intrin) ? hfx_intrinsic_name((int)e->intrin) : "?"); args(b, a, e); return;
+    default: sb_put(b, "?"); return;
+    }
+}
+
+const char *ir_pre_text(ir_ctx *c, const ir_expr *e) {
+    sbuf b = {.arena = c->arena};
+    text(&b, c->arena, e);
+    return b.oom || !b.d ? "?" : b.d; /* arena text: nothing to free */
+}
