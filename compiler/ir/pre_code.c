@@ -270,11 +270,19 @@ static const char *op_text(hfx_op op) {
 
 static void text(sbuf *b, hfx_arena *a, const ir_expr *e);
 
+static void binary_text(sbuf *b, hfx_arena *a, const ir_expr *e) {
+    text(b, a, e->a[0]);
+    sb_put(b, op_text(e->op));
+    text(b, a, e->a[1]);
+}
+
+/* An argument list's commas bracket enough: a binary argument needs no parentheses. */
 static void args(sbuf *b, hfx_arena *a, const ir_expr *e) {
     sb_put(b, "(");
     for (uint32_t i = 0; i < e->n; i++) {
         if (i) sb_put(b, ", ");
-        text(b, a, e->a[i]);
+        if (e->a[i]->kind == IE_BINARY) binary_text(b, a, e->a[i]);
+        else text(b, a, e->a[i]);
     }
     sb_put(b, ")");
 }
@@ -301,7 +309,7 @@ static void text(sbuf *b, hfx_arena *a, const ir_expr *e) {
     case IE_CONST: constant_text(b, a, e); return;
     case IE_VAR: sb_put(b, e->var->name); return;
     case IE_UNARY: sb_put(b, op_text(e->op)); text(b, a, e->a[0]); return;
-    case IE_BINARY: sb_put(b, "("); text(b, a, e->a[0]); sb_put(b, op_text(e->op)); text(b, a, e->a[1]); sb_put(b, ")"); return;
+    case IE_BINARY: sb_put(b, "("); binary_text(b, a, e); sb_put(b, ")"); return;
     case IE_SELECT:
         sb_put(b, "(");
         text(b, a, e->a[0]); sb_put(b, " ? "); text(b, a, e->a[1]); sb_put(b, " : "); text(b, a, e->a[2]);

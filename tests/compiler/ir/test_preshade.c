@@ -1,0 +1,160 @@
+/* test_preshade.c: after the preshade pass, no shader of the seeds (and of fx/) keeps work a
+ * preshader could take. The test walks the IR of every pass's stages and looks, on its own, for
+ * a subexpression a preshader computes (ir_pre_node at every node), that computes (an
+ * operator, an intrinsic...), reads a parameter and gives a float value; there must be none.
+ * The GLSL names what each preshader register holds, in HLSL. */
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+#include "check/check.h"
+#include "effect/build.h"
+#include "files.h"
+#include "hfx/hfxc.h"
+#include "ir/ir.h"
+#include "parse/ast.h"
+#include "pp/token.h"
+#include "test.h"
+
+typedef struct scan {
+    ir_ctx *c;
+    unsigned left;      /* subexpressions a preshader could still take */
+    const char *where;
+} scan;
+
+enum { CAN = 1, WORK = 2, READS = 4 };
+
+static unsigned flags_of(const ir_ctx *c, const ir_expr *e) {
+    unsigned all = CAN, more = (ir_pre_work(e) ? WORK : 0) | (e->kind == IE_VAR ? READS : 0);
+    for (uint32_t i = 0; i < e->n; i++) {
+        unsigned f = flags_of(c, e->a[i]);
+        all &= f;
+        more |= f & (WORK | READS);
+    }
+    return all && ir_pre_node(c, e) ? CAN | more : 0;
+}
+
+static void look(ir_ctx *c, ir_expr **slot, void *data) {
+    scan *s = data;
+    const ir_expr *e = *slot;
+    bool floating = hfx_type_is_numeric(e->type) && (e->type->base == B_FLOAT || e->type->base == B_HALF);
+    if (floating && flags_of(c, e) == (CAN | WORK | READS)) {
+        fprintf(stderr, "  %s: left in the shader: %s\n", s->where, ir_pre_text(c, e));
+        s->left++;
+    }
+}
+
+/* The IR of one compile expression, lowered and preshaded, scanned. */
+static unsigned stage_left(ir_ctx *c, const hfx_expr *compile, ir_stage st, const char *where, uint32_t *pres) {
+    ir_shader *sh = ir_build(c, compile, st);
+    if (!sh || ir_lower(c, sh) != 0) return 1;
+    ir_pass_preshade(c, sh);
+    *pres += sh->pre_count;
+    scan s = {c, 0, where};
+    for (uint32_t i = 0; i < sh->func_count; i++) ir_walk_stmt_exprs(c, sh->funcs[i]->body, look, &s);
+    return s.left;
+}
+
+/* Every pass's shaders of the effect in path; *pres counts the preshaders made. */
+static unsigned effect_left(const char *path, uint32_t *pres) {
+    size_t size = 0;
+    char *src = test_read_file(path, &size);
+    if (!src) return 1;
+    hfx_arena arena;
+    hfx_diags diags;
+    hfx_arena_init(&arena);
+    hfx_diags_init(&diags, &arena, HFXC_PACK_UNIFORMS);
+    hfx_types *types = hfx_types_new(&arena);
+    hfx_pp_options pp;
+    memset(&pp, 0, sizeof pp);
+    hfx_token *toks = hfx_preprocess(&arena, &diags, path, src, (uint32_t)size, &pp);
+    hfx_ast *ast = hfx_parse(&arena, &diags, types, toks);
+    unsigned left = 0;
+    hfx_fx_effect *fx = diags.errors == 0 && hfx_check(&arena, &diags, types, ast)
+                            ? hfx_build_effect(&arena, &diags, types, ast, path, 1u << HFX_TARGET_GLSL330) : NULL;
+    ir_ctx c = {&arena, &diags, types, ast, fx};
+    for (uint32_t d = 0; fx && d < ast->decl_count; d++) {
+        const hfx_technique_ast *t = ast->decls[d]->kind == DECL_TECHNIQUE ? ast->decls[d]->technique : NULL;
+        for (uint32_t p = 0; t && p < t->pass_count; p++)
+            for (uint32_t k = 0; k < t->passes[p].state_count; k++) {
+                const hfx_state_assign *a = &t->passes[p].states[k];
+                bool vs = strcasecmp(a->name, "VertexShader") == 0, ps = strcasecmp(a->name, "PixelShader") == 0;
+                if ((vs || ps) && a->value && a->value->kind == EX_COMPILE)
+                    left += stage_left(&c, a->value, vs ? IR_VERTEX : IR_PIXEL, path, pres);
+            }
+    }
+    if (!fx) left++, fprintf(stderr, "  %s did not compile\n", path);
+    hfx_fx_effect_free(fx);
+    hfx_arena_free(&arena);
+    free(src);
+    return left;
+}
+
+static const char *const seeds[] = {
+    "ambient.fx", "ambient_textured.fx", "directional.fx", "directional_specular.fx", "fxcomposer_empty.fx",
+    "multilights_repaired.fx", "phong.fx", "point.fx", "point_specular.fx", "pointlights.fx", "spot.fx",
+    "spot_specular.fx", "tutorial0.fx",
+};
+
+/* The seeds that transform by a product of their World, View and Projection matrices have a
+ * preshader; tutorial0.fx multiplies the position by each in turn (no parameter-only part, as
+ * fxc would find none) and the FX Composer one is empty. */
+static void seeds_keep_nothing(void) {
+    test_require_seeds();
+    for (size_t i = 0; i < sizeof seeds / sizeof *seeds; i++) {
+        char *path = test_seed_path(seeds[i]);
+        uint32_t pres = 0;
+        CHECK_INT(effect_left(path, &pres), 0);
+        bool none = strcmp(seeds[i], "fxcomposer_empty.fx") == 0 || strcmp(seeds[i], "tutorial0.fx") == 0;
+        if (none != (pres == 0)) fprintf(stderr, "  %s: %u preshaders\n", seeds[i], (unsigned)pres);
+        CHECK(none == (pres == 0));
+        free(path);
+    }
+}
+
+static void project_effects_keep_nothing(void) {
+    static const char *const mine[] = {"ambient.fx", "basic_lighting.fx", "directional.fx", "multipass.fx", "point.fx",
+                                       "point_lights.fx", "sas_blinn.fx", "shading_models.fx", "spot.fx", "textured.fx"};
+    for (size_t i = 0; i < sizeof mine / sizeof *mine; i++) {
+        char path[512];
+        snprintf(path, sizeof path, "%s/fx/%s", HFX_SOURCE_DIR, mine[i]);
+        uint32_t pres = 0;
+        CHECK_INT(effect_left(path, &pres), 0);
+    }
+}
+
+/* spot_specular.fx: the vertex shader's mul(world, mul(view, projection)) and the pixel
+ * shader's normalize(posicionLuz - blancoLuz), cos(anguloInterno) and cos(anguloExterno). The
+ * program's parameters take registers 0..15 (world 4, then twelve scalars and vectors), so the
+ * preshaders follow from 16: the matrix 16..19, then the pixel stage's 20, 21, 22. */
+static void the_glsl_says_what_a_register_holds(void) {
+    test_require_seeds();
+    char *path = test_seed_path("spot_specular.fx");
+    hfxc_options o = {0};
+    o.targets = 1u << HFX_TARGET_GLSL330;
+    o.flags = HFXC_PACK_UNIFORMS | HFXC_NO_WARNINGS;
+    hfxc_result *r = hfxc_compile_file(path, &o);
+    const hfx_fx_effect *fx = hfxc_result_effect(r);
+    CHECK(fx != NULL);
+    if (fx) {
+        const char *vs = fx->programs[0].code[HFX_STAGE_VERTEX][HFX_TARGET_GLSL330].data;
+        const char *ps = fx->programs[0].code[HFX_STAGE_FRAGMENT][HFX_TARGET_GLSL330].data;
+        CHECK_CONTAINS(vs, "mat4 hfx_pre0; // hfx_c[16..19] = mul(world, mul(view, projection)), computed on the CPU (a preshader)\n");
+        CHECK_CONTAINS(vs, "    hfx_pre0 = mat4(hfx_c[16], hfx_c[17], hfx_c[18], hfx_c[19]);\n");
+        CHECK_CONTAINS(vs, "    mat4 mvp = hfx_pre0;\n");
+        CHECK_CONTAINS(ps, "vec3 hfx_pre0; // hfx_c[20] = normalize(posicionLuz - blancoLuz), computed on the CPU (a preshader)\n");
+        CHECK_CONTAINS(ps, "float hfx_pre1; // hfx_c[21] = cos(anguloInterno), computed on the CPU (a preshader)\n");
+        CHECK_CONTAINS(ps, "float hfx_pre2; // hfx_c[22] = cos(anguloExterno), computed on the CPU (a preshader)\n");
+        CHECK_INT(fx->programs[0].reg_count, 23);
+        CHECK_INT(fx->programs[0].preshader_count, 4);
+    }
+    hfxc_result_free(r);
+    free(path);
+}
+
+int main(void) {
+    RUN(seeds_keep_nothing);
+    RUN(project_effects_keep_nothing);
+    RUN(the_glsl_says_what_a_register_holds);
+    return test_summary();
+}
