@@ -5,7 +5,8 @@
  *   vertex-bound: the same plane as a 1001 x 1001 grid (2 M triangles) at 256 x 256.
  * Each case also compares the two pictures (largest channel difference, /255): a ratio only
  * counts when they agree (BENCH_GPU_PNG=1 writes the last pair to /tmp). Prints frame times and
- * the ratio hfx / hand-written. Covered: the 003 tutorial's effects (ambient, ambient_textured,
+ * the ratio hfx / hand-written, for hfx with its preshaders (the default) and without them
+ * (HFX load option no_preshaders: the "before" of issue 14) in the same run. Covered: the 003 tutorial's effects (ambient, ambient_textured,
  * directional, point and spot, with and without specular, both techniques; specular and
  * distance attenuation on), tutorial0, fxcomposer_empty, phong and pointlights (eight lights).
  * Not yet: multilights_repaired (two passes blended by the application). Run by hand:
@@ -509,42 +510,67 @@ static int picture_difference(hfx_device *dev, side *a, side *b, const mesh *m, 
     return worst;
 }
 
+/* One effect's side: loaded with or without preshaders, its parameters set. */
+static side effect_side(hfx_device *dev, const bench_case *c, const char *path, int preshaders, const scene *s,
+                        GLuint texture) {
+    hfx_load_options opt = {0};
+    opt.no_preshaders = !preshaders;
+    char *errors = NULL;
+    side sd = {hfx_effect_load(dev, path, &opt, &errors), NULL, 0, 0};
+    if (!sd.fx) printf("%-18s %-15s did not load: %s\n", c->file, c->technique, errors ? errors : "");
+    hfx_free(errors);
+    if (!sd.fx) return sd;
+    set_effect_params(sd.fx, s, texture);
+    sd.pass = hfx_technique_pass(hfx_effect_technique(sd.fx, c->technique), 0);
+    return sd;
+}
+
+static GLuint effect_vao(const side *sd, const mesh *m) {
+    return bind_mesh(m, hfx_pass_attribute_location(sd->pass, "POSITION"), hfx_pass_attribute_location(sd->pass, "NORMAL"),
+                     hfx_pass_attribute_location(sd->pass, "TEXCOORD0"));
+}
+
+/* Best frame time of each side, the sides taking turns. */
+static void best_times(hfx_device *dev, side *const *sides, int n, const mesh *m, int rounds, double *best) {
+    for (int k = 0; k < n; k++) best[k] = 1e9;
+    for (int i = 0; i < rounds; i++)
+        for (int k = 0; k < n; k++) {
+            double t = frame_time(dev, sides[k], m, 2);
+            if (t < best[k]) best[k] = t;
+        }
+}
+
 static void run_case(hfx_device *dev, const bench_case *c, const mesh *quad, const mesh *grid, const GLuint textures[2],
                      int rounds) {
     GLuint texture = textures[c->clamp];
     char path[1024];
     snprintf(path, sizeof path, "%s/%s", HFX_SEED_DIR, c->file);
-    char *errors = NULL;
-    hfx_effect *fx = hfx_effect_load(dev, path, NULL, &errors);
-    if (!fx) { printf("%-18s %-15s did not load: %s\n", c->file, c->technique, errors ? errors : ""); hfx_free(errors); return; }
-    hfx_free(errors);
     scene s = make_scene();
-    set_effect_params(fx, &s, texture);
-    side h = {fx, hfx_technique_pass(hfx_effect_technique(fx, c->technique), 0), 0, 0};
+    side h = effect_side(dev, c, path, 1, &s, texture), h0 = effect_side(dev, c, path, 0, &s, texture);
+    if (!h.fx || !h0.fx) { hfx_effect_destroy(h.fx); hfx_effect_destroy(h0.fx); return; }
     int ambient = c->fs == hand_ambient_fs;
     side r = {NULL, NULL, hand_program(ambient ? hand_ambient_vs : hand_vs, c->fs, c->fs_defines), 0};
     const struct { const char *name; const mesh *m; int size; } shapes[2] = {{"pixel", quad, BIG}, {"vertex", grid, SMALL}};
     for (int k = 0; k < 2; k++) {
         const mesh *m = shapes[k].m;
-        h.vao = bind_mesh(m, hfx_pass_attribute_location(h.pass, "POSITION"), hfx_pass_attribute_location(h.pass, "NORMAL"),
-                          hfx_pass_attribute_location(h.pass, "TEXCOORD0"));
+        h.vao = effect_vao(&h, m);
+        h0.vao = effect_vao(&h0, m);
         r.vao = bind_mesh(m, 0, ambient ? -1 : 1, ambient ? -1 : 2);
         hfx_device_set_viewport(dev, 0, 0, shapes[k].size, shapes[k].size);
         set_hand_uniforms(r.program, &s, texture, shapes[k].size);
         int diff = picture_difference(dev, &h, &r, m, shapes[k].size, shapes[k].size);
-        double best_h = 1e9, best_r = 1e9;
-        for (int i = 0; i < rounds; i++) {
-            double th = frame_time(dev, &h, m, 2), tr = frame_time(dev, &r, m, 2);
-            if (th < best_h) best_h = th;
-            if (tr < best_r) best_r = tr;
-        }
-        printf("%-18s %-15s %-6s %9.2f %9.2f %7.2fx %5d/255\n", c->file, c->technique, shapes[k].name, best_h * 1e3,
-               best_r * 1e3, best_h / best_r, diff);
+        side *sides[3] = {&h, &h0, &r};
+        double best[3];
+        best_times(dev, sides, 3, m, rounds, best);
+        printf("%-18s %-15s %-6s %9.2f %9.2f %9.2f %7.2fx %7.2fx %5d/255\n", c->file, c->technique, shapes[k].name,
+               best[0] * 1e3, best[1] * 1e3, best[2] * 1e3, best[0] / best[2], best[1] / best[2], diff);
         f.DeleteVertexArrays(1, &h.vao);
+        f.DeleteVertexArrays(1, &h0.vao);
         f.DeleteVertexArrays(1, &r.vao);
     }
     f.DeleteProgram(r.program);
-    hfx_effect_destroy(fx);
+    hfx_effect_destroy(h.fx);
+    hfx_effect_destroy(h0.fx);
 }
 
 int main(int argc, char **argv) {
@@ -558,8 +584,10 @@ int main(int argc, char **argv) {
     mesh quad = make_grid(2, 2.0f), grid = make_grid(GRID, 2.0f);
     GLuint textures[2] = {make_texture(GL_REPEAT), make_texture(GL_CLAMP_TO_EDGE)};
     f.ClearColor(0, 0, 0, 1);
-    printf("llvmpipe, ms per frame, best of %d; ratio = hfx / hand-written; diff = largest channel difference\n", rounds);
-    printf("%-18s %-15s %-6s %9s %9s %8s %9s\n", "effect", "technique", "case", "hfx", "hand", "ratio", "diff");
+    printf("llvmpipe, ms per frame, best of %d; hfx with preshaders, without, hand-written; ratios to hand-written;\n"
+           "diff = largest channel difference of hfx (with) against hand-written\n", rounds);
+    printf("%-18s %-15s %-6s %9s %9s %9s %8s %8s %9s\n", "effect", "technique", "case", "hfx", "hfx-nopre", "hand", "ratio",
+           "nopre", "diff");
     for (int i = 0; i < CASES; i++) run_case(dev, &cases[i], &quad, &grid, textures, rounds);
     hfx_device_destroy(dev);
     test_gl_destroy(gl);

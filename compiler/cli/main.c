@@ -27,6 +27,8 @@ static const char usage_text[] =
     "  --ast                 print the syntax tree and stop\n"
     "  --separate-uniforms   one GLSL uniform per parameter; by default float parameters\n"
     "                        share one vec4 array per program (D3D9 registers, one upload)\n"
+    "  --no-preshaders       keep work on parameters alone in the shaders; by default it runs\n"
+    "                        on the CPU once per change, as fxc's preshaders (packed registers only)\n"
     "  --werror, /WX         treat warnings as errors\n"
     "  --no-warnings         drop warnings\n"
     "  --no-self-check       do not check the emitted GLSL with glslang (faster; by default a\n"
@@ -135,6 +137,7 @@ static int flag(cli_options *o, const char *a, bool *handled) {
     else if (!strcmp(a, "--werror") || !strcmp(a, "/WX") || !strcmp(a, "-WX")) o->werror = true;
     else if (!strcmp(a, "--no-warnings")) o->no_warnings = true;
     else if (!strcmp(a, "--no-self-check")) o->no_self_check = true;
+    else if (!strcmp(a, "--no-preshaders")) o->no_preshaders = true;
     else if (!strcmp(a, "--pack-uniforms")) o->pack_uniforms = true; /* the default; kept for scripts */
     else if (!strcmp(a, "--separate-uniforms")) o->pack_uniforms = false;
     else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) o->quiet = true;

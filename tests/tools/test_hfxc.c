@@ -237,6 +237,23 @@ static void emit_glsl_writes_each_stage(void) {
     free(seed);
 }
 
+/* spot_specular.fx's vertex shader: its world-view-projection product is a preshader, named in
+ * a comment; --no-preshaders keeps the product in the shader. */
+static void emit_glsl_shows_preshaders(void) {
+    char *seed = test_seed_path("spot_specular.fx");
+    for (int off = 0; off < 2; off++) {
+        EXPECT_STATUS(0, "%s--emit-glsl '%s/pre%d' '%s'", off ? "--no-preshaders " : "", tmp, off, seed);
+        char path[2048];
+        snprintf(path, sizeof path, "%s/pre%d/spot_specular.Material.P0.vert", tmp, off);
+        char *text = test_read_file(path, NULL);
+        CHECK(text != NULL);
+        if (text && !off) CHECK_CONTAINS(text, "= mul(world, mul(view, projection)), computed on the CPU (a preshader)\n");
+        if (text && off) CHECK(strstr(text, "hfx_pre") == NULL && strstr(text, "mat4 mvp = projection * view * world;") != NULL);
+        free(text);
+    }
+    free(seed);
+}
+
 static void one_entry_point(void) {
     char *seed = test_seed_path("ambient.fx");
     hfx_fx_effect *fx = compile_to("/T ps_3_0 /E mainPS /Fo", "entry.hfxo", seed);
@@ -528,6 +545,7 @@ int main(void) {
     RUN(bad_usage_is_one_line);
     RUN(many_files_in_one_call);
     RUN(emit_glsl_writes_each_stage);
+    RUN(emit_glsl_shows_preshaders);
     RUN(one_entry_point);
     RUN(defines_and_include_dirs);
     RUN(ast_werror_and_targets);
