@@ -319,9 +319,39 @@ static void d3d_log2(gp *p, const ir_expr *x) {
     sb_put(p->out, ")), -3.40282347e+38)");
 }
 
+/* A constant exponent 1..4 in every component, else 0. */
+static int small_power(const ir_expr *y) {
+    if (y->kind != IE_CONST || !hfx_type_is_numeric(y->type)) return 0;
+    double k = y->cval[0];
+    for (unsigned i = 1; i < hfx_type_components(y->type); i++)
+        if (y->cval[i] != k) return 0;
+    return k == 1 || k == 2 || k == 3 || k == 4 ? (int)k : 0;
+}
+
+/* An operand cheap to repeat: a variable, or a swizzle or member of one. */
+static bool repeatable(const ir_expr *x) {
+    while (x->kind == IE_SWIZZLE || x->kind == IE_FIELD) x = x->a[0];
+    return x->kind == IE_VAR;
+}
+
+/* |x|^k as products, as fxc expands a small constant power: x * x for 2, x * x * x * x for 4
+ * (even powers need no abs), abs(x) times the even part for 1 and 3. */
+static void power_by_products(gp *p, const ir_expr *x, int k, int max) {
+    wrap_open(p, PREC_MUL, max);
+    for (int i = 0; i < k; i++) {
+        if (i) sb_put(p->out, " * ");
+        bool odd_first = (k & 1) && i == 0;
+        if (odd_first) sb_put(p->out, "abs(");
+        glsl_expr(p, x, odd_first ? PREC_ASSIGN : PREC_MUL);
+        if (odd_first) sb_put(p->out, ")");
+    }
+    wrap_close(p, PREC_MUL, max);
+}
+
 /* pow(x, y) is exp(y * log(x)) with D3D9's log: |x|, and pow(0, 0) = 1, pow(0, y > 0) = 0. */
 static void lower_pow(gp *p, const ir_expr *e, int max) {
-    (void)max;
+    int k = small_power(e->a[1]);
+    if (k && repeatable(e->a[0])) { power_by_products(p, e->a[0], k, max); return; }
     sb_put(p->out, "exp2(");
     glsl_expr(p, e->a[1], PREC_MUL);
     sb_put(p->out, " * ");

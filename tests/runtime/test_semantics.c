@@ -3,8 +3,10 @@
  * gives for it, derived by hand from Microsoft's documentation (the table says how where it is
  * not obvious). The row is compiled twice: once with the inputs A, B, I, M as parameters set
  * through the runtime (the GPU computes), once with the same values as static consts (the
- * compiler may fold), and a third time in the vertex shader (rows that only a pixel shader can
- * run excepted): all must give the documented value. Rows that expect an error name the
+ * compiler may fold), a third time in the vertex shader (rows that only a pixel shader can
+ * run excepted), and a fourth with the parameters again but preshaders on (work on parameters
+ * alone runs on the CPU through common/eval_code; the first run keeps it on the GPU): all must
+ * give the documented value. Rows that expect an error name the
  * fxc code that the compile must report. The format is described in semantics/README. */
 #include <GL/glcorearb.h>
 #include <dirent.h>
@@ -32,8 +34,9 @@ typedef struct row {
     int modes;                         /* MODE_UNIFORM | MODE_CONST | MODE_VERTEX */
 } row;
 
-/* MODE_VERTEX: the row in the vertex shader (parameters), its R passed on flat to the pixel shader. */
-enum { MODE_UNIFORM = 1, MODE_CONST = 2, MODE_VERTEX = 4 };
+/* MODE_VERTEX: the row in the vertex shader (parameters), its R passed on flat to the pixel shader.
+ * MODE_UNIFORM runs without preshaders (the GPU computes); MODE_PRESHADER with them. */
+enum { MODE_UNIFORM = 1, MODE_CONST = 2, MODE_VERTEX = 4, MODE_PRESHADER = 8 };
 
 static int count_of(const char *s, const char *word) {
     int n = 0;
@@ -57,7 +60,7 @@ typedef struct runner {
     GLuint fbo, target, quad, quad_buffer;
     GLuint tex2d, texcube, tex3d, tex1d; /* the textures of T2, TC, T3 and T1D (see README) */
     int rows, failures;
-    int runs[3];                    /* per mode: parameters, static const, vertex shader */
+    int runs[4];                    /* per mode: parameters, static const, vertex shader, preshaders */
 } runner;
 
 /* The inputs every row may read; values chosen so that no two components are equal and signs vary. */
@@ -110,7 +113,7 @@ static int parse_expect(row *r, char *s) {
     char *comment = strstr(s, "//");
     if (comment) *comment = 0;
     r->tol = 1e-5;
-    r->modes = MODE_UNIFORM | MODE_CONST | MODE_VERTEX;
+    r->modes = MODE_UNIFORM | MODE_CONST | MODE_VERTEX | MODE_PRESHADER;
     for (char *tok = strtok(s, " \t"); tok; tok = strtok(NULL, " \t")) {
         if (strcmp(tok, "error") == 0) {
             char *code = strtok(NULL, " \t");
@@ -119,7 +122,7 @@ static int parse_expect(row *r, char *s) {
         } else if (tok[0] == '~') {
             r->tol = strtod(tok + 1, NULL);
         } else if (strcmp(tok, "@u") == 0) {
-            r->modes = MODE_UNIFORM | MODE_VERTEX;
+            r->modes = MODE_UNIFORM | MODE_VERTEX | MODE_PRESHADER;
         } else if (strcmp(tok, "@c") == 0) {
             r->modes = MODE_CONST;
         } else {
@@ -201,7 +204,8 @@ static int near(double got, double want, int any, double tol) {
 
 static void report(const row *r, int mode, const char *what, const char *src) {
     fprintf(stderr, "%s:%d: [%s] %s: %s\n%s", r->file, r->line,
-            mode == MODE_UNIFORM ? "parameters" : mode == MODE_CONST ? "static const" : "vertex shader",
+            mode == MODE_UNIFORM ? "parameters" : mode == MODE_CONST ? "static const"
+            : mode == MODE_VERTEX ? "vertex shader" : "preshaders",
             r->body, what, getenv("HFX_SEMANTICS_VERBOSE") ? src : "");
 }
 
@@ -244,7 +248,9 @@ static int check_error(const row *r, int mode, hfx_effect *fx, const char *error
 
 static int run_mode(runner *t, const row *r, int mode) {
     char *src = row_source(r, mode), *errors = NULL;
-    hfx_effect *fx = hfx_effect_load_memory(t->dev, src, strlen(src), "row.fx", NULL, &errors);
+    hfx_load_options opt = {0};
+    opt.no_preshaders = mode != MODE_PRESHADER;
+    hfx_effect *fx = hfx_effect_load_memory(t->dev, src, strlen(src), "row.fx", &opt, &errors);
     int ok;
     float px[4] = {0};
     if (r->error[0]) ok = check_error(r, mode, fx, errors, src);
@@ -259,8 +265,8 @@ static int run_mode(runner *t, const row *r, int mode) {
 
 static void run_row(runner *t, row *r) {
     int ok = 1;
-    for (int mode = MODE_UNIFORM; mode <= MODE_VERTEX; mode <<= 1)
-        if (r->modes & mode) ok &= run_mode(t, r, mode), t->runs[mode == MODE_UNIFORM ? 0 : mode == MODE_CONST ? 1 : 2]++;
+    for (int mode = MODE_UNIFORM, k = 0; mode <= MODE_PRESHADER; mode <<= 1, k++)
+        if (r->modes & mode) ok &= run_mode(t, r, mode), t->runs[k]++;
     t->rows++;
     if (!ok) t->failures++;
 }
@@ -368,8 +374,8 @@ static void semantics_tables(runner *t) {
         free(names[i]);
     }
     free(names);
-    printf("%d rows, %d failed (runs: %d with parameters, %d with static consts, %d in the vertex shader)\n", t->rows,
-           t->failures, t->runs[0], t->runs[1], t->runs[2]);
+    printf("%d rows, %d failed (runs: %d with parameters, %d with static consts, %d in the vertex shader, %d with "
+           "preshaders)\n", t->rows, t->failures, t->runs[0], t->runs[1], t->runs[2], t->runs[3]);
     CHECK_INT(t->failures, 0);
 }
 
