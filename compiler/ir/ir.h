@@ -46,6 +46,7 @@ struct ir_var {
     hfx_dim dim;             /* SAMPLER: dimension as sampled */
     bool written, used;      /* set by lower/uses.c */
     bool hoisted;            /* for-init variable used after its loop: declared before it */
+    bool written_early;      /* lower/preshade.c, while it walks the entry's first statements */
     ir_expr *konst;          /* const variable whose initialiser folded to a constant (fold.c) */
     ir_expr *bound;          /* PARAM of the entry bound by a compile argument (specialise) */
     /* A preshader (lower/preshade.c): the uniform-only expression this private global holds,

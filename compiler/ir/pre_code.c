@@ -12,9 +12,11 @@
 
 static bool numeric_base(const hfx_type *t) { return hfx_type_is_numeric(t) && t->base != B_UINT && t->base < B_NONE; }
 
-/* A parameter read whole (PARAM): a numeric non-array top-level parameter the stage only reads. */
+/* A parameter read whole (PARAM): a numeric non-array top-level parameter. (A uniform the
+ * stage writes is read through its private copy, so a read of the uniform itself is the
+ * parameter.) */
 static bool param_leaf(const ir_ctx *c, const ir_var *v) {
-    if (v->kind != IRV_UNIFORM || v->priv || v->param == HFX_NONE || v->param >= c->fx->param_count) return false;
+    if (v->kind != IRV_UNIFORM || v->param == HFX_NONE || v->param >= c->fx->param_count) return false;
     const hfx_fx_param *p = &c->fx->params[v->param];
     bool numeric = p->klass == HFX_CLASS_SCALAR || p->klass == HFX_CLASS_VECTOR || p->klass == HFX_CLASS_MATRIX;
     return numeric && !p->elements && p->words && p->words <= HFX_EV_MAX_COMPONENTS && numeric_base(v->type) &&
@@ -23,7 +25,7 @@ static bool param_leaf(const ir_ctx *c, const ir_var *v) {
 
 /* A parameter array of numeric elements (ELEMENT), read at an index. */
 static const hfx_fx_param *param_array(const ir_ctx *c, const ir_expr *e) {
-    if (e->kind != IE_VAR || e->var->kind != IRV_UNIFORM || e->var->priv || e->var->param >= c->fx->param_count) return NULL;
+    if (e->kind != IE_VAR || e->var->kind != IRV_UNIFORM || e->var->param >= c->fx->param_count) return NULL;
     const hfx_fx_param *p = &c->fx->params[e->var->param];
     if (!p->elements || p->first_child == HFX_NONE || e->type->kind != TY_ARRAY || !numeric_base(e->type->elem)) return NULL;
     const hfx_fx_param *el = &c->fx->params[p->first_child];

@@ -105,6 +105,32 @@ static void root(ir_ctx *c, ir_expr **slot, void *data) {
     if (visit(p, slot, 0) == HOIST && !hoist(p, slot)) hoist_parts(p, *slot, NULL, 0);
 }
 
+/* e with every read of a private copy in `fresh` (not yet written by the entry) read from its
+ * uniform instead: what the copy still holds. */
+static void read_uniforms(ir_ctx *c, ir_expr **slot, void *data) {
+    (void)c;
+    (void)data;
+    ir_expr *e = *slot;
+    if (e->kind == IE_VAR && e->var->copy_of && !e->var->written_early) e->var = e->var->copy_of;
+}
+
+/* `Light = normalize(Light);` at the top of the entry, on a parameter the shader writes (its
+ * private copy): the copy still holds the parameter there, so the right side is parameter-only
+ * work too. Such assignments, in order until another statement, read a preshader. */
+static void entry_assignments(pre *p) {
+    ir_stmt *body = p->sh->entry->body;
+    for (uint32_t i = 0; body && body->kind == IS_BLOCK && i < body->count; i++) {
+        ir_stmt *s = body->body[i];
+        ir_expr *e = s->kind == IS_EXPR ? s->expr : NULL;
+        if (!e || e->kind != IE_ASSIGN || e->op != OP_NONE || e->a[0]->kind != IE_VAR || !e->a[0]->var->copy_of) break;
+        ir_expr *value = ir_clone_expr(p->c, e->a[1]);
+        ir_walk_expr(p->c, &value, read_uniforms, NULL);
+        if (visit(p, &value, 0) == HOIST && hoist(p, &value)) e->a[1] = value;
+        e->a[0]->var->written_early = true;
+    }
+    for (uint32_t i = 0; i < p->sh->global_count; i++) p->sh->globals[i]->written_early = false;
+}
+
 static uint32_t parameter_regs(const ir_ctx *c, const ir_shader *sh) {
     uint32_t n = 0;
     for (uint32_t i = 0; i < sh->global_count; i++) {
@@ -116,6 +142,7 @@ static uint32_t parameter_regs(const ir_ctx *c, const ir_shader *sh) {
 
 void ir_pass_preshade(ir_ctx *c, ir_shader *sh) {
     pre p = {c, sh, parameter_regs(c, sh)};
+    entry_assignments(&p);
     for (uint32_t i = 0; i < sh->func_count; i++) ir_walk_stmt_roots(c, sh->funcs[i]->body, root, &p);
     for (uint32_t i = 0; i < sh->global_count; i++)
         if (sh->globals[i]->kind == IRV_PRIVATE && sh->globals[i]->init) root(c, &sh->globals[i]->init, &p);

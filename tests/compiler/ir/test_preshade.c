@@ -152,9 +152,39 @@ static void the_glsl_says_what_a_register_holds(void) {
     free(path);
 }
 
+/* `L = normalize(L);` first thing in the entry: the private copy still holds the parameter, so
+ * the right side is a preshader; after a statement that is not such an assignment it is not
+ * (the copy may have changed; here the second assignment reads a varying anyway). */
+static void a_parameter_normalised_in_place(void) {
+    static const char src[] =
+        "float3 L; float3 K;\n"
+        "float4 PS(float3 n : TEXCOORD0) : COLOR0 {\n"
+        "    L = normalize(L);\n"
+        "    float d = dot(L, n);\n"
+        "    K = normalize(K + n);\n"
+        "    return float4(d, K);\n"
+        "}\n"
+        "technique T { pass P { PixelShader = compile ps_3_0 PS(); } }\n";
+    hfxc_options o = {0};
+    o.targets = 1u << HFX_TARGET_GLSL330;
+    o.flags = HFXC_PACK_UNIFORMS;
+    hfxc_result *r = hfxc_compile_memory(src, strlen(src), "in_place.fx", &o);
+    const hfx_fx_effect *fx = hfxc_result_effect(r);
+    CHECK(fx != NULL);
+    if (fx) {
+        const char *ps = fx->programs[0].code[HFX_STAGE_FRAGMENT][HFX_TARGET_GLSL330].data;
+        CHECK_CONTAINS(ps, "vec3 hfx_pre0; // hfx_c[2] = normalize(L), computed on the CPU (a preshader)\n");
+        CHECK_CONTAINS(ps, "    hfx_priv_L = hfx_pre0;\n");
+        CHECK_CONTAINS(ps, "    hfx_priv_K = normalize(hfx_priv_K + n);\n");
+        CHECK_INT(fx->programs[0].preshader_count, 1);
+    }
+    hfxc_result_free(r);
+}
+
 int main(void) {
     RUN(seeds_keep_nothing);
     RUN(project_effects_keep_nothing);
     RUN(the_glsl_says_what_a_register_holds);
+    RUN(a_parameter_normalised_in_place);
     return test_summary();
 }
