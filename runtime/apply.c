@@ -201,8 +201,7 @@ int hfx_pass_apply(hfx_pass *p) {
     /* one change since the last Apply (a per-object World, say): no loop, no saved registers */
     uint32_t r = fx->log[seen & fx->log_mask];
     hfx_slot *s = &prog->slots[r];
-    if (s->held == fx->stamps[r] || (s->mode != SLOT_FLOAT && s->mode != SLOT_REG) || s->pre_count)
-        return hfx_rt_upload_log(fx, prog);
+    if (s->held == fx->stamps[r] || (s->mode != SLOT_FLOAT && s->mode != SLOT_REG)) return hfx_rt_upload_log(fx, prog);
     prog->memo_seen = seen + 1;
     s->held = fx->stamps[r];
     if (s->mode == SLOT_REG) return upload_one_reg(fx, prog, s);

@@ -148,7 +148,9 @@ enum { /* hfx_slot.mode */
     SLOT_FLOAT,  /* one UK_FLOAT upload: slot.up */
     SLOT_MATRIX, /* one UK_MATRIX upload: slot.up */
     SLOT_OTHER,  /* uploads[first .. first + count) */
-    SLOT_REG     /* packed into the program's registers (hfx_c): reg, reg_rows, reg_cols, up.offset */
+    SLOT_REG,    /* packed into the program's registers (hfx_c): reg, reg_rows, reg_cols, up.offset */
+    SLOT_REG_PRE,/* the same, and read by preshaders (pre_count): off Apply's one-change path */
+    SLOT_PRE     /* read by preshaders alone */
 };
 
 /* Per program, per top-level parameter (one more for parameters outside any): its uploads and

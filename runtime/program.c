@@ -289,9 +289,13 @@ void hfx_rt_program_ready(hfx_rt_program *p, uint32_t tops) {
     for (uint32_t i = 0; i < tops; i++) {
         hfx_slot *slot = &p->slots[i];
         slot->held = 0; /* GL holds no value yet */
-        if (!slot->count || slot->mode == SLOT_REG) continue;
+        if (slot->mode == SLOT_REG || !slot->count) {
+            /* preshaders read it: the paths that look at pre_count */
+            if (slot->pre_count) slot->mode = slot->mode == SLOT_REG ? SLOT_REG_PRE : SLOT_PRE;
+            continue;
+        }
         slot->up = p->uploads[slot->first];
-        slot->mode = slot->count > 1 ? SLOT_OTHER : slot->up.kind == UK_FLOAT ? SLOT_FLOAT
+        slot->mode = slot->count > 1 || slot->pre_count ? SLOT_OTHER : slot->up.kind == UK_FLOAT ? SLOT_FLOAT
                    : slot->up.kind == UK_MATRIX ? SLOT_MATRIX : SLOT_OTHER;
     }
     p->alpha_test = p->alpha_func_loc >= 0 || p->alpha_ref_loc >= 0;
@@ -433,7 +437,7 @@ void hfx_rt_upload_all(hfx_effect *fx, hfx_rt_program *p) {
         hfx_slot *s = &p->slots[r];
         if (s->held == fx->stamps[r]) continue;
         s->held = fx->stamps[r];
-        if (s->mode == SLOT_REG) hfx_rt_reg_copy(p, s, fx->values, &regs);
+        if (s->mode == SLOT_REG || s->mode == SLOT_REG_PRE) hfx_rt_reg_copy(p, s, fx->values, &regs);
         else hfx_rt_upload_slot(fx, p, s);
         if (s->pre_count) hfx_rt_preshaders_mark(p, s);
     }
@@ -446,6 +450,13 @@ void hfx_rt_upload_all(hfx_effect *fx, hfx_rt_program *p) {
 /* All the uploads of one parameter (one per leaf of a struct). */
 void hfx_rt_upload_slot(hfx_effect *fx, const hfx_rt_program *p, const hfx_slot *s) {
     for (uint32_t k = 0; k < s->count; k++) hfx_rt_upload_slow(fx->dev, &p->uploads[s->first + k], fx->values);
+}
+
+/* The rarer slots: several uploads, or preshaders reading the parameter. */
+static void upload_other(hfx_effect *fx, hfx_rt_program *p, const hfx_slot *s, hfx_reg_range *regs) {
+    if (s->mode == SLOT_OTHER) hfx_rt_upload_slot(fx, p, s);
+    else if (s->mode == SLOT_REG_PRE) hfx_rt_reg_copy(p, s, fx->values, regs);
+    if (s->pre_count) hfx_rt_preshaders_mark(p, s);
 }
 
 int hfx_rt_upload_changed(hfx_effect *fx, hfx_rt_program *p) {
@@ -483,9 +494,8 @@ int hfx_rt_upload_log(hfx_effect *fx, hfx_rt_program *p) {
             s->up.call.m(s->up.location, s->up.count, GL_FALSE, (const void *)(values + s->up.offset));
         else if (s->mode == SLOT_REG)
             hfx_rt_reg_copy(p, s, values, &regs);
-        else if (s->mode == SLOT_OTHER)
-            hfx_rt_upload_slot(fx, p, s);
-        if (s->pre_count) hfx_rt_preshaders_mark(p, s);
+        else
+            upload_other(fx, p, s, &regs);
     }
     if (p->pre_pending) hfx_rt_preshaders_run(p, values, &regs);
     hfx_rt_reg_send(p, regs);
