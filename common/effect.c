@@ -59,6 +59,12 @@ uint32_t hfx_fx_param_find(const hfx_fx_effect *fx, const char *name) {
     return HFX_NONE;
 }
 
+uint32_t hfx_fx_param_at_word(const hfx_fx_effect *fx, uint32_t word) {
+    for (uint32_t i = 0; fx && i < fx->top_param_count && i < fx->param_count; i++)
+        if (word >= fx->params[i].offset && word - fx->params[i].offset < fx->params[i].words) return i;
+    return HFX_NONE;
+}
+
 uint32_t hfx_fx_param_packable(const hfx_fx_effect *fx, uint32_t i) {
     if (!fx || i >= fx->top_param_count || i >= fx->param_count) return 0;
     const hfx_fx_param *p = &fx->params[i];

@@ -9,20 +9,13 @@
 #include "eval_code.h"
 #include "internal.h"
 
-/* The top-level parameter holding value word `word` (HFX_NONE when none does). */
-static uint32_t root_of_word(const hfx_fx_effect *fx, uint32_t word) {
-    for (uint32_t i = 0; i < fx->top_param_count; i++)
-        if (word >= fx->params[i].offset && word - fx->params[i].offset < fx->params[i].words) return i;
-    return HFX_NONE;
-}
-
 /* Calls fn(root) for every parameter read by the code (a root may come more than once). */
 static void each_root(const hfx_fx_effect *fx, const uint32_t *code, uint32_t words, void (*fn)(void *, uint32_t),
                       void *ctx) {
     for (uint32_t at = 0; at < words; at = hfx_evc_next(code, at, words)) {
         uint32_t op = code[at] & 0xffu;
         if (op != HFX_EVC_PARAM && op != HFX_EVC_ELEMENT) continue;
-        uint32_t r = root_of_word(fx, code[at + 1]);
+        uint32_t r = hfx_fx_param_at_word(fx, code[at + 1]);
         if (r != HFX_NONE) fn(ctx, r);
     }
 }

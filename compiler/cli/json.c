@@ -7,6 +7,7 @@
 #include <cjson/cJSON.h>
 
 #include "cli.h"
+#include "eval_code.h"
 #include "states.h"
 
 static const char *class_name(hfx_param_class k) {
@@ -179,6 +180,25 @@ static cJSON *samplers_json(const hfx_fx_effect *fx) {
     return list;
 }
 
+/* A preshader: its registers and the parameters it reads (once each, in reading order). */
+static cJSON *preshader_json(const hfx_fx_effect *fx, const hfx_fx_program *p, const hfx_fx_preshader *q) {
+    cJSON *e = cJSON_CreateObject();
+    cJSON_AddNumberToObject(e, "register", q->reg);
+    cJSON_AddNumberToObject(e, "rows", q->rows);
+    cJSON_AddNumberToObject(e, "cols", q->cols);
+    cJSON *reads = cJSON_AddArrayToObject(e, "parameters");
+    const uint32_t *code = p->pre_code + q->first;
+    for (uint32_t at = 0; at < q->words; at = hfx_evc_next(code, at, q->words)) {
+        uint32_t op = code[at] & 0xffu;
+        uint32_t r = op == HFX_EVC_PARAM || op == HFX_EVC_ELEMENT ? hfx_fx_param_at_word(fx, code[at + 1]) : HFX_NONE;
+        bool seen = false;
+        const cJSON *it;
+        cJSON_ArrayForEach(it, reads) seen |= r != HFX_NONE && strcmp(it->valuestring, fx->params[r].name) == 0;
+        if (r != HFX_NONE && !seen) cJSON_AddItemToArray(reads, cJSON_CreateString(fx->params[r].name));
+    }
+    return e;
+}
+
 static cJSON *program_json(const hfx_fx_effect *fx, uint32_t index) {
     const hfx_fx_program *p = &fx->programs[index];
     cJSON *o = cJSON_CreateObject();
@@ -214,6 +234,10 @@ static cJSON *program_json(const hfx_fx_effect *fx, uint32_t index) {
             cJSON_AddItemToArray(t, cJSON_CreateString(cli_target_name(k)));
     cJSON_AddBoolToObject(o, "alpha_test", (p->flags & HFX_FX_PROGRAM_ALPHA_TEST) != 0);
     if (p->reg_count) cJSON_AddNumberToObject(o, "registers", p->reg_count);
+    if (p->preshader_count) {
+        cJSON *pre = cJSON_AddArrayToObject(o, "preshaders");
+        for (uint32_t i = 0; i < p->preshader_count; i++) cJSON_AddItemToArray(pre, preshader_json(fx, p, &p->preshaders[i]));
+    }
     return o;
 }
 

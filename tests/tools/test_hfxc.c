@@ -527,8 +527,19 @@ static void reflect_json_interface(void) {
     CHECK_INT(cJSON_GetArraySize(samplers), 1);
     CHECK_STR(str_of(cJSON_GetArrayItem(samplers, 0), "sampler"), "diffuseSampler");
     CHECK_NEAR(num_of(cJSON_GetArrayItem(samplers, 0), "unit"), 0, 0);
+    /* The position goes through World, View and Projection in turn: one preshader holds their
+     * product (registers 0..3, nothing else packed), so the GLSL reads no parameter itself. */
     const cJSON *uniforms = cJSON_GetObjectItemCaseSensitive(prog, "uniforms");
-    CHECK_INT(cJSON_GetArraySize(uniforms), 3);
+    CHECK_INT(cJSON_GetArraySize(uniforms), 0);
+    const cJSON *pre = cJSON_GetArrayItem(cJSON_GetObjectItemCaseSensitive(prog, "preshaders"), 0);
+    CHECK_NEAR(num_of(pre, "register"), 0, 0);
+    CHECK_NEAR(num_of(pre, "rows"), 4, 0);
+    CHECK_NEAR(num_of(pre, "cols"), 4, 0);
+    const cJSON *reads = cJSON_GetObjectItemCaseSensitive(pre, "parameters");
+    CHECK_INT(cJSON_GetArraySize(reads), 3);
+    CHECK_STR(cJSON_GetArrayItem(reads, 0)->valuestring, "World");
+    CHECK_STR(cJSON_GetArrayItem(reads, 1)->valuestring, "View");
+    CHECK_STR(cJSON_GetArrayItem(reads, 2)->valuestring, "Projection");
     cJSON_Delete(j);
 }
 #endif

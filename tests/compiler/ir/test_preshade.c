@@ -96,16 +96,15 @@ static const char *const seeds[] = {
     "spot_specular.fx", "tutorial0.fx",
 };
 
-/* The seeds that transform by a product of their World, View and Projection matrices have a
- * preshader; tutorial0.fx multiplies the position by each in turn (no parameter-only part, as
- * fxc would find none) and the FX Composer one is empty. */
+/* Every seed but the empty FX Composer one has a preshader: each transforms by World, View and
+ * Projection, as one product or in turn (tutorial0.fx: the position through each, regrouped). */
 static void seeds_keep_nothing(void) {
     test_require_seeds();
     for (size_t i = 0; i < sizeof seeds / sizeof *seeds; i++) {
         char *path = test_seed_path(seeds[i]);
         uint32_t pres = 0;
         CHECK_INT(effect_left(path, &pres), 0);
-        bool none = strcmp(seeds[i], "fxcomposer_empty.fx") == 0 || strcmp(seeds[i], "tutorial0.fx") == 0;
+        bool none = strcmp(seeds[i], "fxcomposer_empty.fx") == 0;
         if (none != (pres == 0)) fprintf(stderr, "  %s: %u preshaders\n", seeds[i], (unsigned)pres);
         CHECK(none == (pres == 0));
         free(path);
@@ -141,7 +140,7 @@ static void the_glsl_says_what_a_register_holds(void) {
         const char *ps = fx->programs[0].code[HFX_STAGE_FRAGMENT][HFX_TARGET_GLSL330].data;
         CHECK_CONTAINS(vs, "mat4 hfx_pre0; // hfx_c[16..19] = mul(world, mul(view, projection)), computed on the CPU (a preshader)\n");
         CHECK_CONTAINS(vs, "    hfx_pre0 = mat4(hfx_c[16], hfx_c[17], hfx_c[18], hfx_c[19]);\n");
-        CHECK_CONTAINS(vs, "    mat4 mvp = hfx_pre0;\n");
+        CHECK_CONTAINS(vs, "    salida.Posicion = hfx_pre0 * entrada.Posicion;\n"); /* mvp, read once, moved forward */
         CHECK_CONTAINS(ps, "vec3 hfx_pre0; // hfx_c[20] = normalize(posicionLuz - blancoLuz), computed on the CPU (a preshader)\n");
         CHECK_CONTAINS(ps, "float hfx_pre1; // hfx_c[21] = cos(anguloInterno), computed on the CPU (a preshader)\n");
         CHECK_CONTAINS(ps, "float hfx_pre2; // hfx_c[22] = cos(anguloExterno), computed on the CPU (a preshader)\n");
@@ -181,10 +180,47 @@ static void a_parameter_normalised_in_place(void) {
     hfxc_result_free(r);
 }
 
+/* tutorial0.fx's way: the position through World, View and Projection in turn, through locals
+ * read once by the next statement. They move forward and the products regroup, so the three
+ * matrices make one preshader and a vertex does one vector product. A local read twice stays,
+ * and so does one whose next statement is a loop (it would run there more than once). */
+static void transforms_in_turn_regroup(void) {
+    static const char src[] =
+        "float4x4 World, View, Projection; float4x4 A, B; int N;\n"
+        "float4 VS(float4 p : POSITION0) : POSITION0 {\n"
+        "    float4 w = mul(p, World);\n"
+        "    float4 v = mul(w, View);\n"
+        "    float4 o = mul(v, Projection);\n"
+        "    float4 twice = mul(p, A);\n"
+        "    float4 t = mul(twice, B) + twice;\n"
+        "    float4 l = mul(p, B);\n"
+        "    for (int i = 0; i < N; i++) t += l;\n"
+        "    return o + t;\n"
+        "}\n"
+        "technique T { pass P { VertexShader = compile vs_3_0 VS(); } }\n";
+    hfxc_options o = {0};
+    o.targets = 1u << HFX_TARGET_GLSL330;
+    o.flags = HFXC_PACK_UNIFORMS;
+    hfxc_result *r = hfxc_compile_memory(src, strlen(src), "turns.fx", &o);
+    const hfx_fx_effect *fx = hfxc_result_effect(r);
+    CHECK(fx != NULL);
+    if (fx) {
+        const char *vs = fx->programs[0].code[HFX_STAGE_VERTEX][HFX_TARGET_GLSL330].data;
+        CHECK_CONTAINS(vs, "= mul(mul(World, View), Projection), computed on the CPU (a preshader)\n");
+        CHECK_CONTAINS(vs, "    vec4 o = hfx_pre0 * p;\n");
+        CHECK_CONTAINS(vs, "    vec4 twice = A * p;\n");
+        CHECK_CONTAINS(vs, "    vec4 t = B * twice + twice;\n");
+        CHECK_CONTAINS(vs, "    vec4 l = B * p;\n");
+        CHECK_INT(fx->programs[0].preshader_count, 1);
+    }
+    hfxc_result_free(r);
+}
+
 int main(void) {
     RUN(seeds_keep_nothing);
     RUN(project_effects_keep_nothing);
     RUN(the_glsl_says_what_a_register_holds);
     RUN(a_parameter_normalised_in_place);
+    RUN(transforms_in_turn_regroup);
     return test_summary();
 }

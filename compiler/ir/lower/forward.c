@@ -1,0 +1,147 @@
+/* forward.c: two rewrites that let the preshade pass see what a shader does on parameters
+ * across statements, as fxc's optimiser does:
+ * - a numeric local declared with an initialiser and read once, in the very next statement of
+ *   its block (a plain expression, declaration or return), takes its initialiser's place there:
+ *   `float4 v = mul(p, View); o.Pos = mul(v, Projection);` becomes
+ *   `o.Pos = mul(mul(p, View), Projection);` (the value is computed once either way);
+ * - mul(mul(x, A), B) with A and B parameter-only matrices is mul(x, mul(A, B)), and
+ *   mul(B, mul(A, x)) is mul(mul(B, A), x): the matrix product becomes a preshader and each
+ *   vertex does one vector product instead of two (the rounding is a matrix product's, as in
+ *   the hand-written GLSL that multiplies World, View and Projection on the CPU).
+ * Run by ir_pass_preshade only, so --no-preshaders leaves the shaders as written. */
+#include "ir/ir.h"
+
+/* ---- forward substitution ---- */
+
+typedef struct uses_of {
+    const ir_var *v;
+    unsigned reads, writes;
+    ir_expr **slot;         /* the read */
+} uses_of;
+
+static void count_in(uses_of *u, ir_expr **slot, bool lvalue);
+
+static void count_args(uses_of *u, ir_expr *e) {
+    for (uint32_t i = 0; i < e->n; i++) {
+        bool out = (e->kind == IE_CALL && i < e->fn->param_count && (e->fn->params[i]->mods & MOD_OUT)) ||
+                   (e->kind == IE_INTRIN && ((e->intrin == HFX_INTR_SINCOS && i > 0) ||
+                                             ((e->intrin == HFX_INTR_MODF || e->intrin == HFX_INTR_FREXP) && i == 1)));
+        bool written = (e->kind == IE_ASSIGN && i == 0) || (e->kind == IE_UNARY && e->op >= OP_PREINC && e->op <= OP_POSTDEC);
+        count_in(u, &e->a[i], out || written);
+    }
+}
+
+/* Reads and writes of u->v in *slot (lvalue: the place is written, through swizzles, indexes
+ * and fields, whose indexes are read). */
+static void count_in(uses_of *u, ir_expr **slot, bool lvalue) {
+    ir_expr *e = *slot;
+    if (!e) return;
+    if (e->kind == IE_VAR && e->var == u->v) {
+        if (lvalue) u->writes++;
+        else u->reads++, u->slot = slot;
+        return;
+    }
+    if (lvalue && (e->kind == IE_SWIZZLE || e->kind == IE_FIELD || e->kind == IE_INDEX)) {
+        count_in(u, &e->a[0], true);
+        for (uint32_t i = 1; i < e->n; i++) count_in(u, &e->a[i], false);
+        return;
+    }
+    if (lvalue && e->kind == IE_CONSTRUCT) { /* float4(a, b) = v */
+        for (uint32_t i = 0; i < e->n; i++) count_in(u, &e->a[i], true);
+        return;
+    }
+    count_args(u, e);
+}
+
+static void count_stmt(uses_of *u, ir_stmt *s) {
+    if (!s) return;
+    count_stmt(u, s->init);
+    count_in(u, &s->expr, false);
+    count_in(u, &s->step, false);
+    for (uint32_t i = 0; i < s->count; i++) count_stmt(u, s->body[i]);
+    count_stmt(u, s->then_s);
+    count_stmt(u, s->else_s);
+}
+
+/* The next statement may take the initialiser: straight-line, and nothing in it runs before the
+ * read that could change what the initialiser reads (no calls, no assignments but its own). */
+static bool simple_next(const ir_stmt *s) {
+    if (s->kind != IS_EXPR && s->kind != IS_DECL && s->kind != IS_RETURN) return false;
+    const ir_expr *e = s->expr;
+    if (e && s->kind == IS_EXPR && e->kind == IE_ASSIGN) return !ir_has_side_effects(e->a[0]) && !ir_has_side_effects(e->a[1]);
+    return !ir_has_side_effects(e);
+}
+
+/* Statement i of block b declares a local the next statement reads once and nothing else
+ * touches: the read becomes the initialiser and the declaration goes. */
+static bool substitute(ir_stmt *fn_body, ir_stmt *b, uint32_t i) {
+    ir_stmt *d = b->body[i], *next = i + 1 < b->count ? b->body[i + 1] : NULL;
+    if (d->kind != IS_DECL || !d->var || d->var->kind != IRV_LOCAL || d->var->hoisted || !d->expr || !next ||
+        !simple_next(next) || !hfx_type_is_numeric(d->var->type) || ir_has_side_effects(d->expr))
+        return false;
+    uses_of all = {d->var, 0, 0, NULL}, here = {d->var, 0, 0, NULL};
+    count_stmt(&all, fn_body);
+    count_stmt(&here, next);
+    if (all.reads != 1 || all.writes || here.reads != 1) return false;
+    *here.slot = d->expr;
+    for (uint32_t k = i; k + 1 < b->count; k++) b->body[k] = b->body[k + 1];
+    b->count--;
+    return true;
+}
+
+static void forward_block(ir_stmt *fn_body, ir_stmt *s) {
+    if (!s) return;
+    if (s->kind == IS_BLOCK)
+        for (uint32_t i = 0; i < s->count;)
+            if (!substitute(fn_body, s, i)) forward_block(fn_body, s->body[i++]);
+    forward_block(fn_body, s->then_s);
+    forward_block(fn_body, s->else_s);
+}
+
+/* ---- reassociation ---- */
+
+static bool param_only(const ir_ctx *c, const ir_expr *e) {
+    for (uint32_t i = 0; i < e->n; i++)
+        if (!param_only(c, e->a[i])) return false;
+    return ir_pre_node(c, e);
+}
+
+static bool is_mul(const ir_expr *e) { return e->kind == IE_INTRIN && e->intrin == HFX_INTR_MUL && e->n == 2; }
+
+static bool float_matrix(const ir_expr *e) {
+    return e->type->kind == TY_MATRIX && (e->type->base == B_FLOAT || e->type->base == B_HALF);
+}
+
+static ir_expr *product(ir_ctx *c, ir_expr *a, ir_expr *b, const hfx_type *ty, hfx_loc loc) {
+    ir_expr *m = ir_new_expr(c, IE_INTRIN, ty, loc, 2);
+    m->intrin = HFX_INTR_MUL;
+    m->a[0] = a;
+    m->a[1] = b;
+    return m;
+}
+
+static void reassociate(ir_ctx *c, ir_expr **slot, void *data) {
+    (void)data;
+    ir_expr *e = *slot;
+    if (!is_mul(e) || e->type->kind != TY_VECTOR) return;
+    ir_expr *in = e->a[0], *B = e->a[1];
+    if (is_mul(in) && in->type->kind == TY_VECTOR && float_matrix(in->a[1]) && float_matrix(B) &&
+        in->a[0]->type->kind == TY_VECTOR && param_only(c, in->a[1]) && param_only(c, B)) {
+        const hfx_type *ab = hfx_type_matrix(c->types, B_FLOAT, in->a[1]->type->rows, B->type->cols);
+        if (ab) e->a[0] = in->a[0], e->a[1] = product(c, in->a[1], B, ab, e->loc);
+        return;
+    }
+    in = e->a[1], B = e->a[0];
+    if (is_mul(in) && in->type->kind == TY_VECTOR && float_matrix(in->a[0]) && float_matrix(B) &&
+        in->a[1]->type->kind == TY_VECTOR && param_only(c, in->a[0]) && param_only(c, B)) {
+        const hfx_type *ba = hfx_type_matrix(c->types, B_FLOAT, B->type->rows, in->a[0]->type->cols);
+        if (ba) e->a[0] = product(c, B, in->a[0], ba, e->loc), e->a[1] = in->a[1];
+    }
+}
+
+void ir_pass_forward(ir_ctx *c, ir_shader *sh) {
+    for (uint32_t i = 0; i < sh->func_count; i++) {
+        forward_block(sh->funcs[i]->body, sh->funcs[i]->body);
+        ir_walk_stmt_exprs(c, sh->funcs[i]->body, reassociate, NULL);
+    }
+}
