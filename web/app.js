@@ -159,6 +159,7 @@ function showFile(name) {
   $("file-list").value = name;
   suppressEdit = true;
   editor.setText(state.files.get(name) || "");
+  editor.view.dispatch({selection: {anchor: 0}, scrollIntoView: true});
   suppressEdit = false;
   markEditor();
 }
@@ -284,6 +285,19 @@ Object.assign(page, {
     const out = new Uint8Array(4);
     gl.readPixels(x, canvas.height - 1 - y, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, out);
     return Array.from(out);
+  },
+  // A solid or small texture from RGBA bytes (top row first), as a picked image would be.
+  setTextureRgba(name, width, height, bytes) {
+    const p = M._malloc(bytes.length);
+    M.HEAPU8.set(bytes, p);
+    call("hfxw_set_texture", "number", ["string", "number", "number", "number"], [name, p, width, height]);
+    M._free(p);
+    requestRender();
+  },
+  lineCount: () => editor.view.state.doc.lines,
+  cursor() {
+    const st = editor.view.state, at = st.selection.main.head, line = st.doc.lineAt(at);
+    return {line: line.number, col: at - line.from + 1};
   },
   diagnosticsText: () => [...document.querySelectorAll("#diagnostics li")].map((li) => li.textContent),
 });
