@@ -65,22 +65,56 @@ static void tutorial0(void) {
     emit("tutorial0.fx", "Tut0", p, "diffuseTexture", TEXEL, texel_colour());
 }
 
-/* directional(_specular).fx, Material (test_directional: directional_shade):
+/* directional(_specular).fx, Material (test_directional: directional_shade), the light set so
+ * that its mirror direction at the centre is the view direction (R = V: the highlight's peak):
  *   L = normalize(direccionLuz); rd = max(dot(-L, N), 0); color = ambient + difuso * rd
  *   [modIluEsp] R = normalize(2 N rd + L); color += ks max(dot(R, V), 0)^n especular rd; a = 1 */
 static void directional(int specular) {
-    v3 dir = v3_make(-1, -2, -0.5), l = v3_neg(v3_normalize(dir));
+    v3 dir = v3_make(0, -0.866025, 0.5), l = v3_neg(v3_normalize(dir));
     rgba amb = rgba_make(0.1, 0.05, 0.05, 1), dif = rgba_make(0.6, 0.5, 0.3, 1), spec = rgba_make(1, 0.9, 0.8, 1);
-    double rd = maxd(v3_dot(l, N), 0), ks = 1, n = 12;
+    double rd = maxd(v3_dot(l, N), 0), ks = 0.3, n = 12;
     rgba c = rgba_add(amb, rgba_scale(dif, rd));
     if (specular) c = rgba_add(c, rgba_scale(spec, ks * seed_book_specular(N, l, P, eye(), n) * rd));
     c.a = 1;
-    static const char *const base[] = {"direccionLuz", "-1,-2,-0.5", "colorMaterialAmbiental", "0.1,0.05,0.05,1",
+    static const char *const base[] = {"direccionLuz", "0,-0.866025,0.5", "colorMaterialAmbiental", "0.1,0.05,0.05,1",
                                        "colorMaterialDifuso", "0.6,0.5,0.3,1", NULL};
-    static const char *const spec_p[] = {"direccionLuz", "-1,-2,-0.5", "colorMaterialAmbiental", "0.1,0.05,0.05,1",
+    static const char *const spec_p[] = {"direccionLuz", "0,-0.866025,0.5", "colorMaterialAmbiental", "0.1,0.05,0.05,1",
                                          "colorMaterialDifuso", "0.6,0.5,0.3,1", "colorMaterialEspecular", "1,0.9,0.8,1",
-                                         "modIluEsp", "true", "ks", "1", "n", "12", "posicionCamara", "CAMERA", NULL};
+                                         "modIluEsp", "true", "ks", "0.3", "n", "12", "posicionCamara", "CAMERA", NULL};
     emit(specular ? "directional_specular.fx" : "directional.fx", "Material", specular ? spec_p : base, NULL, NULL, c);
+}
+
+/* point_specular.fx, Material, attenuated, modIluEsp (test_point: point_shade), the light where
+ * its mirror direction at the centre is the view direction:
+ *   R = normalize(2 N rd - L); color += ks max(dot(R, V), 0)^n especular rd, before attenuation */
+static void point_specular(void) {
+    v3 light = v3_make(0, 1.732051, -1), l = v3_normalize(v3_sub(light, P));
+    rgba amb = rgba_make(0.05, 0.1, 0.05, 1), dif = rgba_make(0.4, 0.3, 0.5, 1), esp = rgba_make(0.9, 1, 0.8, 1);
+    double rd = maxd(v3_dot(l, N), 0), ks = 0.4, n = 16;
+    rgba c = rgba_add(rgba_scale(dif, rd), rgba_scale(esp, ks * seed_book_specular(N, l, P, eye(), n) * rd));
+    c = rgba_scale(c, seed_book_attenuation(v3_distance(P, light), 20, 1, 0.1, 0.05));
+    c = rgba_add(c, amb);
+    c.a = 1;
+    static const char *const p[] = {"posicionLuz", "0,1.732051,-1", "colorMaterialAmbiental", "0.05,0.1,0.05,1",
+                                    "colorMaterialDifuso", "0.4,0.3,0.5,1", "colorMaterialEspecular", "0.9,1,0.8,1",
+                                    "atenuado", "true", "c1", "1", "c2", "0.1", "c3", "0.05", "rango", "20",
+                                    "modIluEsp", "true", "ks", "0.4", "n", "16", "posicionCamara", "CAMERA", NULL};
+    emit("point_specular.fx", "Material", p, NULL, NULL, c);
+}
+
+/* phong.fx (test_phong: phong_shade), camPosition bound to the camera by the page:
+ *   L = -normalize(LightDirection); diff = saturate(N.L); R = normalize(2 diff N - L)
+ *   I = A Ai + Lc Di tex diff + Si Sc saturate(R.V)^n  (alpha too, clamped by the framebuffer) */
+static void phong(void) {
+    v3 l = v3_neg(v3_normalize(v3_make(0, -0.866025, 0.5)));
+    double diff = saturate(v3_dot(N, l)), spec = seed_tutorial_specular(N, l, v3_normalize(v3_sub(eye(), P)), 20);
+    rgba c = rgba_scale(rgba_make(0.2, 0.3, 0.4, 1), 0.5);
+    c = rgba_add(c, rgba_scale(rgba_mul(rgba_make(1, 0.9, 0.8, 1), texel_colour()), 0.6 * diff));
+    c = rgba_add(c, rgba_scale(rgba_make(1, 1, 1, 1), 0.2 * spec));
+    static const char *const p[] = {"LightDirection", "0,-0.866025,0.5", "LightColor", "1,0.9,0.8,1",
+                                    "AmbientColor", "0.2,0.3,0.4,1", "AmbientIntensity", "0.5", "DiffuseIntensity", "0.6",
+                                    "SpecularColor", "1,1,1,1", "SpecularIntensity", "0.2", "SpecularPower", "20", NULL};
+    emit("phong.fx", "Phong", p, "DiffuseTexture", TEXEL, c);
 }
 
 /* point.fx, Material, attenuated (test_point: point_shade):
@@ -141,10 +175,12 @@ int main(void) {
     directional(0);
     directional(1);
     point();
+    point_specular();
+    phong();
     spot();
-    /* The slider: spot_specular.fx's ks moved from 0.05 to 1.5 in the panel. */
-    printf("],\n \"slider\": {\"file\": \"spot_specular.fx\", \"param\": \"ks\", \"value\": 1.5, \"expect\": ");
-    print_rgba(spot_colour(1, 1.5));
+    /* The slider: spot_specular.fx's ks moved from 0.05 to 0.8 in the panel (no channel saturates). */
+    printf("],\n \"slider\": {\"file\": \"spot_specular.fx\", \"param\": \"ks\", \"value\": 0.8, \"expect\": ");
+    print_rgba(spot_colour(1, 0.8));
     printf("}}\n");
     return 0;
 }
