@@ -72,6 +72,7 @@ function compile() {
   const r = JSON.parse(call("hfxw_compile", "string", ["string"], [SRC + state.main]) || "null");
   const ms = performance.now() - t0;
   page.compileMs.push(ms);
+  if (r) page.compilerMs = r.compile_ms; // the compiler alone (the rest: .hfxo, load, WebGL link)
   state.diags = r ? r.diagnostics : [];
   if (r && r.load_error) state.diags.push({severity: "error", file: SRC + state.main, line: 0, col: 0, code: 0, message: r.load_error});
   showDiagnostics();
@@ -278,6 +279,8 @@ Object.assign(page, {
   setCamera(yaw, pitch, distance) { state.camera = {yaw, pitch, distance}; requestRender(); },
   edit(text) { editor.setText(text); },
   renderNow() { render(); },
+  // The panel rebuilt from the effect's current values (after setParam from outside the panel).
+  refreshPanel() { effectChanged(); },
   // Pixel (x, y) counted from the top left, as RGBA bytes.
   pixel(x, y) {
     const canvas = $("view");

@@ -78,14 +78,16 @@ static hfx_effect *load_compiled(hfxw_session *s, const hfx_fx_effect *code, voi
 
 /* Compiles path (in the in-memory file system) for GLSL ES 300 and, when it compiles and
  * loads, makes it the session's effect; otherwise the previous one stays. Answers
- * {"ok", "diagnostics": [...], "text", "load_error"}. */
+ * {"ok", "diagnostics": [...], "text", "load_error", "compile_ms"}. */
 EMSCRIPTEN_KEEPALIVE const char *hfxw_compile(const char *path) {
     hfxw_session *s = &session;
     hfxc_options o;
     memset(&o, 0, sizeof o);
     o.targets = 1u << HFX_TARGET_GLSLES300;
     o.flags = HFXC_PACK_UNIFORMS; /* as hfx_effect_load compiles */
+    double start = emscripten_get_now();
     hfxc_result *r = hfxc_compile_file(path, &o);
+    double compiled = emscripten_get_now() - start; /* the compiler alone, to compare with hfxc */
     if (!r) return hfxw_answer(NULL);
     hfxw_json j = {0};
     char *text = hfxc_diagnostics_text(r), *why = NULL;
@@ -111,6 +113,7 @@ EMSCRIPTEN_KEEPALIVE const char *hfxw_compile(const char *path) {
     hfxw_json_raw(&j, ","), hfxw_json_key(&j, "diagnostics"), diagnostics_json(&j, r);
     hfxw_json_raw(&j, ","), hfxw_json_key(&j, "text"), hfxw_json_str(&j, text ? text : "");
     hfxw_json_raw(&j, ","), hfxw_json_key(&j, "load_error"), hfxw_json_str(&j, why);
+    hfxw_json_raw(&j, ","), hfxw_json_key(&j, "compile_ms"), hfxw_json_num(&j, compiled);
     hfxw_json_raw(&j, "}");
     free(text);
     free(why);
