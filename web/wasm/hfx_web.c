@@ -137,18 +137,19 @@ EMSCRIPTEN_KEEPALIVE void hfxw_set_technique(int technique, int pass) {
 
 /* A built-in mesh name or an .obj path in the file system: "" when set, else the message. */
 EMSCRIPTEN_KEEPALIVE const char *hfxw_set_mesh(const char *spec) {
-    static char err[256]; /* the answer to the page's one call, read at once */
+    char *err = session.message;
     err[0] = 0;
-    if (hfxw_mesh_set(&session, spec, err, sizeof err) != 0 && !err[0]) snprintf(err, sizeof err, "cannot load %s", spec);
+    if (hfxw_mesh_set(&session, spec, err, sizeof session.message) != 0 && !err[0])
+        snprintf(err, sizeof session.message, "cannot load %s", spec);
     return err;
 }
 
 /* NAME ("a", "a[2]", "a[1].Member") = comma-separated VALUES or true / false: "" when set. */
 EMSCRIPTEN_KEEPALIVE const char *hfxw_set_param(const char *name, const char *values) {
-    static char err[256];
+    char *err = session.message;
     err[0] = 0;
     if (!session.fx) return "no effect";
-    hv_set_param(session.fx, name, values, err, sizeof err);
+    hv_set_param(session.fx, name, values, err, sizeof session.message);
     return err;
 }
 

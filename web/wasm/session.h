@@ -27,6 +27,7 @@ typedef struct hfxw_session {
     float clear[4];
     int width, height;       /* the canvas at the last frame */
     char *answer;            /* the last JSON handed to JavaScript (freed on the next answer) */
+    char message[256];       /* the last setter's error, "" when it worked */
 } hfxw_session;
 
 hfxw_session *hfxw_get(void);
