@@ -4,7 +4,8 @@
 set -euo pipefail
 pkgs=(build-essential cmake ninja-build pkg-config re2c bison glslang-dev glslang-tools libosmesa6-dev
       libgl-dev libegl-dev libgl1-mesa-dri libegl-mesa0 zlib1g-dev libpng-dev libcjson-dev libstb-dev libglfw3-dev libdevil-dev xvfb xauth valgrind spirv-tools
-      clang-14 libclang-rt-14-dev) # clang: the fuzz harnesses (libFuzzer) and their sanitizer runtimes
+      clang-14 libclang-rt-14-dev # clang: the fuzz harnesses (libFuzzer) and their sanitizer runtimes
+      emscripten chromium) # the web page (web/): WebAssembly build, and its tests in headless Chromium
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

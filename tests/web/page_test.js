@@ -1,0 +1,309 @@
+// page_test.js: the web page (web/) in headless Chromium (Debian's, WebGL 2 on SwiftShader),
+// driven by playwright-core. Loads the page from disk (file://, as a user would open it), then:
+//   - each seed case of web_expect: the effect picked from the list, its technique, the plane,
+//     the camera, the parameters; the centre pixel against the seed equations' colour, a corner
+//     against the clear colour (within 2/255, as tests/seeds/ probe);
+//   - spot_specular.fx's ks slider moved in the panel: the pixel follows the equation;
+//   - an error typed into the editor: the located message and the editor's mark;
+//   - multilights.fx: X3013 at (204,20);
+//   - a PNG picked for a texture, several files opened with an #include among them, an OBJ mesh,
+//     the GLSL tab, the .hfxo download;
+//   - screenshots of three seeds, and the page's timings (first picture, compile).
+// Exit 77 (skip) only when Chromium cannot start or the seed corpus is absent.
+//   node page_test.js --site DIR --expect WEB_EXPECT --shots DIR
+"use strict";
+const {execFileSync} = require("child_process");
+const fs = require("fs");
+const path = require("path");
+
+const arg = (name) => process.argv[process.argv.indexOf("--" + name) + 1];
+const site = arg("site"), shots = arg("shots");
+const TOLERANCE = 2; // in 1/255 steps, as tests/seeds/
+let failures = 0;
+
+function check(ok, what) {
+  console.log(`${ok ? "ok  " : "FAIL"} ${what}`);
+  if (!ok) failures++;
+}
+
+function near(got, want, tol = TOLERANCE) {
+  return got.every((g, i) => Math.abs(g - want[i] * 255) <= tol);
+}
+const show = (bytes) => "(" + bytes.join(", ") + ")";
+const showWant = (c) => "(" + c.map((x) => (x * 255).toFixed(1)).join(", ") + ")";
+
+function loadPlaywright() {
+  try {
+    return require(path.join(__dirname, "../../web/node_modules/playwright-core"));
+  } catch (e) {
+    console.log("FAIL playwright-core is not installed: scripts/web.sh runs npm ci in web/");
+    process.exit(1);
+  }
+}
+
+async function launch(chromium) {
+  try {
+    return await chromium.launch({executablePath: "/usr/bin/chromium",
+      args: ["--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--ignore-gpu-blocklist",
+        "--disable-background-networking", "--disable-component-update", "--disable-sync", "--no-first-run"]});
+  } catch (e) {
+    console.log("SKIP: Chromium cannot start here (" + String(e.message).split("\n")[0] + ")");
+    process.exit(77);
+  }
+}
+
+// The case's scene through the page's own paths (effect list, technique picker, mesh picker,
+// camera, panel setter), then one frame.
+async function setUp(page, c, eye) {
+  return page.evaluate(async ({c, eye}) => {
+    const p = window.hfxPage;
+    const r = p.selectEffect("seed", c.file);
+    if (!r || !r.ok) return {error: p.diagnosticsText().join("\n") || "no result"};
+    const tech = document.getElementById("technique");
+    const i = [...tech.options].findIndex((o) => o.text === c.technique);
+    tech.value = String(i);
+    tech.dispatchEvent(new Event("change"));
+    await p.setMesh("plane");
+    p.setCamera(0, 60, 3);
+    for (const [name, values] of c.params) {
+      const err = p.setParam(name, values === "CAMERA" ? eye : values);
+      if (err) return {error: `${name}: ${err}`};
+    }
+    if (c.texture) p.setTextureRgba(c.texture[0], 2, 2, Array(4).fill(c.texture.slice(1)).flat());
+    p.renderNow();
+    return {centre: p.pixel(256, 256), corner: p.pixel(4, 4)};
+  }, {c, eye});
+}
+
+async function seedCases(page, x) {
+  for (const c of x.cases) {
+    const got = await setUp(page, c, x.camera.eye);
+    if (got.error) {
+      check(false, `${c.file}: ${got.error}`);
+      continue;
+    }
+    check(near(got.centre, c.expect), `${c.file} ${c.technique}: centre ${show(got.centre)} expected ${showWant(c.expect)}`);
+    check(near(got.corner, x.clear), `${c.file}: corner ${show(got.corner)} is the clear colour ${showWant(x.clear)}`);
+  }
+}
+
+// The ks slider of the panel, moved as a user drags it (an input event on the range).
+async function slider(page, x) {
+  const c = x.cases.find((k) => k.file === x.slider.file);
+  const before = await setUp(page, c, x.camera.eye);
+  const after = await page.evaluate(({name, value}) => {
+    const range = document.querySelector(`#params input[type=range][data-param="${name}"]`);
+    if (!range) return null;
+    range.value = String(value);
+    range.dispatchEvent(new Event("input"));
+    window.hfxPage.renderNow();
+    return window.hfxPage.pixel(256, 256);
+  }, {name: x.slider.param, value: x.slider.value});
+  check(after !== null, `${x.slider.file}: the panel has a slider for ${x.slider.param}`);
+  if (!after) return;
+  check(near(after, x.slider.expect), `slider ${x.slider.param} = ${x.slider.value}: ${show(after)} expected ${showWant(x.slider.expect)} (was ${show(before.centre)})`);
+}
+
+// An undeclared name typed at the end of the file: where fxc puts X3004, and the editor's mark.
+async function typedError(page) {
+  await page.evaluate(() => window.hfxPage.selectEffect("seed", "spot_specular.fx"));
+  const lines = await page.evaluate(() => document.querySelectorAll(".cm-content .cm-line").length);
+  await page.click(".cm-content");
+  await page.keyboard.press("Control+End");
+  await page.keyboard.type("\nfloat4 broken = undefined_thing;");
+  const want = /^spot_specular\.fx\((\d+),17\): error X3004: undeclared identifier 'undefined_thing'$/;
+  await page.waitForFunction(() => window.hfxPage.diagnosticsText().some((t) => t.includes("undefined_thing")), null, {timeout: 10000})
+    .catch(() => {});
+  const texts = await page.evaluate(() => window.hfxPage.diagnosticsText());
+  const hit = texts.find((t) => want.test(t));
+  check(!!hit, `typed error listed as file(line,col): error X3004: ... (${texts.find((t) => t.includes("undefined")) || texts.join(" | ")})`);
+  const docLines = await page.evaluate(() => window.hfxPage.lineCount());
+  if (hit) check(Number(want.exec(hit)[1]) === docLines, `the error is on the last line, ${docLines} (the file had ${lines} visible lines)`);
+  const mark = await page.evaluate(() => [...document.querySelectorAll(".cm-lintRange-error")].map((e) => e.textContent));
+  check(mark.includes("undefined_thing"), `the editor marks 'undefined_thing' (${JSON.stringify(mark)})`);
+  await page.click("#diagnostics li.error");
+  const cursor = await page.evaluate(() => window.hfxPage.cursor());
+  check(cursor.line === docLines && cursor.col === 17, `clicking the message puts the cursor at ${cursor.line}:${cursor.col}`);
+}
+
+async function multilights(page) {
+  const r = await page.evaluate(() => {
+    const res = window.hfxPage.selectEffect("seed", "multilights.fx");
+    return {ok: res && res.ok, texts: window.hfxPage.diagnosticsText()};
+  });
+  check(r.ok === false, "multilights.fx does not compile");
+  check(r.texts.some((t) => /^multilights\.fx\(204,20\): error X3013: /.test(t)), `multilights.fx: X3013 at (204,20) (${r.texts.find((t) => t.includes("X3013"))})`);
+  // The editor draws only the lines in view: the message's click scrolls line 204 there.
+  await page.click("#diagnostics li.error");
+  const view = await page.evaluate(() => ({cursor: window.hfxPage.cursor(),
+    marks: [...document.querySelectorAll(".cm-lintRange-error")].map((e) => e.textContent)}));
+  check(view.cursor.line === 204 && view.cursor.col === 20, `clicking X3013 puts the cursor at ${view.cursor.line}:${view.cursor.col}`);
+  check(view.marks.length > 0, `multilights.fx: marked in the editor at line 204 (${JSON.stringify(view.marks)})`);
+}
+
+// Several files opened at once (the file picker; a drop gives the page the same list): the
+// root's #include resolves among them. The include supplies the colour a flat pixel shader
+// writes, so the centre pixel shows whether it was read.
+const INCLUDING = `#include "colour.fxh"
+float4x4 WorldViewProj : WorldViewProjection;
+float4 VS(float3 p : POSITION) : POSITION { return mul(float4(p, 1), WorldViewProj); }
+float4 PS() : COLOR { return TINT; }
+technique Flat { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+`;
+const TINT = [0.25, 0.5, 0.75, 1];
+
+async function openedFiles(page) {
+  await page.setInputFiles("#open-files", [
+    {name: "flat.fx", mimeType: "text/plain", buffer: Buffer.from(INCLUDING)},
+    {name: "colour.fxh", mimeType: "text/plain", buffer: Buffer.from("#define TINT float4(0.25, 0.5, 0.75, 1.0)\n")}]);
+  await page.waitForFunction(() => document.getElementById("file-list").options.length === 2, null, {timeout: 10000}).catch(() => {});
+  const r = await page.evaluate(async () => {
+    const p = window.hfxPage;
+    await p.setMesh("plane");
+    p.setCamera(0, 60, 3);
+    p.renderNow();
+    return {ok: p.lastResult && p.lastResult.ok, files: [...document.getElementById("file-list").options].map((o) => o.value),
+      centre: p.pixel(256, 256)};
+  });
+  check(r.ok && r.files.join() === "flat.fx,colour.fxh", `opened flat.fx and colour.fxh, the include resolved (${r.files})`);
+  check(near(r.centre, TINT), `flat.fx: centre ${show(r.centre)} is colour.fxh's TINT ${showWant(TINT)}`);
+}
+
+// An OBJ from the mesh picker's file input: two small quads either side of the origin (each
+// drawn from both sides), centred and scaled into the unit sphere by hfxview's reader. The
+// centre, which the plane covered, now shows the clear colour; the right quad is at pixel 415.
+const OBJ = ["v -1 0 -0.2", "v -0.6 0 -0.2", "v -0.6 0 0.2", "v -1 0 0.2", "v 0.6 0 -0.2", "v 1 0 -0.2", "v 1 0 0.2", "v 0.6 0 0.2",
+  "f 1 2 3 4", "f 4 3 2 1", "f 5 6 7 8", "f 8 7 6 5", ""].join("\n");
+
+async function objMesh(page, x) {
+  await page.setInputFiles("#obj-file", {name: "two_quads.obj", mimeType: "text/plain", buffer: Buffer.from(OBJ)});
+  await page.waitForFunction(() => /two_quads\.obj loaded/.test(document.getElementById("status").textContent), null, {timeout: 10000})
+    .catch(() => {});
+  const r = await page.evaluate(() => {
+    window.hfxPage.renderNow();
+    return {status: document.getElementById("status").textContent, centre: window.hfxPage.pixel(256, 256),
+      right: window.hfxPage.pixel(415, 256)};
+  });
+  check(/loaded/.test(r.status), `OBJ file: ${r.status}`);
+  check(near(r.centre, x.clear), `OBJ: the gap at the centre shows the clear colour ${show(r.centre)}`);
+  check(near(r.right, TINT), `OBJ: the right quad at (415, 256) is TINT ${show(r.right)}`);
+}
+
+// The GLSL tab shows the pass's GLSL ES; the download button saves the .hfxo (its magic number).
+async function glslAndDownload(page) {
+  await page.click('.tabs button[data-tab="glsl"]');
+  const glsl = await page.evaluate(() => document.getElementById("glsl-text").textContent);
+  check(glsl.startsWith("#version 300 es"), `GLSL tab: ${JSON.stringify(glsl.split("\n")[0])}`);
+  await page.click('.tabs button[data-tab="params"]');
+  const [download] = await Promise.all([page.waitForEvent("download"), page.click("#download")]);
+  const bytes = fs.readFileSync(await download.path());
+  const magic = [0x89, 0x48, 0x46, 0x58, 0x4f, 0x0d, 0x0a, 0x1a];
+  check(download.suggestedFilename() === "flat.hfxo" && magic.every((b, i) => bytes[i] === b),
+    `download: ${download.suggestedFilename()}, ${bytes.length} bytes starting with the .hfxo magic`);
+}
+
+// A PNG picked in the panel's texture field (tutorial0.fx: the texture is the colour).
+async function pickedTexture(page) {
+  await page.evaluate(() => window.hfxPage.selectEffect("seed", "tutorial0.fx"));
+  const png = await page.evaluate(async () => {
+    const c = new OffscreenCanvas(2, 2);
+    const g = c.getContext("2d");
+    g.fillStyle = "rgb(40, 160, 220)";
+    g.fillRect(0, 0, 2, 2);
+    return Array.from(new Uint8Array(await (await c.convertToBlob({type: "image/png"})).arrayBuffer()));
+  });
+  await page.setInputFiles('#params input[type=file]', {name: "blue.png", mimeType: "image/png", buffer: Buffer.from(png)});
+  await page.waitForTimeout(500); // the image decodes asynchronously
+  const r = await page.evaluate(async () => {
+    await window.hfxPage.setMesh("plane");
+    window.hfxPage.setCamera(0, 60, 3);
+    window.hfxPage.renderNow();
+    return window.hfxPage.pixel(256, 256);
+  });
+  check(near(r, [40 / 255, 160 / 255, 220 / 255, 1]), `tutorial0.fx with blue.png picked in the panel: ${show(r)}`);
+}
+
+async function screenshots(page) {
+  fs.mkdirSync(shots, {recursive: true});
+  // Each with a few knobs turned in the panel, as a user would.
+  const views = [["spot_specular.fx", "sphere", 20, 25, [["modIluEsp", "true"], ["ks", "1"], ["anguloExterno", "0.6"]]],
+    ["directional_specular.fx", "teapot", 30, 25, [["modIluEsp", "true"], ["ks", "1"], ["colorMaterialAmbiental", "0.15,0.15,0.2,1"]]],
+    ["ambient_textured.fx", "torus", 0, 40, [["colorMaterialAmbiental", "1,0.85,0.6,1"]]]];
+  for (const [file, mesh, yaw, pitch, params] of views) {
+    await page.evaluate(async ({file, mesh, yaw, pitch, params}) => {
+      const p = window.hfxPage;
+      p.selectEffect("seed", file);
+      for (const [name, values] of params) p.setParam(name, values);
+      p.refreshPanel();
+      await p.setMesh(mesh);
+      document.getElementById("mesh").value = mesh;
+      p.setCamera(yaw, pitch, 3);
+      p.renderNow();
+    }, {file, mesh, yaw, pitch, params});
+    const out = path.join(shots, file.replace(/\.fx$/, "") + ".png");
+    await page.screenshot({path: out});
+    console.log(`screenshot ${out}`);
+  }
+}
+
+async function timings(page) {
+  const t = await page.evaluate(() => {
+    const ms = [];
+    for (let i = 0; i < 5; i++) {
+      window.hfxPage.selectEffect("seed", "spot_specular.fx");
+      ms.push(window.hfxPage.compileMs[window.hfxPage.compileMs.length - 1]);
+    }
+    const compiler = [];
+    for (let i = 0; i < 5; i++) {
+      window.hfxPage.selectEffect("seed", "spot_specular.fx");
+      compiler.push(window.hfxPage.compilerMs);
+    }
+    const median = (a) => a.sort((x, y) => x - y)[2];
+    return {first: window.hfxPage.firstPictureMs, compile: median(ms), compiler: median(compiler)};
+  });
+  console.log(`web-measure: page load to first picture ${t.first.toFixed(0)} ms; spot_specular.fx in the page: ` +
+    `compiler ${t.compiler.toFixed(2)} ms, compile + .hfxo + load + WebGL link ${t.compile.toFixed(1)} ms (medians of 5)`);
+}
+
+async function main() {
+  const {chromium} = loadPlaywright();
+  if (!fs.existsSync(path.join(site, "index.html"))) {
+    console.log(`FAIL no page at ${site}: scripts/web.sh builds it (the build's web_site target)`);
+    process.exit(1);
+  }
+  const x = JSON.parse(execFileSync(arg("expect"), {encoding: "utf8"}));
+  const browser = await launch(chromium);
+  const page = await browser.newPage({viewport: {width: 1300, height: 1000}, acceptDownloads: true});
+  page.on("pageerror", (e) => check(false, "page error: " + e.message));
+  await page.goto("file://" + path.resolve(site, "index.html"));
+  const ready = await Promise.race([page.evaluate(() => window.hfxPage.ready.then(() => true)),
+    new Promise((r) => setTimeout(() => r(false), 30000))]);
+  check(ready, "the page draws its first picture");
+  const hasSeeds = await page.evaluate(() => !!(window.HFX_EFFECTS && window.HFX_EFFECTS.seed));
+  if (!ready || !hasSeeds) {
+    await browser.close();
+    if (!hasSeeds && ready) {
+      console.log("SKIP: the seed corpus (../shared/seed-fx) was absent when the page was built");
+      process.exit(77);
+    }
+    process.exit(1);
+  }
+  await timings(page);
+  await seedCases(page, x);
+  await slider(page, x);
+  await multilights(page);
+  await typedError(page);
+  await pickedTexture(page);
+  await openedFiles(page);
+  await objMesh(page, x);
+  await glslAndDownload(page);
+  await screenshots(page);
+  await browser.close();
+  console.log(failures ? `${failures} check(s) failed` : "all checks passed");
+  process.exit(failures ? 1 : 0);
+}
+
+main().catch((e) => {
+  console.log("FAIL " + (e.stack || e));
+  process.exit(1);
+});

@@ -1,0 +1,186 @@
+/* web_expect: the colours the page's tests (page_test.js) must read back, printed as JSON,
+ * from the seed tutorials' equations as tests/seeds/ write them (lighting.h's terms; each
+ * equation is quoted above its case from the seed test that derives it).
+ *
+ * The page's scene for these probes: hfxview's "plane" (y = 0, normal +y, normalised), World
+ * the identity, the orbit camera at yaw 0, pitch 60 degrees, distance 3, looking at the origin:
+ * eye = (0, 3 sin 60, 3 cos 60). Under the centre pixel of an even-sized canvas (Direct3D 9's
+ * pixel centres put pixel (256, 256) of 512 exactly on the axis) lies P = (0, 0, 0), N = (0, 1, 0).
+ * A corner pixel sees only the clear colour, XNA's CornflowerBlue (100, 149, 237). */
+#include <stdio.h>
+
+#include "lighting.h"
+
+static const v3 P = {0, 0, 0}, N = {0, 1, 0};
+
+static v3 eye(void) { return v3_make(0, 3 * sin(SEED_PI / 3), 3 * cos(SEED_PI / 3)); }
+
+static void print_rgba(rgba c) {
+    printf("[%.6f, %.6f, %.6f, %.6f]", saturate(c.r), saturate(c.g), saturate(c.b), saturate(c.a));
+}
+
+static int first_case = 1;
+
+/* One case: the effect, technique, parameters set by name ("name", "values" pairs, NULL
+ * ended), an optional solid texture, and the colour under the centre pixel. */
+static void emit(const char *file, const char *technique, const char *const *params, const char *texture,
+                 const int texel[4], rgba expect) {
+    printf("%s\n  {\"file\": \"%s\", \"technique\": \"%s\", \"params\": [", first_case ? "" : ",", file, technique);
+    first_case = 0;
+    for (int i = 0; params[i]; i += 2) printf("%s[\"%s\", \"%s\"]", i ? ", " : "", params[i], params[i + 1]);
+    printf("], \"texture\": ");
+    if (texture) printf("[\"%s\", %d, %d, %d, %d]", texture, texel[0], texel[1], texel[2], texel[3]);
+    else printf("null");
+    printf(", \"expect\": ");
+    print_rgba(expect);
+    printf("}");
+}
+
+static const int TEXEL[4] = {200, 150, 100, 255};
+
+static rgba texel_colour(void) { return rgba_make(200 / 255.0, 150 / 255.0, 100 / 255.0, 1); }
+
+/* ambient.fx: the ambient colour alone (test_ambient: flat_shade). */
+static void ambient(void) {
+    static const char *const p[] = {"colorMaterialAmbiental", "0.9,0.6,0.3,0.8", NULL};
+    emit("ambient.fx", "ModeloAmbiental", p, NULL, NULL, rgba_make(0.9, 0.6, 0.3, 0.8));
+}
+
+/* ambient_textured.fx, Texturizado: ambient * tex (test_ambient: textured_shade); a solid
+ * texture samples its one colour under any filter. */
+static void ambient_textured(void) {
+    static const char *const p[] = {"colorMaterialAmbiental", "0.8,0.9,0.7,1", NULL};
+    emit("ambient_textured.fx", "Texturizado", p, "texturaModelo", TEXEL, rgba_mul(rgba_make(0.8, 0.9, 0.7, 1), texel_colour()));
+}
+
+/* fxcomposer_empty.fx: a white pixel shader (test_fxcomposer_empty). */
+static void fxcomposer_empty(void) {
+    static const char *const p[] = {NULL};
+    emit("fxcomposer_empty.fx", "technique0", p, NULL, NULL, rgba_make(1, 1, 1, 1));
+}
+
+/* tutorial0.fx: tex2D of the texture (test_tutorial0: tutorial0_shade). */
+static void tutorial0(void) {
+    static const char *const p[] = {NULL};
+    emit("tutorial0.fx", "Tut0", p, "diffuseTexture", TEXEL, texel_colour());
+}
+
+/* directional(_specular).fx, Material (test_directional: directional_shade), the light set so
+ * that its mirror direction at the centre is the view direction (R = V: the highlight's peak):
+ *   L = normalize(direccionLuz); rd = max(dot(-L, N), 0); color = ambient + difuso * rd
+ *   [modIluEsp] R = normalize(2 N rd + L); color += ks max(dot(R, V), 0)^n especular rd; a = 1 */
+static void directional(int specular) {
+    v3 dir = v3_make(0, -0.866025, 0.5), l = v3_neg(v3_normalize(dir));
+    rgba amb = rgba_make(0.1, 0.05, 0.05, 1), dif = rgba_make(0.6, 0.5, 0.3, 1), spec = rgba_make(1, 0.9, 0.8, 1);
+    double rd = maxd(v3_dot(l, N), 0), ks = 0.3, n = 12;
+    rgba c = rgba_add(amb, rgba_scale(dif, rd));
+    if (specular) c = rgba_add(c, rgba_scale(spec, ks * seed_book_specular(N, l, P, eye(), n) * rd));
+    c.a = 1;
+    static const char *const base[] = {"direccionLuz", "0,-0.866025,0.5", "colorMaterialAmbiental", "0.1,0.05,0.05,1",
+                                       "colorMaterialDifuso", "0.6,0.5,0.3,1", NULL};
+    static const char *const spec_p[] = {"direccionLuz", "0,-0.866025,0.5", "colorMaterialAmbiental", "0.1,0.05,0.05,1",
+                                         "colorMaterialDifuso", "0.6,0.5,0.3,1", "colorMaterialEspecular", "1,0.9,0.8,1",
+                                         "modIluEsp", "true", "ks", "0.3", "n", "12", "posicionCamara", "CAMERA", NULL};
+    emit(specular ? "directional_specular.fx" : "directional.fx", "Material", specular ? spec_p : base, NULL, NULL, c);
+}
+
+/* point_specular.fx, Material, attenuated, modIluEsp (test_point: point_shade), the light where
+ * its mirror direction at the centre is the view direction:
+ *   R = normalize(2 N rd - L); color += ks max(dot(R, V), 0)^n especular rd, before attenuation */
+static void point_specular(void) {
+    v3 light = v3_make(0, 1.732051, -1), l = v3_normalize(v3_sub(light, P));
+    rgba amb = rgba_make(0.05, 0.1, 0.05, 1), dif = rgba_make(0.4, 0.3, 0.5, 1), esp = rgba_make(0.9, 1, 0.8, 1);
+    double rd = maxd(v3_dot(l, N), 0), ks = 0.4, n = 16;
+    rgba c = rgba_add(rgba_scale(dif, rd), rgba_scale(esp, ks * seed_book_specular(N, l, P, eye(), n) * rd));
+    c = rgba_scale(c, seed_book_attenuation(v3_distance(P, light), 20, 1, 0.1, 0.05));
+    c = rgba_add(c, amb);
+    c.a = 1;
+    static const char *const p[] = {"posicionLuz", "0,1.732051,-1", "colorMaterialAmbiental", "0.05,0.1,0.05,1",
+                                    "colorMaterialDifuso", "0.4,0.3,0.5,1", "colorMaterialEspecular", "0.9,1,0.8,1",
+                                    "atenuado", "true", "c1", "1", "c2", "0.1", "c3", "0.05", "rango", "20",
+                                    "modIluEsp", "true", "ks", "0.4", "n", "16", "posicionCamara", "CAMERA", NULL};
+    emit("point_specular.fx", "Material", p, NULL, NULL, c);
+}
+
+/* phong.fx (test_phong: phong_shade), camPosition bound to the camera by the page:
+ *   L = -normalize(LightDirection); diff = saturate(N.L); R = normalize(2 diff N - L)
+ *   I = A Ai + Lc Di tex diff + Si Sc saturate(R.V)^n  (alpha too, clamped by the framebuffer) */
+static void phong(void) {
+    v3 l = v3_neg(v3_normalize(v3_make(0, -0.866025, 0.5)));
+    double diff = saturate(v3_dot(N, l)), spec = seed_tutorial_specular(N, l, v3_normalize(v3_sub(eye(), P)), 20);
+    rgba c = rgba_scale(rgba_make(0.2, 0.3, 0.4, 1), 0.5);
+    c = rgba_add(c, rgba_scale(rgba_mul(rgba_make(1, 0.9, 0.8, 1), texel_colour()), 0.6 * diff));
+    c = rgba_add(c, rgba_scale(rgba_make(1, 1, 1, 1), 0.2 * spec));
+    static const char *const p[] = {"LightDirection", "0,-0.866025,0.5", "LightColor", "1,0.9,0.8,1",
+                                    "AmbientColor", "0.2,0.3,0.4,1", "AmbientIntensity", "0.5", "DiffuseIntensity", "0.6",
+                                    "SpecularColor", "1,1,1,1", "SpecularIntensity", "0.2", "SpecularPower", "20", NULL};
+    emit("phong.fx", "Phong", p, "DiffuseTexture", TEXEL, c);
+}
+
+/* point.fx, Material, attenuated (test_point: point_shade):
+ *   L = normalize(posicionLuz - P); rd = max(dot(L, N), 0); color = difuso rd
+ *   color *= d <= rango ? min(1 / (c1 + c2 d + c3 d^2), 1) : 0; color += ambient; a = 1 */
+static void point(void) {
+    v3 light = v3_make(1, 2, 0.5), l = v3_normalize(v3_sub(light, P));
+    rgba amb = rgba_make(0.05, 0.1, 0.05, 1), dif = rgba_make(0.7, 0.6, 0.9, 1);
+    rgba c = rgba_scale(dif, maxd(v3_dot(l, N), 0));
+    c = rgba_scale(c, seed_book_attenuation(v3_distance(P, light), 20, 0.5, 0.1, 0.02));
+    c = rgba_add(c, amb);
+    c.a = 1;
+    static const char *const p[] = {"posicionLuz", "1,2,0.5", "colorMaterialAmbiental", "0.05,0.1,0.05,1",
+                                    "colorMaterialDifuso", "0.7,0.6,0.9,1", "atenuado", "true", "c1", "0.5", "c2", "0.1",
+                                    "c3", "0.02", "rango", "20", NULL};
+    emit("point.fx", "Material", p, NULL, NULL, c);
+}
+
+/* spot(_specular).fx, Material, the book's values (test_spot: spot_shade, book_values):
+ *   S = normalize(posicionLuz - blancoLuz); L = normalize(posicionLuz - P); rd = max(dot(L, N), 0)
+ *   color = difuso rd [+ especular ks spec rd]; color *= cone(max(dot(S, L), 0)) * attenuation;
+ *   color += ambient; a = 1.  At the origin under the light the cone factor is 1. */
+static rgba spot_colour(int specular, double ks) {
+    v3 light = v3_make(0, 10, 0), target = v3_make(0, 0, 0);
+    v3 s = v3_normalize(v3_sub(light, target)), l = v3_normalize(v3_sub(light, P));
+    double rd = maxd(v3_dot(l, N), 0);
+    rgba c = rgba_scale(rgba_make(0.24, 0.34, 0.39, 1), rd);
+    if (specular) c = rgba_add(c, rgba_scale(rgba_make(1, 1, 1, 1), ks * seed_book_specular(N, l, P, eye(), 5) * rd));
+    c = rgba_scale(c, seed_book_spot_cone(maxd(v3_dot(s, l), 0), 0.01, 0.1, 0.8));
+    c = rgba_scale(c, seed_book_attenuation(v3_distance(P, light), 20, 1, 0, 0.001));
+    c = rgba_add(c, rgba_make(0.07, 0.07, 0.07, 1));
+    c.a = 1;
+    return c;
+}
+
+#define SPOT_PARAMS "posicionLuz", "0,10,0", "blancoLuz", "0,0,0", "anguloInterno", "0.01", "anguloExterno", "0.1", \
+    "falloff", "0.8", "atenuado", "true", "c1", "1", "c2", "0", "c3", "0.001", "rango", "20", \
+    "colorMaterialAmbiental", "0.07,0.07,0.07,1", "colorMaterialDifuso", "0.24,0.34,0.39,1"
+
+static void spot(void) {
+    static const char *const p[] = {SPOT_PARAMS, NULL};
+    emit("spot.fx", "Material", p, NULL, NULL, spot_colour(0, 0));
+    static const char *const ps[] = {SPOT_PARAMS, "colorMaterialEspecular", "1,1,1,1", "modIluEsp", "true", "ks", "0.05",
+                                     "n", "5", "posicionCamara", "CAMERA", NULL};
+    emit("spot_specular.fx", "Material", ps, NULL, NULL, spot_colour(1, 0.05));
+}
+
+int main(void) {
+    v3 e = eye();
+    printf("{\"camera\": {\"yaw\": 0, \"pitch\": 60, \"distance\": 3, \"eye\": \"%.6f,%.6f,%.6f\"},\n", e.x, e.y, e.z);
+    printf(" \"clear\": ");
+    print_rgba(rgba_make(100 / 255.0, 149 / 255.0, 237 / 255.0, 1));
+    printf(",\n \"cases\": [");
+    ambient();
+    ambient_textured();
+    fxcomposer_empty();
+    tutorial0();
+    directional(0);
+    directional(1);
+    point();
+    point_specular();
+    phong();
+    spot();
+    /* The slider: spot_specular.fx's ks moved from 0.05 to 0.8 in the panel (no channel saturates). */
+    printf("],\n \"slider\": {\"file\": \"spot_specular.fx\", \"param\": \"ks\", \"value\": 0.8, \"expect\": ");
+    print_rgba(spot_colour(1, 0.8));
+    printf("}}\n");
+    return 0;
+}

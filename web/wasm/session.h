@@ -1,0 +1,47 @@
+/* session.h: the page's one session (one canvas, one WebGL 2 context, one effect at a time).
+ * This is the only mutable global of the WebAssembly module, and it lives here in the glue,
+ * never in hfx's libraries, which stay reentrant as in the native build. */
+#ifndef HFX_WEB_SESSION_H
+#define HFX_WEB_SESSION_H
+
+#include <emscripten/html5.h>
+#include <stddef.h>
+
+#include "common/effect.h"
+#include "hfx/hfx.h"
+
+typedef struct hfxw_session {
+    EMSCRIPTEN_WEBGL_CONTEXT_HANDLE context;
+    hfx_device *dev;
+    hfx_effect *fx;          /* the last effect that compiled and loaded; kept while edits fail */
+    hfx_fx_effect *code;     /* its compiled data: the GLSL tab reads the programs' text */
+    void *hfxo;              /* its .hfxo bytes, for the download button */
+    size_t hfxo_size;
+    int technique, pass;     /* pass -1: every pass of the technique, in order */
+    unsigned vao, vbo, ibo;  /* the mesh */
+    int index_count;
+    unsigned checker;        /* the default texture */
+    unsigned textures[64];   /* textures the page made for parameters, to free with the effect */
+    size_t texture_count;
+    float yaw, pitch, distance; /* orbit camera around the origin, degrees and units */
+    float clear[4];
+    int width, height;       /* the canvas at the last frame */
+    char *answer;            /* the last JSON handed to JavaScript (freed on the next answer) */
+    char message[256];       /* the last setter's error, "" when it worked */
+} hfxw_session;
+
+hfxw_session *hfxw_get(void);
+const char *hfxw_answer(char *json); /* keeps json as the session's answer and returns it */
+
+/* draw.c */
+int hfxw_draw_init(hfxw_session *s);
+void hfxw_draw_frame(hfxw_session *s, int width, int height);
+int hfxw_mesh_set(hfxw_session *s, const char *spec, char *err, size_t errlen);
+unsigned hfxw_texture_rgba(const unsigned char *rgba, int width, int height);
+void hfxw_bind_default_textures(hfxw_session *s);
+/* World (identity), View, Projection, the camera, and hfxview's default light into every
+ * parameter they fit by name or semantic; lights and materials only where the effect left zero. */
+void hfxw_bind_camera(hfxw_session *s, int width, int height);
+void hfxw_scene_matrices(const hfxw_session *s, int width, int height, float view[16], float proj[16], float eye[3]);
+
+#endif
