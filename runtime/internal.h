@@ -162,8 +162,30 @@ typedef struct hfx_slot {
     uint32_t first, count;  /* all its uploads */
     uint32_t reg;           /* SLOT_REG: first register */
     uint16_t reg_rows, reg_cols; /* SLOT_REG: registers, and the components used in each */
-    uint16_t pre_first, pre_count; /* preshaders reading the parameter: pre_deps[pre_first ..]; 64 bytes */
+    uint16_t pre_count;     /* preshaders reading the parameter (program.pre has which) */
+    uint16_t pad_;          /* 64 bytes: indexing is a shift */
 } hfx_slot;
+
+/* A program's preshaders at run time (preshader.c, any back end): per top-level parameter the
+ * preshaders that read it (deps[first[r] .. first[r] + count[r])), which are marked, and how
+ * many ran (tests check that nothing else runs). */
+typedef struct hfx_preshaders {
+    const hfx_fx_program *src;
+    uint32_t *deps, *first, *count;
+    uint8_t *dirty;
+    uint32_t total, pending;
+    uint64_t runs;
+} hfx_preshaders;
+
+/* A range of registers to send; empty ({UINT32_MAX, 0}) while lo > hi. */
+typedef struct hfx_reg_range { uint32_t lo, hi; } hfx_reg_range;
+
+int hfx_preshaders_init(hfx_preshaders *ps, const hfx_fx_effect *fx, const hfx_fx_program *fp); /* HFX_OK or _MEMORY */
+void hfx_preshaders_free(hfx_preshaders *ps);
+void hfx_preshaders_mark(hfx_preshaders *ps, uint32_t root);  /* top-level parameter root changed */
+void hfx_preshaders_mark_all(hfx_preshaders *ps);             /* the image is new: compute them all */
+/* Runs the marked preshaders into regs (reg_size vec4 registers), growing range over what they wrote. */
+void hfx_preshaders_run(hfx_preshaders *ps, const uint32_t *values, float *regs, uint32_t reg_size, hfx_reg_range *range);
 
 typedef struct hfx_rt_program {
     GLuint object;
@@ -186,13 +208,7 @@ typedef struct hfx_rt_program {
     int alpha_test;         /* either location is used */
     int32_t alpha_func;     /* values GL holds (-1: unknown) */
     float alpha_ref;
-    /* Preshaders (preshader.c): marked when a parameter they read changes, run before the
-     * registers are sent; pre_runs counts evaluations (tests check that nothing else runs). */
-    const hfx_fx_program *pre_source;
-    uint32_t *pre_deps;     /* per slot lists of preshader indices */
-    uint8_t *pre_dirty;     /* per preshader */
-    uint32_t pre_total, pre_pending;
-    uint64_t pre_runs;
+    hfx_preshaders pre;     /* marked when a parameter they read changes, run before the registers are sent */
 } hfx_rt_program;
 
 /* What a pass binds on one texture unit. */
@@ -380,9 +396,6 @@ int hfx_rt_upload_add(hfx_device *dev, hfx_rt_program *p, uint32_t *cap, const h
 void hfx_rt_slot_pack(hfx_slot *slot, const hfx_fx_effect *fx, const hfx_fx_uniform_use *u);
 int hfx_rt_regs_setup(hfx_device *dev, hfx_rt_program *p, uint32_t size, GLint (*loc_of)(void *ctx, uint32_t i), void *ctx);
 
-/* A range of registers to send; empty ({UINT32_MAX, 0}) while lo > hi. */
-typedef struct hfx_reg_range { uint32_t lo, hi; } hfx_reg_range;
-
 /* Copies a packed parameter's words into its registers, rows padded to 4 components. */
 static inline void hfx_rt_reg_fill(hfx_rt_program *p, const hfx_slot *s, const uint32_t *values) {
     const uint32_t *src = values + s->up.offset;
@@ -413,11 +426,8 @@ static inline void hfx_rt_reg_send(hfx_rt_program *p, hfx_reg_range r) {
     p->reg_call(p->reg_locs[r.lo], (GLsizei)(hi - r.lo + 1), p->regs + 4 * (size_t)r.lo);
 }
 
-/* preshader.c: which preshaders read which slots (after the registers are set up); marking a
- * changed slot's; running the marked ones into the register image, growing the range to send. */
+/* preshader.c: a GL program's preshaders (after its registers are set up), counted in its slots. */
 int hfx_rt_preshaders_setup(hfx_rt_program *p, const hfx_fx_effect *fx, const hfx_fx_program *fp);
-void hfx_rt_preshaders_mark(hfx_rt_program *p, const hfx_slot *s);
-void hfx_rt_preshaders_run(hfx_rt_program *p, const uint32_t *values, hfx_reg_range *regs);
 
 /* Uploads the parameters whose version differs from the one this program holds, visiting only
  * the log entries written since the program last looked when it follows this instance; returns

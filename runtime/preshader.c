@@ -1,8 +1,8 @@
-/* preshader.c: the runtime side of preshaders (common/effect.h, compiler/ir/lower/preshade.c).
- * At load, each parameter slot of a program learns which preshaders read it; Apply marks those
- * when the parameter changed and, before sending the registers, runs the marked ones with the
- * one evaluator (common/eval_code) into the register image. An unchanged parameter costs
- * nothing; a changed one recomputes only what depends on it. GL-free. */
+/* preshader.c: the runtime side of preshaders (common/effect.h, compiler/ir/lower/preshade.c),
+ * for any back end. At load, a program's preshaders learn which top-level parameters each reads;
+ * Apply marks those of a parameter that changed and, before the registers go to the GPU, runs
+ * the marked ones with the one evaluator (common/eval_code) into the register image. An
+ * unchanged parameter costs nothing; a changed one recomputes only what depends on it. GL-free. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -20,26 +20,104 @@ static void each_root(const hfx_fx_effect *fx, const uint32_t *code, uint32_t wo
     }
 }
 
-typedef struct deps {
-    hfx_rt_program *p;
+typedef struct walk {
+    hfx_preshaders *ps;
     uint32_t pre;       /* the preshader being walked */
-    uint32_t *last;     /* per slot: 1 + the last preshader counted for it */
-    uint32_t *count;    /* per slot: preshaders reading it (first walk), entries written (second) */
-    bool filling;       /* the second walk: write the lists */
-} deps;
+    uint32_t *last;     /* per root: 1 + the last preshader counted for it */
+    uint32_t *filled;   /* per root: entries written (second walk), or NULL (first: counting) */
+} walk;
 
 /* A root read twice by one preshader is listed once. */
 static void note_root(void *ctx, uint32_t r) {
-    deps *d = ctx;
-    if (d->last[r] == d->pre + 1) return;
-    d->last[r] = d->pre + 1;
-    if (d->filling) d->p->pre_deps[d->p->slots[r].pre_first + d->count[r]] = d->pre;
-    d->count[r]++;
+    walk *w = ctx;
+    if (w->last[r] == w->pre + 1) return;
+    w->last[r] = w->pre + 1;
+    if (w->filled) w->ps->deps[w->ps->first[r] + w->filled[r]++] = w->pre;
+    else w->ps->count[r]++;
 }
 
-static void walk_all(deps *d, const hfx_fx_effect *fx, const hfx_fx_program *fp) {
-    for (d->pre = 0; d->pre < fp->preshader_count; d->pre++)
-        each_root(fx, fp->pre_code + fp->preshaders[d->pre].first, fp->preshaders[d->pre].words, note_root, d);
+static void walk_all(walk *w, const hfx_fx_effect *fx, const hfx_fx_program *fp) {
+    memset(w->last, 0, (fx->top_param_count + 1) * sizeof *w->last);
+    for (w->pre = 0; w->pre < fp->preshader_count; w->pre++)
+        each_root(fx, fp->pre_code + fp->preshaders[w->pre].first, fp->preshaders[w->pre].words, note_root, w);
+}
+
+/* Per root, the preshaders that read it: deps[first[r] .. first[r] + count[r]). */
+static int link_roots(hfx_preshaders *ps, const hfx_fx_effect *fx, const hfx_fx_program *fp) {
+    uint32_t tops = fx->top_param_count, total = 0;
+    walk w = {ps, 0, calloc(tops + 1, sizeof *w.last), NULL};
+    int rc = w.last ? HFX_OK : HFX_ERR_MEMORY;
+    if (!rc) walk_all(&w, fx, fp);
+    for (uint32_t r = 0; !rc && r < tops; r++) ps->first[r] = total, total += ps->count[r];
+    if (!rc && !(ps->deps = malloc((total ? total : 1) * sizeof *ps->deps))) rc = HFX_ERR_MEMORY;
+    if (!rc && !(w.filled = calloc(tops + 1, sizeof *w.filled))) rc = HFX_ERR_MEMORY;
+    if (!rc) walk_all(&w, fx, fp);
+    free(w.last);
+    free(w.filled);
+    return rc;
+}
+
+int hfx_preshaders_init(hfx_preshaders *ps, const hfx_fx_effect *fx, const hfx_fx_program *fp) {
+    memset(ps, 0, sizeof *ps);
+    if (!fp->preshader_count) return HFX_OK;
+    ps->src = fp;
+    ps->total = ps->pending = fp->preshader_count;
+    ps->dirty = malloc(fp->preshader_count);
+    ps->first = calloc((size_t)fx->top_param_count + 1, sizeof *ps->first);
+    ps->count = calloc((size_t)fx->top_param_count + 1, sizeof *ps->count);
+    if (!ps->dirty || !ps->first || !ps->count) return HFX_ERR_MEMORY;
+    memset(ps->dirty, 1, fp->preshader_count); /* the first upload computes them all */
+    return link_roots(ps, fx, fp);
+}
+
+void hfx_preshaders_free(hfx_preshaders *ps) {
+    free(ps->deps);
+    free(ps->dirty);
+    free(ps->first);
+    free(ps->count);
+    memset(ps, 0, sizeof *ps);
+}
+
+void hfx_preshaders_mark(hfx_preshaders *ps, uint32_t root) {
+    const uint32_t *list = ps->deps + ps->first[root];
+    for (uint32_t k = 0; k < ps->count[root]; k++) {
+        ps->pending += !ps->dirty[list[k]];
+        ps->dirty[list[k]] = 1;
+    }
+}
+
+void hfx_preshaders_mark_all(hfx_preshaders *ps) {
+    if (!ps->total) return;
+    memset(ps->dirty, 1, ps->total);
+    ps->pending = ps->total;
+}
+
+/* One preshader's value into its registers (regs: reg_size vec4s), rows padded to 4; false when
+ * it did not compute (an operation that does not fold: the registers keep their last value). */
+static bool run_one(const hfx_preshaders *ps, const hfx_fx_preshader *q, const uint32_t *values, float *regs,
+                    uint32_t reg_size) {
+    hfx_ev_value v;
+    if (q->reg >= reg_size || q->rows > reg_size - q->reg) return false;
+    if (!hfx_evc_run(ps->src->pre_code + q->first, q->words, values, &v) || v.n != q->rows * q->cols) return false;
+    float *dst = regs + 4 * (size_t)q->reg;
+    for (uint32_t r = 0; r < q->rows; r++)
+        for (uint32_t c = 0; c < q->cols; c++) dst[4 * r + c] = (float)v.c[r * q->cols + c];
+    return true;
+}
+
+void hfx_preshaders_run(hfx_preshaders *ps, const uint32_t *values, float *regs, uint32_t reg_size,
+                        hfx_reg_range *range) {
+    for (uint32_t k = 0; k < ps->total && ps->pending; k++) {
+        if (!ps->dirty[k]) continue;
+        const hfx_fx_preshader *q = &ps->src->preshaders[k];
+        ps->dirty[k] = 0;
+        ps->pending--;
+        ps->runs++;
+        if (!run_one(ps, q, values, regs, reg_size)) continue;
+        uint32_t last = q->reg + q->rows - 1u;
+        if (q->reg < range->lo) range->lo = q->reg;
+        if (last > range->hi) range->hi = last;
+    }
 }
 
 static int add_read(hfx_rt_program *p, uint32_t r) {
@@ -52,77 +130,15 @@ static int add_read(hfx_rt_program *p, uint32_t r) {
     return HFX_OK;
 }
 
-/* Slot lists: where each begins, and the parameters read only by preshaders added to reads. */
-static int place_lists(hfx_rt_program *p, const uint32_t *count, uint32_t tops) {
-    uint32_t total = 0;
-    for (uint32_t r = 0; r < tops; r++) {
-        if (!count[r]) continue;
-        if (total + count[r] > UINT16_MAX || add_read(p, r) != HFX_OK) return HFX_ERR_MEMORY;
-        p->slots[r].pre_first = (uint16_t)total;
-        p->slots[r].pre_count = (uint16_t)count[r];
-        total += count[r];
-    }
-    p->pre_deps = malloc((total ? total : 1) * sizeof *p->pre_deps);
-    return p->pre_deps ? HFX_OK : HFX_ERR_MEMORY;
-}
-
-/* Per slot, the preshaders that read its parameter (slot.pre_first / pre_count into pre_deps). */
-static int link_slots(hfx_rt_program *p, const hfx_fx_effect *fx, const hfx_fx_program *fp) {
-    uint32_t tops = fx->top_param_count;
-    deps d = {p, 0, calloc(tops + 1, sizeof *d.last), calloc(tops + 1, sizeof *d.count), false};
-    int rc = d.last && d.count ? HFX_OK : HFX_ERR_MEMORY;
-    if (!rc) walk_all(&d, fx, fp);
-    if (!rc) rc = place_lists(p, d.count, tops);
-    if (!rc) {
-        memset(d.last, 0, (tops + 1) * sizeof *d.last);
-        memset(d.count, 0, (tops + 1) * sizeof *d.count);
-        d.filling = true;
-        walk_all(&d, fx, fp);
-    }
-    free(d.last);
-    free(d.count);
-    return rc;
-}
-
+/* GL's program: its slots carry the counts, so Apply's paths test the slot they already hold. */
 int hfx_rt_preshaders_setup(hfx_rt_program *p, const hfx_fx_effect *fx, const hfx_fx_program *fp) {
     if (!fp->preshader_count || !p->regs) return HFX_OK;
-    p->pre_dirty = calloc(fp->preshader_count, 1);
-    if (!p->pre_dirty) return HFX_ERR_MEMORY;
-    p->pre_source = fp;
-    p->pre_total = p->pre_pending = fp->preshader_count;
-    memset(p->pre_dirty, 1, fp->preshader_count); /* the first upload computes them all */
-    return link_slots(p, fx, fp);
-}
-
-void hfx_rt_preshaders_mark(hfx_rt_program *p, const hfx_slot *s) {
-    const uint32_t *list = p->pre_deps + s->pre_first;
-    for (uint32_t k = 0; k < s->pre_count; k++) {
-        p->pre_pending += !p->pre_dirty[list[k]];
-        p->pre_dirty[list[k]] = 1;
+    int rc = hfx_preshaders_init(&p->pre, fx, fp);
+    for (uint32_t r = 0; !rc && r < fx->top_param_count; r++) {
+        if (!p->pre.count[r]) continue;
+        if (p->pre.count[r] > UINT16_MAX) return HFX_ERR_MEMORY;
+        p->slots[r].pre_count = (uint16_t)p->pre.count[r];
+        rc = add_read(p, r);
     }
-}
-
-/* One preshader's value into its registers, rows padded to 4; false when it did not compute
- * (an operation that does not fold: the registers keep their last value). */
-static bool run_one(hfx_rt_program *p, const hfx_fx_preshader *q, const uint32_t *values) {
-    hfx_ev_value v;
-    if (!hfx_evc_run(p->pre_source->pre_code + q->first, q->words, values, &v) || v.n != q->rows * q->cols) return false;
-    float *dst = p->regs + 4 * (size_t)q->reg;
-    for (uint32_t r = 0; r < q->rows; r++)
-        for (uint32_t c = 0; c < q->cols; c++) dst[4 * r + c] = (float)v.c[r * q->cols + c];
-    return true;
-}
-
-void hfx_rt_preshaders_run(hfx_rt_program *p, const uint32_t *values, hfx_reg_range *regs) {
-    for (uint32_t k = 0; k < p->pre_total && p->pre_pending; k++) {
-        if (!p->pre_dirty[k]) continue;
-        const hfx_fx_preshader *q = &p->pre_source->preshaders[k];
-        p->pre_dirty[k] = 0;
-        p->pre_pending--;
-        p->pre_runs++;
-        if (!run_one(p, q, values) || q->reg >= p->reg_size) continue;
-        uint32_t last = q->reg + q->rows - 1u;
-        if (q->reg < regs->lo) regs->lo = q->reg;
-        if (last > regs->hi) regs->hi = last;
-    }
+    return rc;
 }

@@ -365,8 +365,7 @@ void hfx_rt_program_free(hfx_device *dev, hfx_rt_program *p) {
     free(p->uploads);
     free(p->regs);
     free(p->reg_locs);
-    free(p->pre_deps);
-    free(p->pre_dirty);
+    hfx_preshaders_free(&p->pre);
     memset(p, 0, sizeof *p);
 }
 
@@ -439,9 +438,9 @@ void hfx_rt_upload_all(hfx_effect *fx, hfx_rt_program *p) {
         s->held = fx->stamps[r];
         if (s->mode == SLOT_REG || s->mode == SLOT_REG_PRE) hfx_rt_reg_copy(p, s, fx->values, &regs);
         else hfx_rt_upload_slot(fx, p, s);
-        if (s->pre_count) hfx_rt_preshaders_mark(p, s);
+        if (s->pre_count) hfx_preshaders_mark(&p->pre, r);
     }
-    if (p->pre_pending) hfx_rt_preshaders_run(p, fx->values, &regs);
+    if (p->pre.pending) hfx_preshaders_run(&p->pre, fx->values, p->regs, p->reg_size, &regs);
     hfx_rt_reg_send(p, regs);
     p->memo_effect = fx->id;
     p->memo_seen = fx->log_len;
@@ -453,10 +452,10 @@ void hfx_rt_upload_slot(hfx_effect *fx, const hfx_rt_program *p, const hfx_slot 
 }
 
 /* The rarer slots: several uploads, or preshaders reading the parameter. */
-static void upload_other(hfx_effect *fx, hfx_rt_program *p, const hfx_slot *s, hfx_reg_range *regs) {
+static void upload_other(hfx_effect *fx, hfx_rt_program *p, const hfx_slot *s, uint32_t root, hfx_reg_range *regs) {
     if (s->mode == SLOT_OTHER) hfx_rt_upload_slot(fx, p, s);
     else if (s->mode == SLOT_REG_PRE) hfx_rt_reg_copy(p, s, fx->values, regs);
-    if (s->pre_count) hfx_rt_preshaders_mark(p, s);
+    if (s->pre_count) hfx_preshaders_mark(&p->pre, root);
 }
 
 int hfx_rt_upload_changed(hfx_effect *fx, hfx_rt_program *p) {
@@ -495,9 +494,9 @@ int hfx_rt_upload_log(hfx_effect *fx, hfx_rt_program *p) {
         else if (s->mode == SLOT_REG)
             hfx_rt_reg_copy(p, s, values, &regs);
         else
-            upload_other(fx, p, s, &regs);
+            upload_other(fx, p, s, r, &regs);
     }
-    if (p->pre_pending) hfx_rt_preshaders_run(p, values, &regs);
+    if (p->pre.pending) hfx_preshaders_run(&p->pre, values, p->regs, p->reg_size, &regs);
     hfx_rt_reg_send(p, regs);
     return HFX_OK;
 }

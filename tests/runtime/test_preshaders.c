@@ -105,17 +105,17 @@ static void only_what_changed_runs(void) {
     unsigned char px[4];
     set_all(fx, identity, 0.0f);
     draw(fx, W / 2, H / 2, px);
-    CHECK_INT(prog->pre_runs, 2);
+    CHECK_INT(prog->pre.runs, 2);
     draw(fx, W / 2, H / 2, px);
-    CHECK_INT(prog->pre_runs, 2);
+    CHECK_INT(prog->pre.runs, 2);
     CHECK_INT(hfx_param_set_float(hfx_effect_param(fx, "Angle"), 1.04719755f), HFX_OK);
     draw(fx, W / 2, H / 2, px);
-    CHECK_INT(prog->pre_runs, 3);
+    CHECK_INT(prog->pre.runs, 3);
     check_color(px, 0.5f);
     CHECK_INT(hfx_param_set_matrix(hfx_effect_param(fx, "World"), half_size), HFX_OK);
     CHECK_INT(hfx_param_set_matrix(hfx_effect_param(fx, "World"), half_size), HFX_OK);
     draw(fx, 1, 1, px);
-    CHECK_INT(prog->pre_runs, 4);
+    CHECK_INT(prog->pre.runs, 4);
     CHECK_INT(px[0], 0);
     hfx_effect_destroy(fx);
 }
