@@ -63,6 +63,7 @@ static int load_effect(viewer *v) {
     lo->define_count = v->opt.define_count;
     lo->include_dirs = v->opt.include_dirs;
     lo->include_dir_count = v->opt.include_dir_count;
+    lo->no_preshaders = v->opt.no_preshaders;
     char *errors = NULL;
     v->fx = hfx_effect_load(v->dev, v->opt.input, lo, &errors);
     print_errors(errors);

@@ -24,6 +24,7 @@ const char *hv_usage(void) {
            "  -D NAME[=VALUE], -I DIR   preprocessor defines and include folders\n"
            "  --list                    print the techniques and parameters, render nothing\n"
            "  --window                  show the render in a window (when built with GLFW)\n"
+           "  --no-preshaders           keep work on parameters alone in the shaders (to compare)\n"
            "  --watch                   reload when the .fx or an include changes: the window updates\n"
            "                            (errors print, the last good picture stays); headless, the\n"
            "                            PNG is written again after each reload until hfxview is stopped\n"
@@ -173,6 +174,7 @@ int hv_options_parse(hv_options *o, int argc, char **argv, char *err, size_t err
         if (!strcmp(a, "-h") || !strcmp(a, "--help")) o->help = 1;
         else if (!strcmp(a, "--window")) o->window = 1;
         else if (!strcmp(a, "--watch")) o->watch = 1;
+        else if (!strcmp(a, "--no-preshaders")) o->no_preshaders = 1;
         else if (!strcmp(a, "--egl")) o->egl = 1;
         else if (!strcmp(a, "--list")) o->list = 1;
         else if (!strcmp(a, "-o") || TAKE("--output")) {

@@ -30,6 +30,7 @@ typedef struct hv_options {
     float background[4];
     int window;              /* --window: show in a GLFW window */
     int watch;               /* --watch: reload the effect when its files change */
+    int no_preshaders;       /* --no-preshaders: hfx_load_options.no_preshaders */
     int egl;                 /* --egl: headless on EGL (into a framebuffer object) instead of OSMesa */
     int list;                /* --list: print techniques and parameters */
     int help;
