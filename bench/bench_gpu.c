@@ -10,7 +10,7 @@
  * directional, point and spot, with and without specular, both techniques; specular and
  * distance attenuation on), tutorial0, fxcomposer_empty, phong and pointlights (eight lights).
  * Not yet: multilights_repaired (two passes blended by the application). Run by hand:
- * bench_gpu [rounds]. */
+ * bench_gpu [rounds [effect.fx]]. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -575,6 +575,7 @@ static void run_case(hfx_device *dev, const bench_case *c, const mesh *quad, con
 
 int main(int argc, char **argv) {
     int rounds = argc > 1 ? atoi(argv[1]) : 5;
+    const char *only = argc > 2 ? argv[2] : NULL; /* an effect file name to run alone */
     if (!test_seed_dir()) { fprintf(stderr, "the seed effects (../shared/seed-fx) are absent\n"); return 1; }
     gl = test_gl_create(BIG, BIG);
     if (!gl) { fprintf(stderr, "no OSMesa context\n"); return 1; }
@@ -588,7 +589,8 @@ int main(int argc, char **argv) {
            "diff = largest channel difference of hfx (with) against hand-written\n", rounds);
     printf("%-18s %-15s %-6s %9s %9s %9s %8s %8s %9s\n", "effect", "technique", "case", "hfx", "hfx-nopre", "hand", "ratio",
            "nopre", "diff");
-    for (int i = 0; i < CASES; i++) run_case(dev, &cases[i], &quad, &grid, textures, rounds);
+    for (int i = 0; i < CASES; i++)
+        if (!only || strcmp(only, cases[i].file) == 0) run_case(dev, &cases[i], &quad, &grid, textures, rounds);
     hfx_device_destroy(dev);
     test_gl_destroy(gl);
     return 0;
