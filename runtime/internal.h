@@ -18,6 +18,7 @@
 #define HFX_MAX_UNITS 32
 
 typedef struct hfx_shared hfx_shared;
+typedef struct hfx_saved hfx_saved;
 
 /* The GL state the device sets, as GL holds it. */
 typedef struct hfx_glstate {
@@ -84,6 +85,9 @@ typedef struct hfx_backend {
     int (*instance_init)(hfx_effect *e);                   /* the back end's per-instance part */
     void (*instance_free)(hfx_effect *e);
     void (*device_destroy)(hfx_device *dev);
+    hfx_target (*target_for)(hfx_target asked);           /* the shader target it loads */
+    int (*cache_usable)(const hfx_device *dev);            /* a program cache; NULL: none */
+    void (*save_units)(hfx_device *dev, struct hfx_saved *s, uint32_t mask); /* begin's texture units; NULL: none */
 } hfx_backend;
 
 struct hfx_device {
@@ -298,13 +302,13 @@ typedef struct hfx_watch {
 } hfx_watch;
 
 /* What hfx_effect_begin saved. */
-typedef struct hfx_saved {
+struct hfx_saved {
     int active;
     hfx_glstate state;
     GLint program, active_unit;
     struct { GLint tex[4], sampler; } units[HFX_MAX_UNITS]; /* 1D, 2D, 3D, cube */
     hfx_rs_value alpha_test[3]; /* AlphaTestEnable, AlphaFunc, AlphaRef: D3D states GL does not hold */
-} hfx_saved;
+};
 
 struct hfx_effect {
     /* Change log, so Apply visits only the parameters changed since a program last looked:

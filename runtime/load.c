@@ -200,7 +200,9 @@ static hfx_effect *load_compiled(hfx_device *dev, hfx_fx_effect *fx, const hfx_l
  * the usual way, self-check included. Saves most of a cached .fx load (bench/bench_load). */
 static hfx_effect *load_cached_fx(hfx_device *dev, const char *path, const void *data, size_t size, const char *name,
                                   const hfx_load_options *opt, char **errors, hfx_rt_files *deps) {
-    if ((opt && (opt->no_self_check || opt->target == HFX_TARGET_SPIRV)) || !hfx_rt_program_cache_usable(dev)) return NULL;
+    if ((opt && (opt->no_self_check || opt->target == HFX_TARGET_SPIRV)) || !dev->be->cache_usable ||
+        !dev->be->cache_usable(dev))
+        return NULL;
     hfx_load_options quick = opt ? *opt : (hfx_load_options){0};
     quick.no_self_check = 1;
     char *diag = NULL;
@@ -224,6 +226,13 @@ static hfx_effect *load(hfx_device *dev, const char *path, const void *data, siz
                         const hfx_load_options *opt, char **errors, hfx_rt_files *deps) {
     if (errors) *errors = NULL;
     if (!dev) return NULL;
+    hfx_load_options own; /* the back end's own target (Vulkan loads SPIR-V for Vulkan, whatever was asked) */
+    hfx_target asked = opt ? opt->target : HFX_TARGET_GLSL330;
+    if (dev->be->target_for(asked) != asked) {
+        own = opt ? *opt : (hfx_load_options){0};
+        own.target = dev->be->target_for(asked);
+        opt = &own;
+    }
     dev->error[0] = '\0';
     hfx_fx_effect *fx;
     bool is_hfxo = data && hfx_fx_is_hfxo(data, size);

@@ -87,6 +87,8 @@ static int apply_full(hfx_pass *p) {
 /* A pass other than the last one applied; a program-only one becomes the device's last. */
 static __attribute__((noinline)) int apply_first(hfx_pass *p) {
     hfx_device *dev = p->fx->dev;
+    if (dev->be != &hfx_gl_backend) /* a Vulkan device's applied stays NULL: every Apply comes here */
+        return hfx_rt_fail(dev, HFX_ERR_NOT_FOUND, "hfx_pass_apply: this device is %s's; use its own Apply", dev->be->name);
     dev->applied = NULL;
     int rc = apply_full(p);
     if (p->rt->direct) dev->applied = p;
@@ -142,6 +144,7 @@ void hfx_rt_save_units(hfx_device *dev, hfx_saved *s, uint32_t mask) {
 /* The shadow is read back first (hfx_device_sync), so the snapshot is the shadow. */
 int hfx_effect_begin(hfx_effect *fx) {
     if (!fx) return HFX_ERR_NULL;
+    if (fx->dev->be != &hfx_gl_backend) return HFX_OK; /* Vulkan: the application's command buffers hold the state */
     hfx_device *dev = fx->dev;
     hfx_saved *s = &fx->saved;
     if (s->active) /* a second snapshot would make end restore the effect's own states */
@@ -160,6 +163,7 @@ int hfx_effect_begin(hfx_effect *fx) {
 
 int hfx_effect_end(hfx_effect *fx) {
     if (!fx) return HFX_ERR_NULL;
+    if (fx->dev->be != &hfx_gl_backend) return HFX_OK;
     hfx_device *dev = fx->dev;
     hfx_saved *s = &fx->saved;
     if (!s->active) return hfx_rt_fail(dev, HFX_ERR_NOT_FOUND, "hfx_effect_end without hfx_effect_begin");

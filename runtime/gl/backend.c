@@ -37,6 +37,9 @@ static void gl_shared_release(hfx_shared *sh) {
     free(sh->passes);
 }
 
+static hfx_target gl_target_for(hfx_target asked) { return asked; }
+
 const hfx_backend hfx_gl_backend = {
-    "OpenGL", gl_shared_build, gl_shared_release, NULL, NULL, hfx_gl_device_destroy,
+    "OpenGL", gl_shared_build, gl_shared_release, NULL, NULL, hfx_gl_device_destroy, gl_target_for,
+    hfx_rt_program_cache_usable, hfx_rt_save_units,
 };

@@ -89,7 +89,7 @@ void hfx_rt_read_target(hfx_device *dev) {
 }
 
 void hfx_device_set_viewport(hfx_device *dev, int x, int y, int width, int height) {
-    if (!dev) return;
+    if (!dev || dev->be != &hfx_gl_backend) return; /* Vulkan: hfx_vk_target's size */
     dev->applied = NULL; /* the front face and hfx_pos_fixup may change */
     dev->gl.Viewport(x, y, width, height);
     GLint fbo = 0;
@@ -102,7 +102,7 @@ void hfx_device_set_viewport(hfx_device *dev, int x, int y, int width, int heigh
  * marked unknown (rebound on first use) rather than read back: 32 units x 4 targets of queries
  * would cost more than the binds they could save. */
 void hfx_device_sync(hfx_device *dev) {
-    if (!dev) return;
+    if (!dev || dev->be != &hfx_gl_backend) return; /* Vulkan: nothing is shadowed */
     dev->applied = NULL;
     hfx_rt_read_state(dev, &dev->state);
     hfx_rt_read_target(dev);
