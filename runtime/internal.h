@@ -88,6 +88,8 @@ typedef struct hfx_backend {
     hfx_target (*target_for)(hfx_target asked);           /* the shader target it loads */
     int (*cache_usable)(const hfx_device *dev);            /* a program cache; NULL: none */
     void (*save_units)(hfx_device *dev, struct hfx_saved *s, uint32_t mask); /* begin's texture units; NULL: none */
+    int (*effect_begin)(hfx_effect *e);                    /* another back end's Begin / End (GL's are gl/apply.c's) */
+    int (*effect_end)(hfx_effect *e);
 } hfx_backend;
 
 struct hfx_device {

@@ -68,6 +68,13 @@ int hfx_device_end_frame_vk(hfx_device *dev);       /* the frame's Applies are a
 /* Pipelines made so far (each (program, render states, vertex layout, target) once). */
 size_t hfx_device_pipelines_created_vk(const hfx_device *dev);
 
+/* D3D9's SetRenderState for what the application draws with (XNA's BlendState,
+ * DepthStencilState, RasterizerState): "CullMode", "AlphaBlendEnable"... by their effect-file
+ * names, values as D3D9 numbers them. Passes set theirs over these, and they stay set after the
+ * pass, as in D3D9. Reset puts back D3D9's defaults. */
+int hfx_device_set_render_state_vk(hfx_device *dev, const char *state, int value);
+int hfx_device_reset_render_states_vk(hfx_device *dev);
+
 /* A vertex layout described once; pipelines are cached by it. Semantics are copied. */
 hfx_vertex_layout *hfx_vertex_layout_create(hfx_device *dev, const hfx_vertex_element *elements, size_t count);
 void hfx_vertex_layout_destroy(hfx_vertex_layout *layout);         /* after the effects that drew with it */

@@ -144,7 +144,7 @@ void hfx_rt_save_units(hfx_device *dev, hfx_saved *s, uint32_t mask) {
 /* The shadow is read back first (hfx_device_sync), so the snapshot is the shadow. */
 int hfx_effect_begin(hfx_effect *fx) {
     if (!fx) return HFX_ERR_NULL;
-    if (fx->dev->be != &hfx_gl_backend) return HFX_OK; /* Vulkan: the application's command buffers hold the state */
+    if (fx->dev->be != &hfx_gl_backend) return fx->dev->be->effect_begin(fx);
     hfx_device *dev = fx->dev;
     hfx_saved *s = &fx->saved;
     if (s->active) /* a second snapshot would make end restore the effect's own states */
@@ -163,7 +163,7 @@ int hfx_effect_begin(hfx_effect *fx) {
 
 int hfx_effect_end(hfx_effect *fx) {
     if (!fx) return HFX_ERR_NULL;
-    if (fx->dev->be != &hfx_gl_backend) return HFX_OK;
+    if (fx->dev->be != &hfx_gl_backend) return fx->dev->be->effect_end(fx);
     hfx_device *dev = fx->dev;
     hfx_saved *s = &fx->saved;
     if (!s->active) return hfx_rt_fail(dev, HFX_ERR_NOT_FOUND, "hfx_effect_end without hfx_effect_begin");

@@ -41,5 +41,5 @@ static hfx_target gl_target_for(hfx_target asked) { return asked; }
 
 const hfx_backend hfx_gl_backend = {
     "OpenGL", gl_shared_build, gl_shared_release, NULL, NULL, hfx_gl_device_destroy, gl_target_for,
-    hfx_rt_program_cache_usable, hfx_rt_save_units,
+    hfx_rt_program_cache_usable, hfx_rt_save_units, NULL, NULL,
 };

@@ -275,3 +275,23 @@ hfx_vertex_layout *hfx_vertex_layout_create(hfx_device *dev, const hfx_vertex_el
 }
 
 void hfx_vertex_layout_destroy(hfx_vertex_layout *l) { free(l); }
+
+int hfx_device_set_render_state_vk(hfx_device *dev, const char *state, int value) {
+    if (!dev || !state) return HFX_ERR_NULL;
+    const hfx_state_info *info = hfx_state_lookup(state);
+    if (!dev->vk) return hfx_rt_fail(dev, HFX_ERR_NOT_FOUND, "hfx_device_set_render_state_vk: not a Vulkan device");
+    if (!info || info->scope != HFX_SS_RENDER || info->id >= HFX_ST_COUNT_)
+        return hfx_rt_fail(dev, HFX_ERR_NOT_FOUND, "'%s' is not a render state", state);
+    hfx_fx_state st;
+    memset(&st, 0, sizeof st);
+    st.id = info->id, st.kind = HFX_FX_VALUE_INT, st.i = value, st.count = 1;
+    hfx_rs_resolve(NULL, &st, &dev->rs[info->id]);
+    return HFX_OK;
+}
+
+int hfx_device_reset_render_states_vk(hfx_device *dev) {
+    if (!dev) return HFX_ERR_NULL;
+    if (!dev->vk) return hfx_rt_fail(dev, HFX_ERR_NOT_FOUND, "hfx_device_reset_render_states_vk: not a Vulkan device");
+    hfx_rs_defaults(dev->rs);
+    return HFX_OK;
+}

@@ -173,6 +173,8 @@ typedef struct vk_bound {
 
 struct hfx_vk_instance {
     vk_bound **bound;               /* per program, made at its first Apply */
+    int begun;                      /* hfx_effect_begin saved the render states */
+    hfx_rs_value saved[HFX_ST_COUNT_];
 };
 
 extern const hfx_backend hfx_vk_backend;

@@ -5,6 +5,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#ifdef HFX_TEST_PNG
+#include <png.h>
+#endif
 
 struct test_vk {
     VkInstance instance;
@@ -19,7 +22,7 @@ struct test_vk {
     VkImage color, depth;
     VkDeviceMemory color_mem, depth_mem;
     VkImageView color_view, depth_view;
-    VkRenderPass pass;
+    VkRenderPass pass, load_pass;   /* clearing, and keeping what the last frame drew */
     VkFramebuffer fb;
     test_vk_buffer readback;
     unsigned char *pixels;
@@ -169,13 +172,14 @@ static VkFormat depth_format(test_vk *v) {
     return VK_FORMAT_UNDEFINED;
 }
 
-static int make_pass(test_vk *v) {
+static int make_pass(test_vk *v, int load, VkRenderPass *out) {
+    VkAttachmentLoadOp op = load ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_CLEAR;
     VkAttachmentDescription a[2] = {
-        {0, VK_FORMAT_R8G8B8A8_UNORM, VK_SAMPLE_COUNT_1_BIT, VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_STORE,
-         VK_ATTACHMENT_LOAD_OP_DONT_CARE, VK_ATTACHMENT_STORE_OP_DONT_CARE, VK_IMAGE_LAYOUT_UNDEFINED,
-         VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL},
-        {0, v->depth_format, VK_SAMPLE_COUNT_1_BIT, VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_DONT_CARE,
-         VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_DONT_CARE, VK_IMAGE_LAYOUT_UNDEFINED,
+        {0, VK_FORMAT_R8G8B8A8_UNORM, VK_SAMPLE_COUNT_1_BIT, op, VK_ATTACHMENT_STORE_OP_STORE,
+         VK_ATTACHMENT_LOAD_OP_DONT_CARE, VK_ATTACHMENT_STORE_OP_DONT_CARE,
+         load ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL},
+        {0, v->depth_format, VK_SAMPLE_COUNT_1_BIT, op, VK_ATTACHMENT_STORE_OP_STORE, op, VK_ATTACHMENT_STORE_OP_STORE,
+         load ? VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED,
          VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL}};
     VkAttachmentReference cref = {0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
     VkAttachmentReference dref = {1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
@@ -187,7 +191,11 @@ static int make_pass(test_vk *v) {
     VkRenderPassCreateInfo ci = {.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO, .attachmentCount = 2,
                                  .pAttachments = a, .subpassCount = 1, .pSubpasses = &sub, .dependencyCount = 1,
                                  .pDependencies = &dep};
-    if (vkCreateRenderPass(v->device, &ci, NULL, &v->pass) != VK_SUCCESS) return 0;
+    return vkCreateRenderPass(v->device, &ci, NULL, out) == VK_SUCCESS;
+}
+
+static int make_framebuffer(test_vk *v) {
+    if (!make_pass(v, 0, &v->pass) || !make_pass(v, 1, &v->load_pass)) return 0;
     VkImageView views[2] = {v->color_view, v->depth_view};
     VkFramebufferCreateInfo fi = {.sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO, .renderPass = v->pass,
                                   .attachmentCount = 2, .pAttachments = views, .width = (uint32_t)v->width,
@@ -204,7 +212,7 @@ static int make_target(test_vk *v) {
         !make_image(v, v->depth_format, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
                     VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT,
                     v->width, v->height, &v->depth, &v->depth_mem, &v->depth_view) ||
-        !make_pass(v))
+        !make_framebuffer(v))
         return 0;
     size_t bytes = (size_t)v->width * (size_t)v->height * 4;
     v->pixels = calloc(bytes, 1);
@@ -255,6 +263,7 @@ void test_vk_destroy(test_vk *v) {
         test_vk_buffer_free(v, &v->readback);
         vkDestroyFramebuffer(v->device, v->fb, NULL);
         vkDestroyRenderPass(v->device, v->pass, NULL);
+        vkDestroyRenderPass(v->device, v->load_pass, NULL);
         vkDestroyImageView(v->device, v->color_view, NULL);
         vkDestroyImageView(v->device, v->depth_view, NULL);
         vkDestroyImage(v->device, v->color, NULL);
@@ -283,17 +292,19 @@ int test_vk_messages(const test_vk *v) { return v->messages; }
 int test_vk_validation_on(const test_vk *v) { return v->validation; }
 
 VkCommandBuffer test_vk_begin(test_vk *v, const float clear[4]) {
+    v->target.render_pass = clear ? v->pass : v->load_pass;
     if (hfx_device_begin_frame_vk(v->dev) != HFX_OK) fprintf(stderr, "begin frame: %s\n", hfx_device_last_error(v->dev));
     vkResetCommandBuffer(v->cmd, 0);
     VkCommandBufferBeginInfo bi = {.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
                                    .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
     vkBeginCommandBuffer(v->cmd, &bi);
     VkClearValue cv[2];
-    memcpy(cv[0].color.float32, clear, 4 * sizeof(float));
+    memset(cv, 0, sizeof cv);
+    if (clear) memcpy(cv[0].color.float32, clear, 4 * sizeof(float));
     cv[1].depthStencil = (VkClearDepthStencilValue){1.0f, 0};
-    VkRenderPassBeginInfo rp = {.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO, .renderPass = v->pass,
+    VkRenderPassBeginInfo rp = {.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO, .renderPass = v->target.render_pass,
                                 .framebuffer = v->fb, .renderArea = {{0, 0}, {(uint32_t)v->width, (uint32_t)v->height}},
-                                .clearValueCount = 2, .pClearValues = cv};
+                                .clearValueCount = clear ? 2 : 0, .pClearValues = clear ? cv : NULL};
     vkCmdBeginRenderPass(v->cmd, &rp, VK_SUBPASS_CONTENTS_INLINE);
     return v->cmd;
 }
@@ -402,4 +413,19 @@ void test_vk_texture_free(test_vk *v, test_vk_texture *t) {
     if (t->image) vkDestroyImage(v->device, t->image, NULL);
     if (t->memory) vkFreeMemory(v->device, t->memory, NULL);
     memset(t, 0, sizeof *t);
+}
+
+int test_vk_write_png(const test_vk *v, const char *path) {
+#ifdef HFX_TEST_PNG
+    png_image img;
+    memset(&img, 0, sizeof img);
+    img.version = PNG_IMAGE_VERSION;
+    img.width = (png_uint_32)v->width;
+    img.height = (png_uint_32)v->height;
+    img.format = PNG_FORMAT_RGBA;
+    return png_image_write_to_file(&img, path, 0, v->pixels, (png_int_32)(v->width * 4), NULL) ? 0 : -1;
+#else
+    (void)v, (void)path;
+    return -1;
+#endif
 }

@@ -37,13 +37,15 @@ int test_vk_messages(const test_vk *v);
 int test_vk_validation_on(const test_vk *v);
 
 /* Starts a frame: hfx_device_begin_frame_vk, a command buffer, the render pass cleared to rgba
- * (depth 1, stencil 0). Returns the command buffer to record into. */
+ * (depth 1, stencil 0), or keeping the last frame's colour, depth and stencil when clear is
+ * NULL (the target's render pass follows). Returns the command buffer to record into. */
 VkCommandBuffer test_vk_begin(test_vk *v, const float clear[4]);
 /* Ends the render pass, copies the image out, submits and waits; 0 on success. */
 int test_vk_end(test_vk *v);
 /* Pixel (x, y) from the top left as last read back, RGBA8. */
 const unsigned char *test_vk_pixel(const test_vk *v, int x, int y);
 const unsigned char *test_vk_pixels(const test_vk *v); /* width * height * 4, top row first */
+int test_vk_write_png(const test_vk *v, const char *path); /* 0 on success */
 
 /* Device-local-enough (host-visible) vertex data. */
 int test_vk_buffer_make(test_vk *v, const void *data, size_t size, test_vk_buffer *out);
