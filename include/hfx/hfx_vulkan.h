@@ -67,6 +67,9 @@ int hfx_device_begin_frame_vk(hfx_device *dev);
 int hfx_device_end_frame_vk(hfx_device *dev);       /* the frame's Applies are all recorded */
 /* Pipelines made so far (each (program, render states, vertex layout, target) once). */
 size_t hfx_device_pipelines_created_vk(const hfx_device *dev);
+/* Uniform slices written to the ring and descriptor sets written so far: an Apply with nothing
+ * changed adds to neither. */
+void hfx_device_writes_vk(const hfx_device *dev, size_t *uniform_slices, size_t *descriptor_sets);
 
 /* D3D9's SetRenderState for what the application draws with (XNA's BlendState,
  * DepthStencilState, RasterizerState): "CullMode", "AlphaBlendEnable"... by their effect-file

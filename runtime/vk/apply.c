@@ -127,6 +127,7 @@ static int write_set(hfx_device *dev, const vk_program *p, vk_bound *b) {
                                         .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, .pImageInfo = &img[k]};
     }
     dev->vk->fn.UpdateDescriptorSets(dev->vk->device, n, w, 0, NULL);
+    dev->vk->sets_written++;
     return HFX_OK;
 }
 
@@ -141,6 +142,7 @@ static int update_resources(hfx_device *dev, const vk_program *p, vk_bound *b, i
         int rc = hfx_vk_slice(dev, p->block_size, &buffer, &b->offset, &map);
         if (rc) return rc;
         memcpy(map, b->image, p->block_size);
+        vk->slices_written++;
         if (buffer != b->buffer) need_set = 1;
         b->buffer = buffer;
         b->dirty = 0;

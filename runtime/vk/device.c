@@ -163,6 +163,11 @@ int hfx_device_end_frame_vk(hfx_device *dev) {
     return HFX_OK; /* coherent memory: nothing to flush */
 }
 
+void hfx_device_writes_vk(const hfx_device *dev, size_t *uniform_slices, size_t *descriptor_sets) {
+    if (uniform_slices) *uniform_slices = dev && dev->vk ? dev->vk->slices_written : 0;
+    if (descriptor_sets) *descriptor_sets = dev && dev->vk ? dev->vk->sets_written : 0;
+}
+
 size_t hfx_device_pipelines_created_vk(const hfx_device *dev) { return dev && dev->vk ? dev->vk->psos_made : 0; }
 
 static void frames_free(hfx_device *dev) {

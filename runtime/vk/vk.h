@@ -97,6 +97,7 @@ struct hfx_vk_device {
     vk_pso *psos;
     uint32_t pso_count, pso_cap;
     size_t psos_made;               /* pipelines created, for hfx_device_pipelines_created_vk */
+    size_t slices_written, sets_written; /* hfx_device_writes_vk */
     vk_sampler_entry *samplers;
     uint32_t sampler_count, sampler_cap;
     int mirror_once;                /* samplerMirrorClampToEdge */
