@@ -40,7 +40,7 @@ static int vk_instance_init(hfx_effect *e) {
     e->vk = calloc(1, sizeof *e->vk);
     uint32_t n = e->sh->fx->program_count;
     if (e->vk) e->vk->bound = calloc(n ? n : 1, sizeof *e->vk->bound);
-    if (e->vk && e->vk->bound) return HFX_OK;
+    if (e->vk && e->vk->bound) return e->vk->bound_count = n, HFX_OK;
     free(e->vk);
     e->vk = NULL;
     return hfx_rt_fail(e->dev, HFX_ERR_MEMORY, "out of memory");
@@ -48,7 +48,7 @@ static int vk_instance_init(hfx_effect *e) {
 
 static void vk_instance_free(hfx_effect *e) {
     if (!e->vk) return;
-    for (uint32_t i = 0; e->vk->bound && i < e->sh->fx->program_count; i++) hfx_vk_bound_free(e->vk->bound[i]);
+    for (uint32_t i = 0; e->vk->bound && i < e->vk->bound_count; i++) hfx_vk_bound_free(e->vk->bound[i]);
     free(e->vk->bound);
     free(e->vk);
     e->vk = NULL;

@@ -174,6 +174,7 @@ typedef struct vk_bound {
 
 struct hfx_vk_instance {
     vk_bound **bound;               /* per program, made at its first Apply */
+    uint32_t bound_count;           /* programs (the shared part may be gone when this is freed) */
     int begun;                      /* hfx_effect_begin saved the render states */
     hfx_rs_value saved[HFX_ST_COUNT_];
 };

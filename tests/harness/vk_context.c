@@ -143,10 +143,10 @@ static int bind_memory(test_vk *v, VkMemoryRequirements req, VkMemoryPropertyFla
     return type >= 0 && vkAllocateMemory(v->device, &ai, NULL, mem) == VK_SUCCESS;
 }
 
-static int make_image(test_vk *v, VkFormat format, VkImageUsageFlags usage, VkImageAspectFlags aspect, int w, int h,
-                      VkImage *img, VkDeviceMemory *mem, VkImageView *view) {
+static int make_image_levels(test_vk *v, VkFormat format, VkImageUsageFlags usage, VkImageAspectFlags aspect, int w,
+                             int h, uint32_t levels, VkImage *img, VkDeviceMemory *mem, VkImageView *view) {
     VkImageCreateInfo ci = {.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO, .imageType = VK_IMAGE_TYPE_2D,
-                            .format = format, .extent = {(uint32_t)w, (uint32_t)h, 1}, .mipLevels = 1,
+                            .format = format, .extent = {(uint32_t)w, (uint32_t)h, 1}, .mipLevels = levels,
                             .arrayLayers = 1, .samples = VK_SAMPLE_COUNT_1_BIT, .tiling = VK_IMAGE_TILING_OPTIMAL,
                             .usage = usage};
     if (vkCreateImage(v->device, &ci, NULL, img) != VK_SUCCESS) return 0;
@@ -158,8 +158,13 @@ static int make_image(test_vk *v, VkFormat format, VkImageUsageFlags usage, VkIm
     vkBindImageMemory(v->device, *img, *mem, 0);
     VkImageViewCreateInfo vi = {.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO, .image = *img,
                                 .viewType = VK_IMAGE_VIEW_TYPE_2D, .format = format,
-                                .subresourceRange = {aspect, 0, 1, 0, 1}};
+                                .subresourceRange = {aspect, 0, levels, 0, 1}};
     return vkCreateImageView(v->device, &vi, NULL, view) == VK_SUCCESS;
+}
+
+static int make_image(test_vk *v, VkFormat format, VkImageUsageFlags usage, VkImageAspectFlags aspect, int w, int h,
+                      VkImage *img, VkDeviceMemory *mem, VkImageView *view) {
+    return make_image_levels(v, format, usage, aspect, w, h, 1, img, mem, view);
 }
 
 static VkFormat depth_format(test_vk *v) {
@@ -341,8 +346,8 @@ const unsigned char *test_vk_pixels(const test_vk *v) { return v->pixels; }
 int test_vk_buffer_make(test_vk *v, const void *data, size_t size, test_vk_buffer *out) {
     memset(out, 0, sizeof *out);
     VkBufferCreateInfo ci = {.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO, .size = size,
-                             .usage = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
-                                      VK_BUFFER_USAGE_TRANSFER_DST_BIT};
+                             .usage = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
+                                      VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT};
     if (vkCreateBuffer(v->device, &ci, NULL, &out->buffer) != VK_SUCCESS) return 0;
     VkMemoryRequirements req;
     vkGetBufferMemoryRequirements(v->device, out->buffer, &req);
@@ -363,12 +368,21 @@ void test_vk_buffer_free(test_vk *v, test_vk_buffer *b) {
     memset(b, 0, sizeof *b);
 }
 
+static void level_barrier(VkCommandBuffer cmd, VkImage img, uint32_t level, VkImageLayout from, VkImageLayout to,
+                          VkAccessFlags src, VkAccessFlags dst, VkPipelineStageFlags s1, VkPipelineStageFlags s2) {
+    VkImageMemoryBarrier b = {.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER, .srcAccessMask = src,
+                              .dstAccessMask = dst, .oldLayout = from, .newLayout = to,
+                              .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED, .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+                              .image = img, .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, level, 1, 0, 1}};
+    vkCmdPipelineBarrier(cmd, s1, s2, 0, 0, NULL, 0, NULL, 1, &b);
+}
+
 static void layout_barrier(VkCommandBuffer cmd, VkImage img, VkImageLayout from, VkImageLayout to,
                            VkAccessFlags src, VkAccessFlags dst, VkPipelineStageFlags s1, VkPipelineStageFlags s2) {
     VkImageMemoryBarrier b = {.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER, .srcAccessMask = src,
                               .dstAccessMask = dst, .oldLayout = from, .newLayout = to,
                               .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED, .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                              .image = img, .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1}};
+                              .image = img, .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, VK_REMAINING_MIP_LEVELS, 0, 1}};
     vkCmdPipelineBarrier(cmd, s1, s2, 0, 0, NULL, 0, NULL, 1, &b);
 }
 
@@ -428,4 +442,56 @@ int test_vk_write_png(const test_vk *v, const char *path) {
     (void)v, (void)path;
     return -1;
 #endif
+}
+
+/* Level i from level i - 1, halved with a linear blit (a 2 x 2 box, as glGenerateMipmap's). */
+static void blit_level(VkCommandBuffer cmd, VkImage img, uint32_t i, int w, int h) {
+    int sw = w >> (i - 1), sh = h >> (i - 1), dw = sw > 1 ? sw / 2 : 1, dh = sh > 1 ? sh / 2 : 1;
+    level_barrier(cmd, img, i - 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                  VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                  VK_PIPELINE_STAGE_TRANSFER_BIT);
+    VkImageBlit b = {{VK_IMAGE_ASPECT_COLOR_BIT, i - 1, 0, 1}, {{0, 0, 0}, {sw, sh, 1}},
+                     {VK_IMAGE_ASPECT_COLOR_BIT, i, 0, 1}, {{0, 0, 0}, {dw, dh, 1}}};
+    vkCmdBlitImage(cmd, img, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, img, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &b,
+                   VK_FILTER_LINEAR);
+    level_barrier(cmd, img, i - 1, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                  VK_ACCESS_TRANSFER_READ_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                  VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
+}
+
+static int upload_mips(test_vk *v, test_vk_texture *t, const test_vk_buffer *staging, int w, int h, uint32_t levels) {
+    VkCommandBufferAllocateInfo ai = {.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO, .commandPool = v->pool,
+                                      .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY, .commandBufferCount = 1};
+    VkCommandBuffer cmd;
+    if (vkAllocateCommandBuffers(v->device, &ai, &cmd) != VK_SUCCESS) return 0;
+    VkCommandBufferBeginInfo bi = {.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
+                                   .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
+    vkBeginCommandBuffer(cmd, &bi);
+    layout_barrier(cmd, t->image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
+                   VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+    VkBufferImageCopy copy = {.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
+                              .imageExtent = {(uint32_t)w, (uint32_t)h, 1}};
+    vkCmdCopyBufferToImage(cmd, staging->buffer, t->image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+    for (uint32_t i = 1; i < levels; i++) blit_level(cmd, t->image, i, w, h);
+    level_barrier(cmd, t->image, levels - 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                  VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                  VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
+    vkEndCommandBuffer(cmd);
+    int ok = submit_and_wait(v, cmd) == 0;
+    vkFreeCommandBuffers(v->device, v->pool, 1, &cmd);
+    return ok;
+}
+
+int test_vk_texture_make_mipmapped(test_vk *v, int width, int height, const unsigned char *texels, test_vk_texture *out) {
+    memset(out, 0, sizeof *out);
+    uint32_t levels = 1;
+    while ((width >> levels) > 0 || (height >> levels) > 0) levels++;
+    test_vk_buffer staging;
+    if (!test_vk_buffer_make(v, texels, (size_t)width * (size_t)height * 4, &staging)) return 0;
+    VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    int ok = make_image_levels(v, VK_FORMAT_R8G8B8A8_UNORM, usage, VK_IMAGE_ASPECT_COLOR_BIT, width, height, levels,
+                               &out->image, &out->memory, &out->view) &&
+             upload_mips(v, out, &staging, width, height, levels);
+    test_vk_buffer_free(v, &staging);
+    return ok;
 }

@@ -52,6 +52,8 @@ int test_vk_buffer_make(test_vk *v, const void *data, size_t size, test_vk_buffe
 void test_vk_buffer_free(test_vk *v, test_vk_buffer *b);
 /* An RGBA8 texture (one level, row 0 first), in SHADER_READ_ONLY_OPTIMAL. */
 int test_vk_texture_make(test_vk *v, int width, int height, const unsigned char *texels, test_vk_texture *out);
+/* The same with every mip level, each a linear halving of the one above (glGenerateMipmap's). */
+int test_vk_texture_make_mipmapped(test_vk *v, int width, int height, const unsigned char *texels, test_vk_texture *out);
 void test_vk_texture_free(test_vk *v, test_vk_texture *t);
 
 #endif

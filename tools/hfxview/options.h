@@ -31,6 +31,7 @@ typedef struct hv_options {
     int window;              /* --window: show in a GLFW window */
     int watch;               /* --watch: reload the effect when its files change */
     int egl;                 /* --egl: headless on EGL (into a framebuffer object) instead of OSMesa */
+    int vulkan;              /* --vulkan: headless on a Vulkan device (lavapipe) */
     int list;                /* --list: print techniques and parameters */
     int help;
 } hv_options;
