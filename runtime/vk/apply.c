@@ -166,10 +166,13 @@ static void record(hfx_device *dev, VkCommandBuffer cmd, const vk_program *p, co
     fn->CmdSetViewport(cmd, 0, 1, &vp);
     VkRect2D full = {{0, 0}, {t->width, t->height}};
     fn->CmdSetScissor(cmd, 0, 1, rs[HFX_ST_SCISSORTESTENABLE].i ? &t->scissor : &full);
-    fn->CmdSetStencilReference(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, (uint32_t)rs[HFX_ST_STENCILREF].i);
-    fn->CmdSetBlendConstants(cmd, rs[HFX_ST_BLENDFACTOR].f);
-    fn->CmdSetDepthBias(cmd, depth_bias_units(t->depth_format, rs[HFX_ST_DEPTHBIAS].f[0]), 0.0f,
-                        rs[HFX_ST_SLOPESCALEDEPTHBIAS].f[0]);
+    /* the other dynamic states only when the pipeline reads them (each is a command to record) */
+    const vk_states *st = &pso->key.st;
+    if (st->stencil) fn->CmdSetStencilReference(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, (uint32_t)rs[HFX_ST_STENCILREF].i);
+    if (st->blend) fn->CmdSetBlendConstants(cmd, rs[HFX_ST_BLENDFACTOR].f);
+    if (st->depth_bias)
+        fn->CmdSetDepthBias(cmd, depth_bias_units(t->depth_format, rs[HFX_ST_DEPTHBIAS].f[0]), 0.0f,
+                            rs[HFX_ST_SLOPESCALEDEPTHBIAS].f[0]);
     fn->CmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p->layout, 0, 1, &b->set, p->block_size ? 1 : 0,
                               &b->offset);
     if (pso->needs_zero) {

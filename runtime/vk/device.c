@@ -239,6 +239,7 @@ hfx_device *hfx_device_create_vulkan(const hfx_vulkan_desc *d, char **error) {
         return create_failed(dev, NULL, error);
     }
     read_limits(vk, d);
+    vk->last_pso = UINT32_MAX;
     hfx_rs_defaults(dev->rs);
     if (hfx_vk_chunk_make(dev, 64, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, &vk->zero)) return create_failed(dev, NULL, error);
     static const float zero_one[4] = {0, 0, 0, 1}; /* what GL's disabled attribute arrays read */

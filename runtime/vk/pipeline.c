@@ -226,22 +226,33 @@ static uint64_t hash_key(const vk_pso_key *k) {
 }
 
 /* The key must be zeroed before it is filled (padding takes part in the comparison). */
+static const vk_pso *remember(struct hfx_vk_device *vk, const vk_pso_key *key, uint32_t i) {
+    memcpy(&vk->last_key, key, sizeof *key); /* padding included: keys are compared bytewise */
+    vk->last_pso = i;
+    return &vk->psos[i];
+}
+
 int hfx_vk_pipeline(hfx_device *dev, const vk_pso_key *key, const vk_pso **out) {
     struct hfx_vk_device *vk = dev->vk;
+    if (vk->last_pso < vk->pso_count && memcmp(&vk->last_key, key, sizeof *key) == 0) {
+        *out = &vk->psos[vk->last_pso];
+        return HFX_OK;
+    }
     uint64_t h = hash_key(key);
     for (uint32_t i = 0; i < vk->pso_count; i++)
         if (vk->psos[i].hash == h && memcmp(&vk->psos[i].key, key, sizeof *key) == 0) {
-            *out = &vk->psos[i];
+            *out = remember(vk, key, i);
             return HFX_OK;
         }
     if (!HFX_GROW(vk->psos, vk->pso_count, vk->pso_cap, 16)) return hfx_rt_fail(dev, HFX_ERR_MEMORY, "out of memory");
     vk_pso *pso = &vk->psos[vk->pso_count];
-    pso->hash = h, pso->key = *key;
+    pso->hash = h;
+    memcpy(&pso->key, key, sizeof *key);
     VkResult r = create_pipeline(vk, key, &pso->pipeline, &pso->needs_zero);
     if (r != VK_SUCCESS) return hfx_vk_fail(dev, r, "vkCreateGraphicsPipelines");
     vk->pso_count++;
     vk->psos_made++;
-    *out = pso;
+    *out = remember(vk, key, vk->pso_count - 1);
     return HFX_OK;
 }
 
@@ -254,6 +265,7 @@ void hfx_vk_pipelines_forget(hfx_device *dev, const void *program) {
         else vk->psos[kept++] = vk->psos[i];
     }
     vk->pso_count = kept;
+    vk->last_pso = UINT32_MAX;
 }
 
 void hfx_vk_pipelines_free(hfx_device *dev) {

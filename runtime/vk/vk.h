@@ -98,6 +98,8 @@ struct hfx_vk_device {
     uint32_t pso_count, pso_cap;
     size_t psos_made;               /* pipelines created, for hfx_device_pipelines_created_vk */
     size_t slices_written, sets_written; /* hfx_device_writes_vk */
+    vk_pso_key last_key;            /* the last Apply's key and pipeline: most Applies repeat it */
+    uint32_t last_pso;              /* index in psos, UINT32_MAX: none */
     vk_sampler_entry *samplers;
     uint32_t sampler_count, sampler_cap;
     int mirror_once;                /* samplerMirrorClampToEdge */

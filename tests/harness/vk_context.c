@@ -347,6 +347,7 @@ int test_vk_buffer_make(test_vk *v, const void *data, size_t size, test_vk_buffe
     memset(out, 0, sizeof *out);
     VkBufferCreateInfo ci = {.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO, .size = size,
                              .usage = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
+                                      VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT |
                                       VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT};
     if (vkCreateBuffer(v->device, &ci, NULL, &out->buffer) != VK_SUCCESS) return 0;
     VkMemoryRequirements req;
