@@ -20,7 +20,8 @@ static int render(const char *fx, const char *flags, const char *png, view_png *
     const char *made = out ? strstr(out, "hfxview: ") : NULL;
     int n = 0;
     if (made && sscanf(made, "hfxview: %d pipelines", &n) == 1) pipelines += n, pictures++;
-    int ok = rc == 0 && view_png_read(img, path) == 0 && !(out && strstr(out, "validation"));
+    int ok = rc == 0 && view_png_read(img, path) == 0;
+    if (ok && out && strstr(out, "validation")) view_png_free(img), ok = 0;
     free(out);
     free(cmd);
     free(path);
@@ -45,8 +46,9 @@ static double share_within_2(const view_png *a, const view_png *b) {
 static void compare(const char *fx, const char *name) {
     view_png gl, vk;
     char *gl_png = view_format("%s.gl.png", name), *vk_png = view_format("%s.vk.png", name);
-    int ok = render(fx, "", gl_png, &gl) && render(fx, "--vulkan", vk_png, &vk);
+    int have_gl = render(fx, "", gl_png, &gl), ok = have_gl && render(fx, "--vulkan", vk_png, &vk);
     CHECK(ok);
+    if (have_gl && !ok) view_png_free(&gl);
     if (ok) {
         double share = share_within_2(&gl, &vk);
         printf("gl-vs-vulkan: %-28s %6.2f%% of pixels within 2/255\n", name, share);
