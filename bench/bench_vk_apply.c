@@ -5,7 +5,11 @@
  * descriptor set with the slice's dynamic offset. Both record into a command buffer that is
  * never submitted (reset every 1000 draws), so only the CPU side is timed.
  *
- *   ./bench_vk_apply [ITER]     best of five rounds of ITER applies for N = 1, 10, 100 */
+ *   ./bench_vk_apply [ITER]          best of five rounds of ITER applies for N = 1, 10, 100 (wall
+ *                                    clock: noisy on a shared machine)
+ *   ./bench_vk_apply ITER LOOP N     one loop alone, LOOP = hfx | raw, for instruction counts, which
+ *       are stable: valgrind --tool=callgrind with ITER 200 and 1200; the difference of the two
+ *       totals / 1000 is the per-Apply count (setup cancels out). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -163,7 +167,9 @@ int main(int argc, char **argv) {
     raw_loop r;
     run_hfx(v, cmd, fx, params, 1, 1); /* makes the pipeline the raw loop borrows */
     if (!raw_setup(v, fx, &r)) return printf("raw setup failed\n"), 1;
-    measure(v, cmd, fx, params, &r, iter);
+    if (argc > 3 && !strcmp(argv[2], "hfx")) run_hfx(v, cmd, fx, params, atoi(argv[3]), iter);
+    else if (argc > 3) run_raw(v, cmd, &r, atoi(argv[3]), iter);
+    else measure(v, cmd, fx, params, &r, iter);
     printf("pipelines created: %zu\n", hfx_device_pipelines_created_vk(test_vk_device(v)));
     vkDestroyDescriptorPool(fx->dev->vk->device, r.pool, NULL);
     vkDestroyCommandPool(fx->dev->vk->device, pool, NULL);
