@@ -9,6 +9,7 @@ static hfx_effect *FX;
 
 static const char *SRC =
     "float4 Color = float4(1, 0, 0, 1);\n"
+    "int Factor = 0x80402010;\n"
     "float4 VS(float4 p : POSITION) : POSITION { return p; }\n"
     "float4 PS() : COLOR { return Color; }\n"
     "float4 Red() : COLOR { return float4(1, 0, 0, 1); }\n"
@@ -35,6 +36,8 @@ static const char *SRC =
     "  pass Front { WITH(Red) }\n"
     "  pass Test { TwoSidedStencilMode = false; CullMode = CCW; StencilFunc = Equal; StencilPass = Keep;\n"
     "  ColorWriteEnable = 15; WITH(Green) } }\n"
+    "technique FactorParam { pass P { AlphaBlendEnable = true; SrcBlend = BlendFactor; DestBlend = Zero;\n"
+    "  BlendFactor = <Factor>; WITH(PS) } }\n"
     "technique Mask { pass P { ColorWriteEnable = Red | Alpha; WITH(PS) } }\n"
     "technique Scissor { pass P { ScissorTestEnable = true; WITH(Green) } }\n";
 
@@ -122,6 +125,18 @@ static void scissor(void) {
     t->scissor = (VkRect2D){{0, 0}, {64, 64}};
 }
 
+/* BlendFactor is dynamic: a new value from a parameter changes the picture, not the pipeline. */
+static void dynamic_blend_factor(void) {
+    const float white[4] = {1, 1, 1, 1};
+    CHECK_INT(draw1("FactorParam", white), 0);
+    CHECK_PIXEL(V, 32, 32, 64, 32, 16, 128);
+    size_t before = hfx_device_pipelines_created_vk(test_vk_device(V));
+    CHECK_INT(hfx_param_set_int(hfx_effect_param(FX, "Factor"), (int)0xFF804020u), 0);
+    CHECK_INT(draw1("FactorParam", white), 0);
+    CHECK_PIXEL(V, 32, 32, 128, 64, 32, 255);
+    CHECK_INT(hfx_device_pipelines_created_vk(test_vk_device(V)), before);
+}
+
 /* Drawing everything again makes no pipeline: each (program, states, layout, target) was built once. */
 static void pipelines_cached(void) {
     size_t before = hfx_device_pipelines_created_vk(test_vk_device(V));
@@ -145,6 +160,7 @@ int main(void) {
     RUN(two_sided_stencil);
     RUN(color_write_mask);
     RUN(scissor);
+    RUN(dynamic_blend_factor);
     RUN(pipelines_cached);
     hfx_effect_destroy(FX);
     hfx_vertex_layout_destroy(layout);
