@@ -38,8 +38,11 @@ enum {
  * records grew by 3 (file, line, col) within version 2: readers take 18 or more. */
 enum {
     R_EFFECT = 3, R_PARAM = 18, R_PARAM_WRITTEN = 21, R_ANNOTATION = 8, R_STATE = 12, R_SAMPLER = 5,
-    P_CODE = 7, P_REG_COUNT = P_CODE + 2 * HFX_STAGE_COUNT * HFX_TARGET_COUNT, /* program record fields */
+    P_CODE = 7, P_REG_COUNT = P_CODE + 2 * HFX_STAGE_COUNT * HFX_TARGET_SPIRV_VK, /* program record fields */
     R_PROGRAM = P_REG_COUNT + 1, R_ATTRIBUTE = 3, R_SAMPLER_USE = 3,
+    /* Vulkan's SPIR-V came later within version 2: at the program record's tail, which older
+     * readers skip; a record without it has no Vulkan code */
+    P_VK_CODE = R_PROGRAM, R_PROGRAM_WRITTEN = P_VK_CODE + 2 * HFX_STAGE_COUNT,
     R_UNIFORM_USE = 2, R_PASS = 6, R_TECHNIQUE = 5, R_VARIANT = 4, R_PRESHADER = 6
 };
 
@@ -236,22 +239,25 @@ static void write_states(writer *w, const hfx_fx_effect *fx) {
     section_end(w);
 }
 
+/* One stage's code for one target: its place in the CODE section and its size. */
+static void put_code(writer *w, const hfx_fx_code *c) {
+    bool has = c->data != NULL;
+    put32(&w->out, has ? (uint32_t)w->code.size : NO_STRING);
+    put32(&w->out, has ? (uint32_t)c->size : 0);
+    if (has) put_bytes(&w->code, c->data, c->size);
+}
+
 static void write_programs(writer *w, const hfx_fx_effect *fx) {
     uint32_t attrs = 0, samplers = 0, uniforms = 0;
-    table_begin(w, SEC_PROGRAMS, fx->program_count, R_PROGRAM);
+    table_begin(w, SEC_PROGRAMS, fx->program_count, R_PROGRAM_WRITTEN);
     for (uint32_t i = 0; i < fx->program_count; i++) {
         const hfx_fx_program *p = &fx->programs[i];
         uint32_t r[7] = {p->flags, attrs, p->attribute_count, samplers, p->sampler_count, uniforms, p->uniform_count};
         for (int k = 0; k < 7; k++) put32(&w->out, r[k]);
         for (int s = 0; s < HFX_STAGE_COUNT; s++)
-            for (int t = 0; t < HFX_TARGET_COUNT; t++) {
-                const hfx_fx_code *c = &p->code[s][t];
-                bool has = c->data != NULL;
-                put32(&w->out, has ? (uint32_t)w->code.size : NO_STRING);
-                put32(&w->out, has ? (uint32_t)c->size : 0);
-                if (has) put_bytes(&w->code, c->data, c->size);
-            }
+            for (int t = 0; t < HFX_TARGET_SPIRV_VK; t++) put_code(w, &p->code[s][t]);
         put32(&w->out, p->reg_count);
+        for (int s = 0; s < HFX_STAGE_COUNT; s++) put_code(w, &p->code[s][HFX_TARGET_SPIRV_VK]);
         attrs += p->attribute_count;
         samplers += p->sampler_count;
         uniforms += p->uniform_count;
@@ -660,8 +666,10 @@ static bool read_program(reader *r, hfx_fx_program *p, uint32_t i) {
         !range_ok(uf, un, r->t_uniform_uses.count))
         return fail(r, "program %u refers to records that do not exist", i);
     for (uint32_t s = 0, k = P_CODE; s < HFX_STAGE_COUNT; s++)
-        for (uint32_t g = 0; g < HFX_TARGET_COUNT; g++, k += 2)
+        for (uint32_t g = 0; g < HFX_TARGET_SPIRV_VK; g++, k += 2)
             if (!read_code(r, field(t, i, k), field(t, i, k + 1), &p->code[s][g])) return false;
+    for (uint32_t s = 0, k = P_VK_CODE; s < HFX_STAGE_COUNT && t->stride >= 4u * R_PROGRAM_WRITTEN; s++, k += 2)
+        if (!read_code(r, field(t, i, k), field(t, i, k + 1), &p->code[s][HFX_TARGET_SPIRV_VK])) return false;
     if (!(p->attributes = alloc_array(r, an, sizeof *p->attributes))) return false;
     p->attribute_count = an;
     for (uint32_t a = 0; a < an; a++) {

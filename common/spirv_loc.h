@@ -10,6 +10,10 @@
 
 #include "effect.h"
 
+/* Vulkan (HFX_TARGET_SPIRV_VK): descriptor set 0 holds the program's uniform block (both
+ * stages declare the same one), then its samplers in p->samplers' order. */
+enum { HFX_VK_BINDING_BLOCK = 0, HFX_VK_BINDING_SAMPLER0 = 1 };
+
 /* The known internal uniforms, in their order after the samplers. */
 enum { HFX_SPIRV_POS_FIXUP, HFX_SPIRV_ALPHA_FUNC, HFX_SPIRV_ALPHA_REF, HFX_SPIRV_KNOWN_COUNT };
 

@@ -10,12 +10,15 @@
 
 #include "compile.h"
 #include "effect.h"
-#include "gl.h"
+#include "gl/gl.h"
 #include "grow.h"
 #include "hfx/hfx.h"
 #include "states.h"
 
 #define HFX_MAX_UNITS 32
+
+typedef struct hfx_shared hfx_shared;
+typedef struct hfx_saved hfx_saved;
 
 /* The GL state the device sets, as GL holds it. */
 typedef struct hfx_glstate {
@@ -72,7 +75,26 @@ typedef struct hfx_gl_spirv {
     PFNGLGETPROGRAMRESOURCEIVPROC GetProgramResourceiv;
 } hfx_gl_spirv;
 
+/* The back end's table: what the graphics-API-free core (load.c, params.c, techniques.c...)
+ * asks of OpenGL (gl/backend.c) or Vulkan (vk/backend.c). A program links only the back end
+ * whose hfx_device_create_* it calls, since nothing else names a table. */
+typedef struct hfx_backend {
+    const char *name;                                      /* "OpenGL", "Vulkan" */
+    int (*shared_build)(hfx_shared *sh, hfx_target target); /* programs, samplers, passes */
+    void (*shared_release)(hfx_shared *sh);                /* what shared_build made (any part) */
+    int (*instance_init)(hfx_effect *e);                   /* the back end's per-instance part */
+    void (*instance_free)(hfx_effect *e);
+    void (*device_destroy)(hfx_device *dev);
+    hfx_target (*target_for)(hfx_target asked);           /* the shader target it loads */
+    int (*cache_usable)(const hfx_device *dev);            /* a program cache; NULL: none */
+    void (*save_units)(hfx_device *dev, struct hfx_saved *s, uint32_t mask); /* begin's texture units; NULL: none */
+    int (*effect_begin)(hfx_effect *e);                    /* another back end's Begin / End (GL's are gl/apply.c's) */
+    int (*effect_end)(hfx_effect *e);
+} hfx_backend;
+
 struct hfx_device {
+    const hfx_backend *be;
+    struct hfx_vk_device *vk;      /* runtime/vk/: the Vulkan device's state, NULL on GL */
     hfx_gl gl;
     hfx_gl_spirv spirv;            /* runtime/spirv_load.c */
     char error[1024];
@@ -234,8 +256,9 @@ typedef struct hfx_rt_pass {
 } hfx_rt_pass;
 
 /* The shared part of an effect. */
-typedef struct hfx_shared {
+struct hfx_shared {
     int refs;
+    struct hfx_vk_shared *vk; /* runtime/vk/: pipelines' programs and samplers, NULL on GL */
     hfx_device *dev;
     hfx_fx_effect *fx;
     hfx_rt_program *programs;
@@ -246,7 +269,7 @@ typedef struct hfx_shared {
     char *warnings;
     size_t warnings_len;
     struct hfx_annotation *annotations;
-} hfx_shared;
+};
 
 struct hfx_annotation {
     hfx_shared *sh;
@@ -306,13 +329,13 @@ typedef struct hfx_watch {
 } hfx_watch;
 
 /* What hfx_effect_begin saved. */
-typedef struct hfx_saved {
+struct hfx_saved {
     int active;
     hfx_glstate state;
     GLint program, active_unit;
     struct { GLint tex[4], sampler; } units[HFX_MAX_UNITS]; /* 1D, 2D, 3D, cube */
     hfx_rs_value alpha_test[3]; /* AlphaTestEnable, AlphaFunc, AlphaRef: D3D states GL does not hold */
-} hfx_saved;
+};
 
 struct hfx_effect {
     /* Change log, so Apply visits only the parameters changed since a program last looked:
@@ -327,7 +350,9 @@ struct hfx_effect {
     hfx_shared *sh;
     hfx_device *dev;
     uint32_t *values;       /* copy of fx->values */
-    GLuint *textures;       /* per parameter (objects) */
+    uint64_t *textures;     /* per parameter: a GL texture name, or a VkImageView */
+    uint32_t *texture_layouts; /* per parameter: the VkImageLayout it is sampled in (Vulkan) */
+    struct hfx_vk_instance *vk; /* runtime/vk/: per-instance Vulkan state, NULL on GL */
     hfx_param *params;
     hfx_technique *techniques;
     hfx_pass *passes;
@@ -353,10 +378,18 @@ static inline void hfx_rt_use_program(hfx_device *dev, GLuint program) {
     dev->program = program;
 }
 
-/* device.c */
+/* gl/backend.c: the OpenGL back end's table. */
+extern const hfx_backend hfx_gl_backend;
+
+/* state_values.c: render and sampler states as data (D3D9's defaults, a state's current value). */
+void hfx_rs_defaults(hfx_rs_value *rs);
+void hfx_rs_resolve(const hfx_effect *fx, const hfx_fx_state *st, hfx_rs_value *out);
+
+/* device_core.c */
 int hfx_rt_fail(hfx_device *dev, int code, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 /* A load-time warning about the effect, at st's position when it has one (hfx_effect_warnings). */
 void hfx_shared_warn(hfx_shared *sh, const hfx_fx_state *st, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+void hfx_gl_device_destroy(hfx_device *dev);
 void hfx_rt_read_state(hfx_device *dev, hfx_glstate *s);
 void hfx_rt_write_state(hfx_device *dev, const hfx_glstate *want);
 void hfx_rt_bind_unit(hfx_device *dev, int unit, GLenum target, GLuint texture, GLuint sampler);
@@ -463,9 +496,7 @@ enum { /* GL state groups */
     G_DITHER = 1u << 10, G_LINESMOOTH = 1u << 11, G_SAMPLEMASK = 1u << 12, G_CLIP = 1u << 13,
     G_ALPHATEST = 1u << 14
 };
-void hfx_rs_defaults(hfx_rs_value *rs);
 uint32_t hfx_rs_group(uint32_t id);
-void hfx_rs_resolve(const hfx_effect *fx, const hfx_fx_state *st, hfx_rs_value *out);
 void hfx_rs_check(hfx_shared *sh, const hfx_fx_state *st, uint32_t program);
 void hfx_rs_apply(hfx_effect *fx, const hfx_rt_pass *pass);
 void hfx_rs_alpha_test(hfx_device *dev, hfx_rt_program *p);

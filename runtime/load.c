@@ -11,18 +11,7 @@
 
 /* Everything but the compiled effect, which a failed load hands back to its caller. */
 static void shared_release(hfx_shared *sh) {
-    hfx_device *dev = sh->dev;
-    if (sh->programs)
-        for (uint32_t i = 0; i < sh->fx->program_count; i++) hfx_rt_program_free(dev, &sh->programs[i]);
-    free(sh->programs);
-    for (uint32_t i = 0; i < sh->sampler_count; i++) hfx_rt_sampler_free(dev, &sh->samplers[i]);
-    free(sh->samplers);
-    if (sh->passes)
-        for (uint32_t i = 0; i < sh->fx->pass_count; i++) {
-            free(sh->passes[i].render_states);
-            free(sh->passes[i].bindings);
-        }
-    free(sh->passes);
+    sh->dev->be->shared_release(sh);
     free(sh->annotations);
     free(sh->warnings);
     free(sh);
@@ -68,7 +57,7 @@ static int check_effect(hfx_device *dev, const hfx_fx_effect *fx, hfx_target tar
         if ((uint64_t)fx->techniques[i].first_pass + fx->techniques[i].pass_count > fx->pass_count ||
             (uint64_t)fx->techniques[i].first_annotation + fx->techniques[i].annotation_count > fx->annotation_count)
             return hfx_rt_fail(dev, HFX_ERR_LOAD, "%s: technique %u lies outside the effect's data", name, (unsigned)i);
-    return target == HFX_TARGET_SPIRV ? hfx_rt_spirv_check(dev, fx) : HFX_OK;
+    return HFX_OK;
 }
 
 static hfx_shared *shared_create(hfx_device *dev, hfx_fx_effect *fx, hfx_target target) {
@@ -78,23 +67,14 @@ static hfx_shared *shared_create(hfx_device *dev, hfx_fx_effect *fx, hfx_target 
     sh->refs = 1;
     sh->dev = dev;
     sh->fx = fx;
-    sh->programs = calloc(fx->program_count ? fx->program_count : 1, sizeof *sh->programs);
-    sh->passes = calloc(fx->pass_count ? fx->pass_count : 1, sizeof *sh->passes);
     sh->annotations = calloc(fx->annotation_count ? fx->annotation_count : 1, sizeof *sh->annotations);
-    if (!sh->programs || !sh->passes || !sh->annotations) {
+    if (!sh->annotations) {
         hfx_rt_fail(dev, HFX_ERR_MEMORY, "out of memory");
         shared_release(sh);
         return NULL;
     }
     for (uint32_t i = 0; i < fx->annotation_count; i++) sh->annotations[i] = (struct hfx_annotation){sh, &fx->annotations[i]};
-    uint32_t cap = 0;
-    int rc = HFX_OK;
-    for (uint32_t i = 0; i < fx->program_count && !rc; i++)
-        rc = target == HFX_TARGET_SPIRV ? hfx_rt_spirv_program_build(sh, i) : hfx_rt_program_build(sh, i, target);
-    if (!rc) rc = hfx_rt_samplers_make(sh, &cap);
-    for (uint32_t i = 0; i < fx->pass_count && !rc; i++) rc = hfx_rt_pass_build(sh, &cap, i);
-    while (dev->gl.GetError() != GL_NO_ERROR) {}
-    if (rc) {
+    if (dev->be->shared_build(sh, target)) {
         shared_release(sh);
         return NULL;
     }
@@ -108,7 +88,8 @@ static uint32_t root_of(const hfx_fx_effect *fx, uint32_t i) {
 }
 
 static void instance_free(hfx_effect *e) {
-    free(e->values), free(e->stamps), free(e->textures), free(e->params), free(e->techniques), free(e->passes);
+    if (e->dev->be->instance_free) e->dev->be->instance_free(e);
+    free(e->values), free(e->stamps), free(e->textures), free(e->texture_layouts), free(e->params), free(e->techniques), free(e->passes);
     free(e->log);
     free(e->path);
     hfx_rt_watch_free(&e->watch);
@@ -126,6 +107,7 @@ static hfx_effect *instance_create(hfx_shared *sh, const hfx_effect *src) {
     e->values = calloc(fx->value_words ? fx->value_words : 1, sizeof *e->values);
     e->stamps = calloc((size_t)fx->top_param_count + 1, sizeof *e->stamps); /* + 1: outside any */
     e->textures = calloc(fx->param_count ? fx->param_count : 1, sizeof *e->textures);
+    e->texture_layouts = calloc(fx->param_count ? fx->param_count : 1, sizeof *e->texture_layouts);
     e->params = calloc(fx->param_count ? fx->param_count : 1, sizeof *e->params);
     e->techniques = calloc(fx->technique_count ? fx->technique_count : 1, sizeof *e->techniques);
     e->passes = calloc(fx->pass_count ? fx->pass_count : 1, sizeof *e->passes);
@@ -133,7 +115,7 @@ static hfx_effect *instance_create(hfx_shared *sh, const hfx_effect *src) {
     while (ring < 4 * (uint64_t)fx->top_param_count + 64 && ring < (1u << 30)) ring *= 2;
     e->log_mask = ring - 1;
     e->log = malloc(ring * sizeof *e->log);
-    if (!e->values || !e->stamps || !e->textures || !e->params || !e->techniques || !e->passes || !e->log) {
+    if (!e->values || !e->stamps || !e->textures || !e->texture_layouts || !e->params || !e->techniques || !e->passes || !e->log) {
         instance_free(e);
         return NULL;
     }
@@ -143,6 +125,7 @@ static hfx_effect *instance_create(hfx_shared *sh, const hfx_effect *src) {
     if (values && fx->value_words) memcpy(e->values, values, fx->value_words * sizeof *e->values);
     for (uint32_t i = 0; i <= fx->top_param_count; i++) e->stamps[i] = src ? src->stamps[i] : ++sh->dev->stamp;
     if (src) memcpy(e->textures, src->textures, fx->param_count * sizeof *e->textures);
+    if (src) memcpy(e->texture_layouts, src->texture_layouts, fx->param_count * sizeof *e->texture_layouts);
     for (uint32_t i = 0; i < fx->param_count; i++) {
         const hfx_fx_param *fp = &fx->params[i];
         uint32_t root = root_of(fx, i);
@@ -153,8 +136,12 @@ static hfx_effect *instance_create(hfx_shared *sh, const hfx_effect *src) {
                                    root < fx->top_param_count ? root : fx->top_param_count, accept, i, fp};
     }
     for (uint32_t i = 0; i < fx->technique_count; i++) e->techniques[i] = (hfx_technique){e, i};
-    for (uint32_t i = 0; i < fx->pass_count; i++) e->passes[i] = (hfx_pass){e, &sh->passes[i], i, NULL, 0};
+    for (uint32_t i = 0; i < fx->pass_count; i++) e->passes[i] = (hfx_pass){e, sh->passes ? &sh->passes[i] : NULL, i, NULL, 0};
     e->current = src ? src->current : 0;
+    if (sh->dev->be->instance_init && sh->dev->be->instance_init(e)) {
+        instance_free(e);
+        return NULL;
+    }
     return e;
 }
 
@@ -213,7 +200,9 @@ static hfx_effect *load_compiled(hfx_device *dev, hfx_fx_effect *fx, const hfx_l
  * the usual way, self-check included. Saves most of a cached .fx load (bench/bench_load). */
 static hfx_effect *load_cached_fx(hfx_device *dev, const char *path, const void *data, size_t size, const char *name,
                                   const hfx_load_options *opt, char **errors, hfx_rt_files *deps) {
-    if ((opt && (opt->no_self_check || opt->target == HFX_TARGET_SPIRV)) || !hfx_rt_program_cache_usable(dev)) return NULL;
+    if ((opt && (opt->no_self_check || opt->target == HFX_TARGET_SPIRV)) || !dev->be->cache_usable ||
+        !dev->be->cache_usable(dev))
+        return NULL;
     hfx_load_options quick = opt ? *opt : (hfx_load_options){0};
     quick.no_self_check = 1;
     char *diag = NULL;
@@ -237,6 +226,13 @@ static hfx_effect *load(hfx_device *dev, const char *path, const void *data, siz
                         const hfx_load_options *opt, char **errors, hfx_rt_files *deps) {
     if (errors) *errors = NULL;
     if (!dev) return NULL;
+    hfx_load_options own; /* the back end's own target (Vulkan loads SPIR-V for Vulkan, whatever was asked) */
+    hfx_target asked = opt ? opt->target : HFX_TARGET_GLSL330;
+    if (dev->be->target_for(asked) != asked) {
+        own = opt ? *opt : (hfx_load_options){0};
+        own.target = dev->be->target_for(asked);
+        opt = &own;
+    }
     dev->error[0] = '\0';
     hfx_fx_effect *fx;
     bool is_hfxo = data && hfx_fx_is_hfxo(data, size);

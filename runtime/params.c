@@ -281,7 +281,7 @@ int hfx_param_get_texture(const hfx_param *p, unsigned int *out) {
 unsigned int hfx_param_texture_target(const hfx_param *p) {
     if (!p || !is_texture_like(info(p))) return 0;
     const hfx_shared *sh = p->fx->sh;
-    for (uint32_t i = 0; i < sh->fx->pass_count; i++)
+    for (uint32_t i = 0; sh->passes && i < sh->fx->pass_count; i++)
         for (uint32_t b = 0; b < sh->passes[i].binding_count; b++) {
             const hfx_rt_binding *bd = &sh->passes[i].bindings[b];
             if (bd->texture_param == p->index || bd->sampler_param == p->index) return bd->target;

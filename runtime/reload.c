@@ -82,7 +82,7 @@ static void keep_saved_units(hfx_effect *to, const hfx_effect *from) {
     if (!from->saved.active) return;
     uint32_t fresh = to->sh->unit_mask & ~from->sh->unit_mask;
     to->sh->unit_mask |= from->sh->unit_mask;
-    if (fresh) hfx_rt_save_units(to->dev, &to->saved, fresh);
+    if (fresh && to->dev->be->save_units) to->dev->be->save_units(to->dev, &to->saved, fresh);
 }
 
 /* Handles point back at their effect: after the swap they must name the address they live in. */

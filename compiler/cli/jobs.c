@@ -11,7 +11,8 @@
 
 #include "cli.h"
 
-static const char *const target_names[HFX_TARGET_COUNT] = {"glsl330", "glsles300", "glsl110", "spirv"};
+static const char *const target_names[HFX_TARGET_COUNT] = {"glsl330", "glsles300", "glsl110", "spirv",
+                                                                   "spirv-vk"};
 
 const char *cli_target_name(int target) {
     return target >= 0 && target < HFX_TARGET_COUNT ? target_names[target] : "?";
@@ -98,7 +99,7 @@ static void emit_program(cli_job *job, const char *base, const char *suffix, con
         const hfx_fx_code *c = &prog->code[s][target];
         if (!c->data) continue;
         char path[4096];
-        snprintf(path, sizeof path, "%s%s.%s%s", base, suffix, ext[s], target == HFX_TARGET_SPIRV ? ".spv" : "");
+        snprintf(path, sizeof path, "%s%s.%s%s", base, suffix, ext[s], target >= HFX_TARGET_SPIRV ? ".spv" : "");
         if (!write_file(path, c->data, c->size, &job->error)) job->ok = false;
     }
 }

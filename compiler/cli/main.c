@@ -20,7 +20,7 @@ static const char usage_text[] =
     "  -I, /I DIR            add an include folder\n"
     "  /T PROFILE            fx_2_0 (default), or vs_3_0, ps_2_0... with /E\n"
     "  /E NAME               compile one entry point with the /T profile\n"
-    "  --target T            glsl330, glsles300, glsl110, spirv (repeat or comma-separate)\n"
+    "  --target T            glsl330, glsles300, glsl110, spirv, spirv-vk (repeat or comma-separate)\n"
     "  --emit-glsl DIR       write each pass's shaders: <effect>.<technique>.<pass>.vert/.frag\n"
     "  --reflect             print the effect and its compiled interface as JSON\n"
     "  --annotations         print parameters, annotations, techniques and states as JSON\n"

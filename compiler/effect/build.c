@@ -379,7 +379,7 @@ static hfx_builder *builder_start(hfx_arena *arena, hfx_diags *diags, hfx_types 
     b->types = types;
     b->ast = ast;
     b->targets = targets;
-    if (targets & (1u << HFX_TARGET_SPIRV)) b->targets |= 1u << HFX_TARGET_GLSL330; /* SPIR-V is made from it */
+    if (targets & (3u << HFX_TARGET_SPIRV)) b->targets |= 1u << HFX_TARGET_GLSL330; /* SPIR-V is made from it */
     b->fx = ast ? calloc(1, sizeof *b->fx) : NULL;
     if (!b->fx) {
         hfx_arena_forget(arena, b->cleanup);
@@ -431,25 +431,35 @@ static void warn_bool_uniforms(hfx_builder *b, const hfx_fx_program *p) {
     }
 }
 
-/* HFX_TARGET_SPIRV: every program's GLSL 330 through glslang (spirv.c); the GLSL 330 goes
- * again unless it was asked for too. Without glslang nothing is made (hfxc says so). */
+/* One SPIR-V target for every program (spirv.c), each failure an error at the program. */
+static void build_spirv_target(hfx_builder *b, int target) {
+    hfx_fx_effect *fx = b->fx;
+    for (uint32_t i = 0; i < fx->program_count; i++) {
+        char *log = NULL;
+        int rc = target == HFX_TARGET_SPIRV_VK ? hfx_spirv_vk_program(fx, &fx->programs[i], &log)
+                                               : hfx_spirv_program(fx, &fx->programs[i], &log);
+        if (rc != 0) {
+            char name[256];
+            program_name(fx, i, name, sizeof name);
+            hfx_error(b->diags, (hfx_loc){0, 1, 1}, X_UNSUPPORTED, "'%s': SPIR-V generation failed: %s", name,
+                      log ? log : "glslang gave no reason");
+        }
+        free(log);
+        if (target == HFX_TARGET_SPIRV) warn_bool_uniforms(b, &fx->programs[i]);
+    }
+}
+
+/* HFX_TARGET_SPIRV and HFX_TARGET_SPIRV_VK: every program's GLSL 330 through glslang (spirv.c);
+ * the GLSL 330 goes again unless it was asked for too. Without glslang nothing is made (hfxc
+ * says so). */
 static void build_spirv(hfx_builder *b, unsigned requested) {
     hfx_fx_effect *fx = b->fx;
-    if ((requested & (1u << HFX_TARGET_SPIRV)) && fx->program_count && hfx_spirv_available()) {
+    if ((requested & (3u << HFX_TARGET_SPIRV)) && fx->program_count && hfx_spirv_available()) {
         if (!hfx_spirv_begin()) {
             hfx_error(b->diags, (hfx_loc){0, 1, 1}, X_UNSUPPORTED, "SPIR-V: glslang could not start");
         } else {
-            for (uint32_t i = 0; i < fx->program_count; i++) {
-                char *log = NULL;
-                if (hfx_spirv_program(fx, &fx->programs[i], &log) != 0) {
-                    char name[256];
-                    program_name(fx, i, name, sizeof name);
-                    hfx_error(b->diags, (hfx_loc){0, 1, 1}, X_UNSUPPORTED, "'%s': SPIR-V generation failed: %s", name,
-                              log ? log : "glslang gave no reason");
-                }
-                free(log);
-                warn_bool_uniforms(b, &fx->programs[i]);
-            }
+            for (int t = HFX_TARGET_SPIRV; t <= HFX_TARGET_SPIRV_VK; t++)
+                if (requested & (1u << t)) build_spirv_target(b, t);
             hfx_spirv_end();
         }
     }
@@ -462,7 +472,8 @@ static void build_spirv(hfx_builder *b, unsigned requested) {
             }
 }
 
-static const char *const target_names[HFX_TARGET_COUNT] = {"GLSL 330", "GLSL ES 300", "GLSL 110", "SPIR-V"};
+static const char *const target_names[HFX_TARGET_COUNT] = {"GLSL 330", "GLSL ES 300", "GLSL 110", "SPIR-V",
+                                                                   "SPIR-V for Vulkan"};
 
 /* glslang's first error line, for a one-line diagnostic. */
 static void first_error(const char *log, char *out, size_t size) {

@@ -327,7 +327,7 @@ int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps,
     io.reg_count = out->reg_count;
     io.alpha_test = cg->alpha_test;
     for (int t = 0; t < HFX_TARGET_COUNT; t++) {
-        if (!(cg->targets & (1u << t)) || t == HFX_TARGET_SPIRV) continue;
+        if (!(cg->targets & (1u << t)) || t >= HFX_TARGET_SPIRV) continue;
         for (int s = 0; s < 2; s++) {
             char *text = print_stage(cg, sh[s], s, &io, (hfx_target)t, out);
             if (!text) return -1;

@@ -255,6 +255,204 @@ char *hfx_spirv_glsl(const hfx_fx_effect *fx, const hfx_fx_program *p, int stage
     return r.out.d;
 }
 
+/* --- Vulkan: one uniform block for both stages, samplers at bindings ---------------------------- */
+
+enum { MAX_MEMBERS = 1024 };
+
+/* The loose (non-sampler) uniforms of both stages, vertex first, each name once: both stages
+ * declare the same block, so one buffer slice serves the program and the stages link. */
+typedef struct vk_members {
+    sbuf text, structs;     /* the members; every stage's struct types, for a stage that lacks one */
+    const char *vary[MAX_MEMBERS]; /* the vertex stage's outputs in order: their locations */
+    size_t vary_lens[MAX_MEMBERS];
+    uint32_t vary_count;
+    const char *names[MAX_MEMBERS];
+    size_t lens[MAX_MEMBERS];
+    uint32_t count;
+} vk_members;
+
+typedef struct vk_rewrite {
+    sbuf out;
+    int stage;
+    uint32_t extra_inputs;  /* pixel inputs no vertex output matches: after the others */
+    const vk_members *members;
+    const hfx_fx_program *prog;
+    const char *src;
+    uint32_t loose, seen;   /* loose uniforms in this stage, and those passed so far */
+} vk_rewrite;
+
+static bool is_sampler(const uniform_decl *u) { return u->type_len >= 7 && strncmp(u->type, "sampler", 7) == 0; }
+
+static void collect_member(void *ctx, const uniform_decl *u, const char *line, const char *next) {
+    vk_members *m = ctx;
+    (void)line;
+    if (!u || is_sampler(u) || m->count == MAX_MEMBERS) return;
+    for (uint32_t i = 0; i < m->count; i++)
+        if (m->lens[i] == u->name_len && strncmp(m->names[i], u->name, u->name_len) == 0) return;
+    m->names[m->count] = u->name;
+    m->lens[m->count++] = u->name_len;
+    sb_put(&m->text, "    ");
+    sb_putn(&m->text, u->type, (size_t)(next - u->type));
+    if (next == u->type || next[-1] != '\n') sb_put(&m->text, "\n");
+}
+
+static void count_loose(void *ctx, const uniform_decl *u, const char *line, const char *next) {
+    (void)line, (void)next;
+    if (u && !is_sampler(u)) ((vk_rewrite *)ctx)->loose++;
+}
+
+/* GL's remap of D3D's 0..1 depth to -1..1: Vulkan's clip space already has D3D's depth. */
+static bool is_depth_remap(const char *line, const char *next) {
+    static const char remap[] = "gl_Position.z = gl_Position.z * 2.0 - gl_Position.w;";
+    for (const char *q = line; q + sizeof remap - 1 <= next; q++)
+        if (memcmp(q, remap, sizeof remap - 1) == 0) return true;
+    return false;
+}
+
+/* The text of a top-level `struct NAME ... };` starting at s, up to its end; NULL when s does
+ * not start one. *name / *len get the name. */
+static const char *struct_end(const char *s, const char **name, size_t *len) {
+    if (strncmp(s, "struct ", 7) != 0 || !ident_start(s[7])) return NULL;
+    *name = s + 7;
+    for (*len = 0; ident_char((*name)[*len]); ++*len) {}
+    const char *e = strstr(s, "\n};");
+    return e ? e + 4 : NULL;
+}
+
+/* Whether src defines struct name[0..len) at the start of a line. */
+static bool defines_struct(const char *src, const char *name, size_t len) {
+    for (const char *q = src; q; q = strchr(q, '\n'), q = q ? q + 1 : NULL) {
+        const char *n;
+        size_t l;
+        if (struct_end(q, &n, &l) && l == len && strncmp(n, name, len) == 0) return true;
+    }
+    return false;
+}
+
+/* Every stage's struct types, each once, so a stage can declare the block's members whose
+ * type only the other stage defines. */
+static void collect_structs(vk_members *m, const char *src) {
+    for (const char *q = src; q; q = strchr(q, '\n'), q = q ? q + 1 : NULL) {
+        const char *name;
+        size_t len;
+        const char *end = struct_end(q, &name, &len);
+        if (!end) continue;
+        if (m->structs.d && defines_struct(m->structs.d, name, len)) continue;
+        sb_putn(&m->structs, q, (size_t)(end - q));
+        sb_put(&m->structs, "\n");
+    }
+}
+
+/* The structs of the other stage this one lacks (whole definitions, in their order). */
+static void missing_structs(vk_rewrite *r) {
+    const char *all = r->members->structs.d;
+    for (const char *q = all; q; q = strchr(q, '\n'), q = q ? q + 1 : NULL) {
+        const char *name, *end;
+        size_t len;
+        if (!(end = struct_end(q, &name, &len)) || defines_struct(r->src, name, len)) continue;
+        sb_putn(&r->out, q, (size_t)(end - q));
+        sb_put(&r->out, "\n");
+    }
+}
+
+/* A varying declared without a location (`out vec4 hfx_v_X;`, maybe `flat`): the name's
+ * start and length, and where the declaration starts; false for any other line. */
+static bool parse_varying(const char *line, const char *next, const char *word, const char **decl, const char **name,
+                          size_t *len) {
+    const char *q = line;
+    if (strncmp(q, "flat ", 5) == 0) q += 5;
+    else if (strncmp(q, "noperspective ", 14) == 0) q += 14;
+    size_t w = strlen(word);
+    if (strncmp(q, word, w) != 0 || q[w] != ' ') return false;
+    const char *semi = memchr(q, ';', (size_t)(next - q));
+    if (!semi) return false;
+    const char *e = semi;
+    while (e > q && !ident_char(e[-1])) e--;
+    const char *b = e;
+    while (b > q && ident_char(b[-1])) b--;
+    *decl = line, *name = b, *len = (size_t)(e - b);
+    return *len > 0;
+}
+
+static void collect_varying(void *ctx, const uniform_decl *u, const char *line, const char *next) {
+    vk_members *m = ctx;
+    const char *decl, *name;
+    size_t len;
+    if (u || m->vary_count == MAX_MEMBERS || !parse_varying(line, next, "out", &decl, &name, &len)) return;
+    m->vary[m->vary_count] = name;
+    m->vary_lens[m->vary_count++] = len;
+}
+
+/* Varyings get explicit locations (Vulkan needs them; glslang's automatic ones would reach
+ * the samplers too): the vertex outputs' order, which the pixel inputs look up by name. */
+static bool vk_varying(vk_rewrite *r, const char *line, const char *next) {
+    const char *decl, *name;
+    size_t len;
+    if (!parse_varying(line, next, r->stage == HFX_STAGE_VERTEX ? "out" : "in", &decl, &name, &len)) return false;
+    uint32_t loc = r->members->vary_count + r->extra_inputs;
+    for (uint32_t i = 0; i < r->members->vary_count; i++)
+        if (r->members->vary_lens[i] == len && strncmp(r->members->vary[i], name, len) == 0) loc = i;
+    if (loc >= r->members->vary_count) r->extra_inputs++;
+    sb_printf(&r->out, "layout(location = %u) ", (unsigned)loc);
+    sb_putn(&r->out, decl, (size_t)(next - decl));
+    return true;
+}
+
+/* The block takes the stage's last loose uniform's place: every type its members use is
+ * declared by then, and no function reads a uniform before all are declared. */
+static void vk_uniform(vk_rewrite *r) {
+    if (++r->seen < r->loose) return;
+    missing_structs(r);
+    sb_printf(&r->out, "layout(std140, set = 0, binding = %d) uniform hfx_block\n{\n%s};\n", HFX_VK_BINDING_BLOCK,
+              r->members->text.d ? r->members->text.d : "");
+}
+
+static void vk_line(void *ctx, const uniform_decl *u, const char *line, const char *next) {
+    vk_rewrite *r = ctx;
+    if (line == r->src && strncmp(line, "#version ", 9) == 0) {
+        sb_printf(&r->out, "#version 450 core\n");
+    } else if (!u) {
+        if (!is_depth_remap(line, next) && !vk_varying(r, line, next)) sb_putn(&r->out, line, (size_t)(next - line));
+    } else if (is_sampler(u)) {
+        int64_t k = hfx_fx_spirv_sampler(r->prog, u->name, u->name_len);
+        sb_printf(&r->out, "layout(set = 0, binding = %lld) ",
+                  (long long)HFX_VK_BINDING_SAMPLER0 + (k >= 0 ? k : (int64_t)r->prog->sampler_count));
+        sb_putn(&r->out, u->line, (size_t)(next - u->line));
+    } else {
+        vk_uniform(r);
+    }
+}
+
+char *hfx_spirv_vk_glsl(const hfx_fx_effect *fx, const hfx_fx_program *p, int stage) {
+    if (!fx || !p || stage < 0 || stage >= HFX_STAGE_COUNT || !p->code[stage][HFX_TARGET_GLSL330].data) return NULL;
+    vk_members *m = calloc(1, sizeof *m);
+    if (!m) return NULL;
+    for (int st = 0; st < HFX_STAGE_COUNT; st++)
+        if (p->code[st][HFX_TARGET_GLSL330].data) {
+            scan_lines(p->code[st][HFX_TARGET_GLSL330].data, collect_member, m);
+            collect_structs(m, p->code[st][HFX_TARGET_GLSL330].data);
+        }
+    if (p->code[HFX_STAGE_VERTEX][HFX_TARGET_GLSL330].data)
+        scan_lines(p->code[HFX_STAGE_VERTEX][HFX_TARGET_GLSL330].data, collect_varying, m);
+    vk_rewrite r;
+    memset(&r, 0, sizeof r);
+    r.members = m;
+    r.stage = stage;
+    r.prog = p;
+    r.src = p->code[stage][HFX_TARGET_GLSL330].data;
+    scan_lines(r.src, count_loose, &r);
+    scan_lines(r.src, vk_line, &r);
+    bool bad = r.out.oom || m->text.oom || m->structs.oom || !r.out.d;
+    sb_free(&m->text);
+    sb_free(&m->structs);
+    free(m);
+    if (bad) {
+        sb_free(&r.out);
+        return NULL;
+    }
+    return r.out.d;
+}
+
 /* --- reflection ------------------------------------------------------------------------------- */
 
 enum { OP_NAME = 5, OP_DECORATE = 71, DEC_BINDING = 33, DEC_LOCATION = 30 };
@@ -369,13 +567,13 @@ static const char *const stage_names[HFX_STAGE_COUNT] = {"vertex", "fragment"};
 
 #define MESSAGES GLSLANG_MSG_SPV_RULES_BIT
 
-static glslang_shader_t *compile_stage(const char *src, int stage, char **log) {
+static glslang_shader_t *compile_stage(const char *src, int stage, bool vulkan, char **log) {
     glslang_input_t in;
     memset(&in, 0, sizeof in);
     in.language = GLSLANG_SOURCE_GLSL;
     in.stage = stages[stage];
-    in.client = GLSLANG_CLIENT_OPENGL;
-    in.client_version = GLSLANG_TARGET_OPENGL_450;
+    in.client = vulkan ? GLSLANG_CLIENT_VULKAN : GLSLANG_CLIENT_OPENGL;
+    in.client_version = vulkan ? GLSLANG_TARGET_VULKAN_1_0 : GLSLANG_TARGET_OPENGL_450;
     in.target_language = GLSLANG_TARGET_SPV;
     in.target_language_version = GLSLANG_TARGET_SPV_1_0;
     in.code = src;
@@ -388,7 +586,7 @@ static glslang_shader_t *compile_stage(const char *src, int stage, char **log) {
     /* Varyings carry no location in the GLSL: glslang gives them matching ones when linking.
      * Bindings are not auto-mapped: samplers have theirs (the texture unit), and a binding on
      * a loose non-opaque uniform means nothing to OpenGL. */
-    glslang_shader_set_options(sh, GLSLANG_SHADER_AUTO_MAP_LOCATIONS);
+    if (!vulkan) glslang_shader_set_options(sh, GLSLANG_SHADER_AUTO_MAP_LOCATIONS); /* Vulkan's are explicit */
     if (!glslang_shader_preprocess(sh, &in) || !glslang_shader_parse(sh, &in)) {
         char what[64];
         snprintf(what, sizeof what, "%s shader: ", stage_names[stage]);
@@ -400,7 +598,9 @@ static glslang_shader_t *compile_stage(const char *src, int stage, char **log) {
     return sh;
 }
 
-int hfx_spirv_program(const hfx_fx_effect *fx, hfx_fx_program *p, char **log) {
+/* Both stages of p for `target` (HFX_TARGET_SPIRV or HFX_TARGET_SPIRV_VK). */
+static int spirv_program(const hfx_fx_effect *fx, hfx_fx_program *p, int target, char **log) {
+    bool vulkan = target == HFX_TARGET_SPIRV_VK;
     if (log) *log = NULL;
     char *dummy = NULL, **lg = log ? log : &dummy;
     glslang_shader_t *sh[HFX_STAGE_COUNT] = {NULL, NULL};
@@ -408,13 +608,13 @@ int hfx_spirv_program(const hfx_fx_effect *fx, hfx_fx_program *p, char **log) {
     int rc = prog ? 0 : -1, stages_in = 0;
     for (int s = 0; s < HFX_STAGE_COUNT && rc == 0; s++) {
         if (!p->code[s][HFX_TARGET_GLSL330].data) continue;
-        char *src = hfx_spirv_glsl(fx, p, s);
+        char *src = vulkan ? hfx_spirv_vk_glsl(fx, p, s) : hfx_spirv_glsl(fx, p, s);
         if (!src) {
             *lg = append_log(*lg, "", "out of memory rewriting the GLSL for SPIR-V");
             rc = -1;
             break;
         }
-        sh[s] = compile_stage(src, s, lg);
+        sh[s] = compile_stage(src, s, vulkan, lg);
         free(src);
         if (!sh[s]) rc = -1;
         else glslang_program_add_shader(prog, sh[s]), stages_in++;
@@ -448,21 +648,29 @@ int hfx_spirv_program(const hfx_fx_effect *fx, hfx_fx_program *p, char **log) {
         }
         memcpy(data, w, words * 4);
         data[words * 4] = 0;
-        free(p->code[s][HFX_TARGET_SPIRV].data);
-        p->code[s][HFX_TARGET_SPIRV].data = data;
-        p->code[s][HFX_TARGET_SPIRV].size = words * 4;
+        free(p->code[s][target].data);
+        p->code[s][target].data = data;
+        p->code[s][target].size = words * 4;
     }
     if (prog) glslang_program_delete(prog);
     for (int s = 0; s < HFX_STAGE_COUNT; s++)
         if (sh[s]) glslang_shader_delete(sh[s]);
     if (rc != 0)
         for (int s = 0; s < HFX_STAGE_COUNT; s++) {
-            free(p->code[s][HFX_TARGET_SPIRV].data);
-            p->code[s][HFX_TARGET_SPIRV].data = NULL;
-            p->code[s][HFX_TARGET_SPIRV].size = 0;
+            free(p->code[s][target].data);
+            p->code[s][target].data = NULL;
+            p->code[s][target].size = 0;
         }
     free(dummy);
     return rc;
+}
+
+int hfx_spirv_program(const hfx_fx_effect *fx, hfx_fx_program *p, char **log) {
+    return spirv_program(fx, p, HFX_TARGET_SPIRV, log);
+}
+
+int hfx_spirv_vk_program(const hfx_fx_effect *fx, hfx_fx_program *p, char **log) {
+    return spirv_program(fx, p, HFX_TARGET_SPIRV_VK, log);
 }
 
 #else /* built without glslang */
@@ -475,6 +683,10 @@ int hfx_spirv_program(const hfx_fx_effect *fx, hfx_fx_program *p, char **log) {
     (void)fx, (void)p;
     if (log) *log = append_log(NULL, "", "hfx was built without glslang: no SPIR-V");
     return -1;
+}
+
+int hfx_spirv_vk_program(const hfx_fx_effect *fx, hfx_fx_program *p, char **log) {
+    return hfx_spirv_program(fx, p, log);
 }
 
 #endif

@@ -32,6 +32,13 @@ char *hfx_spirv_glsl(const hfx_fx_effect *fx, const hfx_fx_program *p, int stage
  * glslang's messages in *log (malloc'ed, may be NULL). */
 int hfx_spirv_program(const hfx_fx_effect *fx, hfx_fx_program *p, char **log);
 
+/* Vulkan (HFX_TARGET_SPIRV_VK): the same GLSL 330 with the loose uniforms of both stages gathered
+ * into one std140 block `hfx_block` that both declare (set 0, binding HFX_VK_BINDING_BLOCK; the
+ * runtime reads the members' offsets from the module), samplers at HFX_VK_BINDING_SAMPLER0 + their index in
+ * p->samplers, and no depth remap (Vulkan's clip depth is D3D's 0..1). Compiled for Vulkan 1.0. */
+char *hfx_spirv_vk_glsl(const hfx_fx_effect *fx, const hfx_fx_program *p, int stage);
+int hfx_spirv_vk_program(const hfx_fx_effect *fx, hfx_fx_program *p, char **log);
+
 /* The location the SPIR-V of program p gives the uniform `glsl_name`: p->uniforms in their order
  * (sorted by parameter) take GL's locations one after the other (1 per scalar, vector, matrix;
  * arrays and structs 1 per element / member; none for a packed one), then hfx_c (p->reg_count

@@ -28,7 +28,8 @@ enum {
     HFX_ERR_NOT_FOUND = -4, /* unknown name or index */
     HFX_ERR_GL = -5,        /* OpenGL refused (compile, link, missing entry point) */
     HFX_ERR_LOAD = -6,      /* the effect did not compile or the file is not valid */
-    HFX_ERR_MEMORY = -7
+    HFX_ERR_MEMORY = -7,
+    HFX_ERR_VULKAN = -8     /* Vulkan refused (a failed call, a missing feature or format) */
 };
 
 /* Parameter classes and types: XNA's EffectParameterClass / EffectParameterType (D3DX's). */
@@ -45,7 +46,9 @@ typedef enum {
 
 /* Shader languages a compiled effect may carry. */
 typedef enum {
-    HFX_TARGET_GLSL330, HFX_TARGET_GLSLES300, HFX_TARGET_GLSL110, HFX_TARGET_SPIRV, HFX_TARGET_COUNT
+    HFX_TARGET_GLSL330, HFX_TARGET_GLSLES300, HFX_TARGET_GLSL110, HFX_TARGET_SPIRV,
+    HFX_TARGET_SPIRV_VK, /* SPIR-V for Vulkan: uniforms in blocks, descriptor sets and bindings */
+    HFX_TARGET_COUNT
 } hfx_target;
 
 typedef void *(*hfx_gl_loader)(const char *name); /* glfwGetProcAddress, OSMesaGetProcAddress... */

@@ -93,6 +93,11 @@ static hfx_fx_effect *sample_effect(void) {
     spirv[8] = 0;
     pr->code[HFX_STAGE_VERTEX][HFX_TARGET_SPIRV].data = spirv;
     pr->code[HFX_STAGE_VERTEX][HFX_TARGET_SPIRV].size = 8;
+    char *vk = malloc(13); /* Vulkan's SPIR-V rides in the program record's tail */
+    memcpy(vk, "\x03\x02\x23\x07\0\0\1\0\x11\x22\x33\x44", 12);
+    vk[12] = 0;
+    pr->code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV_VK].data = vk;
+    pr->code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV_VK].size = 12;
     pr->attribute_count = 2;
     pr->attributes = calloc(2, sizeof *pr->attributes);
     pr->attributes[0] = (hfx_fx_attribute){dup("POSITION0"), dup("in_POSITION0"), 0};

@@ -13,6 +13,9 @@
 #include "options.h"
 #include "render.h"
 #include "textures.h"
+#ifdef HFX_HAVE_VULKAN_VIEW
+#include "vulkan.h"
+#endif
 
 enum { EXIT_OK = 0, EXIT_EFFECT = 1, EXIT_USAGE = 2 };
 
@@ -226,12 +229,71 @@ static int show_window(viewer *v) {
     return EXIT_OK;
 }
 
+#ifdef HFX_HAVE_VULKAN_VIEW
+static int write_image(viewer *v, hv_image *img) {
+    char *path = v->opt.output ? NULL : default_output(v->opt.input);
+    const char *out = v->opt.output ? v->opt.output : path;
+    int rc = out && hv_image_write_png(img, out) == 0 ? EXIT_OK : EXIT_USAGE;
+    if (rc != EXIT_OK) fprintf(stderr, "hfxview: cannot write '%s'\n", out ? out : "");
+    free(path);
+    return rc;
+}
+
+/* --vulkan: load, bind the scene and --set values, draw, write the PNG; the GL context is never made. */
+static int vulkan_steps(viewer *v, hv_vk *g) {
+    int rc;
+    if ((rc = load_effect(v)) != EXIT_OK) return rc;
+    if (v->opt.list) return list_effect(v->fx), EXIT_OK;
+    if ((rc = pick_technique(v)) != EXIT_OK) return rc;
+    hv_scene scene;
+    hv_scene_from_options(&scene, &v->opt);
+    hv_bind_scene(v->fx, &scene);
+    for (size_t i = 0; i < v->opt.set_count; i++) {
+        char name[256];
+        size_t n = (size_t)(v->opt.sets[i].value - 1 - v->opt.sets[i].name);
+        snprintf(name, sizeof name, "%.*s", (int)n, v->opt.sets[i].name);
+        if (hv_set_param(v->fx, name, v->opt.sets[i].value, v->err, sizeof v->err) != 0) return input_error(v->err);
+    }
+    hv_image img;
+    size_t failed = 0;
+    if ((rc = hv_vk_render(g, v->fx, v->technique, &v->opt, &v->mesh, &img, &failed)) != HFX_OK) {
+        fprintf(stderr, "%s: error: technique %s, pass %zu: %s\n", v->opt.input, hfx_technique_name(v->technique), failed,
+                hfx_device_last_error(v->dev));
+        return EXIT_EFFECT;
+    }
+    rc = write_image(v, &img);
+    hv_image_free(&img);
+    if (getenv("HFXVIEW_PIPELINES")) fprintf(stderr, "hfxview: %zu pipelines\n", hv_vk_pipelines(g));
+    return rc;
+}
+
+static int run_vulkan(viewer *v) {
+    if (v->opt.window || v->opt.watch || v->opt.egl || v->opt.texture_count)
+        return input_error("--vulkan draws headless with the default textures (no --window, --watch, --egl, --texture)");
+    hv_vk *g = NULL;
+    int rc = hv_vk_open(&g, v->opt.width, v->opt.height, &v->dev, v->err, sizeof v->err) == 0 ? vulkan_steps(v, g) : EXIT_EFFECT;
+    if (!g || !v->dev) fprintf(stderr, "hfxview: %s\n", v->err);
+    hfx_effect_destroy(v->fx);
+    v->fx = NULL;
+    v->dev = NULL; /* hv_vk_close destroys it */
+    hv_vk_close(g);
+    return rc;
+}
+#endif
+
 static int run(viewer *v) {
     int rc;
     if (!strcmp(v->opt.mesh, "screen")) {
         if (hv_mesh_screen(&v->mesh, v->opt.width, v->opt.height) != 0) return input_error("out of memory building the screen mesh");
     } else if (hv_mesh_load(&v->mesh, v->opt.mesh, v->err, sizeof v->err) != 0) {
         return input_error(v->err);
+    }
+    if (v->opt.vulkan) {
+#ifdef HFX_HAVE_VULKAN_VIEW
+        return run_vulkan(v);
+#else
+        return input_error("this hfxview was built without Vulkan");
+#endif
     }
     int kind = v->opt.window ? HV_CONTEXT_WINDOW : v->opt.egl ? HV_CONTEXT_EGL : HV_CONTEXT_OSMESA;
     v->ctx = hv_context_create(v->opt.width, v->opt.height, kind, v->err, sizeof v->err);

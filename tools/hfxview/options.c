@@ -29,6 +29,7 @@ const char *hv_usage(void) {
            "                            (errors print, the last good picture stays); headless, the\n"
            "                            PNG is written again after each reload until hfxview is stopped\n"
            "  --egl                     render headless on EGL instead of OSMesa (when built with EGL)\n"
+           "  --vulkan                  render headless on a Vulkan device (lavapipe) through hfx_pass_apply_vk\n"
            "Exit status: 0 ok, 1 the effect failed to load or draw, 2 usage.\n";
 }
 
@@ -176,6 +177,7 @@ int hv_options_parse(hv_options *o, int argc, char **argv, char *err, size_t err
         else if (!strcmp(a, "--watch")) o->watch = 1;
         else if (!strcmp(a, "--no-preshaders")) o->no_preshaders = 1;
         else if (!strcmp(a, "--egl")) o->egl = 1;
+        else if (!strcmp(a, "--vulkan")) o->vulkan = 1;
         else if (!strcmp(a, "--list")) o->list = 1;
         else if (!strcmp(a, "-o") || TAKE("--output")) {
             if (!strcmp(a, "-o")) v = i + 1 < argc ? argv[++i] : "";

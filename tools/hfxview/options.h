@@ -32,6 +32,7 @@ typedef struct hv_options {
     int watch;               /* --watch: reload the effect when its files change */
     int no_preshaders;       /* --no-preshaders: hfx_load_options.no_preshaders */
     int egl;                 /* --egl: headless on EGL (into a framebuffer object) instead of OSMesa */
+    int vulkan;              /* --vulkan: headless on a Vulkan device (lavapipe) */
     int list;                /* --list: print techniques and parameters */
     int help;
 } hv_options;

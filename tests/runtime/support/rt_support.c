@@ -4,7 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "gl.h"
+#include "gl/gl.h"
 #include "gl_context.h"
 
 static char *dup(const char *s) {

@@ -1,7 +1,6 @@
 /* scene.c: context, meshes, effect plumbing and probes for the seed acceptance tests. */
 #include "scene.h"
 
-#include <GL/glcorearb.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -10,35 +9,10 @@
 
 #include "effect.h"
 #include "files.h"
-#include "gl_fns.h"
 #include "hfx/hfxc.h"
+#include "scene_gpu.h"
 
-#define SEED_MAX_FILES 32
-
-
-typedef struct seed_file_report {
-    char file[64];
-    int probes;
-    double max_diff;
-} seed_file_report;
-
-struct seed_scene {
-    test_gl *gl;
-    hfx_device *dev;
-    test_gl_fns f;
-    int width, height;
-    float view[16], proj[16];
-    double inv_vp[16]; /* inverse(view * proj), for unprojecting pixels */
-    int inv_ok;
-    int d3d9_centres;
-    int via_hfxo;
-    hfx_target target; /* what seed_load compiles for and loads */
-    int errors;
-    seed_file_report files[SEED_MAX_FILES];
-    int file_count;
-};
-
-static void note(seed_scene *s, const char *fmt, ...) {
+void seed_note(seed_scene *s, const char *fmt, ...) {
     va_list ap;
     va_start(ap, fmt);
     fprintf(stderr, "  harness: ");
@@ -48,35 +22,28 @@ static void note(seed_scene *s, const char *fmt, ...) {
     s->errors++;
 }
 
-static int load_gl(seed_scene *s) { return test_gl_fns_load(&s->f) == 0; }
-
 seed_scene *seed_scene_create(int width, int height) { return seed_scene_create_version(width, height, 3, 3); }
 
 seed_scene *seed_scene_create_version(int width, int height, int major, int minor) {
     seed_scene *s = calloc(1, sizeof *s);
     if (!s) return NULL;
-    s->gl = test_gl_create_version(width, height, major, minor);
-    if (!s->gl || !load_gl(s)) {
-        seed_scene_destroy(s);
-        return NULL;
-    }
     s->width = width;
     s->height = height;
     s->d3d9_centres = 1;
-    s->dev = hfx_device_create_gl(test_gl_loader);
-    if (!s->dev) fprintf(stderr, "  harness: hfx_device_create_gl returned NULL\n");
+    if (!seed_gpu_open(s, major, minor)) {
+        seed_scene_destroy(s);
+        return NULL;
+    }
     float id[16];
     xm_identity(id);
     seed_camera(s, id, id);
-    s->f.Viewport(0, 0, width, height);
     seed_clear(s, rgba_make(0, 0, 0, 0));
     return s;
 }
 
 void seed_scene_destroy(seed_scene *s) {
     if (!s) return;
-    if (s->dev) hfx_device_destroy(s->dev);
-    test_gl_destroy(s->gl);
+    seed_gpu_close(s);
     free(s);
 }
 
@@ -84,35 +51,11 @@ hfx_device *seed_device(seed_scene *s) { return s->dev; }
 void seed_use_target(seed_scene *s, hfx_target target) { s->target = target; }
 int seed_width(const seed_scene *s) { return s->width; }
 int seed_height(const seed_scene *s) { return s->height; }
-void *seed_gl(seed_scene *s, const char *name) { (void)s; return test_gl_proc(name); }
 
 int seed_take_errors(seed_scene *s) {
     int n = s->errors;
     s->errors = 0;
     return n;
-}
-
-void seed_set_culling(seed_scene *s, int on) {
-    if (on) {
-        s->f.Enable(GL_CULL_FACE);
-        s->f.CullFace(GL_BACK);
-        s->f.FrontFace(GL_CW);
-    } else {
-        s->f.Disable(GL_CULL_FACE);
-    }
-}
-
-void seed_clear(seed_scene *s, rgba c) {
-    s->f.Viewport(0, 0, s->width, s->height);
-    s->f.Enable(GL_DEPTH_TEST);
-    s->f.DepthFunc(GL_LEQUAL);
-    s->f.DepthMask(GL_TRUE);
-    s->f.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    s->f.Disable(GL_BLEND);
-    seed_set_culling(s, 1);
-    s->f.ClearColor((float)c.r, (float)c.g, (float)c.b, (float)c.a);
-    s->f.ClearDepth(1.0);
-    s->f.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 }
 
 /* ---- cameras ---- */
@@ -174,12 +117,7 @@ static seed_mesh *upload_mesh(seed_scene *s, seed_vertex *v, int count) {
     for (int i = 0; i < count; i++) c = v3_add(c, vertex_pos(&v[i]));
     m->centre = count ? v3_scale(c, 1.0 / count) : c;
     for (int i = 0; i < count; i++) m->radius = maxd(m->radius, v3_distance(m->centre, vertex_pos(&v[i])));
-    s->f.GenVertexArrays(1, &m->vao);
-    s->f.GenBuffers(1, &m->vbo);
-    s->f.BindVertexArray(m->vao);
-    s->f.BindBuffer(GL_ARRAY_BUFFER, m->vbo);
-    s->f.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(count * sizeof *v), v, GL_STATIC_DRAW);
-    s->f.BindVertexArray(0);
+    seed_gpu_mesh_upload(s, m);
     return m;
 }
 
@@ -235,8 +173,7 @@ seed_mesh *seed_mesh_sphere(seed_scene *s, double radius, int slices, int stacks
 
 void seed_mesh_free(seed_scene *s, seed_mesh *m) {
     if (!m) return;
-    s->f.DeleteBuffers(1, &m->vbo);
-    s->f.DeleteVertexArrays(1, &m->vao);
+    seed_gpu_mesh_free(s, m);
     free(m->v);
     free(m);
 }
@@ -270,13 +207,13 @@ static hfx_effect *load_via_hfxo(seed_scene *s, const char *seed_file, const cha
     char *errors = NULL;
     if (!compiled) {
         char *text = r ? hfxc_diagnostics_text(r) : NULL;
-        note(s, "compiling %s failed: %s", seed_file, text ? text : "");
+        seed_note(s, "compiling %s failed: %s", seed_file, text ? text : "");
         free(text);
     } else if (hfx_fx_write_hfxo(compiled, &data, &size) != 0) {
-        note(s, "writing %s as .hfxo failed", seed_file);
+        seed_note(s, "writing %s as .hfxo failed", seed_file);
     } else {
         fx = hfx_effect_load_memory(s->dev, data, size, seed_file, &opt, &errors);
-        if (!fx) note(s, "loading %s from .hfxo failed: %s", seed_file, errors && *errors ? errors : hfx_device_last_error(s->dev));
+        if (!fx) seed_note(s, "loading %s from .hfxo failed: %s", seed_file, errors && *errors ? errors : hfx_device_last_error(s->dev));
     }
     hfx_free(errors);
     free(data);
@@ -286,7 +223,7 @@ static hfx_effect *load_via_hfxo(seed_scene *s, const char *seed_file, const cha
 
 hfx_effect *seed_load(seed_scene *s, const char *seed_file) {
     if (!s->dev) {
-        note(s, "no hfx device: cannot load %s", seed_file);
+        seed_note(s, "no hfx device: cannot load %s", seed_file);
         return NULL;
     }
     char *path = test_seed_path(seed_file);
@@ -301,7 +238,7 @@ hfx_effect *seed_load(seed_scene *s, const char *seed_file) {
     opt.target = s->target;
     hfx_effect *fx = path ? hfx_effect_load(s->dev, path, &opt, &errors) : NULL;
     if (!fx)
-        note(s, "loading %s failed: %s%s", seed_file, errors && *errors ? errors : "",
+        seed_note(s, "loading %s failed: %s%s", seed_file, errors && *errors ? errors : "",
              errors && *errors ? "" : hfx_device_last_error(s->dev));
     else if (errors && *errors)
         printf("  %s compiled with: %s\n", seed_file, errors);
@@ -312,35 +249,35 @@ hfx_effect *seed_load(seed_scene *s, const char *seed_file) {
 
 static hfx_param *param(seed_scene *s, hfx_effect *fx, const char *name) {
     hfx_param *p = fx ? hfx_effect_param(fx, name) : NULL;
-    if (!p) note(s, "no parameter '%s'", name);
+    if (!p) seed_note(s, "no parameter '%s'", name);
     return p;
 }
 
-static void check_set(seed_scene *s, int rc, const char *what) {
-    if (rc != HFX_OK) note(s, "setting %s failed (%d): %s", what, rc, hfx_device_last_error(s->dev));
+void seed_check_set(seed_scene *s, int rc, const char *what) {
+    if (rc != HFX_OK) seed_note(s, "setting %s failed (%d): %s", what, rc, hfx_device_last_error(s->dev));
 }
 
 void seed_param_float(seed_scene *s, hfx_param *p, const char *what, double v) {
-    if (p) check_set(s, hfx_param_set_float(p, (float)v), what);
+    if (p) seed_check_set(s, hfx_param_set_float(p, (float)v), what);
 }
 
 void seed_param_int(seed_scene *s, hfx_param *p, const char *what, int v) {
-    if (p) check_set(s, hfx_param_set_int(p, v), what);
+    if (p) seed_check_set(s, hfx_param_set_int(p, v), what);
 }
 
 void seed_param_v3(seed_scene *s, hfx_param *p, const char *what, v3 v) {
     float f[3] = {(float)v.x, (float)v.y, (float)v.z};
-    if (p) check_set(s, hfx_param_set_floats(p, f, 3), what);
+    if (p) seed_check_set(s, hfx_param_set_floats(p, f, 3), what);
 }
 
 void seed_param_rgba(seed_scene *s, hfx_param *p, const char *what, rgba c) {
     float f[4] = {(float)c.r, (float)c.g, (float)c.b, (float)c.a};
-    if (p) check_set(s, hfx_param_set_floats(p, f, 4), what);
+    if (p) seed_check_set(s, hfx_param_set_floats(p, f, 4), what);
 }
 
 void seed_set_matrix(seed_scene *s, hfx_effect *fx, const char *name, const float m[16]) {
     hfx_param *p = param(s, fx, name);
-    if (p) check_set(s, hfx_param_set_matrix(p, m), name);
+    if (p) seed_check_set(s, hfx_param_set_matrix(p, m), name);
 }
 
 void seed_set_float(seed_scene *s, hfx_effect *fx, const char *name, double v) {
@@ -353,7 +290,7 @@ void seed_set_int(seed_scene *s, hfx_effect *fx, const char *name, int v) {
 
 void seed_set_bool(seed_scene *s, hfx_effect *fx, const char *name, int v) {
     hfx_param *p = param(s, fx, name);
-    if (p) check_set(s, hfx_param_set_bool(p, v), name);
+    if (p) seed_check_set(s, hfx_param_set_bool(p, v), name);
 }
 
 void seed_set_v3(seed_scene *s, hfx_effect *fx, const char *name, v3 v) {
@@ -366,14 +303,14 @@ void seed_set_rgba(seed_scene *s, hfx_effect *fx, const char *name, rgba c) {
 
 void seed_set_texture(seed_scene *s, hfx_effect *fx, const char *name, const seed_texture *t) {
     hfx_param *p = param(s, fx, name);
-    if (p) check_set(s, hfx_param_set_texture(p, t->gl), name);
+    if (p) seed_check_set(s, seed_gpu_set_texture(s, p, t), name);
 }
 
 hfx_param *seed_member(seed_scene *s, hfx_effect *fx, const char *array, size_t index, const char *member) {
     hfx_param *a = param(s, fx, array);
     hfx_param *e = a ? hfx_param_element(a, index) : NULL;
     hfx_param *m = e ? hfx_param_member(e, member) : NULL;
-    if (a && !m) note(s, "no parameter %s[%zu].%s", array, index, member);
+    if (a && !m) seed_note(s, "no parameter %s[%zu].%s", array, index, member);
     return m;
 }
 
@@ -386,77 +323,7 @@ void seed_set_transforms(seed_scene *s, hfx_effect *fx, const char *world, const
     seed_set_matrix(s, fx, projection, s->proj);
 }
 
-static void bind_attributes(seed_scene *s, hfx_pass *pass, const seed_mesh *m) {
-    static const struct { const char *semantic; int size; size_t offset; } attrs[] = {
-        {"POSITION0", 3, offsetof(seed_vertex, pos)},
-        {"NORMAL0", 3, offsetof(seed_vertex, normal)},
-        {"TEXCOORD0", 2, offsetof(seed_vertex, uv)},
-    };
-    s->f.BindVertexArray(m->vao);
-    s->f.BindBuffer(GL_ARRAY_BUFFER, m->vbo);
-    for (GLuint i = 0; i < 16; i++) s->f.DisableVertexAttribArray(i);
-    for (size_t i = 0; i < sizeof attrs / sizeof attrs[0]; i++) {
-        int loc = hfx_pass_attribute_location(pass, attrs[i].semantic);
-        if (loc < 0) {
-            if (i == 0) note(s, "pass '%s' has no POSITION0 input", hfx_pass_name(pass));
-            continue;
-        }
-        s->f.EnableVertexAttribArray((GLuint)loc);
-        s->f.VertexAttribPointer((GLuint)loc, attrs[i].size, GL_FLOAT, GL_FALSE, sizeof(seed_vertex),
-                                 (const void *)attrs[i].offset);
-    }
-}
-
-int seed_draw(seed_scene *s, hfx_effect *fx, const char *technique, const seed_mesh *m, seed_blend blend) {
-    if (!fx || !m) return 0;
-    hfx_technique *t = technique ? hfx_effect_technique(fx, technique) : hfx_effect_current_technique(fx);
-    if (!t) {
-        note(s, "no technique '%s'", technique ? technique : "(current)");
-        return 0;
-    }
-    hfx_effect_set_current_technique(fx, t);
-    if (hfx_effect_begin(fx) != HFX_OK) note(s, "hfx_effect_begin: %s", hfx_device_last_error(s->dev));
-    int drawn = 0;
-    for (size_t i = 0; i < hfx_technique_pass_count(t); i++) {
-        hfx_pass *pass = hfx_technique_pass(t, i);
-        if (blend == SEED_BLEND_ADD_AFTER_FIRST && i == 1) {
-            /* The application's BlendState.Additive, set before Apply as an XNA game does. */
-            s->f.Enable(GL_BLEND);
-            s->f.BlendEquation(GL_FUNC_ADD);
-            s->f.BlendFunc(GL_ONE, GL_ONE);
-        }
-        if (hfx_pass_apply(pass) != HFX_OK) {
-            note(s, "applying pass %zu: %s", i, hfx_device_last_error(s->dev));
-            continue;
-        }
-        bind_attributes(s, pass, m);
-        s->f.DrawArrays(GL_TRIANGLES, 0, m->count);
-        drawn++;
-    }
-    s->f.BindVertexArray(0);
-    if (hfx_effect_end(fx) != HFX_OK) note(s, "hfx_effect_end: %s", hfx_device_last_error(s->dev));
-    GLenum err = s->f.GetError();
-    if (err != GL_NO_ERROR) note(s, "GL error 0x%x after drawing", err);
-    return drawn;
-}
-
 /* ---- textures ---- */
-
-seed_texture seed_texture_make(seed_scene *s, int width, int height, const unsigned char *texels) {
-    seed_texture t = {width, height, texels, 0};
-    s->f.GenTextures(1, &t.gl);
-    s->f.BindTexture(GL_TEXTURE_2D, t.gl);
-    s->f.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    s->f.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
-    s->f.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-    s->f.BindTexture(GL_TEXTURE_2D, 0);
-    return t;
-}
-
-void seed_texture_free(seed_scene *s, seed_texture *t) {
-    if (t->gl) s->f.DeleteTextures(1, &t->gl);
-    t->gl = 0;
-}
 
 void seed_smooth_texels(unsigned char t[4 * 4 * 4]) {
     static const unsigned char ramp[4] = {120, 160, 200, 160}, blue[4] = {150, 190, 150, 110};
@@ -612,7 +479,7 @@ int seed_pick_certain(seed_scene *s, const seed_object *objects, int n, int x, i
 
 rgba seed_pixel(seed_scene *s, int x, int y) {
     unsigned char p[4];
-    test_gl_read(s->gl, x, y, p);
+    seed_gpu_read(s, x, y, p);
     return rgba_make(p[0] / 255.0, p[1] / 255.0, p[2] / 255.0, p[3] / 255.0);
 }
 
@@ -642,7 +509,7 @@ static double pixel_diff(const unsigned char got[4], rgba e, double want[4]) {
 double seed_expect(seed_scene *s, const char *file, const char *label, int x, int y, rgba e) {
     unsigned char got[4];
     double want[4];
-    test_gl_read(s->gl, x, y, got);
+    seed_gpu_read(s, x, y, got);
     double diff = pixel_diff(got, e, want);
     printf("  %-22s %-34s (%3d,%3d) expected %5.1f %5.1f %5.1f %5.1f got %3d %3d %3d %3d diff %.2f%s\n", file,
            label, x, y, want[0], want[1], want[2], want[3], got[0], got[1], got[2], got[3], diff,
@@ -669,7 +536,7 @@ double seed_probe(seed_scene *s, const char *file, const char *label, const seed
         rgba e2 = shade(&other, user);
         double want[4];
         unsigned char got[4];
-        test_gl_read(s->gl, x, y, got);
+        seed_gpu_read(s, x, y, got);
         double d2 = pixel_diff(got, e2, want);
         if (d2 <= SEED_TOLERANCE)
             printf("  note: the pixel matches the reference at the %s pixel centre (diff %.2f)\n",
@@ -694,7 +561,7 @@ void seed_save_png(seed_scene *s, const char *name) {
     snprintf(path, sizeof path, "%s/seed-images", dir && *dir ? dir : "/tmp");
     mkdir(path, 0777);
     snprintf(path + strlen(path), sizeof path - strlen(path), "/%s.png", name);
-    if (test_gl_write_png(s->gl, path) == 0) printf("  image: %s\n", path);
+    if (seed_gpu_write_png(s, path) == 0) printf("  image: %s\n", path);
 }
 
 void seed_report(const seed_scene *s) {

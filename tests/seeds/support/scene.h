@@ -28,6 +28,7 @@ typedef struct seed_mesh {
     v3 centre;      /* a bounding sphere, object space, for probes to skip meshes a ray misses */
     double radius;
     unsigned vao, vbo;
+    void *gpu;      /* Vulkan: the vertex buffer */
 } seed_mesh;
 
 /* A mesh placed in the world, as the effect's World parameter places it. */
@@ -51,6 +52,7 @@ typedef struct seed_texture {
     int width, height;
     const unsigned char *texels; /* RGBA8, row 0 first (v = 0), as handed to glTexImage2D */
     unsigned gl;
+    void *gpu;                   /* Vulkan: the image */
 } seed_texture;
 
 typedef enum { SEED_CLAMP, SEED_WRAP } seed_address;

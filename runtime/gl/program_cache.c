@@ -23,6 +23,7 @@ static const char magic[4] = {'H', 'F', 'X', 'B'};
 
 int hfx_device_set_program_cache(hfx_device *dev, const char *dir) {
     if (!dev) return HFX_ERR_NULL;
+    if (dev->be != &hfx_gl_backend) return hfx_rt_fail(dev, HFX_ERR_NOT_FOUND, "the program cache is OpenGL's");
     char *copy = NULL;
     if (dir && *dir && !(copy = strdup(dir))) return hfx_rt_fail(dev, HFX_ERR_MEMORY, "out of memory");
     free(dev->program_cache);

@@ -103,7 +103,7 @@ void hfx_rt_texture_check(hfx_device *dev, GLenum target, GLuint texture) {
 
 /* A unit still holding the texture is marked stale too, so the next Apply binds and checks it. */
 void hfx_device_texture_changed(hfx_device *dev, unsigned int texture) {
-    if (!dev || !texture) return;
+    if (!dev || !texture || dev->be != &hfx_gl_backend) return;
     hfx_texture_note *note = find(&dev->checked, texture);
     if (note) note->stale = 1;
     for (int u = 0; u < HFX_MAX_UNITS; u++)

@@ -22,35 +22,6 @@ const char *hfx_gl_load(hfx_gl *gl, hfx_gl_loader load) {
     return NULL;
 }
 
-int hfx_rt_fail(hfx_device *dev, int code, const char *fmt, ...) {
-    if (!dev) return code;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(dev->error, sizeof dev->error, fmt, ap);
-    va_end(ap);
-    return code;
-}
-
-/* A load-time note about the effect (a state GL honours only in part), with the state's
- * position: hfx_effect_warnings returns them all. */
-void hfx_shared_warn(hfx_shared *sh, const hfx_fx_state *st, const char *fmt, ...) {
-    char msg[512], line[700];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(msg, sizeof msg, fmt, ap);
-    va_end(ap);
-    const char *name = sh->fx->source_name ? sh->fx->source_name : "effect";
-    if (st && st->line)
-        snprintf(line, sizeof line, "%s(%u,%u): warning: %s\n", name, (unsigned)st->line, (unsigned)st->col, msg);
-    else
-        snprintf(line, sizeof line, "%s: warning: %s\n", name, msg);
-    size_t n = strlen(line);
-    char *w = realloc(sh->warnings, sh->warnings_len + n + 1);
-    if (!w) return;
-    memcpy(w + sh->warnings_len, line, n + 1);
-    sh->warnings = w;
-    sh->warnings_len += n;
-}
 
 static int has_extension(hfx_device *dev, const char *name) {
     GLint n = 0;
@@ -118,7 +89,7 @@ void hfx_rt_read_target(hfx_device *dev) {
 }
 
 void hfx_device_set_viewport(hfx_device *dev, int x, int y, int width, int height) {
-    if (!dev) return;
+    if (!dev || dev->be != &hfx_gl_backend) return; /* Vulkan: hfx_vk_target's size */
     dev->applied = NULL; /* the front face and hfx_pos_fixup may change */
     dev->gl.Viewport(x, y, width, height);
     GLint fbo = 0;
@@ -131,7 +102,7 @@ void hfx_device_set_viewport(hfx_device *dev, int x, int y, int width, int heigh
  * marked unknown (rebound on first use) rather than read back: 32 units x 4 targets of queries
  * would cost more than the binds they could save. */
 void hfx_device_sync(hfx_device *dev) {
-    if (!dev) return;
+    if (!dev || dev->be != &hfx_gl_backend) return; /* Vulkan: nothing is shadowed */
     dev->applied = NULL;
     hfx_rt_read_state(dev, &dev->state);
     hfx_rt_read_target(dev);
@@ -142,6 +113,7 @@ hfx_device *hfx_device_create_gl(hfx_gl_loader load) {
     if (!load) return NULL;
     hfx_device *dev = calloc(1, sizeof *dev);
     if (!dev) return NULL;
+    dev->be = &hfx_gl_backend;
     dev->pos_fixup_serial = 1; /* programs start at 0: they compare on their first Apply */
     if (hfx_gl_load(&dev->gl, load) != NULL) {
         free(dev);
@@ -158,17 +130,13 @@ hfx_device *hfx_device_create_gl(hfx_gl_loader load) {
     return dev;
 }
 
-void hfx_device_destroy(hfx_device *dev) {
-    if (!dev) return;
+void hfx_gl_device_destroy(hfx_device *dev) {
     hfx_rt_textures_free(dev);
     free(dev->scratch);
     free(dev->program_cache);
     free(dev);
 }
 
-const char *hfx_device_last_error(const hfx_device *dev) { return dev ? dev->error : "no device"; }
-
-void hfx_free(void *p) { free(p); }
 
 void hfx_rt_bind_unit(hfx_device *dev, int unit, GLenum target, GLuint texture, GLuint sampler) {
     hfx_unit_state *u = &dev->units[unit];

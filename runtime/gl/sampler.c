@@ -17,30 +17,6 @@
 
 #include "internal.h"
 
-void hfx_sampler_desc_default(hfx_sampler_desc *d) {
-    memset(d, 0, sizeof *d);
-    d->address[0] = d->address[1] = d->address[2] = 1; /* Wrap */
-    d->mag = d->min = 1;                               /* Point */
-    d->mip = 0;                                        /* None */
-    d->max_anisotropy = 1;
-}
-
-void hfx_sampler_desc_apply(hfx_sampler_desc *d, uint32_t id, const hfx_rs_value *v) {
-    switch (id) {
-    case HFX_ST_ADDRESSU: d->address[0] = v->i; break;
-    case HFX_ST_ADDRESSV: d->address[1] = v->i; break;
-    case HFX_ST_ADDRESSW: d->address[2] = v->i; break;
-    case HFX_ST_MAGFILTER: d->mag = v->i; break;
-    case HFX_ST_MINFILTER: d->min = v->i; break;
-    case HFX_ST_MIPFILTER: d->mip = v->i; break;
-    case HFX_ST_MAXMIPLEVEL: d->max_mip_level = v->i; break;
-    case HFX_ST_MAXANISOTROPY: d->max_anisotropy = v->i; break;
-    case HFX_ST_SRGBTEXTURE: d->srgb = v->i != 0, d->srgb_set = 1; break;
-    case HFX_ST_MIPMAPLODBIAS: d->lod_bias = v->f[0]; break;
-    case HFX_ST_BORDERCOLOR: memcpy(d->border, v->f, sizeof d->border); break;
-    default: break;
-    }
-}
 
 static GLint gl_address(int32_t d3d) {
     switch (d3d) {

@@ -1,0 +1,202 @@
+/* program.c: a compiled program on Vulkan: its two shader modules (HFX_TARGET_SPIRV_VK), the
+ * descriptor set layout (the uniform block as a dynamic uniform buffer, then one combined image
+ * sampler per sampler the program reads) and pipeline layout, and the map from the effect's
+ * parameters to the block: packed ones into hfx_c (the D3D9 register file, laid out as GL's
+ * hfx_c[]), the others leaf by leaf at the offsets the module declares (reflect.c). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "spirv_loc.h"
+#include "vk/vk.h"
+
+typedef struct build {
+    hfx_shared *sh;
+    vk_program *p;
+    vk_block block;
+    uint32_t cap;
+} build;
+
+static const char *name_of(const hfx_shared *sh) { return sh->fx->source_name ? sh->fx->source_name : "effect"; }
+
+static int make_module(hfx_shared *sh, const hfx_fx_code *code, const char *what, VkShaderModule *out) {
+    struct hfx_vk_device *vk = sh->dev->vk;
+    if (!code->data || code->size < 20 || code->size % 4)
+        return hfx_rt_fail(sh->dev, HFX_ERR_LOAD, "%s: the %s shader has no SPIR-V for Vulkan (compile with the "
+                           "spirv-vk target)", name_of(sh), what);
+    VkShaderModuleCreateInfo ci = {.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO, .codeSize = code->size,
+                                   .pCode = (const uint32_t *)(const void *)code->data};
+    VkResult r = vk->fn.CreateShaderModule(vk->device, &ci, NULL, out);
+    return r == VK_SUCCESS ? HFX_OK : hfx_vk_fail(sh->dev, r, "vkCreateShaderModule");
+}
+
+static const vk_leaf *find_leaf(const vk_block *b, const char *path) {
+    for (uint32_t i = 0; i < b->count; i++)
+        if (strcmp(b->leaves[i].path, path) == 0) return &b->leaves[i];
+    return NULL;
+}
+
+static int32_t offset_of(const vk_block *b, const char *path) {
+    const vk_leaf *l = find_leaf(b, path);
+    return l ? (int32_t)l->offset : -1;
+}
+
+static uint16_t upload_kind(const hfx_fx_param *p, const vk_leaf *l) {
+    int data_float = p->type == HFX_TYPE_FLOAT, leaf_float = l->base == VK_BASE_FLOAT;
+    if (data_float == leaf_float) return VK_UP_SAME;
+    return leaf_float ? VK_UP_TO_FLOAT : VK_UP_TO_INT;
+}
+
+/* One leaf of the block from parameter p's words (an array: count elements). */
+static int add_upload(build *b, const char *path, const hfx_fx_param *p) {
+    const vk_leaf *l = find_leaf(&b->block, path);
+    if (!l) return HFX_OK; /* not in the block: the program does not read it */
+    uint32_t elems = p->elements ? p->elements : 1, per = p->words / elems;
+    if (per != (uint32_t)l->comps * l->cols) {
+        hfx_shared_warn(b->sh, NULL, "uniform '%s': its type does not match parameter '%s'; not uploaded", path,
+                        p->name ? p->name : "");
+        return HFX_OK;
+    }
+    if (!HFX_GROW(b->p->uploads, b->p->upload_count, b->cap, 8)) return HFX_ERR_MEMORY;
+    vk_upload *u = &b->p->uploads[b->p->upload_count++];
+    u->dst = l->offset, u->src = p->offset;
+    u->count = l->count ? (l->count < elems ? l->count : elems) : 1;
+    u->stride = l->stride, u->comps = l->comps, u->cols = l->cols, u->col_stride = l->col_stride;
+    u->kind = upload_kind(p, l);
+    return HFX_OK;
+}
+
+static int add_param(build *b, uint32_t index, const char *path);
+
+static int add_members(build *b, const hfx_fx_param *s, const char *path) {
+    for (uint32_t m = 0; m < s->child_count; m++) {
+        const hfx_fx_param *member = &b->sh->fx->params[s->first_child + m];
+        char sub[160];
+        int n = snprintf(sub, sizeof sub, "%s.%s", path, member->glsl_name ? member->glsl_name : member->name);
+        if (n < 0 || (size_t)n >= sizeof sub) continue;
+        int rc = add_param(b, s->first_child + m, sub);
+        if (rc) return rc;
+    }
+    return HFX_OK;
+}
+
+/* A parameter's leaves, by the same paths as GL's uniform names. */
+static int add_param(build *b, uint32_t index, const char *path) {
+    const hfx_fx_param *p = &b->sh->fx->params[index];
+    if (p->klass == HFX_CLASS_OBJECT) return HFX_OK;
+    if (p->elements && p->child_count && b->sh->fx->params[p->first_child].klass == HFX_CLASS_STRUCT) {
+        for (uint32_t e = 0; e < p->child_count; e++) {
+            char sub[160];
+            int n = snprintf(sub, sizeof sub, "%s[%u]", path, (unsigned)e);
+            if (n < 0 || (size_t)n >= sizeof sub) continue;
+            int rc = add_members(b, &b->sh->fx->params[p->first_child + e], sub);
+            if (rc) return rc;
+        }
+        return HFX_OK;
+    }
+    if (p->klass == HFX_CLASS_STRUCT) return add_members(b, p, path);
+    return add_upload(b, path, p);
+}
+
+static void pack_slot(vk_slot *slot, const hfx_fx_effect *fx, const hfx_fx_uniform_use *u) {
+    slot->mode = SLOT_REG;
+    slot->reg = u->reg;
+    slot->reg_rows = (uint16_t)hfx_fx_param_packable(fx, u->param);
+    slot->reg_cols = (uint16_t)fx->params[u->param].cols;
+    slot->offset = fx->params[u->param].offset;
+}
+
+static int map_uniforms(build *b, const hfx_fx_program *fp) {
+    vk_program *p = b->p;
+    const hfx_fx_effect *fx = b->sh->fx;
+    p->slots = calloc((size_t)fx->top_param_count + 1, sizeof *p->slots);
+    p->reads = calloc(fp->uniform_count ? fp->uniform_count : 1, sizeof *p->reads);
+    if (!p->slots || !p->reads) return HFX_ERR_MEMORY;
+    for (uint32_t i = 0; i < fp->uniform_count; i++) {
+        uint32_t param = fp->uniforms[i].param;
+        if (param >= fx->top_param_count || !fx->params[param].glsl_name || p->slots[param].mode) continue;
+        vk_slot *slot = &p->slots[param];
+        if (hfx_fx_use_packed(fp, &fp->uniforms[i])) {
+            if (p->regs_at < 0) continue;
+            pack_slot(slot, fx, &fp->uniforms[i]);
+        } else {
+            slot->first = p->upload_count;
+            int rc = add_param(b, param, fx->params[param].glsl_name);
+            if (rc) return rc;
+            slot->count = p->upload_count - slot->first;
+            if (!slot->count) continue;
+            slot->mode = SLOT_OTHER;
+        }
+        p->reads[p->read_count++] = param;
+    }
+    return HFX_OK;
+}
+
+/* The block's layout from whichever stage declares it (both declare the same one). */
+static int read_block(build *b, const hfx_fx_program *fp) {
+    for (int s = 0; s < HFX_STAGE_COUNT; s++) {
+        const hfx_fx_code *c = &fp->code[s][HFX_TARGET_SPIRV_VK];
+        if (hfx_vk_reflect_block((const uint32_t *)(const void *)c->data, c->size / 4, &b->block))
+            return hfx_rt_fail(b->sh->dev, HFX_ERR_LOAD, "%s: a shader's SPIR-V could not be read", name_of(b->sh));
+        if (b->block.count) break;
+    }
+    vk_program *p = b->p;
+    p->block_size = (b->block.size + 15u) & ~15u;
+    p->regs_at = offset_of(&b->block, "hfx_c");
+    p->fixup_at = offset_of(&b->block, "hfx_pos_fixup");
+    p->alpha_func_at = offset_of(&b->block, "hfx_alpha_func");
+    p->alpha_ref_at = offset_of(&b->block, "hfx_alpha_ref");
+    p->reg_count = fp->reg_count;
+    return HFX_OK;
+}
+
+static int make_layouts(hfx_shared *sh, vk_program *p) {
+    struct hfx_vk_device *vk = sh->dev->vk;
+    VkDescriptorSetLayoutBinding bind[1 + 32];
+    uint32_t n = 0;
+    VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+    if (p->block_size)
+        bind[n++] = (VkDescriptorSetLayoutBinding){HFX_VK_BINDING_BLOCK, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1, stages, NULL};
+    for (uint32_t k = 0; k < p->sampler_count; k++)
+        bind[n++] = (VkDescriptorSetLayoutBinding){HFX_VK_BINDING_SAMPLER0 + k, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+                                                   stages, NULL};
+    VkDescriptorSetLayoutCreateInfo si = {.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO, .bindingCount = n,
+                                          .pBindings = bind};
+    VkResult r = vk->fn.CreateDescriptorSetLayout(vk->device, &si, NULL, &p->set_layout);
+    if (r != VK_SUCCESS) return hfx_vk_fail(sh->dev, r, "vkCreateDescriptorSetLayout");
+    VkPipelineLayoutCreateInfo li = {.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO, .setLayoutCount = 1,
+                                     .pSetLayouts = &p->set_layout};
+    r = vk->fn.CreatePipelineLayout(vk->device, &li, NULL, &p->layout);
+    return r == VK_SUCCESS ? HFX_OK : hfx_vk_fail(sh->dev, r, "vkCreatePipelineLayout");
+}
+
+int hfx_vk_program_build(hfx_shared *sh, uint32_t index) {
+    const hfx_fx_program *fp = &sh->fx->programs[index];
+    build b = {sh, &sh->vk->programs[index], {NULL, 0, 0}, 0};
+    vk_program *p = b.p;
+    p->fp = fp;
+    p->regs_at = p->fixup_at = p->alpha_func_at = p->alpha_ref_at = -1;
+    if (fp->sampler_count > 32)
+        return hfx_rt_fail(sh->dev, HFX_ERR_LOAD, "%s: a program samples more than 32 samplers", name_of(sh));
+    p->sampler_count = fp->sampler_count;
+    int rc = make_module(sh, &fp->code[HFX_STAGE_VERTEX][HFX_TARGET_SPIRV_VK], "vertex", &p->vs);
+    if (!rc) rc = make_module(sh, &fp->code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV_VK], "pixel", &p->fs);
+    if (!rc) rc = read_block(&b, fp);
+    if (!rc) rc = map_uniforms(&b, fp);
+    if (!rc) rc = make_layouts(sh, p);
+    hfx_vk_block_free(&b.block);
+    if (rc == HFX_ERR_MEMORY) hfx_rt_fail(sh->dev, rc, "out of memory");
+    return rc;
+}
+
+void hfx_vk_program_free(hfx_device *dev, vk_program *p) {
+    struct hfx_vk_device *vk = dev->vk;
+    if (p->layout) vk->fn.DestroyPipelineLayout(vk->device, p->layout, NULL);
+    if (p->set_layout) vk->fn.DestroyDescriptorSetLayout(vk->device, p->set_layout, NULL);
+    if (p->vs) vk->fn.DestroyShaderModule(vk->device, p->vs, NULL);
+    if (p->fs) vk->fn.DestroyShaderModule(vk->device, p->fs, NULL);
+    free(p->slots);
+    free(p->reads);
+    free(p->uploads);
+    memset(p, 0, sizeof *p);
+}
