@@ -68,8 +68,9 @@ void hfx_arena_run_cleanups(hfx_arena *a) {
     for (; c; c = c->next) c->fn(c->ctx);
 }
 
-/* Zeroes only what is handed out: most compilations use a small part of their last block. */
-void *hfx_arena_alloc_slow(hfx_arena *a, size_t size) {
+/* Zeroes nothing: hfx_arena_alloc_slow zeroes only what it hands out (most compilations use a
+ * small part of their last block), and raw allocations (a file's text copy) need no zeroing. */
+void *hfx_arena_alloc_slow_raw(hfx_arena *a, size_t size) {
     size = (size + 15) & ~(size_t)15;
     size_t cap = size > BLOCK_SIZE ? size : BLOCK_SIZE;
     if (a->limit && (size > a->limit || a->total > a->limit - size)) return fail(a, true);
@@ -88,7 +89,12 @@ void *hfx_arena_alloc_slow(hfx_arena *a, size_t size) {
     }
     b->used = size;
     a->total += size;
-    return memset(b->data, 0, size);
+    return b->data;
+}
+
+void *hfx_arena_alloc_slow(hfx_arena *a, size_t size) {
+    void *p = hfx_arena_alloc_slow_raw(a, size);
+    return p ? memset(p, 0, (size + 15) & ~(size_t)15) : NULL;
 }
 
 char *hfx_arena_strndup(hfx_arena *a, const char *s, size_t n) {
@@ -113,8 +119,9 @@ char *hfx_arena_printf(hfx_arena *a, const char *fmt, ...) {
     return b.d ? b.d : hfx_arena_strdup(a, "");
 }
 
+/* Not zeroed: hfx_grow, whose allocator this is, zeroes the part the old contents leave. */
 void *hfx_arena_grow(void *arena, void *old, size_t old_bytes, size_t new_bytes) {
-    void *p = hfx_arena_alloc(arena, new_bytes);
+    void *p = hfx_arena_alloc_raw(arena, new_bytes);
     if (p && old_bytes) memcpy(p, old, old_bytes);
     return p;
 }

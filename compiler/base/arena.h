@@ -41,6 +41,7 @@ hfx_arena_cleanup *hfx_arena_on_escape(hfx_arena *a, void (*fn)(void *ctx), void
 void hfx_arena_forget(hfx_arena *a, hfx_arena_cleanup *c);
 void hfx_arena_run_cleanups(hfx_arena *a); /* after an escape: every registered fn, newest first */
 void *hfx_arena_alloc_slow(hfx_arena *a, size_t size);       /* a new block; use hfx_arena_alloc */
+void *hfx_arena_alloc_slow_raw(hfx_arena *a, size_t size);   /* the same, not zeroed */
 
 /* Zeroed, 16-byte aligned; NULL only if out of memory. Inline because the lexer and parser
  * allocate a node or a token at a time. */
@@ -65,13 +66,14 @@ static inline void *hfx_arena_alloc_raw(hfx_arena *a, size_t size) {
         a->total += size;
         return p;
     }
-    return hfx_arena_alloc_slow(a, size);
+    return hfx_arena_alloc_slow_raw(a, size);
 }
 char *hfx_arena_strdup(hfx_arena *a, const char *s);
 char *hfx_arena_strndup(hfx_arena *a, const char *s, size_t n);
 char *hfx_arena_printf(hfx_arena *a, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
-/* hfx_grow's allocator in an arena: a new block with the old contents; the old one stays. */
+/* hfx_grow's allocator in an arena: new space with the old contents (the rest not zeroed: hfx_grow
+ * does that); the old space stays. */
 void *hfx_arena_grow(void *arena, void *old, size_t old_bytes, size_t new_bytes);
 #define HFX_ARENA_GROW(arena, arr, count, cap, first) \
     hfx_grow((void **)&(arr), sizeof *(arr), (count), &(cap), (first), hfx_arena_grow, (arena))

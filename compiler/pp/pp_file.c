@@ -22,7 +22,7 @@ char *pp_read_file(hfx_arena *arena, const char *path, uint32_t *size) {
     FILE *f = fopen(path, "rb");
     if (!f) return NULL;
     size_t n = (size_t)st.st_size;
-    char *buf = hfx_arena_alloc(arena, n + 1);
+    char *buf = hfx_arena_alloc_raw(arena, n + 1); /* not zeroed: fread fills it, or it is not used */
     size_t got = buf ? fread(buf, 1, n, f) : 0;
     fclose(f);
     if (!buf || got != n) return NULL;

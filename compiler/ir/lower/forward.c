@@ -80,9 +80,10 @@ static bool substitute(ir_stmt *fn_body, ir_stmt *b, uint32_t i) {
         !simple_next(next) || !hfx_type_is_numeric(d->var->type) || ir_has_side_effects(d->expr))
         return false;
     uses_of all = {d->var, 0, 0, NULL}, here = {d->var, 0, 0, NULL};
+    count_stmt(&here, next); /* first: most locals fail here, and the whole body costs more */
+    if (here.reads != 1 || here.writes) return false;
     count_stmt(&all, fn_body);
-    count_stmt(&here, next);
-    if (all.reads != 1 || all.writes || here.reads != 1) return false;
+    if (all.reads != 1 || all.writes) return false;
     *here.slot = d->expr;
     for (uint32_t k = i; k + 1 < b->count; k++) b->body[k] = b->body[k + 1];
     b->count--;
