@@ -117,6 +117,24 @@ static void phong(void) {
     emit("phong.fx", "Phong", p, "DiffuseTexture", TEXEL, c);
 }
 
+/* pointlights.fx (test_pointlights: pointlights_shade), one light of the arrays, set as a prefix
+ * (the tutorial's LightPosition.ToArray()), at (0, 0.5, 0) with radius 1: per light
+ *   att = (1 - saturate(|Lpos - P| / radius))^2 = (1 - 0.5)^2 = 0.25, diff = N.L = 1
+ *   color += A Ai + att Lc Di tex diff + Si Sc saturate(R.V)^n, R = normalize(2 diff N - L) = N */
+static void pointlights(void) {
+    v3 light = v3_make(0, 0.5, 0), l = v3_normalize(v3_sub(light, P));
+    double k = 1 - saturate(v3_length(v3_sub(light, P)) / 1.0), att = k * k, diff = saturate(v3_dot(N, l));
+    double spec = seed_tutorial_specular(N, l, v3_normalize(v3_sub(eye(), P)), 20);
+    rgba c = rgba_scale(rgba_make(1, 1, 1, 1), 0.1);
+    c = rgba_add(c, rgba_scale(rgba_mul(rgba_make(0.9, 0.7, 0.5, 1), texel_colour()), att * 1.0 * diff));
+    c = rgba_add(c, rgba_scale(rgba_make(1, 1, 1, 1), 0.2 * spec));
+    static const char *const p[] = {"activeLights", "1", "LightPosition", "0,0.5,0", "LightColor", "0.9,0.7,0.5,1",
+                                    "LightRadius", "1", "AmbientColor", "1,1,1,1", "AmbientIntensity", "0.1",
+                                    "DiffuseIntensity", "1", "SpecularColor", "1,1,1,1", "SpecularIntensity", "0.2",
+                                    "SpecularPower", "20", "camPosition", "CAMERA", NULL};
+    emit("pointlights.fx", "PointLights", p, "DiffuseTexture", TEXEL, c);
+}
+
 /* point.fx, Material, attenuated (test_point: point_shade):
  *   L = normalize(posicionLuz - P); rd = max(dot(L, N), 0); color = difuso rd
  *   color *= d <= rango ? min(1 / (c1 + c2 d + c3 d^2), 1) : 0; color += ambient; a = 1 */
@@ -177,6 +195,7 @@ int main(void) {
     point();
     point_specular();
     phong();
+    pointlights();
     spot();
     /* The slider: spot_specular.fx's ks moved from 0.05 to 0.8 in the panel (no channel saturates). */
     printf("],\n \"slider\": {\"file\": \"spot_specular.fx\", \"param\": \"ks\", \"value\": 0.8, \"expect\": ");
