@@ -1,8 +1,11 @@
 /* effect.c: owning and querying the compiled effect (effect.h). */
 #include "effect.h"
 
+#include <stdbool.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "eval_code.h"
 
 void hfx_fx_program_clear(hfx_fx_program *p) {
     if (!p) return;
@@ -59,10 +62,21 @@ uint32_t hfx_fx_param_find(const hfx_fx_effect *fx, const char *name) {
     return HFX_NONE;
 }
 
-uint32_t hfx_fx_param_at_word(const hfx_fx_effect *fx, uint32_t word) {
+/* The top-level parameter holding value word `word`, or HFX_NONE. */
+static uint32_t param_at_word(const hfx_fx_effect *fx, uint32_t word) {
     for (uint32_t i = 0; fx && i < fx->top_param_count && i < fx->param_count; i++)
         if (word >= fx->params[i].offset && word - fx->params[i].offset < fx->params[i].words) return i;
     return HFX_NONE;
+}
+
+uint32_t hfx_fx_param_read_at(const hfx_fx_effect *fx, const uint32_t *code, uint32_t at) {
+    uint32_t op = code[at] & 0xffu;
+    return op == HFX_EVC_PARAM || op == HFX_EVC_ELEMENT ? param_at_word(fx, code[at + 1]) : HFX_NONE;
+}
+
+int hfx_fx_param_evaluable(const hfx_fx_param *p) {
+    bool numeric = p->klass == HFX_CLASS_SCALAR || p->klass == HFX_CLASS_VECTOR || p->klass == HFX_CLASS_MATRIX;
+    return numeric && p->words >= 1 && p->words <= HFX_EV_MAX_COMPONENTS;
 }
 
 uint32_t hfx_fx_param_packable(const hfx_fx_effect *fx, uint32_t i) {

@@ -188,7 +188,10 @@ void hfx_fx_effect_free(hfx_fx_effect *fx);                 /* frees fx and ever
 void hfx_fx_program_clear(hfx_fx_program *p);               /* frees what p owns, zeroes it */
 hfx_fx_effect *hfx_fx_effect_copy(const hfx_fx_effect *fx); /* deep copy; NULL when out of memory */
 uint32_t hfx_fx_param_find(const hfx_fx_effect *fx, const char *name); /* top-level by name, or HFX_NONE */
-uint32_t hfx_fx_param_at_word(const hfx_fx_effect *fx, uint32_t word); /* top-level holding value word `word`, or HFX_NONE */
+/* The top-level parameter that the eval_code instruction at code[at] reads (PARAM, ELEMENT), else HFX_NONE. */
+uint32_t hfx_fx_param_read_at(const hfx_fx_effect *fx, const uint32_t *code, uint32_t at);
+/* A numeric value of 1..16 words: what eval_code reads whole (a parameter, or an array's element). */
+int hfx_fx_param_evaluable(const hfx_fx_param *p);
 /* Registers parameter i would take in hfx_c (rows for a matrix, else 1); 0 when it cannot be
  * packed: only a top-level, non-array float scalar, vector or matrix (up to 4x4) with a GLSL name. */
 uint32_t hfx_fx_param_packable(const hfx_fx_effect *fx, uint32_t i);

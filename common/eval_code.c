@@ -102,6 +102,14 @@ static double from_bits(hfx_ev_base b, uint32_t w) {
     return b == HFX_EV_BOOL ? w != 0 : (double)(int32_t)w;
 }
 
+uint32_t hfx_evc_bits(hfx_ev_base b, double v) {
+    if (b != HFX_EV_FLOAT) return b == HFX_EV_UINT ? (uint32_t)v : (uint32_t)(int32_t)v;
+    float f = (float)v;
+    uint32_t w;
+    memcpy(&w, &f, sizeof w);
+    return w;
+}
+
 static void load(hfx_ev_value *v, hfx_ev_base b, uint32_t n, const uint32_t *words) {
     memset(v, 0, sizeof *v);
     v->base = b;

@@ -50,6 +50,8 @@ static inline uint32_t hfx_evc_word(hfx_evc_op op, uint32_t a, uint32_t b) {
 int hfx_evc_validate(const uint32_t *code, uint32_t words, uint32_t value_words, char *err, size_t err_size);
 /* Where the instruction after the one at `at` starts (for walking a validated program). */
 uint32_t hfx_evc_next(const uint32_t *code, uint32_t at, uint32_t words);
+/* Component v of base b as a program or a parameter holds it: float bits, or int / uint bits. */
+uint32_t hfx_evc_bits(hfx_ev_base b, double v);
 /* Runs a validated program over the parameter words; false when the arithmetic does not fold
  * (an integer division by zero, shapes that do not combine): the caller keeps its last value. */
 bool hfx_evc_run(const uint32_t *code, uint32_t words, const uint32_t *values, hfx_ev_value *out);

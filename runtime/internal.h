@@ -171,7 +171,7 @@ enum { /* hfx_slot.mode */
     SLOT_MATRIX, /* one UK_MATRIX upload: slot.up */
     SLOT_OTHER,  /* uploads[first .. first + count) */
     SLOT_REG,    /* packed into the program's registers (hfx_c): reg, reg_rows, reg_cols, up.offset */
-    SLOT_REG_PRE,/* the same, and read by preshaders (pre_count): off Apply's one-change path */
+    SLOT_REG_PRE,/* the same, and read by preshaders: off Apply's one-change path */
     SLOT_PRE     /* read by preshaders alone */
 };
 
@@ -184,8 +184,7 @@ typedef struct hfx_slot {
     uint32_t first, count;  /* all its uploads */
     uint32_t reg;           /* SLOT_REG: first register */
     uint16_t reg_rows, reg_cols; /* SLOT_REG: registers, and the components used in each */
-    uint16_t pre_count;     /* preshaders reading the parameter (program.pre has which) */
-    uint16_t pad_;          /* 64 bytes: indexing is a shift */
+    uint32_t pad_;          /* 64 bytes: indexing is a shift */
 } hfx_slot;
 
 /* A program's preshaders at run time (preshader.c, any back end): per top-level parameter the
@@ -205,7 +204,8 @@ typedef struct hfx_reg_range { uint32_t lo, hi; } hfx_reg_range;
 int hfx_preshaders_init(hfx_preshaders *ps, const hfx_fx_effect *fx, const hfx_fx_program *fp); /* HFX_OK or _MEMORY */
 void hfx_preshaders_free(hfx_preshaders *ps);
 void hfx_preshaders_mark(hfx_preshaders *ps, uint32_t root);  /* top-level parameter root changed */
-void hfx_preshaders_mark_all(hfx_preshaders *ps);             /* the image is new: compute them all */
+/* Some preshader reads top-level parameter root. */
+static inline int hfx_preshaders_read(const hfx_preshaders *ps, uint32_t root) { return ps->total && ps->count[root]; }
 /* Runs the marked preshaders into regs (reg_size vec4 registers), growing range over what they wrote. */
 void hfx_preshaders_run(hfx_preshaders *ps, const uint32_t *values, float *regs, uint32_t reg_size, hfx_reg_range *range);
 
@@ -459,7 +459,7 @@ static inline void hfx_rt_reg_send(hfx_rt_program *p, hfx_reg_range r) {
     p->reg_call(p->reg_locs[r.lo], (GLsizei)(hi - r.lo + 1), p->regs + 4 * (size_t)r.lo);
 }
 
-/* preshader.c: a GL program's preshaders (after its registers are set up), counted in its slots. */
+/* preshader.c: a GL program's preshaders (after its registers are set up); what they read joins its reads. */
 int hfx_rt_preshaders_setup(hfx_rt_program *p, const hfx_fx_effect *fx, const hfx_fx_program *fp);
 
 /* Uploads the parameters whose version differs from the one this program holds, visiting only

@@ -13,9 +13,7 @@
 static void each_root(const hfx_fx_effect *fx, const uint32_t *code, uint32_t words, void (*fn)(void *, uint32_t),
                       void *ctx) {
     for (uint32_t at = 0; at < words; at = hfx_evc_next(code, at, words)) {
-        uint32_t op = code[at] & 0xffu;
-        if (op != HFX_EVC_PARAM && op != HFX_EVC_ELEMENT) continue;
-        uint32_t r = hfx_fx_param_at_word(fx, code[at + 1]);
+        uint32_t r = hfx_fx_param_read_at(fx, code, at);
         if (r != HFX_NONE) fn(ctx, r);
     }
 }
@@ -86,12 +84,6 @@ void hfx_preshaders_mark(hfx_preshaders *ps, uint32_t root) {
     }
 }
 
-void hfx_preshaders_mark_all(hfx_preshaders *ps) {
-    if (!ps->total) return;
-    memset(ps->dirty, 1, ps->total);
-    ps->pending = ps->total;
-}
-
 /* One preshader's value into its registers (regs: reg_size vec4s), rows padded to 4; false when
  * it did not compute (an operation that does not fold: the registers keep their last value). */
 static bool run_one(const hfx_preshaders *ps, const hfx_fx_preshader *q, const uint32_t *values, float *regs,
@@ -130,15 +122,10 @@ static int add_read(hfx_rt_program *p, uint32_t r) {
     return HFX_OK;
 }
 
-/* GL's program: its slots carry the counts, so Apply's paths test the slot they already hold. */
 int hfx_rt_preshaders_setup(hfx_rt_program *p, const hfx_fx_effect *fx, const hfx_fx_program *fp) {
     if (!fp->preshader_count || !p->regs) return HFX_OK;
     int rc = hfx_preshaders_init(&p->pre, fx, fp);
-    for (uint32_t r = 0; !rc && r < fx->top_param_count; r++) {
-        if (!p->pre.count[r]) continue;
-        if (p->pre.count[r] > UINT16_MAX) return HFX_ERR_MEMORY;
-        p->slots[r].pre_count = (uint16_t)p->pre.count[r];
-        rc = add_read(p, r);
-    }
+    for (uint32_t r = 0; !rc && r < fx->top_param_count; r++)
+        if (p->pre.count[r]) rc = add_read(p, r);
     return rc;
 }

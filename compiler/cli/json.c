@@ -189,8 +189,7 @@ static cJSON *preshader_json(const hfx_fx_effect *fx, const hfx_fx_program *p, c
     cJSON *reads = cJSON_AddArrayToObject(e, "parameters");
     const uint32_t *code = p->pre_code + q->first;
     for (uint32_t at = 0; at < q->words; at = hfx_evc_next(code, at, q->words)) {
-        uint32_t op = code[at] & 0xffu;
-        uint32_t r = op == HFX_EVC_PARAM || op == HFX_EVC_ELEMENT ? hfx_fx_param_at_word(fx, code[at + 1]) : HFX_NONE;
+        uint32_t r = hfx_fx_param_read_at(fx, code, at);
         bool seen = false;
         const cJSON *it;
         cJSON_ArrayForEach(it, reads) seen |= r != HFX_NONE && strcmp(it->valuestring, fx->params[r].name) == 0;

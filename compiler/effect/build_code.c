@@ -26,19 +26,11 @@ static void emit(code *c, uint32_t w) {
     fx->exprs[fx->expr_words++] = w;
 }
 
-static uint32_t bits_of(double v, hfx_ev_base b) {
-    if (b != HFX_EV_FLOAT) return b == HFX_EV_UINT ? (uint32_t)v : (uint32_t)(int32_t)v;
-    float f = (float)v;
-    uint32_t w;
-    memcpy(&w, &f, sizeof w);
-    return w;
-}
-
 /* Constant components as CONST: int when they all came from ints, else float. */
 static void emit_const(code *c, const hfx_cvec *v) {
     hfx_ev_base base = v->integral ? HFX_EV_INT : HFX_EV_FLOAT;
     emit(c, hfx_evc_word(HFX_EVC_CONST, base, v->n));
-    for (uint32_t i = 0; i < v->n; i++) emit(c, bits_of(v->v[i], base));
+    for (uint32_t i = 0; i < v->n; i++) emit(c, hfx_evc_bits(base, v->v[i]));
 }
 
 static bool fold(code *c, const hfx_expr *e) {
@@ -58,8 +50,7 @@ static bool param(code *c, const hfx_expr *e) {
     uint32_t p = hfx_build_param_of(c->b, e);
     if (p == HFX_NONE) return false;
     const hfx_fx_param *fp = &c->b->fx->params[p];
-    bool numeric = fp->klass == HFX_CLASS_SCALAR || fp->klass == HFX_CLASS_VECTOR || fp->klass == HFX_CLASS_MATRIX;
-    if (!numeric || fp->elements || !fp->words || fp->words > HFX_EV_MAX_COMPONENTS) return false;
+    if (fp->elements || !hfx_fx_param_evaluable(fp)) return false;
     emit(c, hfx_evc_word(HFX_EVC_PARAM, param_base(fp->type), fp->words));
     emit(c, fp->offset);
     return true;
@@ -83,7 +74,7 @@ static bool table(code *c, const hfx_expr *e, int depth) {
         expr(c, e->args[1], depth + 1);
         emit(c, hfx_evc_word(HFX_EVC_TABLE, base, v.n / count));
         emit(c, count);
-        for (uint32_t i = 0; i < v.n; i++) emit(c, bits_of(v.v[i], base));
+        for (uint32_t i = 0; i < v.n; i++) emit(c, hfx_evc_bits(base, v.v[i]));
     }
     hfx_cvec_free(&v);
     return ok;
@@ -95,8 +86,7 @@ static bool element(code *c, const hfx_expr *e, int depth) {
     const hfx_fx_effect *fx = c->b->fx;
     if (p == HFX_NONE || !fx->params[p].elements || fx->params[p].first_child == HFX_NONE) return false;
     const hfx_fx_param *el = &fx->params[fx->params[p].first_child];
-    bool numeric = el->klass == HFX_CLASS_SCALAR || el->klass == HFX_CLASS_VECTOR || el->klass == HFX_CLASS_MATRIX;
-    if (!numeric || !el->words || el->words > HFX_EV_MAX_COMPONENTS) return false;
+    if (!hfx_fx_param_evaluable(el)) return false;
     expr(c, e->args[1], depth + 1);
     emit(c, hfx_evc_word(HFX_EVC_ELEMENT, param_base(el->type), el->words));
     emit(c, el->offset);

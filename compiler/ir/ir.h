@@ -46,7 +46,6 @@ struct ir_var {
     hfx_dim dim;             /* SAMPLER: dimension as sampled */
     bool written, used;      /* set by lower/uses.c */
     bool hoisted;            /* for-init variable used after its loop: declared before it */
-    bool written_early;      /* lower/preshade.c, while it walks the entry's first statements */
     ir_expr *konst;          /* const variable whose initialiser folded to a constant (fold.c) */
     ir_expr *bound;          /* PARAM of the entry bound by a compile argument (specialise) */
     /* A preshader (lower/preshade.c): the uniform-only expression this private global holds,
@@ -171,6 +170,9 @@ ir_expr *ir_clone_expr(ir_ctx *c, const ir_expr *e);
 bool ir_is_const(const ir_expr *e);
 bool ir_has_side_effects(const ir_expr *e);
 ir_var *ir_lvalue_root(const ir_expr *e); /* the variable an l-value writes, or NULL */
+/* e writes its operand i: an assignment's target, ++ / --'s operand, a call's out argument,
+ * sincos's / modf's / frexp's outputs. */
+bool ir_writes_operand(const ir_expr *e, uint32_t i);
 bool ir_const_truth(const ir_expr *e); /* the first component as a bool */
 
 /* Walks every expression slot in a statement tree (pre-order on statements, post-order on

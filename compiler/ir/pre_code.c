@@ -18,9 +18,7 @@ static bool numeric_base(const hfx_type *t) { return hfx_type_is_numeric(t) && t
 static bool param_leaf(const ir_ctx *c, const ir_var *v) {
     if (v->kind != IRV_UNIFORM || v->param == HFX_NONE || v->param >= c->fx->param_count) return false;
     const hfx_fx_param *p = &c->fx->params[v->param];
-    bool numeric = p->klass == HFX_CLASS_SCALAR || p->klass == HFX_CLASS_VECTOR || p->klass == HFX_CLASS_MATRIX;
-    return numeric && !p->elements && p->words && p->words <= HFX_EV_MAX_COMPONENTS && numeric_base(v->type) &&
-           p->words == hfx_type_components(v->type);
+    return !p->elements && hfx_fx_param_evaluable(p) && numeric_base(v->type) && p->words == hfx_type_components(v->type);
 }
 
 /* A parameter array of numeric elements (ELEMENT), read at an index. */
@@ -29,9 +27,7 @@ static const hfx_fx_param *param_array(const ir_ctx *c, const ir_expr *e) {
     const hfx_fx_param *p = &c->fx->params[e->var->param];
     if (!p->elements || p->first_child == HFX_NONE || e->type->kind != TY_ARRAY || !numeric_base(e->type->elem)) return NULL;
     const hfx_fx_param *el = &c->fx->params[p->first_child];
-    bool numeric = el->klass == HFX_CLASS_SCALAR || el->klass == HFX_CLASS_VECTOR || el->klass == HFX_CLASS_MATRIX;
-    return numeric && el->words && el->words <= HFX_EV_MAX_COMPONENTS && el->words == hfx_type_components(e->type->elem)
-               ? p : NULL;
+    return hfx_fx_param_evaluable(el) && el->words == hfx_type_components(e->type->elem) ? p : NULL;
 }
 
 /* Inner sizes agree (the checker made them: a truncated matrix is an explicit conversion). */
@@ -99,21 +95,13 @@ static void put(pc *p, uint32_t w) {
 
 static hfx_ev_base base_of(const hfx_type *t) { return hfx_base_ev(t->kind == TY_ARRAY ? t->elem->base : t->base); }
 
-static uint32_t bits(double v, hfx_ev_base b) {
-    if (b != HFX_EV_FLOAT) return (uint32_t)(int32_t)v;
-    float f = (float)v;
-    uint32_t w;
-    memcpy(&w, &f, sizeof w);
-    return w;
-}
-
 static void emit(pc *p, const ir_expr *e);
 
 static void constant(pc *p, const ir_expr *e) {
     unsigned n = hfx_type_components(e->type);
     hfx_ev_base b = base_of(e->type);
     put(p, hfx_evc_word(HFX_EVC_CONST, b, n));
-    for (unsigned i = 0; i < n; i++) put(p, bits(e->cval[i], b));
+    for (unsigned i = 0; i < n; i++) put(p, hfx_evc_bits(b, e->cval[i]));
 }
 
 static void param(pc *p, const ir_var *v) {

@@ -290,12 +290,12 @@ void hfx_rt_program_ready(hfx_rt_program *p, uint32_t tops) {
         hfx_slot *slot = &p->slots[i];
         slot->held = 0; /* GL holds no value yet */
         if (slot->mode == SLOT_REG || !slot->count) {
-            /* preshaders read it: the paths that look at pre_count */
-            if (slot->pre_count) slot->mode = slot->mode == SLOT_REG ? SLOT_REG_PRE : SLOT_PRE;
+            /* preshaders read it: off the paths that do not look for them */
+            if (hfx_preshaders_read(&p->pre, i)) slot->mode = slot->mode == SLOT_REG ? SLOT_REG_PRE : SLOT_PRE;
             continue;
         }
         slot->up = p->uploads[slot->first];
-        slot->mode = slot->count > 1 || slot->pre_count ? SLOT_OTHER : slot->up.kind == UK_FLOAT ? SLOT_FLOAT
+        slot->mode = slot->count > 1 || hfx_preshaders_read(&p->pre, i) ? SLOT_OTHER : slot->up.kind == UK_FLOAT ? SLOT_FLOAT
                    : slot->up.kind == UK_MATRIX ? SLOT_MATRIX : SLOT_OTHER;
     }
     p->alpha_test = p->alpha_func_loc >= 0 || p->alpha_ref_loc >= 0;
@@ -438,7 +438,7 @@ void hfx_rt_upload_all(hfx_effect *fx, hfx_rt_program *p) {
         s->held = fx->stamps[r];
         if (s->mode == SLOT_REG || s->mode == SLOT_REG_PRE) hfx_rt_reg_copy(p, s, fx->values, &regs);
         else hfx_rt_upload_slot(fx, p, s);
-        if (s->pre_count) hfx_preshaders_mark(&p->pre, r);
+        if (hfx_preshaders_read(&p->pre, r)) hfx_preshaders_mark(&p->pre, r);
     }
     if (p->pre.pending) hfx_preshaders_run(&p->pre, fx->values, p->regs, p->reg_size, &regs);
     hfx_rt_reg_send(p, regs);
@@ -455,7 +455,7 @@ void hfx_rt_upload_slot(hfx_effect *fx, const hfx_rt_program *p, const hfx_slot 
 static void upload_other(hfx_effect *fx, hfx_rt_program *p, const hfx_slot *s, uint32_t root, hfx_reg_range *regs) {
     if (s->mode == SLOT_OTHER) hfx_rt_upload_slot(fx, p, s);
     else if (s->mode == SLOT_REG_PRE) hfx_rt_reg_copy(p, s, fx->values, regs);
-    if (s->pre_count) hfx_preshaders_mark(&p->pre, root);
+    if (hfx_preshaders_read(&p->pre, root)) hfx_preshaders_mark(&p->pre, root);
 }
 
 int hfx_rt_upload_changed(hfx_effect *fx, hfx_rt_program *p) {

@@ -80,13 +80,13 @@ static void write_slot(const vk_program *p, vk_bound *b, uint32_t r, const uint3
     const vk_slot *s = &p->slots[r];
     if (s->mode == SLOT_REG) write_regs(b->image + p->regs_at, s, values);
     for (uint32_t k = 0; s->mode == SLOT_OTHER && k < s->count; k++) write_upload(b->image, &p->uploads[s->first + k], values);
-    if (b->pre.total && b->pre.count[r]) hfx_preshaders_mark(&b->pre, r);
+    if (hfx_preshaders_read(&b->pre, r)) hfx_preshaders_mark(&b->pre, r);
     b->dirty = 1;
 }
 
 /* A parameter this program's block depends on: read by the shaders or by a preshader. */
 static bool depends_on(const vk_program *p, const vk_bound *b, uint32_t r) {
-    return p->slots[r].mode || (b->pre.total && b->pre.count[r]);
+    return p->slots[r].mode || hfx_preshaders_read(&b->pre, r);
 }
 
 static void scan_all(hfx_effect *fx, const vk_program *p, vk_bound *b) {

@@ -22,13 +22,7 @@ typedef struct uses_of {
 static void count_in(uses_of *u, ir_expr **slot, bool lvalue);
 
 static void count_args(uses_of *u, ir_expr *e) {
-    for (uint32_t i = 0; i < e->n; i++) {
-        bool out = (e->kind == IE_CALL && i < e->fn->param_count && (e->fn->params[i]->mods & MOD_OUT)) ||
-                   (e->kind == IE_INTRIN && ((e->intrin == HFX_INTR_SINCOS && i > 0) ||
-                                             ((e->intrin == HFX_INTR_MODF || e->intrin == HFX_INTR_FREXP) && i == 1)));
-        bool written = (e->kind == IE_ASSIGN && i == 0) || (e->kind == IE_UNARY && e->op >= OP_PREINC && e->op <= OP_POSTDEC);
-        count_in(u, &e->a[i], out || written);
-    }
+    for (uint32_t i = 0; i < e->n; i++) count_in(u, &e->a[i], ir_writes_operand(e, i));
 }
 
 /* Reads and writes of u->v in *slot (lvalue: the place is written, through swizzles, indexes

@@ -22,16 +22,13 @@ static void mark_written(ir_ctx *c, ir_shader *sh, const ir_expr *lv) {
 static void find_writes(ir_ctx *c, ir_expr **slot, void *data) {
     ir_shader *sh = data;
     ir_expr *e = *slot;
-    if (e->kind == IE_ASSIGN && e->a[0]->kind == IE_CONSTRUCT) /* float4(a, b) = v: each argument */
-        for (uint32_t i = 0; i < e->a[0]->n; i++) mark_written(c, sh, e->a[0]->a[i]);
-    else if (e->kind == IE_ASSIGN) mark_written(c, sh, e->a[0]);
-    else if (e->kind == IE_UNARY && e->op >= OP_PREINC && e->op <= OP_POSTDEC) mark_written(c, sh, e->a[0]);
-    else if (e->kind == IE_CALL) {
-        for (uint32_t i = 0; i < e->n && i < e->fn->param_count; i++)
-            if (e->fn->params[i]->mods & MOD_OUT) mark_written(c, sh, e->a[i]);
-    } else if (e->kind == IE_INTRIN) {
-        if (e->intrin == HFX_INTR_SINCOS && e->n == 3) { mark_written(c, sh, e->a[1]); mark_written(c, sh, e->a[2]); }
-        if ((e->intrin == HFX_INTR_MODF || e->intrin == HFX_INTR_FREXP) && e->n == 2) mark_written(c, sh, e->a[1]);
+    for (uint32_t i = 0; i < e->n; i++) {
+        if (!ir_writes_operand(e, i)) continue;
+        const ir_expr *t = e->a[i];
+        if (e->kind == IE_ASSIGN && t->kind == IE_CONSTRUCT) /* float4(a, b) = v: each argument */
+            for (uint32_t k = 0; k < t->n; k++) mark_written(c, sh, t->a[k]);
+        else
+            mark_written(c, sh, t);
     }
 }
 

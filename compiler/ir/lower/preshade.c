@@ -105,13 +105,20 @@ static void root(ir_ctx *c, ir_expr **slot, void *data) {
     if (visit(p, slot, 0) == HOIST && !hoist(p, slot)) hoist_parts(p, *slot, NULL, 0);
 }
 
-/* e with every read of a private copy in `fresh` (not yet written by the entry) read from its
- * uniform instead: what the copy still holds. */
+/* The private copies the entry's first statements have assigned so far. */
+typedef struct assigned { const ir_var **vars; uint32_t count; } assigned;
+
+static bool was_assigned(const assigned *a, const ir_var *v) {
+    for (uint32_t i = 0; i < a->count; i++)
+        if (a->vars[i] == v) return true;
+    return false;
+}
+
+/* A read of a private copy not assigned yet reads its uniform instead: what the copy still holds. */
 static void read_uniforms(ir_ctx *c, ir_expr **slot, void *data) {
     (void)c;
-    (void)data;
     ir_expr *e = *slot;
-    if (e->kind == IE_VAR && e->var->copy_of && !e->var->written_early) e->var = e->var->copy_of;
+    if (e->kind == IE_VAR && e->var->copy_of && !was_assigned(data, e->var)) e->var = e->var->copy_of;
 }
 
 /* `Light = normalize(Light);` at the top of the entry, on a parameter the shader writes (its
@@ -119,16 +126,17 @@ static void read_uniforms(ir_ctx *c, ir_expr **slot, void *data) {
  * work too. Such assignments, in order until another statement, read a preshader. */
 static void entry_assignments(pre *p) {
     ir_stmt *body = p->sh->entry->body;
-    for (uint32_t i = 0; body && body->kind == IS_BLOCK && i < body->count; i++) {
+    if (!body || body->kind != IS_BLOCK) return;
+    assigned done = {HFX_NEW_ARRAY(p->c->arena, const ir_var *, body->count + 1), 0};
+    for (uint32_t i = 0; i < body->count; i++) {
         ir_stmt *s = body->body[i];
         ir_expr *e = s->kind == IS_EXPR ? s->expr : NULL;
         if (!e || e->kind != IE_ASSIGN || e->op != OP_NONE || e->a[0]->kind != IE_VAR || !e->a[0]->var->copy_of) break;
         ir_expr *value = ir_clone_expr(p->c, e->a[1]);
-        ir_walk_expr(p->c, &value, read_uniforms, NULL);
+        ir_walk_expr(p->c, &value, read_uniforms, &done);
         if (visit(p, &value, 0) == HOIST && hoist(p, &value)) e->a[1] = value;
-        e->a[0]->var->written_early = true;
+        done.vars[done.count++] = e->a[0]->var;
     }
-    for (uint32_t i = 0; i < p->sh->global_count; i++) p->sh->globals[i]->written_early = false;
 }
 
 static uint32_t parameter_regs(const ir_ctx *c, const ir_shader *sh) {

@@ -53,6 +53,18 @@ bool ir_has_side_effects(const ir_expr *e) {
     return false;
 }
 
+bool ir_writes_operand(const ir_expr *e, uint32_t i) {
+    switch (e->kind) {
+    case IE_ASSIGN: return i == 0;
+    case IE_UNARY: return e->op >= OP_PREINC && e->op <= OP_POSTDEC;
+    case IE_CALL: return i < e->fn->param_count && (e->fn->params[i]->mods & MOD_OUT);
+    case IE_INTRIN:
+        if (e->intrin == HFX_INTR_SINCOS) return e->n == 3 && i > 0;
+        return (e->intrin == HFX_INTR_MODF || e->intrin == HFX_INTR_FREXP) && e->n == 2 && i == 1;
+    default: return false;
+    }
+}
+
 /* The variable an l-value expression writes (through swizzles, indexes and fields). */
 ir_var *ir_lvalue_root(const ir_expr *e) {
     while (e && (e->kind == IE_SWIZZLE || e->kind == IE_INDEX || e->kind == IE_FIELD)) e = e->a[0];
