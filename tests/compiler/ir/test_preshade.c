@@ -122,6 +122,20 @@ static void project_effects_keep_nothing(void) {
     }
 }
 
+/* The first program's GLSL 330 of an effect compiled with packed parameters (preshaders on):
+ * *out keeps the result alive (hfxc_result_free). */
+static const hfx_fx_program *first_program(hfxc_result **out, const char *path, const char *src, const char *name) {
+    hfxc_options o = {0};
+    o.targets = 1u << HFX_TARGET_GLSL330;
+    o.flags = HFXC_PACK_UNIFORMS | HFXC_NO_WARNINGS;
+    *out = path ? hfxc_compile_file(path, &o) : hfxc_compile_memory(src, strlen(src), name, &o);
+    const hfx_fx_effect *fx = hfxc_result_effect(*out);
+    CHECK(fx != NULL && fx->program_count > 0);
+    return fx && fx->program_count ? &fx->programs[0] : NULL;
+}
+
+static const char *glsl_of(const hfx_fx_program *p, int stage) { return p->code[stage][HFX_TARGET_GLSL330].data; }
+
 /* spot_specular.fx: the vertex shader's mul(world, mul(view, projection)) and the pixel
  * shader's normalize(posicionLuz - blancoLuz), cos(anguloInterno) and cos(anguloExterno). The
  * program's parameters take registers 0..15 (world 4, then twelve scalars and vectors), so the
@@ -129,23 +143,18 @@ static void project_effects_keep_nothing(void) {
 static void the_glsl_says_what_a_register_holds(void) {
     test_require_seeds();
     char *path = test_seed_path("spot_specular.fx");
-    hfxc_options o = {0};
-    o.targets = 1u << HFX_TARGET_GLSL330;
-    o.flags = HFXC_PACK_UNIFORMS | HFXC_NO_WARNINGS;
-    hfxc_result *r = hfxc_compile_file(path, &o);
-    const hfx_fx_effect *fx = hfxc_result_effect(r);
-    CHECK(fx != NULL);
-    if (fx) {
-        const char *vs = fx->programs[0].code[HFX_STAGE_VERTEX][HFX_TARGET_GLSL330].data;
-        const char *ps = fx->programs[0].code[HFX_STAGE_FRAGMENT][HFX_TARGET_GLSL330].data;
+    hfxc_result *r;
+    const hfx_fx_program *p = first_program(&r, path, NULL, NULL);
+    if (p) {
+        const char *vs = glsl_of(p, HFX_STAGE_VERTEX), *ps = glsl_of(p, HFX_STAGE_FRAGMENT);
         CHECK_CONTAINS(vs, "mat4 hfx_pre0; // hfx_c[16..19] = mul(world, mul(view, projection)), computed on the CPU (a preshader)\n");
         CHECK_CONTAINS(vs, "    hfx_pre0 = mat4(hfx_c[16], hfx_c[17], hfx_c[18], hfx_c[19]);\n");
         CHECK_CONTAINS(vs, "    salida.Posicion = hfx_pre0 * entrada.Posicion;\n"); /* mvp, read once, moved forward */
         CHECK_CONTAINS(ps, "vec3 hfx_pre0; // hfx_c[20] = normalize(posicionLuz - blancoLuz), computed on the CPU (a preshader)\n");
         CHECK_CONTAINS(ps, "float hfx_pre1; // hfx_c[21] = cos(anguloInterno), computed on the CPU (a preshader)\n");
         CHECK_CONTAINS(ps, "float hfx_pre2; // hfx_c[22] = cos(anguloExterno), computed on the CPU (a preshader)\n");
-        CHECK_INT(fx->programs[0].reg_count, 23);
-        CHECK_INT(fx->programs[0].preshader_count, 4);
+        CHECK_INT(p->reg_count, 23);
+        CHECK_INT(p->preshader_count, 4);
     }
     hfxc_result_free(r);
     free(path);
@@ -164,18 +173,14 @@ static void a_parameter_normalised_in_place(void) {
         "    return float4(d, K);\n"
         "}\n"
         "technique T { pass P { PixelShader = compile ps_3_0 PS(); } }\n";
-    hfxc_options o = {0};
-    o.targets = 1u << HFX_TARGET_GLSL330;
-    o.flags = HFXC_PACK_UNIFORMS;
-    hfxc_result *r = hfxc_compile_memory(src, strlen(src), "in_place.fx", &o);
-    const hfx_fx_effect *fx = hfxc_result_effect(r);
-    CHECK(fx != NULL);
-    if (fx) {
-        const char *ps = fx->programs[0].code[HFX_STAGE_FRAGMENT][HFX_TARGET_GLSL330].data;
+    hfxc_result *r;
+    const hfx_fx_program *p = first_program(&r, NULL, src, "in_place.fx");
+    if (p) {
+        const char *ps = glsl_of(p, HFX_STAGE_FRAGMENT);
         CHECK_CONTAINS(ps, "vec3 hfx_pre0; // hfx_c[2] = normalize(L), computed on the CPU (a preshader)\n");
         CHECK_CONTAINS(ps, "    hfx_priv_L = hfx_pre0;\n");
         CHECK_CONTAINS(ps, "    hfx_priv_K = normalize(hfx_priv_K + n);\n");
-        CHECK_INT(fx->programs[0].preshader_count, 1);
+        CHECK_INT(p->preshader_count, 1);
     }
     hfxc_result_free(r);
 }
@@ -198,20 +203,16 @@ static void transforms_in_turn_regroup(void) {
         "    return o + t;\n"
         "}\n"
         "technique T { pass P { VertexShader = compile vs_3_0 VS(); } }\n";
-    hfxc_options o = {0};
-    o.targets = 1u << HFX_TARGET_GLSL330;
-    o.flags = HFXC_PACK_UNIFORMS;
-    hfxc_result *r = hfxc_compile_memory(src, strlen(src), "turns.fx", &o);
-    const hfx_fx_effect *fx = hfxc_result_effect(r);
-    CHECK(fx != NULL);
-    if (fx) {
-        const char *vs = fx->programs[0].code[HFX_STAGE_VERTEX][HFX_TARGET_GLSL330].data;
+    hfxc_result *r;
+    const hfx_fx_program *p = first_program(&r, NULL, src, "turns.fx");
+    if (p) {
+        const char *vs = glsl_of(p, HFX_STAGE_VERTEX);
         CHECK_CONTAINS(vs, "= mul(mul(World, View), Projection), computed on the CPU (a preshader)\n");
         CHECK_CONTAINS(vs, "    vec4 o = hfx_pre0 * p;\n");
         CHECK_CONTAINS(vs, "    vec4 twice = A * p;\n");
         CHECK_CONTAINS(vs, "    vec4 t = B * twice + twice;\n");
         CHECK_CONTAINS(vs, "    vec4 l = B * p;\n");
-        CHECK_INT(fx->programs[0].preshader_count, 1);
+        CHECK_INT(p->preshader_count, 1);
     }
     hfxc_result_free(r);
 }
