@@ -8,6 +8,7 @@ char *test_read_file(const char *path, size_t *size);   /* malloc'ed, NUL-termin
 const char *test_seed_dir(void);                        /* ../shared/seed-fx, or NULL when absent */
 char *test_seed_path(const char *file);                 /* malloc'ed; NULL when the corpus is absent */
 void test_require_seeds(void);                          /* skips the test (exit 77) when absent */
+void test_seeds_or_finish(void);                        /* seeds absent: ends the test (failed, or skipped) */
 char *test_temp_dir(void);                              /* a fresh folder under /tmp; malloc'ed */
 
 #endif
