@@ -9,5 +9,6 @@ const char *test_seed_dir(void);                        /* ../shared/seed-fx, or
 char *test_seed_path(const char *file);                 /* malloc'ed; NULL when the corpus is absent */
 void test_require_seeds(void);                          /* skips the test (exit 77) when absent */
 char *test_temp_dir(void);                              /* a fresh folder under /tmp; malloc'ed */
+void test_remove_dir(const char *dir);                  /* the folder and all in it; says when it cannot */
 
 #endif
