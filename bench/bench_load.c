@@ -109,11 +109,8 @@ static int run_kind(int fx_source) {
     }
     printf("all %s loads: cold %.1f ms, cached %.1f ms: %.1fx\n\n", fx_source ? ".fx" : ".hfxo", sum_first * 1e3,
            sum_second * 1e3, sum_first / sum_second);
-    empty_folder(cache);
-    remove(cache);
-    char cmd[128];
-    snprintf(cmd, sizeof cmd, "rm -rf %s", mesa_cache);
-    if (system(cmd) != 0) fprintf(stderr, "could not remove %s\n", mesa_cache);
+    test_remove_dir(cache);
+    test_remove_dir(mesa_cache);
     test_gl_destroy(gl);
     return 0;
 }

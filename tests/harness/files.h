@@ -10,5 +10,6 @@ char *test_seed_path(const char *file);                 /* malloc'ed; NULL when 
 void test_require_seeds(void);                          /* skips the test (exit 77) when absent */
 void test_seeds_or_finish(void);                        /* seeds absent: ends the test (failed, or skipped) */
 char *test_temp_dir(void);                              /* a fresh folder under /tmp; malloc'ed */
+void test_remove_dir(const char *dir);                  /* the folder and all in it; says when it cannot */
 
 #endif

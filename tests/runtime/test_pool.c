@@ -185,9 +185,7 @@ int main(void) {
     RUN(mismatch_names_both_declarations);
     RUN(reload_stays_in_the_pool);
     RUN(shared_textures_and_nulls);
-    char cmd[1024];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp);
-    if (system(cmd) != 0) fprintf(stderr, "could not remove %s\n", tmp);
+    test_remove_dir(tmp);
     free(tmp);
     hfx_device_destroy(dev);
     test_gl_destroy(gl);

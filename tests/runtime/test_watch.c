@@ -250,9 +250,7 @@ int main(void) {
     RUN(a_missing_file_is_a_change);
     RUN(hfxo_and_memory);
     RUN(a_check_is_cheap);
-    char cmd[1024];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp);
-    if (system(cmd) != 0) fprintf(stderr, "could not remove %s\n", tmp);
+    test_remove_dir(tmp);
     free(tmp);
     hfx_device_destroy(dev);
     test_gl_destroy(gl);

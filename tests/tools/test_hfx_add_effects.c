@@ -160,8 +160,7 @@ int main(void) {
     free(cp), free(built);
     RUN(with_makefiles);
     RUN(with_ninja);
-    char *rm = view_format("rm -rf %s", tmp);
-    view_run(rm, NULL);
-    free(rm), free(tmp), free(hfxc);
+    test_remove_dir(tmp);
+    free(tmp), free(hfxc);
     return test_summary();
 }

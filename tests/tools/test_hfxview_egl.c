@@ -127,9 +127,7 @@ int main(void) {
         free(args);
         free(out);
         free(hfxview);
-        char *rm = view_format("rm -rf %s", tmp);
-        view_run(rm, NULL);
-        free(rm);
+        test_remove_dir(tmp);
         free(tmp);
         exit(77);
     }
@@ -141,9 +139,7 @@ int main(void) {
     RUN(fx_effects_match_osmesa);
     RUN(screen_space_inputs_match);
     RUN(seeds_match_osmesa);
-    char *rm = view_format("rm -rf %s", tmp);
-    view_run(rm, NULL);
-    free(rm);
+    test_remove_dir(tmp);
     free(tmp);
     free(hfxview);
     return test_summary();

@@ -170,9 +170,7 @@ int main(void) {
     RUN(blend_passes_add);
     RUN(default_is_the_first_technique_that_draws);
     RUN(egl_too);
-    char *rm = view_format("rm -rf %s", tmp);
-    view_run(rm, NULL);
-    free(rm);
+    test_remove_dir(tmp);
     free(fx);
     free(tmp);
     free(hfxview);

@@ -291,9 +291,7 @@ int main(void) {
     RUN(exit_codes_and_messages);
     RUN(effect_errors);
     RUN(renders_hfxo);
-    char *rm = view_format("rm -rf %s", tmp);
-    view_run(rm, NULL);
-    free(rm);
+    test_remove_dir(tmp);
     free(tmp);
     free(hfxview);
     return test_summary();

@@ -155,9 +155,7 @@ int main(void) {
     RUN(tutorial0_checker_orientation);
     RUN(multilights_repaired_passes);
     RUN(every_seed_renders_lit);
-    char *rm = view_format("rm -rf %s", tmp);
-    view_run(rm, NULL);
-    free(rm);
+    test_remove_dir(tmp);
     free(tmp);
     free(hfxview);
     return test_summary();

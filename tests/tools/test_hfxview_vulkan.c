@@ -101,9 +101,7 @@ int main(void) {
     RUN(seeds_match);
     RUN(fx_folder_matches);
     printf("gl-vs-vulkan: %d pipelines made for %d Vulkan pictures\n", pipelines, pictures);
-    char *rm = view_format("rm -rf %s", tmp);
-    view_run(rm, NULL);
-    free(rm);
+    test_remove_dir(tmp);
     free(tmp);
     free(hfxview);
     return test_summary();

@@ -16,12 +16,6 @@
 #include <IL/il.h>
 #endif
 
-size_t hv_image_face_bytes(const hv_image *img) {
-    return (size_t)img->width * (size_t)img->height * (size_t)(img->depth > 1 ? img->depth : 1) * 4;
-}
-
-int hv_image_face_count(const hv_image *img) { return img->faces > 1 ? img->faces : 1; }
-
 static int has_extension(const char *path, const char *ext) {
     size_t n = strlen(path), e = strlen(ext);
     return n > e && strcasecmp(path + n - e, ext) == 0;

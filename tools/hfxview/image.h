@@ -12,9 +12,12 @@ typedef struct hv_image {
     unsigned char *rgba; /* faces * depth * height * width * 4 bytes, top row first */
 } hv_image;
 
-/* Bytes of one face (all its slices) and the number of faces, counting 0 as 1. */
-size_t hv_image_face_bytes(const hv_image *img);
-int hv_image_face_count(const hv_image *img);
+/* Bytes of one face (all its slices) and the number of faces, counting 0 as 1. Inline so that
+ * render.c links without the file readers (the web page's module has no libpng or stb). */
+static inline size_t hv_image_face_bytes(const hv_image *img) {
+    return (size_t)img->width * (size_t)img->height * (size_t)(img->depth > 1 ? img->depth : 1) * 4;
+}
+static inline int hv_image_face_count(const hv_image *img) { return img->faces > 1 ? img->faces : 1; }
 
 int hv_image_load(hv_image *img, const char *path, char *err, size_t errlen); /* 0, or -1 with err */
 int hv_image_write_png(const hv_image *img, const char *path);              /* 0, or -1 */

@@ -130,7 +130,8 @@ static int pick_technique(viewer *v) {
     return EXIT_OK;
 }
 
-static int apply_options(viewer *v) {
+/* The scene's matrices, camera and light, then the --set values over them (GL and --vulkan alike). */
+static int bind_scene_and_sets(viewer *v) {
     hv_scene scene;
     hv_scene_from_options(&scene, &v->opt);
     hv_bind_scene(v->fx, &scene);
@@ -140,6 +141,12 @@ static int apply_options(viewer *v) {
         snprintf(name, sizeof name, "%.*s", (int)n, v->opt.sets[i].name);
         if (hv_set_param(v->fx, name, v->opt.sets[i].value, v->err, sizeof v->err) != 0) return input_error(v->err);
     }
+    return EXIT_OK;
+}
+
+static int apply_options(viewer *v) {
+    int rc = bind_scene_and_sets(v);
+    if (rc != EXIT_OK) return rc;
     if (hv_bind_textures(&v->textures, v->gl, v->fx, &v->opt, v->err, sizeof v->err))
         return input_error(v->err);
     return EXIT_OK;
@@ -245,15 +252,7 @@ static int vulkan_steps(viewer *v, hv_vk *g) {
     if ((rc = load_effect(v)) != EXIT_OK) return rc;
     if (v->opt.list) return list_effect(v->fx), EXIT_OK;
     if ((rc = pick_technique(v)) != EXIT_OK) return rc;
-    hv_scene scene;
-    hv_scene_from_options(&scene, &v->opt);
-    hv_bind_scene(v->fx, &scene);
-    for (size_t i = 0; i < v->opt.set_count; i++) {
-        char name[256];
-        size_t n = (size_t)(v->opt.sets[i].value - 1 - v->opt.sets[i].name);
-        snprintf(name, sizeof name, "%.*s", (int)n, v->opt.sets[i].name);
-        if (hv_set_param(v->fx, name, v->opt.sets[i].value, v->err, sizeof v->err) != 0) return input_error(v->err);
-    }
+    if ((rc = bind_scene_and_sets(v)) != EXIT_OK) return rc;
     hv_image img;
     size_t failed = 0;
     if ((rc = hv_vk_render(g, v->fx, v->technique, &v->opt, &v->mesh, &img, &failed)) != HFX_OK) {

@@ -1,7 +1,6 @@
 /* hfx_web.c: the functions the page calls (web/app.js, through ccall). Each answers with JSON
  * or a number; the effect's files live in emscripten's in-memory file system, so #include
  * resolves among the files the page wrote there exactly as on disk. */
-#include <GLES3/gl3.h>
 #include <emscripten.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -58,7 +57,7 @@ static void diagnostics_json(hfxw_json *j, const hfxc_result *r) {
 
 static void release_effect(hfxw_session *s) {
     if (s->fx) hfx_effect_destroy(s->fx);
-    for (size_t i = 0; i < s->texture_count; i++) glDeleteTextures(1, &s->textures[i]);
+    if (s->texture_count) s->gl.DeleteTextures((GLsizei)s->texture_count, s->textures);
     hfx_fx_effect_free(s->code);
     free(s->hfxo);
     s->fx = NULL, s->code = NULL, s->hfxo = NULL, s->hfxo_size = 0, s->texture_count = 0;
@@ -158,7 +157,7 @@ EMSCRIPTEN_KEEPALIVE int hfxw_set_texture(const char *name, const unsigned char 
     hfxw_session *s = &session;
     hfx_param *p = s->fx ? hv_find_param(s->fx, name) : NULL;
     if (!p || s->texture_count == sizeof s->textures / sizeof s->textures[0]) return -1;
-    unsigned tex = hfxw_texture_rgba(rgba, width, height);
+    unsigned tex = hfxw_texture_rgba(s, rgba, width, height);
     s->textures[s->texture_count++] = tex;
     return hfx_param_set_texture(p, tex) == HFX_OK ? 0 : -1;
 }

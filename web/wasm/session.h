@@ -9,6 +9,7 @@
 
 #include "common/effect.h"
 #include "hfx/hfx.h"
+#include "render.h"
 
 typedef struct hfxw_session {
     EMSCRIPTEN_WEBGL_CONTEXT_HANDLE context;
@@ -18,8 +19,8 @@ typedef struct hfxw_session {
     void *hfxo;              /* its .hfxo bytes, for the download button */
     size_t hfxo_size;
     int technique, pass;     /* pass -1: every pass of the technique, in order */
-    unsigned vao, vbo, ibo;  /* the mesh */
-    int index_count;
+    hv_gl gl;                /* hfxview's GL table over WebGL 2, for its drawing code (render.c) */
+    hv_gpu_mesh mesh;
     unsigned checker;        /* the default texture */
     unsigned textures[64];   /* textures the page made for parameters, to free with the effect */
     size_t texture_count;
@@ -37,11 +38,10 @@ const char *hfxw_answer(char *json); /* keeps json as the session's answer and r
 int hfxw_draw_init(hfxw_session *s);
 void hfxw_draw_frame(hfxw_session *s, int width, int height);
 int hfxw_mesh_set(hfxw_session *s, const char *spec, char *err, size_t errlen);
-unsigned hfxw_texture_rgba(const unsigned char *rgba, int width, int height);
+unsigned hfxw_texture_rgba(hfxw_session *s, const unsigned char *rgba, int width, int height);
 void hfxw_bind_default_textures(hfxw_session *s);
 /* World (identity), View, Projection, the camera, and hfxview's default light into every
  * parameter they fit by name or semantic; lights and materials only where the effect left zero. */
 void hfxw_bind_camera(hfxw_session *s, int width, int height);
-void hfxw_scene_matrices(const hfxw_session *s, int width, int height, float view[16], float proj[16], float eye[3]);
 
 #endif

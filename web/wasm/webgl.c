@@ -138,7 +138,11 @@ static void GL_APIENTRY bind_texture(GLenum target, GLuint texture) {
     if (target != HFXW_TEXTURE_1D) glBindTexture(target, texture);
 }
 
+/* GL 3.3's double-precision clear depth (hfxview's hv_clear calls it); GLES has only the float one. */
+static void GL_APIENTRY clear_depth(double depth) { glClearDepthf((GLfloat)depth); }
+
 static const struct { const char *name; void *fn; } stand_ins[] = {
+    {"glClearDepth", (void *)clear_depth},
     {"glBindTexture", (void *)bind_texture},
     {"glEnable", (void *)enable}, {"glDisable", (void *)disable}, {"glIsEnabled", (void *)is_enabled},
     {"glGetIntegerv", (void *)get_integerv}, {"glGetIntegeri_v", (void *)get_integeri_v},

@@ -90,9 +90,7 @@ int main(void) {
     RUN(root_then_includes_once_each);
     RUN(memory_root_is_not_a_file);
     RUN(what_was_read_before_an_error);
-    char cmd[1024];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp);
-    if (system(cmd) != 0) fprintf(stderr, "could not remove %s\n", tmp);
+    test_remove_dir(tmp);
     free(tmp);
     return test_summary();
 }
