@@ -110,24 +110,20 @@ static int map_uniforms(build *b, const hfx_fx_program *fp) {
     vk_program *p = b->p;
     const hfx_fx_effect *fx = b->sh->fx;
     p->slots = calloc((size_t)fx->top_param_count + 1, sizeof *p->slots);
-    p->reads = calloc(fp->uniform_count ? fp->uniform_count : 1, sizeof *p->reads);
-    if (!p->slots || !p->reads) return HFX_ERR_MEMORY;
+    if (!p->slots) return HFX_ERR_MEMORY;
     for (uint32_t i = 0; i < fp->uniform_count; i++) {
         uint32_t param = fp->uniforms[i].param;
         if (param >= fx->top_param_count || !fx->params[param].glsl_name || p->slots[param].mode) continue;
         vk_slot *slot = &p->slots[param];
         if (hfx_fx_use_packed(fp, &fp->uniforms[i])) {
-            if (p->regs_at < 0) continue;
-            pack_slot(slot, fx, &fp->uniforms[i]);
-        } else {
-            slot->first = p->upload_count;
-            int rc = add_param(b, param, fx->params[param].glsl_name);
-            if (rc) return rc;
-            slot->count = p->upload_count - slot->first;
-            if (!slot->count) continue;
-            slot->mode = SLOT_OTHER;
+            if (p->regs_at >= 0) pack_slot(slot, fx, &fp->uniforms[i]);
+            continue;
         }
-        p->reads[p->read_count++] = param;
+        slot->first = p->upload_count;
+        int rc = add_param(b, param, fx->params[param].glsl_name);
+        if (rc) return rc;
+        slot->count = p->upload_count - slot->first;
+        if (slot->count) slot->mode = SLOT_OTHER;
     }
     return HFX_OK;
 }
@@ -196,7 +192,6 @@ void hfx_vk_program_free(hfx_device *dev, vk_program *p) {
     if (p->vs) vk->fn.DestroyShaderModule(vk->device, p->vs, NULL);
     if (p->fs) vk->fn.DestroyShaderModule(vk->device, p->fs, NULL);
     free(p->slots);
-    free(p->reads);
     free(p->uploads);
     memset(p, 0, sizeof *p);
 }
