@@ -477,6 +477,12 @@ int hfx_rt_spirv_program_build(hfx_shared *sh, uint32_t index);
 /* sampler.c */
 void hfx_sampler_desc_default(hfx_sampler_desc *d);
 void hfx_sampler_desc_apply(hfx_sampler_desc *d, uint32_t id, const hfx_rs_value *v);
+/* A sampler state into a description being built: constants into d, PARAM and EXPR ones (at
+ * most 32, computed at Apply) appended to dyn. */
+void hfx_sampler_state_add(const hfx_fx_state *st, hfx_sampler_desc *d, const hfx_fx_state **dyn, uint32_t *n);
+/* A sampler_state block's description and its dynamic states (all but Texture). */
+void hfx_sampler_desc_of(const hfx_fx_effect *fx, uint32_t sampler, hfx_sampler_desc *d, const hfx_fx_state **dyn,
+                         uint32_t *n);
 int hfx_rt_sampler_create(hfx_shared *sh, hfx_rt_sampler *s, const hfx_sampler_desc *base,
                           const hfx_fx_state *const *dyn, uint32_t dyn_count);
 void hfx_rt_sampler_update(hfx_effect *fx, hfx_rt_sampler *s);
