@@ -512,6 +512,12 @@ void hfx_rs_front_face(hfx_device *dev);
 void hfx_rt_param_changed(hfx_effect *fx, uint32_t root);
 uint32_t hfx_rt_param_accept(const hfx_fx_param *i);
 
+/* param_paths.c: leaf(ctx, path, param) for each value leaf of parameter index (struct members
+ * and the elements of an array of structs one by one, objects skipped), path being its GLSL
+ * name under path; stops at the first nonzero return and returns it. */
+typedef int (*hfx_param_leaf_fn)(void *ctx, const char *path, const hfx_fx_param *p);
+int hfx_param_leaves(const hfx_fx_effect *fx, uint32_t index, const char *path, hfx_param_leaf_fn leaf, void *ctx);
+
 /* pool.c */
 int hfx_rt_pool_join(struct hfx_pool *pool, hfx_effect *e); /* checks shared types, takes the pool's values */
 void hfx_rt_pool_leave(hfx_effect *e);
