@@ -477,6 +477,12 @@ int hfx_rt_spirv_program_build(hfx_shared *sh, uint32_t index);
 /* sampler.c */
 void hfx_sampler_desc_default(hfx_sampler_desc *d);
 void hfx_sampler_desc_apply(hfx_sampler_desc *d, uint32_t id, const hfx_rs_value *v);
+/* A sampler state into a description being built: constants into d, PARAM and EXPR ones (at
+ * most 32, computed at Apply) appended to dyn. */
+void hfx_sampler_state_add(const hfx_fx_state *st, hfx_sampler_desc *d, const hfx_fx_state **dyn, uint32_t *n);
+/* A sampler_state block's description and its dynamic states (all but Texture). */
+void hfx_sampler_desc_of(const hfx_fx_effect *fx, uint32_t sampler, hfx_sampler_desc *d, const hfx_fx_state **dyn,
+                         uint32_t *n);
 int hfx_rt_sampler_create(hfx_shared *sh, hfx_rt_sampler *s, const hfx_sampler_desc *base,
                           const hfx_fx_state *const *dyn, uint32_t dyn_count);
 void hfx_rt_sampler_update(hfx_effect *fx, hfx_rt_sampler *s);
@@ -505,6 +511,12 @@ void hfx_rs_front_face(hfx_device *dev);
 /* params.c */
 void hfx_rt_param_changed(hfx_effect *fx, uint32_t root);
 uint32_t hfx_rt_param_accept(const hfx_fx_param *i);
+
+/* param_paths.c: leaf(ctx, path, param) for each value leaf of parameter index (struct members
+ * and the elements of an array of structs one by one, objects skipped), path being its GLSL
+ * name under path; stops at the first nonzero return and returns it. */
+typedef int (*hfx_param_leaf_fn)(void *ctx, const char *path, const hfx_fx_param *p);
+int hfx_param_leaves(const hfx_fx_effect *fx, uint32_t index, const char *path, hfx_param_leaf_fn leaf, void *ctx);
 
 /* pool.c */
 int hfx_rt_pool_join(struct hfx_pool *pool, hfx_effect *e); /* checks shared types, takes the pool's values */

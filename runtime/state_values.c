@@ -139,3 +139,29 @@ void hfx_sampler_desc_apply(hfx_sampler_desc *d, uint32_t id, const hfx_rs_value
     default: break;
     }
 }
+
+/* Adds a state to a sampler being built: constants into the description, PARAM and EXPR ones
+ * (computed at Apply) to dyn. */
+void hfx_sampler_state_add(const hfx_fx_state *st, hfx_sampler_desc *d, const hfx_fx_state **dyn, uint32_t *n) {
+    if (st->kind == HFX_FX_VALUE_UNSUPPORTED) return; /* the back end reports it at load */
+    if (st->kind == HFX_FX_VALUE_PARAM || st->kind == HFX_FX_VALUE_EXPR) {
+        if (*n < 32) dyn[(*n)++] = st;
+        return;
+    }
+    hfx_rs_value v;
+    hfx_rs_resolve(NULL, st, &v);
+    hfx_sampler_desc_apply(d, st->id, &v);
+}
+
+/* Shared by the back ends: GL makes sampler objects of it, Vulkan keeps it for its cache. */
+void hfx_sampler_desc_of(const hfx_fx_effect *fx, uint32_t sampler, hfx_sampler_desc *d, const hfx_fx_state **dyn,
+                         uint32_t *n) {
+    hfx_sampler_desc_default(d);
+    *n = 0;
+    if (sampler >= fx->sampler_count) return;
+    const hfx_fx_sampler *s = &fx->samplers[sampler];
+    for (uint32_t i = 0; i < s->state_count && s->first_state + i < fx->state_count; i++) {
+        const hfx_fx_state *st = &fx->states[s->first_state + i];
+        if (st->id != HFX_ST_TEXTURE) hfx_sampler_state_add(st, d, dyn, n);
+    }
+}

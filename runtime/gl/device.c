@@ -22,12 +22,11 @@ const char *hfx_gl_load(hfx_gl *gl, hfx_gl_loader load) {
     return NULL;
 }
 
-
-static int has_extension(hfx_device *dev, const char *name) {
+int hfx_gl_has_extension(const hfx_gl *gl, const char *name) {
     GLint n = 0;
-    dev->gl.GetIntegerv(GL_NUM_EXTENSIONS, &n);
+    gl->GetIntegerv(GL_NUM_EXTENSIONS, &n);
     for (GLint i = 0; i < n; i++) {
-        const char *e = (const char *)dev->gl.GetStringi(GL_EXTENSIONS, (GLuint)i);
+        const char *e = (const char *)gl->GetStringi(GL_EXTENSIONS, (GLuint)i);
         if (e && strcmp(e, name) == 0) return 1;
     }
     return 0;
@@ -42,10 +41,10 @@ static void read_caps(hfx_device *dev) {
     GLint major = 0, minor = 0;
     dev->gl.GetIntegerv(GL_MAJOR_VERSION, &major);
     dev->gl.GetIntegerv(GL_MINOR_VERSION, &minor);
-    if (major * 10 + minor >= 46 || has_extension(dev, "GL_EXT_texture_filter_anisotropic") ||
-        has_extension(dev, "GL_ARB_texture_filter_anisotropic"))
+    if (major * 10 + minor >= 46 || hfx_gl_has_extension(&dev->gl, "GL_EXT_texture_filter_anisotropic") ||
+        hfx_gl_has_extension(&dev->gl, "GL_ARB_texture_filter_anisotropic"))
         dev->gl.GetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &dev->max_anisotropy);
-    dev->srgb_decode = has_extension(dev, "GL_EXT_texture_sRGB_decode");
+    dev->srgb_decode = hfx_gl_has_extension(&dev->gl, "GL_EXT_texture_sRGB_decode");
     dev->depth_bias_scale = depth_bias_scale();
 }
 

@@ -115,4 +115,7 @@ typedef struct hfx_gl {
  * lacks (optional ones stay NULL). */
 const char *hfx_gl_load(hfx_gl *gl, hfx_gl_loader load);
 
+/* Whether the context lists extension name (glGetStringi, GL 3.0's way). */
+int hfx_gl_has_extension(const hfx_gl *gl, const char *name);
+
 #endif

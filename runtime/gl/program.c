@@ -173,7 +173,10 @@ int hfx_rt_upload_add(hfx_device *dev, hfx_rt_program *p, uint32_t *cap, const h
     return HFX_OK;
 }
 
-static int add_upload(build *b, const char *name, const hfx_fx_param *p, uint32_t count) {
+/* One call for a value or an array of values (a hfx_param_leaves callback). */
+static int add_upload(void *ctx, const char *name, const hfx_fx_param *p) {
+    build *b = ctx;
+    uint32_t count = p->elements ? p->elements : 1;
     const active_uniform *u = find_active(b, name);
     if (!u) return HFX_OK; /* optimised out by GL */
     hfx_upload up;
@@ -197,38 +200,6 @@ static int add_upload(build *b, const char *name, const hfx_fx_param *p, uint32_
     return hfx_rt_upload_add(b->sh->dev, b->p, &b->upload_cap, &up);
 }
 
-static int add_param(build *b, uint32_t index, const char *path);
-
-static int add_struct(build *b, const hfx_fx_param *s, const char *path) {
-    for (uint32_t m = 0; m < s->child_count; m++) {
-        const hfx_fx_param *member = &b->sh->fx->params[s->first_child + m];
-        char sub[300];
-        int n = snprintf(sub, sizeof sub, "%s.%s", path, member->glsl_name ? member->glsl_name : member->name);
-        if (n < 0 || (size_t)n >= sizeof sub) continue; /* longer than any name GL reports */
-        int rc = add_param(b, s->first_child + m, sub);
-        if (rc) return rc;
-    }
-    return HFX_OK;
-}
-
-/* A parameter's uploads: one call for a value or an array of values, one per leaf of a struct. */
-static int add_param(build *b, uint32_t index, const char *path) {
-    const hfx_fx_param *p = &b->sh->fx->params[index];
-    if (p->klass == HFX_CLASS_OBJECT) return HFX_OK;
-    if (p->elements && p->child_count && b->sh->fx->params[p->first_child].klass == HFX_CLASS_STRUCT) {
-        for (uint32_t e = 0; e < p->child_count; e++) {
-            char sub[300];
-            int n = snprintf(sub, sizeof sub, "%s[%u]", path, (unsigned)e);
-            if (n < 0 || (size_t)n >= sizeof sub) continue; /* longer than any name GL reports */
-            int rc = add_struct(b, &b->sh->fx->params[p->first_child + e], sub);
-            if (rc) return rc;
-        }
-        return HFX_OK;
-    }
-    if (p->klass == HFX_CLASS_STRUCT) return add_struct(b, p, path);
-    return add_upload(b, path, p, p->elements ? p->elements : 1);
-}
-
 static int resolve_uniforms(build *b, const hfx_fx_program *fp) {
     hfx_rt_program *p = b->p;
     uint32_t tops = b->sh->fx->top_param_count;
@@ -247,7 +218,7 @@ static int resolve_uniforms(build *b, const hfx_fx_program *fp) {
             continue;
         }
         slot->first = p->upload_count;
-        int rc = add_param(b, param, b->sh->fx->params[param].glsl_name);
+        int rc = hfx_param_leaves(b->sh->fx, param, b->sh->fx->params[param].glsl_name, add_upload, b);
         if (rc) return rc;
         slot->count = p->upload_count - slot->first;
         if (slot->count) p->reads[p->read_count++] = param;

@@ -114,31 +114,6 @@ static int push_sampler(hfx_shared *sh, uint32_t *cap, const hfx_sampler_desc *b
     return rc ? hfx_rt_fail(sh->dev, rc, "could not create a GL sampler object") : HFX_OK;
 }
 
-/* Adds a state to a sampler being built: constants into the description, PARAM and EXPR ones
- * (computed at Apply) to dyn. */
-static void add_sampler_state(const hfx_fx_state *st, hfx_sampler_desc *d, const hfx_fx_state **dyn, uint32_t *n) {
-    if (st->kind == HFX_FX_VALUE_UNSUPPORTED) return; /* reported by check_sampler_state */
-    if (st->kind == HFX_FX_VALUE_PARAM || st->kind == HFX_FX_VALUE_EXPR) {
-        if (*n < 32) dyn[(*n)++] = st;
-        return;
-    }
-    hfx_rs_value v;
-    hfx_rs_resolve(NULL, st, &v);
-    hfx_sampler_desc_apply(d, st->id, &v);
-}
-
-static void sampler_desc_of(const hfx_fx_effect *fx, uint32_t sampler, hfx_sampler_desc *d,
-                            const hfx_fx_state **dyn, uint32_t *n) {
-    hfx_sampler_desc_default(d);
-    *n = 0;
-    if (sampler >= fx->sampler_count) return;
-    const hfx_fx_sampler *s = &fx->samplers[sampler];
-    for (uint32_t i = 0; i < s->state_count && s->first_state + i < fx->state_count; i++) {
-        const hfx_fx_state *st = &fx->states[s->first_state + i];
-        if (st->id != HFX_ST_TEXTURE) add_sampler_state(st, d, dyn, n);
-    }
-}
-
 /* Reports, once at load, a sampler state GL honours only in part. */
 void hfx_rt_sampler_check_state(hfx_shared *sh, const hfx_fx_state *st) {
     const hfx_state_info *info = hfx_state_by_id(st->id);
@@ -162,7 +137,7 @@ int hfx_rt_samplers_make(hfx_shared *sh, uint32_t *cap) {
         hfx_sampler_desc d;
         const hfx_fx_state *dyn[32];
         uint32_t n, index;
-        sampler_desc_of(sh->fx, i, &d, dyn, &n);
+        hfx_sampler_desc_of(sh->fx, i, &d, dyn, &n);
         int rc = push_sampler(sh, cap, &d, dyn, n, &index);
         if (rc) return rc;
     }
@@ -176,14 +151,14 @@ int hfx_rt_sampler_override(hfx_shared *sh, uint32_t *cap, const hfx_fx_pass *fp
     hfx_sampler_desc d;
     const hfx_fx_state *dyn[32];
     uint32_t n, index;
-    sampler_desc_of(fx, b->sampler, &d, dyn, &n);
+    hfx_sampler_desc_of(fx, b->sampler, &d, dyn, &n);
     int any = 0;
     for (uint32_t i = 0; i < fp->state_count; i++) {
         const hfx_fx_state *st = &fx->states[fp->first_state + i];
         const hfx_state_info *info = hfx_state_by_id(st->id);
         if (!info || info->scope != HFX_SS_SAMPLER || st->id == HFX_ST_SAMPLER || (int32_t)st->index != b->unit)
             continue;
-        add_sampler_state(st, &d, dyn, &n);
+        hfx_sampler_state_add(st, &d, dyn, &n);
         any = 1;
     }
     if (!any) return HFX_OK;

@@ -12,16 +12,6 @@
 #include "internal.h"
 #include "spirv_loc.h"
 
-static int has_extension(hfx_device *dev, const char *name) {
-    GLint n = 0;
-    dev->gl.GetIntegerv(GL_NUM_EXTENSIONS, &n);
-    for (GLint i = 0; i < n; i++) {
-        const char *e = (const char *)dev->gl.GetStringi(GL_EXTENSIONS, (GLuint)i);
-        if (e && strcmp(e, name) == 0) return 1;
-    }
-    return 0;
-}
-
 void hfx_rt_spirv_init(hfx_device *dev, hfx_gl_loader load) {
     hfx_gl_spirv *s = &dev->spirv;
     memset(s, 0, sizeof *s);
@@ -29,7 +19,7 @@ void hfx_rt_spirv_init(hfx_device *dev, hfx_gl_loader load) {
     dev->gl.GetIntegerv(GL_MAJOR_VERSION, &major);
     dev->gl.GetIntegerv(GL_MINOR_VERSION, &minor);
     int core = major * 10 + minor >= 46;
-    if (!core && !has_extension(dev, "GL_ARB_gl_spirv")) return;
+    if (!core && !hfx_gl_has_extension(&dev->gl, "GL_ARB_gl_spirv")) return;
     *(void **)&s->ShaderBinary = load("glShaderBinary");
     *(void **)&s->SpecializeShader = load(core ? "glSpecializeShader" : "glSpecializeShaderARB");
     if (!s->SpecializeShader)

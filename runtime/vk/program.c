@@ -3,7 +3,6 @@
  * sampler per sampler the program reads) and pipeline layout, and the map from the effect's
  * parameters to the block: packed ones into hfx_c (the D3D9 register file, laid out as GL's
  * hfx_c[]), the others leaf by leaf at the offsets the module declares (reflect.c). */
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -47,8 +46,10 @@ static uint16_t upload_kind(const hfx_fx_param *p, const vk_leaf *l) {
     return leaf_float ? VK_UP_TO_FLOAT : VK_UP_TO_INT;
 }
 
-/* One leaf of the block from parameter p's words (an array: count elements). */
-static int add_upload(build *b, const char *path, const hfx_fx_param *p) {
+/* One leaf of the block from parameter p's words (an array: count elements); a hfx_param_leaves
+ * callback, by the same paths as GL's uniform names. */
+static int add_upload(void *ctx, const char *path, const hfx_fx_param *p) {
+    build *b = ctx;
     const vk_leaf *l = find_leaf(&b->block, path);
     if (!l) return HFX_OK; /* not in the block: the program does not read it */
     uint32_t elems = p->elements ? p->elements : 1, per = p->words / elems;
@@ -66,38 +67,6 @@ static int add_upload(build *b, const char *path, const hfx_fx_param *p) {
     return HFX_OK;
 }
 
-static int add_param(build *b, uint32_t index, const char *path);
-
-static int add_members(build *b, const hfx_fx_param *s, const char *path) {
-    for (uint32_t m = 0; m < s->child_count; m++) {
-        const hfx_fx_param *member = &b->sh->fx->params[s->first_child + m];
-        char sub[160];
-        int n = snprintf(sub, sizeof sub, "%s.%s", path, member->glsl_name ? member->glsl_name : member->name);
-        if (n < 0 || (size_t)n >= sizeof sub) continue;
-        int rc = add_param(b, s->first_child + m, sub);
-        if (rc) return rc;
-    }
-    return HFX_OK;
-}
-
-/* A parameter's leaves, by the same paths as GL's uniform names. */
-static int add_param(build *b, uint32_t index, const char *path) {
-    const hfx_fx_param *p = &b->sh->fx->params[index];
-    if (p->klass == HFX_CLASS_OBJECT) return HFX_OK;
-    if (p->elements && p->child_count && b->sh->fx->params[p->first_child].klass == HFX_CLASS_STRUCT) {
-        for (uint32_t e = 0; e < p->child_count; e++) {
-            char sub[160];
-            int n = snprintf(sub, sizeof sub, "%s[%u]", path, (unsigned)e);
-            if (n < 0 || (size_t)n >= sizeof sub) continue;
-            int rc = add_members(b, &b->sh->fx->params[p->first_child + e], sub);
-            if (rc) return rc;
-        }
-        return HFX_OK;
-    }
-    if (p->klass == HFX_CLASS_STRUCT) return add_members(b, p, path);
-    return add_upload(b, path, p);
-}
-
 static void pack_slot(vk_slot *slot, const hfx_fx_effect *fx, const hfx_fx_uniform_use *u) {
     slot->mode = SLOT_REG;
     slot->reg = u->reg;
@@ -110,24 +79,20 @@ static int map_uniforms(build *b, const hfx_fx_program *fp) {
     vk_program *p = b->p;
     const hfx_fx_effect *fx = b->sh->fx;
     p->slots = calloc((size_t)fx->top_param_count + 1, sizeof *p->slots);
-    p->reads = calloc(fp->uniform_count ? fp->uniform_count : 1, sizeof *p->reads);
-    if (!p->slots || !p->reads) return HFX_ERR_MEMORY;
+    if (!p->slots) return HFX_ERR_MEMORY;
     for (uint32_t i = 0; i < fp->uniform_count; i++) {
         uint32_t param = fp->uniforms[i].param;
         if (param >= fx->top_param_count || !fx->params[param].glsl_name || p->slots[param].mode) continue;
         vk_slot *slot = &p->slots[param];
         if (hfx_fx_use_packed(fp, &fp->uniforms[i])) {
-            if (p->regs_at < 0) continue;
-            pack_slot(slot, fx, &fp->uniforms[i]);
-        } else {
-            slot->first = p->upload_count;
-            int rc = add_param(b, param, fx->params[param].glsl_name);
-            if (rc) return rc;
-            slot->count = p->upload_count - slot->first;
-            if (!slot->count) continue;
-            slot->mode = SLOT_OTHER;
+            if (p->regs_at >= 0) pack_slot(slot, fx, &fp->uniforms[i]);
+            continue;
         }
-        p->reads[p->read_count++] = param;
+        slot->first = p->upload_count;
+        int rc = hfx_param_leaves(fx, param, fx->params[param].glsl_name, add_upload, b);
+        if (rc) return rc;
+        slot->count = p->upload_count - slot->first;
+        if (slot->count) slot->mode = SLOT_OTHER;
     }
     return HFX_OK;
 }
@@ -196,7 +161,6 @@ void hfx_vk_program_free(hfx_device *dev, vk_program *p) {
     if (p->vs) vk->fn.DestroyShaderModule(vk->device, p->vs, NULL);
     if (p->fs) vk->fn.DestroyShaderModule(vk->device, p->fs, NULL);
     free(p->slots);
-    free(p->reads);
     free(p->uploads);
     memset(p, 0, sizeof *p);
 }

@@ -80,21 +80,8 @@ void hfx_vk_samplers_free(hfx_device *dev) {
 
 /* Each sampler_state block: constant states into base, parameter-reading ones kept for Apply. */
 void hfx_vk_fx_samplers_make(hfx_shared *sh) {
-    const hfx_fx_effect *fx = sh->fx;
-    for (uint32_t i = 0; i < fx->sampler_count; i++) {
+    for (uint32_t i = 0; i < sh->fx->sampler_count; i++) {
         vk_fx_sampler *s = &sh->vk->samplers[i];
-        const hfx_fx_sampler *fs = &fx->samplers[i];
-        hfx_sampler_desc_default(&s->base);
-        for (uint32_t k = 0; k < fs->state_count && fs->first_state + k < fx->state_count; k++) {
-            const hfx_fx_state *st = &fx->states[fs->first_state + k];
-            if (st->id == HFX_ST_TEXTURE || st->kind == HFX_FX_VALUE_UNSUPPORTED) continue;
-            if (st->kind == HFX_FX_VALUE_PARAM || st->kind == HFX_FX_VALUE_EXPR) {
-                if (s->dynamic_count < 32) s->dynamic[s->dynamic_count++] = st;
-                continue;
-            }
-            hfx_rs_value v;
-            hfx_rs_resolve(NULL, st, &v);
-            hfx_sampler_desc_apply(&s->base, st->id, &v);
-        }
+        hfx_sampler_desc_of(sh->fx, i, &s->base, s->dynamic, &s->dynamic_count);
     }
 }

@@ -138,7 +138,6 @@ typedef struct vk_program {
     int32_t regs_at, fixup_at, alpha_func_at, alpha_ref_at; /* byte offsets, -1 when absent */
     uint32_t reg_count;
     vk_slot *slots;                 /* per top-level parameter + 1 */
-    uint32_t *reads, read_count;
     vk_upload *uploads;
     uint32_t upload_count;
     uint32_t sampler_count;         /* bindings HFX_VK_BINDING_SAMPLER0.. */

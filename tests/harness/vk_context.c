@@ -397,27 +397,7 @@ static void layout_barrier(VkCommandBuffer cmd, VkImage img, VkImageLayout from,
     vkCmdPipelineBarrier(cmd, s1, s2, 0, 0, NULL, 0, NULL, 1, &b);
 }
 
-static int upload(test_vk *v, test_vk_texture *t, const test_vk_buffer *staging, int w, int h) {
-    VkCommandBufferAllocateInfo ai = {.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO, .commandPool = v->pool,
-                                      .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY, .commandBufferCount = 1};
-    VkCommandBuffer cmd;
-    if (vkAllocateCommandBuffers(v->device, &ai, &cmd) != VK_SUCCESS) return 0;
-    VkCommandBufferBeginInfo bi = {.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
-                                   .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
-    vkBeginCommandBuffer(cmd, &bi);
-    layout_barrier(cmd, t->image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
-                   VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
-    VkBufferImageCopy copy = {.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
-                              .imageExtent = {(uint32_t)w, (uint32_t)h, 1}};
-    vkCmdCopyBufferToImage(cmd, staging->buffer, t->image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
-    layout_barrier(cmd, t->image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                   VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_VERTEX_SHADER_BIT);
-    vkEndCommandBuffer(cmd);
-    int ok = submit_and_wait(v, cmd) == 0;
-    vkFreeCommandBuffers(v->device, v->pool, 1, &cmd);
-    return ok;
-}
+static int upload(test_vk *v, test_vk_texture *t, const test_vk_buffer *staging, int w, int h, uint32_t levels);
 
 int test_vk_texture_make(test_vk *v, int width, int height, const unsigned char *texels, test_vk_texture *out) {
     memset(out, 0, sizeof *out);
@@ -427,7 +407,7 @@ int test_vk_texture_make(test_vk *v, int width, int height, const unsigned char 
     VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     int ok = make_image(v, VK_FORMAT_R8G8B8A8_UNORM, usage, VK_IMAGE_ASPECT_COLOR_BIT, width, height, &out->image,
                         &out->memory, &out->view) &&
-             upload(v, out, &staging, width, height);
+             upload(v, out, &staging, width, height, 1);
     test_vk_buffer_free(v, &staging);
     return ok;
 }
@@ -470,7 +450,8 @@ static void blit_level(VkCommandBuffer cmd, VkImage img, uint32_t i, int w, int 
                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
 }
 
-static int upload_mips(test_vk *v, test_vk_texture *t, const test_vk_buffer *staging, int w, int h, uint32_t levels) {
+/* Level 0 from staging, the others blitted down from it; every level left shader-readable. */
+static int upload(test_vk *v, test_vk_texture *t, const test_vk_buffer *staging, int w, int h, uint32_t levels) {
     VkCommandBufferAllocateInfo ai = {.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO, .commandPool = v->pool,
                                       .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY, .commandBufferCount = 1};
     VkCommandBuffer cmd;
@@ -486,7 +467,7 @@ static int upload_mips(test_vk *v, test_vk_texture *t, const test_vk_buffer *sta
     for (uint32_t i = 1; i < levels; i++) blit_level(cmd, t->image, i, w, h);
     level_barrier(cmd, t->image, levels - 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                   VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                  VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
+                  VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_VERTEX_SHADER_BIT);
     vkEndCommandBuffer(cmd);
     int ok = submit_and_wait(v, cmd) == 0;
     vkFreeCommandBuffers(v->device, v->pool, 1, &cmd);
@@ -502,7 +483,7 @@ int test_vk_texture_make_mipmapped(test_vk *v, int width, int height, const unsi
     VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     int ok = make_image_levels(v, VK_FORMAT_R8G8B8A8_UNORM, usage, VK_IMAGE_ASPECT_COLOR_BIT, width, height, levels,
                                &out->image, &out->memory, &out->view) &&
-             upload_mips(v, out, &staging, width, height, levels);
+             upload(v, out, &staging, width, height, levels);
     test_vk_buffer_free(v, &staging);
     return ok;
 }
