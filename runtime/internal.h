@@ -314,6 +314,7 @@ struct hfx_pass {
      * selectors run again only after a parameter changed); chosen_seen = 0: never chosen */
     hfx_rt_program *chosen;
     uint64_t chosen_seen;
+    uint32_t chosen_index;  /* Vulkan: the program index chosen then (chosen_seen as above) */
 };
 
 /* A file's modification time and size as last seen; exists = 0 for a missing file. */

@@ -36,7 +36,7 @@ static uint32_t selected(const hfx_effect *fx, const hfx_fx_pass *fp, uint32_t i
 }
 
 /* The pass's program: its own, or the shader-array variant its selectors pick now. */
-static int program_of(hfx_pass *p, uint32_t *out) {
+static int choose_program(hfx_pass *p, uint32_t *out) {
     const hfx_fx_effect *e = p->fx->sh->fx;
     const hfx_fx_pass *fp = &e->passes[p->index];
     int variants = 0;
@@ -50,6 +50,16 @@ static int program_of(hfx_pass *p, uint32_t *out) {
             return *out = e->variants[i].program, HFX_OK;
     return hfx_rt_fail(p->fx->dev, HFX_ERR_NOT_FOUND, "no program for shader array entries %d and %d (only those the "
                        "compiler reached by the driving parameter exist)", (int)vs, (int)ps);
+}
+
+/* The same, worked out again only after a parameter changed (the change log grew): a game's
+ * per-draw Apply does not re-run the selectors or scan the variants. */
+static int program_of(hfx_pass *p, uint32_t *out) {
+    uint64_t now = p->fx->log_len + 1;
+    if (p->chosen_seen == now) return *out = p->chosen_index, HFX_OK;
+    int rc = choose_program(p, out);
+    if (rc == HFX_OK) p->chosen_index = *out, p->chosen_seen = now;
+    return rc;
 }
 
 static int bound_of(hfx_effect *fx, uint32_t index, vk_bound **out) {
