@@ -10,11 +10,24 @@
  * directional, point and spot, with and without specular, both techniques; specular and
  * distance attenuation on), tutorial0, fxcomposer_empty, phong and pointlights (eight lights).
  * Not yet: multilights_repaired (two passes blended by the application). Run by hand:
- * bench_gpu [rounds [effect.fx]]. */
+ * bench_gpu [rounds [effect.fx]]; bench/gpu_instructions.sh runs it under callgrind for exact
+ * instruction counts per frame (a shared machine's frame times vary by 10%). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#if defined(__has_include)
+#if __has_include(<valgrind/callgrind.h>)
+#include <valgrind/callgrind.h>
+#define HAVE_CALLGRIND 1
+#endif
+#endif
+#ifndef HAVE_CALLGRIND
+#define RUNNING_ON_VALGRIND 0
+#define CALLGRIND_ZERO_STATS
+#define CALLGRIND_DUMP_STATS_AT(label) (void)(label)
+#endif
 
 #include "bench.h"
 #include "files.h"
@@ -540,6 +553,22 @@ static void best_times(hfx_device *dev, side *const *sides, int n, const mesh *m
         }
 }
 
+/* Under callgrind, times mean nothing but instructions are exact whatever else the machine runs:
+ * each side draws one frame to warm up (llvmpipe compiles its shader variants on first use), then
+ * one frame between a reset and a dump labelled "effect|technique|case|side", which
+ * bench/gpu_instructions.sh turns into a table of ratios. */
+static void count_instructions(hfx_device *dev, side *const *sides, int n, const mesh *m, const char *label) {
+    static const char *const names[3] = {"hfx", "nopre", "hand"};
+    for (int k = 0; k < n; k++) {
+        char dump[256];
+        snprintf(dump, sizeof dump, "%s|%s", label, names[k]);
+        frame_time(dev, sides[k], m, 2); /* twice: one-time work (variants, caches, threads) out of the count */
+        CALLGRIND_ZERO_STATS;
+        frame_time(dev, sides[k], m, 1);
+        CALLGRIND_DUMP_STATS_AT(dump);
+    }
+}
+
 static void run_case(hfx_device *dev, const bench_case *c, const mesh *quad, const mesh *grid, const GLuint textures[2],
                      int rounds) {
     GLuint texture = textures[c->clamp];
@@ -561,7 +590,14 @@ static void run_case(hfx_device *dev, const bench_case *c, const mesh *quad, con
         int diff = picture_difference(dev, &h, &r, m, shapes[k].size, shapes[k].size);
         side *sides[3] = {&h, &h0, &r};
         double best[3];
-        best_times(dev, sides, 3, m, rounds, best);
+        if (RUNNING_ON_VALGRIND) {
+            char label[128];
+            snprintf(label, sizeof label, "%s|%s|%s", c->file, c->technique, shapes[k].name);
+            count_instructions(dev, sides, 3, m, label);
+            best[0] = best[1] = best[2] = NAN; /* times under valgrind mean nothing */
+        } else {
+            best_times(dev, sides, 3, m, rounds, best);
+        }
         printf("%-18s %-15s %-6s %9.2f %9.2f %9.2f %7.2fx %7.2fx %5d/255\n", c->file, c->technique, shapes[k].name,
                best[0] * 1e3, best[1] * 1e3, best[2] * 1e3, best[0] / best[2], best[1] / best[2], diff);
         f.DeleteVertexArrays(1, &h.vao);
