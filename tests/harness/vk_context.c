@@ -1,4 +1,4 @@
-/* vk_context.c: see vk_context.h. Plain Vulkan 1.1, linked against the loader (the test is the
+/* vk_context.c: see vk_context.h. Plain Vulkan 1.1 (1.3 for dynamic rendering), linked against the loader (the test is the
  * application here; hfx itself loads its entry points through vkGetInstanceProcAddr). */
 #include "vk_context.h"
 
@@ -28,6 +28,7 @@ struct test_vk {
     test_vk_buffer readback;
     unsigned char *pixels;
     int width, height, messages, validation;
+    int dynamic_rendering, dynamic_frame; /* the device has it; this frame uses it */
     VkFormat depth_format;
     hfx_device *dev;
     hfx_vk_target target;
@@ -78,7 +79,7 @@ static int make_instance(test_vk *v) {
     static const char *ext = VK_EXT_DEBUG_UTILS_EXTENSION_NAME;
     v->validation = getenv("HFX_VK_NO_VALIDATION") == NULL && has_layer(layer);
     VkApplicationInfo app = {.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO, .pApplicationName = "hfx tests",
-                             .apiVersion = VK_API_VERSION_1_1};
+                             .apiVersion = VK_API_VERSION_1_3};
     VkDebugUtilsMessengerCreateInfoEXT m = messenger_info(v);
     VkInstanceCreateInfo ci = {.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO, .pNext = v->validation ? &m : NULL,
                                .pApplicationInfo = &app, .enabledLayerCount = v->validation ? 1 : 0,
@@ -114,17 +115,32 @@ static int pick_device(test_vk *v) {
     return 0;
 }
 
+/* Vulkan 1.3's dynamic rendering where the device has it (lavapipe does), so tests can draw
+ * through hfx's render-pass-less pipelines too. */
+static int has_dynamic_rendering(test_vk *v) {
+    VkPhysicalDeviceProperties props;
+    vkGetPhysicalDeviceProperties(v->phys, &props);
+    if (props.apiVersion < VK_API_VERSION_1_3) return 0;
+    VkPhysicalDeviceVulkan13Features f13 = {.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    VkPhysicalDeviceFeatures2 f = {.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &f13};
+    vkGetPhysicalDeviceFeatures2(v->phys, &f);
+    return f13.dynamicRendering == VK_TRUE;
+}
+
 static int make_device(test_vk *v, VkPhysicalDeviceFeatures *enabled) {
     VkPhysicalDeviceFeatures have;
     vkGetPhysicalDeviceFeatures(v->phys, &have);
     memset(enabled, 0, sizeof *enabled);
     enabled->samplerAnisotropy = have.samplerAnisotropy;
     enabled->fillModeNonSolid = have.fillModeNonSolid;
+    v->dynamic_rendering = has_dynamic_rendering(v);
+    VkPhysicalDeviceVulkan13Features f13 = {.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
+                                            .dynamicRendering = VK_TRUE};
     float prio = 1.0f;
     VkDeviceQueueCreateInfo q = {.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO, .queueFamilyIndex = v->family,
                                  .queueCount = 1, .pQueuePriorities = &prio};
-    VkDeviceCreateInfo ci = {.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, .queueCreateInfoCount = 1,
-                             .pQueueCreateInfos = &q, .pEnabledFeatures = enabled};
+    VkDeviceCreateInfo ci = {.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, .pNext = v->dynamic_rendering ? &f13 : NULL,
+                             .queueCreateInfoCount = 1, .pQueueCreateInfos = &q, .pEnabledFeatures = enabled};
     if (vkCreateDevice(v->phys, &ci, NULL, &v->device) != VK_SUCCESS) return 0;
     vkGetDeviceQueue(v->device, v->family, 0, &v->queue);
     VkCommandPoolCreateInfo pi = {.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO,
@@ -306,13 +322,21 @@ int test_vk_height(const test_vk *v) { return v->height; }
 int test_vk_messages(const test_vk *v) { return v->messages; }
 int test_vk_validation_on(const test_vk *v) { return v->validation; }
 
-VkCommandBuffer test_vk_begin(test_vk *v, const float clear[4]) {
-    v->target.render_pass = clear ? v->pass : v->load_pass;
+static void layout_barrier(VkCommandBuffer cmd, VkImage img, VkImageLayout from, VkImageLayout to,
+                           VkAccessFlags src, VkAccessFlags dst, VkPipelineStageFlags s1, VkPipelineStageFlags s2);
+
+static void begin_commands(test_vk *v) {
     if (hfx_device_begin_frame_vk(v->dev) != HFX_OK) fprintf(stderr, "begin frame: %s\n", hfx_device_last_error(v->dev));
     vkResetCommandBuffer(v->cmd, 0);
     VkCommandBufferBeginInfo bi = {.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
                                    .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
     vkBeginCommandBuffer(v->cmd, &bi);
+}
+
+VkCommandBuffer test_vk_begin(test_vk *v, const float clear[4]) {
+    v->target.render_pass = clear ? v->pass : v->load_pass;
+    v->dynamic_frame = 0;
+    begin_commands(v);
     VkClearValue cv[2];
     memset(cv, 0, sizeof cv);
     if (clear) memcpy(cv[0].color.float32, clear, 4 * sizeof(float));
@@ -332,8 +356,65 @@ static int submit_and_wait(test_vk *v, VkCommandBuffer cmd) {
     return r == VK_SUCCESS ? 0 : -1;
 }
 
+static void depth_barrier(VkCommandBuffer cmd, VkImage img, VkImageLayout from) {
+    VkImageMemoryBarrier b = {.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER,
+                              .srcAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                              .dstAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+                                               VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                              .oldLayout = from, .newLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+                              .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED, .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+                              .image = img,
+                              .subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT, 0, 1, 0, 1}};
+    VkPipelineStageFlags tests = VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+    vkCmdPipelineBarrier(cmd, tests, tests, 0, 0, NULL, 0, NULL, 1, &b);
+}
+
+/* The same attachments as the render passes, begun with vkCmdBeginRendering: the colour image
+ * comes from (and test_vk_end returns it to) TRANSFER_SRC_OPTIMAL, as after a render pass. */
+static void begin_rendering(test_vk *v, const float clear[4]) {
+    VkImageLayout color_from = clear ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    layout_barrier(v->cmd, v->color, color_from, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_ACCESS_TRANSFER_READ_BIT,
+                   VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                   VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT);
+    depth_barrier(v->cmd, v->depth, clear ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL);
+    VkAttachmentLoadOp op = clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+    VkRenderingAttachmentInfo color = {.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO, .imageView = v->color_view,
+                                       .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, .loadOp = op,
+                                       .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
+    if (clear) memcpy(color.clearValue.color.float32, clear, 4 * sizeof(float));
+    VkRenderingAttachmentInfo depth = {.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO, .imageView = v->depth_view,
+                                       .imageLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, .loadOp = op,
+                                       .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
+    depth.clearValue.depthStencil = (VkClearDepthStencilValue){1.0f, 0};
+    VkRenderingInfo ri = {.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+                          .renderArea = {{0, 0}, {(uint32_t)v->width, (uint32_t)v->height}}, .layerCount = 1,
+                          .colorAttachmentCount = 1, .pColorAttachments = &color, .pDepthAttachment = &depth,
+                          .pStencilAttachment = &depth};
+    vkCmdBeginRendering(v->cmd, &ri);
+}
+
+VkCommandBuffer test_vk_begin_dynamic(test_vk *v, const float clear[4]) {
+    if (!v->dynamic_rendering) return VK_NULL_HANDLE;
+    v->target.render_pass = VK_NULL_HANDLE;
+    v->dynamic_frame = 1;
+    begin_commands(v);
+    begin_rendering(v, clear);
+    return v->cmd;
+}
+
+static void end_rendering(test_vk *v) {
+    if (!v->dynamic_frame) {
+        vkCmdEndRenderPass(v->cmd);
+        return;
+    }
+    vkCmdEndRendering(v->cmd);
+    layout_barrier(v->cmd, v->color, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                   VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT,
+                   VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+}
+
 int test_vk_end(test_vk *v) {
-    vkCmdEndRenderPass(v->cmd);
+    end_rendering(v);
     VkBufferImageCopy copy = {.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
                               .imageExtent = {(uint32_t)v->width, (uint32_t)v->height, 1}};
     vkCmdCopyImageToBuffer(v->cmd, v->color, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, v->readback.buffer, 1, &copy);

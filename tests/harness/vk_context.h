@@ -1,8 +1,9 @@
 /* vk_context.h: a headless Vulkan device for tests and tools (lavapipe on CI): an instance with
  * the Khronos validation layer on and every message it sends counted, a device with one graphics
  * queue, an offscreen RGBA8 colour image with a depth / stencil image in one render pass, read
- * back after each frame, and an hfx device on it. Frames are submitted and waited for one by
- * one, so hfx_device_begin_frame_vk is always safe. */
+ * back after each frame (Vulkan 1.3's dynamic rendering too where the device has it), and an hfx
+ * device on it. Frames are submitted and waited for one by one, so hfx_device_begin_frame_vk is
+ * always safe. */
 #ifndef HFX_TEST_VK_CONTEXT_H
 #define HFX_TEST_VK_CONTEXT_H
 
@@ -40,7 +41,10 @@ int test_vk_validation_on(const test_vk *v);
  * (depth 1, stencil 0), or keeping the last frame's colour, depth and stencil when clear is
  * NULL (the target's render pass follows). Returns the command buffer to record into. */
 VkCommandBuffer test_vk_begin(test_vk *v, const float clear[4]);
-/* Ends the render pass, copies the image out, submits and waits; 0 on success. */
+/* The same frame begun with Vulkan 1.3's vkCmdBeginRendering instead of a render pass (the
+ * target's render_pass becomes VK_NULL_HANDLE); VK_NULL_HANDLE when the device lacks it. */
+VkCommandBuffer test_vk_begin_dynamic(test_vk *v, const float clear[4]);
+/* Ends the render pass (or the rendering), copies the image out, submits and waits; 0 on success. */
 int test_vk_end(test_vk *v);
 /* Pixel (x, y) from the top left as last read back, RGBA8. */
 const unsigned char *test_vk_pixel(const test_vk *v, int x, int y);

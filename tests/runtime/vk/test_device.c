@@ -1,5 +1,6 @@
 /* The Vulkan device: creation and its errors, a first draw probed by hand, uniforms sent only
- * when changed, pipelines built once, and the validation layer silent throughout. */
+ * when changed, pipelines built once, drawing under dynamic rendering (no render pass), and the
+ * validation layer silent throughout. */
 #include "hfx/hfx_vulkan.h"
 #include "test.h"
 #include "vk_context.h"
@@ -78,6 +79,53 @@ static void first_draw(void) {
     test_vk_buffer_free(V, &vb);
 }
 
+/* vertices [first, first + 3) of QUAD in a frame begun with vkCmdBeginRendering. */
+static void draw_dynamic(hfx_effect *fx, test_vk_buffer *vb, const float clear[4], uint32_t first) {
+    VkCommandBuffer cmd = test_vk_begin_dynamic(V, clear);
+    hfx_pass *pass = hfx_technique_pass(hfx_effect_current_technique(fx), 0);
+    int rc = hfx_pass_apply_vk(pass, cmd, test_vk_target(V));
+    if (rc) fprintf(stderr, "apply: %s\n", hfx_device_last_error(test_vk_device(V)));
+    CHECK_INT(rc, HFX_OK);
+    VkDeviceSize zero = 0;
+    vkCmdBindVertexBuffers(cmd, 0, 1, &vb->buffer, &zero);
+    if (!rc) vkCmdDraw(cmd, 3, 1, first, 0);
+    CHECK_INT(test_vk_end(V), 0);
+}
+
+/* A target with no render pass: hfx builds the pipeline for dynamic rendering's formats. The
+ * first triangle (above the diagonal from top left to bottom right) in Color over a blue clear,
+ * then the second one in another colour over what the first frame left (load, no clear). */
+static void dynamic_rendering(void) {
+    const float blue[4] = {0, 0, 1, 1};
+    if (test_vk_begin_dynamic(V, blue) == VK_NULL_HANDLE) {
+        printf("  (no dynamic rendering on this device: skipped)\n");
+        return;
+    }
+    test_vk_end(V);
+    hfx_effect *fx = load(FLAT);
+    test_vk_buffer vb;
+    CHECK(test_vk_buffer_make(V, QUAD, sizeof QUAD, &vb));
+    hfx_vertex_layout *layout = position_layout();
+    test_vk_target(V)->layout = layout;
+    size_t before = hfx_device_pipelines_created_vk(test_vk_device(V));
+    if (fx && layout) {
+        CHECK_INT(hfx_param_set_matrix(hfx_effect_param(fx, "WorldViewProj"), IDENTITY), HFX_OK);
+        draw_dynamic(fx, &vb, blue, 0);
+        check_pixel(60, 3, 255, 128, 64, 255);
+        check_pixel(3, 60, 0, 0, 255, 255);
+        const float green[4] = {0, 1, 0, 1};
+        CHECK_INT(hfx_param_set_floats(hfx_effect_param(fx, "Color"), green, 4), HFX_OK);
+        draw_dynamic(fx, &vb, NULL, 3);
+        check_pixel(60, 3, 255, 128, 64, 255);
+        check_pixel(3, 60, 0, 255, 0, 255);
+        CHECK_INT(hfx_device_pipelines_created_vk(test_vk_device(V)) - before, 1);
+    }
+    hfx_effect_destroy(fx);
+    test_vk_target(V)->layout = NULL;
+    hfx_vertex_layout_destroy(layout);
+    test_vk_buffer_free(V, &vb);
+}
+
 /* Every misuse is a return code and a message. */
 static void errors(void) {
     char *err = NULL;
@@ -110,6 +158,7 @@ int main(void) {
     V = test_vk_create(64, 64, &why);
     if (!V) test_skip(why ? why : "no Vulkan device");
     RUN(first_draw);
+    RUN(dynamic_rendering);
     RUN(errors);
     RUN(validation_silent);
     test_vk_destroy(V);
