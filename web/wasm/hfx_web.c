@@ -101,7 +101,7 @@ EMSCRIPTEN_KEEPALIVE const char *hfxw_compile(const char *path) {
             s->fx = fx, s->code = code, s->hfxo = hfxo, s->hfxo_size = size;
             s->technique = 0, s->pass = -1;
             hfxw_bind_default_textures(s);
-            hfxw_bind_camera(s, s->width, s->height); /* the panel then shows what the frame uses */
+            hfxw_bind_scene(s, s->width, s->height); /* the panel then shows what the frame uses */
         } else {
             hfx_fx_effect_free(code);
             free(hfxo);
@@ -133,6 +133,9 @@ EMSCRIPTEN_KEEPALIVE void hfxw_set_camera(float yaw, float pitch, float distance
 EMSCRIPTEN_KEEPALIVE void hfxw_set_technique(int technique, int pass) {
     session.technique = technique, session.pass = pass;
 }
+
+/* 1: the application adds passes 2.. to the first (ONE, ONE, no depth writes), 0: passes as written. */
+EMSCRIPTEN_KEEPALIVE void hfxw_set_blend_add(int on) { session.blend_add = on != 0; }
 
 /* A built-in mesh name or an .obj path in the file system: "" when set, else the message. */
 EMSCRIPTEN_KEEPALIVE const char *hfxw_set_mesh(const char *spec) {
