@@ -93,12 +93,22 @@ function fillSelect(sel, items) {
   items.forEach((text, i) => sel.append(new Option(text || `(${i})`, i)));
 }
 
-function effectChanged() {
+// The panel from the effect's current values.
+function buildPanel() {
   state.effect = JSON.parse(call("hfxw_describe", "string", [], []) || "null");
+  if (state.effect) HfxParams.build($("params"), state.effect, {set: setParam, setTexture});
+}
+
+// A new compile: the pickers refilled; an edit of the same effect keeps the technique picked.
+function effectChanged() {
+  const picked = state.shownMain === state.main ? $("technique").selectedOptions[0]?.text : undefined;
+  state.shownMain = state.main;
+  buildPanel();
   if (!state.effect) return;
-  fillSelect($("technique"), state.effect.techniques.map((t) => t.name));
+  const names = state.effect.techniques.map((t) => t.name);
+  fillSelect($("technique"), names);
+  if (names.includes(picked)) $("technique").value = String(names.indexOf(picked));
   fillPasses();
-  HfxParams.build($("params"), state.effect, {set: setParam, setTexture});
   requestRender();
 }
 
@@ -235,6 +245,10 @@ function wireControls() {
     showGlsl();
     requestRender();
   });
+  $("blend-add").addEventListener("change", () => {
+    call("hfxw_set_blend_add", null, ["number"], [$("blend-add").checked ? 1 : 0]);
+    requestRender();
+  });
   $("mesh").addEventListener("change", () => setMesh($("mesh").value));
   $("obj-file").addEventListener("change", async () => {
     const f = $("obj-file").files[0];
@@ -280,7 +294,8 @@ Object.assign(page, {
   edit(text) { editor.setText(text); },
   renderNow() { render(); },
   // The panel rebuilt from the effect's current values (after setParam from outside the panel).
-  refreshPanel() { effectChanged(); },
+  refreshPanel() { buildPanel(); },
+  camera: () => ({...state.camera}),
   // Pixel (x, y) counted from the top left, as RGBA bytes.
   pixel(x, y) {
     const canvas = $("view");
@@ -298,6 +313,7 @@ Object.assign(page, {
     requestRender();
   },
   lineCount: () => editor.view.state.doc.lines,
+  editorText: () => editor.getText(),
   cursor() {
     const st = editor.view.state, at = st.selection.main.head, line = st.doc.lineAt(at);
     return {line: line.number, col: at - line.from + 1};
