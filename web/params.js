@@ -8,7 +8,7 @@
 
 const HfxParams = (() => {
   // Names hfxview's bind.c fills from the camera (besides any SAS semantic).
-  const CAMERA_NAME = /^(mat)?(world|view|proj|projection|worldview|viewproj|worldviewproj|worldviewprojection|wvp)(inverse|transpose|it|i|t)*(xf)?$|^(cam|camera|eye|view)(pos|position)(ition)?$/i;
+  const CAMERA_NAME = /^(mat)?(world|view|proj|projection|worldview|viewproj|worldviewproj|worldviewprojection|wvp)(inverse|transpose|it|i|t)*(xf)?$|^(cam|camera|eye|view)(pos|position)(ition)?$|^(posicioncamara|camaraposicion)$/i;
   const SCENE_SEMANTIC = /^(world|view|projection|worldview|viewprojection|worldviewprojection|worldviewproj|viewproj)(inverse|transpose|inversetranspose)?$|^(cameraposition|viewposition|eyeposition|time|elapsedtime|viewportpixelsize|viewportsize)$/i;
 
   const ann = (p, key) => {
