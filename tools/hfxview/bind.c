@@ -347,7 +347,8 @@ static int bind_one(hfx_param *p, const hv_scene *s) {
     hfx_param_class k = hfx_param_get_class(p);
     if (k == HFX_CLASS_STRUCT) return bind_struct(p, s);
     if (k != HFX_CLASS_SCALAR && k != HFX_CLASS_VECTOR) return 0;
-    return bind_role(p, role_of(hfx_param_name(p), &v), v, s);
+    role r = role_of(hfx_param_name(p), &v); /* sets v: before it is passed */
+    return bind_role(p, r, v, s);
 }
 
 /* The standard SAS semantics go through the runtime (hfx_effect_bind_scene); the rest of this
