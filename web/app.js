@@ -73,6 +73,7 @@ function compile() {
   const ms = performance.now() - t0;
   page.compileMs.push(ms);
   if (r) page.compilerMs = r.compile_ms; // the compiler alone (the rest: .hfxo, load, WebGL link)
+  if (r && page.firstCompilerMs === undefined) page.firstCompilerMs = r.compile_ms; // cold: the module's first run
   state.diags = r ? r.diagnostics : [];
   if (r && r.load_error) state.diags.push({severity: "error", file: SRC + state.main, line: 0, col: 0, code: 0, message: r.load_error});
   showDiagnostics();
@@ -93,12 +94,22 @@ function fillSelect(sel, items) {
   items.forEach((text, i) => sel.append(new Option(text || `(${i})`, i)));
 }
 
-function effectChanged() {
+// The panel from the effect's current values.
+function buildPanel() {
   state.effect = JSON.parse(call("hfxw_describe", "string", [], []) || "null");
+  if (state.effect) HfxParams.build($("params"), state.effect, {set: setParam, setTexture});
+}
+
+// A new compile: the pickers refilled; an edit of the same effect keeps the technique picked.
+function effectChanged() {
+  const picked = state.shownMain === state.main ? $("technique").selectedOptions[0]?.text : undefined;
+  state.shownMain = state.main;
+  buildPanel();
   if (!state.effect) return;
-  fillSelect($("technique"), state.effect.techniques.map((t) => t.name));
+  const names = state.effect.techniques.map((t) => t.name);
+  fillSelect($("technique"), names);
+  if (names.includes(picked)) $("technique").value = String(names.indexOf(picked));
   fillPasses();
-  HfxParams.build($("params"), state.effect, {set: setParam, setTexture});
   requestRender();
 }
 
@@ -235,6 +246,10 @@ function wireControls() {
     showGlsl();
     requestRender();
   });
+  $("blend-add").addEventListener("change", () => {
+    call("hfxw_set_blend_add", null, ["number"], [$("blend-add").checked ? 1 : 0]);
+    requestRender();
+  });
   $("mesh").addEventListener("change", () => setMesh($("mesh").value));
   $("obj-file").addEventListener("change", async () => {
     const f = $("obj-file").files[0];
@@ -280,7 +295,8 @@ Object.assign(page, {
   edit(text) { editor.setText(text); },
   renderNow() { render(); },
   // The panel rebuilt from the effect's current values (after setParam from outside the panel).
-  refreshPanel() { effectChanged(); },
+  refreshPanel() { buildPanel(); },
+  camera: () => ({...state.camera}),
   // Pixel (x, y) counted from the top left, as RGBA bytes.
   pixel(x, y) {
     const canvas = $("view");
@@ -298,6 +314,10 @@ Object.assign(page, {
     requestRender();
   },
   lineCount: () => editor.view.state.doc.lines,
+  editorText: () => editor.getText(),
+  // The compiler alone on the current effect, `rounds` times after as many warm-up compiles:
+  // the mean in ms (hfx_web.c's hfxw_compile_bench; bench/bench_web_compile natively).
+  compileBench: (rounds) => call("hfxw_compile_bench", "number", ["string", "number"], [SRC + state.main, rounds]),
   cursor() {
     const st = editor.view.state, at = st.selection.main.head, line = st.doc.lineAt(at);
     return {line: line.number, col: at - line.from + 1};

@@ -16,6 +16,9 @@ window.HfxEditor = {
     const view = new EditorView({
       parent,
       extensions: [basicSetup, cpp(), lintGutter(),
+        // Files dropped on the editor open as the effect (app.js's drop handler, which the event
+        // bubbles up to) instead of CodeMirror pasting their text into the current file.
+        EditorView.domEventHandlers({drop: (e) => !!(e.dataTransfer && e.dataTransfer.files.length)}),
         EditorView.updateListener.of((u) => { if (u.docChanged) onChange(u.state.doc.toString()); })],
     });
     return {

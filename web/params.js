@@ -1,13 +1,14 @@
 // params.js: the parameter panel, built from the effect's annotations the way FX Composer
 // builds its property grid (docs/annotations.md): UIName labels, UIWidget "Color" a colour
 // picker, "Slider" a range with UIMin / UIMax / UIStep, bools a checkbox, ints and floats
-// number fields, textures an image picker (the checker until one is chosen). Matrices, and
+// number fields, textures an image picker (the checker until one is chosen); the members of
+// struct parameters (arrays of light structs...) fold under the parameter's name. Matrices, and
 // parameters with a scene semantic, are bound from the camera every frame and only listed.
 "use strict";
 
 const HfxParams = (() => {
   // Names hfxview's bind.c fills from the camera (besides any SAS semantic).
-  const CAMERA_NAME = /^(mat)?(world|view|proj|projection|worldview|viewproj|worldviewproj|worldviewprojection|wvp)(inverse|transpose|it|i|t)*(xf)?$|^(cam|camera|eye|view)(pos|position)(ition)?$/i;
+  const CAMERA_NAME = /^(mat)?(world|view|proj|projection|worldview|viewproj|worldviewproj|worldviewprojection|wvp)(inverse|transpose|it|i|t)*(xf)?$|^(cam|camera|eye|view)(pos|position)(ition)?$|^(posicioncamara|camaraposicion)$/i;
   const SCENE_SEMANTIC = /^(world|view|projection|worldview|viewprojection|worldviewprojection|worldviewproj|viewproj)(inverse|transpose|inversetranspose)?$|^(cameraposition|viewposition|eyeposition|time|elapsedtime|viewportpixelsize|viewportsize)$/i;
 
   const ann = (p, key) => {
@@ -29,6 +30,7 @@ const HfxParams = (() => {
     const input = document.createElement("input");
     input.type = "color";
     input.value = toHex(p.value);
+    input.dataset.param = p.name;
     input.addEventListener("input", () => {
       const hex = input.value;
       const v = p.value.slice();
@@ -60,6 +62,7 @@ const HfxParams = (() => {
 
   function numberFields(p, set) {
     const box = document.createElement("span");
+    box.dataset.param = p.name;
     const fields = p.value.map((v) => {
       const f = document.createElement("input");
       f.type = "number";
@@ -76,6 +79,7 @@ const HfxParams = (() => {
     const c = document.createElement("input");
     c.type = "checkbox";
     c.checked = p.value[0] !== 0;
+    c.dataset.param = p.name;
     c.addEventListener("change", () => set(p.name, c.checked ? "true" : "false"));
     return c;
   }
@@ -98,9 +102,23 @@ const HfxParams = (() => {
     return numberFields(p, h.set);
   }
 
+  // A struct parameter's leaves ("lights[0].Color"...) go in a folding group of its own.
+  function groupOf(panel, groups, name) {
+    let g = groups.get(name);
+    if (!g) {
+      g = document.createElement("details");
+      g.dataset.group = name;
+      g.append(Object.assign(document.createElement("summary"), {textContent: name}));
+      groups.set(name, g);
+      panel.append(g);
+    }
+    return g;
+  }
+
   // effect: hfxw_describe's JSON; h: {set(name, values), setTexture(name, file)}.
   function build(panel, effect, h) {
     panel.textContent = "";
+    const groups = new Map();
     for (const p of effect.params) {
       if (String(ann(p, "UIWidget") ?? "").toLowerCase() === "none" || p.type === "string") continue;
       if (p.type.startsWith("sampler")) continue;
@@ -112,7 +130,10 @@ const HfxParams = (() => {
         : control(p, h);
       if (!c) continue;
       label.append(name, c);
-      panel.append(label);
+      if (p.group && p.group !== p.name) {
+        name.textContent = p.name.slice(p.group.length); // "[0].Color" under "lights"
+        groupOf(panel, groups, p.group).append(label);
+      } else panel.append(label);
     }
   }
 

@@ -320,7 +320,9 @@ static int set_viewport_size(hfx_param *p, const hv_scene *s) {
     return set_vector(p, wh, 2, 0);
 }
 
-static int bind_one(hfx_param *p, const hv_scene *s) {
+/* What follows the camera and the viewport: matrices by semantic or name, the viewport size by
+ * name, the camera position. The count set (0 or 1), or -1 when p is none of those. */
+static int bind_view_one(hfx_param *p, const hv_scene *s) {
     float m[16], v = 0;
     const char *sem = hfx_param_semantic(p);
     hfx_param_class k = hfx_param_get_class(p);
@@ -329,14 +331,23 @@ static int bind_one(hfx_param *p, const hv_scene *s) {
         if (sem && *sem && hv_scene_matrix(s, sem, 1, m)) return set_matrix_param(p, m); /* "WVP", "ViewI"... */
         return hv_scene_matrix(s, hfx_param_name(p), 0, m) && set_matrix_param(p, m);
     }
-    if (k == HFX_CLASS_STRUCT) return bind_struct(p, s);
-    if (k != HFX_CLASS_SCALAR && k != HFX_CLASS_VECTOR) return 0;
+    if (k != HFX_CLASS_SCALAR && k != HFX_CLASS_VECTOR) return -1;
     /* the runtime binds the semantics (hfx_effect_bind_scene); DigitalRise's post-processing
      * declares its viewport size by name only */
     char low_name[64];
     lower_copy(low_name, sizeof low_name, hfx_param_name(p));
     if (is_viewport_size(low_name)) return set_viewport_size(p, s);
-    role r = role_of(hfx_param_name(p), &v);
+    return role_of(hfx_param_name(p), &v) == R_CAMERA ? bind_role(p, R_CAMERA, v, s) : -1;
+}
+
+static int bind_one(hfx_param *p, const hv_scene *s) {
+    int n = bind_view_one(p, s);
+    float v = 0;
+    if (n >= 0) return n;
+    hfx_param_class k = hfx_param_get_class(p);
+    if (k == HFX_CLASS_STRUCT) return bind_struct(p, s);
+    if (k != HFX_CLASS_SCALAR && k != HFX_CLASS_VECTOR) return 0;
+    role r = role_of(hfx_param_name(p), &v); /* sets v: before it is passed */
     return bind_role(p, r, v, s);
 }
 
@@ -357,6 +368,15 @@ static int bind_semantics(hfx_effect *fx, const hv_scene *s) {
 int hv_bind_scene(hfx_effect *fx, const hv_scene *s) {
     int n = bind_semantics(fx, s);
     for (size_t i = 0; i < hfx_effect_param_count(fx); i++) n += bind_one(hfx_effect_param_at(fx, i), s);
+    return n;
+}
+
+int hv_bind_view(hfx_effect *fx, const hv_scene *s) {
+    int n = bind_semantics(fx, s);
+    for (size_t i = 0; i < hfx_effect_param_count(fx); i++) {
+        int k = bind_view_one(hfx_effect_param_at(fx, i), s);
+        n += k > 0 ? k : 0;
+    }
     return n;
 }
 

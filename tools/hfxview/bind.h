@@ -31,6 +31,9 @@ int hv_scene_matrix(const hv_scene *s, const char *name, int is_semantic, float 
 
 /* Sets every matrix, camera, light and material parameter it recognises; the count set. */
 int hv_bind_scene(hfx_effect *fx, const hv_scene *s);
+/* Only what follows the camera and the viewport (semantics, matrices, the camera position), as
+ * a viewer does every frame: lights and materials keep what the user set, zeros included. */
+int hv_bind_view(hfx_effect *fx, const hv_scene *s);
 
 /* --set NAME=VALUES: NAME may be "a", "a[2]", "a[1].Member"; VALUES are comma-separated
  * numbers, or true / false. 0, or -1 with a message. */

@@ -1,6 +1,8 @@
 /* draw.c: what the page's "application" does each frame, as an XNA Draw method would: the
  * camera's matrices into the effect (by name and SAS semantic, hfxview's bind.c), then
- * hfxview's own drawing (render.c: XNA's default states, every pass applied, the mesh drawn)
+ * hfxview's own drawing (render.c: XNA's default states, every pass applied in order with its
+ * own states, the mesh drawn; with blend_add the application's additive blending from the
+ * second pass on, as hfxview --blend-passes add and XNA multi-pass lighting do)
  * through its GL table loaded over WebGL 2, so the page and hfxview draw alike. */
 #include <math.h>
 #include <stdlib.h>
@@ -72,14 +74,26 @@ static hv_vec3 orbit_eye(const hfxw_session *s) {
 
 /* hfxview's scene with its defaults (World the identity, 45 degrees of view, its light),
  * looking at the origin from the orbit camera. */
-void hfxw_bind_camera(hfxw_session *s, int width, int height) {
+static void scene_of(const hfxw_session *s, int width, int height, hv_scene *sc) {
     hv_options o;
     hv_options_defaults(&o);
     o.eye = orbit_eye(s);
     o.width = width, o.height = height;
+    hv_scene_from_options(sc, &o);
+}
+
+void hfxw_bind_scene(hfxw_session *s, int width, int height) {
     hv_scene sc;
-    hv_scene_from_options(&sc, &o);
+    scene_of(s, width, height, &sc);
     hv_bind_scene(s->fx, &sc);
+}
+
+/* Each frame: the camera's matrices and position only, so that a light or material the user
+ * set (to zero too) in the panel stays as set. */
+static void bind_view(hfxw_session *s, int width, int height) {
+    hv_scene sc;
+    scene_of(s, width, height, &sc);
+    hv_bind_view(s->fx, &sc);
 }
 
 /* Every texture parameter still empty gets the checker. */
@@ -96,7 +110,7 @@ void hfxw_draw_frame(hfxw_session *s, int width, int height) {
     hv_clear(&s->gl, width, height, s->clear);
     hfx_device_set_viewport(s->dev, 0, 0, width, height);
     if (!s->fx) return;
-    hfxw_bind_camera(s, width, height);
+    bind_view(s, width, height);
     hfx_technique *t = hfx_effect_technique_at(s->fx, (size_t)s->technique);
-    if (t) hv_draw_technique(&s->gl, &s->mesh, s->fx, t, s->pass, 0, NULL);
+    if (t) hv_draw_technique(&s->gl, &s->mesh, s->fx, t, s->pass, s->blend_add, NULL);
 }

@@ -78,12 +78,17 @@ static hfx_effect *load_compiled(hfxw_session *s, const hfx_fx_effect *code, voi
 /* Compiles path (in the in-memory file system) for GLSL ES 300 and, when it compiles and
  * loads, makes it the session's effect; otherwise the previous one stays. Answers
  * {"ok", "diagnostics": [...], "text", "load_error", "compile_ms"}. */
-EMSCRIPTEN_KEEPALIVE const char *hfxw_compile(const char *path) {
-    hfxw_session *s = &session;
+static hfxc_options page_options(void) {
     hfxc_options o;
     memset(&o, 0, sizeof o);
     o.targets = 1u << HFX_TARGET_GLSLES300;
     o.flags = HFXC_PACK_UNIFORMS; /* as hfx_effect_load compiles */
+    return o;
+}
+
+EMSCRIPTEN_KEEPALIVE const char *hfxw_compile(const char *path) {
+    hfxw_session *s = &session;
+    hfxc_options o = page_options();
     double start = emscripten_get_now();
     hfxc_result *r = hfxc_compile_file(path, &o);
     double compiled = emscripten_get_now() - start; /* the compiler alone, to compare with hfxc */
@@ -101,7 +106,7 @@ EMSCRIPTEN_KEEPALIVE const char *hfxw_compile(const char *path) {
             s->fx = fx, s->code = code, s->hfxo = hfxo, s->hfxo_size = size;
             s->technique = 0, s->pass = -1;
             hfxw_bind_default_textures(s);
-            hfxw_bind_camera(s, s->width, s->height); /* the panel then shows what the frame uses */
+            hfxw_bind_scene(s, s->width, s->height); /* the panel then shows what the frame uses */
         } else {
             hfx_fx_effect_free(code);
             free(hfxo);
@@ -120,6 +125,23 @@ EMSCRIPTEN_KEEPALIVE const char *hfxw_compile(const char *path) {
     return hfxw_answer(hfxw_json_take(&j));
 }
 
+/* The compiler alone on path, as hfxw_compile runs it: `rounds` compiles after as many
+ * warm-up ones, the mean in ms (bench/bench_web_compile.c is the same loop natively);
+ * -1 when it does not compile. One clock reading per loop, so the browser's coarse timer
+ * (0.1 ms) does not limit the figure. */
+EMSCRIPTEN_KEEPALIVE double hfxw_compile_bench(const char *path, int rounds) {
+    hfxc_options o = page_options();
+    double start = 0;
+    for (int i = 0; i < 2 * rounds; i++) {
+        if (i == rounds) start = emscripten_get_now();
+        hfxc_result *r = hfxc_compile_file(path, &o);
+        int ok = r && hfxc_result_ok(r);
+        hfxc_result_free(r);
+        if (!ok) return -1;
+    }
+    return rounds > 0 ? (emscripten_get_now() - start) / rounds : -1;
+}
+
 EMSCRIPTEN_KEEPALIVE void hfxw_render(int width, int height) {
     emscripten_webgl_make_context_current(session.context);
     session.width = width, session.height = height;
@@ -133,6 +155,9 @@ EMSCRIPTEN_KEEPALIVE void hfxw_set_camera(float yaw, float pitch, float distance
 EMSCRIPTEN_KEEPALIVE void hfxw_set_technique(int technique, int pass) {
     session.technique = technique, session.pass = pass;
 }
+
+/* 1: the application adds passes 2.. to the first (ONE, ONE, no depth writes), 0: passes as written. */
+EMSCRIPTEN_KEEPALIVE void hfxw_set_blend_add(int on) { session.blend_add = on != 0; }
 
 /* A built-in mesh name or an .obj path in the file system: "" when set, else the message. */
 EMSCRIPTEN_KEEPALIVE const char *hfxw_set_mesh(const char *spec) {

@@ -19,6 +19,7 @@ typedef struct hfxw_session {
     void *hfxo;              /* its .hfxo bytes, for the download button */
     size_t hfxo_size;
     int technique, pass;     /* pass -1: every pass of the technique, in order */
+    int blend_add;           /* the application adds passes 2.. to the first (hfxview --blend-passes add) */
     hv_gl gl;                /* hfxview's GL table over WebGL 2, for its drawing code (render.c) */
     hv_gpu_mesh mesh;
     unsigned checker;        /* the default texture */
@@ -41,7 +42,8 @@ int hfxw_mesh_set(hfxw_session *s, const char *spec, char *err, size_t errlen);
 unsigned hfxw_texture_rgba(hfxw_session *s, const unsigned char *rgba, int width, int height);
 void hfxw_bind_default_textures(hfxw_session *s);
 /* World (identity), View, Projection, the camera, and hfxview's default light into every
- * parameter they fit by name or semantic; lights and materials only where the effect left zero. */
-void hfxw_bind_camera(hfxw_session *s, int width, int height);
+ * parameter they fit by name or semantic; lights and materials only where the effect left zero.
+ * Once, when an effect loads (each frame binds only the camera's). */
+void hfxw_bind_scene(hfxw_session *s, int width, int height);
 
 #endif
