@@ -77,13 +77,22 @@ static hfx_token *copy_out(const cached_file *e, hfx_arena *arena, uint32_t file
     hfx_token *out = hfx_arena_alloc_raw(arena, sizeof *out * e->count);
     if (!spellings || !out) return NULL;
     memcpy(spellings, e->spellings, e->spellings_size);
-    memcpy(out, e->tokens, sizeof *out * e->count);
+    /* Field by field, in one pass (a memcpy of the array first was a second pass over it); a
+     * field added to hfx_token must be added here. */
     for (uint32_t i = 0; i < e->count; i++) {
+        const hfx_token *from = &e->tokens[i];
         hfx_token *t = &out[i];
-        if (e->spelling_at[i] != NO_SPELLING) t->text = spellings + e->spelling_at[i];
-        t->loc.file = t->spelling.file = file;
-        t->next = i + 1 < e->count ? t + 1 : NULL;
+        t->kind = from->kind;
+        t->punct = from->punct;
+        t->flags = from->flags;
+        t->text = e->spelling_at[i] != NO_SPELLING ? spellings + e->spelling_at[i] : from->text;
+        t->len = from->len;
+        t->loc = (hfx_loc){file, from->loc.line, from->loc.col};
+        t->spelling = t->loc; /* the lexer gives both the same place */
+        t->next = t + 1;
+        t->hideset = NULL;
     }
+    out[e->count - 1].next = NULL;
     return out;
 }
 
@@ -96,7 +105,7 @@ static bool count_list(const hfx_token *list, uint32_t *count, size_t *spellings
         if (++*count == UINT32_MAX) return false;
         if (!constant_spelling(t->kind)) *spellings_size += (size_t)t->len + 1;
     }
-    return *spellings_size < NO_SPELLING;
+    return *count > 0 && *spellings_size < NO_SPELLING;
 }
 
 /* Fills the entry's arrays from the list; they are allocated with room for all of it. */
