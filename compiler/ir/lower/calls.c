@@ -29,32 +29,40 @@ typedef struct specialiser {
 /* An `in` numeric parameter: what a constant argument may replace. */
 static bool bindable_param(const ir_var *p) { return !(p->mods & MOD_OUT) && hfx_type_is_numeric(p->type); }
 
+/* What one walk over a function finds: which of its parameters (the first 64) it writes. */
+typedef struct param_writes { const ir_func *fn; uint64_t mask; } param_writes;
+
+/* Sets the bit of the parameter that the l-value e writes into, if it is one. */
+static void mark_written(param_writes *w, const ir_expr *e) {
+    const ir_var *v = ir_lvalue_root(e);
+    if (!v) return;
+    for (uint32_t i = 0; i < w->fn->param_count && i < 64; i++)
+        if (w->fn->params[i] == v) w->mask |= (uint64_t)1 << i;
+}
+
 static void note_write(ir_ctx *c, ir_expr **slot, void *data) {
     (void)c;
     const ir_expr *e = *slot;
-    const ir_var **v = data;
+    param_writes *w = data;
     bool writes = e->kind == IE_ASSIGN || (e->kind == IE_UNARY && e->op >= OP_PREINC && e->op <= OP_POSTDEC);
-    if (writes && ir_lvalue_root(e->a[0]) == *v) *v = NULL;
+    if (writes) mark_written(w, e->a[0]);
     if (e->kind == IE_CALL) /* passed on as an out argument */
         for (uint32_t i = 0; i < e->n && i < e->fn->param_count; i++)
-            if ((e->fn->params[i]->mods & MOD_OUT) && ir_lvalue_root(e->a[i]) == *v) *v = NULL;
-    if (e->kind == IE_INTRIN) /* sincos, modf, frexp write their later arguments */
-        for (uint32_t i = 1; i < e->n; i++)
-            if (ir_has_side_effects(e) && ir_lvalue_root(e->a[i]) == *v) *v = NULL;
+            if (e->fn->params[i]->mods & MOD_OUT) mark_written(w, e->a[i]);
+    if (e->kind == IE_INTRIN && ir_has_side_effects(e)) /* sincos, modf, frexp write their later arguments */
+        for (uint32_t i = 1; i < e->n; i++) mark_written(w, e->a[i]);
 }
 
-static bool written(ir_ctx *c, const ir_func *f, const ir_var *p) {
-    const ir_var *v = p;
-    ir_walk_stmt_exprs(c, f->body, note_write, &v);
-    return v == NULL;
-}
-
+/* One walk for all the parameters, none when no parameter could be bound anyway. */
 static uint64_t written_mask(ir_ctx *c, specialiser *sp, const ir_func *f) {
     for (uint32_t i = 0; i < sp->write_count; i++)
         if (sp->writes[i].fn == f) return sp->writes[i].mask;
-    uint64_t mask = 0;
+    uint64_t bindable = 0;
     for (uint32_t i = 0; i < f->param_count && i < 64; i++)
-        if (bindable_param(f->params[i]) && written(c, f, f->params[i])) mask |= (uint64_t)1 << i;
+        if (bindable_param(f->params[i])) bindable |= (uint64_t)1 << i;
+    param_writes w = {f, 0};
+    if (bindable) ir_walk_stmt_exprs(c, f->body, note_write, &w);
+    uint64_t mask = w.mask & bindable;
     if (HFX_ARENA_GROW(c->arena, sp->writes, sp->write_count, sp->write_cap, 16))
         sp->writes[sp->write_count++] = (writes){f, mask};
     return mask;
