@@ -21,6 +21,8 @@ typedef struct specialiser {
     copy copies[MAX_COPIES];
     uint32_t copy_count;
     writes *writes; uint32_t write_count, write_cap;
+    const ir_func **call_free; uint32_t call_free_count, call_free_cap; /* walked, no call seen */
+    uint32_t calls_seen;        /* in the function being walked */
     bool changed;
 } specialiser;
 
@@ -194,7 +196,9 @@ static ir_func *copy_for(ir_ctx *c, specialiser *sp, ir_func *f, const ir_expr *
 static void specialise_call(ir_ctx *c, ir_expr **slot, void *data) {
     specialiser *sp = data;
     ir_expr *e = *slot;
-    if (e->kind != IE_CALL || e->n != e->fn->param_count || e->n > 64) return;
+    if (e->kind != IE_CALL) return;
+    sp->calls_seen++;
+    if (e->n != e->fn->param_count || e->n > 64) return;
     bool bind[64], any = false;
     for (uint32_t i = 0; i < e->n; i++) any |= bind[i] = bindable(c, sp, e->fn, e, i);
     if (!any) return;
@@ -208,7 +212,14 @@ static void specialise_call(ir_ctx *c, ir_expr **slot, void *data) {
     sp->changed = true;
 }
 
-/* One round over every function, callees first; true when some call changed. */
+static bool known_call_free(const specialiser *sp, const ir_func *f) {
+    for (uint32_t i = 0; i < sp->call_free_count; i++)
+        if (sp->call_free[i] == f) return true;
+    return false;
+}
+
+/* One round over every function, callees first; true when some call changed. A function seen
+ * without calls is not walked again: nothing here or in fold makes a call. */
 static bool round_of(ir_ctx *c, specialiser *sp) {
     ir_shader *sh = sp->sh;
     uint32_t n = sh->func_count;
@@ -216,7 +227,13 @@ static bool round_of(ir_ctx *c, specialiser *sp) {
     if (!funcs) return false;
     memcpy(funcs, sh->funcs, sizeof *funcs * n);
     sp->changed = false;
-    for (uint32_t i = 0; i < n; i++) ir_walk_stmt_exprs(c, funcs[i]->body, specialise_call, sp);
+    for (uint32_t i = 0; i < n; i++) {
+        if (known_call_free(sp, funcs[i])) continue;
+        sp->calls_seen = 0;
+        ir_walk_stmt_exprs(c, funcs[i]->body, specialise_call, sp);
+        if (!sp->calls_seen && HFX_ARENA_GROW(c->arena, sp->call_free, sp->call_free_count, sp->call_free_cap, 8))
+            sp->call_free[sp->call_free_count++] = funcs[i];
+    }
     return sp->changed;
 }
 
