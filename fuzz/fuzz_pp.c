@@ -17,7 +17,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     hfx_arena_init(&arena);
     hfx_diags diags;
     hfx_diags_init(&diags, &arena, 0);
-    hfx_pp_options opt = {defines, 3, NULL, 0, 8};
+    hfx_pp_options opt = {defines, 3, NULL, 0, 8, NULL};
     hfx_token *t = hfx_preprocess(&arena, &diags, "fuzz.fx", (const char *)data, (uint32_t)size, &opt);
     while (t && t->kind != TK_EOF) t = t->next;
     fuzz_require(t && !t->next, "the token list does not end with one TK_EOF");

@@ -11,6 +11,7 @@ struct hfx_types {
     hfx_type numeric[BASE_COUNT][5][5]; /* [base][rows][cols]; scalars at [1][1] */
     hfx_type vectors[BASE_COUNT][5];    /* vectors are 1xN, kept apart from 1xN matrices */
     hfx_type objects[TY_FUNCTION + 1][DIM_CUBE + 1];
+    bool nested_arrays; /* some array type has arrays for elements (every array type is made here) */
 };
 
 hfx_types *hfx_types_new(hfx_arena *arena) {
@@ -75,8 +76,11 @@ const hfx_type *hfx_type_array(hfx_types *t, const hfx_type *elem, uint32_t len)
     ty->base = elem->base;
     ty->elem = elem;
     ty->array_len = len;
+    if (elem->kind == TY_ARRAY) t->nested_arrays = true;
     return ty;
 }
+
+bool hfx_types_nested_arrays(const hfx_types *t) { return t->nested_arrays; }
 
 const hfx_type *hfx_type_struct(hfx_types *t, hfx_struct *st) {
     hfx_type *ty = HFX_NEW(t->arena, hfx_type);

@@ -72,6 +72,8 @@ const hfx_type *hfx_type_numeric(hfx_types *t, hfx_type_kind k, hfx_base b, unsi
 const hfx_type *hfx_type_object(hfx_types *t, hfx_type_kind k, hfx_dim dim);     /* texture, sampler, string, shaders */
 const hfx_type *hfx_type_array(hfx_types *t, const hfx_type *elem, uint32_t len);
 const hfx_type *hfx_type_struct(hfx_types *t, hfx_struct *st);
+/* Whether any array of arrays was made: when not, passes about them have nothing to do. */
+bool hfx_types_nested_arrays(const hfx_types *t);
 
 bool hfx_type_is_numeric(const hfx_type *ty);        /* scalar, vector or matrix */
 bool hfx_type_equal(const hfx_type *a, const hfx_type *b);

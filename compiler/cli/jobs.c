@@ -182,7 +182,7 @@ static bool load_hfxo(cli_job *job) {
     return true;
 }
 
-static void compile_one(const cli_options *o, cli_job *job) {
+static void compile_one(const cli_options *o, cli_job *job, hfxc_session *session) {
     if (!o->ast && load_hfxo(job)) {
         if (job->ok) {
             write_hfxo(o, job, job->effect);
@@ -203,6 +203,7 @@ static void compile_one(const cli_options *o, cli_job *job) {
     opt.targets = o->targets;
     opt.entry = o->entry;
     opt.profile = o->profile;
+    opt.session = session;
     opt.flags = (o->werror ? HFXC_WERROR : 0) | (o->no_warnings ? HFXC_NO_WARNINGS : 0) | (o->ast ? HFXC_PARSE_ONLY : 0) |
                 (o->pack_uniforms ? HFXC_PACK_UNIFORMS : 0) | (o->no_self_check ? HFXC_NO_SELF_CHECK : 0) |
                 (o->no_preshaders ? HFXC_NO_PRESHADERS : 0);
@@ -242,14 +243,16 @@ typedef struct pool {
     pthread_mutex_t lock;
 } pool;
 
+/* Each worker has its own session: the headers it has cut into tokens serve its next files. */
 static void *worker(void *arg) {
     pool *p = arg;
+    hfxc_session *session = hfxc_session_new(); /* NULL is fine: compiles without one */
     for (;;) {
         pthread_mutex_lock(&p->lock);
         size_t i = p->next < p->count ? p->next++ : p->count;
         pthread_mutex_unlock(&p->lock);
-        if (i == p->count) return NULL;
-        compile_one(p->o, &p->jobs[i]);
+        if (i == p->count) break;
+        compile_one(p->o, &p->jobs[i], session);
         pthread_mutex_lock(&p->lock);
         p->done++;
         if (p->progress) {
@@ -258,6 +261,8 @@ static void *worker(void *arg) {
         }
         pthread_mutex_unlock(&p->lock);
     }
+    hfxc_session_free(session);
+    return NULL;
 }
 
 void cli_run_jobs(const cli_options *o, cli_job *jobs, size_t count, bool progress) {

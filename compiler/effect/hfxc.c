@@ -11,6 +11,7 @@
 #include "effect/build.h"
 #include "check/check.h"
 #include "effect.h"
+#include "pp/token_cache.h"
 
 struct hfxc_result {
     hfx_arena arena;
@@ -22,7 +23,27 @@ struct hfxc_result {
     size_t dep_count;
 };
 
+struct hfxc_session {
+    hfx_token_cache *tokens;
+};
+
 const char *hfxc_version(void) { return "hfxc 0.1.0"; }
+
+hfxc_session *hfxc_session_new(void) {
+    hfxc_session *s = calloc(1, sizeof *s);
+    if (s) s->tokens = hfx_token_cache_new();
+    if (s && !s->tokens) {
+        free(s);
+        return NULL;
+    }
+    return s;
+}
+
+void hfxc_session_free(hfxc_session *s) {
+    if (!s) return;
+    hfx_token_cache_free(s->tokens);
+    free(s);
+}
 
 static unsigned default_targets(const hfxc_options *opt) {
     if (opt && opt->targets) return opt->targets;
@@ -38,6 +59,7 @@ static void run_phases(hfxc_result *r, const char *name, const char *text, size_
         pp.define_count = (uint32_t)opt->define_count;
         pp.include_dirs = opt->include_dirs;
         pp.include_dir_count = (uint32_t)opt->include_dir_count;
+        pp.cache = opt->session ? opt->session->tokens : NULL;
     }
     hfx_types *types = hfx_types_new(&r->arena);
     hfx_token *tokens = hfx_preprocess(&r->arena, &r->diags, name, text, (uint32_t)size, &pp);

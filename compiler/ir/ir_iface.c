@@ -39,25 +39,34 @@ static const char *semantic_plus(ir_ctx *c, const char *sem, uint32_t k) {
     return hfx_arena_printf(c->arena, "%.*s%lu", (int)n, canon, strtoul(canon + n, NULL, 10) + k);
 }
 
+/* What a leaf belongs to, for the messages: an input or output parameter, or the return value.
+ * Spelled out only when a message needs it. */
+typedef struct owner { const char *fn; bool outputs, is_return; const char *param; } owner;
+
+static const char *owner_text(ir_ctx *c, const owner *o) {
+    if (o->is_return) return "function return value";
+    return hfx_arena_printf(c->arena, "%s parameter '%s'", o->outputs ? "output" : "input", o->param);
+}
+
 static void walk(ir_ctx *c, leaves *l, const hfx_type *ty, const char *sem, const char *path, hfx_loc loc,
-                 const char *fn, const char *what, uint32_t mods) {
+                 const owner *o, uint32_t mods) {
     bool flat = (mods & MOD_NOINTERPOLATION) != 0;
     if (ty->kind == TY_STRUCT) {
         for (uint32_t i = 0; i < ty->st->field_count; i++) {
             const hfx_field *f = &ty->st->fields[i];
             const char *p = hfx_arena_printf(c->arena, "%s.%s", path, hfx_glsl_name(c->arena, f->name));
-            walk(c, l, f->type, f->semantic, p, f->loc, fn, what, f->mods);
+            walk(c, l, f->type, f->semantic, p, f->loc, o, f->mods);
         }
         return;
     }
     if (!sem) {
-        hfx_error(c->diags, loc, 3502, "'%s': %s missing semantics", fn, what);
+        hfx_error(c->diags, loc, 3502, "'%s': %s missing semantics", o->fn, owner_text(c, o));
         l->bad = true;
         return;
     }
     if (ty->kind == TY_ARRAY && ty->elem && ty->array_len) { /* `float2 uv[8] : TEXCOORD0`: one register each */
         for (uint32_t i = 0; i < ty->array_len; i++)
-            walk(c, l, ty->elem, semantic_plus(c, sem, i), hfx_arena_printf(c->arena, "%s[%u]", path, i), loc, fn, what, mods);
+            walk(c, l, ty->elem, semantic_plus(c, sem, i), hfx_arena_printf(c->arena, "%s[%u]", path, i), loc, o, mods);
         return;
     }
     if (ty->kind == TY_MATRIX && ty->rows > 1 && ty->cols > 1) {
@@ -68,7 +77,7 @@ static void walk(ir_ctx *c, leaves *l, const hfx_type *ty, const char *sem, cons
         return;
     }
     if (!hfx_type_is_numeric(ty)) {
-        hfx_error(c->diags, loc, X_UNSUPPORTED, "'%s': %s of this type cannot carry a semantic", fn, what);
+        hfx_error(c->diags, loc, X_UNSUPPORTED, "'%s': %s of this type cannot carry a semantic", o->fn, owner_text(c, o));
         l->bad = true;
         return;
     }
@@ -81,12 +90,13 @@ int ir_entry_leaves(ir_ctx *c, const ir_func *entry, bool outputs, ir_leaf **out
         const ir_var *v = entry->params[i];
         bool is_out = (v->mods & MOD_OUT) != 0, is_in = !is_out || (v->mods & MOD_IN);
         if (outputs ? !is_out : !is_in) continue;
-        const char *what = hfx_arena_printf(c->arena, "%s parameter '%s'", outputs ? "output" : "input", v->name);
+        owner o = {entry->name, outputs, false, v->name};
         walk(c, &l, v->type, v->decl ? v->decl->semantic : NULL, hfx_arena_printf(c->arena, "hfx_arg%u", i),
-             v->decl ? v->decl->loc : entry->src->loc, entry->name, what, v->mods);
+             v->decl ? v->decl->loc : entry->src->loc, &o, v->mods);
     }
+    owner ret = {entry->name, outputs, true, NULL};
     if (outputs && entry->ret && entry->ret->kind != TY_VOID)
-        walk(c, &l, entry->ret, entry->ret_semantic, "hfx_ret", entry->src->loc, entry->name, "function return value", 0);
+        walk(c, &l, entry->ret, entry->ret_semantic, "hfx_ret", entry->src->loc, &ret, 0);
     *out = l.items;
     return l.bad ? -1 : (int)l.count;
 }

@@ -60,7 +60,7 @@ static void yyerror(YYLTYPE *loc, parse_ctx *ctx, const char *msg);
 %left '+' '-'
 %left '*' '/' '%'
 
-%type <expr> primary postfix unary binary cond assign expr
+%type <expr> postfix unary binary assign expr
 %type <expr> expr_opt initializer state_value strings
 %type <vec> args args_opt init_items declarators fields params params_opt annotations anno_list
 %type <vec> states passes stmt_list attrs dims
@@ -356,7 +356,9 @@ strings
     | strings STRING                         { $$ = pb_string_join(ctx, $1, $2.text); }
     ;
 
-primary
+/* The primary expressions are alternatives of postfix itself: one unit reduction less for
+ * every operand. */
+postfix
     : IDENT                                  { $$ = pb_ident(ctx, $1.text, @1); }
     | INTCONST                               { $$ = pb_int(ctx, $1.text, @1); }
     | FLOATCONST                             { $$ = pb_float(ctx, $1.text, @1); }
@@ -371,10 +373,6 @@ primary
     | SAMPLER_STATE '{' states '}'           { $$ = pb_sampler_state(ctx, $3, @1); }
     | SAMPLER_STATE '{' states error '}'     { $$ = pb_sampler_state(ctx, $3, @1); }
     | NULL_KW                                { $$ = pb_expr(ctx, EX_NULL, @1); }
-    ;
-
-postfix
-    : primary
     | postfix '[' expr ']'                   { $$ = pb_index(ctx, $1, $3, @2); }
     | postfix '.' IDENT                      { $$ = pb_member(ctx, $1, $3.text, @2); }
     | postfix '.' IDENT '(' args_opt ')'     { $$ = pb_method(ctx, $1, $3.text, $5, @3); }
@@ -418,13 +416,10 @@ binary
     | binary OROR binary                     { $$ = pb_binary(ctx, OP_OR, $1, $3, @2); }
     ;
 
-cond
+/* The conditional operator is one of assign's alternatives (no unit rule between them). */
+assign
     : binary
     | binary '?' expr ':' assign             { $$ = pb_ternary(ctx, $1, $3, $5, @2); }
-    ;
-
-assign
-    : cond
     | unary '=' assign                       { $$ = pb_assign(ctx, OP_NONE, $1, $3, @2); }
     | unary ASSIGN_OP assign                 { $$ = pb_assign(ctx, $2.op, $1, $3, @2); }
     ;

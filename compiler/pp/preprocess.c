@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "pp/pp_internal.h"
+#include "pp/token_cache.h"
 
 /* ---- diagnostics and small helpers ---- */
 
@@ -281,7 +282,7 @@ static hfx_token *do_include(hfx_pp *pp, hfx_token *hash, hfx_token *name) {
     pp_file_info *fi = pp_file(pp, f);
     fi->dir = pp_dirname(pp->arena, path);
     fi->real = real;
-    hfx_token *toks = hfx_tokenize_deferred(pp->arena, pp->diags, f);
+    hfx_token *toks = hfx_token_cache_tokenize(pp->opt ? pp->opt->cache : NULL, pp->arena, pp->diags, f, real);
     hfx_token *eof = toks;
     while (eof->kind != TK_EOF) eof = eof->next;
     eof->next = rest;

@@ -67,6 +67,7 @@ typedef struct hfx_pp_options {
     const char *const *defines; uint32_t define_count;        /* "NAME" or "NAME=VALUE" */
     const char *const *include_dirs; uint32_t include_dir_count;
     uint32_t max_include_depth;                               /* 0 = default (64) */
+    struct hfx_token_cache *cache;  /* NULL, or the session's tokens of files read before (token_cache.h) */
 } hfx_pp_options;
 
 /* What the preprocessor hands the parser, beyond plain tokens:

@@ -11,6 +11,10 @@ extern "C" {
 #endif
 
 typedef struct hfxc_result hfxc_result;
+/* What compiles may share: the headers already cut into tokens (a header is read again every
+ * time, and cut again when its text changed). Optional; one session serves one thread at a
+ * time; free it after the compiles (their results do not depend on it). */
+typedef struct hfxc_session hfxc_session;
 struct hfx_fx_effect; /* common/effect.h: the compiled effect as plain data */
 
 typedef enum { HFXC_ERROR, HFXC_WARNING, HFXC_NOTE } hfxc_severity;
@@ -49,7 +53,11 @@ typedef struct hfxc_options {
     unsigned flags;
     const char *entry;               /* with a shader profile: compile one entry point, like fxc /E */
     const char *profile;             /* "fx_2_0" (default), or "vs_3_0", "ps_2_0"... for /T */
+    hfxc_session *session;           /* NULL, or shared by compiles one after another */
 } hfxc_options;
+
+hfxc_session *hfxc_session_new(void);                                           /* NULL when out of memory */
+void hfxc_session_free(hfxc_session *s);
 
 hfxc_result *hfxc_compile_file(const char *path, const hfxc_options *opt);      /* opt may be NULL */
 hfxc_result *hfxc_compile_memory(const char *src, size_t size, const char *name, const hfxc_options *opt);

@@ -81,6 +81,7 @@ static void flatten_decls(ir_ctx *c, ir_stmt *s) {
 }
 
 void ir_pass_arrays(ir_ctx *c, ir_shader *sh) {
+    if (!hfx_types_nested_arrays(c->types)) return; /* no such type, nothing to flatten or report */
     int bad = 0;
     for (uint32_t i = 0; i < sh->global_count; i++) {
         ir_var *v = sh->globals[i];

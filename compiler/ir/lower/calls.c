@@ -21,6 +21,8 @@ typedef struct specialiser {
     copy copies[MAX_COPIES];
     uint32_t copy_count;
     writes *writes; uint32_t write_count, write_cap;
+    const ir_func **call_free; uint32_t call_free_count, call_free_cap; /* walked, no call seen */
+    uint32_t calls_seen;        /* in the function being walked */
     bool changed;
 } specialiser;
 
@@ -29,32 +31,40 @@ typedef struct specialiser {
 /* An `in` numeric parameter: what a constant argument may replace. */
 static bool bindable_param(const ir_var *p) { return !(p->mods & MOD_OUT) && hfx_type_is_numeric(p->type); }
 
+/* What one walk over a function finds: which of its parameters (the first 64) it writes. */
+typedef struct param_writes { const ir_func *fn; uint64_t mask; } param_writes;
+
+/* Sets the bit of the parameter that the l-value e writes into, if it is one. */
+static void mark_written(param_writes *w, const ir_expr *e) {
+    const ir_var *v = ir_lvalue_root(e);
+    if (!v) return;
+    for (uint32_t i = 0; i < w->fn->param_count && i < 64; i++)
+        if (w->fn->params[i] == v) w->mask |= (uint64_t)1 << i;
+}
+
 static void note_write(ir_ctx *c, ir_expr **slot, void *data) {
     (void)c;
     const ir_expr *e = *slot;
-    const ir_var **v = data;
+    param_writes *w = data;
     bool writes = e->kind == IE_ASSIGN || (e->kind == IE_UNARY && e->op >= OP_PREINC && e->op <= OP_POSTDEC);
-    if (writes && ir_lvalue_root(e->a[0]) == *v) *v = NULL;
+    if (writes) mark_written(w, e->a[0]);
     if (e->kind == IE_CALL) /* passed on as an out argument */
         for (uint32_t i = 0; i < e->n && i < e->fn->param_count; i++)
-            if ((e->fn->params[i]->mods & MOD_OUT) && ir_lvalue_root(e->a[i]) == *v) *v = NULL;
-    if (e->kind == IE_INTRIN) /* sincos, modf, frexp write their later arguments */
-        for (uint32_t i = 1; i < e->n; i++)
-            if (ir_has_side_effects(e) && ir_lvalue_root(e->a[i]) == *v) *v = NULL;
+            if (e->fn->params[i]->mods & MOD_OUT) mark_written(w, e->a[i]);
+    if (e->kind == IE_INTRIN && ir_has_side_effects(e)) /* sincos, modf, frexp write their later arguments */
+        for (uint32_t i = 1; i < e->n; i++) mark_written(w, e->a[i]);
 }
 
-static bool written(ir_ctx *c, const ir_func *f, const ir_var *p) {
-    const ir_var *v = p;
-    ir_walk_stmt_exprs(c, f->body, note_write, &v);
-    return v == NULL;
-}
-
+/* One walk for all the parameters, none when no parameter could be bound anyway. */
 static uint64_t written_mask(ir_ctx *c, specialiser *sp, const ir_func *f) {
     for (uint32_t i = 0; i < sp->write_count; i++)
         if (sp->writes[i].fn == f) return sp->writes[i].mask;
-    uint64_t mask = 0;
+    uint64_t bindable = 0;
     for (uint32_t i = 0; i < f->param_count && i < 64; i++)
-        if (bindable_param(f->params[i]) && written(c, f, f->params[i])) mask |= (uint64_t)1 << i;
+        if (bindable_param(f->params[i])) bindable |= (uint64_t)1 << i;
+    param_writes w = {f, 0};
+    if (bindable) ir_walk_stmt_exprs(c, f->body, note_write, &w);
+    uint64_t mask = w.mask & bindable;
     if (HFX_ARENA_GROW(c->arena, sp->writes, sp->write_count, sp->write_cap, 16))
         sp->writes[sp->write_count++] = (writes){f, mask};
     return mask;
@@ -186,7 +196,9 @@ static ir_func *copy_for(ir_ctx *c, specialiser *sp, ir_func *f, const ir_expr *
 static void specialise_call(ir_ctx *c, ir_expr **slot, void *data) {
     specialiser *sp = data;
     ir_expr *e = *slot;
-    if (e->kind != IE_CALL || e->n != e->fn->param_count || e->n > 64) return;
+    if (e->kind != IE_CALL) return;
+    sp->calls_seen++;
+    if (e->n != e->fn->param_count || e->n > 64) return;
     bool bind[64], any = false;
     for (uint32_t i = 0; i < e->n; i++) any |= bind[i] = bindable(c, sp, e->fn, e, i);
     if (!any) return;
@@ -200,7 +212,14 @@ static void specialise_call(ir_ctx *c, ir_expr **slot, void *data) {
     sp->changed = true;
 }
 
-/* One round over every function, callees first; true when some call changed. */
+static bool known_call_free(const specialiser *sp, const ir_func *f) {
+    for (uint32_t i = 0; i < sp->call_free_count; i++)
+        if (sp->call_free[i] == f) return true;
+    return false;
+}
+
+/* One round over every function, callees first; true when some call changed. A function seen
+ * without calls is not walked again: nothing here or in fold makes a call. */
 static bool round_of(ir_ctx *c, specialiser *sp) {
     ir_shader *sh = sp->sh;
     uint32_t n = sh->func_count;
@@ -208,7 +227,13 @@ static bool round_of(ir_ctx *c, specialiser *sp) {
     if (!funcs) return false;
     memcpy(funcs, sh->funcs, sizeof *funcs * n);
     sp->changed = false;
-    for (uint32_t i = 0; i < n; i++) ir_walk_stmt_exprs(c, funcs[i]->body, specialise_call, sp);
+    for (uint32_t i = 0; i < n; i++) {
+        if (known_call_free(sp, funcs[i])) continue;
+        sp->calls_seen = 0;
+        ir_walk_stmt_exprs(c, funcs[i]->body, specialise_call, sp);
+        if (!sp->calls_seen && HFX_ARENA_GROW(c->arena, sp->call_free, sp->call_free_count, sp->call_free_cap, 8))
+            sp->call_free[sp->call_free_count++] = funcs[i];
+    }
     return sp->changed;
 }
 

@@ -134,17 +134,34 @@ static void propagate(ir_ctx *c, ir_expr **slot, void *data) {
     else fold_one(c, slot, data);
 }
 
+/* Whether a local declared in s has a value to propagate (konst is set here and nowhere else,
+ * and a function's locals are declared in it). */
+static bool has_const_local(const ir_stmt *s) {
+    if (!s) return false;
+    if (s->kind == IS_DECL && s->var->konst) return true;
+    if (has_const_local(s->init) || has_const_local(s->then_s) || has_const_local(s->else_s)) return true;
+    for (uint32_t i = 0; i < s->count; i++)
+        if (has_const_local(s->body[i])) return true;
+    return false;
+}
+
 void ir_pass_fold(ir_ctx *c, ir_shader *sh) {
+    bool const_globals = false;
     for (uint32_t i = 0; i < sh->global_count; i++) {
         ir_var *g = sh->globals[i];
         ir_walk_expr(c, &g->init, fold_one, NULL);
         if (ir_is_const(g->init) && is_const_var(g)) g->konst = g->init;
+        const_globals |= g->konst != NULL;
     }
     for (uint32_t i = 0; i < sh->func_count; i++) {
         ir_walk_stmt_exprs(c, sh->funcs[i]->body, fold_one, NULL);
         find_const_locals(sh->funcs[i]->body);
     }
     /* constants flow into their uses (so `static const bool on = false; if (on)` dies), and
-     * what they make constant folds in the same walk */
-    for (uint32_t i = 0; i < sh->func_count; i++) ir_walk_stmt_exprs(c, sh->funcs[i]->body, propagate, NULL);
+     * what they make constant folds in the same walk. Without a constant to propagate the walk
+     * would only fold again what the first one left: nothing (the first walk went operands
+     * first, so each node it kept had its final operands when it was tried). */
+    for (uint32_t i = 0; i < sh->func_count; i++)
+        if (const_globals || has_const_local(sh->funcs[i]->body))
+            ir_walk_stmt_exprs(c, sh->funcs[i]->body, propagate, NULL);
 }

@@ -5,11 +5,16 @@
 #include "ir/ir.h"
 
 
-static void mark_written(ir_ctx *c, ir_shader *sh, const ir_expr *lv) {
+/* What find_writes found: whether some uniform is written (and so has a private copy). */
+typedef struct writes { bool copies; } writes;
+
+static void mark_written(ir_ctx *c, writes *w, const ir_expr *lv) {
     ir_var *v = ir_lvalue_root(lv);
     if (!v) return;
     v->written = true;
-    if (v->kind != IRV_UNIFORM || v->priv) return;
+    if (v->kind != IRV_UNIFORM) return;
+    w->copies = true;
+    if (v->priv) return;
     ir_var *p = HFX_NEW(c->arena, ir_var);
     *p = *v;
     p->kind = IRV_PRIVATE;
@@ -20,15 +25,15 @@ static void mark_written(ir_ctx *c, ir_shader *sh, const ir_expr *lv) {
 }
 
 static void find_writes(ir_ctx *c, ir_expr **slot, void *data) {
-    ir_shader *sh = data;
+    writes *w = data;
     ir_expr *e = *slot;
     for (uint32_t i = 0; i < e->n; i++) {
         if (!ir_writes_operand(e, i)) continue;
         const ir_expr *t = e->a[i];
         if (e->kind == IE_ASSIGN && t->kind == IE_CONSTRUCT) /* float4(a, b) = v: each argument */
-            for (uint32_t k = 0; k < t->n; k++) mark_written(c, sh, t->a[k]);
+            for (uint32_t k = 0; k < t->n; k++) mark_written(c, w, t->a[k]);
         else
-            mark_written(c, sh, t);
+            mark_written(c, w, t);
     }
 }
 
@@ -37,8 +42,11 @@ static void use_copies(ir_ctx *c, ir_expr **slot, void *data) {
     if (e->kind == IE_VAR && e->var->kind == IRV_UNIFORM && e->var->priv) e->var = e->var->priv;
 }
 
+/* The second walk only when some uniform is written: priv is set here and nowhere else. */
 void ir_pass_globals(ir_ctx *c, ir_shader *sh) {
-    for (uint32_t i = 0; i < sh->func_count; i++) ir_walk_stmt_exprs(c, sh->funcs[i]->body, find_writes, sh);
+    writes w = {false};
+    for (uint32_t i = 0; i < sh->func_count; i++) ir_walk_stmt_exprs(c, sh->funcs[i]->body, find_writes, &w);
+    if (!w.copies) return;
     for (uint32_t i = 0; i < sh->func_count; i++) ir_walk_stmt_exprs(c, sh->funcs[i]->body, use_copies, NULL);
     for (uint32_t i = 0; i < sh->global_count; i++) ir_walk_expr(c, &sh->globals[i]->init, use_copies, NULL);
 }

@@ -147,10 +147,31 @@ static void lower_bool_matrix(ir_ctx *c, ir_expr **slot, void *data) {
     *slot = m;
 }
 
+/* ---- which rewrites a function needs ---- */
+
+/* One read-only walk says which of the three rewrites may apply, each by a test that every
+ * node it rewrites passes; the rewrites make no node that would pass another's test (they
+ * build vectors, and matrices only of a type already there), so a walk found needless in the
+ * function as it stands stays needless after the others. Most functions then take one walk. */
+typedef struct needs { bool mul, componentwise, bool_matrix; } needs;
+
+static void find_needs(ir_ctx *c, ir_expr **slot, void *data) {
+    (void)c;
+    const ir_expr *e = *slot;
+    needs *n = data;
+    if (!e->type) return;
+    if (e->kind == IE_INTRIN && e->intrin == HFX_INTR_MUL && e->n == 2 && e->type->kind == TY_VECTOR)
+        n->mul |= truncated_matrix(e->a[0]) || truncated_matrix(e->a[1]);
+    if (e->kind == IE_INTRIN && e->type->kind == TY_MATRIX) n->componentwise = true;
+    if (is_bool_matrix(e)) n->bool_matrix = true;
+}
+
 void ir_pass_intrinsics(ir_ctx *c, ir_shader *sh) {
     for (uint32_t i = 0; i < sh->func_count; i++) {
-        ir_walk_stmt_exprs(c, sh->funcs[i]->body, lower_mul, NULL);
-        ir_walk_stmt_exprs(c, sh->funcs[i]->body, lower_matrix_componentwise, NULL);
-        ir_walk_stmt_exprs(c, sh->funcs[i]->body, lower_bool_matrix, NULL);
+        needs n = {false, false, false};
+        ir_walk_stmt_exprs(c, sh->funcs[i]->body, find_needs, &n);
+        if (n.mul) ir_walk_stmt_exprs(c, sh->funcs[i]->body, lower_mul, NULL);
+        if (n.componentwise) ir_walk_stmt_exprs(c, sh->funcs[i]->body, lower_matrix_componentwise, NULL);
+        if (n.bool_matrix) ir_walk_stmt_exprs(c, sh->funcs[i]->body, lower_bool_matrix, NULL);
     }
 }

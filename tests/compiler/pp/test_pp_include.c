@@ -92,7 +92,7 @@ static void search_order(void) {
     char inc[1024];
     snprintf(inc, sizeof inc, "%s", path_of("inc"));
     const char *dirs[] = {inc};
-    hfx_pp_options opt = {NULL, 0, dirs, 1, 0};
+    hfx_pp_options opt = {NULL, 0, dirs, 1, 0, NULL};
     pp_run r;
     pp_file(&r, "order.fx", &opt);
     CHECK_STR(r.out, "a1 b_in_sub common_in_root a2 lib b_in_root end");
@@ -159,7 +159,7 @@ static void include_depth_limit(void) {
     put("d2.fxh", "#include \"d3.fxh\"\nd2\n");
     put("d3.fxh", "d3\n");
     put("deep.fx", "#include \"d1.fxh\"\n");
-    hfx_pp_options opt = {NULL, 0, NULL, 0, 3};
+    hfx_pp_options opt = {NULL, 0, NULL, 0, 3, NULL};
     pp_run r;
     pp_file(&r, "deep.fx", &opt);
     CHECK_STR(r.diag, "d2.fxh(1,1): error X1506: #include nested too deeply (more than 3 files)\n");

@@ -430,7 +430,7 @@ static void bad_directives(void) {
 
 static void command_line_defines(void) {
     const char *defs[] = {"A", "B=2", "F(x)=x*B", "EMPTY="};
-    hfx_pp_options opt = {defs, 4, NULL, 0, 0};
+    hfx_pp_options opt = {defs, 4, NULL, 0, 0, NULL};
     pp_run r;
     pp_opts(&r, "A B F(3) [EMPTY]\n#if A + B == 3\nyes\n#endif", &opt);
     CHECK_STR(r.out, "1 2 3 * 2 [ ] yes");
