@@ -27,7 +27,7 @@ for fx in "${effects[@]}"; do
 done
 printf '%-24s %-16s %-7s %14s %14s %14s %7s %7s\n' effect technique case hfx hfx-nopre hand ratio nopre
 # Each dump: "desc: Trigger: Client Request: effect|technique|case|side", then "summary: N".
-awk '/^desc: Trigger: Client Request:/ { split($0, a, ": "); label = a[3] }
+awk '/^desc: Trigger: Client Request: / { label = $0; sub(/^desc: Trigger: Client Request: /, "", label) }
      /^summary:/ && label != "" { split(label, k, "|"); key = k[1] "|" k[2] "|" k[3];
         if (!(key in seen)) { seen[key] = 1; order[n++] = key }
         v[key "|" k[4]] = $2; label = "" }
