@@ -17,7 +17,7 @@ effects=("$@")
 [ ${#effects[@]} -gt 0 ] || effects=(ambient.fx ambient_textured.fx directional.fx directional_specular.fx point.fx
     point_specular.fx spot.fx spot_specular.fx tutorial0.fx fxcomposer_empty.fx phong.fx pointlights.fx)
 for fx in "${effects[@]}"; do
-    LP_NUM_THREADS=0 valgrind --tool=callgrind --separate-threads=yes --callgrind-out-file="$out/$fx.cg" \
+    LP_NUM_THREADS=0 valgrind --tool=callgrind --separate-threads=yes --instr-atstart=no --callgrind-out-file="$out/$fx.cg" \
         "$build/bench/bench_gpu" 1 "$fx" >/dev/null 2>&1
 done
 # The main thread's dumps, effect by effect in the order given, each in the order it was written.
