@@ -196,13 +196,13 @@ static pixel_read pixel_read_of(const ir_shader *ps, uint32_t param) {
 }
 
 /* HFXC_PACK_UNIFORMS: the next registers for the parameters read as `how`, in the order of the
- * uniform table, until one does not fit. */
-static void assign_registers(const hfx_fx_effect *fx, const ir_shader *ps, pixel_read how, hfx_fx_program *p) {
-    bool full = p->reg_count >= MAX_PACKED_REGS;
+ * uniform table; once one does not fit (*full), no later one is packed. */
+static void assign_registers(const hfx_fx_effect *fx, const ir_shader *ps, pixel_read how, hfx_fx_program *p,
+                             bool *full) {
     for (uint32_t k = 0; k < p->uniform_count; k++) {
         uint32_t n = hfx_fx_param_packable(fx, p->uniforms[k].param);
-        if (full || !n || pixel_read_of(ps, p->uniforms[k].param) != how) continue;
-        if (p->reg_count + n > MAX_PACKED_REGS) { full = true; continue; }
+        if (*full || !n || pixel_read_of(ps, p->uniforms[k].param) != how) continue;
+        if (p->reg_count + n > MAX_PACKED_REGS) { *full = true; continue; }
         p->uniforms[k].reg = p->reg_count;
         p->reg_count += n;
     }
@@ -240,19 +240,20 @@ static int alloc_preshaders(hfx_codegen *cg, ir_shader *const sh[2], hfx_fx_prog
 }
 
 /* The register file, pixel stage first: what it reads as is, its preshaders, the parameters it
- * copies before writing them, then the vertex stage's. A fragment shader runs for every pixel,
- * and llvmpipe (Mesa 22.3) compiles it measurably worse when it does not read hfx_c[0]: the
- * directional seed's pixel shader took 12 M instructions more per 2048 x 2048 frame (5 %) with
- * its registers at 5, 6 and 11 than at 0, 1 and 11 (bench/gpu_instructions.sh). The preshaders
- * still come after every parameter the stage reads (the preshade pass keeps each stage's within
- * half of MAX_PACKED_REGS, so they fit). */
+ * copies before writing them, then the vertex stage's parameters and preshaders. A fragment
+ * shader runs for every pixel, and llvmpipe (Mesa 22.3) compiles it measurably worse when it
+ * does not read hfx_c[0]: the directional seed's pixel shader took 12 M instructions more per
+ * 2048 x 2048 frame (5 %) with its registers at 5, 6 and 11 than at 0, 1 and 11
+ * (bench/gpu_instructions.sh). Preshaders are never left out: the preshade pass keeps each
+ * stage's parameters and preshaders within half of MAX_PACKED_REGS, so they fit. */
 static int assign_register_file(hfx_codegen *cg, ir_shader *const sh[2], hfx_fx_program *out, glsl_iface *io) {
     pre_file f = {0};
+    bool full = !cg->pack; /* without packing no parameter takes a register */
     if (alloc_preshaders(cg, sh, out, &f) != 0) return -1;
-    if (cg->pack) assign_registers(cg->c.fx, sh[1], READ_BY_PIXELS, out);
+    assign_registers(cg->c.fx, sh[1], READ_BY_PIXELS, out, &full);
     assign_preshaders(sh[1], out, &f);
-    if (cg->pack) assign_registers(cg->c.fx, sh[1], COPIED_BY_PIXELS, out);
-    if (cg->pack) assign_registers(cg->c.fx, sh[1], VERTEX_ONLY, out);
+    assign_registers(cg->c.fx, sh[1], COPIED_BY_PIXELS, out, &full);
+    assign_registers(cg->c.fx, sh[1], VERTEX_ONLY, out, &full);
     assign_preshaders(sh[0], out, &f);
     io->pre_vars = f.vars;
     io->pre_regs = f.regs;
