@@ -32,6 +32,6 @@ awk '/^desc: Trigger: Client Request: / { label = $0; sub(/^desc: Trigger: Clien
         if (!(key in seen)) { seen[key] = 1; order[n++] = key }
         v[key "|" k[4]] = $2; label = "" }
      END { for (i = 0; i < n; i++) { split(order[i], k, "|"); key = order[i];
-        printf "%-24s %-16s %-7s %14d %14d %14d %6.3fx %6.3fx\n", k[1], k[2], k[3], v[key "|hfx"],
+        printf "%-24s %-16s %-7s %14.0f %14.0f %14.0f %6.3fx %6.3fx\n", k[1], k[2], k[3], v[key "|hfx"],
                v[key "|nopre"], v[key "|hand"], v[key "|hfx"] / v[key "|hand"], v[key "|nopre"] / v[key "|hand"] } }' \
     "${dumps[@]}"
