@@ -10,7 +10,7 @@
  * directional, point and spot, with and without specular, both techniques; specular and
  * distance attenuation on), tutorial0, fxcomposer_empty, phong and pointlights (eight lights).
  * Not yet: multilights_repaired (two passes blended by the application). Run by hand:
- * bench_gpu [rounds [effect.fx]]; bench/gpu_instructions.sh runs it under callgrind for exact
+ * bench_gpu [rounds [effect.fx [technique [pixel|vertex]]]]; bench/gpu_instructions.sh runs it under callgrind for exact
  * instruction counts per frame (a shared machine's frame times vary by 10%). */
 #include <math.h>
 #include <stdio.h>
@@ -27,6 +27,8 @@
 #define RUNNING_ON_VALGRIND 0
 #define CALLGRIND_ZERO_STATS
 #define CALLGRIND_DUMP_STATS_AT(label) (void)(label)
+#define CALLGRIND_START_INSTRUMENTATION
+#define CALLGRIND_STOP_INSTRUMENTATION
 #endif
 
 #include "bench.h"
@@ -38,6 +40,7 @@
 enum { BIG = 2048, SMALL = 256, GRID = 1001 };
 
 static test_gl *gl;
+static const char *only_shape; /* "pixel" or "vertex" to run that case alone */
 static test_gl_fns f;
 static PFNGLDRAWELEMENTSPROC draw_elements;
 
@@ -287,11 +290,24 @@ static GLuint compile(GLenum type, const char *const *parts, int n) {
     return s;
 }
 
+/* BENCH_GPU_HAND_FS=file replaces the hand-written fragment shader (a whole shader, #version
+ * included, over the hand-written uniforms and varyings): to try variants of what hfx emits
+ * against the same vertex shader and GL state, one difference at a time. */
+static char *hand_fs_override(void) {
+    const char *path = getenv("BENCH_GPU_HAND_FS");
+    char *text = path ? test_read_file(path, NULL) : NULL;
+    if (path && !text) fprintf(stderr, "cannot read %s\n", path);
+    return text;
+}
+
 static GLuint hand_program(const char *vs, const char *fs, const char *defines) {
-    const char *vparts[] = {vs}, *whole[] = {fs}, *fparts[] = {"#version 330 core\n", defines, fs};
+    char *override = hand_fs_override();
+    const char *vparts[] = {vs}, *whole[] = {override ? override : fs}, *fparts[] = {"#version 330 core\n", defines, fs};
     GLuint v = compile(GL_VERTEX_SHADER, vparts, 1), p = f.CreateProgram();
     /* hand_ambient_fs carries its own #version line */
-    GLuint s = fs == hand_ambient_fs ? compile(GL_FRAGMENT_SHADER, whole, 1) : compile(GL_FRAGMENT_SHADER, fparts, 3);
+    GLuint s = fs == hand_ambient_fs || override ? compile(GL_FRAGMENT_SHADER, whole, 1)
+                                                 : compile(GL_FRAGMENT_SHADER, fparts, 3);
+    free(override);
     f.AttachShader(p, v);
     f.AttachShader(p, s);
     f.LinkProgram(p);
@@ -563,9 +579,11 @@ static void count_instructions(hfx_device *dev, side *const *sides, int n, const
         char dump[256];
         snprintf(dump, sizeof dump, "%s|%s", label, names[k]);
         frame_time(dev, sides[k], m, 2); /* twice: one-time work (variants, caches, threads) out of the count */
+        CALLGRIND_START_INSTRUMENTATION; /* gpu_instructions.sh starts callgrind with it off: 5x faster */
         CALLGRIND_ZERO_STATS;
         frame_time(dev, sides[k], m, 1);
         CALLGRIND_DUMP_STATS_AT(dump);
+        CALLGRIND_STOP_INSTRUMENTATION;
     }
 }
 
@@ -581,6 +599,7 @@ static void run_case(hfx_device *dev, const bench_case *c, const mesh *quad, con
     side r = {NULL, NULL, hand_program(ambient ? hand_ambient_vs : hand_vs, c->fs, c->fs_defines), 0};
     const struct { const char *name; const mesh *m; int size; } shapes[2] = {{"pixel", quad, BIG}, {"vertex", grid, SMALL}};
     for (int k = 0; k < 2; k++) {
+        if (only_shape && strcmp(only_shape, shapes[k].name) != 0) continue;
         const mesh *m = shapes[k].m;
         h.vao = effect_vao(&h, m);
         h0.vao = effect_vao(&h0, m);
@@ -612,6 +631,8 @@ static void run_case(hfx_device *dev, const bench_case *c, const mesh *quad, con
 int main(int argc, char **argv) {
     int rounds = argc > 1 ? atoi(argv[1]) : 5;
     const char *only = argc > 2 ? argv[2] : NULL; /* an effect file name to run alone */
+    const char *only_technique = argc > 3 ? argv[3] : NULL;
+    only_shape = argc > 4 ? argv[4] : NULL;
     if (!test_seed_dir()) { fprintf(stderr, "the seed effects (../shared/seed-fx) are absent\n"); return 1; }
     gl = test_gl_create(BIG, BIG);
     if (!gl) { fprintf(stderr, "no OSMesa context\n"); return 1; }
@@ -626,7 +647,8 @@ int main(int argc, char **argv) {
     printf("%-18s %-15s %-6s %9s %9s %9s %8s %8s %9s\n", "effect", "technique", "case", "hfx", "hfx-nopre", "hand", "ratio",
            "nopre", "diff");
     for (int i = 0; i < CASES; i++)
-        if (!only || strcmp(only, cases[i].file) == 0) run_case(dev, &cases[i], &quad, &grid, textures, rounds);
+        if ((!only || strcmp(only, cases[i].file) == 0) && (!only_technique || strcmp(only_technique, cases[i].technique) == 0))
+            run_case(dev, &cases[i], &quad, &grid, textures, rounds);
     hfx_device_destroy(dev);
     test_gl_destroy(gl);
     return 0;

@@ -104,12 +104,14 @@ static void registers_by_hand(void) {
     CHECK(fx && fx->program_count == 1);
     if (fx && fx->program_count == 1) {
         const hfx_fx_program *p = &fx->programs[0];
-        /* In parameter order: float, float2, float3, float4 one each; float4x4 four rows;
-         * float3x4 three rows; float4x3 four rows. */
+        /* The pixel stage's first, in parameter order: Scale and LightDir (Twice's initialiser)
+         * as they are, then Tint (copied: the shader writes it); then the vertex stage's. A
+         * float, float2, float3, float4 take one each; float4x4 four rows; float3x4 three rows;
+         * float4x3 four rows. */
         CHECK_INT(reg_of(fx, p, "Scale"), 0);
-        CHECK_INT(reg_of(fx, p, "Offset"), 1);
-        CHECK_INT(reg_of(fx, p, "LightDir"), 2);
-        CHECK_INT(reg_of(fx, p, "Tint"), 3);
+        CHECK_INT(reg_of(fx, p, "LightDir"), 1);
+        CHECK_INT(reg_of(fx, p, "Tint"), 2);
+        CHECK_INT(reg_of(fx, p, "Offset"), 3);
         CHECK_INT(reg_of(fx, p, "World"), 4);
         CHECK_INT(reg_of(fx, p, "Bones"), 8);
         CHECK_INT(reg_of(fx, p, "Shape"), 11);
@@ -125,13 +127,13 @@ static void registers_by_hand(void) {
             CHECK_CONTAINS(vs, "    Bones = mat3x4(hfx_c[8], hfx_c[9], hfx_c[10]);\n");
             CHECK_CONTAINS(vs, "    Shape = mat4x3(hfx_c[11].xyz, hfx_c[12].xyz, hfx_c[13].xyz, hfx_c[14].xyz);\n");
             CHECK_CONTAINS(vs, "    World = mat4(hfx_c[4], hfx_c[5], hfx_c[6], hfx_c[7]);\n");
-            CHECK_CONTAINS(vs, "    Offset = hfx_c[1].xy;\n");
+            CHECK_CONTAINS(vs, "    Offset = hfx_c[3].xy;\n");
             CHECK_CONTAINS(vs, "uniform int Count;\n");
             CHECK_CONTAINS(vs, "uniform vec4 Palette[2];\n");
             CHECK_CONTAINS(vs, "uniform Light Sun;\n");
             CHECK_CONTAINS(fs, "uniform bool Enabled;\n");
             /* packed values first: the static and the written copy are made from them */
-            CHECK_CONTAINS(fs, "{\n    Tint = hfx_c[3];\n    LightDir = hfx_c[2].xyz;\n    Scale = hfx_c[0].x;\n"
+            CHECK_CONTAINS(fs, "{\n    Tint = hfx_c[2];\n    LightDir = hfx_c[1].xyz;\n    Scale = hfx_c[0].x;\n"
                                "    hfx_priv_Tint = Tint;\n    hfx_static_Twice = LightDir * vec3(2.0);\n");
             CHECK(vs && !strstr(vs, "uniform float Scale"));
             CHECK(fs && !strstr(fs, "uniform vec4 Tint"));

@@ -137,20 +137,21 @@ static const char *glsl_of(const hfx_fx_program *p, int stage) { return p->code[
 
 /* spot_specular.fx: the vertex shader's mul(world, mul(view, projection)) and the pixel
  * shader's normalize(posicionLuz - blancoLuz), cos(anguloInterno) and cos(anguloExterno). The
- * program's parameters take registers 0..15 (world 4, then twelve scalars and vectors), so the
- * preshaders follow from 16: the matrix 16..19, then the pixel stage's 20, 21, 22. */
+ * pixel stage goes first: its twelve scalars and vectors take registers 0..11, its preshaders
+ * 12, 13, 14; then the vertex stage's world 15..18 and its matrix 19..22. */
 static void the_glsl_says_what_a_register_holds(void) {
     char *path = test_seed_path("spot_specular.fx");
     hfxc_result *r;
     const hfx_fx_program *p = first_program(&r, path, NULL, NULL);
     if (p) {
         const char *vs = glsl_of(p, HFX_STAGE_VERTEX), *ps = glsl_of(p, HFX_STAGE_FRAGMENT);
-        CHECK_CONTAINS(vs, "mat4 hfx_pre0; // hfx_c[16..19] = mul(world, mul(view, projection)), computed on the CPU (a preshader)\n");
-        CHECK_CONTAINS(vs, "    hfx_pre0 = mat4(hfx_c[16], hfx_c[17], hfx_c[18], hfx_c[19]);\n");
+        CHECK_CONTAINS(vs, "mat4 hfx_pre0; // hfx_c[19..22] = mul(world, mul(view, projection)), computed on the CPU (a preshader)\n");
+        CHECK_CONTAINS(vs, "    hfx_pre0 = mat4(hfx_c[19], hfx_c[20], hfx_c[21], hfx_c[22]);\n");
         CHECK_CONTAINS(vs, "    salida.Posicion = hfx_pre0 * entrada.Posicion;\n"); /* mvp, read once, moved forward */
-        CHECK_CONTAINS(ps, "vec3 hfx_pre0; // hfx_c[20] = normalize(posicionLuz - blancoLuz), computed on the CPU (a preshader)\n");
-        CHECK_CONTAINS(ps, "float hfx_pre1; // hfx_c[21] = cos(anguloInterno), computed on the CPU (a preshader)\n");
-        CHECK_CONTAINS(ps, "float hfx_pre2; // hfx_c[22] = cos(anguloExterno), computed on the CPU (a preshader)\n");
+        CHECK_CONTAINS(ps, "vec3 hfx_pre0; // hfx_c[12] = normalize(posicionLuz - blancoLuz), computed on the CPU (a preshader)\n");
+        CHECK_CONTAINS(ps, "float hfx_pre1; // hfx_c[13] = cos(anguloInterno), computed on the CPU (a preshader)\n");
+        CHECK_CONTAINS(ps, "float hfx_pre2; // hfx_c[14] = cos(anguloExterno), computed on the CPU (a preshader)\n");
+        CHECK_CONTAINS(vs, "mat4 world; // hfx_c[15..18]\n");
         CHECK_INT(p->reg_count, 23);
         CHECK_INT(p->preshader_count, 4);
     }
@@ -175,7 +176,8 @@ static void a_parameter_normalised_in_place(void) {
     const hfx_fx_program *p = first_program(&r, NULL, src, "in_place.fx");
     if (p) {
         const char *ps = glsl_of(p, HFX_STAGE_FRAGMENT);
-        CHECK_CONTAINS(ps, "vec3 hfx_pre0; // hfx_c[2] = normalize(L), computed on the CPU (a preshader)\n");
+        /* L and K are copied (the shader writes them), so the preshader is the first register */
+        CHECK_CONTAINS(ps, "vec3 hfx_pre0; // hfx_c[0] = normalize(L), computed on the CPU (a preshader)\n");
         CHECK_CONTAINS(ps, "    hfx_priv_L = hfx_pre0;\n");
         CHECK_CONTAINS(ps, "    hfx_priv_K = normalize(hfx_priv_K + n);\n");
         CHECK_INT(p->preshader_count, 1);
@@ -215,11 +217,59 @@ static void transforms_in_turn_regroup(void) {
     hfxc_result_free(r);
 }
 
+/* The register file, pixel stage first: the parameters it reads as they are (in parameter
+ * order), its preshaders, the parameters it copies, then the vertex stage's parameters and
+ * preshaders. Gain, read by both stages, counts as the pixel stage's; World and ViewProj are read
+ * by the preshader only and take no register. */
+static void pixel_registers_come_first(void) {
+    static const char src[] =
+        "float4x4 World; float4x4 ViewProj; float4 Tint; float3 L; float Gain; float4 Bias;\n"
+        "float4 VS(float4 p : POSITION0) : POSITION0 { return mul(p, mul(World, ViewProj)) * Gain + Bias; }\n"
+        "float4 PS(float3 n : TEXCOORD0) : COLOR0 { L = normalize(L); return Tint * dot(L, n) * Gain; }\n"
+        "technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }\n";
+    hfxc_result *r;
+    const hfx_fx_program *p = first_program(&r, NULL, src, "order.fx");
+    if (p) {
+        const char *vs = glsl_of(p, HFX_STAGE_VERTEX), *ps = glsl_of(p, HFX_STAGE_FRAGMENT);
+        CHECK_CONTAINS(ps, "vec4 Tint; // hfx_c[0]\n");
+        CHECK_CONTAINS(ps, "float Gain; // hfx_c[1]\n");
+        CHECK_CONTAINS(ps, "vec3 hfx_pre0; // hfx_c[2] = normalize(L), computed on the CPU (a preshader)\n");
+        CHECK_CONTAINS(ps, "vec3 L; // hfx_c[3]\n");
+        CHECK_CONTAINS(vs, "vec4 Bias; // hfx_c[4]\n");
+        CHECK_CONTAINS(vs, "mat4 hfx_pre0; // hfx_c[5..8] = mul(World, ViewProj), computed on the CPU (a preshader)\n");
+        CHECK_INT(p->reg_count, 9);
+    }
+    hfxc_result_free(r);
+}
+
+/* Every seed program whose pixel shader reads registers reads hfx_c[0] in main(): llvmpipe runs
+ * a fragment shader that does not measurably slower (codegen.c, assign_register_file). */
+static void seed_pixel_shaders_read_register_0(void) {
+    for (size_t i = 0; i < sizeof seeds / sizeof *seeds; i++) {
+        char *path = test_seed_path(seeds[i]);
+        hfxc_result *r;
+        first_program(&r, path, NULL, NULL);
+        const hfx_fx_effect *fx = hfxc_result_effect(r);
+        for (uint32_t k = 0; fx && k < fx->program_count; k++) {
+            const char *ps = glsl_of(&fx->programs[k], HFX_STAGE_FRAGMENT);
+            if (!ps || !strstr(ps, "uniform vec4 hfx_c[")) continue;
+            const char *init = strstr(ps, "\nvoid main()\n{\n");
+            bool reads = init && strstr(init, " = hfx_c[0]");
+            if (!reads) fprintf(stderr, "  %s program %u\n", seeds[i], (unsigned)k);
+            CHECK(reads);
+        }
+        hfxc_result_free(r);
+        free(path);
+    }
+}
+
 int main(void) {
     RUN(project_effects_keep_nothing);
     RUN(a_parameter_normalised_in_place);
     RUN(transforms_in_turn_regroup);
+    RUN(pixel_registers_come_first);
     test_seeds_or_finish();
+    RUN(seed_pixel_shaders_read_register_0);
     RUN(seeds_keep_nothing);
     RUN(the_glsl_says_what_a_register_holds);
     return test_summary();
