@@ -348,10 +348,29 @@ static void power_by_products(gp *p, const ir_expr *x, int k, int max) {
     wrap_close(p, PREC_MUL, max);
 }
 
+/* The same products for an operand too dear to print k times (`pow(1 - d, 2)`): a helper
+ * takes it once, hfx_pow2(x) and so on, overloaded by type. */
+static void power_by_helper(gp *p, const ir_expr *x, int k) {
+    static const char *const body[] = {
+        NULL,
+        "$T hfx_pow1($T x) { return abs(x); }\n",
+        "$T hfx_pow2($T x) { return x * x; }\n",
+        "$T hfx_pow3($T x) { return abs(x) * x * x; }\n",
+        "$T hfx_pow4($T x) { $T s = x * x; return s * s; }\n",
+    };
+    char name[8] = "pow0";
+    name[3] = (char)('0' + k);
+    helper_typed(p, name, x->type, body[k]);
+    sb_printf(p->out, "hfx_pow%d(", k);
+    glsl_expr(p, x, PREC_ASSIGN);
+    sb_put(p->out, ")");
+}
+
 /* pow(x, y) is exp(y * log(x)) with D3D9's log: |x|, and pow(0, 0) = 1, pow(0, y > 0) = 0. */
 static void lower_pow(gp *p, const ir_expr *e, int max) {
     int k = small_power(e->a[1]);
     if (k && repeatable(e->a[0])) { power_by_products(p, e->a[0], k, max); return; }
+    if (k && is_float(e->a[0]->type->base)) { power_by_helper(p, e->a[0], k); return; }
     sb_put(p->out, "exp2(");
     glsl_expr(p, e->a[1], PREC_MUL);
     sb_put(p->out, " * ");

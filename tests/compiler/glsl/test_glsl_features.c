@@ -63,6 +63,32 @@ static void float_intrinsics(void) {
                 "  return r; }\n", ALL));
 }
 
+/* pow(x, 1..4) of an expression: products in one helper per power and type (fxc expands small
+ * constant powers so; exp2 / log2 cost llvmpipe several times more), accepted by every target. */
+static void pow_small_powers_by_helpers(void) {
+    static const char body[] = "float4 v; float s;\n"
+        "float4 ps() : COLOR { float4 r = pow(v * 2, 1) + pow(v + 1, 2) + pow(v - s, 3);\n"
+        "  r.xyz += pow(v.xyz * s, 4); r.x += pow(s + 1, 2); return r; }\n";
+    CHECK(links(body, ALL));
+    char src[512];
+    snprintf(src, sizeof src, "%s%s%s", VS, body, TECH);
+    hfxc_options o = {0};
+    o.targets = 1u << HFX_TARGET_GLSL330;
+    hfxc_result *r = hfxc_compile_memory(src, strlen(src), "f.fx", &o);
+    const hfx_fx_effect *fx = hfxc_result_effect(r);
+    CHECK(fx && fx->program_count == 1);
+    if (fx && fx->program_count == 1) {
+        const char *fs = fx->programs[0].code[1][HFX_TARGET_GLSL330].data;
+        CHECK_CONTAINS(fs, "vec4 hfx_pow1(vec4 x) { return abs(x); }");
+        CHECK_CONTAINS(fs, "vec4 hfx_pow2(vec4 x) { return x * x; }");
+        CHECK_CONTAINS(fs, "vec4 hfx_pow3(vec4 x) { return abs(x) * x * x; }");
+        CHECK_CONTAINS(fs, "vec3 hfx_pow4(vec3 x) { vec3 s = x * x; return s * s; }");
+        CHECK_CONTAINS(fs, "float hfx_pow2(float x) { return x * x; }");
+        CHECK(!strstr(fs, "exp2("));
+    }
+    hfxc_result_free(r);
+}
+
 static void integer_and_bool_ops(void) {
     CHECK(links("int4 iv; int i; uint u; bool b; bool3 bv;\n"
                 "float4 ps() : COLOR {\n"
@@ -217,6 +243,7 @@ static void constant_arguments_select_the_code(void) {
 
 int main(void) {
     RUN(float_intrinsics);
+    RUN(pow_small_powers_by_helpers);
     RUN(integer_and_bool_ops);
     RUN(integer_intrinsics_in_glsl110);
     RUN(vector_isnan_isinf_in_glsl110);

@@ -391,6 +391,16 @@ static void pow_of_negative_base(void) {
     check_pixel(src, u, 1, 0.5f, 0.5f, 0, 1);
 }
 
+/* A small constant power of an expression (not a variable) is products through a helper, with
+ * |x| for odd powers: X - 0.25 = -0.75 gives 0.75, 0.5625, 0.421875, 0.31640625. */
+static void pow_small_of_expression(void) {
+    const char *src = "float X;\n" VS_PASS
+        "float4 ps() : COLOR { return float4(pow(X - 0.25, 1), pow(X - 0.25, 2), pow(X - 0.25, 3), pow(X - 0.25, 4)); }\n"
+        TECH("ps()");
+    const uval u[] = {{"X", 'f', 1, {-0.5f}, {0}}};
+    check_pixel(src, u, 1, 0.75f, 0.5625f, 0.421875f, 0.31640625f);
+}
+
 /* (float[4])U and (int[4])U take U's components in order; (int)-1.6 truncates to -1:
  * (w[2], -i[3] * 0.5, w[1], 1) = (0.7, 0.5, 0.2, 1). */
 static void vector_cast_to_array(void) {
@@ -526,6 +536,7 @@ int main(void) {
     RUN(mul_row_vector);
     RUN(scalar_casts_fill_structs_and_arrays);
     RUN(pow_of_negative_base);
+    RUN(pow_small_of_expression);
     RUN(vector_cast_to_array);
     RUN(constructor_as_lvalue);
     RUN(select_evaluates_both_operands);
