@@ -195,13 +195,14 @@ static pixel_read pixel_read_of(const ir_shader *ps, uint32_t param) {
     return VERTEX_ONLY;
 }
 
-/* HFXC_PACK_UNIFORMS: the next registers for the parameters read as `how`, in the order of the
- * uniform table; once one does not fit (*full), no later one is packed. */
-static void assign_registers(const hfx_fx_effect *fx, const ir_shader *ps, pixel_read how, hfx_fx_program *p,
+/* HFXC_PACK_UNIFORMS: the next registers for the parameters read as `how` (reads[k] for
+ * uniform k), in the order of the uniform table; once one does not fit (*full), no later one is
+ * packed. */
+static void assign_registers(const hfx_fx_effect *fx, const pixel_read *reads, pixel_read how, hfx_fx_program *p,
                              bool *full) {
     for (uint32_t k = 0; k < p->uniform_count; k++) {
         uint32_t n = hfx_fx_param_packable(fx, p->uniforms[k].param);
-        if (*full || !n || pixel_read_of(ps, p->uniforms[k].param) != how) continue;
+        if (*full || !n || reads[k] != how) continue;
         if (p->reg_count + n > MAX_PACKED_REGS) { *full = true; continue; }
         p->uniforms[k].reg = p->reg_count;
         p->reg_count += n;
@@ -250,10 +251,13 @@ static int assign_register_file(hfx_codegen *cg, ir_shader *const sh[2], hfx_fx_
     pre_file f = {0};
     bool full = !cg->pack; /* without packing no parameter takes a register */
     if (alloc_preshaders(cg, sh, out, &f) != 0) return -1;
-    assign_registers(cg->c.fx, sh[1], READ_BY_PIXELS, out, &full);
+    pixel_read *reads = HFX_NEW_ARRAY(cg->c.arena, pixel_read, out->uniform_count ? out->uniform_count : 1);
+    if (!reads) return -1;
+    for (uint32_t k = 0; k < out->uniform_count; k++) reads[k] = pixel_read_of(sh[1], out->uniforms[k].param);
+    assign_registers(cg->c.fx, reads, READ_BY_PIXELS, out, &full);
     assign_preshaders(sh[1], out, &f);
-    assign_registers(cg->c.fx, sh[1], COPIED_BY_PIXELS, out, &full);
-    assign_registers(cg->c.fx, sh[1], VERTEX_ONLY, out, &full);
+    assign_registers(cg->c.fx, reads, COPIED_BY_PIXELS, out, &full);
+    assign_registers(cg->c.fx, reads, VERTEX_ONLY, out, &full);
     assign_preshaders(sh[0], out, &f);
     io->pre_vars = f.vars;
     io->pre_regs = f.regs;

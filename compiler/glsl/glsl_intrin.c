@@ -351,6 +351,7 @@ static void power_by_products(gp *p, const ir_expr *x, int k, int max) {
 /* The same products for an operand too dear to print k times (`pow(1 - d, 2)`): a helper
  * takes it once, hfx_pow2(x) and so on, overloaded by type. */
 static void power_by_helper(gp *p, const ir_expr *x, int k) {
+    static const char *const name[] = {NULL, "pow1", "pow2", "pow3", "pow4"};
     static const char *const body[] = {
         NULL,
         "$T hfx_pow1($T x) { return abs(x); }\n",
@@ -358,9 +359,7 @@ static void power_by_helper(gp *p, const ir_expr *x, int k) {
         "$T hfx_pow3($T x) { return abs(x) * x * x; }\n",
         "$T hfx_pow4($T x) { $T s = x * x; return s * s; }\n",
     };
-    char name[8] = "pow0";
-    name[3] = (char)('0' + k);
-    helper_typed(p, name, x->type, body[k]);
+    helper_typed(p, name[k], x->type, body[k]);
     sb_printf(p->out, "hfx_pow%d(", k);
     glsl_expr(p, x, PREC_ASSIGN);
     sb_put(p->out, ")");

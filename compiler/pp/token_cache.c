@@ -171,8 +171,8 @@ hfx_token *hfx_token_cache_tokenize(hfx_token_cache *c, hfx_arena *arena, hfx_di
         hfx_token *copy = copy_out(e, arena, file);
         if (copy) return copy;
     }
-    uint32_t errors = diags->errors;
+    uint32_t said = diags->errors + diags->warnings; /* a hit would not say it again */
     hfx_token *list = hfx_tokenize_deferred(arena, diags, file);
-    if (diags->errors == errors) remember(c, slot, real, src, list);
+    if (diags->errors + diags->warnings == said) remember(c, slot, real, src, list);
     return list;
 }

@@ -61,6 +61,22 @@ char *test_temp_dir(void) {
     return d ? strdup(d) : NULL;
 }
 
+char *test_path_in(const char *dir, const char *name) {
+    size_t n = strlen(dir) + strlen(name) + 2;
+    char *p = malloc(n);
+    if (p) snprintf(p, n, "%s/%s", dir, name);
+    return p;
+}
+
+int test_write_text(const char *dir, const char *name, const char *text) {
+    char *p = test_path_in(dir, name);
+    FILE *f = p ? fopen(p, "w") : NULL;
+    free(p);
+    if (!f) return -1;
+    int rc = fputs(text, f) < 0 ? -1 : 0;
+    return fclose(f) != 0 ? -1 : rc;
+}
+
 static int remove_entry(const char *path, const struct stat *st, int flag, struct FTW *at) {
     (void)st, (void)flag, (void)at;
     return remove(path);

@@ -13,13 +13,7 @@
 
 static char *hfxc, *tmp;
 
-static void write_text(const char *name, const char *text) {
-    char *path = view_format("%s/%s", tmp, name);
-    FILE *f = fopen(path, "w");
-    CHECK(f != NULL);
-    if (f) fputs(text, f), fclose(f);
-    free(path);
-}
+static void write_text(const char *name, const char *text) { CHECK_INT(test_write_text(tmp, name, text), 0); }
 
 static char *read_text(const char *name) {
     char *path = view_format("%s/%s", tmp, name);

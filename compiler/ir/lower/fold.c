@@ -119,30 +119,22 @@ static bool is_const_var(const ir_var *v) {
 }
 
 /* `const` locals and `static const` globals whose initialiser folded: their value. */
-static void find_const_locals(ir_stmt *s) {
-    if (!s) return;
-    if (s->kind == IS_DECL && ir_is_const(s->expr) && is_const_var(s->var)) s->var->konst = s->expr;
-    if (s->init) find_const_locals(s->init);
-    for (uint32_t i = 0; i < s->count; i++) find_const_locals(s->body[i]);
-    find_const_locals(s->then_s);
-    find_const_locals(s->else_s);
+/* Marks the constant locals declared in s; true when there is one. */
+static bool find_const_locals(ir_stmt *s) {
+    if (!s) return false;
+    bool found = false;
+    if (s->kind == IS_DECL && ir_is_const(s->expr) && is_const_var(s->var)) s->var->konst = s->expr, found = true;
+    found |= find_const_locals(s->init);
+    for (uint32_t i = 0; i < s->count; i++) found |= find_const_locals(s->body[i]);
+    found |= find_const_locals(s->then_s);
+    found |= find_const_locals(s->else_s);
+    return found;
 }
 
 static void propagate(ir_ctx *c, ir_expr **slot, void *data) {
     ir_expr *e = *slot;
     if (e->kind == IE_VAR && e->var->konst) *slot = ir_clone_expr(c, e->var->konst);
     else fold_one(c, slot, data);
-}
-
-/* Whether a local declared in s has a value to propagate (konst is set here and nowhere else,
- * and a function's locals are declared in it). */
-static bool has_const_local(const ir_stmt *s) {
-    if (!s) return false;
-    if (s->kind == IS_DECL && s->var->konst) return true;
-    if (has_const_local(s->init) || has_const_local(s->then_s) || has_const_local(s->else_s)) return true;
-    for (uint32_t i = 0; i < s->count; i++)
-        if (has_const_local(s->body[i])) return true;
-    return false;
 }
 
 void ir_pass_fold(ir_ctx *c, ir_shader *sh) {
@@ -153,15 +145,13 @@ void ir_pass_fold(ir_ctx *c, ir_shader *sh) {
         if (ir_is_const(g->init) && is_const_var(g)) g->konst = g->init;
         const_globals |= g->konst != NULL;
     }
-    for (uint32_t i = 0; i < sh->func_count; i++) {
-        ir_walk_stmt_exprs(c, sh->funcs[i]->body, fold_one, NULL);
-        find_const_locals(sh->funcs[i]->body);
-    }
     /* constants flow into their uses (so `static const bool on = false; if (on)` dies), and
      * what they make constant folds in the same walk. Without a constant to propagate the walk
      * would only fold again what the first one left: nothing (the first walk went operands
      * first, so each node it kept had its final operands when it was tried). */
-    for (uint32_t i = 0; i < sh->func_count; i++)
-        if (const_globals || has_const_local(sh->funcs[i]->body))
+    for (uint32_t i = 0; i < sh->func_count; i++) {
+        ir_walk_stmt_exprs(c, sh->funcs[i]->body, fold_one, NULL);
+        if (find_const_locals(sh->funcs[i]->body) || const_globals)
             ir_walk_stmt_exprs(c, sh->funcs[i]->body, propagate, NULL);
+    }
 }

@@ -11,20 +11,8 @@
 
 static char *tmp;
 
-static char *path_of(const char *name) {
-    size_t n = strlen(tmp) + strlen(name) + 2;
-    char *p = malloc(n);
-    snprintf(p, n, "%s/%s", tmp, name);
-    return p;
-}
-
-static void write_text(const char *name, const char *text) {
-    char *p = path_of(name);
-    FILE *f = fopen(p, "w");
-    CHECK(f != NULL);
-    if (f) fputs(text, f), fclose(f);
-    free(p);
-}
+static char *path_of(const char *name) { return test_path_in(tmp, name); }
+static void write_text(const char *name, const char *text) { CHECK_INT(test_write_text(tmp, name, text), 0); }
 
 /* The dependencies as one string, "a|b|c", with tmp/ cut from the front of each. */
 static char *deps_text(const hfxc_result *r) {
