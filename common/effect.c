@@ -89,6 +89,13 @@ uint32_t hfx_fx_param_packable(const hfx_fx_effect *fx, uint32_t i) {
     return p->klass == HFX_CLASS_MATRIX ? p->rows : 1;
 }
 
+int hfx_fx_param_switchable(const hfx_fx_effect *fx, uint32_t i) {
+    if (!fx || i >= fx->top_param_count || i >= fx->param_count) return 0;
+    const hfx_fx_param *p = &fx->params[i];
+    return p->parent == HFX_NONE && !p->elements && p->type == HFX_TYPE_BOOL && p->klass == HFX_CLASS_SCALAR &&
+           p->words == 1 && p->glsl_name;
+}
+
 /* A deep copy is a round trip through the .hfxo form: one code path to trust, not two. */
 hfx_fx_effect *hfx_fx_effect_copy(const hfx_fx_effect *fx) {
     void *data = NULL;

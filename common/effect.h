@@ -108,9 +108,21 @@ typedef struct hfx_fx_sampler_use {
 #define HFX_FX_REGS_NAME "hfx_c"
 #define HFX_FX_MAX_REGS 4096u    /* what a reader accepts; the compiler packs at most 256 */
 
+/* A switch: a scalar bool parameter that both stages declare as
+ *     #ifdef HFX_SWITCH_k / const bool NAME = HFX_SWITCH_k; / #else / uniform bool NAME; / #endif
+ * k counting the program's switches in uniform order. A GL runtime may link a variant of the
+ * program per combination of the switches' values (defining each HFX_SWITCH_k true or false
+ * after the #version line), so that `if (NAME)` costs the shader nothing, as an #ifdef would in
+ * hand-written GLSL; the text with nothing defined reads the uniform as any other. */
+#define HFX_FX_MAX_SWITCHES 4u
+enum { /* hfx_fx_uniform_use.flags */
+    HFX_FX_USE_SWITCH = 1u << 0
+};
+
 typedef struct hfx_fx_uniform_use {
     uint32_t param;         /* top-level parameter the program reads */
     uint32_t reg;           /* its first register in hfx_c; HFX_NONE: its own GLSL uniform */
+    uint32_t flags;         /* HFX_FX_USE_SWITCH */
 } hfx_fx_uniform_use;
 
 typedef struct hfx_fx_code {
@@ -195,6 +207,8 @@ int hfx_fx_param_evaluable(const hfx_fx_param *p);
 /* Registers parameter i would take in hfx_c (rows for a matrix, else 1); 0 when it cannot be
  * packed: only a top-level, non-array float scalar, vector or matrix (up to 4x4) with a GLSL name. */
 uint32_t hfx_fx_param_packable(const hfx_fx_effect *fx, uint32_t i);
+/* Whether parameter i can be a switch (HFX_FX_USE_SWITCH): a top-level scalar bool, not an array, with a GLSL name. */
+int hfx_fx_param_switchable(const hfx_fx_effect *fx, uint32_t i);
 /* Whether program p reads use u from hfx_c (a register inside reg_count) rather than its own uniform. */
 static inline int hfx_fx_use_packed(const hfx_fx_program *p, const hfx_fx_uniform_use *u) {
     return u->reg != HFX_NONE && u->reg < p->reg_count;

@@ -43,7 +43,7 @@ enum {
     /* Vulkan's SPIR-V came later within version 2: at the program record's tail, which older
      * readers skip; a record without it has no Vulkan code */
     P_VK_CODE = R_PROGRAM, R_PROGRAM_WRITTEN = P_VK_CODE + 2 * HFX_STAGE_COUNT,
-    R_UNIFORM_USE = 2, R_PASS = 6, R_TECHNIQUE = 5, R_VARIANT = 4, R_PRESHADER = 6
+    R_UNIFORM_USE = 2, R_UNIFORM_USE_WRITTEN = 3, R_PASS = 6, R_TECHNIQUE = 5, R_VARIANT = 4, R_PRESHADER = 6
 };
 
 /* CRC-32 (IEEE 802.3) by zlib, whose crc32 works on words: a byte-table loop was 7% of a
@@ -281,11 +281,12 @@ static void write_programs(writer *w, const hfx_fx_effect *fx) {
             put32(&w->out, (uint32_t)u->unit);
         }
     section_end(w);
-    table_begin(w, SEC_UNIFORM_USES, uniforms, R_UNIFORM_USE);
+    table_begin(w, SEC_UNIFORM_USES, uniforms, R_UNIFORM_USE_WRITTEN);
     for (uint32_t i = 0; i < fx->program_count; i++)
         for (uint32_t a = 0; a < fx->programs[i].uniform_count; a++) {
             put32(&w->out, fx->programs[i].uniforms[a].param);
             put32(&w->out, fx->programs[i].uniforms[a].reg);
+            put32(&w->out, fx->programs[i].uniforms[a].flags);
         }
     section_end(w);
 }
@@ -692,6 +693,8 @@ static bool read_program(reader *r, hfx_fx_program *p, uint32_t i) {
     for (uint32_t a = 0; a < un; a++) {
         p->uniforms[a].param = field(&r->t_uniform_uses, uf + a, 0);
         p->uniforms[a].reg = field(&r->t_uniform_uses, uf + a, 1);
+        /* switches came later within version 3, at the record's tail: none in older files */
+        if (r->t_uniform_uses.stride >= 4u * R_UNIFORM_USE_WRITTEN) p->uniforms[a].flags = field(&r->t_uniform_uses, uf + a, 2);
     }
     p->reg_count = field(t, i, P_REG_COUNT);
     return true;
@@ -855,6 +858,20 @@ static bool check_registers(reader *r, const hfx_fx_effect *fx, const hfx_fx_pro
     return true;
 }
 
+/* Switches: scalar bools read as their own uniforms, at most HFX_FX_MAX_SWITCHES (a runtime may
+ * link 2^n variants). */
+static bool check_switches(reader *r, const hfx_fx_effect *fx, const hfx_fx_program *p, uint32_t i) {
+    uint32_t n = 0;
+    for (uint32_t k = 0; k < p->uniform_count; k++) {
+        const hfx_fx_uniform_use *u = &p->uniforms[k];
+        if (!(u->flags & HFX_FX_USE_SWITCH)) continue;
+        if (++n > HFX_FX_MAX_SWITCHES || hfx_fx_use_packed(p, u) || !hfx_fx_param_switchable(fx, u->param))
+            return fail(r, "program %u has a switch that is not a bool parameter of its own (or more than %u)", i,
+                        HFX_FX_MAX_SWITCHES);
+    }
+    return true;
+}
+
 /* A preshader's program is valid over the values and its rows land inside the registers. */
 static bool check_preshaders(reader *r, const hfx_fx_effect *fx, const hfx_fx_program *p, uint32_t i) {
     char why[96];
@@ -889,7 +906,7 @@ static bool check_effect(reader *r, const hfx_fx_effect *fx) {
             if (p->samplers[k].sampler >= fx->sampler_count) return fail(r, "program %u uses a missing sampler", i);
         for (uint32_t k = 0; k < p->uniform_count; k++)
             if (p->uniforms[k].param >= fx->top_param_count) return fail(r, "program %u uses a missing parameter", i);
-        if (!check_registers(r, fx, p, i) || !check_preshaders(r, fx, p, i)) return false;
+        if (!check_registers(r, fx, p, i) || !check_preshaders(r, fx, p, i) || !check_switches(r, fx, p, i)) return false;
     }
     for (uint32_t i = 0; i < fx->pass_count; i++) {
         const hfx_fx_pass *p = &fx->passes[i];

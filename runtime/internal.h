@@ -231,7 +231,23 @@ typedef struct hfx_rt_program {
     int32_t alpha_func;     /* values GL holds (-1: unknown) */
     float alpha_ref;
     hfx_preshaders pre;     /* marked when a parameter they read changes, run before the registers are sent */
+    /* Switches (common/effect.h): the bools' words in the effect's values, and the variants with
+     * them constant, variants[mask] (bit k: switch k true), each linked at the first Apply that
+     * needs it; a variant GL refused is marked in switch_failed and this program used instead. */
+    uint32_t switch_count;
+    uint32_t switch_words[HFX_FX_MAX_SWITCHES];
+    struct hfx_rt_program *variants;
+    uint32_t switch_failed;
+    uint32_t index;         /* in the shared programs: which compiled program this is */
+    hfx_target target;
 } hfx_rt_program;
+
+/* The switches' values now, one bit each (what picks a program's variant). */
+static inline uint32_t hfx_rt_switch_mask(const hfx_rt_program *p, const uint32_t *values) {
+    uint32_t m = 0;
+    for (uint32_t k = 0; k < p->switch_count; k++) m |= (uint32_t)(values[p->switch_words[k]] != 0) << k;
+    return m;
+}
 
 /* What a pass binds on one texture unit. */
 typedef struct hfx_rt_binding {
@@ -314,6 +330,10 @@ struct hfx_pass {
      * selectors run again only after a parameter changed); chosen_seen = 0: never chosen */
     hfx_rt_program *chosen;
     uint64_t chosen_seen;
+    /* switches: the variant picked for `switched_base` (the pass's program, or the shader arrays'
+     * choice) when its switches were switch_mask; NULL: none picked yet */
+    hfx_rt_program *switched, *switched_base;
+    uint32_t switch_mask;
     uint32_t chosen_index;  /* Vulkan: the program index chosen then (chosen_seen as above) */
 };
 
@@ -416,6 +436,8 @@ int hfx_rt_program_cached_link(hfx_shared *sh, hfx_rt_program *p, const hfx_fx_p
 void hfx_rt_program_binary_hint(hfx_device *dev, GLuint program);
 int hfx_rt_program_cache_usable(const hfx_device *dev); /* a folder, and a driver that hands out binaries */
 void hfx_rt_program_free(hfx_device *dev, hfx_rt_program *p);
+/* The variant of program p for switch values `mask`, linked now if it was not; p if GL refused it. */
+hfx_rt_program *hfx_rt_program_switched(hfx_shared *sh, hfx_rt_program *p, uint32_t mask);
 void hfx_rt_upload_all(hfx_effect *fx, hfx_rt_program *p);
 void hfx_rt_upload_slow(hfx_device *dev, const hfx_upload *up, const uint32_t *values);
 void hfx_rt_upload_slot(hfx_effect *fx, const hfx_rt_program *p, const hfx_slot *s); /* all of a parameter's uploads */

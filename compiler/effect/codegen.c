@@ -168,7 +168,7 @@ static int record_uses(hfx_codegen *cg, ir_shader *const sh[2], hfx_fx_program *
             } else {
                 bool seen = false;
                 for (uint32_t k = 0; k < out->uniform_count; k++) seen |= out->uniforms[k].param == v->param;
-                if (!seen) out->uniforms[out->uniform_count++] = (hfx_fx_uniform_use){ v->param, HFX_NONE };
+                if (!seen) out->uniforms[out->uniform_count++] = (hfx_fx_uniform_use){.param = v->param, .reg = HFX_NONE};
             }
         }
     }
@@ -263,6 +263,28 @@ static int assign_register_file(hfx_codegen *cg, ir_shader *const sh[2], hfx_fx_
     io->pre_regs = f.regs;
     io->pre_count = f.count;
     return 0;
+}
+
+/* Whether a stage keeps a private copy of parameter `param` (a function writes it). */
+static bool copied_by(const ir_shader *sh, uint32_t param) {
+    for (uint32_t i = 0; sh && i < sh->global_count; i++)
+        if (sh->globals[i]->kind == IRV_UNIFORM && sh->globals[i]->param == param && sh->globals[i]->priv) return true;
+    return false;
+}
+
+/* Switches (common/effect.h): the first HFX_FX_MAX_SWITCHES bool parameters the program reads
+ * as they are. A branch on a uniform bool costs a pixel shader on llvmpipe about as much as a
+ * distance and a division (point.fx's `if (atenuado)`: 2.8 % of a frame); a variant with the
+ * bool a constant costs nothing, as the #ifdef a graphics programmer would write. */
+static void mark_switches(const hfx_fx_effect *fx, ir_shader *const sh[2], hfx_fx_program *out) {
+    uint32_t n = 0;
+    for (uint32_t k = 0; k < out->uniform_count && n < HFX_FX_MAX_SWITCHES; k++) {
+        hfx_fx_uniform_use *u = &out->uniforms[k];
+        if (hfx_fx_use_packed(out, u) || !hfx_fx_param_switchable(fx, u->param)) continue;
+        if (copied_by(sh[0], u->param) || copied_by(sh[1], u->param)) continue;
+        u->flags |= HFX_FX_USE_SWITCH;
+        n++;
+    }
 }
 
 /* flat_colors: the pass sets ShadeMode = FLAT, under which D3D9 does not interpolate COLOR inputs. */
@@ -360,6 +382,7 @@ int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps,
     if (copy_attributes(&io, out) != 0 || record_uses(cg, sh, out) != 0) goto oom;
     qsort(out->uniforms, out->uniform_count, sizeof *out->uniforms, cmp_uniform);
     if (assign_register_file(cg, sh, out, &io) != 0) goto oom;
+    mark_switches(cg->c.fx, sh, out);
     io.uniforms = out->uniforms;
     io.uniform_count = out->uniform_count;
     io.reg_count = out->reg_count;

@@ -427,6 +427,27 @@ static void print_fixed_main(gp *p) {
     sb_put(p->out, "}\n");
 }
 
+/* The program's switch number of a uniform (HFX_FX_USE_SWITCH, counted in uniform order), or -1. */
+static int switch_number(const gp *p, const ir_var *v) {
+    int k = 0;
+    for (uint32_t i = 0; i < p->io->uniform_count; i++) {
+        if (!(p->io->uniforms[i].flags & HFX_FX_USE_SWITCH)) continue;
+        if (p->io->uniforms[i].param == v->param) return k;
+        k++;
+    }
+    return -1;
+}
+
+/* A switch is a constant when the runtime defines HFX_SWITCH_k (a program variant), else the uniform. */
+static void declare_uniform(gp *p, const ir_var *v) {
+    int k = v->param != HFX_NONE ? switch_number(p, v) : -1;
+    if (k >= 0) sb_printf(p->out, "#ifdef HFX_SWITCH_%d\nconst bool %s = HFX_SWITCH_%d;\n#else\n", k, v->glsl, k);
+    sb_put(p->out, "uniform ");
+    glsl_decl(p, p->out, v->type, v->glsl);
+    sb_put(p->out, ";\n");
+    if (k >= 0) sb_put(p->out, "#endif\n");
+}
+
 static void declare_globals(gp *p) {
     glsl_declare_regs(p);
     for (uint32_t i = 0; i < p->sh->global_count; i++) {
@@ -437,9 +458,7 @@ static void declare_globals(gp *p) {
         } else if (v->kind == IRV_SAMPLER) {
             sb_printf(p->out, "uniform %s %s;\n", v->dim == DIM_CUBE ? "samplerCube" : v->dim == DIM_3D ? "sampler3D" : "sampler2D", v->glsl);
         } else if (v->kind == IRV_UNIFORM) {
-            sb_put(p->out, "uniform ");
-            glsl_decl(p, p->out, v->type, v->glsl);
-            sb_put(p->out, ";\n");
+            declare_uniform(p, v);
         } else if (v->kind == IRV_PRIVATE) {
             glsl_decl(p, p->out, v->type, v->glsl);
             sb_put(p->out, v->copy_of ? "; // written by the shader: a private copy of the uniform\n" : ";\n");

@@ -71,6 +71,15 @@ static hfx_rt_program *chosen_program(hfx_pass *p) {
     return p->chosen;
 }
 
+/* The variant of base for its switches' values now (hfx_rt_program_switched), kept while they stay. */
+static hfx_rt_program *switched_program(hfx_pass *p, hfx_rt_program *base) {
+    uint32_t mask = hfx_rt_switch_mask(base, p->fx->values);
+    if (p->switched && p->switched_base == base && p->switch_mask == mask) return p->switched;
+    p->switched_base = base;
+    p->switch_mask = mask;
+    return p->switched = hfx_rt_program_switched(p->fx->sh, base, mask);
+}
+
 /* Everything a pass sets: render states, program, uploads, textures. */
 static int apply_full(hfx_pass *p) {
     hfx_effect *fx = p->fx;
@@ -78,6 +87,7 @@ static int apply_full(hfx_pass *p) {
     if (rp->render_state_count) hfx_rs_apply(fx, rp); /* first: the alpha test reads these states */
     hfx_rt_program *prog = rp->variant_count ? chosen_program(p) : rp->prog;
     if (rp->variant_count && !prog) return HFX_ERR_NOT_FOUND;
+    if (prog && prog->switch_count) prog = switched_program(p, prog);
     apply_program(fx->dev, prog);
     if (prog && (prog->memo_seen != fx->log_len || prog->memo_effect != fx->id)) hfx_rt_upload_changed(fx, prog);
     if (rp->binding_count) bind_textures(fx, rp);
@@ -110,6 +120,10 @@ int hfx_pass_apply(hfx_pass *p) {
     hfx_effect *fx = p->fx;
     if (fx->dev->applied != p) return apply_first(p);
     hfx_rt_program *prog = p->rt->prog;
+    if (prog->switch_count) { /* the variant apply_full picked, while the switches keep their values */
+        if (hfx_rt_switch_mask(prog, fx->values) != p->switch_mask) return apply_first(p);
+        prog = p->switched;
+    }
     uint64_t seen = prog->memo_seen;
     if (seen == fx->log_len) return HFX_OK;
     if (seen + 1 != fx->log_len) return hfx_rt_upload_log(fx, prog);

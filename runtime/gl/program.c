@@ -304,14 +304,8 @@ static int link_sources(hfx_shared *sh, hfx_rt_program *p, const hfx_fx_program 
     return rc;
 }
 
-int hfx_rt_program_build(hfx_shared *sh, uint32_t index, hfx_target target) {
-    const hfx_fx_program *fp = &sh->fx->programs[index];
-    hfx_rt_program *p = &sh->programs[index];
-    const char *vs_src = fp->code[HFX_STAGE_VERTEX][target].data;
-    const char *fs_src = fp->code[HFX_STAGE_FRAGMENT][target].data;
-    if (!vs_src || !fs_src)
-        return hfx_rt_fail(sh->dev, HFX_ERR_LOAD, "%s: program %u has no code for the requested GLSL target",
-                           sh->fx->source_name ? sh->fx->source_name : "effect", (unsigned)index);
+/* Links the sources into p and resolves everything Apply needs from it. */
+static int build_from(hfx_shared *sh, hfx_rt_program *p, const hfx_fx_program *fp, const char *vs_src, const char *fs_src) {
     int rc = hfx_rt_program_cached_link(sh, p, fp, vs_src, fs_src, link_sources);
     if (rc) return rc;
     build b = {sh, p, NULL, 0, 0};
@@ -326,6 +320,65 @@ int hfx_rt_program_build(hfx_shared *sh, uint32_t index, hfx_target target) {
     return HFX_OK;
 }
 
+/* The switches' words, in the order HFX_SWITCH_k numbers them. */
+static void find_switches(const hfx_fx_effect *fx, const hfx_fx_program *fp, hfx_rt_program *p) {
+    for (uint32_t k = 0; k < fp->uniform_count && p->switch_count < HFX_FX_MAX_SWITCHES; k++)
+        if (fp->uniforms[k].flags & HFX_FX_USE_SWITCH) p->switch_words[p->switch_count++] = fx->params[fp->uniforms[k].param].offset;
+}
+
+int hfx_rt_program_build(hfx_shared *sh, uint32_t index, hfx_target target) {
+    const hfx_fx_program *fp = &sh->fx->programs[index];
+    hfx_rt_program *p = &sh->programs[index];
+    const char *vs_src = fp->code[HFX_STAGE_VERTEX][target].data;
+    const char *fs_src = fp->code[HFX_STAGE_FRAGMENT][target].data;
+    if (!vs_src || !fs_src)
+        return hfx_rt_fail(sh->dev, HFX_ERR_LOAD, "%s: program %u has no code for the requested GLSL target",
+                           sh->fx->source_name ? sh->fx->source_name : "effect", (unsigned)index);
+    p->index = index;
+    p->target = target;
+    find_switches(sh->fx, fp, p);
+    return build_from(sh, p, fp, vs_src, fs_src);
+}
+
+/* src with `#define HFX_SWITCH_k true|false` for each switch after its #version line. */
+static char *with_switches(const char *src, uint32_t count, uint32_t mask) {
+    const char *eol = strchr(src, '\n');
+    if (!eol) return NULL;
+    size_t head = (size_t)(eol - src) + 1, rest = strlen(eol + 1);
+    char *out = malloc(head + count * 40 + rest + 1);
+    if (!out) return NULL;
+    memcpy(out, src, head);
+    size_t n = head;
+    for (uint32_t k = 0; k < count; k++)
+        n += (size_t)sprintf(out + n, "#define HFX_SWITCH_%u %s\n", (unsigned)k, mask >> k & 1 ? "true" : "false");
+    memcpy(out + n, eol + 1, rest + 1);
+    return out;
+}
+
+/* Variant `mask` of p: its sources with the switches defined, built as any program. */
+static int build_switched(hfx_shared *sh, const hfx_rt_program *p, hfx_rt_program *v, uint32_t mask) {
+    const hfx_fx_program *fp = &sh->fx->programs[p->index];
+    char *vs = with_switches(fp->code[HFX_STAGE_VERTEX][p->target].data, p->switch_count, mask);
+    char *fs = with_switches(fp->code[HFX_STAGE_FRAGMENT][p->target].data, p->switch_count, mask);
+    int rc = vs && fs ? build_from(sh, v, fp, vs, fs) : hfx_rt_fail(sh->dev, HFX_ERR_MEMORY, "out of memory");
+    free(vs);
+    free(fs);
+    v->index = p->index;
+    v->target = p->target;
+    return rc;
+}
+
+hfx_rt_program *hfx_rt_program_switched(hfx_shared *sh, hfx_rt_program *p, uint32_t mask) {
+    if (p->switch_failed >> mask & 1) return p;
+    if (!p->variants && !(p->variants = calloc((size_t)1 << p->switch_count, sizeof *p->variants))) return p;
+    hfx_rt_program *v = &p->variants[mask];
+    if (v->object) return v;
+    if (build_switched(sh, p, v, mask) == HFX_OK) return v;
+    hfx_rt_program_free(sh->dev, v); /* GL refused it (it never should): the uniform reads work as well */
+    p->switch_failed |= 1u << mask;
+    return p;
+}
+
 void hfx_rt_program_free(hfx_device *dev, hfx_rt_program *p) {
     /* GL frees the bound program's name once another is bound (a load binds one briefly) and
      * may hand it to a later program: the shadow must not then take that one for bound. */
@@ -337,6 +390,8 @@ void hfx_rt_program_free(hfx_device *dev, hfx_rt_program *p) {
     free(p->regs);
     free(p->reg_locs);
     hfx_preshaders_free(&p->pre);
+    for (uint32_t m = 0; p->variants && m < (1u << p->switch_count); m++) hfx_rt_program_free(dev, &p->variants[m]);
+    free(p->variants);
     memset(p, 0, sizeof *p);
 }
 

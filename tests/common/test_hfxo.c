@@ -107,8 +107,8 @@ static hfx_fx_effect *sample_effect(void) {
     pr->samplers[0] = (hfx_fx_sampler_use){dup("s"), 0, 2};
     pr->uniform_count = 2;
     pr->uniforms = calloc(2, sizeof *pr->uniforms);
-    pr->uniforms[0] = (hfx_fx_uniform_use){0, 0};        /* world: packed, registers 0..3 */
-    pr->uniforms[1] = (hfx_fx_uniform_use){2, HFX_NONE}; /* lights: its own uniform */
+    pr->uniforms[0] = (hfx_fx_uniform_use){.param = 0, .reg = 0};        /* world: packed, registers 0..3 */
+    pr->uniforms[1] = (hfx_fx_uniform_use){.param = 2, .reg = HFX_NONE}; /* lights: its own uniform */
     pr->reg_count = 5;
     pr->flags = HFX_FX_PROGRAM_ALPHA_TEST;
     /* a preshader: world's diagonal (components 0, 5, 10, 15) into register 4 */
@@ -222,6 +222,7 @@ static void compare_effects(const hfx_fx_effect *a, const hfx_fx_effect *b) {
         for (uint32_t k = 0; k < x->uniform_count && k < y->uniform_count; k++) {
             CHECK_INT(x->uniforms[k].param, y->uniforms[k].param);
             CHECK_INT(x->uniforms[k].reg, y->uniforms[k].reg);
+            CHECK_INT(x->uniforms[k].flags, y->uniforms[k].flags);
         }
         CHECK_INT(x->preshader_count, y->preshader_count);
         CHECK_INT(x->pre_words, y->pre_words);
@@ -454,7 +455,7 @@ static void hostile_contents_are_refused(void) {
     uint32_t uuse = section_at(b, "UUSE");
     CHECK(uuse != 0);
     CHECK_INT(get32(b + prog + 8 + 23 * 4), 5); /* reg_count, after the code fields */
-    CHECK_INT(get32(b + uuse + 4), 8);          /* param, reg */
+    CHECK_INT(get32(b + uuse + 4), 12);         /* param, reg, flags */
     CHECK_STR(read_patched(data, size, prog + 8 + 23 * 4, 4097, err, sizeof err),
               "hfxo: program 0 has 4097 registers (at most 4096)");
     CHECK_STR(read_patched(data, size, prog + 8 + 23 * 4, 3, err, sizeof err),
@@ -463,6 +464,11 @@ static void hostile_contents_are_refused(void) {
               "hfxo: program 0 puts parameter 0 outside its 5 registers");
     CHECK_STR(read_patched(data, size, uuse + 8 + 4, 0xfffffffeu, err, sizeof err),
               "hfxo: program 0 puts parameter 0 outside its 5 registers");
+    /* A switch (HFX_FX_USE_SWITCH) on a packed float matrix, and on the struct array. */
+    CHECK_STR(read_patched(data, size, uuse + 8 + 8, 1, err, sizeof err),
+              "hfxo: program 0 has a switch that is not a bool parameter of its own (or more than 4)");
+    CHECK_STR(read_patched(data, size, uuse + 8 + 12 + 8, 1, err, sizeof err),
+              "hfxo: program 0 has a switch that is not a bool parameter of its own (or more than 4)");
     /* A preshader (program, first, words, reg, rows, cols) writing past the registers, its
      * code reading past the values, its code outside PCOD, its program missing. */
     uint32_t pres = section_at(b, "PRES"), pcod = section_at(b, "PCOD");
@@ -477,7 +483,7 @@ static void hostile_contents_are_refused(void) {
               "hfxo: preshader 0 has its code outside PCOD");
     CHECK_STR(read_patched(data, size, pres + 8, 1, err, sizeof err),
               "hfxo: preshader 0 names a missing program, or its program's come apart");
-    CHECK_STR(read_patched(data, size, uuse + 8 + 8 + 4, 0, err, sizeof err),
+    CHECK_STR(read_patched(data, size, uuse + 8 + 12 + 4, 0, err, sizeof err),
               "hfxo: program 0 packs parameter 2, which cannot be packed");
     CHECK_STR(read_patched(data, size, prog + 8 + 23 * 4, 4096, err, sizeof err), "accepted");
     /* Records too short for version 2. */

@@ -309,7 +309,7 @@ static void glsl_rewrite(void) {
     memset(&p, 0, sizeof p);
     p.samplers = &use;
     p.sampler_count = 1;
-    hfx_fx_uniform_use uses[2] = {{0, HFX_NONE}, {1, HFX_NONE}};
+    hfx_fx_uniform_use uses[2] = {{.param = 0, .reg = HFX_NONE}, {.param = 1, .reg = HFX_NONE}};
     p.uniforms = uses;
     p.uniform_count = 2;
     char fs[] = "#version 330 core\n"
@@ -365,7 +365,7 @@ static void bool_field_keeps_bool(void) {
     fx.param_count = fx.top_param_count = 1;
     hfx_fx_program p;
     memset(&p, 0, sizeof p);
-    hfx_fx_uniform_use use = {0, HFX_NONE};
+    hfx_fx_uniform_use use = {.param = 0, .reg = HFX_NONE};
     p.uniforms = &use;
     p.uniform_count = 1;
     char fs[] = "#version 330 core\nstruct S { bool on; };\nuniform bool on;\nvoid main() { S x; x.on = on; }\n";
