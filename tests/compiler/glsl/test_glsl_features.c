@@ -89,6 +89,32 @@ static void pow_small_powers_by_helpers(void) {
     hfxc_result_free(r);
 }
 
+/* D3D9's pow takes |x|: the abs is left out where the base cannot be negative (saturate, max or
+ * clamp with a non-negative bound, length), kept otherwise. */
+static void pow_of_a_nonnegative_base(void) {
+    static const char body[] = "float4 v; float s;\n"
+        "float4 ps() : COLOR { return float4(pow(saturate(s), v.x), pow(max(s, 0), v.y), pow(clamp(s, 0.5, 2), v.z),\n"
+        "  pow(length(v), v.w)) + pow(max(s, -1), v) + pow(s, v.x); }\n";
+    CHECK(links(body, ALL));
+    char src[512];
+    snprintf(src, sizeof src, "%s%s%s", VS, body, TECH);
+    hfxc_options o = {0};
+    o.targets = 1u << HFX_TARGET_GLSL330;
+    hfxc_result *r = hfxc_compile_memory(src, strlen(src), "f.fx", &o);
+    const hfx_fx_effect *fx = hfxc_result_effect(r);
+    CHECK(fx && fx->program_count == 1);
+    if (fx && fx->program_count == 1) {
+        const char *fs = fx->programs[0].code[1][HFX_TARGET_GLSL330].data;
+        CHECK_CONTAINS(fs, "exp2(v.x * max(log2(clamp(s, 0.0, 1.0)), -3.40282347e+38))");
+        CHECK_CONTAINS(fs, "exp2(v.y * max(log2(max(s, 0.0)), -3.40282347e+38))");
+        CHECK_CONTAINS(fs, "exp2(v.z * max(log2(clamp(s, 0.5, 2.0)), -3.40282347e+38))");
+        CHECK_CONTAINS(fs, "exp2(v.w * max(log2(length(v)), -3.40282347e+38))");
+        CHECK_CONTAINS(fs, "max(log2(abs(vec4(max(s, -1.0)))), -3.40282347e+38)");
+        CHECK_CONTAINS(fs, "exp2(v.x * max(log2(abs(s)), -3.40282347e+38))");
+    }
+    hfxc_result_free(r);
+}
+
 static void integer_and_bool_ops(void) {
     CHECK(links("int4 iv; int i; uint u; bool b; bool3 bv;\n"
                 "float4 ps() : COLOR {\n"
@@ -244,6 +270,7 @@ static void constant_arguments_select_the_code(void) {
 int main(void) {
     RUN(float_intrinsics);
     RUN(pow_small_powers_by_helpers);
+    RUN(pow_of_a_nonnegative_base);
     RUN(integer_and_bool_ops);
     RUN(integer_intrinsics_in_glsl110);
     RUN(vector_isnan_isinf_in_glsl110);
