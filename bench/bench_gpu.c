@@ -292,22 +292,24 @@ static GLuint compile(GLenum type, const char *const *parts, int n) {
 
 /* BENCH_GPU_HAND_FS=file replaces the hand-written fragment shader (a whole shader, #version
  * included, over the hand-written uniforms and varyings): to try variants of what hfx emits
- * against the same vertex shader and GL state, one difference at a time. */
-static char *hand_fs_override(void) {
-    const char *path = getenv("BENCH_GPU_HAND_FS");
+ * against the same vertex shader and GL state, one difference at a time. BENCH_GPU_HAND_VS
+ * replaces the vertex shader (for a varying's width, say). */
+static char *hand_override(const char *var) {
+    const char *path = getenv(var);
     char *text = path ? test_read_file(path, NULL) : NULL;
     if (path && !text) fprintf(stderr, "cannot read %s\n", path);
     return text;
 }
 
 static GLuint hand_program(const char *vs, const char *fs, const char *defines) {
-    char *override = hand_fs_override();
-    const char *vparts[] = {vs}, *whole[] = {override ? override : fs}, *fparts[] = {"#version 330 core\n", defines, fs};
+    char *override = hand_override("BENCH_GPU_HAND_FS"), *vs_override = hand_override("BENCH_GPU_HAND_VS");
+    const char *vparts[] = {vs_override ? vs_override : vs}, *whole[] = {override ? override : fs}, *fparts[] = {"#version 330 core\n", defines, fs};
     GLuint v = compile(GL_VERTEX_SHADER, vparts, 1), p = f.CreateProgram();
     /* hand_ambient_fs carries its own #version line */
     GLuint s = fs == hand_ambient_fs || override ? compile(GL_FRAGMENT_SHADER, whole, 1)
                                                  : compile(GL_FRAGMENT_SHADER, fparts, 3);
     free(override);
+    free(vs_override);
     f.AttachShader(p, v);
     f.AttachShader(p, s);
     f.LinkProgram(p);
