@@ -4,8 +4,8 @@
  * resolved to ir_var / ir_func, intrinsics to ir_intrin, implicit conversions are IE_CONVERT.
  * Everything lives in the compilation's arena.
  *
- * Pass order (lower/passes.c, ir_lower): specialise -> intrinsics -> fold -> dce -> globals
- * -> uses -> check.
+ * Pass order (lower/passes.c, ir_lower): specialise -> arrays -> intrinsics -> lvalues -> fold
+ * -> calls -> dce -> globals -> licm -> uses -> check.
  * glsl.c prints the result; a preshader or SPIR-V back end would read the same tree. */
 #ifndef HFX_IR_H
 #define HFX_IR_H
@@ -152,6 +152,7 @@ void ir_pass_fold(ir_ctx *c, ir_shader *sh);
 void ir_pass_calls(ir_ctx *c, ir_shader *sh);       /* copies of callees with constant arguments bound */
 void ir_pass_dce(ir_ctx *c, ir_shader *sh);
 void ir_pass_globals(ir_ctx *c, ir_shader *sh);
+void ir_pass_licm(ir_ctx *c, ir_shader *sh);       /* loop-invariant work to locals before the loop */
 int ir_pass_check(ir_ctx *c, ir_shader *sh);   /* target limits: reports what GLSL cannot express */
 void ir_pass_uses(ir_ctx *c, ir_shader *sh);
 void ir_pass_preshade(ir_ctx *c, ir_shader *sh);    /* uniform-only work to preshaders (codegen, when packing) */
