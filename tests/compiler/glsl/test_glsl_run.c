@@ -282,6 +282,24 @@ static void uniform_array_out_of_range(void) {
     check_pixel(written, u, 2, 0.4f, 0, 0, 1);
 }
 
+/* The guards ranges.c thins: arr = {0.1, 0.2}.
+ * r: i from -1 (not provably >= 0: the whole guard): arr[-1] reads zero -> 0 + 0.1 + 0.2 = 0.3;
+ * g: i from 0 below n = 4 (never negative: one compare): arr[2], arr[3] read zero -> 0.3;
+ * b: i below the constant 2 (inside the array: no guard) -> 0.3;
+ * a: i below the constant 4, past the end (guarded) -> 0.3, plus arr[i] after the loop, i = 4:
+ *    zero -> 0.3. */
+static void guarded_reads_past_either_end(void) {
+    const char *src = "float arr[2]; int n;\n" VS_PASS
+        "float4 ps() : COLOR { float4 c = 0;\n"
+        "  for (int i = -1; i < 2; i++) c.r += arr[i];\n"
+        "  for (int j = 0; j < n; j++) c.g += arr[j];\n"
+        "  for (int k = 0; k < 2; k++) c.b += arr[k];\n"
+        "  int m; for (m = 0; m < 4; m++) c.a += arr[m]; c.a += arr[m];\n"
+        "  return c; }\n" TECH("ps()");
+    const uval u[] = { {"arr", 'f', 2, {0.1f, 0.2f}, {0}}, {"n", 'i', 1, {0}, {4}} };
+    check_pixel(src, u, 2, 0.3f, 0.3f, 0.3f, 0.3f);
+}
+
 static void specialisation(void) {
     const char *src = VS_PASS
         "float4 ps(uniform bool on) : COLOR { if (on) return float4(1, 0, 0, 1); return float4(0, 1, 0, 1); }\n"
@@ -571,6 +589,7 @@ int main(void) {
     RUN(loop_with_break);
     RUN(loop_invariant_hoisted);
     RUN(uniform_array_out_of_range);
+    RUN(guarded_reads_past_either_end);
     RUN(specialisation);
     RUN(global_written_by_shader);
     RUN(truncation_and_vector_select);
