@@ -215,7 +215,7 @@ static uint32_t hoist_in_block(licm *l, ir_stmt *b, uint32_t i) {
     return i + n + 1;
 }
 
-/* A loop that is not in a block (an if's branch, another loop's whole body) gets one, unless
+/* A loop that is not in a block (an if's branch, another loop's whole body, a case) gets one, unless
  * its for-init variable outlives it (HLSL scoping: the printer declares it before the loop). */
 static void hoist_alone(licm *l, ir_stmt **slot) {
     ir_stmt *loop = *slot, *b = HFX_NEW(l->c->arena, ir_stmt);
@@ -230,10 +230,14 @@ static void hoist_alone(licm *l, ir_stmt **slot) {
     if (b->count > 1) *slot = b;
 }
 
+/* A block's or a switch's statements; in a switch a loop's locals get a block of their own
+ * (declared among the cases, a later case would see them undefined). */
 static void licm_block(licm *l, ir_stmt *b) {
     for (uint32_t i = 0; i < b->count;) {
         licm_stmt(l, &b->body[i]);
-        i = is_loop(b->body[i]) ? hoist_in_block(l, b, i) : i + 1;
+        if (!is_loop(b->body[i])) i++;
+        else if (b->kind == IS_SWITCH) hoist_alone(l, &b->body[i++]);
+        else i = hoist_in_block(l, b, i);
     }
 }
 

@@ -17,21 +17,21 @@
 
 static const unsigned ALL = (1u << HFX_TARGET_GLSL330) | (1u << HFX_TARGET_GLSLES300) | (1u << HFX_TARGET_GLSL110);
 
-/* The GLSL 330 pixel shader of VS + body + TECH (malloc'ed), after checking every target links;
- * NULL when something fails. */
-static char *pixel_glsl(const char *body, unsigned flags) {
+/* The GLSL 330 pixel shader of VS + body + TECH (malloc'ed), after checking each of targets
+ * links; NULL when something fails. */
+static char *pixel_glsl_for(const char *body, unsigned flags, unsigned targets) {
     size_t n = strlen(body) + 512;
     char *src = malloc(n), *fs = NULL;
     snprintf(src, n, "%s%s%s", VS, body, TECH);
     hfxc_options o = {0};
-    o.targets = ALL;
+    o.targets = targets;
     o.flags = flags;
     hfxc_result *r = hfxc_compile_memory(src, strlen(src), "licm.fx", &o);
     const hfx_fx_effect *fx = hfxc_result_effect(r);
     bool ok = fx && fx->program_count == 1;
     for (int t = 0; ok && t < HFX_TARGET_COUNT; t++) {
         char *log = NULL;
-        if ((ALL & (1u << t)) && !test_glsl_link(fx->programs[0].code[0][t].data, fx->programs[0].code[1][t].data, &log)) {
+        if ((targets & (1u << t)) && !test_glsl_link(fx->programs[0].code[0][t].data, fx->programs[0].code[1][t].data, &log)) {
             fprintf(stderr, "target %d rejected:\n%s\n%s\n", t, log ? log : "", fx->programs[0].code[1][t].data);
             ok = false;
         }
@@ -43,6 +43,8 @@ static char *pixel_glsl(const char *body, unsigned flags) {
     free(src);
     return fs;
 }
+
+static char *pixel_glsl(const char *body, unsigned flags) { return pixel_glsl_for(body, flags, ALL); }
 
 /* The text from the first "for (" on: what the loops evaluate (or NULL). */
 static const char *loop_part(const char *fs) { return fs ? strstr(fs, "for (") : NULL; }
@@ -131,6 +133,20 @@ static void nested_loops(void) {
     free(fs);
 }
 
+/* A loop as an if's whole branch or among a switch's cases: its locals get a block. */
+static void loops_outside_blocks(void) {
+    char *fs = pixel_glsl_for("int count;\n"
+                              "float4 ps(float3 N : TEXCOORD0) : COLOR { float s = 0;\n"
+                              "  if (count > 1) for (int i = 0; i < count; i++) s += length(N) * i;\n"
+                              "  switch (count) { case 2: for (int j = 0; j < 2; j++) s += length(N) * j; break;\n"
+                              "    default: s += 1; }\n" /* GLSL 110 has no switch */
+                              "  return s; }\n", 0, ALL & ~(1u << HFX_TARGET_GLSL110));
+    CHECK(fs != NULL);
+    CHECK_CONTAINS(fs, "    {\n        float hfx_inv0 = length(N);\n        for (int i = 0;");
+    CHECK_CONTAINS(fs, "    {\n            float hfx_inv1 = length(N);\n            for (int j = 0;");
+    free(fs);
+}
+
 /* Parameter-only work in a loop still becomes a preshader (computed on the CPU). */
 static void preshaders_still_taken(void) {
     char *fs = pixel_glsl("int count; float4 A; float k;\n"
@@ -149,6 +165,7 @@ int main(void) {
     RUN(members_and_globals_written_stay);
     RUN(sampling_and_derivatives_stay);
     RUN(nested_loops);
+    RUN(loops_outside_blocks);
     RUN(preshaders_still_taken);
     return test_summary();
 }
