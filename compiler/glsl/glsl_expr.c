@@ -581,15 +581,17 @@ static void print_swizzle(gp *p, const ir_expr *e, int max) {
     for (unsigned i = 0; i < n; i++) sb_printf(p->out, "%c", "xyzw"[e->comps[i] & 3]);
 }
 
-/* The test that sends a guarded read to zero: one unsigned compare covers both ends; GLSL 110
- * has no uint, so it compares twice, or once when the index is known not to be negative. */
+/* The test that sends a guarded read to zero: only the upper end for an index known not to be
+ * negative; else one unsigned compare for both ends, or two in GLSL 110, which has no uint. */
 static const char *guard_test(const gp *p, const ir_expr *e, const char **suffix) {
     uint32_t len = e->a[0]->var->type->array_len;
     *suffix = "";
+    if (e->range == IR_RANGE_NONNEG) {
+        *suffix = "below"; /* hfx_readbelow_X: no "hfx_read_" + name can spell it */
+        return hfx_arena_printf(p->c->arena, "i >= %u", len);
+    }
     if (!p->legacy) return hfx_arena_printf(p->c->arena, "uint(i) >= %uu", len);
-    if (e->range != IR_RANGE_NONNEG) return hfx_arena_printf(p->c->arena, "i < 0 || i >= %u", len);
-    *suffix = "below"; /* hfx_readbelow_X: no "hfx_read_" + name can spell it */
-    return hfx_arena_printf(p->c->arena, "i >= %u", len);
+    return hfx_arena_printf(p->c->arena, "i < 0 || i >= %u", len);
 }
 
 /* Reads of a uniform array at a dynamic (or out of range) index return zero past the end,

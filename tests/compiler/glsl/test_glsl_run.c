@@ -284,7 +284,7 @@ static void uniform_array_out_of_range(void) {
 
 /* The guards ranges.c thins: arr = {0.1, 0.2}.
  * r: i from -1 (not provably >= 0: the whole guard): arr[-1] reads zero -> 0 + 0.1 + 0.2 = 0.3;
- * g: i from 0 below n = 4 (never negative: one compare): arr[2], arr[3] read zero -> 0.3;
+ * g: i from 0 below n = 4 (never negative: the upper end only): arr[2], arr[3] read zero -> 0.3;
  * b: i below the constant 2 (inside the array: no guard) -> 0.3;
  * a: i below the constant 4, past the end (guarded) -> 0.3, plus arr[i] after the loop, i = 4:
  *    zero -> 0.3. */

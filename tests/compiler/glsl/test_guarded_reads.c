@@ -1,7 +1,8 @@
 /* test_guarded_reads.c: the guard on a uniform array read at a dynamic index (zero past either
- * end, as D3D9). One unsigned compare where GLSL has uint; in GLSL 110 two compares, or one when
- * the index is a for counter that starts at a non-negative constant and only goes up; no guard
- * when such a counter's constant bound keeps it inside the array (lower/ranges.c). */
+ * end, as D3D9). Only the upper end when the index is a for counter that starts at a
+ * non-negative constant and only goes up; no guard when such a counter's constant bound keeps
+ * it inside the array (lower/ranges.c); else one unsigned compare where GLSL has uint, two in
+ * GLSL 110. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -45,23 +46,22 @@ static void check_guard(const char *loop, hfx_target target, const char *helper,
 
 static const char UNSIGNED_HELPER[] = "float hfx_read_arr(int i)\n{\n    if (uint(i) >= 4u) return 0.0;\n    return arr[i];\n}\n";
 static const char BOTH_ENDS_110[] = "float hfx_read_arr(int i)\n{\n    if (i < 0 || i >= 4) return 0.0;\n    return arr[i];\n}\n";
-static const char UPPER_END_110[] =
+static const char UPPER_END[] =
     "float hfx_readbelow_arr(int i)\n{\n    if (i >= 4) return 0.0;\n    return arr[i];\n}\n";
 
-/* Any index where GLSL has uint: one unsigned compare for both ends. */
+/* An index nothing is known of, where GLSL has uint: one unsigned compare for both ends. */
 static void one_unsigned_compare(void) {
     check_guard("s += arr[n];", HFX_TARGET_GLSL330, UNSIGNED_HELPER, "s += hfx_read_arr(n);");
     check_guard("s += arr[n];", HFX_TARGET_GLSLES300, UNSIGNED_HELPER, "s += hfx_read_arr(n);");
-    check_guard("for (int i = 0; i < n; i++) s += arr[i];", HFX_TARGET_GLSL330, UNSIGNED_HELPER,
-                "s += hfx_read_arr(i);");
 }
 
-/* GLSL 110: a counter from 0 (or 1) up, below a bound it cannot pass: only the upper end. */
+/* A counter from 0 (or 1) up, below a bound it cannot step past: only the upper end. */
 static void counter_drops_the_lower_half(void) {
+    check_guard("for (int i = 0; i < n; i++) s += arr[i];", HFX_TARGET_GLSL330, UPPER_END, "s += hfx_readbelow_arr(i);");
     check_guard("s += arr[n];", HFX_TARGET_GLSL110, BOTH_ENDS_110, "s += hfx_read_arr(n);");
-    check_guard("for (int i = 0; i < n; i++) s += arr[i];", HFX_TARGET_GLSL110, UPPER_END_110,
+    check_guard("for (int i = 0; i < n; i++) s += arr[i];", HFX_TARGET_GLSL110, UPPER_END,
                 "s += hfx_readbelow_arr(i);");
-    check_guard("for (int i = 1; i < 6; ++i) s += arr[i];", HFX_TARGET_GLSL110, UPPER_END_110,
+    check_guard("for (int i = 1; i < 6; ++i) s += arr[i];", HFX_TARGET_GLSL110, UPPER_END,
                 "s += hfx_readbelow_arr(i);");
 }
 
@@ -76,8 +76,9 @@ static void constant_bound_drops_the_guard(void) {
  * a counter the body writes, an index computed from the counter, `<=` a bound that is not
  * constant (i could step past INT_MAX), and the counter after the loop. */
 static void out_of_range_keeps_the_guard(void) {
-    check_guard("for (int i = 0; i < 5; i++) s += arr[i];", HFX_TARGET_GLSL330, UNSIGNED_HELPER, "hfx_read_arr(i)");
-    check_guard("for (int i = 0; i < 5; i++) s += arr[i];", HFX_TARGET_GLSL110, UPPER_END_110, "hfx_readbelow_arr(i)");
+    check_guard("for (int i = 0; i < 5; i++) s += arr[i];", HFX_TARGET_GLSLES300, UPPER_END, "hfx_readbelow_arr(i)");
+    check_guard("for (int i = 0; i < 5; i++) s += arr[i];", HFX_TARGET_GLSL110, UPPER_END, "hfx_readbelow_arr(i)");
+    check_guard("for (int i = -1; i < 4; i++) s += arr[i];", HFX_TARGET_GLSL330, UNSIGNED_HELPER, "hfx_read_arr(i)");
     check_guard("for (int i = -1; i < 4; i++) s += arr[i];", HFX_TARGET_GLSL110, BOTH_ENDS_110, "hfx_read_arr(i)");
     check_guard("for (int i = 0; i < 4; i++) { s += arr[i]; i -= n; }", HFX_TARGET_GLSL110, BOTH_ENDS_110,
                 "hfx_read_arr(i)");
