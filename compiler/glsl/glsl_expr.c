@@ -581,20 +581,36 @@ static void print_swizzle(gp *p, const ir_expr *e, int max) {
     for (unsigned i = 0; i < n; i++) sb_printf(p->out, "%c", "xyzw"[e->comps[i] & 3]);
 }
 
+/* The test that sends a guarded read to zero: only the upper end for an index known not to be
+ * negative; else one unsigned compare for both ends, or two in GLSL 110, which has no uint. */
+static const char *guard_test(const gp *p, const ir_expr *e, const char **suffix) {
+    uint32_t len = e->a[0]->var->type->array_len;
+    *suffix = "";
+    if (e->range == IR_RANGE_NONNEG) {
+        *suffix = "below"; /* hfx_readbelow_X: no "hfx_read_" + name can spell it */
+        return hfx_arena_printf(p->c->arena, "i >= %u", len);
+    }
+    if (!p->legacy) return hfx_arena_printf(p->c->arena, "uint(i) >= %uu", len);
+    return hfx_arena_printf(p->c->arena, "i < 0 || i >= %u", len);
+}
+
 /* Reads of a uniform array at a dynamic (or out of range) index return zero past the end,
  * as D3D9's unset constant registers do in practice, instead of GLSL's undefined value. */
 static void print_guarded_read(gp *p, const ir_expr *e) {
     const ir_var *v = e->a[0]->var;
     const hfx_type *at = v->type;
-    const char *fn = hfx_arena_printf(p->c->arena, "hfx_read_%s", v->glsl);
+    const char *suffix, *test = guard_test(p, e, &suffix);
+    const char *fn = hfx_arena_printf(p->c->arena, "hfx_read%s_%s", suffix, v->glsl);
     if (glsl_helper(p, fn)) {
         sbuf *saved = p->out;
         sbuf tmp = {.arena = p->c->arena};
         p->out = &tmp;
         glsl_zero(p, at->elem);
         p->out = saved;
-        sb_printf(&p->helpers, "%s %s(int i)\n{\n    if (i < 0 || i >= %u) return %s;\n    return %s[i];\n}\n",
-                  glsl_ctor_type(p, at->elem), fn, at->array_len, tmp.d ? tmp.d : "0", v->glsl);
+        /* an if, not ?: (glslang's SPIR-V for a ?: of a uniform block's struct and a local one
+         * stores mismatched types) */
+        sb_printf(&p->helpers, "%s %s(int i)\n{\n    if (%s) return %s;\n    return %s[i];\n}\n", glsl_ctor_type(p, at->elem),
+                  fn, test, tmp.d ? tmp.d : "0", v->glsl);
     }
     sb_printf(p->out, "%s(", fn);
     if (e->a[1]->type->base != B_INT) sb_put(p->out, "int(");
@@ -606,7 +622,7 @@ static void print_index(gp *p, const ir_expr *e, int max) {
     const ir_expr *x = e->a[0], *i = e->a[1];
     if (!p->lvalue && x->type->kind == TY_ARRAY && x->kind == IE_VAR &&
         (x->var->kind == IRV_UNIFORM || x->var->kind == IRV_PRIVATE) &&
-        (!ir_is_const(i) || i->cval[0] < 0 || i->cval[0] >= x->type->array_len)) {
+        (!ir_is_const(i) ? e->range != IR_RANGE_IN_BOUNDS : i->cval[0] < 0 || i->cval[0] >= x->type->array_len)) {
         bool saved = p->lvalue;
         p->lvalue = false;
         print_guarded_read(p, e);

@@ -4,8 +4,8 @@
  * resolved to ir_var / ir_func, intrinsics to ir_intrin, implicit conversions are IE_CONVERT.
  * Everything lives in the compilation's arena.
  *
- * Pass order (lower/passes.c, ir_lower): specialise -> intrinsics -> fold -> dce -> globals
- * -> uses -> check.
+ * Pass order (lower/passes.c, ir_lower): specialise -> arrays -> intrinsics -> lvalues -> fold
+ * -> calls -> dce -> globals -> licm -> ranges -> uses -> check.
  * glsl.c prints the result; a preshader or SPIR-V back end would read the same tree. */
 #ifndef HFX_IR_H
 #define HFX_IR_H
@@ -72,6 +72,13 @@ typedef enum {
     IE_FIELD      /* a[0].field */
 } ir_expr_kind;
 
+/* What lower/ranges.c proved of an IE_INDEX's index into an array (the printer's guard). */
+typedef enum {
+    IR_RANGE_ANY,      /* unknown: reads past either end return zero (D3D9) */
+    IR_RANGE_NONNEG,   /* never negative: only the upper end needs the check */
+    IR_RANGE_IN_BOUNDS /* always within the array: no check */
+} ir_index_range;
+
 /* The checker's intrinsic ids (check/intrinsics.def): one table for check, IR and GLSL. */
 typedef hfx_intrinsic_id ir_intrin;
 
@@ -87,6 +94,7 @@ struct ir_expr {
     ir_func *fn;
     ir_intrin intrin;
     uint8_t comps[16], comp_count;
+    uint8_t range;           /* INDEX: an ir_index_range */
     uint32_t field;
     double cval[16];         /* CONST: every base stored as a double (ints and bools exact) */
 };
@@ -152,6 +160,8 @@ void ir_pass_fold(ir_ctx *c, ir_shader *sh);
 void ir_pass_calls(ir_ctx *c, ir_shader *sh);       /* copies of callees with constant arguments bound */
 void ir_pass_dce(ir_ctx *c, ir_shader *sh);
 void ir_pass_globals(ir_ctx *c, ir_shader *sh);
+void ir_pass_licm(ir_ctx *c, ir_shader *sh);       /* loop-invariant work to locals before the loop */
+void ir_pass_ranges(ir_ctx *c, ir_shader *sh);     /* array reads a loop counter keeps in range */
 int ir_pass_check(ir_ctx *c, ir_shader *sh);   /* target limits: reports what GLSL cannot express */
 void ir_pass_uses(ir_ctx *c, ir_shader *sh);
 void ir_pass_preshade(ir_ctx *c, ir_shader *sh);    /* uniform-only work to preshaders (codegen, when packing) */

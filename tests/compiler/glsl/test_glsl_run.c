@@ -250,6 +250,24 @@ static void loop_with_break(void) {
     check_pixel(src, &u, 1, 0.4f, 0.3f, 0.3f, 1);
 }
 
+/* Loop-invariant work computed once before the loop (lower/licm.c) gives the same values.
+ * N.xyz = (3, 0, 4): normalize(N) = (0.6, 0, 0.8), length(N) = 5; n = 3.
+ * r: three iterations of 0.6 * 0.25 -> 0.45;
+ * g: v halves after each iteration, so length(v) * 0.1 is 0.5, 0.25, 0.125 -> 0.875 (v is
+ *    written in the loop: nothing moves);
+ * b: 2 x 2 nested iterations of 0.8 * 0.1 -> 0.32;
+ * a: i * length(N) * 0.02 for i = 0, 1, 2 -> (0 + 1 + 2) * 0.1 = 0.3. */
+static void loop_invariant_hoisted(void) {
+    const char *src = "float4 N; int n;\n" VS_PASS
+        "float4 ps() : COLOR { float4 c = 0; float3 v = N.xyz;\n"
+        "  for (int i = 0; i < n; i++) { c.r += normalize(N.xyz).x * 0.25; c.g += length(v) * 0.1; v = v * 0.5;\n"
+        "    c.a += i * (length(N.xyz) * 0.02); }\n"
+        "  for (int j = 0; j < 2; j++) for (int k = 0; k < 2; k++) c.b += normalize(N.xyz).z * 0.1;\n"
+        "  return c; }\n" TECH("ps()");
+    const uval u[] = { {"N", 'v', 1, {3, 0, 4, 0}, {0}}, {"n", 'i', 1, {0}, {3}} };
+    check_pixel(src, u, 2, 0.45f, 0.875f, 0.32f, 0.3f);
+}
+
 static void uniform_array_out_of_range(void) {
     /* arr = {0.1, 0.2}; the loop runs to 4: elements 2 and 3 read zero -> 0.3 */
     const char *src = "float arr[2]; int count;\n" VS_PASS
@@ -262,6 +280,24 @@ static void uniform_array_out_of_range(void) {
         "float4 ps() : COLOR { arr[count - 4] *= 2; float s = 0; for (int i = 0; i < count; i++) s += arr[i];\n"
         "  return float4(s, 0, 0, 1); }\n" TECH("ps()");
     check_pixel(written, u, 2, 0.4f, 0, 0, 1);
+}
+
+/* The guards ranges.c thins: arr = {0.1, 0.2}.
+ * r: i from -1 (not provably >= 0: the whole guard): arr[-1] reads zero -> 0 + 0.1 + 0.2 = 0.3;
+ * g: i from 0 below n = 4 (never negative: the upper end only): arr[2], arr[3] read zero -> 0.3;
+ * b: i below the constant 2 (inside the array: no guard) -> 0.3;
+ * a: i below the constant 4, past the end (guarded) -> 0.3, plus arr[i] after the loop, i = 4:
+ *    zero -> 0.3. */
+static void guarded_reads_past_either_end(void) {
+    const char *src = "float arr[2]; int n;\n" VS_PASS
+        "float4 ps() : COLOR { float4 c = 0;\n"
+        "  for (int i = -1; i < 2; i++) c.r += arr[i];\n"
+        "  for (int j = 0; j < n; j++) c.g += arr[j];\n"
+        "  for (int k = 0; k < 2; k++) c.b += arr[k];\n"
+        "  int m; for (m = 0; m < 4; m++) c.a += arr[m]; c.a += arr[m];\n"
+        "  return c; }\n" TECH("ps()");
+    const uval u[] = { {"arr", 'f', 2, {0.1f, 0.2f}, {0}}, {"n", 'i', 1, {0}, {4}} };
+    check_pixel(src, u, 2, 0.3f, 0.3f, 0.3f, 0.3f);
 }
 
 static void specialisation(void) {
@@ -551,7 +587,9 @@ int main(void) {
     RUN(lerp_lit_saturate);
     RUN(lit_negative);
     RUN(loop_with_break);
+    RUN(loop_invariant_hoisted);
     RUN(uniform_array_out_of_range);
+    RUN(guarded_reads_past_either_end);
     RUN(specialisation);
     RUN(global_written_by_shader);
     RUN(truncation_and_vector_select);
