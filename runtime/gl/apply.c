@@ -120,9 +120,10 @@ int hfx_pass_apply(hfx_pass *p) {
     hfx_effect *fx = p->fx;
     if (fx->dev->applied != p) return apply_first(p);
     hfx_rt_program *prog = p->rt->prog;
-    if (prog->switch_count) { /* the variant apply_full picked, while the switches keep their values */
-        if (hfx_rt_switch_mask(prog, fx->values) != p->switch_mask) return apply_first(p);
+    if (prog->switch_count) { /* the variant apply_full picked; a bool can change only with the log */
+        hfx_rt_program *base = prog;
         prog = p->switched;
+        if (prog->memo_seen != fx->log_len && hfx_rt_switch_mask(base, fx->values) != p->switch_mask) return apply_first(p);
     }
     uint64_t seen = prog->memo_seen;
     if (seen == fx->log_len) return HFX_OK;

@@ -63,6 +63,18 @@ static void float_intrinsics(void) {
                 "  return r; }\n", ALL));
 }
 
+/* The GLSL 330 pixel stage of VS + body + TECH (one program), or NULL; *r to free. */
+static const char *fragment_330(const char *body, hfxc_result **r) {
+    char src[512];
+    snprintf(src, sizeof src, "%s%s%s", VS, body, TECH);
+    hfxc_options o = {0};
+    o.targets = 1u << HFX_TARGET_GLSL330;
+    *r = hfxc_compile_memory(src, strlen(src), "f.fx", &o);
+    const hfx_fx_effect *fx = hfxc_result_effect(*r);
+    CHECK(fx && fx->program_count == 1);
+    return fx && fx->program_count == 1 ? fx->programs[0].code[1][HFX_TARGET_GLSL330].data : NULL;
+}
+
 /* pow(x, 1..4) of an expression: products in one helper per power and type (fxc expands small
  * constant powers so; exp2 / log2 cost llvmpipe several times more), accepted by every target. */
 static void pow_small_powers_by_helpers(void) {
@@ -70,15 +82,9 @@ static void pow_small_powers_by_helpers(void) {
         "float4 ps() : COLOR { float4 r = pow(v * 2, 1) + pow(v + 1, 2) + pow(v - s, 3);\n"
         "  r.xyz += pow(v.xyz * s, 4); r.x += pow(s + 1, 2); return r; }\n";
     CHECK(links(body, ALL));
-    char src[512];
-    snprintf(src, sizeof src, "%s%s%s", VS, body, TECH);
-    hfxc_options o = {0};
-    o.targets = 1u << HFX_TARGET_GLSL330;
-    hfxc_result *r = hfxc_compile_memory(src, strlen(src), "f.fx", &o);
-    const hfx_fx_effect *fx = hfxc_result_effect(r);
-    CHECK(fx && fx->program_count == 1);
-    if (fx && fx->program_count == 1) {
-        const char *fs = fx->programs[0].code[1][HFX_TARGET_GLSL330].data;
+    hfxc_result *r = NULL;
+    const char *fs = fragment_330(body, &r);
+    if (fs) {
         CHECK_CONTAINS(fs, "vec4 hfx_pow1(vec4 x) { return abs(x); }");
         CHECK_CONTAINS(fs, "vec4 hfx_pow2(vec4 x) { return x * x; }");
         CHECK_CONTAINS(fs, "vec4 hfx_pow3(vec4 x) { return abs(x) * x * x; }");
@@ -96,15 +102,9 @@ static void pow_of_a_nonnegative_base(void) {
         "float4 ps() : COLOR { return float4(pow(saturate(s), v.x), pow(max(s, 0), v.y), pow(clamp(s, 0.5, 2), v.z),\n"
         "  pow(length(v), v.w)) + pow(max(s, -1), v) + pow(s, v.x); }\n";
     CHECK(links(body, ALL));
-    char src[512];
-    snprintf(src, sizeof src, "%s%s%s", VS, body, TECH);
-    hfxc_options o = {0};
-    o.targets = 1u << HFX_TARGET_GLSL330;
-    hfxc_result *r = hfxc_compile_memory(src, strlen(src), "f.fx", &o);
-    const hfx_fx_effect *fx = hfxc_result_effect(r);
-    CHECK(fx && fx->program_count == 1);
-    if (fx && fx->program_count == 1) {
-        const char *fs = fx->programs[0].code[1][HFX_TARGET_GLSL330].data;
+    hfxc_result *r = NULL;
+    const char *fs = fragment_330(body, &r);
+    if (fs) {
         CHECK_CONTAINS(fs, "exp2(v.x * max(log2(clamp(s, 0.0, 1.0)), -3.40282347e+38))");
         CHECK_CONTAINS(fs, "exp2(v.y * max(log2(max(s, 0.0)), -3.40282347e+38))");
         CHECK_CONTAINS(fs, "exp2(v.z * max(log2(clamp(s, 0.5, 2.0)), -3.40282347e+38))");
