@@ -151,6 +151,7 @@ static uint32_t parameter_regs(const ir_ctx *c, const ir_shader *sh) {
 void ir_pass_preshade(ir_ctx *c, ir_shader *sh) {
     pre p = {c, sh, parameter_regs(c, sh)};
     ir_pass_forward(c, sh);
+    ir_pass_factors(c, sh);
     entry_assignments(&p);
     for (uint32_t i = 0; i < sh->func_count; i++) ir_walk_stmt_roots(c, sh->funcs[i]->body, root, &p);
     for (uint32_t i = 0; i < sh->global_count; i++)

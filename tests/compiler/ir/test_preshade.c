@@ -136,24 +136,27 @@ static const hfx_fx_program *first_program(hfxc_result **out, const char *path, 
 static const char *glsl_of(const hfx_fx_program *p, int stage) { return p->code[stage][HFX_TARGET_GLSL330].data; }
 
 /* spot_specular.fx: the vertex shader's mul(world, mul(view, projection)) and the pixel
- * shader's normalize(posicionLuz - blancoLuz), cos(anguloInterno) and cos(anguloExterno). The
- * pixel stage goes first: its twelve scalars and vectors take registers 0..11, its preshaders
- * 12, 13, 14; then the vertex stage's world 15..18 and its matrix 19..22. */
+ * shader's normalize(posicionLuz - blancoLuz), ks * colorMaterialEspecular (the specular term's
+ * parameter factors, put together by lower/factors.c), cos(anguloInterno) and
+ * cos(anguloExterno). The pixel stage goes first: the ten scalars and vectors it reads as they
+ * are take registers 0..9, its preshaders 10..13; then the vertex stage's world 14..17 and its
+ * matrix 18..21. */
 static void the_glsl_says_what_a_register_holds(void) {
     char *path = test_seed_path("spot_specular.fx");
     hfxc_result *r;
     const hfx_fx_program *p = first_program(&r, path, NULL, NULL);
     if (p) {
         const char *vs = glsl_of(p, HFX_STAGE_VERTEX), *ps = glsl_of(p, HFX_STAGE_FRAGMENT);
-        CHECK_CONTAINS(vs, "mat4 hfx_pre0; // hfx_c[19..22] = mul(world, mul(view, projection)), computed on the CPU (a preshader)\n");
-        CHECK_CONTAINS(vs, "    hfx_pre0 = mat4(hfx_c[19], hfx_c[20], hfx_c[21], hfx_c[22]);\n");
+        CHECK_CONTAINS(vs, "mat4 hfx_pre0; // hfx_c[18..21] = mul(world, mul(view, projection)), computed on the CPU (a preshader)\n");
+        CHECK_CONTAINS(vs, "    hfx_pre0 = mat4(hfx_c[18], hfx_c[19], hfx_c[20], hfx_c[21]);\n");
         CHECK_CONTAINS(vs, "    salida.Posicion = hfx_pre0 * entrada.Posicion;\n"); /* mvp, read once, moved forward */
-        CHECK_CONTAINS(ps, "vec3 hfx_pre0; // hfx_c[12] = normalize(posicionLuz - blancoLuz), computed on the CPU (a preshader)\n");
-        CHECK_CONTAINS(ps, "float hfx_pre1; // hfx_c[13] = cos(anguloInterno), computed on the CPU (a preshader)\n");
-        CHECK_CONTAINS(ps, "float hfx_pre2; // hfx_c[14] = cos(anguloExterno), computed on the CPU (a preshader)\n");
-        CHECK_CONTAINS(vs, "mat4 world; // hfx_c[15..18]\n");
-        CHECK_INT(p->reg_count, 23);
-        CHECK_INT(p->preshader_count, 4);
+        CHECK_CONTAINS(ps, "vec3 hfx_pre0; // hfx_c[10] = normalize(posicionLuz - blancoLuz), computed on the CPU (a preshader)\n");
+        CHECK_CONTAINS(ps, "vec4 hfx_pre1; // hfx_c[11] = ((float4)ks * colorMaterialEspecular), computed on the CPU (a preshader)\n");
+        CHECK_CONTAINS(ps, "float hfx_pre2; // hfx_c[12] = cos(anguloInterno), computed on the CPU (a preshader)\n");
+        CHECK_CONTAINS(ps, "float hfx_pre3; // hfx_c[13] = cos(anguloExterno), computed on the CPU (a preshader)\n");
+        CHECK_CONTAINS(vs, "mat4 world; // hfx_c[14..17]\n");
+        CHECK_INT(p->reg_count, 22);
+        CHECK_INT(p->preshader_count, 5);
     }
     hfxc_result_free(r);
     free(path);
@@ -217,6 +220,41 @@ static void transforms_in_turn_regroup(void) {
     hfxc_result_free(r);
 }
 
+/* lower/factors.c: a vector product's scalar factors are multiplied first, its parameters'
+ * factors together (one preshader: k * Tint), then the vectors; a product with one scalar, an
+ * integer one, and a shader compiled without preshaders keep the order written. */
+static void products_take_scalars_first(void) {
+    static const char src[] =
+        "float4 Tint; float k; sampler S;\n"
+        "float4 VS(float4 p : POSITION0) : POSITION0 { return p; }\n"
+        "float4 PS(float2 uv : TEXCOORD0) : COLOR0 { float4 t = tex2D(S, uv);\n"
+        "  float4 a = k * t * t.x * Tint * t.y;\n"
+        "  float4 b = t * t.z;\n"
+        "  int4 c = (int4)(t * 8) * (int)(t.x * 8) * 2;\n"
+        "  return a + b + c + 2 * t * t.w; }\n"
+        "technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }\n";
+    hfxc_result *r;
+    const hfx_fx_program *p = first_program(&r, NULL, src, "factors.fx");
+    if (p) {
+        const char *ps = glsl_of(p, HFX_STAGE_FRAGMENT);
+        CHECK_CONTAINS(ps, "vec4 hfx_pre0; // hfx_c[0] = ((float4)k * Tint), computed on the CPU (a preshader)\n");
+        CHECK_CONTAINS(ps, "vec4 a = t.x * t.y * hfx_pre0 * t;\n");
+        CHECK_CONTAINS(ps, "vec4 b = t * t.z;\n");
+        CHECK_CONTAINS(ps, "ivec4(t * vec4(8.0)) * int(t.x * 8.0) * ivec4(2)"); /* integers: as written */
+        CHECK_CONTAINS(ps, "2.0 * t.w * t");
+    }
+    hfxc_result_free(r);
+    hfxc_options o = {0};
+    o.targets = 1u << HFX_TARGET_GLSL330;
+    o.flags = HFXC_PACK_UNIFORMS | HFXC_NO_WARNINGS | HFXC_NO_PRESHADERS;
+    r = hfxc_compile_memory(src, strlen(src), "factors.fx", &o);
+    const hfx_fx_effect *fx = hfxc_result_effect(r);
+    CHECK(fx != NULL && fx->program_count == 1);
+    if (fx && fx->program_count == 1)
+        CHECK_CONTAINS(glsl_of(&fx->programs[0], HFX_STAGE_FRAGMENT), "vec4 a = k * t * t.x * Tint * t.y;\n");
+    hfxc_result_free(r);
+}
+
 /* The register file, pixel stage first: the parameters it reads as they are (in parameter
  * order), its preshaders, the parameters it copies, then the vertex stage's parameters and
  * preshaders. Gain, read by both stages, counts as the pixel stage's; World and ViewProj are read
@@ -225,7 +263,7 @@ static void pixel_registers_come_first(void) {
     static const char src[] =
         "float4x4 World; float4x4 ViewProj; float4 Tint; float3 L; float Gain; float4 Bias;\n"
         "float4 VS(float4 p : POSITION0) : POSITION0 { return mul(p, mul(World, ViewProj)) * Gain + Bias; }\n"
-        "float4 PS(float3 n : TEXCOORD0) : COLOR0 { L = normalize(L); return Tint * dot(L, n) * Gain; }\n"
+        "float4 PS(float3 n : TEXCOORD0) : COLOR0 { L = normalize(L); return Tint * dot(L, n) + Gain; }\n"
         "technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }\n";
     hfxc_result *r;
     const hfx_fx_program *p = first_program(&r, NULL, src, "order.fx");
@@ -268,6 +306,7 @@ int main(void) {
     RUN(a_parameter_normalised_in_place);
     RUN(transforms_in_turn_regroup);
     RUN(pixel_registers_come_first);
+    RUN(products_take_scalars_first);
     test_seeds_or_finish();
     RUN(seed_pixel_shaders_read_register_0);
     RUN(seeds_keep_nothing);
