@@ -166,6 +166,7 @@ int ir_pass_check(ir_ctx *c, ir_shader *sh);   /* target limits: reports what GL
 void ir_pass_uses(ir_ctx *c, ir_shader *sh);
 void ir_pass_preshade(ir_ctx *c, ir_shader *sh);    /* uniform-only work to preshaders (codegen, when packing) */
 void ir_pass_forward(ir_ctx *c, ir_shader *sh);     /* single-use locals forward, mul chains regrouped (preshade's first step) */
+void ir_pass_sums(ir_ctx *c, ir_shader *sh);        /* a loop's sum of parameter-only terms, added once before it (preshade's) */
 void ir_pass_factors(ir_ctx *c, ir_shader *sh);     /* vector products: parameters, then scalars, then vectors (preshade's) */
 
 /* Preshaders' pieces (pre_code.c). */

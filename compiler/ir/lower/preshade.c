@@ -150,6 +150,7 @@ static uint32_t parameter_regs(const ir_ctx *c, const ir_shader *sh) {
 
 void ir_pass_preshade(ir_ctx *c, ir_shader *sh) {
     pre p = {c, sh, parameter_regs(c, sh)};
+    ir_pass_sums(c, sh);
     ir_pass_forward(c, sh);
     ir_pass_factors(c, sh);
     entry_assignments(&p);

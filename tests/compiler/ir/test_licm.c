@@ -147,11 +147,12 @@ static void loops_outside_blocks(void) {
     free(fs);
 }
 
-/* Parameter-only work in a loop still becomes a preshader (computed on the CPU). */
+/* Parameter-only work in a loop still becomes a preshader (computed on the CPU); a term added
+ * as it is would go before the loop whole (lower/sums.c), so this one is multiplied. */
 static void preshaders_still_taken(void) {
     char *fs = pixel_glsl("int count; float4 A; float k;\n"
                           "float4 ps(float3 N : TEXCOORD0) : COLOR { float4 s = 0;\n"
-                          "  for (int i = 0; i < count; i++) s += A * k + i;\n"
+                          "  for (int i = 0; i < count; i++) s += A * k * i;\n"
                           "  return s; }\n", HFXC_PACK_UNIFORMS);
     CHECK(fs != NULL);
     CHECK_CONTAINS(fs, "vec4 hfx_pre0; // hfx_c[0] = (A * (float4)k), computed on the CPU");

@@ -255,6 +255,38 @@ static void products_take_scalars_first(void) {
     hfxc_result_free(r);
 }
 
+/* lower/sums.c: a counted loop's sum gives its parameter-only terms (licm's local among them)
+ * to one addition before the loop, times the trips, which a preshader computes; a loop that
+ * breaks, an accumulator read in the loop, an addition under an if and a `<=` bound stay. */
+static void sums_add_invariant_terms_once(void) {
+    static const char src[] =
+        "float4 Amb; float k; int n; sampler S;\n"
+        "float4 VS(float4 p : POSITION0) : POSITION0 { return p; }\n"
+        "float4 PS(float2 uv : TEXCOORD0) : COLOR0 { float4 a = 0, b = 0, c = 0, d = 0, e = 0;\n"
+        "  for (int i = 2; i < n; i++) a += Amb * k + tex2D(S, uv * i);\n"
+        "  for (int j = 0; j < n; j++) { b += Amb + uv.x; if (b.x > 1) break; }\n"
+        "  for (int l = 0; l < n; l++) c += Amb + c.x;\n"
+        "  for (int m = 0; m < n; m++) if (uv.y > 0.5) d += Amb;\n"
+        "  for (int q = 0; q <= n; q++) e += Amb;\n"
+        "  return a + b + c + d + e; }\n"
+        "technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }\n";
+    hfxc_result *r;
+    const hfx_fx_program *p = first_program(&r, NULL, src, "sums.fx");
+    if (p) {
+        const char *ps = glsl_of(p, HFX_STAGE_FRAGMENT);
+        CHECK_CONTAINS(ps, "vec4 hfx_pre0; // hfx_c[1] = ((Amb * (float4)k) * (float4)(float)((n > 2) ? (n - 2) : 0)), "
+                           "computed on the CPU (a preshader)\n");
+        CHECK_CONTAINS(ps, "    a += hfx_pre0;\n    for (int i = 2; i < n; i++)\n    {\n        a += texture(S, uv * vec2(i));\n");
+        CHECK(strstr(ps, "hfx_inv0") == NULL); /* licm's local for Amb * k: read by nothing now, gone */
+        CHECK_CONTAINS(ps, "vec4 hfx_inv1 = Amb + uv.x;\n    for (int j = 0; j < n; j++)\n    {\n        b += hfx_inv1;\n");
+        CHECK_CONTAINS(ps, "c += Amb + c.x;");
+        CHECK_CONTAINS(ps, "d += Amb;");
+        CHECK_CONTAINS(ps, "e += Amb;");
+        CHECK_INT(p->preshader_count, 1);
+    }
+    hfxc_result_free(r);
+}
+
 /* The register file, pixel stage first: the parameters it reads as they are (in parameter
  * order), its preshaders, the parameters it copies, then the vertex stage's parameters and
  * preshaders. Gain, read by both stages, counts as the pixel stage's; World and ViewProj are read
@@ -307,6 +339,7 @@ int main(void) {
     RUN(transforms_in_turn_regroup);
     RUN(pixel_registers_come_first);
     RUN(products_take_scalars_first);
+    RUN(sums_add_invariant_terms_once);
     test_seeds_or_finish();
     RUN(seed_pixel_shaders_read_register_0);
     RUN(seeds_keep_nothing);

@@ -1,0 +1,260 @@
+/* sums.c: the loop-invariant terms of a sum a loop accumulates, added once. pointlights.fx adds
+ * `AmbientColor * AmbientIntensity` to its colour once per light; a hand-written shader adds it
+ * times the number of lights, before the loop. For a counted loop
+ *     for (int i = C; i < N; i++) body      (C a constant, N parameter-only, i not assigned in
+ *                                            the body, no break, continue, return or discard)
+ * a statement `acc += t1 + t2 + ...` directly in the body, acc a local the loop reads and writes
+ * nowhere else, gives its parameter-only terms (or a local licm declared from parameters alone
+ * right before the loop) to one statement before the loop:
+ *     acc += (t1 + ...) * (float)(N > C ? N - C : 0);
+ * which the preshade pass then takes whole, leaving one addition per pixel. The result is the
+ * same sum added in another order (float rounding aside). Run by ir_pass_preshade, so
+ * --no-preshaders keeps the loop as written. */
+#include "ir/ir.h"
+
+enum { MAX_TERMS = 16 };
+
+typedef struct counted { const ir_var *i; double from; ir_expr *bound; } counted;
+
+static bool param_only(const ir_ctx *c, const ir_expr *e) {
+    for (uint32_t i = 0; i < e->n; i++)
+        if (!param_only(c, e->a[i])) return false;
+    return ir_pre_node(c, e);
+}
+
+static bool is_var(const ir_expr *e, const ir_var *v) { return e && e->kind == IE_VAR && e->var == v; }
+
+static bool int_scalar(const hfx_type *t) { return t->kind == TY_SCALAR && t->base == B_INT; }
+
+/* ---- the loop's shape ---- */
+
+static const ir_var *counter_start(const ir_stmt *init, double *from) {
+    if (!init) return NULL;
+    if (init->kind == IS_DECL && init->expr && init->expr->kind == IE_CONST && int_scalar(init->var->type)) {
+        *from = init->expr->cval[0];
+        return init->var;
+    }
+    const ir_expr *e = init->kind == IS_EXPR ? init->expr : NULL;
+    if (e && e->kind == IE_ASSIGN && e->op == OP_NONE && e->a[0]->kind == IE_VAR && e->a[1]->kind == IE_CONST &&
+        int_scalar(e->a[0]->type)) {
+        *from = e->a[1]->cval[0];
+        return e->a[0]->var;
+    }
+    return NULL;
+}
+
+static bool steps_by_one(const ir_expr *e, const ir_var *i) {
+    if (!e) return false;
+    if (e->kind == IE_UNARY && (e->op == OP_POSTINC || e->op == OP_PREINC)) return is_var(e->a[0], i);
+    return e->kind == IE_ASSIGN && e->op == OP_ADD && is_var(e->a[0], i) && e->a[1]->kind == IE_CONST &&
+           e->a[1]->cval[0] == 1;
+}
+
+/* Counts of one variable's reads and writes in a subtree. */
+typedef struct touch { const ir_var *v; unsigned reads, writes; bool jumps; } touch;
+
+static void touch_expr(touch *t, const ir_expr *e, bool lvalue) {
+    if (!e) return;
+    if (e->kind == IE_VAR) {
+        if (e->var == t->v) lvalue ? t->writes++ : t->reads++;
+        return;
+    }
+    for (uint32_t k = 0; k < e->n; k++) {
+        bool target = ir_writes_operand(e, k);
+        bool place = lvalue && (k == 0 || e->kind == IE_CONSTRUCT);
+        if (target && e->kind == IE_ASSIGN && e->op != OP_NONE) touch_expr(t, e->a[k], false); /* += reads too */
+        touch_expr(t, e->a[k], target || place);
+    }
+}
+
+static void touch_stmt(touch *t, const ir_stmt *s) {
+    if (!s) return;
+    if (s->kind == IS_BREAK || s->kind == IS_CONTINUE || s->kind == IS_RETURN || s->kind == IS_DISCARD) t->jumps = true;
+    if (s->kind == IS_DECL && s->var == t->v) t->writes++;
+    touch_stmt(t, s->init);
+    touch_expr(t, s->expr, false);
+    touch_expr(t, s->step, false);
+    for (uint32_t k = 0; k < s->count; k++) touch_stmt(t, s->body[k]);
+    touch_stmt(t, s->then_s);
+    touch_stmt(t, s->else_s);
+}
+
+static bool counted_loop(const ir_ctx *c, const ir_stmt *loop, counted *out) {
+    const ir_expr *cond = loop->expr;
+    if (loop->kind != IS_FOR || loop->max_iterations || !cond || cond->kind != IE_BINARY || cond->op != OP_LT) return false;
+    out->i = counter_start(loop->init, &out->from);
+    if (!out->i || !is_var(cond->a[0], out->i) || !int_scalar(cond->a[1]->type) || !param_only(c, cond->a[1]) ||
+        !steps_by_one(loop->step, out->i))
+        return false;
+    touch t = {out->i, 0, 0, false};
+    touch_stmt(&t, loop->then_s);
+    out->bound = cond->a[1];
+    return !t.jumps && t.writes == 0;
+}
+
+/* ---- the sum ---- */
+
+/* A loop's moves: the statements to run before it, and the locals whose values moved. */
+typedef struct moves { ir_stmt *before[MAX_TERMS]; const ir_var *locals[MAX_TERMS]; unsigned nb, nl; } moves;
+
+typedef struct terms { ir_expr *kept[MAX_TERMS], *moved[MAX_TERMS]; unsigned nk, nm; bool ok; } terms;
+
+/* The parameter-only value of term t, before the loop at b->body[at]: t itself, or the
+ * initialiser of a local declared (licm's) among the declarations right before the loop. */
+static ir_expr *invariant_value(const ir_ctx *c, const ir_stmt *b, uint32_t at, ir_expr *t, moves *m) {
+    if (param_only(c, t)) return t;
+    if (t->kind != IE_VAR || t->var->kind != IRV_LOCAL) return NULL;
+    for (uint32_t k = at; k-- > 0 && b->body[k]->kind == IS_DECL;) {
+        if (b->body[k]->var != t->var) continue;
+        if (!b->body[k]->expr || !param_only(c, b->body[k]->expr) || m->nl == MAX_TERMS) return NULL;
+        m->locals[m->nl++] = t->var;
+        return b->body[k]->expr;
+    }
+    return NULL;
+}
+
+static void split(const ir_ctx *c, const ir_stmt *b, uint32_t at, ir_expr *e, const hfx_type *ty, terms *ts, moves *m) {
+    if (e->kind == IE_BINARY && e->op == OP_ADD && e->type == ty) {
+        split(c, b, at, e->a[0], ty, ts, m);
+        split(c, b, at, e->a[1], ty, ts, m);
+        return;
+    }
+    ir_expr *v = ts->nk == MAX_TERMS || ts->nm == MAX_TERMS ? NULL : invariant_value(c, b, at, e, m);
+    if (ts->nk == MAX_TERMS || ts->nm == MAX_TERMS) ts->ok = false;
+    else if (v) ts->moved[ts->nm++] = v;
+    else ts->kept[ts->nk++] = e;
+}
+
+static ir_expr *binary(ir_ctx *c, hfx_op op, const hfx_type *t, ir_expr *a, ir_expr *b) {
+    ir_expr *e = ir_new_expr(c, IE_BINARY, t, a->loc, 2);
+    e->op = op;
+    e->a[0] = a;
+    e->a[1] = b;
+    return e;
+}
+
+static ir_expr *sum_of(ir_ctx *c, ir_expr *const *t, unsigned n, const hfx_type *ty, bool clone) {
+    ir_expr *s = NULL;
+    for (unsigned k = 0; k < n; k++) {
+        ir_expr *x = clone ? ir_clone_expr(c, t[k]) : t[k];
+        s = s ? binary(c, OP_ADD, ty, s, x) : x;
+    }
+    return s;
+}
+
+/* (float)(N > C ? N - C : 0), as acc's type: how many times the loop runs. */
+static ir_expr *trips(ir_ctx *c, const counted *k, const hfx_type *ty) {
+    const hfx_type *i = k->bound->type, *f = hfx_type_scalar(c->types, ty->base);
+    hfx_loc loc = k->bound->loc;
+    ir_expr *from = ir_const_scalar(c, i, k->from, loc), *n = ir_clone_expr(c, k->bound);
+    ir_expr *sel = ir_new_expr(c, IE_SELECT, i, loc, 3);
+    sel->a[0] = binary(c, OP_GT, hfx_type_scalar(c->types, B_BOOL), n, from);
+    sel->a[1] = k->from == 0 ? ir_clone_expr(c, k->bound) : binary(c, OP_SUB, i, ir_clone_expr(c, k->bound), ir_clone_expr(c, from));
+    sel->a[2] = ir_const_scalar(c, i, 0, loc);
+    ir_expr *r = ir_new_expr(c, IE_CONVERT, f, loc, 1);
+    r->a[0] = sel;
+    if (ty->kind == TY_SCALAR) return r;
+    ir_expr *v = ir_new_expr(c, IE_CONVERT, ty, loc, 1);
+    v->a[0] = r;
+    return v;
+}
+
+/* `acc += ...` in the loop's body whose invariant terms may move; acc the local it adds to. */
+static const ir_var *accumulator(const ir_stmt *s, const ir_stmt *loop) {
+    const ir_expr *e = s->kind == IS_EXPR ? s->expr : NULL;
+    if (!e || e->kind != IE_ASSIGN || e->op != OP_ADD || e->a[0]->kind != IE_VAR) return NULL;
+    const ir_var *acc = e->a[0]->var;
+    if (acc->kind != IRV_LOCAL || (acc->type->base != B_FLOAT && acc->type->base != B_HALF) ||
+        (acc->type->kind != TY_SCALAR && acc->type->kind != TY_VECTOR))
+        return NULL;
+    touch t = {acc, 0, 0, false};
+    touch_stmt(&t, loop);
+    return t.reads == 1 && t.writes == 1 ? acc : NULL; /* the += alone */
+}
+
+static ir_stmt *statement(ir_ctx *c, ir_expr *e) {
+    ir_stmt *s = HFX_NEW(c->arena, ir_stmt);
+    if (!s) return NULL;
+    s->kind = IS_EXPR;
+    s->loc = e->loc;
+    s->expr = e;
+    return s;
+}
+
+/* The invariant part of body statement s, as a statement to run before the loop, or NULL. */
+static ir_stmt *take_invariant(ir_ctx *c, ir_stmt *b, uint32_t at, ir_stmt *s, const counted *k, moves *m) {
+    const ir_var *acc = accumulator(s, b->body[at]);
+    if (!acc) return NULL;
+    ir_expr *e = s->expr;
+    terms ts = {.ok = true};
+    unsigned locals = m->nl;
+    split(c, b, at, e->a[1], acc->type, &ts, m);
+    if (!ts.ok || !ts.nm) {
+        m->nl = locals;
+        return NULL;
+    }
+    ir_expr *before = ir_new_expr(c, IE_ASSIGN, acc->type, e->loc, 2);
+    before->op = OP_ADD;
+    before->a[0] = ir_clone_expr(c, e->a[0]);
+    before->a[1] = binary(c, OP_MUL, acc->type, sum_of(c, ts.moved, ts.nm, acc->type, true), trips(c, k, acc->type));
+    if (ts.nk) e->a[1] = sum_of(c, ts.kept, ts.nk, acc->type, false);
+    else s->kind = IS_BLOCK, s->expr = NULL, s->count = 0; /* nothing left to add in the loop */
+    return statement(c, before);
+}
+
+/* Block b with the statements of m before its statement `at`; returns the loop's new index. */
+static uint32_t insert(ir_ctx *c, ir_stmt *b, uint32_t at, const moves *m) {
+    ir_stmt **body = HFX_NEW_ARRAY(c->arena, ir_stmt *, b->count + m->nb);
+    if (!body) return at;
+    for (uint32_t k = 0; k < at; k++) body[k] = b->body[k];
+    for (uint32_t k = 0; k < m->nb; k++) body[at + k] = m->before[k];
+    for (uint32_t k = at; k < b->count; k++) body[k + m->nb] = b->body[k];
+    b->body = body;
+    b->count += m->nb;
+    return at + m->nb;
+}
+
+/* The declarations of the locals whose values moved, when nothing reads them any more. */
+static uint32_t drop_unread(ir_stmt *b, uint32_t at, const moves *m) {
+    for (uint32_t j = 0; j < at;) {
+        touch t = {b->body[j]->var, 0, 0, false};
+        bool moved = false;
+        for (unsigned k = 0; k < m->nl; k++) moved |= b->body[j]->kind == IS_DECL && m->locals[k] == t.v;
+        if (moved) touch_stmt(&t, b);
+        if (!moved || t.reads) { j++; continue; }
+        for (uint32_t k = j; k + 1 < b->count; k++) b->body[k] = b->body[k + 1];
+        b->count--, at--;
+    }
+    return at;
+}
+
+/* Statement `at` of block b, a loop: its sums' invariant terms go in before it. Returns the
+ * loop's index afterwards. */
+static uint32_t sums_of_loop(ir_ctx *c, ir_stmt *b, uint32_t at) {
+    counted k;
+    moves m = {0};
+    ir_stmt *loop = b->body[at], *body = loop->then_s;
+    if (!counted_loop(c, loop, &k) || !body) return at;
+    ir_stmt **list = body->kind == IS_BLOCK ? body->body : &loop->then_s;
+    uint32_t n = body->kind == IS_BLOCK ? body->count : 1;
+    for (uint32_t s = 0; s < n && m.nb < MAX_TERMS; s++) {
+        ir_stmt *before = take_invariant(c, b, at, list[s], &k, &m);
+        if (before) m.before[m.nb++] = before;
+    }
+    if (!m.nb) return at;
+    return drop_unread(b, insert(c, b, at, &m), &m);
+}
+
+static void sums_stmt(ir_ctx *c, ir_stmt *s) {
+    if (!s) return;
+    for (uint32_t k = 0; k < s->count; k++) {
+        sums_stmt(c, s->body[k]);
+        if (s->kind == IS_BLOCK && s->body[k]->kind == IS_FOR) k = sums_of_loop(c, s, k);
+    }
+    sums_stmt(c, s->then_s);
+    sums_stmt(c, s->else_s);
+}
+
+void ir_pass_sums(ir_ctx *c, ir_shader *sh) {
+    for (uint32_t i = 0; i < sh->func_count; i++) sums_stmt(c, sh->funcs[i]->body);
+}
