@@ -6,7 +6,9 @@
  * (codegen gives them after the program's parameters); its eval_code program (ir/pre_code.c)
  * goes into the compiled effect. Equal expressions share one global. Runs in codegen when
  * parameters are packed, after ir_lower, and ends with the uses pass again (parameters read
- * only by preshaders leave the GLSL). */
+ * only by preshaders leave the GLSL). It starts by reordering what fxc's optimiser reorders, so
+ * more work reads parameters alone: a loop's invariant sum terms (sums.c), locals forwarded and
+ * matrix chains regrouped (forward.c), scalar and parameter factors first (factors.c). */
 #include <string.h>
 
 #include "ir/ir.h"
