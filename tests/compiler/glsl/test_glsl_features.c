@@ -65,7 +65,7 @@ static void float_intrinsics(void) {
 
 /* The GLSL 330 pixel stage of VS + body + TECH (one program), or NULL; *r to free. */
 static const char *fragment_330(const char *body, hfxc_result **r) {
-    char src[512];
+    char src[2048];
     snprintf(src, sizeof src, "%s%s%s", VS, body, TECH);
     hfxc_options o = {0};
     o.targets = 1u << HFX_TARGET_GLSL330;
@@ -252,6 +252,34 @@ static void vertex_texture_fetch_and_outputs(void) {
     hfxc_result_free(r);
 }
 
+/* lower/flatten.c: an if / else that only picks a local's value is a select, as fxc flattens
+ * it; not with [branch], a texture read, an integer division, two variables, or a big value. */
+static void small_branches_flatten(void) {
+    static const char body[] = "float4 v; int n, m; sampler2D S;\n"
+        "float4 ps(float2 uv : TEXCOORD0) : COLOR { float a = 0, b = 1, c = 0, e = 0, f = 0; int d = 0;\n"
+        "  if (v.x <= v.y) a = min(1 / (v.z + v.w * uv.x), 1); else a = 0;\n"
+        "  if (uv.y > 0.5) b = v.x;\n"
+        "  [branch] if (uv.x > 0.5) c = v.y; else c = v.z;\n"
+        "  if (uv.x > 0.25) c = tex2D(S, uv).x;\n"
+        "  if (m != 0) d = n / m;\n"
+        "  if (uv.y > 0.25) e = 1; else f = 1;\n"
+        "  if (uv.x > 0.75) e = sin(v.x) * cos(v.y) + sin(v.z) * cos(v.w) + sin(uv.x) * cos(uv.y) + v.x * v.y * v.z;\n"
+        "  return float4(a, b, c, d) + e + f; }\n";
+    CHECK(links(body, ALL));
+    hfxc_result *r = NULL;
+    const char *fs = fragment_330(body, &r);
+    if (fs) {
+        CHECK_CONTAINS(fs, "    a = v.x <= v.y ? min(1.0 / (v.z + v.w * uv.x), 1.0) : 0.0;\n");
+        CHECK_CONTAINS(fs, "    b = uv.y > 0.5 ? v.x : b;\n");
+        CHECK_CONTAINS(fs, "if (uv.x > 0.5)");
+        CHECK_CONTAINS(fs, "if (uv.x > 0.25)");
+        CHECK_CONTAINS(fs, "if (m != 0)");
+        CHECK_CONTAINS(fs, "if (uv.y > 0.25)");
+        CHECK_CONTAINS(fs, "if (uv.x > 0.75)");
+    }
+    hfxc_result_free(r);
+}
+
 /* A generic sampler takes the dimension of the parameter it is passed to, and a call with
  * constant arguments compiles only the branch they select (fxc inlines calls): the tex2D
  * branch, which would make the same sampler 2D too, is gone from F(1)'s copy. DigitalRise's
@@ -281,5 +309,6 @@ int main(void) {
     RUN(sampler_parameters_and_odd_shapes);
     RUN(vertex_texture_fetch_and_outputs);
     RUN(constant_arguments_select_the_code);
+    RUN(small_branches_flatten);
     return test_summary();
 }
