@@ -7,7 +7,11 @@
  * - mul(mul(x, A), B) with A and B parameter-only matrices is mul(x, mul(A, B)), and
  *   mul(B, mul(A, x)) is mul(mul(B, A), x): the matrix product becomes a preshader and each
  *   vertex does one vector product instead of two (the rounding is a matrix product's, as in
- *   the hand-written GLSL that multiplies World, View and Projection on the CPU).
+ *   the hand-written GLSL that multiplies World, View and Projection on the CPU);
+ * - mul(x, B) with x a local set once by `x = mul(y, A)`, y a constructor with a constant
+ *   component (`float4(p, 1)`) of values the function never changes: mul(y, mul(A, B)). The
+ *   driver then skips the constant component's products (a position's w = 1), as the
+ *   hand-written `mvp * vec4(p, 1.0)` does, and mul(A, B) is a preshader.
  * Run by ir_pass_preshade only, so --no-preshaders leaves the shaders as written. */
 #include "ir/ir.h"
 
@@ -134,9 +138,75 @@ static void reassociate(ir_ctx *c, ir_expr **slot, void *data) {
     }
 }
 
+/* ---- a product taken from its source ---- */
+
+static ir_stmt *decl_of(ir_stmt *s, const ir_var *v) {
+    if (!s) return NULL;
+    if (s->kind == IS_DECL && s->var == v) return s;
+    ir_stmt *found = decl_of(s->init, v);
+    for (uint32_t i = 0; !found && i < s->count; i++) found = decl_of(s->body[i], v);
+    if (!found) found = decl_of(s->then_s, v);
+    return found ? found : decl_of(s->else_s, v);
+}
+
+static bool never_written(ir_stmt *body, const ir_var *v) {
+    uses_of u = {v, 0, 0, NULL};
+    count_stmt(&u, body);
+    return u.writes == 0;
+}
+
+/* Every variable e reads keeps its value through the function (parameters and locals only:
+ * a callee may change a private global). */
+static bool unchanging(ir_stmt *body, const ir_expr *e) {
+    if (e->kind == IE_VAR)
+        return (e->var->kind == IRV_PARAM || e->var->kind == IRV_LOCAL || e->var->kind == IRV_UNIFORM) &&
+               never_written(body, e->var);
+    if (e->kind == IE_CALL || ir_has_side_effects(e)) return false;
+    for (uint32_t i = 0; i < e->n; i++)
+        if (!unchanging(body, e->a[i])) return false;
+    return true;
+}
+
+static bool has_constant_part(const ir_expr *y) {
+    if (y->kind != IE_CONSTRUCT) return false;
+    for (uint32_t i = 0; i < y->n; i++)
+        if (ir_is_const(y->a[i])) return true;
+    return false;
+}
+
+/* x's value when it is mul(y, A) (row form; A first for the column form), set once by its
+ * declaration from values that do not change, with y's constant component; else NULL. */
+static const ir_expr *source_product(const ir_ctx *c, ir_stmt *body, const ir_expr *x, bool row) {
+    if (x->kind != IE_VAR || x->var->kind != IRV_LOCAL) return NULL;
+    const ir_stmt *d = decl_of(body, x->var);
+    const ir_expr *m = d ? d->expr : NULL;
+    if (!m || !is_mul(m) || !never_written(body, x->var)) return NULL;
+    const ir_expr *y = m->a[row ? 0 : 1], *A = m->a[row ? 1 : 0];
+    if (y->type != x->type || !float_matrix(A) || !param_only(c, A) || !has_constant_part(y) || !unchanging(body, y))
+        return NULL;
+    return m;
+}
+
+static void from_source(ir_ctx *c, ir_expr **slot, void *data) {
+    ir_expr *e = *slot;
+    if (!is_mul(e) || e->type->kind != TY_VECTOR) return;
+    bool row = e->a[0]->type->kind == TY_VECTOR;
+    ir_expr *x = e->a[row ? 0 : 1], *B = e->a[row ? 1 : 0];
+    const ir_expr *m = float_matrix(B) && param_only(c, B) ? source_product(c, data, x, row) : NULL;
+    if (!m) return;
+    const ir_expr *A = m->a[row ? 1 : 0];
+    const hfx_type *ab = row ? hfx_type_matrix(c->types, B_FLOAT, A->type->rows, B->type->cols)
+                             : hfx_type_matrix(c->types, B_FLOAT, B->type->rows, A->type->cols);
+    if (!ab) return;
+    ir_expr *y = ir_clone_expr(c, m->a[row ? 0 : 1]), *a = ir_clone_expr(c, A);
+    e->a[row ? 0 : 1] = y;
+    e->a[row ? 1 : 0] = row ? product(c, a, B, ab, e->loc) : product(c, B, a, ab, e->loc);
+}
+
 void ir_pass_forward(ir_ctx *c, ir_shader *sh) {
     for (uint32_t i = 0; i < sh->func_count; i++) {
         forward_block(sh->funcs[i]->body, sh->funcs[i]->body);
         ir_walk_stmt_exprs(c, sh->funcs[i]->body, reassociate, NULL);
+        ir_walk_stmt_exprs(c, sh->funcs[i]->body, from_source, sh->funcs[i]->body);
     }
 }

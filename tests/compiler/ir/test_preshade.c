@@ -287,6 +287,34 @@ static void sums_add_invariant_terms_once(void) {
     hfxc_result_free(r);
 }
 
+/* forward.c: a position taken through World and then ViewProj from a local that other outputs
+ * read too is computed from its source, float4(p, 1), with one preshader matrix (w = 1: the
+ * driver skips those products); not when p changes after the local is set. */
+static void positions_from_their_source(void) {
+    static const char src[] =
+        "float4x4 World, ViewProj; float3 Cam;\n"
+        "struct O { float4 pos : POSITION0; float3 v : TEXCOORD0; };\n"
+        "O VS(float3 p : POSITION0) { O o; float4 w = mul(float4(p, 1), World);\n"
+        "  %s o.pos = mul(w, ViewProj); o.v = Cam - w.xyz; return o; }\n"
+        "float4 PS(float3 v : TEXCOORD0) : COLOR0 { return float4(v, 1); }\n"
+        "technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }\n";
+    char text[1024];
+    snprintf(text, sizeof text, src, "");
+    hfxc_result *r;
+    const hfx_fx_program *p = first_program(&r, NULL, text, "source.fx");
+    if (p) {
+        const char *vs = glsl_of(p, HFX_STAGE_VERTEX);
+        CHECK_CONTAINS(vs, "= mul(World, ViewProj), computed on the CPU (a preshader)\n");
+        CHECK_CONTAINS(vs, "    o.pos = hfx_pre0 * vec4(p, 1.0);\n");
+        CHECK_CONTAINS(vs, "    o.v = Cam - w.xyz;\n");
+    }
+    hfxc_result_free(r);
+    snprintf(text, sizeof text, src, "p.x += 1;");
+    p = first_program(&r, NULL, text, "source.fx");
+    if (p) CHECK_CONTAINS(glsl_of(p, HFX_STAGE_VERTEX), "    o.pos = ViewProj * w;\n");
+    hfxc_result_free(r);
+}
+
 /* The register file, pixel stage first: the parameters it reads as they are (in parameter
  * order), its preshaders, the parameters it copies, then the vertex stage's parameters and
  * preshaders. Gain, read by both stages, counts as the pixel stage's; World and ViewProj are read
@@ -337,6 +365,7 @@ int main(void) {
     RUN(project_effects_keep_nothing);
     RUN(a_parameter_normalised_in_place);
     RUN(transforms_in_turn_regroup);
+    RUN(positions_from_their_source);
     RUN(pixel_registers_come_first);
     RUN(products_take_scalars_first);
     RUN(sums_add_invariant_terms_once);
