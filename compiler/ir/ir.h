@@ -172,6 +172,7 @@ void ir_pass_factors(ir_ctx *c, ir_shader *sh);     /* vector products: paramete
 
 /* Preshaders' pieces (pre_code.c). */
 bool ir_pre_node(const ir_ctx *c, const ir_expr *e);   /* a preshader computes e from arguments it computes */
+bool ir_pre_only(const ir_ctx *c, const ir_expr *e);  /* e reads parameters and constants alone (every node ir_pre_node) */
 bool ir_pre_work(const ir_expr *e);                    /* e computes (not only moves components) */
 uint32_t *ir_pre_code(ir_ctx *c, const ir_expr *e, uint32_t *words); /* validated eval_code (arena), or NULL */
 const char *ir_pre_text(ir_ctx *c, const ir_expr *e); /* e as HLSL, for the GLSL's comment (arena) */

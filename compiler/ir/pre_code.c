@@ -72,6 +72,12 @@ bool ir_pre_node(const ir_ctx *c, const ir_expr *e) {
     }
 }
 
+bool ir_pre_only(const ir_ctx *c, const ir_expr *e) {
+    for (uint32_t i = 0; i < e->n; i++)
+        if (!ir_pre_only(c, e->a[i])) return false;
+    return ir_pre_node(c, e);
+}
+
 bool ir_pre_work(const ir_expr *e) {
     return e->kind == IE_UNARY || e->kind == IE_BINARY || e->kind == IE_SELECT || e->kind == IE_INTRIN ||
            (e->kind == IE_INDEX && e->a[1]->kind != IE_CONST);

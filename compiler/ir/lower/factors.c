@@ -21,12 +21,6 @@ typedef struct factors {
     bool ok;
 } factors;
 
-static bool param_only(const ir_ctx *c, const ir_expr *e) {
-    for (uint32_t i = 0; i < e->n; i++)
-        if (!param_only(c, e->a[i])) return false;
-    return ir_pre_node(c, e);
-}
-
 static bool float_base(const hfx_type *t) { return t->base == B_FLOAT || t->base == B_HALF; }
 
 static bool is_product(const ir_expr *e) {
@@ -56,12 +50,12 @@ static void add(factors *fs, group *g, ir_expr *e) {
 
 static void collect_scalar(factors *fs, ir_expr *e) {
     if (is_product(e) && e->type->kind == TY_SCALAR) {
-        if (!param_only(fs->c, e)) fs->cost++;
+        if (!ir_pre_only(fs->c, e)) fs->cost++;
         collect_scalar(fs, e->a[0]);
         collect_scalar(fs, e->a[1]);
         return;
     }
-    add(fs, param_only(fs->c, e) ? &fs->uni_scalars : &fs->scalars, e);
+    add(fs, ir_pre_only(fs->c, e) ? &fs->uni_scalars : &fs->scalars, e);
 }
 
 /* Walks a vector product down to its factors; scalars come out of their splats. */
@@ -73,11 +67,11 @@ static void collect(factors *fs, ir_expr *e) {
     } else if (equal_components(e)) {
         add(fs, &fs->uni_scalars, ir_const_scalar(c, hfx_type_scalar(c->types, e->type->base), e->cval[0], e->loc));
     } else if (is_product(e) && e->type->kind == TY_VECTOR) {
-        if (!param_only(c, e)) fs->cost += e->type->rows * e->type->cols;
+        if (!ir_pre_only(c, e)) fs->cost += e->type->rows * e->type->cols;
         collect(fs, e->a[0]);
         collect(fs, e->a[1]);
     } else {
-        add(fs, param_only(fs->c, e) ? &fs->uni_vectors : &fs->vectors, e);
+        add(fs, ir_pre_only(fs->c, e) ? &fs->uni_vectors : &fs->vectors, e);
     }
 }
 

@@ -99,12 +99,6 @@ static void forward_block(ir_stmt *fn_body, ir_stmt *s) {
 
 /* ---- reassociation ---- */
 
-static bool param_only(const ir_ctx *c, const ir_expr *e) {
-    for (uint32_t i = 0; i < e->n; i++)
-        if (!param_only(c, e->a[i])) return false;
-    return ir_pre_node(c, e);
-}
-
 static bool is_mul(const ir_expr *e) { return e->kind == IE_INTRIN && e->intrin == HFX_INTR_MUL && e->n == 2; }
 
 static bool float_matrix(const ir_expr *e) {
@@ -125,14 +119,14 @@ static void reassociate(ir_ctx *c, ir_expr **slot, void *data) {
     if (!is_mul(e) || e->type->kind != TY_VECTOR) return;
     ir_expr *in = e->a[0], *B = e->a[1];
     if (is_mul(in) && in->type->kind == TY_VECTOR && float_matrix(in->a[1]) && float_matrix(B) &&
-        in->a[0]->type->kind == TY_VECTOR && param_only(c, in->a[1]) && param_only(c, B)) {
+        in->a[0]->type->kind == TY_VECTOR && ir_pre_only(c, in->a[1]) && ir_pre_only(c, B)) {
         const hfx_type *ab = hfx_type_matrix(c->types, B_FLOAT, in->a[1]->type->rows, B->type->cols);
         if (ab) e->a[0] = in->a[0], e->a[1] = product(c, in->a[1], B, ab, e->loc);
         return;
     }
     in = e->a[1], B = e->a[0];
     if (is_mul(in) && in->type->kind == TY_VECTOR && float_matrix(in->a[0]) && float_matrix(B) &&
-        in->a[1]->type->kind == TY_VECTOR && param_only(c, in->a[0]) && param_only(c, B)) {
+        in->a[1]->type->kind == TY_VECTOR && ir_pre_only(c, in->a[0]) && ir_pre_only(c, B)) {
         const hfx_type *ba = hfx_type_matrix(c->types, B_FLOAT, B->type->rows, in->a[0]->type->cols);
         if (ba) e->a[0] = product(c, B, in->a[0], ba, e->loc), e->a[1] = in->a[1];
     }
@@ -182,7 +176,7 @@ static const ir_expr *source_product(const ir_ctx *c, ir_stmt *body, const ir_ex
     const ir_expr *m = d ? d->expr : NULL;
     if (!m || !is_mul(m) || !never_written(body, x->var)) return NULL;
     const ir_expr *y = m->a[row ? 0 : 1], *A = m->a[row ? 1 : 0];
-    if (y->type != x->type || !float_matrix(A) || !param_only(c, A) || !has_constant_part(y) || !unchanging(body, y))
+    if (y->type != x->type || !float_matrix(A) || !ir_pre_only(c, A) || !has_constant_part(y) || !unchanging(body, y))
         return NULL;
     return m;
 }
@@ -192,7 +186,7 @@ static void from_source(ir_ctx *c, ir_expr **slot, void *data) {
     if (!is_mul(e) || e->type->kind != TY_VECTOR) return;
     bool row = e->a[0]->type->kind == TY_VECTOR;
     ir_expr *x = e->a[row ? 0 : 1], *B = e->a[row ? 1 : 0];
-    const ir_expr *m = float_matrix(B) && param_only(c, B) ? source_product(c, data, x, row) : NULL;
+    const ir_expr *m = float_matrix(B) && ir_pre_only(c, B) ? source_product(c, data, x, row) : NULL;
     if (!m) return;
     const ir_expr *A = m->a[row ? 1 : 0];
     const hfx_type *ab = row ? hfx_type_matrix(c->types, B_FLOAT, A->type->rows, B->type->cols)

@@ -16,12 +16,6 @@ enum { MAX_TERMS = 16 };
 
 typedef struct counted { const ir_var *i; double from; ir_expr *bound; } counted;
 
-static bool param_only(const ir_ctx *c, const ir_expr *e) {
-    for (uint32_t i = 0; i < e->n; i++)
-        if (!param_only(c, e->a[i])) return false;
-    return ir_pre_node(c, e);
-}
-
 static bool is_var(const ir_expr *e, const ir_var *v) { return e && e->kind == IE_VAR && e->var == v; }
 
 static bool int_scalar(const hfx_type *t) { return t->kind == TY_SCALAR && t->base == B_INT; }
@@ -83,7 +77,7 @@ static bool counted_loop(const ir_ctx *c, const ir_stmt *loop, counted *out) {
     const ir_expr *cond = loop->expr;
     if (loop->kind != IS_FOR || loop->max_iterations || !cond || cond->kind != IE_BINARY || cond->op != OP_LT) return false;
     out->i = counter_start(loop->init, &out->from);
-    if (!out->i || !is_var(cond->a[0], out->i) || !int_scalar(cond->a[1]->type) || !param_only(c, cond->a[1]) ||
+    if (!out->i || !is_var(cond->a[0], out->i) || !int_scalar(cond->a[1]->type) || !ir_pre_only(c, cond->a[1]) ||
         !steps_by_one(loop->step, out->i))
         return false;
     touch t = {out->i, 0, 0, false};
@@ -102,11 +96,11 @@ typedef struct terms { ir_expr *kept[MAX_TERMS], *moved[MAX_TERMS]; unsigned nk,
 /* The parameter-only value of term t, before the loop at b->body[at]: t itself, or the
  * initialiser of a local declared (licm's) among the declarations right before the loop. */
 static ir_expr *invariant_value(const ir_ctx *c, const ir_stmt *b, uint32_t at, ir_expr *t, moves *m) {
-    if (param_only(c, t)) return t;
+    if (ir_pre_only(c, t)) return t;
     if (t->kind != IE_VAR || t->var->kind != IRV_LOCAL) return NULL;
     for (uint32_t k = at; k-- > 0 && b->body[k]->kind == IS_DECL;) {
         if (b->body[k]->var != t->var) continue;
-        if (!b->body[k]->expr || !param_only(c, b->body[k]->expr) || m->nl == MAX_TERMS) return NULL;
+        if (!b->body[k]->expr || !ir_pre_only(c, b->body[k]->expr) || m->nl == MAX_TERMS) return NULL;
         m->locals[m->nl++] = t->var;
         return b->body[k]->expr;
     }
