@@ -231,10 +231,18 @@ static bool moved_uniform(const ir_expr *e) {
     }
 }
 
-/* 1 when e is an affine function of x (operations on it counted in *work), 0 when it is a
+/* What stands for X in O's value: the expression W was given, or (O written after W) W's place
+ * itself, which holds X from then on (`wp = p * 2; v = Cam - wp.xyz;` with out parameters). */
+typedef struct source { const ir_expr *x; const place *w; bool place_holds; } source;
+
+static bool is_x(const ir_expr *e, const source *s) {
+    return ir_same_expr(e, s->x) || (s->place_holds && is_place(e, s->w));
+}
+
+/* 1 when e is an affine function of X (operations on it counted in *work), 0 when it is a
  * parameter-only value, -1 otherwise. */
-static int affine(const ir_expr *e, const ir_expr *x, int *work) {
-    if (ir_same_expr(e, x)) return 1;
+static int affine(const ir_expr *e, const source *x, int *work) {
+    if (is_x(e, x)) return 1;
     if (moved_uniform(e)) return 0;
     if (!float_value(e->type) || !e->n || e->n > 2) return -1;
     for (uint32_t i = 0; i < e->n; i++)
@@ -301,8 +309,8 @@ static ir_var *pixel_var(pair *p, const ir_var *v) {
 }
 
 /* f's value in the pixel stage: x read from the input w, parameters from its own variables. */
-static ir_expr *to_pixels(pair *p, const ir_expr *e, const ir_expr *x, const ir_expr *w) {
-    if (ir_same_expr(e, x)) return ir_clone_expr(p->c, w);
+static ir_expr *to_pixels(pair *p, const ir_expr *e, const source *x, const ir_expr *w) {
+    if (is_x(e, x)) return ir_clone_expr(p->c, w);
     ir_expr *r = ir_new_expr(p->c, e->kind, e->type, e->loc, e->n);
     if (!r) return NULL;
     ir_expr **args = r->a;
@@ -339,12 +347,14 @@ static bool derive_from(pair *p, const ir_leaf *vo, const ir_leaf *vw, derived *
     if (!o.root || !w.root) return false;
     int io = final_write(p, &o), iw = io < 0 ? -1 : final_write(p, &w);
     if (iw < 0) return false;
-    ir_expr *ov = p->body->body[io]->expr->a[1], *x = p->body->body[iw]->expr->a[1];
+    ir_expr *ov = p->body->body[io]->expr->a[1];
+    source x = {p->body->body[iw]->expr->a[1], &w, iw < io};
     int work = 0;
-    if (affine(ov, x, &work) != 1 || work > MAX_WORK || !stable(p, x, (uint32_t)iw, (uint32_t)io)) return false;
+    if (affine(ov, &x, &work) != 1 || work > MAX_WORK || !stable(p, p->body->body[iw]->expr->a[1], (uint32_t)iw, (uint32_t)io))
+        return false;
     place pin_o = place_of(po, NULL), pin_w = place_of(pw, NULL);
     if (!reads_input(p->c, p->ps, &pin_o) || !reads_input(p->c, p->ps, &pin_w)) return false;
-    ir_expr *value = to_pixels(p, ov, x, place_expr(p->c, pw->root, &pin_w, ov->loc));
+    ir_expr *value = to_pixels(p, ov, &x, place_expr(p->c, pw->root, &pin_w, ov->loc));
     ir_expr *set = value ? ir_new_expr(p->c, IE_ASSIGN, po->type, ov->loc, 2) : NULL;
     ir_stmt *s = set ? HFX_NEW(p->c->arena, ir_stmt) : NULL;
     if (!s) return false;
