@@ -158,11 +158,16 @@ static unsigned returns_in(const ir_stmt *s) {
     return n + returns_in(s->init) + returns_in(s->then_s) + returns_in(s->else_s);
 }
 
-/* The local the entry returns as its last statement (its only return), or NULL. */
+/* Every top-level statement runs: the only return, if any, is the last statement. */
+static bool straight(const ir_stmt *body) {
+    unsigned n = returns_in(body);
+    return n == 0 || (n == 1 && body->count && body->body[body->count - 1]->kind == IS_RETURN);
+}
+
+/* The local the entry returns as its last statement, or NULL. */
 static const ir_var *returned_local(const ir_stmt *body) {
-    if (!body->count || returns_in(body) != 1) return NULL;
-    const ir_stmt *s = body->body[body->count - 1];
-    return s->kind == IS_RETURN && s->expr && s->expr->kind == IE_VAR && s->expr->var->kind == IRV_LOCAL ? s->expr->var : NULL;
+    const ir_stmt *s = body->count ? body->body[body->count - 1] : NULL;
+    return s && s->kind == IS_RETURN && s->expr && s->expr->kind == IE_VAR && s->expr->var->kind == IRV_LOCAL ? s->expr->var : NULL;
 }
 
 /* ---- the value X: the same in both statements ---- */
@@ -393,15 +398,6 @@ static ir_shader *own_entry(ir_ctx *c, const ir_shader *sh, uint32_t extra) {
     return r;
 }
 
-/* The preshaders the stage still reads (a derived output may have been the only reader). */
-static void keep_read_preshaders(ir_shader *sh) {
-    uint32_t n = 0;
-    for (uint32_t i = 0; i < sh->pre_count; i++)
-        for (uint32_t k = 0; k < sh->global_count; k++)
-            if (sh->globals[k] == sh->pres[i]) { sh->pres[n++] = sh->pres[i]; break; }
-    sh->pre_count = n;
-}
-
 static uint32_t stage_regs(const ir_ctx *c, const ir_shader *sh) {
     uint32_t n = 0;
     for (uint32_t i = 0; i < sh->global_count; i++) {
@@ -428,8 +424,7 @@ static bool rewrite(pair *p, const derived *d, uint32_t n, bool pack, ir_shader 
     memmove(pb->body + n, pb->body, pb->count * sizeof *pb->body);
     for (uint32_t k = 0; k < n; k++) pb->body[k] = d[k].compute;
     pb->count += n;
-    ir_pass_uses(p->c, v);
-    keep_read_preshaders(v);
+    ir_pass_uses(p->c, v); /* O's value read parameters only, never a preshader: they all stay */
     ir_pass_uses(p->c, q);
     if (pack && stage_regs(p->c, q) > IR_STAGE_REGS) return false;
     *vs = v;
@@ -448,7 +443,7 @@ uint32_t ir_pass_varyings(ir_ctx *c, ir_shader **vs, ir_shader **ps, bool pack, 
     pair p = {c, *vs, *ps, NULL, NULL, 0, 0, NULL, (*vs)->entry->body, NULL, 0, 0};
     p.out_count = ir_entry_leaves(c, p.vs->entry, true, &p.out);
     p.in_count = ir_entry_leaves(c, p.ps->entry, false, &p.in);
-    if (p.out_count <= 0 || p.in_count <= 0 || returns_in(p.body) > 1) return 0;
+    if (p.out_count <= 0 || p.in_count <= 0 || !straight(p.body)) return 0;
     p.ret = returned_local(p.body);
     unsigned char *role = HFX_NEW_ARRAY(c->arena, unsigned char, (uint32_t)p.out_count);
     derived *d = HFX_NEW_ARRAY(c->arena, derived, (uint32_t)p.out_count);

@@ -83,7 +83,7 @@ static void kept(const stages *s) {
     if (!s->vs || !s->fs) return;
     CHECK_CONTAINS(s->vs, "out vec4 hfx_v_TEXCOORD1;");
     CHECK_CONTAINS(s->fs, "in vec4 hfx_v_TEXCOORD1;");
-    CHECK_CONTAINS(s->fs, "hfx_arg0.V = hfx_v_TEXCOORD1.xyz;");
+    CHECK_CONTAINS(s->fs, " = hfx_v_TEXCOORD1.xyz;");
 }
 
 static const char pointlights_like[] = "float3 Cam; float4x4 World;\n" OUT_STRUCT
@@ -189,6 +189,11 @@ static void negative_cases(void) {
         "VOut vs(float4 p : POSITION, float3 n : NORMAL) { VOut o; float4 wp = mul(p, World);\n"
         "  o.pos = wp; o.N = n; o.V = Cam - wp; o.WP = wp; return o; }\n"
         "float4 ps(VOut i) : COLOR { return float4(normalize(i.V) + i.N, 1); }\n" TECH,
+        /* an early return: V's statement does not always run */
+        "float3 Cam; bool B;\n"
+        "void vs(float4 p : POSITION, out float4 pos : POSITION, out float3 v : TEXCOORD1, out float4 wp : TEXCOORD2)\n"
+        "{ pos = p; wp = p * 2; v = 0; if (B) return; v = Cam - wp.xyz; }\n"
+        "float4 ps(float3 v : TEXCOORD1, float4 wp : TEXCOORD2) : COLOR { return float4(v, wp.w); }\n" TECH,
         /* different interpolation: V is centroid */
         "float3 Cam; float4x4 World;\n"
         "struct VOut { float4 pos : POSITION; float3 N : TEXCOORD0; centroid float3 V : TEXCOORD1; float3 WP : TEXCOORD2; };\n"
