@@ -385,8 +385,8 @@ static ir_shader *own_entry(ir_ctx *c, const ir_shader *sh, uint32_t extra) {
     ir_var **pres = HFX_NEW_ARRAY(c->arena, ir_var *, sh->pre_count + 1);
     if (!r || !f || !b || !funcs || !body || !pres) return NULL;
     *r = *sh, *f = *sh->entry, *b = *sh->entry->body;
-    memcpy(body, b->body, b->count * sizeof *body);
-    memcpy(pres, sh->pres, sh->pre_count * sizeof *pres);
+    if (b->count) memcpy(body, b->body, b->count * sizeof *body); /* (memcpy from NULL is undefined, even of 0 bytes) */
+    if (sh->pre_count) memcpy(pres, sh->pres, sh->pre_count * sizeof *pres);
     for (uint32_t i = 0; i < sh->func_count; i++) funcs[i] = sh->funcs[i] == sh->entry ? f : sh->funcs[i];
     b->body = body;
     f->body = b;
