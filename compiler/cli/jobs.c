@@ -206,7 +206,8 @@ static void compile_one(const cli_options *o, cli_job *job, hfxc_session *sessio
     opt.session = session;
     opt.flags = (o->werror ? HFXC_WERROR : 0) | (o->no_warnings ? HFXC_NO_WARNINGS : 0) | (o->ast ? HFXC_PARSE_ONLY : 0) |
                 (o->pack_uniforms ? HFXC_PACK_UNIFORMS : 0) | (o->no_self_check ? HFXC_NO_SELF_CHECK : 0) |
-                (o->no_preshaders ? HFXC_NO_PRESHADERS : 0);
+                (o->no_preshaders ? HFXC_NO_PRESHADERS : 0) |
+                (o->no_derived_varyings ? HFXC_NO_DERIVED_VARYINGS : 0);
     hfxc_result *r = hfxc_compile_file(job->input, &opt);
     if (!r) {
         job->error = fmt("out of memory compiling '%s'%s", job->input, "");

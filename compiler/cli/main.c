@@ -29,6 +29,8 @@ static const char usage_text[] =
     "                        share one vec4 array per program (D3D9 registers, one upload)\n"
     "  --no-preshaders       keep work on parameters alone in the shaders; by default it runs\n"
     "                        on the CPU once per change, as fxc's preshaders (packed registers only)\n"
+    "  --no-derived-varyings interpolate every vertex output, even one the pixel shader can\n"
+    "                        compute from another output and parameters (by default it does)\n"
     "  --werror, /WX         treat warnings as errors\n"
     "  --no-warnings         drop warnings\n"
     "  --no-self-check       do not check the emitted GLSL with glslang (faster; by default a\n"
@@ -138,6 +140,7 @@ static int flag(cli_options *o, const char *a, bool *handled) {
     else if (!strcmp(a, "--no-warnings")) o->no_warnings = true;
     else if (!strcmp(a, "--no-self-check")) o->no_self_check = true;
     else if (!strcmp(a, "--no-preshaders")) o->no_preshaders = true;
+    else if (!strcmp(a, "--no-derived-varyings")) o->no_derived_varyings = true;
     else if (!strcmp(a, "--pack-uniforms")) o->pack_uniforms = true; /* the default; kept for scripts */
     else if (!strcmp(a, "--separate-uniforms")) o->pack_uniforms = false;
     else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) o->quiet = true;

@@ -1,6 +1,8 @@
 /* codegen.c: one GLSL program per pass. Builds the IR of both stages, lowers it, agrees on
- * the interface between them (attributes at the Cg/NVIDIA locations, varyings by semantic)
- * and prints every requested target; records attributes, samplers and uniforms read. */
+ * the interface between them (attributes at the Cg/NVIDIA locations, varyings by semantic, less
+ * the derived ones the pixel stage computes: ir/lower/varyings.c, on per-program copies of the
+ * shared stages) and prints every requested target; records attributes, samplers and uniforms
+ * read. */
 #include "effect/codegen.h"
 
 #include <stdlib.h>
@@ -287,6 +289,17 @@ static void mark_switches(const hfx_fx_effect *fx, ir_shader *const sh[2], hfx_f
     }
 }
 
+/* The derived varyings (io->derived) out of a set of semantics. */
+static void drop_derived(strset *s, const glsl_iface *io) {
+    uint32_t n = 0;
+    for (uint32_t i = 0; i < s->count; i++) {
+        bool gone = false;
+        for (uint32_t k = 0; k < io->derived_count; k++) gone |= strcmp(s->items[i], io->derived[k]) == 0;
+        if (!gone) s->items[n++] = s->items[i];
+    }
+    s->count = n;
+}
+
 /* flat_colors: the pass sets ShadeMode = FLAT, under which D3D9 does not interpolate COLOR inputs. */
 static int build_interface(hfx_codegen *cg, ir_shader *vs, ir_shader *ps, bool flat_colors, glsl_iface *io) {
     hfx_arena *a = cg->c.arena;
@@ -317,6 +330,8 @@ static int build_interface(hfx_codegen *cg, ir_shader *vs, ir_shader *ps, bool f
     }
     for (uint32_t i = 0; i < vary.count && flat_colors; i++)
         if (strncmp(vary.items[i], "COLOR", 5) == 0) set_add(a, &flat, vary.items[i]);
+    drop_derived(&vary, io);
+    drop_derived(&writes, io);
     if (vary.count) qsort(vary.items, vary.count, sizeof *vary.items, cmp_str);
     io->varyings = vary.items;
     io->varying_count = vary.count;
@@ -378,6 +393,8 @@ int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps,
     bool vs_ok = stage(cg, vs, IR_VERTEX, &sh[0]), ps_ok = stage(cg, ps, IR_PIXEL, &sh[1]);
     if (!vs_ok || !ps_ok) return -1;
     glsl_iface io = {0};
+    if (!(cg->c.diags->flags & HFXC_NO_DERIVED_VARYINGS))
+        io.derived_count = ir_pass_varyings(&cg->c, &sh[0], &sh[1], cg->pack, &io.derived);
     if (build_interface(cg, sh[0], sh[1], flat_colors, &io) != 0) return -1;
     if (copy_attributes(&io, out) != 0 || record_uses(cg, sh, out) != 0) goto oom;
     qsort(out->uniforms, out->uniform_count, sizeof *out->uniforms, cmp_uniform);

@@ -10,6 +10,9 @@ typedef struct glsl_iface {
     const char **vs_writes; uint32_t vs_write_count; /* varyings the vertex shader writes */
     const hfx_fx_attribute *attrs; uint32_t attr_count;
     const char **flat; uint32_t flat_count; /* varyings without interpolation (nointerpolation) */
+    /* Derived varyings (ir/lower/varyings.c): outputs the pixel entry computes itself; the
+     * vertex stage does not write them, the pixel stage does not read them, neither declares them. */
+    const char **derived; uint32_t derived_count;
     bool clamp_vs_colors;    /* vs_1_1 / vs_2_x COLOR outputs saturate as D3D9's oD0/oD1 */
     const hfx_fx_uniform_use *uniforms; uint32_t uniform_count; /* the program's, with their registers */
     uint32_t reg_count;      /* HFXC_PACK_UNIFORMS: size of hfx_c in both stages (0: nothing packed) */

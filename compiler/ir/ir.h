@@ -5,7 +5,8 @@
  * Everything lives in the compilation's arena.
  *
  * Pass order (lower/passes.c, ir_lower): specialise -> arrays -> intrinsics -> lvalues -> fold
- * -> calls -> dce -> flatten -> globals -> licm -> ranges -> uses -> check.
+ * -> calls -> dce -> flatten -> globals -> licm -> ranges -> uses -> check; codegen then runs
+ * preshade on each stage and varyings on each program's pair.
  * glsl.c prints the result; a preshader or SPIR-V back end would read the same tree. */
 #ifndef HFX_IR_H
 #define HFX_IR_H
@@ -169,6 +170,15 @@ void ir_pass_preshade(ir_ctx *c, ir_shader *sh);    /* uniform-only work to pres
 void ir_pass_forward(ir_ctx *c, ir_shader *sh);     /* single-use locals forward, mul chains regrouped (preshade's first step) */
 void ir_pass_sums(ir_ctx *c, ir_shader *sh);        /* a loop's sum of parameter-only terms, added once before it (preshade's) */
 void ir_pass_factors(ir_ctx *c, ir_shader *sh);     /* vector products: parameters, then scalars, then vectors (preshade's) */
+/* Registers a stage may take for parameters and preshaders together (preshade.c): two stages
+ * then always fit a program's 256. */
+enum { IR_STAGE_REGS = 128 };
+/* Derived varyings (lower/varyings.c), for a program's pair of lowered stages: the vertex outputs
+ * the pixel stage computes from another output and parameters instead. When there are some,
+ * *vs and *ps become copies that do so (the stages given stay as they were: programs share them)
+ * and *derived lists their semantics (arena). pack: parameters are packed (registers are
+ * counted). Returns how many. */
+uint32_t ir_pass_varyings(ir_ctx *c, ir_shader **vs, ir_shader **ps, bool pack, const char ***derived);
 
 /* Preshaders' pieces (pre_code.c). */
 bool ir_pre_node(const ir_ctx *c, const ir_expr *e);   /* a preshader computes e from arguments it computes */
@@ -183,6 +193,7 @@ ir_expr *ir_const_scalar(ir_ctx *c, const hfx_type *ty, double v, hfx_loc loc);
 ir_expr *ir_clone_expr(ir_ctx *c, const ir_expr *e);
 bool ir_is_const(const ir_expr *e);
 bool ir_has_side_effects(const ir_expr *e);
+bool ir_same_expr(const ir_expr *a, const ir_expr *b); /* the same tree: kinds, types, variables, constants */
 ir_var *ir_lvalue_root(const ir_expr *e); /* the variable an l-value writes, or NULL */
 /* e writes its operand i: an assignment's target, ++ / --'s operand, a call's out argument,
  * sincos's / modf's / frexp's outputs. */
@@ -205,6 +216,7 @@ char *ir_dump_func(const ir_func *f);
 
 /* One semantic-carrying value of the entry's interface, with its access path from main's
  * locals (hfx_argN for parameters, hfx_ret for the return value). ir_iface.c */
+enum { IR_LEAF_DEPTH = 4 };
 typedef struct ir_leaf {
     const char *semantic;    /* canonical: "POSITION0", "TEXCOORD1", "COLOR0", "VPOS0" */
     const hfx_type *type;
@@ -216,6 +228,13 @@ typedef struct ir_leaf {
     const char *matrix_path;
     const hfx_type *matrix_type;
     bool flat;               /* nointerpolation: the first vertex's value, as D3D's flat shading */
+    uint32_t mods;           /* its interpolation modifiers (MOD_CENTROID, MOD_NOPERSPECTIVE...) */
+    /* Its place in IR terms (lower/varyings.c): the entry parameter it is part of (NULL: the
+     * return value), then the struct fields to it; `indexed` when an array element or a matrix
+     * row is on the way (or the fields are deeper than IR_LEAF_DEPTH). */
+    ir_var *root;
+    uint32_t fields[IR_LEAF_DEPTH]; uint32_t depth;
+    bool indexed;
 } ir_leaf;
 
 /* The entry's inputs (outputs false) or outputs; reports X3502 for a value without a

@@ -1,4 +1,5 @@
-/* ir_iface.c: the entry point's interface as (semantic, type, access path) leaves. Struct
+/* ir_iface.c: the entry point's interface as (semantic, type, access path) leaves, each with its
+ * place in IR terms (parameter and fields, for lower/varyings.c). Struct
  * parameters contribute one leaf per member with a semantic; semantics are compared
  * case-insensitively, POSITION meaning POSITION0. */
 #include <ctype.h>
@@ -26,9 +27,29 @@ const char *ir_canonical_semantic(hfx_arena *a, const char *semantic) {
 
 typedef struct leaves { ir_leaf *items; uint32_t count, cap; bool bad; } leaves;
 
-static void push(ir_ctx *c, leaves *l, const char *sem, const hfx_type *ty, const char *path, hfx_loc loc, bool flat) {
+/* Where a value is: its GLSL access path from main's locals and its IR place (ir_leaf). */
+typedef struct spot {
+    const char *path;
+    ir_var *root;
+    uint32_t fields[IR_LEAF_DEPTH], depth;
+    bool indexed;
+} spot;
+
+/* s one step further: field f (HFX_NONE: an array element or a matrix row), `path` its text. */
+static spot spot_in(const spot *s, uint32_t f, const char *path) {
+    spot r = *s;
+    r.path = path;
+    if (f == HFX_NONE || r.depth == IR_LEAF_DEPTH) r.indexed = true;
+    else r.fields[r.depth++] = f;
+    return r;
+}
+
+static void push(ir_ctx *c, leaves *l, const char *sem, const hfx_type *ty, const spot *s, hfx_loc loc, uint32_t mods) {
     if (!HFX_ARENA_GROW(c->arena, l->items, l->count, l->cap, 8)) return;
-    l->items[l->count++] = (ir_leaf){ ir_canonical_semantic(c->arena, sem), ty, path, loc, NULL, NULL, flat };
+    ir_leaf *x = &l->items[l->count++];
+    *x = (ir_leaf){ ir_canonical_semantic(c->arena, sem), ty, s->path, loc, NULL, NULL,
+                    (mods & MOD_NOINTERPOLATION) != 0, mods, s->root, {0}, s->depth, s->indexed };
+    memcpy(x->fields, s->fields, sizeof x->fields);
 }
 
 /* The semantic `k` registers after sem: TEXCOORD1 + 2 = TEXCOORD3. */
@@ -48,14 +69,14 @@ static const char *owner_text(ir_ctx *c, const owner *o) {
     return hfx_arena_printf(c->arena, "%s parameter '%s'", o->outputs ? "output" : "input", o->param);
 }
 
-static void walk(ir_ctx *c, leaves *l, const hfx_type *ty, const char *sem, const char *path, hfx_loc loc,
+static void walk(ir_ctx *c, leaves *l, const hfx_type *ty, const char *sem, const spot *at, hfx_loc loc,
                  const owner *o, uint32_t mods) {
-    bool flat = (mods & MOD_NOINTERPOLATION) != 0;
+    const char *path = at->path;
     if (ty->kind == TY_STRUCT) {
         for (uint32_t i = 0; i < ty->st->field_count; i++) {
             const hfx_field *f = &ty->st->fields[i];
-            const char *p = hfx_arena_printf(c->arena, "%s.%s", path, hfx_glsl_name(c->arena, f->name));
-            walk(c, l, f->type, f->semantic, p, f->loc, o, f->mods);
+            spot s = spot_in(at, i, hfx_arena_printf(c->arena, "%s.%s", path, hfx_glsl_name(c->arena, f->name)));
+            walk(c, l, f->type, f->semantic, &s, f->loc, o, f->mods);
         }
         return;
     }
@@ -65,14 +86,17 @@ static void walk(ir_ctx *c, leaves *l, const hfx_type *ty, const char *sem, cons
         return;
     }
     if (ty->kind == TY_ARRAY && ty->elem && ty->array_len) { /* `float2 uv[8] : TEXCOORD0`: one register each */
-        for (uint32_t i = 0; i < ty->array_len; i++)
-            walk(c, l, ty->elem, semantic_plus(c, sem, i), hfx_arena_printf(c->arena, "%s[%u]", path, i), loc, o, mods);
+        for (uint32_t i = 0; i < ty->array_len; i++) {
+            spot s = spot_in(at, HFX_NONE, hfx_arena_printf(c->arena, "%s[%u]", path, i));
+            walk(c, l, ty->elem, semantic_plus(c, sem, i), &s, loc, o, mods);
+        }
         return;
     }
     if (ty->kind == TY_MATRIX && ty->rows > 1 && ty->cols > 1) {
-        for (uint32_t r = 0; r < ty->rows; r++)
-            push(c, l, semantic_plus(c, sem, r), hfx_type_vector(c->types, ty->base, ty->cols),
-                 hfx_arena_printf(c->arena, "%s[%u]", path, r), loc, flat);
+        for (uint32_t r = 0; r < ty->rows; r++) {
+            spot s = spot_in(at, HFX_NONE, hfx_arena_printf(c->arena, "%s[%u]", path, r));
+            push(c, l, semantic_plus(c, sem, r), hfx_type_vector(c->types, ty->base, ty->cols), &s, loc, mods);
+        }
         if (l->count) l->items[l->count - 1].matrix_path = path, l->items[l->count - 1].matrix_type = ty;
         return;
     }
@@ -81,7 +105,7 @@ static void walk(ir_ctx *c, leaves *l, const hfx_type *ty, const char *sem, cons
         l->bad = true;
         return;
     }
-    push(c, l, sem, ty, path, loc, flat);
+    push(c, l, sem, ty, at, loc, mods);
 }
 
 int ir_entry_leaves(ir_ctx *c, const ir_func *entry, bool outputs, ir_leaf **out) {
@@ -91,12 +115,12 @@ int ir_entry_leaves(ir_ctx *c, const ir_func *entry, bool outputs, ir_leaf **out
         bool is_out = (v->mods & MOD_OUT) != 0, is_in = !is_out || (v->mods & MOD_IN);
         if (outputs ? !is_out : !is_in) continue;
         owner o = {entry->name, outputs, false, v->name};
-        walk(c, &l, v->type, v->decl ? v->decl->semantic : NULL, hfx_arena_printf(c->arena, "hfx_arg%u", i),
-             v->decl ? v->decl->loc : entry->src->loc, &o, v->mods);
+        spot s = {hfx_arena_printf(c->arena, "hfx_arg%u", i), entry->params[i], {0}, 0, false};
+        walk(c, &l, v->type, v->decl ? v->decl->semantic : NULL, &s, v->decl ? v->decl->loc : entry->src->loc, &o, v->mods);
     }
     owner ret = {entry->name, outputs, true, NULL};
     if (outputs && entry->ret && entry->ret->kind != TY_VOID)
-        walk(c, &l, entry->ret, entry->ret_semantic, "hfx_ret", entry->src->loc, &ret, 0);
+        walk(c, &l, entry->ret, entry->ret_semantic, &(spot){"hfx_ret", NULL, {0}, 0, false}, entry->src->loc, &ret, 0);
     *out = l.items;
     return l.bad ? -1 : (int)l.count;
 }

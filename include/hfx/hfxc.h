@@ -35,7 +35,8 @@ enum { /* hfxc_options.flags */
     HFXC_PACK_UNIFORMS = 1u << 4, /* float parameters share one vec4 array per program (D3D9 registers): one upload for many changes */
     HFXC_NO_SELF_CHECK = 1u << 5, /* skip glslang's check of every emitted shader (faster; a bug of hfx reaches the driver) */
     HFXC_TEST_BREAK_GLSL = 1u << 6, /* for hfx's own tests: the code generator spoils every shader, so the self-check must fail */
-    HFXC_NO_PRESHADERS = 1u << 7 /* keep parameter-only work in the shaders (preshaders need HFXC_PACK_UNIFORMS) */
+    HFXC_NO_PRESHADERS = 1u << 7, /* keep parameter-only work in the shaders (preshaders need HFXC_PACK_UNIFORMS) */
+    HFXC_NO_DERIVED_VARYINGS = 1u << 8 /* interpolate every vertex output, even one the pixel shader could compute from another */
 };
 
 /* Limits on untrusted input. A source file (the root or an #include) of more than

@@ -13,10 +13,6 @@
 
 #include "ir/ir.h"
 
-/* Registers a stage may take for parameters and preshaders together: two stages then always
- * fit the program's 256 (codegen's MAX_PACKED_REGS), so every preshader gets its register. */
-enum { STAGE_REGS = 128 };
-
 /* What visit finds of a subtree: a preshader can compute it, it computes something, it reads a
  * parameter (an expression of constants alone is the folder's, not a preshader's). */
 enum { UNI = 1, WORK = 2, READS = 4, HOIST = UNI | WORK | READS };
@@ -42,7 +38,7 @@ static ir_var *same_preshader(const pre *p, const hfx_type *t, const uint32_t *c
 }
 
 static ir_var *new_preshader(pre *p, const ir_expr *e, uint32_t *code, uint32_t words) {
-    if (p->regs + regs_of(e->type) > STAGE_REGS ||
+    if (p->regs + regs_of(e->type) > IR_STAGE_REGS ||
         !HFX_ARENA_GROW(p->c->arena, p->sh->pres, p->sh->pre_count, p->sh->pre_cap, 8))
         return NULL;
     ir_var *v = HFX_NEW(p->c->arena, ir_var);

@@ -1,4 +1,6 @@
 /* walk.c: generic traversals of the IR tree shared by the passes. */
+#include <string.h>
+
 #include "ir/ir.h"
 
 /* Operands first, then the node. A leaf operand is visited here rather than through a call of
@@ -45,6 +47,18 @@ ir_expr *ir_clone_expr(ir_ctx *c, const ir_expr *e) {
         for (uint32_t i = 0; i < e->n; i++) r->a[i] = ir_clone_expr(c, e->a[i]);
     }
     return r;
+}
+
+bool ir_same_expr(const ir_expr *a, const ir_expr *b) {
+    if (a == b) return true;
+    if (!a || !b || a->kind != b->kind || a->op != b->op || a->n != b->n || !hfx_type_equal(a->type, b->type) ||
+        a->var != b->var || a->fn != b->fn || a->intrin != b->intrin || a->field != b->field ||
+        a->comp_count != b->comp_count || memcmp(a->comps, b->comps, a->comp_count) != 0)
+        return false;
+    if (a->kind == IE_CONST && memcmp(a->cval, b->cval, hfx_type_components(a->type) * sizeof *a->cval) != 0) return false;
+    for (uint32_t i = 0; i < a->n; i++)
+        if (!ir_same_expr(a->a[i], b->a[i])) return false;
+    return true;
 }
 
 bool ir_has_side_effects(const ir_expr *e) {

@@ -21,7 +21,7 @@ static test_gl_fns f;
 
 static void load_gl(void) { CHECK_INT(test_gl_fns_load(&f), 0); }
 
-/* A uniform value to set before drawing: 'f' floats (1 or 4 a piece), 'i' ints, 'm' a 3x3
+/* A uniform value to set before drawing: 'f' floats (1 or 4 a piece), 'c' float3s, 'i' ints, 'm' a 3x3
  * or 4x4 matrix in XNA's row-major order (uploaded with transpose = GL_FALSE). */
 typedef struct uval { const char *name; char kind; int count; float v[16]; int iv[4]; } uval;
 
@@ -46,6 +46,7 @@ static void set_uniforms(GLuint prog, const uval *u, int n) {
         switch (u[i].kind) {
         case 'f': f.Uniform1fv(loc, u[i].count, u[i].v); break;
         case 'v': f.Uniform4fv(loc, u[i].count, u[i].v); break;
+        case 'c': f.Uniform3fv(loc, u[i].count, u[i].v); break;
         case 'i': f.Uniform1iv(loc, u[i].count, u[i].iv); break;
         case '3': f.UniformMatrix3fv(loc, 1, GL_FALSE, u[i].v); break;
         case '4': f.UniformMatrix4fv(loc, 1, GL_FALSE, u[i].v); break;
@@ -54,11 +55,13 @@ static void set_uniforms(GLuint prog, const uval *u, int n) {
     }
 }
 
-/* Compiles `src` with hfx, draws a full-screen quad with the program of technique `tech`
- * (first pass), and reads the pixel at (x, y) from the top-left as floats 0..1. */
-static int render(const char *src, const char *tech, const uval *u, int nu, int x, int y, float out[4]) {
+/* Compiles `src` with hfx (hfxc_options.flags `flags`), draws a full-screen quad with the
+ * program of technique `tech` (first pass), and reads the pixel at (x, y) from the top-left as
+ * floats 0..1. */
+static int render_with(unsigned flags, const char *src, const char *tech, const uval *u, int nu, int x, int y, float out[4]) {
     hfxc_options o = {0};
     o.targets = 1u << HFX_TARGET_GLSL330;
+    o.flags = flags;
     hfxc_result *r = hfxc_compile_memory(src, strlen(src), "test.fx", &o);
     const hfx_fx_effect *fx = hfxc_result_effect(r);
     if (!fx) {
@@ -120,6 +123,10 @@ static int render(const char *src, const char *tech, const uval *u, int nu, int 
     f.DeleteShader(fs);
     hfxc_result_free(r);
     return ok;
+}
+
+static int render(const char *src, const char *tech, const uval *u, int nu, int x, int y, float out[4]) {
+    return render_with(0, src, tech, u, nu, x, y, out);
 }
 
 #define VS_PASS \
@@ -531,6 +538,32 @@ static void vertex_transform_and_varying(void) {
     CHECK_NEAR(px[0], 0, TOL);
 }
 
+/* Derived varyings (compiler/ir/lower/varyings.c): v = Cam - wp is computed per pixel from the
+ * interpolated wp, and gives what interpolating v gives. At NDC (x, y), wp = (x, y, 0) / 2 and
+ * v = (1 - x / 2, 2 - y / 2, 3), so the colour is (0.6 - x / 20, 0.7 - y / 20, 0.8, 0.5 + x / 2).
+ * Pixel (6, 1) from the top left is at NDC (0.625, 0.625), pixel (1, 6) at (-0.625, -0.625). */
+static void derived_varying_values(void) {
+    const char *src = "float3 Cam;\n"
+        "struct V { float4 pos : POSITION; float3 v : TEXCOORD0; float3 wp : TEXCOORD1; };\n"
+        "V vs(float4 p : POSITION) { V o; float4 wp = p * 0.5; o.pos = p; o.v = Cam - wp; o.wp = wp; return o; }\n"
+        "float4 ps(V i) : COLOR { return float4(i.v * 0.1 + 0.5, i.wp.x + 0.5); }\n" TECH("ps()");
+    const uval cam = { "Cam", 'c', 1, {1, 2, 3}, {0} };
+    const unsigned modes[] = { 0, HFXC_NO_DERIVED_VARYINGS };
+    for (int m = 0; m < 2; m++) {
+        float px[4];
+        CHECK(render_with(modes[m], src, NULL, &cam, 1, 6, 1, px));
+        CHECK_NEAR(px[0], 0.56875f, TOL);
+        CHECK_NEAR(px[1], 0.66875f, TOL);
+        CHECK_NEAR(px[2], 0.8f, TOL);
+        CHECK_NEAR(px[3], 0.8125f, TOL);
+        CHECK(render_with(modes[m], src, NULL, &cam, 1, 1, 6, px));
+        CHECK_NEAR(px[0], 0.63125f, TOL);
+        CHECK_NEAR(px[1], 0.73125f, TOL);
+        CHECK_NEAR(px[2], 0.8f, TOL);
+        CHECK_NEAR(px[3], 0.1875f, TOL);
+    }
+}
+
 /* Statements and l-values: statics, switch, do-while, out/inout parameters, swizzle and
  * matrix element writes, increments. */
 static void statements_and_lvalues(void) {
@@ -603,6 +636,7 @@ int main(void) {
     RUN(texture_sampling);
     RUN(depth_range_remap);
     RUN(vertex_transform_and_varying);
+    RUN(derived_varying_values);
     RUN(statements_and_lvalues);
     RUN(vector_logic_and_bits);
     test_gl_destroy(gl);
