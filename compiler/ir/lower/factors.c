@@ -4,11 +4,9 @@
  * vector products. The parameter-only factors go first and together, so the preshade pass takes
  * their product (`ks * pow(..) * Specular * d` reads `pow(..) * d * hfx_pre0`, with hfx_pre0 =
  * ks * Specular); then the other scalars; then the other vectors, in their order. A product is
- * rewritten only when that costs fewer component multiplications. A scalar factor pow(d, 2) of
- * a variable counts as d * d: `c3 * pow(d, 2)` is `c3 * d * d`, which llvmpipe's compiler folds
- * with a neighbouring `c2 * d` (1.3 % of point.fx's pixel-bound frame against `c3 * (d * d)`).
- * The rounding is a reordered product's, as fxc's (without /Gis). Run by ir_pass_preshade, so
- * --no-preshaders keeps the order as written. */
+ * rewritten only when that costs fewer component multiplications. The rounding is a reordered
+ * product's, as fxc's (without /Gis). Run by ir_pass_preshade, so --no-preshaders keeps the
+ * order as written. */
 #include "ir/ir.h"
 
 enum { MAX_FACTORS = 16 };
@@ -20,7 +18,7 @@ typedef struct factors {
     ir_ctx *c;
     group uni_scalars, uni_vectors, scalars, vectors;
     unsigned cost;
-    bool ok, squares; /* squares: a pow(d, 2) became d * d */
+    bool ok;
 } factors;
 
 static bool float_base(const hfx_type *t) { return t->base == B_FLOAT || t->base == B_HALF; }
@@ -50,28 +48,11 @@ static void add(factors *fs, group *g, ir_expr *e) {
     else g->f[g->n++] = e;
 }
 
-/* pow(d, 2) of a float variable (or a component of one): d, which can be read twice. */
-static ir_expr *squared(const ir_expr *e) {
-    if (e->kind != IE_INTRIN || e->intrin != HFX_INTR_POW || e->n != 2 || e->type->kind != TY_SCALAR ||
-        !float_base(e->type) || !ir_is_const(e->a[1]) || e->a[1]->cval[0] != 2)
-        return NULL;
-    const ir_expr *x = e->a[0];
-    while (x->kind == IE_SWIZZLE || x->kind == IE_FIELD) x = x->a[0];
-    return x->kind == IE_VAR ? e->a[0] : NULL;
-}
-
 static void collect_scalar(factors *fs, ir_expr *e) {
-    ir_expr *d = squared(e);
     if (is_product(e) && e->type->kind == TY_SCALAR) {
         if (!ir_pre_only(fs->c, e)) fs->cost++;
         collect_scalar(fs, e->a[0]);
         collect_scalar(fs, e->a[1]);
-        return;
-    }
-    if (d && !ir_pre_only(fs->c, e)) {
-        fs->squares = true, fs->cost++;
-        add(fs, &fs->scalars, d);
-        add(fs, &fs->scalars, ir_clone_expr(fs->c, d));
         return;
     }
     add(fs, ir_pre_only(fs->c, e) ? &fs->uni_scalars : &fs->scalars, e);
@@ -123,25 +104,10 @@ static unsigned reordered_cost(const factors *fs, unsigned n) {
     return (scalars ? scalars - 1 : 0) + (terms ? terms - 1 : 0) * n;
 }
 
-/* A scalar product with a square in it, left to right: the parameters' factors, then the rest. */
-static void reorder_scalar(ir_ctx *c, ir_expr **slot) {
-    ir_expr *e = *slot;
-    factors fs = {.c = c, .ok = true};
-    collect_scalar(&fs, e);
-    if (!fs.ok || !fs.squares) return;
-    ir_expr *r = product_of(c, &fs.uni_scalars, NULL, e->type, e->loc);
-    *slot = product_of(c, &fs.scalars, r, e->type, e->loc);
-}
-
 static void reorder(ir_ctx *c, ir_expr **slot, void *data) {
     (void)data;
     ir_expr *e = *slot;
-    if (!is_product(e) || ir_has_side_effects(e)) return;
-    if (e->type->kind == TY_SCALAR) {
-        reorder_scalar(c, slot);
-        return;
-    }
-    if (e->type->kind != TY_VECTOR) return;
+    if (!is_product(e) || e->type->kind != TY_VECTOR || ir_has_side_effects(e)) return;
     factors fs = {.c = c, .ok = true};
     collect(&fs, e);
     unsigned n = e->type->rows * e->type->cols;
