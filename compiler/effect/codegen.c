@@ -292,11 +292,8 @@ static void mark_switches(const hfx_fx_effect *fx, ir_shader *const sh[2], hfx_f
 /* The derived varyings (io->derived) out of a set of semantics. */
 static void drop_derived(strset *s, const glsl_iface *io) {
     uint32_t n = 0;
-    for (uint32_t i = 0; i < s->count; i++) {
-        bool gone = false;
-        for (uint32_t k = 0; k < io->derived_count; k++) gone |= strcmp(s->items[i], io->derived[k]) == 0;
-        if (!gone) s->items[n++] = s->items[i];
-    }
+    for (uint32_t i = 0; i < s->count; i++)
+        if (!glsl_iface_derived(io, s->items[i])) s->items[n++] = s->items[i];
     s->count = n;
 }
 

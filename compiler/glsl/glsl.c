@@ -219,7 +219,7 @@ static void write_vec4(gp *p, const ir_leaf *l, const char *dst, bool clamp) {
     sb_put(p->out, ";\n");
 }
 
-static bool derived(const glsl_iface *io, const char *sem) {
+bool glsl_iface_derived(const glsl_iface *io, const char *sem) {
     for (uint32_t i = 0; i < io->derived_count; i++)
         if (strcmp(io->derived[i], sem) == 0) return true;
     return false;
@@ -272,7 +272,7 @@ static const char *attr_glsl(gp *p, const char *sem) {
 }
 
 static void feed_input(gp *p, const ir_leaf *l) {
-    if (p->stage == IR_PIXEL && derived(p->io, l->semantic)) return; /* the entry computes it */
+    if (p->stage == IR_PIXEL && glsl_iface_derived(p->io, l->semantic)) return; /* the entry computes it */
     line_start(p);
     sb_printf(p->out, "%s = ", l->path);
     if (p->stage == IR_VERTEX) {
@@ -316,7 +316,7 @@ static void write_vertex_output(gp *p, const ir_leaf *l) {
         sb_printf(p->out, "gl_PointSize = float(%s%s);\n", l->path, hfx_type_components(l->type) > 1 ? ".x" : "");
         return;
     }
-    if (derived(p->io, l->semantic)) return; /* the pixel entry computes it */
+    if (glsl_iface_derived(p->io, l->semantic)) return; /* the pixel entry computes it */
     bool clamp = p->io->clamp_vs_colors && strncmp(l->semantic, "COLOR", 5) == 0;
     write_vec4(p, l, varying_name(p, l->semantic), clamp);
 }

@@ -20,6 +20,9 @@ typedef struct glsl_iface {
     const ir_var **pre_vars; const uint32_t *pre_regs; uint32_t pre_count; /* preshaders' registers */
 } glsl_iface;
 
+/* sem is one of io's derived varyings. */
+bool glsl_iface_derived(const glsl_iface *io, const char *sem);
+
 /* Prints one stage for one target (sh NULL: the fixed-function stand-in); malloc'ed text,
  * NULL with errors in diags. glsl.c */
 char *glsl_print(ir_ctx *c, const ir_shader *sh, ir_stage stage, const glsl_iface *io, hfx_target target);

@@ -53,6 +53,28 @@ ir_expr *ir_new_expr(ir_ctx *c, ir_expr_kind k, const hfx_type *ty, hfx_loc loc,
     return e;
 }
 
+ir_expr *ir_new_binary(ir_ctx *c, hfx_op op, const hfx_type *ty, ir_expr *a, ir_expr *b) {
+    ir_expr *e = ir_new_expr(c, IE_BINARY, ty, a->loc, 2);
+    e->op = op;
+    e->a[0] = a;
+    e->a[1] = b;
+    return e;
+}
+
+ir_expr *ir_new_convert(ir_ctx *c, const hfx_type *ty, ir_expr *x) {
+    ir_expr *e = ir_new_expr(c, IE_CONVERT, ty, x->loc, 1);
+    e->a[0] = x;
+    return e;
+}
+
+ir_stmt *ir_new_stmt(ir_ctx *c, ir_stmt_kind k, hfx_loc loc) {
+    ir_stmt *s = HFX_NEW(c->arena, ir_stmt);
+    if (!s) return NULL;
+    s->kind = k;
+    s->loc = loc;
+    return s;
+}
+
 ir_expr *ir_const_scalar(ir_ctx *c, const hfx_type *ty, double v, hfx_loc loc) {
     ir_expr *e = ir_new_expr(c, IE_CONST, ty, loc, 0);
     unsigned n = hfx_type_components(ty);
@@ -337,12 +359,7 @@ static ir_expr *build_expr(builder *b, const hfx_expr *e) {
     }
 }
 
-static ir_stmt *new_stmt(builder *b, ir_stmt_kind k, hfx_loc loc) {
-    ir_stmt *s = HFX_NEW(b->c->arena, ir_stmt);
-    s->kind = k;
-    s->loc = loc;
-    return s;
-}
+static ir_stmt *new_stmt(builder *b, ir_stmt_kind k, hfx_loc loc) { return ir_new_stmt(b->c, k, loc); }
 
 typedef struct stmt_list { ir_stmt **items; uint32_t count, cap; } stmt_list;
 

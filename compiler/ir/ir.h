@@ -173,6 +173,7 @@ void ir_pass_factors(ir_ctx *c, ir_shader *sh);     /* vector products: paramete
 /* Registers a stage may take for parameters and preshaders together (preshade.c): two stages
  * then always fit a program's 256. */
 enum { IR_STAGE_REGS = 128 };
+uint32_t ir_stage_regs(const ir_ctx *c, const ir_shader *sh); /* registers its parameters and preshaders take (packed) */
 /* Derived varyings (lower/varyings.c), for a program's pair of lowered stages: the vertex outputs
  * the pixel stage computes from another output and parameters instead. When there are some,
  * *vs and *ps become copies that do so (the stages given stay as they were: programs share them)
@@ -189,12 +190,33 @@ const char *ir_pre_text(ir_ctx *c, const ir_expr *e); /* e as HLSL, for the GLSL
 
 /* Constructors shared by the passes (ir.c). */
 ir_expr *ir_new_expr(ir_ctx *c, ir_expr_kind k, const hfx_type *ty, hfx_loc loc, uint32_t n);
+ir_expr *ir_new_binary(ir_ctx *c, hfx_op op, const hfx_type *ty, ir_expr *a, ir_expr *b); /* a op b, at a's place */
+ir_expr *ir_new_convert(ir_ctx *c, const hfx_type *ty, ir_expr *x);                    /* (ty)x: a splat, a cast */
+ir_stmt *ir_new_stmt(ir_ctx *c, ir_stmt_kind k, hfx_loc loc);                          /* an empty statement of kind k */
 ir_expr *ir_const_scalar(ir_ctx *c, const hfx_type *ty, double v, hfx_loc loc);
 ir_expr *ir_clone_expr(ir_ctx *c, const ir_expr *e);
 bool ir_is_const(const ir_expr *e);
 bool ir_has_side_effects(const ir_expr *e);
 bool ir_same_expr(const ir_expr *a, const ir_expr *b); /* the same tree: kinds, types, variables, constants */
 ir_var *ir_lvalue_root(const ir_expr *e); /* the variable an l-value writes, or NULL */
+/* The variables a statement may change (walk.c): what it assigns (through swizzles, fields,
+ * indexes, out arguments) and declares; calls: it calls a user function (a private global may
+ * change); unknown: some target's variable cannot be told, or memory ran out. */
+typedef struct ir_var_set { const ir_var **vars; uint32_t count, cap; bool calls, unknown; } ir_var_set;
+void ir_note_writes(ir_ctx *c, ir_stmt *s, ir_var_set *w);
+void ir_var_set_add(ir_ctx *c, ir_var_set *s, const ir_var *v); /* NULL: unknown */
+bool ir_var_set_has(const ir_var_set *s, const ir_var *v);
+/* The n statements s into block b before its statement `at` (false: out of memory). */
+bool ir_insert_stmts(ir_ctx *c, ir_stmt *b, uint32_t at, ir_stmt *const *s, uint32_t n);
+/* Reads and writes of one variable in a statement (walk.c): a compound assignment's target
+ * counts as both; with decls, a declaration of v counts as a write; slot: the last read. */
+typedef struct ir_uses { const ir_var *v; bool decls; unsigned reads, writes; ir_expr **slot; } ir_uses;
+void ir_count_uses(ir_uses *u, ir_stmt *s);
+bool ir_has_jumps(const ir_stmt *s); /* a break, continue, return or discard somewhere in s */
+/* The intrinsic computes from its arguments alone, wherever it runs: not sampling, derivatives,
+ * clip, noise, or one with outputs. */
+bool ir_intrinsic_movable(ir_intrin id);
+bool ir_integer_division(const ir_expr *e); /* an integer / or %: may trap; a guard must stay its guard */
 /* e writes its operand i: an assignment's target, ++ / --'s operand, a call's out argument,
  * sincos's / modf's / frexp's outputs. */
 bool ir_writes_operand(const ir_expr *e, uint32_t i);

@@ -75,23 +75,9 @@ static void collect(factors *fs, ir_expr *e) {
     }
 }
 
-static ir_expr *times(ir_ctx *c, ir_expr *a, ir_expr *b, const hfx_type *t, hfx_loc loc) {
-    if (!a) return b;
-    ir_expr *m = ir_new_expr(c, IE_BINARY, t, loc, 2);
-    m->op = OP_MUL;
-    m->a[0] = a;
-    m->a[1] = b;
-    return m;
-}
-
-static ir_expr *splat(ir_ctx *c, ir_expr *s, const hfx_type *t) {
-    ir_expr *v = ir_new_expr(c, IE_CONVERT, t, s->loc, 1);
-    v->a[0] = s;
-    return v;
-}
-
-static ir_expr *product_of(ir_ctx *c, const group *g, ir_expr *acc, const hfx_type *t, hfx_loc loc) {
-    for (unsigned i = 0; i < g->n; i++) acc = times(c, acc, g->f[i], t, loc);
+/* acc * g's factors, left to right (acc NULL: from the first factor). */
+static ir_expr *product_of(ir_ctx *c, const group *g, ir_expr *acc, const hfx_type *t) {
+    for (unsigned i = 0; i < g->n; i++) acc = acc ? ir_new_binary(c, OP_MUL, t, acc, g->f[i]) : g->f[i];
     return acc;
 }
 
@@ -113,14 +99,14 @@ static void reorder(ir_ctx *c, ir_expr **slot, void *data) {
     unsigned n = e->type->rows * e->type->cols;
     if (!fs.ok || reordered_cost(&fs, n) >= fs.cost) return;
     const hfx_type *scalar = hfx_type_scalar(c->types, e->type->base);
-    ir_expr *uni = product_of(c, &fs.uni_scalars, NULL, scalar, e->loc), *s = NULL;
+    ir_expr *uni = product_of(c, &fs.uni_scalars, NULL, scalar), *s = NULL;
     if (uni && !fs.uni_vectors.n) s = uni, uni = NULL; /* all scalars: one scalar product */
-    else if (uni) uni = splat(c, uni, e->type);
-    uni = product_of(c, &fs.uni_vectors, uni, e->type, e->loc);
-    s = product_of(c, &fs.scalars, s, scalar, e->loc);
-    ir_expr *r = s ? splat(c, s, e->type) : NULL;
-    if (uni) r = times(c, r, uni, e->type, e->loc);
-    *slot = product_of(c, &fs.vectors, r, e->type, e->loc);
+    else if (uni) uni = ir_new_convert(c, e->type, uni);
+    uni = product_of(c, &fs.uni_vectors, uni, e->type);
+    s = product_of(c, &fs.scalars, s, scalar);
+    ir_expr *r = s ? ir_new_convert(c, e->type, s) : NULL;
+    if (uni) r = r ? ir_new_binary(c, OP_MUL, e->type, r, uni) : uni;
+    *slot = product_of(c, &fs.vectors, r, e->type);
 }
 
 void ir_pass_factors(ir_ctx *c, ir_shader *sh) {

@@ -23,14 +23,7 @@ static bool pure(const ir_expr *e) {
     if (!e) return true;
     if (e->kind == IE_CALL || e->kind == IE_ASSIGN || e->kind == IE_COMMA) return false;
     if (e->kind == IE_UNARY && e->op != OP_NEG && e->op != OP_POS && e->op != OP_NOT && e->op != OP_BITNOT) return false;
-    if (e->kind == IE_INTRIN) {
-        const hfx_intrinsic_info *info = hfx_intrinsic_info_of((int)e->intrin);
-        if (!info || info->sig == SIG_TEX || e->intrin == HFX_INTR_DDX || e->intrin == HFX_INTR_DDY ||
-            e->intrin == HFX_INTR_FWIDTH || e->intrin == HFX_INTR_CLIP || e->intrin == HFX_INTR_SINCOS ||
-            e->intrin == HFX_INTR_MODF || e->intrin == HFX_INTR_FREXP)
-            return false;
-    }
-    if (e->kind == IE_BINARY && (e->op == OP_DIV || e->op == OP_MOD) && e->type->base != B_FLOAT && e->type->base != B_HALF)
+    if ((e->kind == IE_INTRIN && !ir_intrinsic_movable(e->intrin)) || ir_integer_division(e))
         return false; /* an integer division the branch guards may trap */
     for (uint32_t i = 0; i < e->n; i++)
         if (!pure(e->a[i])) return false;

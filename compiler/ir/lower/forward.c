@@ -17,50 +17,6 @@
 
 /* ---- forward substitution ---- */
 
-typedef struct uses_of {
-    const ir_var *v;
-    unsigned reads, writes;
-    ir_expr **slot;         /* the read */
-} uses_of;
-
-static void count_in(uses_of *u, ir_expr **slot, bool lvalue);
-
-static void count_args(uses_of *u, ir_expr *e) {
-    for (uint32_t i = 0; i < e->n; i++) count_in(u, &e->a[i], ir_writes_operand(e, i));
-}
-
-/* Reads and writes of u->v in *slot (lvalue: the place is written, through swizzles, indexes
- * and fields, whose indexes are read). */
-static void count_in(uses_of *u, ir_expr **slot, bool lvalue) {
-    ir_expr *e = *slot;
-    if (!e) return;
-    if (e->kind == IE_VAR && e->var == u->v) {
-        if (lvalue) u->writes++;
-        else u->reads++, u->slot = slot;
-        return;
-    }
-    if (lvalue && (e->kind == IE_SWIZZLE || e->kind == IE_FIELD || e->kind == IE_INDEX)) {
-        count_in(u, &e->a[0], true);
-        for (uint32_t i = 1; i < e->n; i++) count_in(u, &e->a[i], false);
-        return;
-    }
-    if (lvalue && e->kind == IE_CONSTRUCT) { /* float4(a, b) = v */
-        for (uint32_t i = 0; i < e->n; i++) count_in(u, &e->a[i], true);
-        return;
-    }
-    count_args(u, e);
-}
-
-static void count_stmt(uses_of *u, ir_stmt *s) {
-    if (!s) return;
-    count_stmt(u, s->init);
-    count_in(u, &s->expr, false);
-    count_in(u, &s->step, false);
-    for (uint32_t i = 0; i < s->count; i++) count_stmt(u, s->body[i]);
-    count_stmt(u, s->then_s);
-    count_stmt(u, s->else_s);
-}
-
 /* The next statement may take the initialiser: straight-line, and nothing in it runs before the
  * read that could change what the initialiser reads (no calls, no assignments but its own). */
 static bool simple_next(const ir_stmt *s) {
@@ -77,10 +33,10 @@ static bool substitute(ir_stmt *fn_body, ir_stmt *b, uint32_t i) {
     if (d->kind != IS_DECL || !d->var || d->var->kind != IRV_LOCAL || d->var->hoisted || !d->expr || !next ||
         !simple_next(next) || !hfx_type_is_numeric(d->var->type) || ir_has_side_effects(d->expr))
         return false;
-    uses_of all = {d->var, 0, 0, NULL}, here = {d->var, 0, 0, NULL};
-    count_stmt(&here, next); /* first: most locals fail here, and the whole body costs more */
+    ir_uses all = {d->var, false, 0, 0, NULL}, here = {d->var, false, 0, 0, NULL};
+    ir_count_uses(&here, next); /* first: most locals fail here, and the whole body costs more */
     if (here.reads != 1 || here.writes) return false;
-    count_stmt(&all, fn_body);
+    ir_count_uses(&all, fn_body);
     if (all.reads != 1 || all.writes) return false;
     *here.slot = d->expr;
     for (uint32_t k = i; k + 1 < b->count; k++) b->body[k] = b->body[k + 1];
@@ -144,8 +100,8 @@ static ir_stmt *decl_of(ir_stmt *s, const ir_var *v) {
 }
 
 static bool never_written(ir_stmt *body, const ir_var *v) {
-    uses_of u = {v, 0, 0, NULL};
-    count_stmt(&u, body);
+    ir_uses u = {v, false, 0, 0, NULL};
+    ir_count_uses(&u, body);
     return u.writes == 0;
 }
 

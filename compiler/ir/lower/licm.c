@@ -16,86 +16,26 @@
  * loops go first, so what an outer loop does not change moves out of it too. */
 #include "ir/ir.h"
 
-/* The variables one loop may change. */
-typedef struct writes {
-    const ir_var **vars; uint32_t count, cap;
-    bool calls;   /* a user function is called: private globals may change */
-    bool unknown; /* some write's target is not a variable: hoist nothing */
-} writes;
-
 typedef struct licm {
     ir_ctx *c;
-    writes w;
+    ir_var_set w;  /* what the loop at hand may change (unknown: hoist nothing) */
     ir_stmt **decls; uint32_t decl_count, decl_cap; /* the locals hoisted out of the loop at hand */
     unsigned next;                                  /* hfx_invN: N, unique in the function */
 } licm;
 
-/* ---- what a loop writes ---- */
-
-static void add_write(licm *l, const ir_var *v) {
-    if (!v) { l->w.unknown = true; return; }
-    if (HFX_ARENA_GROW(l->c->arena, l->w.vars, l->w.count, l->w.cap, 16)) l->w.vars[l->w.count++] = v;
-    else l->w.unknown = true;
-}
-
-static bool is_written(const licm *l, const ir_var *v) {
-    for (uint32_t i = 0; i < l->w.count; i++)
-        if (l->w.vars[i] == v) return true;
-    return false;
-}
-
-static void note_target(licm *l, const ir_expr *e, const ir_expr *target) {
-    if (e->kind == IE_ASSIGN && target->kind == IE_CONSTRUCT) { /* float4(a, b) = v: each argument */
-        for (uint32_t k = 0; k < target->n; k++) add_write(l, ir_lvalue_root(target->a[k]));
-        return;
-    }
-    add_write(l, ir_lvalue_root(target));
-}
-
-static void note_writes(ir_ctx *c, ir_expr **slot, void *data) {
-    (void)c;
-    licm *l = data;
-    const ir_expr *e = *slot;
-    if (e->kind == IE_CALL) l->w.calls = true;
-    for (uint32_t i = 0; i < e->n; i++)
-        if (ir_writes_operand(e, i)) note_target(l, e, e->a[i]);
-}
-
-/* Declarations too: a variable declared inside the loop takes a new value each iteration. */
-static void note_decls(licm *l, const ir_stmt *s) {
-    if (!s) return;
-    if (s->kind == IS_DECL) add_write(l, s->var);
-    note_decls(l, s->init);
-    for (uint32_t i = 0; i < s->count; i++) note_decls(l, s->body[i]);
-    note_decls(l, s->then_s);
-    note_decls(l, s->else_s);
-}
-
-/* The loop's writes, its for-init included (what it declares is not in scope before it). */
+/* The loop's writes, its for-init included (what it declares is not in scope before it; a
+ * variable declared inside takes a new value each iteration). */
 static void find_writes(licm *l, ir_stmt *loop) {
     l->w.count = 0;
     l->w.calls = l->w.unknown = false;
-    ir_walk_stmt_exprs(l->c, loop, note_writes, l);
-    note_decls(l, loop);
+    ir_note_writes(l->c, loop, &l->w);
 }
 
 /* ---- what may move ---- */
 
-static bool movable_intrinsic(ir_intrin id) {
-    const hfx_intrinsic_info *info = hfx_intrinsic_info_of((int)id);
-    if (!info || info->sig == SIG_TEX) return false; /* sampling: derivatives depend on where it runs */
-    return id != HFX_INTR_DDX && id != HFX_INTR_DDY && id != HFX_INTR_FWIDTH && id != HFX_INTR_CLIP &&
-           id != HFX_INTR_NOISE && id != HFX_INTR_SINCOS && id != HFX_INTR_MODF && id != HFX_INTR_FREXP;
-}
-
-static bool integer_division(const ir_expr *e) {
-    return e->kind == IE_BINARY && (e->op == OP_DIV || e->op == OP_MOD) && e->type->base != B_FLOAT &&
-           e->type->base != B_HALF;
-}
-
 static bool invariant_var(const licm *l, const ir_var *v) {
     if (l->w.calls && v->kind == IRV_PRIVATE) return false;
-    return !is_written(l, v);
+    return !ir_var_set_has(&l->w, v);
 }
 
 /* The node itself may be computed before the loop, its operands aside. */
@@ -104,9 +44,9 @@ static bool movable_node(const licm *l, const ir_expr *e) {
     case IE_CONST: return true;
     case IE_VAR: return invariant_var(l, e->var);
     case IE_UNARY: return e->op == OP_NEG || e->op == OP_NOT || e->op == OP_BITNOT;
-    case IE_BINARY: return !integer_division(e);
+    case IE_BINARY: return !ir_integer_division(e);
     case IE_SELECT: case IE_CONSTRUCT: case IE_CONVERT: case IE_SWIZZLE: case IE_INDEX: case IE_FIELD: return true;
-    case IE_INTRIN: return movable_intrinsic(e->intrin);
+    case IE_INTRIN: return ir_intrinsic_movable(e->intrin);
     default: return false; /* assignments, calls, commas */
     }
 }
@@ -205,14 +145,7 @@ static uint32_t hoist_in_block(licm *l, ir_stmt *b, uint32_t i) {
     hoist_loop(l, b->body[i]);
     uint32_t n = l->decl_count;
     if (!n) return i + 1;
-    ir_stmt **body = HFX_NEW_ARRAY(l->c->arena, ir_stmt *, b->count + n);
-    if (!body) return i + 1;
-    for (uint32_t k = 0; k < i; k++) body[k] = b->body[k];
-    for (uint32_t k = 0; k < n; k++) body[i + k] = l->decls[k];
-    for (uint32_t k = i; k < b->count; k++) body[k + n] = b->body[k];
-    b->body = body;
-    b->count += n;
-    return i + n + 1;
+    return ir_insert_stmts(l->c, b, i, l->decls, n) ? i + n + 1 : i + 1;
 }
 
 /* A loop that is not in a block (an if's branch, another loop's whole body, a case) gets one, unless

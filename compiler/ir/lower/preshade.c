@@ -137,17 +137,18 @@ static void entry_assignments(pre *p) {
     }
 }
 
-static uint32_t parameter_regs(const ir_ctx *c, const ir_shader *sh) {
+uint32_t ir_stage_regs(const ir_ctx *c, const ir_shader *sh) {
     uint32_t n = 0;
     for (uint32_t i = 0; i < sh->global_count; i++) {
         const ir_var *v = sh->globals[i];
         if (v->kind == IRV_UNIFORM && v->param != HFX_NONE) n += hfx_fx_param_packable(c->fx, v->param);
     }
+    for (uint32_t i = 0; i < sh->pre_count; i++) n += regs_of(sh->pres[i]->type);
     return n;
 }
 
 void ir_pass_preshade(ir_ctx *c, ir_shader *sh) {
-    pre p = {c, sh, parameter_regs(c, sh)};
+    pre p = {c, sh, ir_stage_regs(c, sh)};
     ir_pass_sums(c, sh);
     ir_pass_forward(c, sh);
     ir_pass_factors(c, sh);

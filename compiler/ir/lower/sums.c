@@ -44,35 +44,6 @@ static bool steps_by_one(const ir_expr *e, const ir_var *i) {
            e->a[1]->cval[0] == 1;
 }
 
-/* Counts of one variable's reads and writes in a subtree. */
-typedef struct touch { const ir_var *v; unsigned reads, writes; bool jumps; } touch;
-
-static void touch_expr(touch *t, const ir_expr *e, bool lvalue) {
-    if (!e) return;
-    if (e->kind == IE_VAR) {
-        if (e->var == t->v) lvalue ? t->writes++ : t->reads++;
-        return;
-    }
-    for (uint32_t k = 0; k < e->n; k++) {
-        bool target = ir_writes_operand(e, k);
-        bool place = lvalue && (k == 0 || e->kind == IE_CONSTRUCT);
-        if (target && e->kind == IE_ASSIGN && e->op != OP_NONE) touch_expr(t, e->a[k], false); /* += reads too */
-        touch_expr(t, e->a[k], target || place);
-    }
-}
-
-static void touch_stmt(touch *t, const ir_stmt *s) {
-    if (!s) return;
-    if (s->kind == IS_BREAK || s->kind == IS_CONTINUE || s->kind == IS_RETURN || s->kind == IS_DISCARD) t->jumps = true;
-    if (s->kind == IS_DECL && s->var == t->v) t->writes++;
-    touch_stmt(t, s->init);
-    touch_expr(t, s->expr, false);
-    touch_expr(t, s->step, false);
-    for (uint32_t k = 0; k < s->count; k++) touch_stmt(t, s->body[k]);
-    touch_stmt(t, s->then_s);
-    touch_stmt(t, s->else_s);
-}
-
 static bool counted_loop(const ir_ctx *c, const ir_stmt *loop, counted *out) {
     const ir_expr *cond = loop->expr;
     if (loop->kind != IS_FOR || loop->max_iterations || !cond || cond->kind != IE_BINARY || cond->op != OP_LT) return false;
@@ -80,10 +51,10 @@ static bool counted_loop(const ir_ctx *c, const ir_stmt *loop, counted *out) {
     if (!out->i || !is_var(cond->a[0], out->i) || !int_scalar(cond->a[1]->type) || !ir_pre_only(c, cond->a[1]) ||
         !steps_by_one(loop->step, out->i))
         return false;
-    touch t = {out->i, 0, 0, false};
-    touch_stmt(&t, loop->then_s);
+    ir_uses u = {out->i, true, 0, 0, NULL};
+    ir_count_uses(&u, loop->then_s);
     out->bound = cond->a[1];
-    return !t.jumps && t.writes == 0;
+    return !ir_has_jumps(loop->then_s) && u.writes == 0;
 }
 
 /* ---- the sum ---- */
@@ -119,19 +90,11 @@ static void split(const ir_ctx *c, const ir_stmt *b, uint32_t at, ir_expr *e, co
     else ts->kept[ts->nk++] = e;
 }
 
-static ir_expr *binary(ir_ctx *c, hfx_op op, const hfx_type *t, ir_expr *a, ir_expr *b) {
-    ir_expr *e = ir_new_expr(c, IE_BINARY, t, a->loc, 2);
-    e->op = op;
-    e->a[0] = a;
-    e->a[1] = b;
-    return e;
-}
-
 static ir_expr *sum_of(ir_ctx *c, ir_expr *const *t, unsigned n, const hfx_type *ty, bool clone) {
     ir_expr *s = NULL;
     for (unsigned k = 0; k < n; k++) {
         ir_expr *x = clone ? ir_clone_expr(c, t[k]) : t[k];
-        s = s ? binary(c, OP_ADD, ty, s, x) : x;
+        s = s ? ir_new_binary(c, OP_ADD, ty, s, x) : x;
     }
     return s;
 }
@@ -142,37 +105,24 @@ static ir_expr *trips(ir_ctx *c, const counted *k, const hfx_type *ty) {
     hfx_loc loc = k->bound->loc;
     ir_expr *from = ir_const_scalar(c, i, k->from, loc), *n = ir_clone_expr(c, k->bound);
     ir_expr *sel = ir_new_expr(c, IE_SELECT, i, loc, 3);
-    sel->a[0] = binary(c, OP_GT, hfx_type_scalar(c->types, B_BOOL), n, from);
-    sel->a[1] = k->from == 0 ? ir_clone_expr(c, k->bound) : binary(c, OP_SUB, i, ir_clone_expr(c, k->bound), ir_clone_expr(c, from));
+    sel->a[0] = ir_new_binary(c, OP_GT, hfx_type_scalar(c->types, B_BOOL), n, from);
+    sel->a[1] = k->from == 0 ? ir_clone_expr(c, k->bound) : ir_new_binary(c, OP_SUB, i, ir_clone_expr(c, k->bound), ir_clone_expr(c, from));
     sel->a[2] = ir_const_scalar(c, i, 0, loc);
-    ir_expr *r = ir_new_expr(c, IE_CONVERT, f, loc, 1);
-    r->a[0] = sel;
-    if (ty->kind == TY_SCALAR) return r;
-    ir_expr *v = ir_new_expr(c, IE_CONVERT, ty, loc, 1);
-    v->a[0] = r;
-    return v;
+    ir_expr *r = ir_new_convert(c, f, sel);
+    return ty->kind == TY_SCALAR ? r : ir_new_convert(c, ty, r);
 }
 
 /* `acc += ...` in the loop's body whose invariant terms may move; acc the local it adds to. */
-static const ir_var *accumulator(const ir_stmt *s, const ir_stmt *loop) {
+static const ir_var *accumulator(const ir_stmt *s, ir_stmt *loop) {
     const ir_expr *e = s->kind == IS_EXPR ? s->expr : NULL;
     if (!e || e->kind != IE_ASSIGN || e->op != OP_ADD || e->a[0]->kind != IE_VAR) return NULL;
     const ir_var *acc = e->a[0]->var;
     if (acc->kind != IRV_LOCAL || (acc->type->base != B_FLOAT && acc->type->base != B_HALF) ||
         (acc->type->kind != TY_SCALAR && acc->type->kind != TY_VECTOR))
         return NULL;
-    touch t = {acc, 0, 0, false};
-    touch_stmt(&t, loop);
-    return t.reads == 1 && t.writes == 1 ? acc : NULL; /* the += alone */
-}
-
-static ir_stmt *statement(ir_ctx *c, ir_expr *e) {
-    ir_stmt *s = HFX_NEW(c->arena, ir_stmt);
-    if (!s) return NULL;
-    s->kind = IS_EXPR;
-    s->loc = e->loc;
-    s->expr = e;
-    return s;
+    ir_uses u = {acc, true, 0, 0, NULL};
+    ir_count_uses(&u, loop);
+    return u.reads == 1 && u.writes == 1 ? acc : NULL; /* the += alone */
 }
 
 /* The invariant part of body statement s, as a statement to run before the loop, or NULL. */
@@ -187,35 +137,26 @@ static ir_stmt *take_invariant(ir_ctx *c, ir_stmt *b, uint32_t at, ir_stmt *s, c
         m->nl = locals;
         return NULL;
     }
-    ir_expr *before = ir_new_expr(c, IE_ASSIGN, acc->type, e->loc, 2);
-    before->op = OP_ADD;
-    before->a[0] = ir_clone_expr(c, e->a[0]);
-    before->a[1] = binary(c, OP_MUL, acc->type, sum_of(c, ts.moved, ts.nm, acc->type, true), trips(c, k, acc->type));
+    ir_stmt *before = ir_new_stmt(c, IS_EXPR, e->loc);
+    ir_expr *add = before ? ir_new_expr(c, IE_ASSIGN, acc->type, e->loc, 2) : NULL;
+    if (!add) return NULL;
+    add->op = OP_ADD;
+    add->a[0] = ir_clone_expr(c, e->a[0]);
+    add->a[1] = ir_new_binary(c, OP_MUL, acc->type, sum_of(c, ts.moved, ts.nm, acc->type, true), trips(c, k, acc->type));
+    before->expr = add;
     if (ts.nk) e->a[1] = sum_of(c, ts.kept, ts.nk, acc->type, false);
     else s->kind = IS_BLOCK, s->expr = NULL, s->count = 0; /* nothing left to add in the loop */
-    return statement(c, before);
-}
-
-/* Block b with the statements of m before its statement `at`; returns the loop's new index. */
-static uint32_t insert(ir_ctx *c, ir_stmt *b, uint32_t at, const moves *m) {
-    ir_stmt **body = HFX_NEW_ARRAY(c->arena, ir_stmt *, b->count + m->nb);
-    if (!body) return at;
-    for (uint32_t k = 0; k < at; k++) body[k] = b->body[k];
-    for (uint32_t k = 0; k < m->nb; k++) body[at + k] = m->before[k];
-    for (uint32_t k = at; k < b->count; k++) body[k + m->nb] = b->body[k];
-    b->body = body;
-    b->count += m->nb;
-    return at + m->nb;
+    return before;
 }
 
 /* The declarations of the locals whose values moved, when nothing reads them any more. */
 static uint32_t drop_unread(ir_stmt *b, uint32_t at, const moves *m) {
     for (uint32_t j = 0; j < at;) {
-        touch t = {b->body[j]->var, 0, 0, false};
+        ir_uses u = {b->body[j]->var, false, 0, 0, NULL};
         bool moved = false;
-        for (unsigned k = 0; k < m->nl; k++) moved |= b->body[j]->kind == IS_DECL && m->locals[k] == t.v;
-        if (moved) touch_stmt(&t, b);
-        if (!moved || t.reads) { j++; continue; }
+        for (unsigned k = 0; k < m->nl; k++) moved |= b->body[j]->kind == IS_DECL && m->locals[k] == u.v;
+        if (moved) ir_count_uses(&u, b);
+        if (!moved || u.reads) { j++; continue; }
         for (uint32_t k = j; k + 1 < b->count; k++) b->body[k] = b->body[k + 1];
         b->count--, at--;
     }
@@ -235,8 +176,8 @@ static uint32_t sums_of_loop(ir_ctx *c, ir_stmt *b, uint32_t at) {
         ir_stmt *before = take_invariant(c, b, at, list[s], &k, &m);
         if (before) m.before[m.nb++] = before;
     }
-    if (!m.nb) return at;
-    return drop_unread(b, insert(c, b, at, &m), &m);
+    if (!m.nb || !ir_insert_stmts(c, b, at, m.before, m.nb)) return at;
+    return drop_unread(b, at + m.nb, &m);
 }
 
 static void sums_stmt(ir_ctx *c, ir_stmt *s) {

@@ -172,54 +172,23 @@ static const ir_var *returned_local(const ir_stmt *body) {
 
 /* ---- the value X: the same in both statements ---- */
 
-typedef struct var_set { const ir_var **vars; uint32_t count, cap; bool calls, unknown; } var_set;
-
-static bool has_var(const var_set *s, const ir_var *v) {
-    for (uint32_t i = 0; i < s->count; i++)
-        if (s->vars[i] == v) return true;
-    return false;
-}
-
-static void add_var(ir_ctx *c, var_set *s, const ir_var *v) {
-    if (!v) { s->unknown = true; return; }
-    if (has_var(s, v)) return;
-    if (HFX_ARENA_GROW(c->arena, s->vars, s->count, s->cap, 8)) s->vars[s->count++] = v;
-    else s->unknown = true;
-}
-
 static void note_read(ir_ctx *c, ir_expr **slot, void *data) {
-    if ((*slot)->kind == IE_VAR) add_var(c, data, (*slot)->var);
-}
-
-static void note_target(ir_ctx *c, var_set *s, const ir_expr *t) {
-    if (t->kind != IE_CONSTRUCT) { add_var(c, s, ir_lvalue_root(t)); return; }
-    for (uint32_t i = 0; i < t->n; i++) note_target(c, s, t->a[i]);
-}
-
-static void note_write(ir_ctx *c, ir_expr **slot, void *data) {
-    var_set *s = data;
-    const ir_expr *e = *slot;
-    if (e->kind == IE_CALL) s->calls = true;
-    for (uint32_t i = 0; i < e->n; i++)
-        if (ir_writes_operand(e, i)) note_target(c, s, e->a[i]);
+    if ((*slot)->kind == IE_VAR) ir_var_set_add(c, data, (*slot)->var);
 }
 
 /* X, computed by statement `from`, has the same value at statement `to` (either order): the
  * statements between write none of its variables, and it reads no output. */
 static bool stable(const pair *p, ir_expr *x, uint32_t from, uint32_t to) {
-    var_set reads = {0}, writes = {0};
+    ir_var_set reads = {0}, writes = {0};
     ir_walk_expr(p->c, &x, note_read, &reads);
-    if (reads.unknown || has_var(&reads, p->ret)) return false;
+    if (reads.unknown || ir_var_set_has(&reads, p->ret)) return false;
     for (uint32_t i = 0; i < reads.count; i++)
         if (reads.vars[i]->kind == IRV_PARAM && (reads.vars[i]->mods & MOD_OUT)) return false;
     uint32_t lo = from < to ? from : to, hi = from < to ? to : from;
-    for (uint32_t i = lo + 1; i < hi; i++) {
-        if (p->body->body[i]->kind == IS_DECL) add_var(p->c, &writes, p->body->body[i]->var);
-        ir_walk_stmt_exprs(p->c, p->body->body[i], note_write, &writes);
-    }
+    for (uint32_t i = lo + 1; i < hi; i++) ir_note_writes(p->c, p->body->body[i], &writes);
     if (writes.unknown) return false;
     for (uint32_t i = 0; i < reads.count; i++)
-        if (has_var(&writes, reads.vars[i]) || (writes.calls && reads.vars[i]->kind == IRV_PRIVATE)) return false;
+        if (ir_var_set_has(&writes, reads.vars[i]) || (writes.calls && reads.vars[i]->kind == IRV_PRIVATE)) return false;
     return true;
 }
 
@@ -361,13 +330,11 @@ static bool derive_from(pair *p, const ir_leaf *vo, const ir_leaf *vw, derived *
     if (!reads_input(p->c, p->ps, &pin_o) || !reads_input(p->c, p->ps, &pin_w)) return false;
     ir_expr *value = to_pixels(p, ov, &x, place_expr(p->c, pw->root, &pin_w, ov->loc));
     ir_expr *set = value ? ir_new_expr(p->c, IE_ASSIGN, po->type, ov->loc, 2) : NULL;
-    ir_stmt *s = set ? HFX_NEW(p->c->arena, ir_stmt) : NULL;
+    ir_stmt *s = set ? ir_new_stmt(p->c, IS_EXPR, ov->loc) : NULL;
     if (!s) return false;
     set->op = OP_NONE;
     set->a[0] = place_expr(p->c, po->root, &pin_o, ov->loc);
     set->a[1] = value;
-    s->kind = IS_EXPR;
-    s->loc = ov->loc;
     s->expr = set;
     *d = (derived){(uint32_t)io, s};
     return true;
@@ -398,16 +365,6 @@ static ir_shader *own_entry(ir_ctx *c, const ir_shader *sh, uint32_t extra) {
     return r;
 }
 
-static uint32_t stage_regs(const ir_ctx *c, const ir_shader *sh) {
-    uint32_t n = 0;
-    for (uint32_t i = 0; i < sh->global_count; i++) {
-        const ir_var *v = sh->globals[i];
-        if (v->kind == IRV_UNIFORM && v->param != HFX_NONE) n += hfx_fx_param_packable(c->fx, v->param);
-    }
-    for (uint32_t i = 0; i < sh->pre_count; i++) n += sh->pres[i]->type->kind == TY_MATRIX ? sh->pres[i]->type->rows : 1;
-    return n;
-}
-
 /* The stages with the derived outputs' work moved; false (stages untouched) when registers
  * would not fit. */
 static bool rewrite(pair *p, const derived *d, uint32_t n, bool pack, ir_shader **vs, ir_shader **ps) {
@@ -426,7 +383,7 @@ static bool rewrite(pair *p, const derived *d, uint32_t n, bool pack, ir_shader 
     pb->count += n;
     ir_pass_uses(p->c, v); /* O's value read parameters only, never a preshader: they all stay */
     ir_pass_uses(p->c, q);
-    if (pack && stage_regs(p->c, q) > IR_STAGE_REGS) return false;
+    if (pack && ir_stage_regs(p->c, q) > IR_STAGE_REGS) return false;
     *vs = v;
     *ps = q;
     return true;

@@ -90,3 +90,120 @@ ir_var *ir_lvalue_root(const ir_expr *e) {
     while (e && (e->kind == IE_SWIZZLE || e->kind == IE_INDEX || e->kind == IE_FIELD)) e = e->a[0];
     return e && e->kind == IE_VAR ? e->var : NULL;
 }
+
+/* ---- shared by the passes that move code ---- */
+
+bool ir_var_set_has(const ir_var_set *s, const ir_var *v) {
+    for (uint32_t i = 0; i < s->count; i++)
+        if (s->vars[i] == v) return true;
+    return false;
+}
+
+void ir_var_set_add(ir_ctx *c, ir_var_set *s, const ir_var *v) {
+    if (!v) { s->unknown = true; return; }
+    if (ir_var_set_has(s, v)) return;
+    if (HFX_ARENA_GROW(c->arena, s->vars, s->count, s->cap, 16)) s->vars[s->count++] = v;
+    else s->unknown = true;
+}
+
+static void note_target(ir_ctx *c, ir_var_set *s, const ir_expr *t) {
+    if (t->kind != IE_CONSTRUCT) { ir_var_set_add(c, s, ir_lvalue_root(t)); return; }
+    for (uint32_t i = 0; i < t->n; i++) note_target(c, s, t->a[i]); /* float4(a, b) = v */
+}
+
+static void note_write(ir_ctx *c, ir_expr **slot, void *data) {
+    ir_var_set *s = data;
+    const ir_expr *e = *slot;
+    if (e->kind == IE_CALL) s->calls = true;
+    for (uint32_t i = 0; i < e->n; i++)
+        if (ir_writes_operand(e, i)) note_target(c, s, e->a[i]);
+}
+
+static void note_decls(ir_ctx *c, ir_var_set *s, const ir_stmt *st) {
+    if (!st) return;
+    if (st->kind == IS_DECL) ir_var_set_add(c, s, st->var);
+    note_decls(c, s, st->init);
+    for (uint32_t i = 0; i < st->count; i++) note_decls(c, s, st->body[i]);
+    note_decls(c, s, st->then_s);
+    note_decls(c, s, st->else_s);
+}
+
+void ir_note_writes(ir_ctx *c, ir_stmt *s, ir_var_set *w) {
+    ir_walk_stmt_exprs(c, s, note_write, w);
+    note_decls(c, w, s);
+}
+
+bool ir_insert_stmts(ir_ctx *c, ir_stmt *b, uint32_t at, ir_stmt *const *s, uint32_t n) {
+    ir_stmt **body = HFX_NEW_ARRAY(c->arena, ir_stmt *, b->count + n);
+    if (!body) return false;
+    for (uint32_t k = 0; k < at; k++) body[k] = b->body[k];
+    for (uint32_t k = 0; k < n; k++) body[at + k] = s[k];
+    for (uint32_t k = at; k < b->count; k++) body[k + n] = b->body[k];
+    b->body = body;
+    b->count += n;
+    return true;
+}
+
+bool ir_intrinsic_movable(ir_intrin id) {
+    const hfx_intrinsic_info *info = hfx_intrinsic_info_of((int)id);
+    if (!info || info->sig == SIG_TEX) return false; /* sampling: derivatives depend on where it runs */
+    return id != HFX_INTR_DDX && id != HFX_INTR_DDY && id != HFX_INTR_FWIDTH && id != HFX_INTR_CLIP &&
+           id != HFX_INTR_NOISE && id != HFX_INTR_SINCOS && id != HFX_INTR_MODF && id != HFX_INTR_FREXP;
+}
+
+bool ir_integer_division(const ir_expr *e) {
+    return e->kind == IE_BINARY && (e->op == OP_DIV || e->op == OP_MOD) && e->type->base != B_FLOAT &&
+           e->type->base != B_HALF;
+}
+
+static void count_in(ir_uses *u, ir_expr **slot, bool lvalue);
+
+static void count_args(ir_uses *u, ir_expr *e) {
+    for (uint32_t i = 0; i < e->n; i++) {
+        bool target = ir_writes_operand(e, i);
+        if (target && e->kind == IE_ASSIGN && e->op != OP_NONE) count_in(u, &e->a[i], false); /* += reads too */
+        count_in(u, &e->a[i], target);
+    }
+}
+
+/* Reads and writes of u->v in *slot (lvalue: the place is written, through swizzles, indexes
+ * and fields, whose indexes are read). */
+static void count_in(ir_uses *u, ir_expr **slot, bool lvalue) {
+    ir_expr *e = *slot;
+    if (!e) return;
+    if (e->kind == IE_VAR) {
+        if (e->var != u->v) return;
+        if (lvalue) u->writes++;
+        else u->reads++, u->slot = slot;
+        return;
+    }
+    if (lvalue && (e->kind == IE_SWIZZLE || e->kind == IE_FIELD || e->kind == IE_INDEX)) {
+        count_in(u, &e->a[0], true);
+        for (uint32_t i = 1; i < e->n; i++) count_in(u, &e->a[i], false);
+        return;
+    }
+    if (lvalue && e->kind == IE_CONSTRUCT) { /* float4(a, b) = v */
+        for (uint32_t i = 0; i < e->n; i++) count_in(u, &e->a[i], true);
+        return;
+    }
+    count_args(u, e);
+}
+
+void ir_count_uses(ir_uses *u, ir_stmt *s) {
+    if (!s) return;
+    if (u->decls && s->kind == IS_DECL && s->var == u->v) u->writes++;
+    ir_count_uses(u, s->init);
+    count_in(u, &s->expr, false);
+    count_in(u, &s->step, false);
+    for (uint32_t i = 0; i < s->count; i++) ir_count_uses(u, s->body[i]);
+    ir_count_uses(u, s->then_s);
+    ir_count_uses(u, s->else_s);
+}
+
+bool ir_has_jumps(const ir_stmt *s) {
+    if (!s) return false;
+    if (s->kind == IS_BREAK || s->kind == IS_CONTINUE || s->kind == IS_RETURN || s->kind == IS_DISCARD) return true;
+    for (uint32_t i = 0; i < s->count; i++)
+        if (ir_has_jumps(s->body[i])) return true;
+    return ir_has_jumps(s->init) || ir_has_jumps(s->then_s) || ir_has_jumps(s->else_s);
+}
