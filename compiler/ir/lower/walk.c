@@ -1,4 +1,5 @@
-/* walk.c: generic traversals of the IR tree shared by the passes. */
+/* walk.c: traversals of the IR tree shared by the passes: walks, comparisons, what a statement
+ * reads and writes, and the small edits the passes that move code make. */
 #include <string.h>
 
 #include "ir/ir.h"
