@@ -5,7 +5,7 @@
  * Everything lives in the compilation's arena.
  *
  * Pass order (lower/passes.c, ir_lower): specialise -> arrays -> intrinsics -> lvalues -> fold
- * -> calls -> dce -> flatten -> globals -> licm -> ranges -> uses -> check; codegen then runs
+ * -> calls -> dce -> flatten -> distances -> globals -> licm -> ranges -> uses -> check; codegen then runs
  * preshade on each stage and varyings on each program's pair.
  * glsl.c prints the result; a preshader or SPIR-V back end would read the same tree. */
 #ifndef HFX_IR_H
@@ -161,6 +161,7 @@ void ir_pass_fold(ir_ctx *c, ir_shader *sh);
 void ir_pass_calls(ir_ctx *c, ir_shader *sh);       /* copies of callees with constant arguments bound */
 void ir_pass_dce(ir_ctx *c, ir_shader *sh);
 void ir_pass_flatten(ir_ctx *c, ir_shader *sh);    /* if (c) x = a; else x = b; as x = c ? a : b (small, pure) */
+void ir_pass_distances(ir_ctx *c, ir_shader *sh);  /* distance(P, L) beside L - P: length(L - P), sharing it */
 void ir_pass_globals(ir_ctx *c, ir_shader *sh);
 void ir_pass_licm(ir_ctx *c, ir_shader *sh);       /* loop-invariant work to locals before the loop */
 void ir_pass_ranges(ir_ctx *c, ir_shader *sh);     /* array reads a loop counter keeps in range */
