@@ -280,6 +280,22 @@ static void small_branches_flatten(void) {
     hfxc_result_free(r);
 }
 
+/* lower/distances.c: distance(p, L) where the function also computes L - p is length(L - p),
+ * which the driver shares with normalize(L - p); without L - q or with p - q nowhere it stays. */
+static void distances_share_the_difference(void) {
+    static const char body[] = "float3 L;\n"
+        "float4 ps(float3 p : TEXCOORD0, float3 q : TEXCOORD1) : COLOR {\n"
+        "  float3 d = normalize(L - p);\n"
+        "  return float4(d, distance(p, L) + distance(q, L) + distance(p, q) + distance(q, p + 1)); }\n";
+    CHECK(links(body, ALL));
+    hfxc_result *r = NULL;
+    const char *fs = fragment_330(body, &r);
+    if (fs) {
+        CHECK_CONTAINS(fs, "return vec4(d, length(L - p) + distance(q, L) + distance(p, q) + distance(q, p + vec3(1.0)));\n");
+    }
+    hfxc_result_free(r);
+}
+
 /* A generic sampler takes the dimension of the parameter it is passed to, and a call with
  * constant arguments compiles only the branch they select (fxc inlines calls): the tex2D
  * branch, which would make the same sampler 2D too, is gone from F(1)'s copy. DigitalRise's
@@ -310,5 +326,6 @@ int main(void) {
     RUN(vertex_texture_fetch_and_outputs);
     RUN(constant_arguments_select_the_code);
     RUN(small_branches_flatten);
+    RUN(distances_share_the_difference);
     return test_summary();
 }

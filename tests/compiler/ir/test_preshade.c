@@ -188,6 +188,42 @@ static void a_parameter_normalised_in_place(void) {
     hfxc_result_free(r);
 }
 
+/* directional.fx's way: `L = normalize(L);` first (after a local declared with a constant, and
+ * inside a leading block), and L read only negated, `dot(-L, n)`: the negation goes into the
+ * preshader and the copy and its assignment go. Read both as -M and M, M keeps its copy and
+ * one preshader (two registers would cost more than the negation); written twice, N keeps
+ * its assignments. */
+static void a_negated_copy_is_the_preshader(void) {
+    static const char src[] =
+        "float3 L; float3 M; float3 N;\n"
+        "float4 PS(float3 n : TEXCOORD0) : COLOR0 {\n"
+        "    float4 c = 0;\n"
+        "    { L = normalize(L); M = normalize(M); N = normalize(N);\n"
+        "      c.x = max(dot(-L, n), 0) + dot(-L, n.zyx);\n"
+        "      c.y = dot(-M, n) + M.x;\n"
+        "      N = N * n.x;\n"
+        "      c.z = dot(-N, n); }\n"
+        "    return c;\n"
+        "}\n"
+        "technique T { pass P { PixelShader = compile ps_3_0 PS(); } }\n";
+    hfxc_result *r;
+    const hfx_fx_program *p = first_program(&r, NULL, src, "negated.fx");
+    if (p) {
+        const char *ps = glsl_of(p, HFX_STAGE_FRAGMENT);
+        /* the kept copies' preshaders are made first, in order; L's in the walk after them */
+        CHECK_CONTAINS(ps, "vec3 hfx_pre2; // hfx_c[2] = -normalize(L), computed on the CPU (a preshader)\n");
+        CHECK_CONTAINS(ps, "        c.x = max(dot(hfx_pre2, n), 0.0) + dot(hfx_pre2, n.zyx);\n");
+        CHECK(strstr(ps, "hfx_priv_L") == NULL);
+        CHECK_CONTAINS(ps, "vec3 hfx_pre0; // hfx_c[0] = normalize(M), computed on the CPU (a preshader)\n");
+        CHECK_CONTAINS(ps, "        hfx_priv_M = hfx_pre0;\n");
+        CHECK_CONTAINS(ps, "        c.y = dot(-hfx_priv_M, n) + hfx_priv_M.x;\n");
+        CHECK_CONTAINS(ps, "        hfx_priv_N = hfx_pre1;\n");
+        CHECK_CONTAINS(ps, "        hfx_priv_N = hfx_priv_N * n.x;\n");
+        CHECK_INT(p->preshader_count, 3);
+    }
+    hfxc_result_free(r);
+}
+
 /* tutorial0.fx's way: the position through World, View and Projection in turn, through locals
  * read once by the next statement. They move forward and the products regroup, so the three
  * matrices make one preshader and a vertex does one vector product. A local read twice stays,
@@ -364,6 +400,7 @@ static void seed_pixel_shaders_read_register_0(void) {
 int main(void) {
     RUN(project_effects_keep_nothing);
     RUN(a_parameter_normalised_in_place);
+    RUN(a_negated_copy_is_the_preshader);
     RUN(transforms_in_turn_regroup);
     RUN(positions_from_their_source);
     RUN(pixel_registers_come_first);
