@@ -34,6 +34,9 @@ typedef struct hfx_vulkan_desc {
     const VkPhysicalDeviceFeatures *enabled_features; /* what the device was created with; NULL: none */
     VkDeviceSize uniform_bytes_per_frame;   /* the ring's first buffer per frame; 0: 1 MiB (it grows) */
     VkBool32 sampler_mirror_clamp_to_edge;  /* enabled (Vulkan 1.2): D3D's MirrorOnce; else it mirrors */
+    /* VK_EXT_custom_border_color enabled with customBorderColors and customBorderColorWithoutFormat:
+     * BorderColor is any colour; else the nearest of Vulkan's three fixed ones */
+    VkBool32 custom_border_colors;
 } hfx_vulkan_desc;
 
 /* Where the next draws go: the render pass (or, with VK_NULL_HANDLE, dynamic rendering with

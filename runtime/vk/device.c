@@ -201,6 +201,7 @@ static void read_limits(struct hfx_vk_device *vk, const hfx_vulkan_desc *d) {
     vk->max_anisotropy = feat && feat->samplerAnisotropy ? props.limits.maxSamplerAnisotropy : 0.0f;
     vk->fill_modes = feat && feat->fillModeNonSolid;
     vk->mirror_once = d->sampler_mirror_clamp_to_edge != VK_FALSE;
+    vk->custom_border = d->custom_border_colors != VK_FALSE;
     vk->frame_count = d->frames_in_flight;
     vk->first_chunk = d->uniform_bytes_per_frame ? d->uniform_bytes_per_frame : (VkDeviceSize)1 << 20;
 }

@@ -6,7 +6,9 @@
  *   was created with samplerAnisotropy. MipFilter None samples level 0 only, Point / Linear
  *   pick mipmapMode.
  * - AddressU/V/W: Wrap, Mirror, Clamp, Border, MirrorOnce (mirror-clamp-to-edge when enabled,
- *   else mirrored repeat). BorderColor: Vulkan's three fixed border colours, the nearest one.
+ *   else mirrored repeat). BorderColor: the colour itself where the application enabled
+ *   VK_EXT_custom_border_color (hfx_vulkan_desc.custom_border_colors), else the nearest of
+ *   Vulkan's three fixed border colours.
  * - MaxMipLevel (D3D's most detailed level used) is minLod; MipMapLodBias is mipLodBias. */
 #include <math.h>
 #include <stdlib.h>
@@ -34,7 +36,26 @@ static VkBorderColor border_color(const float c[4]) {
     return black < clear ? VK_BORDER_COLOR_FLOAT_OPAQUE_BLACK : VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
 }
 
-static void sampler_info(const struct hfx_vk_device *vk, const hfx_sampler_desc *d, VkSamplerCreateInfo *ci) {
+static bool uses_border(const hfx_sampler_desc *d) { return d->address[0] == 4 || d->address[1] == 4 || d->address[2] == 4; }
+
+/* A border colour none of the fixed three gives exactly, as the custom one (only where a
+ * border is sampled: such samplers count against maxCustomBorderColorSamplers). */
+static void custom_border(const struct hfx_vk_device *vk, const hfx_sampler_desc *d, VkSamplerCreateInfo *ci,
+                          VkSamplerCustomBorderColorCreateInfoEXT *custom) {
+    const float *c = d->border;
+    bool rgb0 = c[0] == 0 && c[1] == 0 && c[2] == 0, fixed = (rgb0 && (c[3] == 0 || c[3] == 1)) ||
+                                                         (c[0] == 1 && c[1] == 1 && c[2] == 1 && c[3] == 1);
+    if (!vk->custom_border || !uses_border(d) || fixed) return;
+    memset(custom, 0, sizeof *custom);
+    custom->sType = VK_STRUCTURE_TYPE_SAMPLER_CUSTOM_BORDER_COLOR_CREATE_INFO_EXT;
+    memcpy(custom->customBorderColor.float32, c, sizeof custom->customBorderColor.float32);
+    custom->format = VK_FORMAT_UNDEFINED; /* customBorderColorWithoutFormat */
+    ci->pNext = custom;
+    ci->borderColor = VK_BORDER_COLOR_FLOAT_CUSTOM_EXT;
+}
+
+static void sampler_info(const struct hfx_vk_device *vk, const hfx_sampler_desc *d, VkSamplerCreateInfo *ci,
+                         VkSamplerCustomBorderColorCreateInfoEXT *custom) {
     memset(ci, 0, sizeof *ci);
     ci->sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
     ci->magFilter = filter(d->mag);
@@ -51,6 +72,7 @@ static void sampler_info(const struct hfx_vk_device *vk, const hfx_sampler_desc 
     ci->minLod = d->mip ? (float)d->max_mip_level : 0.0f;
     ci->maxLod = d->mip ? VK_LOD_CLAMP_NONE : 0.0f;
     ci->borderColor = border_color(d->border);
+    custom_border(vk, d, ci, custom);
 }
 
 int hfx_vk_sampler(hfx_device *dev, const hfx_sampler_desc *d, VkSampler *out) {
@@ -63,7 +85,8 @@ int hfx_vk_sampler(hfx_device *dev, const hfx_sampler_desc *d, VkSampler *out) {
     if (!HFX_GROW(vk->samplers, vk->sampler_count, vk->sampler_cap, 8))
         return hfx_rt_fail(dev, HFX_ERR_MEMORY, "out of memory");
     VkSamplerCreateInfo ci;
-    sampler_info(vk, d, &ci);
+    VkSamplerCustomBorderColorCreateInfoEXT custom;
+    sampler_info(vk, d, &ci, &custom);
     VkResult r = vk->fn.CreateSampler(vk->device, &ci, NULL, out);
     if (r != VK_SUCCESS) return hfx_vk_fail(dev, r, "vkCreateSampler");
     vk->samplers[vk->sampler_count++] = (vk_sampler_entry){*d, *out};

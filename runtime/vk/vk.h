@@ -103,6 +103,7 @@ struct hfx_vk_device {
     vk_sampler_entry *samplers;
     uint32_t sampler_count, sampler_cap;
     int mirror_once;                /* samplerMirrorClampToEdge */
+    int custom_border;              /* VK_EXT_custom_border_color (without format) */
 };
 
 struct hfx_vertex_layout {

@@ -29,6 +29,7 @@ struct test_vk {
     unsigned char *pixels;
     int width, height, messages, validation;
     int dynamic_rendering, dynamic_frame; /* the device has it; this frame uses it */
+    int custom_border;                    /* VK_EXT_custom_border_color enabled (lavapipe has it) */
     VkFormat depth_format;
     hfx_device *dev;
     hfx_vk_target target;
@@ -127,6 +128,22 @@ static int has_dynamic_rendering(test_vk *v) {
     return f13.dynamicRendering == VK_TRUE;
 }
 
+/* VK_EXT_custom_border_color with colours given without a format, as hfx uses it. */
+static int has_custom_border(test_vk *v) {
+    uint32_t n = 0;
+    vkEnumerateDeviceExtensionProperties(v->phys, NULL, &n, NULL);
+    VkExtensionProperties *e = calloc(n ? n : 1, sizeof *e);
+    int found = 0;
+    if (e && vkEnumerateDeviceExtensionProperties(v->phys, NULL, &n, e) >= 0)
+        for (uint32_t i = 0; i < n; i++) found |= strcmp(e[i].extensionName, VK_EXT_CUSTOM_BORDER_COLOR_EXTENSION_NAME) == 0;
+    free(e);
+    if (!found) return 0;
+    VkPhysicalDeviceCustomBorderColorFeaturesEXT cb = {.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_CUSTOM_BORDER_COLOR_FEATURES_EXT};
+    VkPhysicalDeviceFeatures2 f = {.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &cb};
+    vkGetPhysicalDeviceFeatures2(v->phys, &f);
+    return cb.customBorderColors && cb.customBorderColorWithoutFormat;
+}
+
 static int make_device(test_vk *v, VkPhysicalDeviceFeatures *enabled) {
     VkPhysicalDeviceFeatures have;
     vkGetPhysicalDeviceFeatures(v->phys, &have);
@@ -134,13 +151,20 @@ static int make_device(test_vk *v, VkPhysicalDeviceFeatures *enabled) {
     enabled->samplerAnisotropy = have.samplerAnisotropy;
     enabled->fillModeNonSolid = have.fillModeNonSolid;
     v->dynamic_rendering = has_dynamic_rendering(v);
+    v->custom_border = has_custom_border(v);
+    VkPhysicalDeviceCustomBorderColorFeaturesEXT cb = {.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_CUSTOM_BORDER_COLOR_FEATURES_EXT,
+                                                       .customBorderColors = VK_TRUE, .customBorderColorWithoutFormat = VK_TRUE};
     VkPhysicalDeviceVulkan13Features f13 = {.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
-                                            .dynamicRendering = VK_TRUE};
+                                            .pNext = v->custom_border ? &cb : NULL, .dynamicRendering = VK_TRUE};
+    const char *ext = VK_EXT_CUSTOM_BORDER_COLOR_EXTENSION_NAME;
     float prio = 1.0f;
     VkDeviceQueueCreateInfo q = {.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO, .queueFamilyIndex = v->family,
                                  .queueCount = 1, .pQueuePriorities = &prio};
-    VkDeviceCreateInfo ci = {.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, .pNext = v->dynamic_rendering ? &f13 : NULL,
-                             .queueCreateInfoCount = 1, .pQueueCreateInfos = &q, .pEnabledFeatures = enabled};
+    VkDeviceCreateInfo ci = {.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
+                             .pNext = v->dynamic_rendering ? (void *)&f13 : v->custom_border ? (void *)&cb : NULL,
+                             .queueCreateInfoCount = 1, .pQueueCreateInfos = &q,
+                             .enabledExtensionCount = v->custom_border ? 1 : 0, .ppEnabledExtensionNames = &ext,
+                             .pEnabledFeatures = enabled};
     if (vkCreateDevice(v->phys, &ci, NULL, &v->device) != VK_SUCCESS) return 0;
     vkGetDeviceQueue(v->device, v->family, 0, &v->queue);
     VkCommandPoolCreateInfo pi = {.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO,
@@ -259,7 +283,8 @@ static int make_target(test_vk *v) {
 }
 
 static int make_hfx(test_vk *v, const VkPhysicalDeviceFeatures *features) {
-    hfx_vulkan_desc d = {v->instance, v->phys, v->device, v->family, vkGetInstanceProcAddr, 2, features, 0, VK_FALSE};
+    hfx_vulkan_desc d = {v->instance, v->phys, v->device, v->family, vkGetInstanceProcAddr, 2, features, 0, VK_FALSE,
+                         v->custom_border ? VK_TRUE : VK_FALSE};
     char *err = NULL;
     v->dev = hfx_device_create_vulkan(&d, &err);
     if (!v->dev) fprintf(stderr, "hfx_device_create_vulkan: %s\n", err ? err : "?");
@@ -332,6 +357,8 @@ static void begin_commands(test_vk *v) {
                                    .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
     vkBeginCommandBuffer(v->cmd, &bi);
 }
+
+int test_vk_custom_border(const test_vk *v) { return v->custom_border; }
 
 VkCommandBuffer test_vk_begin(test_vk *v, const float clear[4]) {
     v->target.render_pass = clear ? v->pass : v->load_pass;

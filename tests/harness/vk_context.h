@@ -36,6 +36,7 @@ int test_vk_height(const test_vk *v);
 /* Messages the validation layer has sent so far (each is printed as it comes). */
 int test_vk_messages(const test_vk *v);
 int test_vk_validation_on(const test_vk *v);
+int test_vk_custom_border(const test_vk *v);           /* VK_EXT_custom_border_color enabled (and told to hfx) */
 
 /* Starts a frame: hfx_device_begin_frame_vk, a command buffer, the render pass cleared to rgba
  * (depth 1, stencil 0), or keeping the last frame's colour, depth and stencil when clear is

@@ -24,12 +24,14 @@ static const char *TEXTURED =
     "sampler PointMirror = sampler_state { Texture = <Tex>; MinFilter = Point; MagFilter = Point; AddressU = Mirror; AddressV = Wrap; };\n"
     "sampler PointBorder = sampler_state { Texture = <Tex>; MinFilter = Point; MagFilter = Point; AddressU = Border;\n"
     "  AddressV = Wrap; BorderColor = 0xFFFFFFFF; };\n"
+    "sampler PointTeal = sampler_state { Texture = <Tex>; MinFilter = Point; MagFilter = Point; AddressU = Border;\n"
+    "  AddressV = Wrap; BorderColor = 0x80336699; };\n"
     "sampler LinearWrap = sampler_state { Texture = <Tex>; MinFilter = Linear; MagFilter = Linear; AddressU = Wrap; AddressV = Wrap; };\n"
     "sampler ByParam = sampler_state { Texture = <Tex>; MinFilter = Point; MagFilter = Point; AddressU = <Addr>; AddressV = Wrap; };\n"
     "float4 VS(float4 p : POSITION, inout float2 uv : TEXCOORD0) : POSITION { return p; }\n"
     "#define T(name, s) float4 name(float2 uv : TEXCOORD0) : COLOR { return tex2D(s, uv); }\\\n"
     "  technique name##T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 name(); } }\n"
-    "T(Wrap, PointWrap)\nT(Clamp, PointClamp)\nT(Mirror, PointMirror)\nT(Border, PointBorder)\nT(Linear, LinearWrap)\n"
+    "T(Wrap, PointWrap)\nT(Clamp, PointClamp)\nT(Mirror, PointMirror)\nT(Border, PointBorder)\nT(Teal, PointTeal)\nT(Linear, LinearWrap)\n"
     "T(Param, ByParam)\n";
 
 static void draw_textured(hfx_effect *fx, const char *technique) {
@@ -58,6 +60,12 @@ static void sampler_states(void) {
     draw_textured(fx, "BorderT");
     CHECK_PIXEL(V, 24, 8, 0, 255, 0, 255);
     CHECK_PIXEL(V, 40, 8, 255, 255, 255, 255); /* outside 0..1: the border colour */
+    /* D3DCOLOR 0x80336699 is A 0x80, R 0x33, G 0x66, B 0x99: exact with VK_EXT_custom_border_color
+     * (lavapipe has it), else the nearest fixed colour, transparent black */
+    draw_textured(fx, "TealT");
+    CHECK_PIXEL(V, 24, 8, 0, 255, 0, 255);
+    if (test_vk_custom_border(V)) CHECK_PIXEL(V, 40, 8, 0x33, 0x66, 0x99, 0x80);
+    else CHECK_PIXEL(V, 40, 8, 0, 0, 0, 0);
     draw_textured(fx, "LinearT");
     CHECK_PIXEL(V, 16, 8, 127.5, 127.5, 0, 255); /* u = 0.5: half red, half green */
     CHECK_PIXEL(V, 8, 8, 255, 0, 0, 255);
