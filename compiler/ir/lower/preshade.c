@@ -170,9 +170,13 @@ static void drop_stmt(ir_stmt *block, uint32_t i) {
     block->count--;
 }
 
+enum { KEPT, DROPPED, STOP };
+
 /* One leading `copy = value;`: a preshader's value, or, when the copy is read only negated,
- * the value itself in those reads (the statement goes: true). */
-static bool leading_assignment(pre *p, ir_stmt *block, uint32_t i, assigned *done) {
+ * the value itself in those reads (the statement goes). STOP when the list of assigned
+ * copies cannot grow: a later read must not take the parameter for the copy. */
+static int leading_assignment(pre *p, ir_stmt *block, uint32_t i, assigned *done) {
+    if (!HFX_ARENA_GROW(p->c->arena, done->vars, done->count, done->cap, 4)) return STOP;
     ir_expr *e = block->body[i]->expr;
     ir_var *copy = e->a[0]->var;
     ir_expr *value = ir_clone_expr(p->c, e->a[1]);
@@ -182,11 +186,11 @@ static bool leading_assignment(pre *p, ir_stmt *block, uint32_t i, assigned *don
         drop_stmt(block, i);
         substitute sub = {copy, value};
         for (uint32_t f = 0; f < p->sh->func_count; f++) ir_walk_stmt_exprs(p->c, p->sh->funcs[f]->body, put_value, &sub);
-        return true;
+        return DROPPED;
     }
     if (hoistable && hoist(p, &value)) e->a[1] = value;
-    if (HFX_ARENA_GROW(p->c->arena, done->vars, done->count, done->cap, 4)) done->vars[done->count++] = copy;
-    return false;
+    done->vars[done->count++] = copy;
+    return KEPT;
 }
 
 /* The leading statements of a block (and of a block leading it); false where they end. */
@@ -195,7 +199,9 @@ static bool leading_assignments(pre *p, ir_stmt *block, assigned *done) {
         ir_stmt *s = block->body[i];
         ir_expr *e = s->kind == IS_EXPR ? s->expr : NULL;
         if (e && e->kind == IE_ASSIGN && e->op == OP_NONE && e->a[0]->kind == IE_VAR && e->a[0]->var->copy_of) {
-            if (!leading_assignment(p, block, i, done)) i++;
+            int r = leading_assignment(p, block, i, done);
+            if (r == STOP) return false;
+            i += r == KEPT;
         } else if (passable(s)) {
             i++;
         } else if (s->kind == IS_BLOCK) {
