@@ -48,7 +48,9 @@ struct ir_var {
     bool written, used;      /* set by lower/uses.c */
     bool hoisted;            /* for-init variable used after its loop: declared before it */
     ir_expr *konst;          /* const variable whose initialiser folded to a constant (fold.c) */
-    ir_expr *bound;          /* PARAM of the entry bound by a compile argument (specialise) */
+    ir_expr *bound;          /* the value every read takes (ir_put_bound): an entry PARAM's compile
+                              * argument (specialise), a callee copy's constant argument (calls),
+                              * a negated copy's parameter value (preshade) */
     /* A preshader (lower/preshade.c): the uniform-only expression this private global holds,
      * its eval_code program and readable HLSL; main reads it from hfx_c registers. */
     const ir_expr *pre;
@@ -207,6 +209,10 @@ typedef struct ir_var_set { const ir_var **vars; uint32_t count, cap; bool calls
 void ir_note_writes(ir_ctx *c, ir_stmt *s, ir_var_set *w);
 void ir_var_set_add(ir_ctx *c, ir_var_set *s, const ir_var *v); /* NULL: unknown */
 bool ir_var_set_has(const ir_var_set *s, const ir_var *v);
+/* Statement `at` out of block b. */
+void ir_remove_stmt(ir_stmt *b, uint32_t at);
+/* Every read in s of a variable with a bound value becomes a copy of that value. */
+void ir_put_bound(ir_ctx *c, ir_stmt *s);
 /* The n statements s into block b before its statement `at` (false: out of memory). */
 bool ir_insert_stmts(ir_ctx *c, ir_stmt *b, uint32_t at, ir_stmt *const *s, uint32_t n);
 /* Reads and writes of one variable in a statement (walk.c): a compound assignment's target

@@ -28,27 +28,37 @@ static VkSamplerAddressMode address_mode(const struct hfx_vk_device *vk, int32_t
 
 static VkFilter filter(int32_t d3d) { return d3d <= 1 ? VK_FILTER_NEAREST : VK_FILTER_LINEAR; }
 
-static VkBorderColor border_color(const float c[4]) {
-    float white = fabsf(c[0] - 1) + fabsf(c[1] - 1) + fabsf(c[2] - 1) + fabsf(c[3] - 1);
-    float black = fabsf(c[0]) + fabsf(c[1]) + fabsf(c[2]) + fabsf(c[3] - 1);
-    float clear = fabsf(c[0]) + fabsf(c[1]) + fabsf(c[2]) + fabsf(c[3]);
-    if (white < black && white < clear) return VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE;
-    return black < clear ? VK_BORDER_COLOR_FLOAT_OPAQUE_BLACK : VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
+/* Vulkan's fixed border colours, in the order that breaks ties toward transparent black. */
+static const struct { VkBorderColor id; float rgba[4]; } FIXED_BORDERS[3] = {
+    {VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK, {0, 0, 0, 0}},
+    {VK_BORDER_COLOR_FLOAT_OPAQUE_BLACK, {0, 0, 0, 1}},
+    {VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE, {1, 1, 1, 1}},
+};
+
+/* The fixed colour nearest c; *off: how far from it (0: exact). */
+static VkBorderColor nearest_border(const float c[4], float *off) {
+    int best = 0;
+    for (int k = 0; k < 3; k++) {
+        float d = 0;
+        for (int i = 0; i < 4; i++) d += fabsf(c[i] - FIXED_BORDERS[k].rgba[i]);
+        if (k == 0 || d < *off) best = k, *off = d;
+    }
+    return FIXED_BORDERS[best].id;
 }
 
 static bool uses_border(const hfx_sampler_desc *d) { return d->address[0] == 4 || d->address[1] == 4 || d->address[2] == 4; }
 
-/* A border colour none of the fixed three gives exactly, as the custom one (only where a
- * border is sampled: such samplers count against maxCustomBorderColorSamplers). */
-static void custom_border(const struct hfx_vk_device *vk, const hfx_sampler_desc *d, VkSamplerCreateInfo *ci,
-                          VkSamplerCustomBorderColorCreateInfoEXT *custom) {
-    const float *c = d->border;
-    bool rgb0 = c[0] == 0 && c[1] == 0 && c[2] == 0, fixed = (rgb0 && (c[3] == 0 || c[3] == 1)) ||
-                                                         (c[0] == 1 && c[1] == 1 && c[2] == 1 && c[3] == 1);
-    if (!vk->custom_border || !uses_border(d) || fixed) return;
+/* D3D9's BorderColor: the nearest fixed colour, or, where the application enabled custom ones
+ * and it is not exact, the colour itself (only where a border is sampled: such samplers count
+ * against maxCustomBorderColorSamplers). */
+static void border(const struct hfx_vk_device *vk, const hfx_sampler_desc *d, VkSamplerCreateInfo *ci,
+                   VkSamplerCustomBorderColorCreateInfoEXT *custom) {
+    float off = 0;
+    ci->borderColor = nearest_border(d->border, &off);
+    if (!vk->custom_border || !uses_border(d) || off == 0) return;
     memset(custom, 0, sizeof *custom);
     custom->sType = VK_STRUCTURE_TYPE_SAMPLER_CUSTOM_BORDER_COLOR_CREATE_INFO_EXT;
-    memcpy(custom->customBorderColor.float32, c, sizeof custom->customBorderColor.float32);
+    memcpy(custom->customBorderColor.float32, d->border, sizeof custom->customBorderColor.float32);
     custom->format = VK_FORMAT_UNDEFINED; /* customBorderColorWithoutFormat */
     ci->pNext = custom;
     ci->borderColor = VK_BORDER_COLOR_FLOAT_CUSTOM_EXT;
@@ -71,8 +81,7 @@ static void sampler_info(const struct hfx_vk_device *vk, const hfx_sampler_desc 
     ci->maxAnisotropy = aniso ? (a > vk->max_anisotropy ? vk->max_anisotropy : a) : 1.0f;
     ci->minLod = d->mip ? (float)d->max_mip_level : 0.0f;
     ci->maxLod = d->mip ? VK_LOD_CLAMP_NONE : 0.0f;
-    ci->borderColor = border_color(d->border);
-    custom_border(vk, d, ci, custom);
+    border(vk, d, ci, custom);
 }
 
 int hfx_vk_sampler(hfx_device *dev, const hfx_sampler_desc *d, VkSampler *out) {

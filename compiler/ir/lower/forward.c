@@ -39,8 +39,7 @@ static bool substitute(ir_stmt *fn_body, ir_stmt *b, uint32_t i) {
     ir_count_uses(&all, fn_body);
     if (all.reads != 1 || all.writes) return false;
     *here.slot = d->expr;
-    for (uint32_t k = i; k + 1 < b->count; k++) b->body[k] = b->body[k + 1];
-    b->count--;
+    ir_remove_stmt(b, i);
     return true;
 }
 

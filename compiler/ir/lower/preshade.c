@@ -119,55 +119,41 @@ static void read_uniforms(ir_ctx *c, ir_expr **slot, void *data) {
     if (e->kind == IE_VAR && e->var->copy_of && !was_assigned(data, e->var)) e->var = e->var->copy_of;
 }
 
-/* Of the private copy v in some code: the reads that negate it (`-Light`), and whether it is read. */
-typedef struct copy_reads { const ir_var *v; unsigned negated; bool read; } copy_reads;
+/* The reads of v that negate it (`-Light`). */
+typedef struct negations { const ir_var *v; unsigned count; } negations;
 
-static bool reads_var(const ir_expr *e, const ir_var *v) { return e && e->kind == IE_VAR && e->var == v; }
-
-static void note_read(ir_ctx *c, ir_expr **slot, void *data) {
-    copy_reads *r = data;
+static void count_negation(ir_ctx *c, ir_expr **slot, void *data) {
+    negations *n = data;
+    const ir_expr *e = *slot;
     (void)c;
-    r->negated += (*slot)->kind == IE_UNARY && (*slot)->op == OP_NEG && reads_var((*slot)->a[0], r->v);
-    r->read |= reads_var(*slot, r->v);
+    n->count += e->kind == IE_UNARY && e->op == OP_NEG && e->a[0]->kind == IE_VAR && e->a[0]->var == n->v;
 }
 
 /* The shader writes v once, with `assign`, and reads it elsewhere only negated: the negation
  * can be the preshader's. (Reads of both v and -v would take two registers for one, each read
- * costing llvmpipe more than the negation it saves.) */
+ * costing llvmpipe more than the negation it saves.) A private global's initialiser, which
+ * runs before the entry, must not read it. */
 static bool only_negated(pre *p, const ir_var *v, ir_stmt *assign) {
-    ir_uses own = {v, false, 0, 0, NULL};
-    copy_reads r = {v, 0, false}, init = {v, 0, false}, right = {v, 0, false};
-    ir_count_uses(&own, assign); /* `Light = normalize(Light)` reads it too */
-    ir_walk_stmt_exprs(p->c, assign, note_read, &right);
-    unsigned writes = 0, reads = 0;
+    ir_uses all = {v, false, 0, 0, NULL}, own = {v, false, 0, 0, NULL}, init = {v, false, 0, 0, NULL};
+    negations neg = {v, 0}, own_neg = {v, 0};
     for (uint32_t i = 0; i < p->sh->func_count; i++) {
-        ir_uses u = {v, false, 0, 0, NULL};
-        ir_count_uses(&u, p->sh->funcs[i]->body);
-        writes += u.writes, reads += u.reads;
-        ir_walk_stmt_exprs(p->c, p->sh->funcs[i]->body, note_read, &r);
+        ir_count_uses(&all, p->sh->funcs[i]->body);
+        ir_walk_stmt_exprs(p->c, p->sh->funcs[i]->body, count_negation, &neg);
     }
-    for (uint32_t i = 0; i < p->sh->global_count; i++) /* initialisers run before the entry */
-        if (p->sh->globals[i]->init) ir_walk_expr(p->c, &p->sh->globals[i]->init, note_read, &init);
-    reads -= own.reads, r.negated -= right.negated;
-    return writes == 1 && reads && r.negated == reads && !init.read;
-}
-
-typedef struct substitute { const ir_var *v; const ir_expr *value; } substitute;
-
-static void put_value(ir_ctx *c, ir_expr **slot, void *data) {
-    const substitute *s = data;
-    if ((*slot)->kind == IE_VAR && (*slot)->var == s->v) *slot = ir_clone_expr(c, s->value);
+    ir_count_uses(&own, assign); /* `Light = normalize(Light)` reads it too */
+    ir_walk_stmt_exprs(p->c, assign, count_negation, &own_neg);
+    for (uint32_t i = 0; i < p->sh->global_count; i++) {
+        ir_stmt s = {.kind = IS_EXPR, .expr = p->sh->globals[i]->init};
+        ir_count_uses(&init, &s);
+    }
+    unsigned reads = all.reads - own.reads;
+    return all.writes == 1 && reads && neg.count - own_neg.count == reads && !init.reads;
 }
 
 /* A statement the entry's leading assignments may pass: a local declared with a constant or
  * nothing (`float4 color = 0;`), which reads no parameter. */
 static bool passable(const ir_stmt *s) {
     return s->kind == IS_DECL && (!s->expr || s->expr->kind == IE_CONST);
-}
-
-static void drop_stmt(ir_stmt *block, uint32_t i) {
-    memmove(&block->body[i], &block->body[i + 1], (block->count - i - 1) * sizeof *block->body);
-    block->count--;
 }
 
 enum { KEPT, DROPPED, STOP };
@@ -183,9 +169,10 @@ static int leading_assignment(pre *p, ir_stmt *block, uint32_t i, assigned *done
     ir_walk_expr(p->c, &value, read_uniforms, done);
     bool hoistable = visit(p, &value, 0) == HOIST;
     if (hoistable && only_negated(p, copy, block->body[i])) {
-        drop_stmt(block, i);
-        substitute sub = {copy, value};
-        for (uint32_t f = 0; f < p->sh->func_count; f++) ir_walk_stmt_exprs(p->c, p->sh->funcs[f]->body, put_value, &sub);
+        ir_remove_stmt(block, i);
+        copy->bound = value;
+        for (uint32_t f = 0; f < p->sh->func_count; f++) ir_put_bound(p->c, p->sh->funcs[f]->body);
+        copy->bound = NULL;
         return DROPPED;
     }
     if (hoistable && hoist(p, &value)) e->a[1] = value;

@@ -3,14 +3,9 @@
  * dce can remove what the argument switches off. */
 #include "ir/ir.h"
 
-static void substitute(ir_ctx *c, ir_expr **slot, void *data) {
-    ir_expr *e = *slot;
-    if (e->kind == IE_VAR && e->var->bound) *slot = ir_clone_expr(c, e->var->bound);
-}
-
 void ir_pass_specialise(ir_ctx *c, ir_shader *sh) {
     ir_func *f = sh->entry;
-    ir_walk_stmt_exprs(c, f->body, substitute, NULL);
+    ir_put_bound(c, f->body);
     uint32_t kept = 0;
     for (uint32_t i = 0; i < f->param_count; i++)
         if (!f->params[i]->bound) f->params[kept++] = f->params[i];

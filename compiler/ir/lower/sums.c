@@ -157,8 +157,8 @@ static uint32_t drop_unread(ir_stmt *b, uint32_t at, const moves *m) {
         for (unsigned k = 0; k < m->nl; k++) moved |= b->body[j]->kind == IS_DECL && m->locals[k] == u.v;
         if (moved) ir_count_uses(&u, b);
         if (!moved || u.reads) { j++; continue; }
-        for (uint32_t k = j; k + 1 < b->count; k++) b->body[k] = b->body[k + 1];
-        b->count--, at--;
+        ir_remove_stmt(b, j);
+        at--;
     }
     return at;
 }

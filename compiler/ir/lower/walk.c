@@ -134,6 +134,18 @@ void ir_note_writes(ir_ctx *c, ir_stmt *s, ir_var_set *w) {
     note_decls(c, w, s);
 }
 
+void ir_remove_stmt(ir_stmt *b, uint32_t at) {
+    for (uint32_t k = at; k + 1 < b->count; k++) b->body[k] = b->body[k + 1];
+    b->count--;
+}
+
+static void put_bound(ir_ctx *c, ir_expr **slot, void *data) {
+    (void)data;
+    if ((*slot)->kind == IE_VAR && (*slot)->var->bound) *slot = ir_clone_expr(c, (*slot)->var->bound);
+}
+
+void ir_put_bound(ir_ctx *c, ir_stmt *s) { ir_walk_stmt_exprs(c, s, put_bound, NULL); }
+
 bool ir_insert_stmts(ir_ctx *c, ir_stmt *b, uint32_t at, ir_stmt *const *s, uint32_t n) {
     ir_stmt **body = HFX_NEW_ARRAY(c->arena, ir_stmt *, b->count + n);
     if (!body) return false;
