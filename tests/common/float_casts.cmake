@@ -8,6 +8,7 @@
 # The allow-list: functions whose casts are the rule itself. Add one only with a reason here.
 #   hfx_ev_int, hfx_ev_uint (common/eval.c): the one conversion; the value is already truncated
 #                                            into the target's range, so the cast is defined.
+cmake_minimum_required(VERSION 3.20)
 set(allowed hfx_ev_int hfx_ev_uint)
 
 file(READ ${BUILD_DIR}/compile_commands.json db)
@@ -36,12 +37,12 @@ execute_process(COMMAND ${CLANG_QUERY} -p ${BUILD_DIR} -c "set output diag" -c "
 if(NOT rc EQUAL 0 OR err MATCHES "error:" OR NOT out MATCHES "[0-9]+ match(es)?\\.")
   message(FATAL_ERROR "float_casts: clang-query failed (exit ${rc}):\n${err}")
 endif()
-string(REGEX MATCHALL "[^\n]*: note: \"root\" binds here\n[^\n]*" found "${out}")
+string(REGEX MATCHALL "[^\n]*: note: \"root\" binds here" found "${out}")
 list(REMOVE_DUPLICATES found) # a header's line is found from every file that includes it
 if(found)
   list(LENGTH found k)
-  string(REPLACE "\"root\" binds here" "a raw float-to-integer conversion; use hfx_ev_int / hfx_ev_uint (common/eval.h)" msg "${found}")
-  string(REPLACE ";" "\n" msg "${msg}")
-  message(FATAL_ERROR "float_casts: ${k} conversion(s) outside common/eval.c:\n${msg}")
+  list(TRANSFORM found REPLACE ": note: \"root\" binds here" ": a raw float-to-integer conversion")
+  list(JOIN found "\n" msg)
+  message(FATAL_ERROR "float_casts: ${k} conversion(s) not through hfx_ev_int / hfx_ev_uint (common/eval.h):\n${msg}")
 endif()
 message(STATUS "float_casts: ${count} files, no raw float-to-integer conversion")

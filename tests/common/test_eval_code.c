@@ -71,12 +71,12 @@ static void float_table_index(void) {
 
 /* hfx_evc_index, a selector's value as a shader-array entry in [0, last] (last = 2 here). */
 static void selector_index(void) {
-    const struct { hfx_ev_base b; double v; uint32_t want; } rows[] = {
+    const struct { int b; double v; uint32_t want; } rows[] = {
         {F, 1e30, 2}, {F, NAN, 0}, {F, -INFINITY, 0}, {F, INFINITY, 2}, {F, 1.9, 1}, {F, -0.5, 0},
         {I, -3, 0}, {I, 1, 1}, {HFX_EV_UINT, 4294967295.0, 2}, {HFX_EV_BOOL, 1, 1},
     };
     for (size_t k = 0; k < sizeof rows / sizeof *rows; k++) {
-        hfx_ev_value v = {rows[k].b, 1, {rows[k].v}};
+        hfx_ev_value v = {(hfx_ev_base)rows[k].b, 1, {rows[k].v}};
         CHECK_INT(hfx_evc_index(&v, 2), rows[k].want);
     }
 }
