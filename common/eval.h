@@ -58,7 +58,7 @@ typedef struct hfx_ev_value {
 
 /* THE float -> integer conversion: every one in hfx's libraries goes through these (C11 6.3.1.4
  * leaves a cast of an out-of-range value undefined; docs/conventions.md, "Float to integer";
- * tests/casts.cmake finds a raw one). Truncates toward zero, NaN gives 0, out of range clamps
+ * tests/common/float_casts.cmake finds a raw one). Truncates toward zero, NaN gives 0, out of range clamps
  * (uint: negatives give 0): Direct3D's rule above. */
 int32_t hfx_ev_int(double v);
 uint32_t hfx_ev_uint(double v);
