@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs one libFuzzer harness of fuzz/ for a bounded time:  scripts/fuzz.sh NAME SECONDS [libFuzzer flags...]
-#   NAME: compile, pp, hfxo, hfxo_repair, runtime, diff, or `all` (each in turn, SECONDS each).
+#   NAME: compile, pp, hfxo, hfxo_repair, runtime, diff, fx2, or `all` (each in turn, SECONDS each).
 # Builds build/fuzz with clang (-DHFX_FUZZ=ON: ASan + UBSan + coverage), generates the seed corpus
 # from fx/, ../shared/seed-fx (when present) and the semantics tables of tests/runtime/semantics
 # (compiled to .hfxo for the .hfxo harnesses), and grows build/fuzz/corpus/NAME across runs.
@@ -12,7 +12,7 @@ cd "$(dirname "$0")/.."
 name=$1 seconds=$2
 shift 2
 extra=("$@")
-all=(compile pp hfxo hfxo_repair runtime diff)
+all=(compile pp hfxo hfxo_repair runtime diff fx2)
 out=build/fuzz
 export ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1
 export LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp:print_suppressions=0
@@ -70,6 +70,7 @@ run_one() {
   case $n in
     hfxo|hfxo_repair|runtime) hfxo_seeds "$seeds" ;;
     compile|pp|diff) fx_seeds "$seeds" ;;
+    fx2) mkdir -p "$seeds" && $out/fuzz/fx2_seed "$seeds" ;;
     *) echo "fuzz.sh: unknown harness $n (${all[*]})" >&2; exit 2 ;;
   esac
   echo "== fuzz $n for ${seconds}s ($(ls "$seeds" | wc -l) seeds, $(ls "$corpus" | wc -l) in the corpus)"
