@@ -90,6 +90,10 @@ uint32_t hfx_fx2_file_at(const fx2_reader *r, uint32_t off); /* container offset
 bool hfx_fx2_grow(fx2_reader *r, void **arr, size_t elem, uint32_t count, uint32_t *cap);
 #define FX2_GROW(r, arr, count, cap) hfx_fx2_grow((r), (void **)&(arr), sizeof *(arr), (count), &(cap))
 char *hfx_fx2_strdup(fx2_reader *r, const char *s);       /* malloc'ed; NULL stays NULL */
+/* Sets r up and reads the binary (hfx_fx2_read's arguments); r->fx is the effect (the
+ * caller's) when it returns true, and the reader's tables stay for a listing. */
+bool hfx_fx2_open(fx2_reader *r, hfx_arena *arena, hfx_diags *diags, const char *name, const char *path,
+                  const void *data, size_t size, unsigned targets, unsigned flags);
 /* Decodes everything but programs into r->fx; false after a fatal error. */
 bool hfx_fx2_decode(fx2_reader *r, const char *name);
 bool hfx_fx2_xnb(fx2_reader *r, uint32_t *start);        /* where an .xnb's effect starts */

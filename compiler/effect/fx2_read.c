@@ -694,37 +694,44 @@ static bool find_container(fx2_reader *r, uint32_t *start) {
     return true;
 }
 
-hfx_fx_effect *hfx_fx2_read(hfx_arena *arena, hfx_diags *diags, const char *name, const char *path,
-                            const void *data, size_t size, unsigned targets, unsigned flags) {
-    fx2_reader r = {0};
-    r.arena = arena;
-    r.diags = diags;
-    r.file = hfx_diags_add_file(diags, name, path, NULL, 0);
-    r.targets = targets;
-    r.flags = flags;
+bool hfx_fx2_open(fx2_reader *r, hfx_arena *arena, hfx_diags *diags, const char *name, const char *path,
+                  const void *data, size_t size, unsigned targets, unsigned flags) {
+    memset(r, 0, sizeof *r);
+    r->arena = arena;
+    r->diags = diags;
+    r->file = hfx_diags_add_file(diags, name, path, NULL, 0);
+    r->targets = targets;
+    r->flags = flags;
     if (size > HFXC_MAX_SOURCE_BYTES) {
-        hfx_error(diags, (hfx_loc){r.file, 0, 0}, X_SOURCE_TOO_LARGE, "the effect has %zu bytes (hfx reads at most %u)",
+        hfx_error(diags, (hfx_loc){r->file, 0, 0}, X_SOURCE_TOO_LARGE, "the effect has %zu bytes (hfx reads at most %u)",
                   size, HFXC_MAX_SOURCE_BYTES);
-        return NULL;
+        return false;
     }
-    r.data = data;
-    r.size = (uint32_t)size;
-    if (!(r.fx = calloc(1, sizeof *r.fx))) {
-        hfx_error(diags, (hfx_loc){r.file, 0, 0}, X_MEMORY_LIMIT, "out of memory reading the effect");
-        return NULL;
+    r->data = data;
+    r->size = (uint32_t)size;
+    if (!(r->fx = calloc(1, sizeof *r->fx))) {
+        hfx_error(diags, (hfx_loc){r->file, 0, 0}, X_MEMORY_LIMIT, "out of memory reading the effect");
+        return false;
     }
-    hfx_arena_cleanup *cleanup = hfx_arena_on_escape(arena, (void (*)(void *))hfx_fx_effect_free, r.fx);
+    hfx_arena_cleanup *cleanup = hfx_arena_on_escape(arena, (void (*)(void *))hfx_fx_effect_free, r->fx);
     uint32_t start = 0;
-    if (find_container(&r, &start)) {
-        r.data += start, r.size -= start, r.skip = start;
-        if (hfx_fx2_decode(&r, name)) hfx_fx2_finish(&r);
+    if (find_container(r, &start)) {
+        r->data += start, r->size -= start, r->skip = start;
+        if (hfx_fx2_decode(r, name)) hfx_fx2_finish(r);
     }
     hfx_arena_forget(arena, cleanup);
-    if (r.failed || diags->errors) {
-        hfx_fx_effect_free(r.fx);
-        return NULL;
+    if (r->failed || diags->errors) {
+        hfx_fx_effect_free(r->fx);
+        r->fx = NULL;
+        return false;
     }
-    r.fx->source_name = hfx_fx2_strdup(&r, name);
-    r.fx->targets = targets;
-    return r.fx;
+    r->fx->source_name = hfx_fx2_strdup(r, name);
+    r->fx->targets = targets;
+    return true;
+}
+
+hfx_fx_effect *hfx_fx2_read(hfx_arena *arena, hfx_diags *diags, const char *name, const char *path,
+                            const void *data, size_t size, unsigned targets, unsigned flags) {
+    fx2_reader r;
+    return hfx_fx2_open(&r, arena, diags, name, path, data, size, targets, flags) ? r.fx : NULL;
 }

@@ -210,3 +210,29 @@ const char *hfxc_dependency_at(const hfxc_result *r, size_t i) {
 char *hfxc_result_ast_dump(const hfxc_result *r) {
     return r && r->ast ? hfx_ast_dump(r->ast) : strdup("");
 }
+
+char *hfxc_disassemble(const void *data, size_t size, const char *name, char **diagnostics) {
+    hfxc_result *r = calloc(1, sizeof *r);
+    if (diagnostics) *diagnostics = NULL;
+    if (!r) return NULL;
+    hfx_arena_init(&r->arena);
+    r->arena.limit = HFXC_MEMORY_FLOOR + (size <= HFXC_MAX_SOURCE_BYTES ? size * HFXC_MEMORY_PER_BYTE : 0);
+    hfx_diags_init(&r->diags, &r->arena, 0);
+    char *text = NULL, *listing = NULL;
+    jmp_buf escape;
+    r->arena.escape = &escape;
+    if (setjmp(escape) == 0) {
+        hfx_arena_escape_on(&r->arena);
+        listing = hfx_fx2_listing(&r->arena, &r->diags, name ? name : "memory", data, size);
+        hfx_arena_escape_off(&r->arena);
+    } else {
+        r->arena.escape_depth = 0;
+        listing = NULL;
+    }
+    r->arena.escape = NULL;
+    if (r->arena.failed) out_of_memory(r);
+    if (listing && !r->diags.errors) text = strdup(listing);
+    if (diagnostics) *diagnostics = hfx_diags_format(&r->diags, 0);
+    hfxc_result_free(r);
+    return text;
+}

@@ -329,6 +329,104 @@ static void xnb_files(void) {
     free(fx);
 }
 
+/* hfxc --disassemble's listing of the test effect, line by line as fx2_builder.h lays it out:
+ * D3DTEXF_LINEAR 2 and D3DTADDRESS_CLAMP 3 by their names, D3DCULL_NONE 1, the expressions as
+ * FXLVM instructions (mul by the literal 255; the selector's relative read c[0 + c3.x]). */
+static void listing_of_the_test_effect(void) {
+    size_t size;
+    uint8_t *file = fxb_sample_file(&size, NULL, 1);
+    char *diags = NULL, *text = hfxc_disassemble(file, size, "t.fxb", &diags);
+    CHECK_STR(diags, "");
+    CHECK_STR(text,
+        "//\n"
+        "// FX Version: fx_2_0\n"
+        "// Child effect (requires effect pool): false\n"
+        "//\n"
+        "// 12 local parameter(s)\n"
+        "//\n"
+        "float4 Color : DIFFUSE\n"
+        "<\n"
+        "    string UIName = \"Tint\";\n"
+        "    float UIMin = 0.5;\n"
+        ">\n"
+        " = { 0.25, 0.5, 0.75, 1 };\n"
+        "\n"
+        "row_major float4x4 World = { 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16 };\n"
+        "\n"
+        "int Index = 2;\n"
+        "\n"
+        "float Weights[3] = { 1, 2, 3 };\n"
+        "\n"
+        "struct { float a; float2 b; } St = { 7, 8, 9 };\n"
+        "\n"
+        "string Name = \"hello\";\n"
+        "\n"
+        "texture2D Tex;\n"
+        "\n"
+        "sampler2D Samp = sampler_state\n"
+        "{\n"
+        "    Texture = <Tex>;\n"
+        "    MinFilter = Linear;\n"
+        "    AddressU = Clamp;\n"
+        "};\n"
+        "\n"
+        "float Ref = 0.5;\n"
+        "\n"
+        "int VSIndices[3] = { 1, 0, 1 };\n"
+        "\n"
+        "int ShaderIndex = 2;\n"
+        "\n"
+        "vertexshader VSArray[2] =\n"
+        "    // VSArray[0]\n"
+        "    NULL,\n"
+        "    // VSArray[1]\n"
+        "    NULL;\n"
+        "\n"
+        "//\n"
+        "// 1 technique(s)\n"
+        "//\n"
+        "technique T\n"
+        "<\n"
+        "    int Order = 3;\n"
+        ">\n"
+        "{\n"
+        "    pass P0\n"
+        "    <\n"
+        "        string Mode = \"x\";\n"
+        "    >\n"
+        "    {\n"
+        "        CullMode = None;\n"
+        "        ZEnable = False;\n"
+        "        BlendFactor = float4(0.5, 0.25, 1, 0);\n"
+        "        AlphaRef = \n"
+        "            expression {\n"
+        "                mul oc0.x, c0.x, (255)\n"
+        "            };\n"
+        "        Texture[0] = <Tex>;\n"
+        "        StencilRef = <Index>;\n"
+        "    }\n"
+        "    pass P1\n"
+        "    {\n"
+        "        VertexShader = VSArray[\n"
+        "            expression {\n"
+        "                mov oc0.x, c[0 + c3.x].x\n"
+        "            }];\n"
+        "    }\n"
+        "}\n"
+        "\n");
+    free(text);
+    free(diags);
+    /* a spoiled file: no listing, the reader's located error */
+    file[7] = 0x7f; /* the structure far past the end */
+    text = hfxc_disassemble(file, size, "t.fxb", &diags);
+    CHECK(text == NULL);
+    CHECK_CONTAINS(diags, "t.fxb(0,");
+    CHECK_CONTAINS(diags, "error X9010:");
+    free(text);
+    free(diags);
+    free(file);
+}
+
 int main(void) {
     RUN(parameters_reflect_the_file);
     RUN(passes_and_states);
@@ -336,5 +434,6 @@ int main(void) {
     RUN(spoiled_files_give_located_errors);
     RUN(every_truncation_is_an_error);
     RUN(xnb_files);
+    RUN(listing_of_the_test_effect);
     return test_summary();
 }
