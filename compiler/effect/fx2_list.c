@@ -140,7 +140,8 @@ static void put_state(fx2_reader *r, sbuf *out, const fx2_raw *raw, const char *
     } else if (raw->usage == USE_SELECTOR && raw->object != HFX_NONE) {
         uint32_t len = raw->blob.data[0] | (uint32_t)raw->blob.data[1] << 8 | (uint32_t)raw->blob.data[2] << 16 |
                        (uint32_t)raw->blob.data[3] << 24,
-                 skip = 4 + ((len + 3) & ~3u); /* (checked when the selector was read) */
+                 skip = 4 + ((len + 3) & ~3u);
+        if (skip > raw->blob.size) skip = raw->blob.size;
         fx2_blob code = {raw->blob.data + skip, raw->blob.size - skip, raw->blob.at + skip};
         char *text = hfx_fxlvm_text(r, &code);
         sb_printf(out, "%s[\n%sexpression {\n", fx->params[raw->object].name, deeper);

@@ -233,6 +233,7 @@ static void selector(fx2_reader *r, fx2_raw *raw, hfx_fx_state *st) {
     }
     if (r->failed) return;
     uint32_t skip = 4 + ((len + 3) & ~3u);
+    if (skip > raw->blob.size) skip = raw->blob.size; /* the name's padding may be cut: the code is then empty */
     fx2_blob code = {raw->blob.data + skip, raw->blob.size - skip, raw->blob.at + skip};
     raw->object = p; /* the array, for the passes' programs */
     expression(r, raw, st, &code, 1, HFX_EV_INT);

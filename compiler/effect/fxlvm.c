@@ -25,7 +25,7 @@
 #include "eval_code.h"
 
 enum { T_IMM = 1, T_CONST = 2, T_OUT = 4, T_TEMP = 7 };
-enum { MAX_REGS = 256, MAX_COMPONENTS = MAX_REGS * 4, MAX_WORDS = 1u << 16 };
+enum { MAX_REGS = 256, MAX_COMPONENTS = MAX_REGS * 4, MAX_WORDS = 1u << 16, MAX_DEPTH = 512 };
 
 typedef enum { N_CONST, N_PARAM, N_ELEMENT, N_TABLE, N_CALL, N_BINARY, N_SELECT_GE, N_CONVERT } node_kind;
 
@@ -38,6 +38,7 @@ typedef struct node {
     uint32_t offset, count, stride; /* N_PARAM (offset), N_ELEMENT, N_TABLE (first literal, count, 4) */
     hfx_ev_base base;       /* the parameter's */
     uint32_t size;          /* words of its code, saturating at MAX_WORDS */
+    uint32_t depth;         /* of its tree: bounds the recursion that writes it */
 } node;
 
 typedef struct ctab_entry {
@@ -140,10 +141,14 @@ static uint32_t add_node(vm *m, node n) {
     if (!HFX_ARENA_GROW(m->r->arena, m->nodes, m->node_count, m->node_cap, 16)) return HFX_NONE;
     uint32_t size = n.kind == N_CONST ? 2 : n.kind == N_PARAM ? 3 : n.kind == N_ELEMENT ? 5 : 1;
     if (n.kind == N_TABLE) size = 2 + n.count + 1;
-    for (uint32_t k = 0; k < n.kid_count; k++) size += m->nodes[n.kids[k]].size;
+    n.depth = 1;
+    for (uint32_t k = 0; k < n.kid_count; k++) {
+        size += m->nodes[n.kids[k]].size;
+        if (m->nodes[n.kids[k]].depth + 1 > n.depth) n.depth = m->nodes[n.kids[k]].depth + 1;
+    }
     if (n.kind == N_SELECT_GE) size += 3; /* CONST 0, GE */
     n.size = size > MAX_WORDS ? MAX_WORDS : size;
-    if (n.size >= MAX_WORDS) {
+    if (n.size >= MAX_WORDS || n.depth > MAX_DEPTH) {
         fail(m, 0, "%sthe computation is too large to run as hfx's expression code", "");
         return HFX_NONE;
     }

@@ -8,6 +8,7 @@
 
 #include "effect.h"
 #include "effect/fx2.h"
+#include "effect/fx2_int.h"
 #include "eval_code.h"
 #include "fx2_builder.h"
 #include "hfx/hfxc.h"
@@ -427,6 +428,69 @@ static void listing_of_the_test_effect(void) {
     free(file);
 }
 
+/* fxlvm.c alone on a program with temporaries, literals, cmp and rcp and two outputs:
+ *     mul r0.x, c0.x, (2);  add r0.x, r0.x, c1.x;  cmp oc0.x, c1.x, r0.x, (0.5);  rcp oc0.y, r0.x
+ * with A in c0 and B in c1. A = 1.5, B = 0.25: r0 = 3.25, (3.25, 1 / 3.25 = 0.30769231);
+ * B = -1: r0 = 2, (0.5, 0.5). */
+static void fxlvm_temporaries_and_outputs(void) {
+    hfx_arena arena;
+    hfx_arena_init(&arena);
+    hfx_diags diags;
+    hfx_diags_init(&diags, &arena, 0);
+    fx2_reader r = {0};
+    r.arena = &arena;
+    r.diags = &diags;
+    r.file = hfx_diags_add_file(&diags, "t.fxb", NULL, NULL, 0);
+    r.fx = calloc(1, sizeof *r.fx);
+    r.fx->params = calloc(2, sizeof *r.fx->params);
+    r.fx->param_count = r.fx->top_param_count = 2;
+    const char *names[2] = {"A", "B"};
+    for (uint32_t i = 0; i < 2; i++)
+        r.fx->params[i] = (hfx_fx_param){.name = strdup(names[i]), .klass = HFX_CLASS_SCALAR, .type = HFX_TYPE_FLOAT,
+                                          .rows = 1, .cols = 1, .parent = HFX_NONE, .offset = i, .words = 1,
+                                          .sampler = HFX_NONE};
+    r.fx->value_words = 2;
+    fxb b = {0};
+    const fxb_input in[] = {{"A", 0, 1, FXB_FLOAT, 1, 1}, {"B", 1, 1, FXB_FLOAT, 1, 1}};
+    const double lit[4] = {2, 0.5, 0, 0};
+    const uint32_t code[] = {0x20500001u, 2, 0, 2, 0, 0, 1, 0, 0, 7, 0,
+                             0x20400001u, 2, 0, 7, 0, 0, 2, 4, 0, 7, 0,
+                             0x30000001u, 3, 0, 2, 4, 0, 7, 0, 0, 1, 1, 0, 4, 0,
+                             0x10300001u, 1, 0, 7, 0, 0, 4, 1};
+    fxb_fxlvm(&b, in, 2, lit, 4, 4, code, sizeof code / sizeof *code);
+    fx2_blob blob = {b.d, b.n, 0};
+    uint32_t first = 0, words = 0;
+    CHECK(hfx_fxlvm_translate(&r, &blob, 2, HFX_EV_FLOAT, &first, &words));
+    CHECK_INT(diags.errors, 0);
+    float v[2] = {1.5f, 0.25f};
+    uint32_t values[2];
+    memcpy(values, v, sizeof values);
+    hfx_ev_value out;
+    CHECK(hfx_evc_run(r.fx->exprs + first, words, values, &out));
+    CHECK_INT(out.n, 2);
+    CHECK_NEAR(out.c[0], 3.25, 0);
+    CHECK_NEAR(out.c[1], 0.30769231, 1e-7);
+    v[1] = -1;
+    memcpy(values, v, sizeof values);
+    CHECK(hfx_evc_run(r.fx->exprs + first, words, values, &out));
+    CHECK_NEAR(out.c[0], 0.5, 0);
+    CHECK_NEAR(out.c[1], 0.5, 0);
+    /* a read of a temporary nobody wrote: located at its operand (word 13 of the code: byte 52 on) */
+    const uint32_t bad[] = {0x10000001u, 1, 0, 7, 8, 0, 4, 0};
+    fxb c = {0};
+    fxb_fxlvm(&c, in, 2, NULL, 0, 1, bad, 8);
+    fx2_blob bad_blob = {c.d, c.n, 1000};
+    CHECK(!hfx_fxlvm_translate(&r, &bad_blob, 1, HFX_EV_FLOAT, &first, &words));
+    char *text = hfx_diags_format(&diags, 0);
+    CHECK_CONTAINS(text, "t.fxb(0,");
+    CHECK_CONTAINS(text, "error X9010: expression: a register read before it is written");
+    free(text);
+    free(b.d);
+    free(c.d);
+    hfx_fx_effect_free(r.fx);
+    hfx_arena_free(&arena);
+}
+
 int main(void) {
     RUN(parameters_reflect_the_file);
     RUN(passes_and_states);
@@ -435,5 +499,6 @@ int main(void) {
     RUN(every_truncation_is_an_error);
     RUN(xnb_files);
     RUN(listing_of_the_test_effect);
+    RUN(fxlvm_temporaries_and_outputs);
     return test_summary();
 }
