@@ -3,6 +3,7 @@
  * mutations reach the container behind it. A refused file must say why; an accepted one must
  * be a valid effect (written as .hfxo, it reads back). Seeds: fuzz/fx2_seed.c. */
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -27,6 +28,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         fuzz_require(hfx_fx_write_hfxo(hfxc_result_effect(r), &out, &n) == 0, "an accepted effect does not write");
         char err[256];
         hfx_fx_effect *back = hfx_fx_read_hfxo(out, n, err, sizeof err);
+        if (!back) fprintf(stderr, "fuzz_fx2: the .hfxo reader says: %s\n", err);
         fuzz_require(back != NULL, "an accepted effect is no valid .hfxo");
         hfx_fx_effect_free(back);
         free(out);

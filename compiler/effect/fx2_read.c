@@ -68,11 +68,15 @@ bool hfx_fx2_u32(fx2_reader *r, uint32_t off, uint32_t *v, const char *what) {
     return true;
 }
 
-bool hfx_fx2_grow(fx2_reader *r, void **arr, size_t elem, uint32_t count, uint32_t *cap) {
-    if (hfx_grow(arr, elem, count, cap, 8, NULL, NULL)) return true;
+/* An allocation of the effect failed: one error, and the read stops. */
+static bool out_of_memory(fx2_reader *r) {
     if (!r->oom) hfx_error(r->diags, (hfx_loc){r->file, 0, 0}, X_MEMORY_LIMIT, "out of memory reading the effect");
     r->oom = r->failed = true;
     return false;
+}
+
+bool hfx_fx2_grow(fx2_reader *r, void **arr, size_t elem, uint32_t count, uint32_t *cap) {
+    return hfx_grow(arr, elem, count, cap, 8, NULL, NULL) || out_of_memory(r);
 }
 
 char *hfx_fx2_strdup(fx2_reader *r, const char *s) {
@@ -208,7 +212,9 @@ static uint32_t read_annotations(fx2_reader *r, reader_ext *x, uint32_t *off, ui
         if (r->failed) break;
         bool string = t.klass == PC_OBJECT && t.type == PT_STRING && !t.elements;
         bool numeric = t.klass <= PC_MATRIX_COLUMNS;
-        if (!string && !numeric) continue; /* textures or structs as annotations: nothing to show */
+        /* textures or structs as annotations, or more than a float4x4 (hfx's annotations hold
+         * 16 words): nothing the API shows */
+        if ((!string && !numeric) || (numeric && all_words(&t) > 16)) continue;
         if (!FX2_GROW(r, fx->annotations, fx->annotation_count, r->anno_cap)) break;
         hfx_fx_annotation *a = &fx->annotations[fx->annotation_count];
         memset(a, 0, sizeof *a);
@@ -221,7 +227,7 @@ static uint32_t read_annotations(fx2_reader *r, reader_ext *x, uint32_t *off, ui
         a->cols = string ? 0 : t.cols;
         uint32_t v;
         if (string) {
-            if (hfx_fx2_u32(r, value_off, &v, "annotation value") && FX2_GROW(r, x->fix, x->fix_count, x->fix_cap))
+            if (hfx_fx2_u32(r, value_off, &v, "annotation value") && HFX_ARENA_GROW(r->arena, x->fix, x->fix_count, x->fix_cap, 8))
                 x->fix[x->fix_count++] = (anno_fixup){fx->annotation_count - 1, v};
             continue;
         }
@@ -232,7 +238,7 @@ static uint32_t read_annotations(fx2_reader *r, reader_ext *x, uint32_t *off, ui
             break;
         }
         if (!(a->data = malloc(a->count * sizeof *a->data))) {
-            hfx_fx2_grow(r, NULL, 0, 0, NULL);
+            out_of_memory(r);
             break;
         }
         for (uint32_t k = 0; k < a->count; k++) a->data[k] = le32(r->data + value_off + 4 * k);
@@ -304,7 +310,7 @@ static uint32_t read_sampler(fx2_reader *r, uint32_t param, uint32_t off) {
     r->param_raw_first[param] = r->raw_count;
     off += 4;
     for (uint32_t i = 0; i < count && !r->failed; i++, off += 16) {
-        if (!FX2_GROW(r, r->raws, r->raw_count, r->raw_cap)) break;
+        if (!HFX_ARENA_GROW(r->arena, r->raws, r->raw_count, r->raw_cap, 16)) break;
         fx2_raw *raw = &r->raws[r->raw_count++];
         uint32_t type_off;
         memset(raw, 0, sizeof *raw);
@@ -419,7 +425,7 @@ static bool read_params(fx2_reader *r, reader_ext *x, uint32_t *off, uint32_t co
     uint32_t words = 0;
     for (uint32_t i = 0; i < fx->top_param_count; i++) words = place(fx, i, words);
     fx->value_words = words;
-    if (!(fx->values = calloc(words ? words : 1, sizeof *fx->values))) return hfx_fx2_grow(r, NULL, 0, 0, NULL);
+    if (!(fx->values = calloc(words ? words : 1, sizeof *fx->values))) return out_of_memory(r);
     for (uint32_t i = 0; i < fx->top_param_count; i++) {
         const hfx_fx_param *p = &fx->params[i];
         if (p->klass == HFX_CLASS_OBJECT) continue;
@@ -432,7 +438,7 @@ static bool read_params(fx2_reader *r, reader_ext *x, uint32_t *off, uint32_t co
 
 static void read_state(fx2_reader *r, uint32_t off) {
     hfx_fx_effect *fx = r->fx;
-    if (!FX2_GROW(r, r->raws, r->raw_count, r->raw_cap)) return;
+    if (!HFX_ARENA_GROW(r->arena, r->raws, r->raw_count, r->raw_cap, 16)) return;
     fx2_raw *raw = &r->raws[r->raw_count++];
     uint32_t type_off;
     memset(raw, 0, sizeof *raw);
@@ -584,7 +590,6 @@ bool hfx_fx2_decode(fx2_reader *r, const char *name) {
     off += 8;
     ok = ok && read_strings(r, &off, strings);
     if (ok) fill_strings(r, &x);
-    free(x.fix);
     return ok && !r->failed && hfx_fx2_resources(r, off, resources);
 }
 
