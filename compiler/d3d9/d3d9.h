@@ -13,6 +13,7 @@
 #define HFX_D3D9_H
 
 #include <stdbool.h>
+#include <stddef.h>
 #include <stdint.h>
 
 #include "base/arena.h"
@@ -190,6 +191,10 @@ void d3d9_disassemble(const d3d9_shader *s, sbuf *out);
 /* For `hfxc --disassemble X.vso` (a raw shader blob): decodes the file's bytes and appends the
  * listing; returns 0, or -1 with located errors in diags. */
 int d3d9_disassemble_blob(hfx_arena *arena, hfx_diags *diags, const d3d9_input *in, sbuf *out);
+
+/* Whether `size` bytes start with a vs / ps version token hfx reads (vs_1_1..3_0, ps_1_1..3_0):
+ * how `hfxc --disassemble` tells a raw shader blob (.vso, .pso, fxc /T ps_2_0) from an effect. */
+bool d3d9_is_shader(const void *data, size_t size);
 
 /* Instruction slots fxc counts for s (its listing's "approximately N"): arithmetic and texture. */
 void d3d9_count_slots(const d3d9_shader *s, uint32_t *arith, uint32_t *tex);

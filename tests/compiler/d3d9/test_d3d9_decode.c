@@ -248,7 +248,18 @@ static void errors_located(void) {
             "t.vso(0,8): error X5002: break is not allowed in ps_2_0\n");
 }
 
+static void shader_detection(void) {
+    static const uint32_t ps[] = {PS(2, 0), END_TOKEN}, vs11[] = {VS(1, 1), END_TOKEN}, vs10[] = {VS(1, 0), END_TOKEN};
+    static const uint32_t fx[] = {0xfeff0901u, 0}; /* an fx_2_0 effect's version word */
+    CHECK(d3d9_is_shader(ps, sizeof ps));
+    CHECK(d3d9_is_shader(vs11, sizeof vs11));
+    CHECK(!d3d9_is_shader(vs10, sizeof vs10));
+    CHECK(!d3d9_is_shader(fx, sizeof fx));
+    CHECK(!d3d9_is_shader(ps, 4));
+}
+
 int main(void) {
+    RUN(shader_detection);
     RUN(ps_2_0_texture);
     RUN(vs_3_0_listing);
     RUN(ps_1_x_listing);
