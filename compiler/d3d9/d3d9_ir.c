@@ -1,11 +1,505 @@
-/* d3d9_ir.c: a decoded shader to hfx's IR. Not written yet: every shader gets a located X5006,
- * so nothing half-translated ever reaches a driver. */
-#include "d3d9/d3d9_int.h"
-#include "ir/ir.h"
+/* d3d9_ir.c: a decoded shader to hfx's IR, with D3D9's register semantics:
+ *  - r registers are float4 locals (zero at the start), a0 an int4 local;
+ *  - c registers are read from the effect's parameters by the CTAB (the constant covering the
+ *    register; a column-major matrix's register j is its column j, a row-major one's row j, an
+ *    array's element by register), or `def` values; registers nothing covers read zero; relative
+ *    reads (c[a0.x + n]) go through a local register file filled from the same reads;
+ *  - v / t / vPos / vFace inputs and oPos / oD / oT / o / oC / oDepth outputs are the entry's
+ *    parameters by semantic (dcl usage, or the fixed meaning of ps_2_x's v and t), so attributes,
+ *    varyings and fragment outputs work as for a compiled entry; outputs start at zero;
+ *  - s registers are the CTAB sampler parameters, of the dcl's dimension.
+ * The subset handled: vs_2_0 / 2_x / 3_0 and ps_2_0 / 2_x / 3_0 (d3d9_ir_ops.c lists the
+ * instructions); anything else is a located X5006. */
+#include "d3d9/d3d9_ir.h"
+
+#include <stdio.h>
+
+void d3d9_tx_fail(d3d9_tx *t, const char *fmt, ...) {
+    char msg[256];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    if (!t->failed) hfx_error(t->c->diags, t->loc, X_D3D9_UNSUPPORTED, "%s", msg);
+    t->failed = true;
+}
+
+ir_expr *d3d9_tx_var(d3d9_tx *t, ir_var *v) {
+    ir_expr *e = ir_new_expr(t->c, IE_VAR, v->type, t->loc, 0);
+    e->var = v;
+    return e;
+}
+
+ir_expr *d3d9_tx_swizzle(d3d9_tx *t, ir_expr *x, const uint8_t *comps, unsigned n) {
+    hfx_base b = x->type->base;
+    ir_expr *e = ir_new_expr(t->c, IE_SWIZZLE, n == 1 ? hfx_type_scalar(t->c->types, b)
+                                                      : hfx_type_vector(t->c->types, b, n), t->loc, 1);
+    e->a[0] = x;
+    memcpy(e->comps, comps, n);
+    e->comp_count = (uint8_t)n;
+    return e;
+}
+
+ir_expr *d3d9_tx_const4(d3d9_tx *t, const float v[4]) {
+    ir_expr *e = ir_new_expr(t->c, IE_CONST, t->f4, t->loc, 0);
+    for (int k = 0; k < 4; k++) e->cval[k] = v[k];
+    return e;
+}
+
+ir_expr *d3d9_tx_float4(d3d9_tx *t, ir_expr *x) {
+    unsigned n = hfx_type_components(x->type);
+    if (n == 4 && x->type->kind == TY_VECTOR) return x;
+    if (n == 1) return ir_new_convert(t->c, t->f4, x);
+    ir_expr *e = ir_new_expr(t->c, IE_CONSTRUCT, t->f4, t->loc, 1 + (4 - n));
+    e->a[0] = x;
+    for (unsigned k = n; k < 4; k++) e->a[1 + k - n] = ir_const_scalar(t->c, t->f1, 0, t->loc);
+    return e;
+}
+
+void d3d9_tx_add(d3d9_tx *t, uint32_t block, ir_stmt *s) {
+    ir_stmt *b = t->blocks[block].s;
+    if (!HFX_ARENA_GROW(t->c->arena, b->body, b->count, t->blocks[block].cap, 16)) return;
+    b->body[b->count++] = s;
+}
+
+void d3d9_tx_emit(d3d9_tx *t, ir_expr *e) {
+    ir_stmt *s = ir_new_stmt(t->c, IS_EXPR, t->loc);
+    s->expr = e;
+    d3d9_tx_add(t, t->depth, s);
+}
+
+static hfx_decl *fake_decl(d3d9_tx *t, hfx_decl_kind k, const char *name, const hfx_type *ty, uint32_t mods,
+                           const char *semantic) {
+    hfx_decl *d = HFX_NEW(t->c->arena, hfx_decl);
+    d->kind = k;
+    d->loc = t->loc;
+    d->name = name;
+    d->type = ty;
+    d->mods = mods;
+    d->semantic = semantic;
+    return d;
+}
+
+/* A local of the entry, declared (zero) in the prologue. */
+static ir_var *new_local(d3d9_tx *t, const char *name, const hfx_type *ty) {
+    ir_var *v = HFX_NEW(t->c->arena, ir_var);
+    v->kind = IRV_LOCAL;
+    v->decl = fake_decl(t, DECL_VAR, name, ty, 0, NULL);
+    v->name = name;
+    v->glsl = name;
+    v->type = ty;
+    v->param = HFX_NONE;
+    ir_stmt *s = ir_new_stmt(t->c, IS_DECL, t->loc);
+    s->var = v;
+    s->expr = ty->kind == TY_ARRAY ? NULL : ir_const_scalar(t->c, ty, 0, t->loc);
+    d3d9_tx_add(t, 0, s);
+    return v;
+}
+
+static ir_var *new_param(d3d9_tx *t, const char *name, const hfx_type *ty, bool out, const char *semantic) {
+    ir_var *v = HFX_NEW(t->c->arena, ir_var);
+    v->kind = IRV_PARAM;
+    v->mods = out ? MOD_OUT : MOD_IN;
+    v->decl = fake_decl(t, DECL_PARAM, name, ty, v->mods, semantic);
+    v->name = name;
+    v->glsl = name;
+    v->type = ty;
+    v->param = HFX_NONE;
+    if (HFX_ARENA_GROW(t->c->arena, t->params, t->param_count, t->param_cap, 8)) t->params[t->param_count++] = v;
+    if (out) { /* D3D9 leaves unwritten output components undefined; hfx makes them zero */
+        ir_expr *e = ir_new_expr(t->c, IE_ASSIGN, ty, t->loc, 2);
+        e->op = OP_NONE;
+        e->a[0] = d3d9_tx_var(t, v);
+        e->a[1] = ir_const_scalar(t->c, ty, 0, t->loc);
+        ir_stmt *s = ir_new_stmt(t->c, IS_EXPR, t->loc);
+        s->expr = e;
+        d3d9_tx_add(t, 0, s);
+    }
+    return v;
+}
+
+static const char *usage_semantic(d3d9_tx *t, unsigned usage, unsigned index) {
+    static const char *const names[] = {"POSITION", "BLENDWEIGHT", "BLENDINDICES", "NORMAL", "PSIZE", "TEXCOORD",
+                                        "TANGENT", "BINORMAL", "TESSFACTOR", "POSITIONT", "COLOR", "FOG", "DEPTH",
+                                        "SAMPLE"};
+    return hfx_arena_printf(t->c->arena, "%s%u", names[usage < 14 ? usage : 0], index);
+}
+
+/* The dcl of a register, or NULL. */
+static const d3d9_inst *find_dcl(const d3d9_shader *s, unsigned type, unsigned num) {
+    for (uint32_t i = 0; i < s->inst_count; i++)
+        if (s->insts[i].op == D3D9_DCL && s->insts[i].dst.type == type && s->insts[i].dst.num == num) return &s->insts[i];
+    return NULL;
+}
+
+/* An input register's parameter: vs and ps_3_0 by their dcl's usage; ps_2_x's v by COLOR, t by TEXCOORD. */
+static ir_var *input(d3d9_tx *t, unsigned type, unsigned num) {
+    int slot = type == D3D9_REG_INPUT ? 0 : type == D3D9_REG_ADDR ? 1 : 2;
+    if (num >= 16) return NULL;
+    if (t->inputs[slot][num]) return t->inputs[slot][num];
+    const d3d9_shader *s = t->s;
+    const char *sem;
+    const hfx_type *ty = t->f4;
+    if (slot == 2) {
+        sem = num == 0 ? "VPOS" : "VFACE";
+        ty = num == 0 ? t->f2 : t->f1;
+    } else if (slot == 1 || (s->stage == D3D9_PS && s->model < D3D9_SM(3, 0))) {
+        sem = hfx_arena_printf(t->c->arena, "%s%u", slot == 1 ? "TEXCOORD" : "COLOR", num);
+    } else {
+        const d3d9_inst *d = find_dcl(s, type, num);
+        if (!d) { d3d9_tx_fail(t, "v%u is read but never declared", num); return NULL; }
+        sem = usage_semantic(t, d->usage, d->usage_index);
+    }
+    return t->inputs[slot][num] = new_param(t, hfx_arena_printf(t->c->arena, "hfx_in_%s", sem), ty, false, sem);
+}
+
+/* An output register's parameter. */
+static ir_var *output(d3d9_tx *t, unsigned type, unsigned num) {
+    int slot = type == D3D9_REG_RASTOUT ? 0 : type == D3D9_REG_ATTROUT ? 1 : type == D3D9_REG_OUTPUT ? 2
+             : type == D3D9_REG_COLOROUT ? 3 : 4;
+    if (num >= 12) return NULL;
+    if (t->outputs[slot][num]) return t->outputs[slot][num];
+    const char *sem;
+    const hfx_type *ty = t->f4;
+    switch (slot) {
+    case 0: sem = num == 0 ? "POSITION0" : num == 1 ? "FOG0" : "PSIZE0"; if (num) ty = t->f1; break;
+    case 1: sem = hfx_arena_printf(t->c->arena, "COLOR%u", num); break;
+    case 2:
+        if (t->s->model >= D3D9_SM(3, 0)) {
+            const d3d9_inst *d = find_dcl(t->s, type, num);
+            if (!d) { d3d9_tx_fail(t, "o%u is written but never declared", num); return NULL; }
+            sem = usage_semantic(t, d->usage, d->usage_index);
+            if (d->usage == 4 || d->usage == 11) ty = t->f1; /* psize, fog */
+        } else sem = hfx_arena_printf(t->c->arena, "TEXCOORD%u", num);
+        break;
+    case 3: sem = hfx_arena_printf(t->c->arena, "COLOR%u", num); break;
+    default: sem = "DEPTH0"; ty = t->f1; break;
+    }
+    return t->outputs[slot][num] = new_param(t, hfx_arena_printf(t->c->arena, "hfx_out_%s", sem), ty, true, sem);
+}
+
+/* The CTAB constant of a register set covering register n, or -1. */
+static int constant_at(const d3d9_shader *s, unsigned set, unsigned n) {
+    for (uint32_t i = 0; i < s->constant_count; i++) {
+        const d3d9_constant *k = &s->constants[i];
+        if (k->regset == set && n >= k->reg && n < (unsigned)k->reg + k->count) return (int)i;
+    }
+    return -1;
+}
+
+/* The effect parameter a CTAB constant names: its uniform (or sampler) variable, made once. */
+static ir_var *constant_var(d3d9_tx *t, uint32_t i, ir_var_kind kind, const hfx_type *ty) {
+    if (t->consts[i]) return t->consts[i];
+    const d3d9_constant *k = &t->s->constants[i];
+    const hfx_fx_effect *fx = t->c->fx;
+    uint32_t p = HFX_NONE;
+    for (uint32_t j = 0; fx && j < fx->top_param_count && j < fx->param_count; j++)
+        if (fx->params[j].name && strcmp(fx->params[j].name, k->name) == 0) { p = j; break; }
+    if (p == HFX_NONE || !fx->params[p].glsl_name) {
+        d3d9_tx_fail(t, "constant '%s' names no parameter of the effect", k->name);
+        return NULL;
+    }
+    ir_var *v = HFX_NEW(t->c->arena, ir_var);
+    v->kind = kind;
+    v->name = k->name;
+    v->glsl = fx->params[p].glsl_name;
+    v->type = ty;
+    v->param = p;
+    hfx_decl *d = fake_decl(t, DECL_VAR, k->name, ty, 0, NULL);
+    d->is_global = true;
+    d->index = p;
+    v->decl = d;
+    return t->consts[i] = v;
+}
+
+/* The HLSL type of a float CTAB constant (one element). */
+static const hfx_type *constant_type(d3d9_tx *t, const d3d9_constant *k) {
+    unsigned r = k->rows ? k->rows : 1, c = k->cols ? k->cols : 1;
+    if (r > 4 || c > 4) return NULL;
+    if (k->cls == 0) return t->f1;
+    if (k->cls == 1) return hfx_type_vector(t->c->types, B_FLOAT, c);
+    if (k->cls == 2 || k->cls == 3) return hfx_type_matrix(t->c->types, B_FLOAT, r, c);
+    return NULL;
+}
+
+/* Register `num` of the float constant i: column j of a column-major matrix, row j of a row-major
+ * one, the value of a scalar or vector; arrays by element. */
+static ir_expr *constant_register(d3d9_tx *t, uint32_t i, unsigned num) {
+    const d3d9_constant *k = &t->s->constants[i];
+    const hfx_type *el = constant_type(t, k);
+    if (!el || k->type != 3) { d3d9_tx_fail(t, "constant '%s' of this type is not supported yet", k->name); return NULL; }
+    unsigned per = k->cls == 3 ? el->cols : k->cls == 2 ? el->rows : 1, elems = k->elements > 1 ? k->elements : 1;
+    const hfx_type *ty = elems > 1 ? hfx_type_array(t->c->types, el, elems) : el;
+    ir_var *v = constant_var(t, i, IRV_UNIFORM, ty);
+    if (!v) return NULL;
+    unsigned off = num - k->reg, e = off / per, j = off % per;
+    ir_expr *x = d3d9_tx_var(t, v);
+    if (elems > 1) {
+        if (e >= elems) return d3d9_tx_const4(t, (const float[4]){0, 0, 0, 0});
+        ir_expr *ix = ir_new_expr(t->c, IE_INDEX, el, t->loc, 2);
+        ix->a[0] = x;
+        ix->a[1] = ir_const_scalar(t->c, t->i1, e, t->loc);
+        ix->range = IR_RANGE_IN_BOUNDS;
+        x = ix;
+    }
+    if (k->cls == 2 || k->cls == 3) {
+        uint8_t comps[4];
+        unsigned n = k->cls == 3 ? el->rows : el->cols;
+        for (unsigned q = 0; q < n; q++) comps[q] = (uint8_t)(k->cls == 3 ? q * el->cols + j : j * el->cols + q);
+        x = d3d9_tx_swizzle(t, x, comps, n);
+    }
+    return d3d9_tx_float4(t, x);
+}
+
+/* A c register as float4: its def, the parameter covering it, or zero. */
+static ir_expr *const_register(d3d9_tx *t, unsigned num) {
+    for (uint32_t i = 0; i < t->s->inst_count; i++) {
+        const d3d9_inst *in = &t->s->insts[i];
+        if (in->op == D3D9_DEF && in->dst.num == num) return d3d9_tx_const4(t, in->value.f);
+    }
+    int k = constant_at(t->s, D3D9_RS_FLOAT4, num);
+    if (k >= 0) return constant_register(t, (uint32_t)k, num);
+    return d3d9_tx_const4(t, (const float[4]){0, 0, 0, 0});
+}
+
+/* The register file for relative reads: every c register up to the highest one declared or
+ * defined, filled once at the start. */
+static ir_var *register_file(d3d9_tx *t) {
+    if (t->regfile) return t->regfile;
+    unsigned n = 0;
+    for (uint32_t i = 0; i < t->s->constant_count; i++)
+        if (t->s->constants[i].regset == D3D9_RS_FLOAT4 && (unsigned)t->s->constants[i].reg + t->s->constants[i].count > n)
+            n = t->s->constants[i].reg + t->s->constants[i].count;
+    for (uint32_t i = 0; i < t->s->inst_count; i++)
+        if (t->s->insts[i].op == D3D9_DEF && t->s->insts[i].dst.num + 1u > n) n = t->s->insts[i].dst.num + 1u;
+    if (!n) n = 1;
+    t->regfile = new_local(t, "hfx_c_file", hfx_type_array(t->c->types, t->f4, n));
+    t->regfile_size = n;
+    for (unsigned r = 0; r < n && !t->failed; r++) {
+        ir_expr *ix = ir_new_expr(t->c, IE_INDEX, t->f4, t->loc, 2);
+        ix->a[0] = d3d9_tx_var(t, t->regfile);
+        ix->a[1] = ir_const_scalar(t->c, t->i1, r, t->loc);
+        ix->range = IR_RANGE_IN_BOUNDS;
+        ir_expr *as = ir_new_expr(t->c, IE_ASSIGN, t->f4, t->loc, 2);
+        as->op = OP_NONE;
+        as->a[0] = ix;
+        as->a[1] = const_register(t, r);
+        ir_stmt *s = ir_new_stmt(t->c, IS_EXPR, t->loc);
+        s->expr = as;
+        d3d9_tx_add(t, 0, s);
+    }
+    return t->regfile;
+}
+
+/* c[a0.x + n] or c[aL + n]. */
+static ir_expr *relative_const(d3d9_tx *t, const d3d9_src *x) {
+    if (x->rel_type != D3D9_REG_ADDR || !t->a0) { d3d9_tx_fail(t, "relative addressing through aL is not supported yet"); return NULL; }
+    ir_var *file = register_file(t);
+    ir_expr *idx = d3d9_tx_swizzle(t, d3d9_tx_var(t, t->a0), &x->rel_comp, 1);
+    if (x->num) idx = ir_new_binary(t->c, OP_ADD, t->i1, idx, ir_const_scalar(t->c, t->i1, x->num, t->loc));
+    ir_expr *ix = ir_new_expr(t->c, IE_INDEX, t->f4, t->loc, 2);
+    ix->a[0] = d3d9_tx_var(t, file);
+    ix->a[1] = idx;
+    ix->range = IR_RANGE_ANY;
+    return ix;
+}
+
+ir_expr *d3d9_tx_reg(d3d9_tx *t, unsigned type, unsigned num) {
+    ir_var *v = NULL;
+    switch (type) {
+    case D3D9_REG_TEMP:
+        if (num >= 32) break;
+        if (!t->temps[num]) t->temps[num] = new_local(t, hfx_arena_printf(t->c->arena, "hfx_r%u", num), t->f4);
+        v = t->temps[num];
+        break;
+    case D3D9_REG_CONST: return const_register(t, num);
+    case D3D9_REG_INPUT: case D3D9_REG_MISC: v = input(t, type, num); break;
+    case D3D9_REG_ADDR:
+        if (t->s->stage == D3D9_PS) { v = input(t, type, num); break; }
+        d3d9_tx_fail(t, "a0 read as a value");
+        return NULL;
+    default:
+        d3d9_tx_fail(t, "reading register type %u is not supported yet", type);
+        return NULL;
+    }
+    if (!v) return NULL;
+    return d3d9_tx_float4(t, d3d9_tx_var(t, v));
+}
+
+/* Source modifiers of SM2+ (ps_1_x's are refused with the model). */
+static ir_expr *modify(d3d9_tx *t, ir_expr *x, unsigned mod) {
+    if (mod == D3D9_SMOD_ABS || mod == D3D9_SMOD_ABSNEG) {
+        ir_expr *a = ir_new_expr(t->c, IE_INTRIN, t->f4, t->loc, 1);
+        a->intrin = HFX_INTR_ABS;
+        a->a[0] = x;
+        x = a;
+    }
+    if (mod == D3D9_SMOD_NEG || mod == D3D9_SMOD_ABSNEG) {
+        ir_expr *n = ir_new_expr(t->c, IE_UNARY, t->f4, t->loc, 1);
+        n->op = OP_NEG;
+        n->a[0] = x;
+        x = n;
+    }
+    if (mod != D3D9_SMOD_NONE && mod != D3D9_SMOD_NEG && mod != D3D9_SMOD_ABS && mod != D3D9_SMOD_ABSNEG) {
+        d3d9_tx_fail(t, "source modifier %u is not supported yet", mod);
+        return NULL;
+    }
+    return x;
+}
+
+ir_expr *d3d9_tx_read(d3d9_tx *t, const d3d9_src *x) {
+    ir_expr *r = NULL;
+    if (x->relative) {
+        if (x->type != D3D9_REG_CONST) { d3d9_tx_fail(t, "relative addressing of register type %u is not supported yet", x->type); return NULL; }
+        r = relative_const(t, x);
+    } else r = d3d9_tx_reg(t, x->type, x->num);
+    if (!r) return NULL;
+    if (x->swizzle != 0xe4) {
+        uint8_t comps[4] = {x->swizzle & 3, (x->swizzle >> 2) & 3, (x->swizzle >> 4) & 3, (x->swizzle >> 6) & 3};
+        r = d3d9_tx_swizzle(t, r, comps, 4);
+    }
+    return modify(t, r, x->mod);
+}
+
+ir_var *d3d9_tx_sampler(d3d9_tx *t, unsigned num) {
+    if (num >= 16) return NULL;
+    if (t->samplers[num]) return t->samplers[num];
+    int k = constant_at(t->s, D3D9_RS_SAMPLER, num);
+    const d3d9_inst *d = find_dcl(t->s, D3D9_REG_SAMPLER, num);
+    if (k < 0) { d3d9_tx_fail(t, "s%u is sampled but no constant names it", num); return NULL; }
+    hfx_dim dim = !d || d->sampler_type == 2 ? DIM_2D : d->sampler_type == 3 ? DIM_CUBE : d->sampler_type == 4 ? DIM_3D : DIM_1D;
+    if (t->s->constants[k].count > 1 || t->s->constants[k].elements > 1) {
+        d3d9_tx_fail(t, "sampler arrays are not supported yet");
+        return NULL;
+    }
+    ir_var *v = constant_var(t, (uint32_t)k, IRV_SAMPLER, hfx_type_object(t->c->types, TY_SAMPLER, dim));
+    if (v) v->dim = dim;
+    return t->samplers[num] = v;
+}
+
+/* An output or temporary as an l-value, or NULL. */
+static ir_var *dst_var(d3d9_tx *t, const d3d9_dst *d) {
+    switch (d->type) {
+    case D3D9_REG_TEMP: d3d9_tx_reg(t, D3D9_REG_TEMP, d->num); return d->num < 32 ? t->temps[d->num] : NULL;
+    case D3D9_REG_RASTOUT: case D3D9_REG_ATTROUT: case D3D9_REG_OUTPUT: case D3D9_REG_COLOROUT: case D3D9_REG_DEPTHOUT:
+        return output(t, d->type, d->num);
+    case D3D9_REG_ADDR:
+        if (t->s->stage == D3D9_VS) {
+            if (!t->a0) t->a0 = new_local(t, "hfx_a0", t->i4);
+            return t->a0;
+        }
+        d3d9_tx_fail(t, "writing t registers (ps_1_x) is not supported yet");
+        return NULL;
+    default:
+        d3d9_tx_fail(t, "writing register type %u is not supported yet", d->type);
+        return NULL;
+    }
+}
+
+void d3d9_tx_write(d3d9_tx *t, const d3d9_dst *d, ir_expr *value) {
+    if (!value || t->failed) return;
+    if (d->relative || d->shift) { d3d9_tx_fail(t, "relative or shifted destinations are not supported yet"); return; }
+    ir_var *v = dst_var(t, d);
+    if (!v) return;
+    if (d->mods & D3D9_DMOD_SAT) {
+        ir_expr *s = ir_new_expr(t->c, IE_INTRIN, value->type, t->loc, 1);
+        s->intrin = HFX_INTR_SATURATE;
+        s->a[0] = value;
+        value = s;
+    }
+    uint8_t comps[4];
+    unsigned n = 0, width = hfx_type_components(v->type);
+    for (unsigned k = 0; k < 4; k++)
+        if (d->mask & (1u << k) && k < width) comps[n++] = (uint8_t)k;
+    if (!n) return;
+    ir_expr *lhs = d3d9_tx_var(t, v), *rhs = value;
+    if (v->type->base != value->type->base) rhs = ir_new_convert(t->c, hfx_type_vector(t->c->types, v->type->base, 4), rhs);
+    if (width == 1) rhs = d3d9_tx_swizzle(t, rhs, comps, 1);
+    else if (n < 4) {
+        lhs = d3d9_tx_swizzle(t, lhs, comps, n);
+        rhs = d3d9_tx_swizzle(t, rhs, comps, n);
+    }
+    ir_expr *as = ir_new_expr(t->c, IE_ASSIGN, lhs->type, t->loc, 2);
+    as->op = OP_NONE;
+    as->a[0] = lhs;
+    as->a[1] = rhs;
+    d3d9_tx_emit(t, as);
+}
+
+static bool model_supported(d3d9_tx *t) {
+    if (t->s->model >= D3D9_SM(2, 0)) return true;
+    d3d9_tx_fail(t, "%s bytecode to GLSL is not supported yet", d3d9_model_name(t->s->stage, t->s->model));
+    return false;
+}
+
+static void setup(d3d9_tx *t, ir_ctx *c, const d3d9_shader *s) {
+    t->c = c;
+    t->s = s;
+    hfx_types *ty = c->types;
+    t->f1 = hfx_type_scalar(ty, B_FLOAT);
+    t->f2 = hfx_type_vector(ty, B_FLOAT, 2);
+    t->f3 = hfx_type_vector(ty, B_FLOAT, 3);
+    t->f4 = hfx_type_vector(ty, B_FLOAT, 4);
+    t->i1 = hfx_type_scalar(ty, B_INT);
+    t->i4 = hfx_type_vector(ty, B_INT, 4);
+    t->b4 = hfx_type_vector(ty, B_BOOL, 4);
+    t->loc = (hfx_loc){s->file_index, 0, s->base};
+    t->consts = HFX_NEW_ARRAY(c->arena, ir_var *, s->constant_count ? s->constant_count : 1);
+    t->prologue = ir_new_stmt(c, IS_BLOCK, t->loc);
+    t->blocks[0].s = t->prologue;
+    t->blocks[1].s = ir_new_stmt(c, IS_BLOCK, t->loc);
+    t->depth = 1;
+}
+
+/* The entry: `void hfx_d3d9_main(in ..., out ...)`, body = prologue then instructions. */
+static ir_shader *finish(d3d9_tx *t) {
+    ir_ctx *c = t->c;
+    const d3d9_shader *s = t->s;
+    hfx_func *src = HFX_NEW(c->arena, hfx_func);
+    src->ret = hfx_type_void(c->types);
+    src->name = s->stage == D3D9_VS ? "hfx_d3d9_vs" : "hfx_d3d9_ps";
+    src->loc = (hfx_loc){s->file_index, 0, s->base};
+    ir_func *f = HFX_NEW(c->arena, ir_func);
+    f->name = f->glsl = src->name;
+    f->ret = src->ret;
+    f->src = src;
+    f->is_entry = f->reached = true;
+    f->params = t->params;
+    f->param_count = t->param_count;
+    t->depth = 0;
+    ir_stmt *body = t->blocks[1].s;
+    d3d9_tx_add(t, 0, body);
+    f->body = t->prologue;
+    hfx_expr *compile = HFX_NEW(c->arena, hfx_expr);
+    compile->kind = EX_COMPILE;
+    compile->profile = d3d9_model_name(s->stage, s->model);
+    compile->name = src->name;
+    compile->intrinsic = -1;
+    compile->loc = src->loc;
+    ir_shader *sh = HFX_NEW(c->arena, ir_shader);
+    sh->stage = s->stage == D3D9_VS ? IR_VERTEX : IR_PIXEL;
+    sh->entry = f;
+    sh->funcs = HFX_NEW_ARRAY(c->arena, ir_func *, 1);
+    sh->funcs[0] = f;
+    sh->func_count = sh->func_cap = 1;
+    sh->compile = compile;
+    sh->uses_discard = t->sh && t->sh->uses_discard;
+    return sh;
+}
 
 struct ir_shader *d3d9_to_ir(struct ir_ctx *c, const d3d9_shader *s) {
-    hfx_loc loc = {s->file_index, 0, s->base};
-    hfx_error(c->diags, loc, X_D3D9_UNSUPPORTED, "%s bytecode to GLSL is not supported yet",
-              d3d9_model_name(s->stage, s->model));
-    return NULL;
+    d3d9_tx t;
+    memset(&t, 0, sizeof t);
+    setup(&t, c, s);
+    ir_shader scratch = {0};
+    t.sh = &scratch;
+    if (!model_supported(&t)) return NULL;
+    for (uint32_t i = 0; i < s->inst_count && !t.failed; i++) {
+        t.loc = (hfx_loc){s->file_index, 0, s->base + s->insts[i].offset};
+        d3d9_tx_inst(&t, &s->insts[i]);
+    }
+    if (t.failed) return NULL;
+    if (t.depth != 1) { d3d9_tx_fail(&t, "flow control does not close"); return NULL; }
+    t.loc = (hfx_loc){s->file_index, 0, s->base};
+    return finish(&t);
 }

@@ -1,41 +1,257 @@
-/* test_d3d9_program.c: a pass's program from fxc bytecode (hfx_codegen_d3d9_program). Until the
- * translator to the IR handles a model, the program is refused with a located X5006 naming it,
- * never handed to a driver half translated. */
+/* test_d3d9_program.c: a pass's program from fxc bytecode (hfx_codegen_d3d9_program): vs_2_0 and
+ * ps_2_0 assembled by hand, their constants named by a CTAB as the effect's parameters, turned
+ * into GLSL, checked by glslang, drawn on GL (OSMesa) and probed against the values worked out
+ * from the D3D9 instruction definitions. Models the translator does not handle yet are refused
+ * with a located X5006. */
+#define GL_GLEXT_PROTOTYPES 0
+#include <GL/gl.h>
+#include <GL/glext.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "../d3d9/d3d9_asm.h"
 #include "d3d9/d3d9.h"
 #include "effect/codegen.h"
+#include "gl_context.h"
+#include "gl_fns.h"
+#include "glsl/glslang.h"
+#include "hfx/hfxc.h"
 #include "test.h"
 
-/* ps_2_0: dcl t0.xy; dcl_2d s0; texld r0, t0, s0; mov oC0, r0 (tokens by hand, d3d9_asm.h's layout). */
-static const uint32_t ps20[] = {
-    0xffff0200u, 0x0200001fu, 0x80000000u, 0xb0030000u, 0x0200001fu, 0x90000000u, 0xa00f0800u,
-    0x03000042u, 0x800f0000u, 0xb0e40000u, 0xa0e40800u, 0x02000001u, 0x800f0800u, 0x80e40000u, 0x0000ffffu};
+enum { W = 8, H = 8 };
+static test_gl *gl;
+static test_gl_fns f;
 
-static void refused_with_location(void) {
+/* The effect whose parameters the CTABs name (its own passes are not used). */
+static const char params_fx[] =
+    "float4x4 M; float4 Tint; float Scale; float4 Colors[2]; float4 Offset;\n"
+    "technique T { pass P { } }\n";
+
+typedef struct fixture {
     hfx_arena arena;
     hfx_diags diags;
-    hfx_arena_init(&arena);
-    hfx_diags_init(&diags, &arena, 0);
-    uint32_t file = hfx_diags_add_file(&diags, "t.fxb", NULL, "", 0);
-    d3d9_input in = {ps20, sizeof ps20, file, 96};
-    d3d9_shader *ps = d3d9_decode(&arena, &diags, &in);
-    CHECK(ps != NULL);
-    hfx_fx_effect fx;
-    memset(&fx, 0, sizeof fx);
-    hfx_codegen *cg = hfx_codegen_new(&arena, &diags, hfx_types_new(&arena), NULL, &fx,
-                                      1u << HFX_TARGET_GLSL330, true, NULL, NULL);
+    hfxc_result *r;
+    hfx_fx_effect *fx;
+    hfx_codegen *cg;
+    uint32_t file;
+} fixture;
+
+static void open_fixture(fixture *x, bool pack) {
+    hfx_arena_init(&x->arena);
+    hfx_diags_init(&x->diags, &x->arena, 0);
+    x->file = hfx_diags_add_file(&x->diags, "t.fxb", NULL, "", 0);
+    hfxc_options o = {0};
+    o.targets = 1u << HFX_TARGET_GLSL330;
+    x->r = hfxc_compile_memory(params_fx, strlen(params_fx), "params.fx", &o);
+    x->fx = (hfx_fx_effect *)hfxc_result_effect(x->r);
+    CHECK(x->fx != NULL);
+    x->cg = hfx_codegen_new(&x->arena, &x->diags, hfx_types_new(&x->arena), NULL, x->fx, 1u << HFX_TARGET_GLSL330,
+                            pack, NULL, NULL);
+}
+
+static void close_fixture(fixture *x) {
+    hfxc_result_free(x->r);
+    hfx_arena_free(&x->arena);
+}
+
+static d3d9_shader *decode(fixture *x, const uint32_t *w, size_t n, uint32_t base) {
+    d3d9_input in = {w, (uint32_t)(n * 4), x->file, base};
+    d3d9_shader *s = d3d9_decode(&x->arena, &x->diags, &in);
+    CHECK(s != NULL);
+    return s;
+}
+
+/* vs_2_0: m4x4 oPos, v0, c0 (M, column-major); mov oT0.xy, v1; mul oD0, c4, c5.x (Tint * Scale);
+ * mova a0.x, c8.x (def 1); mov oD1, c6[a0.x] (Colors[1]). */
+static size_t vs_tokens(uint32_t *w) {
+    static const ctab_const k[] = {{"M", 2, 0, 4, 3, 3, 4, 4, 1}, {"Tint", 2, 4, 1, 1, 3, 1, 4, 1},
+                                   {"Scale", 2, 5, 1, 0, 3, 1, 1, 1}, {"Colors", 2, 6, 2, 1, 3, 1, 4, 2}};
+    size_t n = 0;
+    w[n++] = VS(2, 0);
+    n += put_ctab(w + n, "hand", k, 4);
+    const uint32_t code[] = {
+        OP(0x51, 5), DST(R_CONST, 8, 0xf), fbits(1), 0, 0, 0,
+        OP(0x1f, 2), 0x80000000u, DST(R_INPUT, 0, 0xf),
+        OP(0x1f, 2), 0x80000005u, DST(R_INPUT, 1, 0xf),
+        OP(0x14, 3), DST(R_RASTOUT, 0, 0xf), SRC(R_INPUT, 0, XYZW), SRC(R_CONST, 0, XYZW),
+        OP(0x01, 2), DST(R_OUTPUT, 0, 0x3), SRC(R_INPUT, 1, XYZW),
+        OP(0x05, 3), DST(R_ATTROUT, 0, 0xf), SRC(R_CONST, 4, XYZW), SRC(R_CONST, 5, 0),
+        OP(0x2e, 2), DST(R_ADDR, 0, 0x1), SRC(R_CONST, 8, 0),
+        OP(0x01, 3), DST(R_ATTROUT, 1, 0xf), SRC(R_CONST, 6, XYZW) | REL, SRC(R_ADDR, 0, 0),
+        END_TOKEN};
+    memcpy(w + n, code, sizeof code);
+    return n + sizeof code / 4;
+}
+
+/* ps_2_0: def c1, 0.5, 0.25, 2, -1; mad r0, v0, c1.x, c0 (Offset); add r0.z, r0.z, v1.z;
+ * rsq r1.x, c1.w; mul r0.w, r0.w, r1.x; cmp r0.y, c1.w, c1.x, c1.y; mov oC0, r0. */
+static size_t ps_tokens(uint32_t *w) {
+    static const ctab_const k[] = {{"Offset", 2, 0, 1, 1, 3, 1, 4, 1}};
+    size_t n = 0;
+    w[n++] = PS(2, 0);
+    n += put_ctab(w + n, "hand", k, 1);
+    const uint32_t code[] = {
+        OP(0x51, 5), DST(R_CONST, 1, 0xf), fbits(0.5f), fbits(0.25f), fbits(2), fbits(-1),
+        OP(0x1f, 2), 0x80000000u, DST(R_INPUT, 0, 0xf),
+        OP(0x1f, 2), 0x80000000u, DST(R_INPUT, 1, 0xf),
+        OP(0x04, 4), DST(R_TEMP, 0, 0xf), SRC(R_INPUT, 0, XYZW), SRC(R_CONST, 1, 0), SRC(R_CONST, 0, XYZW),
+        OP(0x02, 3), DST(R_TEMP, 0, 0x4), SRC(R_TEMP, 0, 0xaa), SRC(R_INPUT, 1, 0xaa),
+        OP(0x07, 2), DST(R_TEMP, 1, 0x1), SRC(R_CONST, 1, 0xff),
+        OP(0x05, 3), DST(R_TEMP, 0, 0x8), SRC(R_TEMP, 0, 0xff), SRC(R_TEMP, 1, 0),
+        OP(0x58, 4), DST(R_TEMP, 0, 0x2), SRC(R_CONST, 1, 0xff), SRC(R_CONST, 1, 0), SRC(R_CONST, 1, 0x55),
+        OP(0x01, 2), DST(R_COLOROUT, 0, 0xf), SRC(R_TEMP, 0, XYZW),
+        END_TOKEN};
+    memcpy(w + n, code, sizeof code);
+    return n + sizeof code / 4;
+}
+
+static GLuint stage(GLenum kind, const char *src) {
+    GLuint s = f.CreateShader(kind);
+    f.ShaderSource(s, 1, &src, NULL);
+    f.CompileShader(s);
+    GLint ok = 0;
+    f.GetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        char log[2048];
+        f.GetShaderInfoLog(s, sizeof log, NULL, log);
+        fprintf(stderr, "GL compile failed:\n%s\n%s\n", log, src);
+    }
+    return s;
+}
+
+static void set4(GLuint prog, const char *name, const float *v, int count) {
+    GLint loc = f.GetUniformLocation(prog, name);
+    if (loc >= 0) f.Uniform4fv(loc, count, v);
+}
+
+/* Draws the program over the 8x8 target with XNA's parameter values; reads pixels (0, 4), (5, 4). */
+static void draw(const hfx_fx_program *p, const hfx_fx_effect *fx, unsigned char left[4], unsigned char right[4]) {
+    GLuint vs = stage(GL_VERTEX_SHADER, p->code[0][HFX_TARGET_GLSL330].data);
+    GLuint fs = stage(GL_FRAGMENT_SHADER, p->code[1][HFX_TARGET_GLSL330].data);
+    GLuint prog = f.CreateProgram();
+    f.AttachShader(prog, vs);
+    f.AttachShader(prog, fs);
+    f.LinkProgram(prog);
+    f.UseProgram(prog);
+    /* M: XNA's row-major translation by (0.5, 0, 0); the runtime uploads it untransposed */
+    static const float m[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0.5f, 0, 0, 1};
+    static const float tint[4] = {0.2f, 0.4f, 0.6f, 0.8f}, scale = 0.5f, offset[4] = {0.3f, 0.1f, 0.05f, 0.6f};
+    static const float colors[8] = {0, 0, 0.9f, 0, 0, 0, 0.3f, 0};
+    for (uint32_t i = 0; i < fx->top_param_count; i++) {
+        const char *g = fx->params[i].glsl_name, *n = fx->params[i].name;
+        if (!g) continue;
+        GLint loc = f.GetUniformLocation(prog, g);
+        if (strcmp(n, "M") == 0 && loc >= 0) f.UniformMatrix4fv(loc, 1, GL_FALSE, m);
+        else if (strcmp(n, "Tint") == 0) set4(prog, g, tint, 1);
+        else if (strcmp(n, "Offset") == 0) set4(prog, g, offset, 1);
+        else if (strcmp(n, "Colors") == 0) set4(prog, g, colors, 2);
+        else if (strcmp(n, "Scale") == 0 && loc >= 0) f.Uniform1fv(loc, 1, &scale);
+    }
+    static const float quad[] = {-1, -1, 0, 1, 0, 1, 1, -1, 0, 1, 1, 1, -1, 1, 0, 1, 0, 0,
+                                 -1, 1, 0, 1, 0, 0, 1, -1, 0, 1, 1, 1, 1, 1, 0, 1, 1, 0};
+    GLuint vao, vbo;
+    f.GenVertexArrays(1, &vao);
+    f.BindVertexArray(vao);
+    f.GenBuffers(1, &vbo);
+    f.BindBuffer(GL_ARRAY_BUFFER, vbo);
+    f.BufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STATIC_DRAW);
+    f.VertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 6 * sizeof(float), (void *)0);
+    f.EnableVertexAttribArray(0);
+    f.VertexAttribPointer(8, 2, GL_FLOAT, GL_FALSE, 6 * sizeof(float), (void *)(4 * sizeof(float)));
+    f.EnableVertexAttribArray(8);
+    f.Viewport(0, 0, W, H);
+    f.ClearColor(0, 0, 0, 0);
+    f.Clear(GL_COLOR_BUFFER_BIT);
+    f.DrawArrays(GL_TRIANGLES, 0, 6);
+    test_gl_read(gl, 0, 4, left);
+    test_gl_read(gl, 5, 4, right);
+    f.DeleteBuffers(1, &vbo);
+    f.DeleteVertexArrays(1, &vao);
+    f.DeleteProgram(prog);
+    f.DeleteShader(vs);
+    f.DeleteShader(fs);
+}
+
+static void near(const unsigned char px[4], float r, float g, float b, float a) {
+    CHECK_NEAR(px[0] / 255.0, r, 1.5 / 255);
+    CHECK_NEAR(px[1] / 255.0, g, 1.5 / 255);
+    CHECK_NEAR(px[2] / 255.0, b, 1.5 / 255);
+    CHECK_NEAR(px[3] / 255.0, a, 1.5 / 255);
+}
+
+static void vs_ps_2_0_drawn(void) {
+    fixture x;
+    open_fixture(&x, false);
+    uint32_t vw[256], pw[256];
+    d3d9_shader *vs = decode(&x, vw, vs_tokens(vw), 0), *ps = decode(&x, pw, ps_tokens(pw), 1024);
     hfx_fx_program prog;
-    CHECK_INT(hfx_codegen_d3d9_program(cg, NULL, ps, false, &prog), -1);
-    char *text = hfx_diags_format(&diags, 0);
-    CHECK_STR(text, "t.fxb(0,96): error X5006: ps_2_0 bytecode to GLSL is not supported yet\n");
+    int rc = hfx_codegen_d3d9_program(x.cg, vs, ps, false, &prog);
+    CHECK_INT(rc, 0);
+    if (rc != 0) {
+        char *d = hfx_diags_format(&x.diags, 0);
+        fprintf(stderr, "%s", d);
+        free(d);
+    } else {
+        bool glslang = hfx_glslang_available() && hfx_glslang_begin();
+        for (int s = 0; s < 2 && glslang; s++) {
+            char *log = NULL;
+            CHECK_INT(hfx_glslang_check(prog.code[s][HFX_TARGET_GLSL330].data, s, HFX_TARGET_GLSL330, &log), 0);
+            if (log) fprintf(stderr, "%s\n%s\n", log, prog.code[s][HFX_TARGET_GLSL330].data);
+            free(log);
+        }
+        if (glslang) hfx_glslang_end();
+        if (getenv("HFX_D3D9_SHOW")) printf("%s\n%s\n", prog.code[0][HFX_TARGET_GLSL330].data, prog.code[1][HFX_TARGET_GLSL330].data);
+        CHECK_INT(prog.attribute_count, 2); /* POSITION0 at 0, TEXCOORD0 at 8 */
+        if (prog.attribute_count == 2) CHECK_INT(prog.attributes[1].location, 8);
+        if (gl) {
+            unsigned char left[4], right[4];
+            draw(&prog, x.fx, left, right);
+            /* M moves the quad right by 0.5 in NDC (2 of 8 pixels): column 0 stays clear */
+            near(left, 0, 0, 0, 0);
+            /* r0 = oD0 * 0.5 + Offset = (0.1, 0.2, 0.3, 0.4) * 0.5 + (0.3, 0.1, 0.05, 0.6) = (0.35, 0.2, 0.2, 0.8);
+             * .z += Colors[a0.x = 1].z = 0.3 -> 0.5; .w *= rsq(|-1|) = 1; .y = cmp(-1 >= 0) -> 0.25 */
+            near(right, 0.35f, 0.25f, 0.5f, 0.8f);
+        }
+    }
+    hfx_fx_program_clear(&prog);
+    close_fixture(&x);
+}
+
+static void old_models_refused_with_location(void) {
+    fixture x;
+    open_fixture(&x, true);
+    static const uint32_t ps11[] = {PS(1, 1), 0x42, DST(R_ADDR, 0, 0xf), 0x01, DST(R_TEMP, 0, 0xf), SRC(R_ADDR, 0, XYZW), END_TOKEN};
+    d3d9_shader *ps = decode(&x, ps11, sizeof ps11 / 4, 96);
+    hfx_fx_program prog;
+    CHECK_INT(hfx_codegen_d3d9_program(x.cg, NULL, ps, false, &prog), -1);
+    char *text = hfx_diags_format(&x.diags, 0);
+    CHECK_STR(text, "t.fxb(0,96): error X5006: ps_1_1 bytecode to GLSL is not supported yet\n");
     free(text);
     hfx_fx_program_clear(&prog);
-    hfx_arena_free(&arena);
+    close_fixture(&x);
+}
+
+static void flow_control_refused_at_instruction(void) {
+    fixture x;
+    open_fixture(&x, true);
+    static const uint32_t vs[] = {VS(2, 0), OP(0x28, 1), SRC(R_CONSTBOOL, 0, XYZW), OP(0x2b, 0), END_TOKEN};
+    d3d9_shader *s = decode(&x, vs, sizeof vs / 4, 200);
+    hfx_fx_program prog;
+    CHECK_INT(hfx_codegen_d3d9_program(x.cg, s, NULL, false, &prog), -1);
+    char *text = hfx_diags_format(&x.diags, 0);
+    CHECK_STR(text, "t.fxb(0,204): error X5006: flow control (if) is not supported yet\n");
+    free(text);
+    hfx_fx_program_clear(&prog);
+    close_fixture(&x);
 }
 
 int main(void) {
-    RUN(refused_with_location);
+    gl = test_gl_create(W, H);
+    if (gl) CHECK_INT(test_gl_fns_load(&f), 0);
+    else printf("no OSMesa GL 3.3 context: programs are built and checked, not drawn\n");
+    RUN(vs_ps_2_0_drawn);
+    RUN(old_models_refused_with_location);
+    RUN(flow_control_refused_at_instruction);
+    if (gl) test_gl_destroy(gl);
     return test_summary();
 }
