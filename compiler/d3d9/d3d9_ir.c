@@ -291,12 +291,56 @@ static ir_var *register_file(d3d9_tx *t) {
     return t->regfile;
 }
 
+static ir_expr *int_op(d3d9_tx *t, hfx_op op, ir_expr *a, int k) {
+    return ir_new_binary(t->c, op, t->i1, a, ir_const_scalar(t->c, t->i1, k, t->loc));
+}
+
+/* A relative read inside an array constant (fxc's indexing of `float4x3 Bones[72]`): the
+ * element and, for matrices, the row or column, from the index; past the array it reads zero. */
+static ir_expr *array_register(d3d9_tx *t, uint32_t i, ir_expr *idx) {
+    const d3d9_constant *k = &t->s->constants[i];
+    const hfx_type *el = constant_type(t, k);
+    if (!el || k->type != 3) { d3d9_tx_fail(t, "constant '%s' of this type is not supported yet", k->name); return NULL; }
+    unsigned per = k->cls == 3 ? el->cols : k->cls == 2 ? el->rows : 1;
+    ir_var *v = constant_var(t, i, IRV_UNIFORM, hfx_type_array(t->c->types, el, k->elements));
+    if (!v) return NULL;
+    ir_expr *off = int_op(t, OP_SUB, idx, k->reg);
+    ir_expr *e = ir_new_expr(t->c, IE_INDEX, el, t->loc, 2);
+    e->a[0] = d3d9_tx_var(t, v);
+    e->a[1] = per > 1 ? int_op(t, OP_DIV, off, (int)per) : off;
+    e->range = IR_RANGE_ANY;
+    if (k->cls != 2 && k->cls != 3) return d3d9_tx_float4(t, e);
+    ir_expr *j = int_op(t, OP_MOD, ir_clone_expr(t->c, off), (int)per);
+    if (k->cls == 2) { /* row j */
+        ir_expr *row = ir_new_expr(t->c, IE_INDEX, hfx_type_vector(t->c->types, B_FLOAT, el->cols), t->loc, 2);
+        row->a[0] = e;
+        row->a[1] = j;
+        row->range = IR_RANGE_IN_BOUNDS;
+        return d3d9_tx_float4(t, row);
+    }
+    ir_expr *col = ir_new_expr(t->c, IE_CONSTRUCT, hfx_type_vector(t->c->types, B_FLOAT, el->rows), t->loc, el->rows);
+    for (unsigned q = 0; q < el->rows; q++) { /* column j: element q of each row */
+        ir_expr *row = ir_new_expr(t->c, IE_INDEX, hfx_type_vector(t->c->types, B_FLOAT, el->cols), t->loc, 2);
+        row->a[0] = q ? ir_clone_expr(t->c, e) : e;
+        row->a[1] = ir_const_scalar(t->c, t->i1, q, t->loc);
+        row->range = IR_RANGE_IN_BOUNDS;
+        ir_expr *c = ir_new_expr(t->c, IE_INDEX, t->f1, t->loc, 2);
+        c->a[0] = row;
+        c->a[1] = q ? ir_clone_expr(t->c, j) : j;
+        c->range = IR_RANGE_IN_BOUNDS;
+        col->a[q] = c;
+    }
+    return d3d9_tx_float4(t, el->rows == 1 ? col->a[0] : col);
+}
+
 /* c[a0.x + n] or c[aL + n]. */
 static ir_expr *relative_const(d3d9_tx *t, const d3d9_src *x) {
     if (x->rel_type != D3D9_REG_ADDR || !t->a0) { d3d9_tx_fail(t, "relative addressing through aL is not supported yet"); return NULL; }
-    ir_var *file = register_file(t);
     ir_expr *idx = d3d9_tx_swizzle(t, d3d9_tx_var(t, t->a0), &x->rel_comp, 1);
     if (x->num) idx = ir_new_binary(t->c, OP_ADD, t->i1, idx, ir_const_scalar(t->c, t->i1, x->num, t->loc));
+    int k = constant_at(t->s, D3D9_RS_FLOAT4, x->num);
+    if (k >= 0 && t->s->constants[k].elements > 1) return array_register(t, (uint32_t)k, idx);
+    ir_var *file = register_file(t);
     ir_expr *ix = ir_new_expr(t->c, IE_INDEX, t->f4, t->loc, 2);
     ix->a[0] = d3d9_tx_var(t, file);
     ix->a[1] = idx;

@@ -62,7 +62,8 @@ static d3d9_shader *decode(fixture *x, const uint32_t *w, size_t n, uint32_t bas
 }
 
 /* vs_2_0: m4x4 oPos, v0, c0 (M, column-major); mov oT0.xy, v1; mul oD0, c4, c5.x (Tint * Scale);
- * mova a0.x, c8.x (def 1); mov oD1, c6[a0.x] (Colors[1]). */
+ * mova a0.x, c8.x (def 1); mov oD1, c6[a0.x] (Colors[1]); mov oT1, c4[a0.x] (c5: Scale, through the
+ * register file, Tint being no array). */
 static size_t vs_tokens(uint32_t *w) {
     static const ctab_const k[] = {{"M", 2, 0, 4, 3, 3, 4, 4, 1}, {"Tint", 2, 4, 1, 1, 3, 1, 4, 1},
                                    {"Scale", 2, 5, 1, 0, 3, 1, 1, 1}, {"Colors", 2, 6, 2, 1, 3, 1, 4, 2}};
@@ -78,13 +79,15 @@ static size_t vs_tokens(uint32_t *w) {
         OP(0x05, 3), DST(R_ATTROUT, 0, 0xf), SRC(R_CONST, 4, XYZW), SRC(R_CONST, 5, 0),
         OP(0x2e, 2), DST(R_ADDR, 0, 0x1), SRC(R_CONST, 8, 0),
         OP(0x01, 3), DST(R_ATTROUT, 1, 0xf), SRC(R_CONST, 6, XYZW) | REL, SRC(R_ADDR, 0, 0),
+        OP(0x01, 3), DST(R_OUTPUT, 1, 0xf), SRC(R_CONST, 4, XYZW) | REL, SRC(R_ADDR, 0, 0),
         END_TOKEN};
     memcpy(w + n, code, sizeof code);
     return n + sizeof code / 4;
 }
 
 /* ps_2_0: def c1, 0.5, 0.25, 2, -1; mad r0, v0, c1.x, c0 (Offset); add r0.z, r0.z, v1.z;
- * rsq r1.x, c1.w; mul r0.w, r0.w, r1.x; cmp r0.y, c1.w, c1.x, c1.y; mov oC0, r0. */
+ * rsq r1.x, c1.w; mul r0.w, r0.w, r1.x; cmp r0.y, c1.w, c1.x, c1.y; dcl t1; add r0.x, r0.x, t1.x;
+ * mov oC0, r0. */
 static size_t ps_tokens(uint32_t *w) {
     static const ctab_const k[] = {{"Offset", 2, 0, 1, 1, 3, 1, 4, 1}};
     size_t n = 0;
@@ -99,6 +102,8 @@ static size_t ps_tokens(uint32_t *w) {
         OP(0x07, 2), DST(R_TEMP, 1, 0x1), SRC(R_CONST, 1, 0xff),
         OP(0x05, 3), DST(R_TEMP, 0, 0x8), SRC(R_TEMP, 0, 0xff), SRC(R_TEMP, 1, 0),
         OP(0x58, 4), DST(R_TEMP, 0, 0x2), SRC(R_CONST, 1, 0xff), SRC(R_CONST, 1, 0), SRC(R_CONST, 1, 0x55),
+        OP(0x1f, 2), 0x80000000u, DST(R_ADDR, 1, 0xf),
+        OP(0x02, 3), DST(R_TEMP, 0, 0x1), SRC(R_TEMP, 0, 0), SRC(R_ADDR, 1, 0),
         OP(0x01, 2), DST(R_COLOROUT, 0, 0xf), SRC(R_TEMP, 0, XYZW),
         END_TOKEN};
     memcpy(w + n, code, sizeof code);
@@ -209,8 +214,9 @@ static void vs_ps_2_0_drawn(void) {
             /* M moves the quad right by 0.5 in NDC (2 of 8 pixels): column 0 stays clear */
             near(left, 0, 0, 0, 0);
             /* r0 = oD0 * 0.5 + Offset = (0.1, 0.2, 0.3, 0.4) * 0.5 + (0.3, 0.1, 0.05, 0.6) = (0.35, 0.2, 0.2, 0.8);
-             * .z += Colors[a0.x = 1].z = 0.3 -> 0.5; .w *= rsq(|-1|) = 1; .y = cmp(-1 >= 0) -> 0.25 */
-            near(right, 0.35f, 0.25f, 0.5f, 0.8f);
+             * .z += Colors[a0.x = 1].z = 0.3 -> 0.5; .w *= rsq(|-1|) = 1; .y = cmp(-1 >= 0) -> 0.25;
+             * .x += TEXCOORD1.x = c5.x = Scale = 0.5 -> 0.85 */
+            near(right, 0.85f, 0.25f, 0.5f, 0.8f);
         }
     }
     hfx_fx_program_clear(&prog);
