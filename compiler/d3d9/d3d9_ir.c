@@ -96,6 +96,8 @@ static ir_var *new_local(d3d9_tx *t, const char *name, const hfx_type *ty) {
     return v;
 }
 
+ir_var *d3d9_tx_local(d3d9_tx *t, const char *name, const hfx_type *ty) { return new_local(t, name, ty); }
+
 static ir_var *new_param(d3d9_tx *t, const char *name, const hfx_type *ty, bool out, const char *semantic) {
     ir_var *v = HFX_NEW(t->c->arena, ir_var);
     v->kind = IRV_PARAM;
@@ -335,8 +337,10 @@ static ir_expr *array_register(d3d9_tx *t, uint32_t i, ir_expr *idx) {
 
 /* c[a0.x + n] or c[aL + n]. */
 static ir_expr *relative_const(d3d9_tx *t, const d3d9_src *x) {
-    if (x->rel_type != D3D9_REG_ADDR || !t->a0) { d3d9_tx_fail(t, "relative addressing through aL is not supported yet"); return NULL; }
-    ir_expr *idx = d3d9_tx_swizzle(t, d3d9_tx_var(t, t->a0), &x->rel_comp, 1);
+    ir_var *base = x->rel_type == D3D9_REG_ADDR ? t->a0 : t->aL;
+    if (!base) { d3d9_tx_fail(t, "relative addressing through a register never written"); return NULL; }
+    ir_expr *idx = x->rel_type == D3D9_REG_ADDR ? d3d9_tx_swizzle(t, d3d9_tx_var(t, base), &x->rel_comp, 1)
+                                                : d3d9_tx_var(t, base);
     if (x->num) idx = ir_new_binary(t->c, OP_ADD, t->i1, idx, ir_const_scalar(t->c, t->i1, x->num, t->loc));
     int k = constant_at(t->s, D3D9_RS_FLOAT4, x->num);
     if (k >= 0 && t->s->constants[k].elements > 1) return array_register(t, (uint32_t)k, idx);
@@ -357,7 +361,14 @@ ir_expr *d3d9_tx_reg(d3d9_tx *t, unsigned type, unsigned num) {
         v = t->temps[num];
         break;
     case D3D9_REG_CONST: return const_register(t, num);
+    case D3D9_REG_PREDICATE:
+        if (!t->p0) t->p0 = new_local(t, "hfx_p0", t->b4);
+        return d3d9_tx_var(t, t->p0);
+    case D3D9_REG_CONSTBOOL: { ir_expr *b = d3d9_tx_bool(t, num); return b ? ir_new_convert(t->c, t->b4, b) : NULL; }
     case D3D9_REG_INPUT: case D3D9_REG_MISC: v = input(t, type, num); break;
+    case D3D9_REG_RASTOUT: case D3D9_REG_ATTROUT: case D3D9_REG_OUTPUT: case D3D9_REG_COLOROUT: case D3D9_REG_DEPTHOUT:
+        v = output(t, type, num); /* the old value, for a predicated write */
+        break;
     case D3D9_REG_ADDR:
         if (t->s->stage == D3D9_PS) { v = input(t, type, num); break; }
         d3d9_tx_fail(t, "a0 read as a value");
@@ -372,6 +383,16 @@ ir_expr *d3d9_tx_reg(d3d9_tx *t, unsigned type, unsigned num) {
 
 /* Source modifiers of SM2+ (ps_1_x's are refused with the model). */
 static ir_expr *modify(d3d9_tx *t, ir_expr *x, unsigned mod) {
+    if (x->type->base == B_BOOL) {
+        if (mod == D3D9_SMOD_NOT) {
+            ir_expr *n = ir_new_expr(t->c, IE_UNARY, x->type, t->loc, 1);
+            n->op = OP_NOT;
+            n->a[0] = x;
+            return n;
+        }
+        if (mod != D3D9_SMOD_NONE) { d3d9_tx_fail(t, "source modifier %u on a bool is not supported", mod); return NULL; }
+        return x;
+    }
     if (mod == D3D9_SMOD_ABS || mod == D3D9_SMOD_ABSNEG) {
         ir_expr *a = ir_new_expr(t->c, IE_INTRIN, t->f4, t->loc, 1);
         a->intrin = HFX_INTR_ABS;
@@ -405,6 +426,47 @@ ir_expr *d3d9_tx_read(d3d9_tx *t, const d3d9_src *x) {
     return modify(t, r, x->mod);
 }
 
+/* The def* instruction defining register num of a type, or NULL. */
+static const d3d9_inst *find_def(const d3d9_shader *s, unsigned op, unsigned num) {
+    for (uint32_t i = 0; i < s->inst_count; i++)
+        if (s->insts[i].op == op && s->insts[i].dst.num == num) return &s->insts[i];
+    return NULL;
+}
+
+ir_expr *d3d9_tx_bool(d3d9_tx *t, unsigned num) {
+    const hfx_type *b1 = hfx_type_scalar(t->c->types, B_BOOL);
+    const d3d9_inst *d = find_def(t->s, D3D9_DEFB, num);
+    if (d) return ir_const_scalar(t->c, b1, d->value.u[0] != 0, t->loc);
+    int k = constant_at(t->s, D3D9_RS_BOOL, num);
+    if (k < 0) return ir_const_scalar(t->c, b1, 0, t->loc);
+    const d3d9_constant *c = &t->s->constants[k];
+    if (c->count > 1 || c->elements > 1 || c->cls != 0) { d3d9_tx_fail(t, "bool constant '%s' of this shape is not supported yet", c->name); return NULL; }
+    ir_var *v = constant_var(t, (uint32_t)k, IRV_UNIFORM, b1);
+    return v ? d3d9_tx_var(t, v) : NULL;
+}
+
+ir_expr *d3d9_tx_int4(d3d9_tx *t, unsigned num) {
+    const d3d9_inst *d = find_def(t->s, D3D9_DEFI, num);
+    if (d) {
+        ir_expr *e = ir_new_expr(t->c, IE_CONST, t->i4, t->loc, 0);
+        for (int q = 0; q < 4; q++) e->cval[q] = d->value.i[q];
+        return e;
+    }
+    int k = constant_at(t->s, D3D9_RS_INT4, num);
+    if (k < 0) return ir_const_scalar(t->c, t->i4, 0, t->loc);
+    const d3d9_constant *c = &t->s->constants[k];
+    if (c->count > 1 || c->elements > 1 || c->cls > 1 || c->cols > 4) { d3d9_tx_fail(t, "int constant '%s' of this shape is not supported yet", c->name); return NULL; }
+    const hfx_type *ty = c->cls == 0 ? t->i1 : hfx_type_vector(t->c->types, B_INT, c->cols ? c->cols : 1);
+    ir_var *v = constant_var(t, (uint32_t)k, IRV_UNIFORM, ty);
+    if (!v) return NULL;
+    unsigned n = hfx_type_components(ty);
+    if (n == 4) return d3d9_tx_var(t, v);
+    ir_expr *e = ir_new_expr(t->c, IE_CONSTRUCT, t->i4, t->loc, 1 + 4 - n);
+    e->a[0] = d3d9_tx_var(t, v);
+    for (unsigned q = n; q < 4; q++) e->a[1 + q - n] = ir_const_scalar(t->c, t->i1, 0, t->loc);
+    return e;
+}
+
 ir_var *d3d9_tx_sampler(d3d9_tx *t, unsigned num) {
     if (num >= 16) return NULL;
     if (t->samplers[num]) return t->samplers[num];
@@ -427,6 +489,9 @@ static ir_var *dst_var(d3d9_tx *t, const d3d9_dst *d) {
     case D3D9_REG_TEMP: d3d9_tx_reg(t, D3D9_REG_TEMP, d->num); return d->num < 32 ? t->temps[d->num] : NULL;
     case D3D9_REG_RASTOUT: case D3D9_REG_ATTROUT: case D3D9_REG_OUTPUT: case D3D9_REG_COLOROUT: case D3D9_REG_DEPTHOUT:
         return output(t, d->type, d->num);
+    case D3D9_REG_PREDICATE:
+        if (!t->p0) t->p0 = new_local(t, "hfx_p0", t->b4);
+        return t->p0;
     case D3D9_REG_ADDR:
         if (t->s->stage == D3D9_VS) {
             if (!t->a0) t->a0 = new_local(t, "hfx_a0", t->i4);

@@ -2,7 +2,7 @@
  * Reference" (vs_2_0 .. ps_3_0). Where D3D9 differs from the plain GLSL function it says so:
  * rsq and log take |x|, pow takes |x| as its base, nrm scales all four components, sincos
  * writes cos to x and sin to y, cmp selects on >= 0, texkill tests the components of its
- * write mask. Flow control and predication are not translated yet (X5006). */
+ * write mask. Flow control: d3d9_ir_flow.c. */
 #include "d3d9/d3d9_ir.h"
 
 static ir_expr *intrin(d3d9_tx *t, ir_intrin id, const hfx_type *ty, unsigned n, ir_expr *a, ir_expr *b, ir_expr *c) {
@@ -172,20 +172,32 @@ static ir_expr *arith(d3d9_tx *t, const d3d9_inst *in) {
     case D3D9_M3X3: return matrix(t, in, 3, 3);
     case D3D9_M3X2: return matrix(t, in, 3, 2);
     case D3D9_MOVA: return intrin(t, HFX_INTR_ROUND, f4, 1, a, NULL, NULL);
+    case D3D9_SETP: {
+        static const hfx_op ops[] = {OP_NONE, OP_GT, OP_EQ, OP_GE, OP_LT, OP_NE, OP_LE, OP_NONE};
+        if (ops[in->control & 7] == OP_NONE) break;
+        return bin(t, ops[in->control & 7], t->b4, a, b);
+    }
     case D3D9_TEX: return texture(t, in, in->control == 1 ? TEXF_PROJ : in->control == 2 ? TEXF_BIAS : TEXF_PLAIN);
     case D3D9_TEXLDL: return texture(t, in, TEXF_LOD);
     case D3D9_TEXLDD: return texture(t, in, TEXF_GRAD);
-    default:
-        d3d9_tx_fail(t, "%s is not supported yet", d3d9_op_find(in->op)->name);
-        return NULL;
+    default: break;
     }
+    d3d9_tx_fail(t, "%s is not supported yet", d3d9_op_find(in->op)->name);
+    return NULL;
 }
 
 void d3d9_tx_inst(d3d9_tx *t, const d3d9_inst *in) {
     const d3d9_op_info *op = d3d9_op_find(in->op);
     if (op->flags & D3D9_OPF_DECL || in->op == D3D9_NOP) return; /* dcl / def are read where used */
-    if (op->flags & D3D9_OPF_FLOW) { d3d9_tx_fail(t, "flow control (%s) is not supported yet", op->name); return; }
-    if (in->predicated) { d3d9_tx_fail(t, "predicated instructions are not supported yet"); return; }
+    if (op->flags & D3D9_OPF_FLOW) {
+        if (in->predicated) d3d9_tx_fail(t, "predicated flow control is not supported yet");
+        else if (!d3d9_tx_flow(t, in)) d3d9_tx_fail(t, "subroutines (%s) are not supported yet", op->name);
+        return;
+    }
+    if (in->predicated && (in->op == D3D9_TEXKILL || in->op == D3D9_MOVA || in->op == D3D9_SETP)) {
+        d3d9_tx_fail(t, "predicated %s is not supported yet", op->name);
+        return;
+    }
     if (in->op == D3D9_TEXKILL) { texkill(t, in); return; }
     if (in->op == D3D9_MOVA && t->s->stage != D3D9_VS) return;
     ir_expr *v = arith(t, in);
@@ -193,5 +205,6 @@ void d3d9_tx_inst(d3d9_tx *t, const d3d9_inst *in) {
         if (!t->failed) d3d9_tx_fail(t, "%s could not be translated", op->name);
         return;
     }
-    d3d9_tx_write(t, &in->dst, v);
+    if (in->predicated) v = d3d9_tx_predicate(t, in, v);
+    if (v) d3d9_tx_write(t, &in->dst, v);
 }

@@ -25,6 +25,7 @@ static test_gl_fns f;
 /* The effect whose parameters the CTABs name (its own passes are not used). */
 static const char params_fx[] =
     "float4x4 M; float4 Tint; float Scale; float4 Colors[2]; float4 Offset;\n"
+    "texture Tex; sampler TexSampler = sampler_state { Texture = <Tex>; MinFilter = Point; MagFilter = Point; };\n"
     "technique T { pass P { } }\n";
 
 typedef struct fixture {
@@ -152,6 +153,19 @@ static void draw(const hfx_fx_program *p, const hfx_fx_effect *fx, unsigned char
         else if (strcmp(n, "Colors") == 0) set4(prog, g, colors, 2);
         else if (strcmp(n, "Scale") == 0 && loc >= 0) f.Uniform1fv(loc, 1, &scale);
     }
+    /* a 1x1 texture of (51, 102, 153, 204) / 255 = (0.2, 0.4, 0.6, 0.8) on unit 0 for every sampler */
+    static const unsigned char texel[4] = {51, 102, 153, 204};
+    GLuint tex;
+    f.GenTextures(1, &tex);
+    f.ActiveTexture(GL_TEXTURE0);
+    f.BindTexture(GL_TEXTURE_2D, tex);
+    f.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+    f.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    f.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    for (uint32_t i = 0; i < p->sampler_count; i++) {
+        GLint loc = f.GetUniformLocation(prog, p->samplers[i].glsl_name);
+        if (loc >= 0) f.Uniform1i(loc, 0);
+    }
     static const float quad[] = {-1, -1, 0, 1, 0, 1, 1, -1, 0, 1, 1, 1, -1, 1, 0, 1, 0, 0,
                                  -1, 1, 0, 1, 0, 0, 1, -1, 0, 1, 1, 1, 1, 1, 0, 1, 1, 0};
     GLuint vao, vbo;
@@ -172,6 +186,7 @@ static void draw(const hfx_fx_program *p, const hfx_fx_effect *fx, unsigned char
     test_gl_read(gl, 5, 4, right);
     f.DeleteBuffers(1, &vbo);
     f.DeleteVertexArrays(1, &vao);
+    f.DeleteTextures(1, &tex);
     f.DeleteProgram(prog);
     f.DeleteShader(vs);
     f.DeleteShader(fs);
@@ -223,6 +238,83 @@ static void vs_ps_2_0_drawn(void) {
     close_fixture(&x);
 }
 
+/* vs_3_0: dcl_position v0; dcl_texcoord v1; dcl_position o0; dcl_texcoord o1; mov o0, v0; mov o1, v1. */
+static const uint32_t vs30[] = {
+    VS(3, 0),
+    OP(0x1f, 2), 0x80000000u, DST(R_INPUT, 0, 0xf), OP(0x1f, 2), 0x80000005u, DST(R_INPUT, 1, 0xf),
+    OP(0x1f, 2), 0x80000000u, DST(R_OUTPUT, 0, 0xf), OP(0x1f, 2), 0x80000005u, DST(R_OUTPUT, 1, 0xf),
+    OP(0x01, 2), DST(R_OUTPUT, 0, 0xf), SRC(R_INPUT, 0, XYZW),
+    OP(0x01, 2), DST(R_OUTPUT, 1, 0xf), SRC(R_INPUT, 1, XYZW),
+    END_TOKEN};
+
+/* ps_3_0 with flow control, predication and a texture read (values in the comments). */
+static size_t ps30_tokens(uint32_t *w) {
+    static const ctab_const k[] = {{"TexSampler", 3, 0, 1, 4, 12, 1, 1, 1}};
+    size_t n = 0;
+    w[n++] = PS(3, 0);
+    n += put_ctab(w + n, "hand", k, 1);
+    const uint32_t code[] = {
+        OP(0x30, 5), DST(R_CONSTINT, 0, 0xf), 3, 0, 0, 0,                  /* defi i0, 3, 0, 0, 0 */
+        OP(0x30, 5), DST(R_CONSTINT, 1, 0xf), 4, 1, 2, 0,                  /* defi i1, 4, 1, 2, 0: aL = 1, 3, 5, 7 */
+        OP(0x2f, 2), DST(R_CONSTBOOL, 0, 0xf), 1,                           /* defb b0, true */
+        OP(0x51, 5), DST(R_CONST, 0, 0xf), fbits(0), fbits(1), fbits(0.125f), fbits(-0.5f),
+        OP(0x51, 5), DST(R_CONST, 1, 0xf), fbits(0.25f), fbits(0.5f), fbits(0.75f), fbits(1),
+        OP(0x51, 5), DST(R_CONST, 2, 0xf), fbits(0.0625f), 0, 0, 0,
+        OP(0x51, 5), DST(R_CONST, 4, 0xf), fbits(0.125f), 0, 0, 0,
+        OP(0x51, 5), DST(R_CONST, 6, 0xf), fbits(0.25f), 0, 0, 0,
+        OP(0x51, 5), DST(R_CONST, 8, 0xf), fbits(0.5f), 0, 0, 0,
+        OP(0x1f, 2), 0x80000005u, DST(R_INPUT, 0, 0x3),                    /* dcl_texcoord v0.xy */
+        OP(0x1f, 2), 0x90000000u, DST(R_SAMPLER, 0, 0xf),                  /* dcl_2d s0 */
+        OP(0x01, 2), DST(R_TEMP, 0, 0xf), SRC(R_CONST, 0, 0),              /* mov r0, c0.x: 0 */
+        OP(0x26, 1), SRC(R_CONSTINT, 0, XYZW),                              /* rep i0 (3 times) */
+        OP(0x02, 3), DST(R_TEMP, 0, 0x1), SRC(R_TEMP, 0, 0), SRC(R_CONST, 0, 0xaa), /* r0.x += 0.125 */
+        OP(0x27, 0),                                                        /* endrep: r0.x = 0.375 */
+        OP(0x1b, 2), SRC(R_LOOP, 0, XYZW), SRC(R_CONSTINT, 1, XYZW),        /* loop aL, i1 */
+        OP(0x02, 4), DST(R_TEMP, 0, 0x2), SRC(R_TEMP, 0, 0x55), SRC(R_CONST, 1, 0) | REL, SRC(R_LOOP, 0, 0),
+        OPC(0x2d, 2, 3), SRC(R_TEMP, 0, 0x55), SRC(R_CONST, 1, 0),          /* break_ge r0.y, c1.x (0.25) */
+        OP(0x1d, 0),                                  /* endloop: 0.0625 + 0.125 + 0.25 = 0.4375, then break */
+        OP(0x28, 1), SRC(R_CONSTBOOL, 0, XYZW),                             /* if b0 */
+        OP(0x01, 2), DST(R_TEMP, 0, 0x4), SRC(R_CONST, 1, 0xaa),           /*   mov r0.z, c1.z: 0.75 */
+        OP(0x2a, 0),                                                        /* else */
+        OP(0x01, 2), DST(R_TEMP, 0, 0x4), SRC(R_CONST, 1, 0),              /*   mov r0.z, c1.x */
+        OP(0x2b, 0),                                                        /* endif */
+        OPC(0x5e, 3, 1), DST(R_PRED, 0, 0xf), SRC(R_TEMP, 0, XYZW), SRC(R_CONST, 1, 0x55), /* setp_gt p0, r0, 0.5 */
+        OP(0x01, 3) | PRED_BIT, DST(R_TEMP, 0, 0xf), SRC(R_PRED, 0, XYZW), SRC(R_CONST, 0, 0x55), /* (p0) mov r0, 1 */
+        OP(0x42, 3), DST(R_TEMP, 1, 0xf), SRC(R_INPUT, 0, XYZW), SRC(R_SAMPLER, 0, XYZW), /* texld r1, v0, s0 */
+        OP(0x01, 2), DST(R_TEMP, 0, 0x8), SRC(R_TEMP, 1, 0x55),            /* mov r0.w, r1.y: 0.4 */
+        OP(0x01, 2), DST(R_COLOROUT, 0, 0xf), SRC(R_TEMP, 0, XYZW),
+        END_TOKEN};
+    memcpy(w + n, code, sizeof code);
+    return n + sizeof code / 4;
+}
+
+static void vs_ps_3_0_flow_drawn(void) {
+    fixture x;
+    open_fixture(&x, true);
+    uint32_t pw[256];
+    d3d9_shader *vs = decode(&x, vs30, sizeof vs30 / 4, 0), *ps = decode(&x, pw, ps30_tokens(pw), 512);
+    hfx_fx_program prog;
+    int rc = vs && ps ? hfx_codegen_d3d9_program(x.cg, vs, ps, false, &prog) : -1;
+    CHECK_INT(rc, 0);
+    if (rc != 0) {
+        char *d = hfx_diags_format(&x.diags, 0);
+        fprintf(stderr, "%s", d);
+        free(d);
+    } else {
+        if (getenv("HFX_D3D9_SHOW")) printf("%s\n", prog.code[1][HFX_TARGET_GLSL330].data);
+        CHECK_INT(prog.sampler_count, 1);
+        if (gl) {
+            unsigned char left[4], right[4];
+            draw(&prog, x.fx, left, right);
+            /* r0 = (0.375, 0.4375, 0.75, 0); p0 = r0 > 0.5 = (F, F, T, F) sets .z to 1; .w = texel.y = 0.4 */
+            near(left, 0.375f, 0.4375f, 1, 0.4f);
+            near(right, 0.375f, 0.4375f, 1, 0.4f);
+        }
+    }
+    hfx_fx_program_clear(&prog);
+    close_fixture(&x);
+}
+
 static void old_models_refused_with_location(void) {
     fixture x;
     open_fixture(&x, true);
@@ -237,15 +329,16 @@ static void old_models_refused_with_location(void) {
     close_fixture(&x);
 }
 
-static void flow_control_refused_at_instruction(void) {
+static void subroutines_refused_at_instruction(void) {
     fixture x;
     open_fixture(&x, true);
-    static const uint32_t vs[] = {VS(2, 0), OP(0x28, 1), SRC(R_CONSTBOOL, 0, XYZW), OP(0x2b, 0), END_TOKEN};
+    static const uint32_t vs[] = {VS(2, 0), OP(0x19, 1), SRC(R_LABEL, 0, XYZW), OP(0x1c, 0),
+                                  OP(0x1e, 1), SRC(R_LABEL, 0, XYZW), OP(0x1c, 0), END_TOKEN};
     d3d9_shader *s = decode(&x, vs, sizeof vs / 4, 200);
     hfx_fx_program prog;
     CHECK_INT(hfx_codegen_d3d9_program(x.cg, s, NULL, false, &prog), -1);
     char *text = hfx_diags_format(&x.diags, 0);
-    CHECK_STR(text, "t.fxb(0,204): error X5006: flow control (if) is not supported yet\n");
+    CHECK_STR(text, "t.fxb(0,204): error X5006: subroutines (call) are not supported yet\n");
     free(text);
     hfx_fx_program_clear(&prog);
     close_fixture(&x);
@@ -257,7 +350,8 @@ int main(void) {
     else printf("no OSMesa GL 3.3 context: programs are built and checked, not drawn\n");
     RUN(vs_ps_2_0_drawn);
     RUN(old_models_refused_with_location);
-    RUN(flow_control_refused_at_instruction);
+    RUN(vs_ps_3_0_flow_drawn);
+    RUN(subroutines_refused_at_instruction);
     if (gl) test_gl_destroy(gl);
     return test_summary();
 }
