@@ -29,7 +29,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         fuzz_require(b.oom || (b.d && b.len > 0), "an empty listing");
         ir_ctx c = {&arena, &diags, hfx_types_new(&arena), NULL, NULL};
         uint32_t before = diags.errors;
-        struct ir_shader *sh = d3d9_to_ir(&c, s);
+        struct ir_shader *sh = d3d9_to_ir(&c, s, true);
         fuzz_require(sh ? diags.errors == before : diags.errors > before, "to_ir's result and its errors disagree");
     }
     free(hfx_diags_format(&diags, 1));

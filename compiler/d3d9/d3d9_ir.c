@@ -201,6 +201,15 @@ static ir_var *constant_var(d3d9_tx *t, uint32_t i, ir_var_kind kind, const hfx_
         d3d9_tx_fail(t, "constant '%s' names no parameter of the effect", k->name);
         return NULL;
     }
+    /* fxc lists a parameter once per register set it uses (an int in c for arithmetic and in i
+     * for a loop): one variable, so the GLSL declares the uniform once */
+    for (uint32_t j = 0; j < t->s->constant_count; j++) {
+        ir_var *o = t->consts[j];
+        if (!o || o->param != p) continue;
+        if (o->kind == kind && hfx_type_equal(o->type, ty)) return t->consts[i] = o;
+        d3d9_tx_fail(t, "constant '%s' is read as two different types", k->name);
+        return NULL;
+    }
     ir_var *v = HFX_NEW(t->c->arena, ir_var);
     v->kind = kind;
     v->name = k->name;
@@ -215,13 +224,25 @@ static ir_var *constant_var(d3d9_tx *t, uint32_t i, ir_var_kind kind, const hfx_
 }
 
 /* The HLSL type of a float CTAB constant (one element). */
+/* The HLSL type of a constant in float registers (one element): fxc keeps int and bool
+ * parameters used in arithmetic there, so the parameter keeps its own type and is converted. */
 static const hfx_type *constant_type(d3d9_tx *t, const d3d9_constant *k) {
     unsigned r = k->rows ? k->rows : 1, c = k->cols ? k->cols : 1;
-    if (r > 4 || c > 4) return NULL;
-    if (k->cls == 0) return t->f1;
-    if (k->cls == 1) return hfx_type_vector(t->c->types, B_FLOAT, c);
-    if (k->cls == 2 || k->cls == 3) return hfx_type_matrix(t->c->types, B_FLOAT, r, c);
+    hfx_base b = k->type == 1 ? B_BOOL : k->type == 2 ? B_INT : k->type == 3 ? B_FLOAT : B_NONE;
+    if (r > 4 || c > 4 || b == B_NONE) return NULL;
+    if (k->cls == 0) return hfx_type_scalar(t->c->types, b);
+    if (k->cls == 1) return hfx_type_vector(t->c->types, b, c);
+    if (k->cls == 2 || k->cls == 3) return hfx_type_matrix(t->c->types, b, r, c);
     return NULL;
+}
+
+/* x (a scalar or vector of the constant's base) as float4, for a register read. */
+static ir_expr *register_value(d3d9_tx *t, ir_expr *x) {
+    if (x->type->base != B_FLOAT) {
+        unsigned n = hfx_type_components(x->type);
+        x = ir_new_convert(t->c, n == 1 ? t->f1 : hfx_type_vector(t->c->types, B_FLOAT, n), x);
+    }
+    return d3d9_tx_float4(t, x);
 }
 
 /* Register `num` of the float constant i: column j of a column-major matrix, row j of a row-major
@@ -229,7 +250,7 @@ static const hfx_type *constant_type(d3d9_tx *t, const d3d9_constant *k) {
 static ir_expr *constant_register(d3d9_tx *t, uint32_t i, unsigned num) {
     const d3d9_constant *k = &t->s->constants[i];
     const hfx_type *el = constant_type(t, k);
-    if (!el || k->type != 3) { d3d9_tx_fail(t, "constant '%s' of this type is not supported yet", k->name); return NULL; }
+    if (!el) { d3d9_tx_fail(t, "constant '%s' of this type is not supported yet", k->name); return NULL; }
     unsigned per = k->cls == 3 ? el->cols : k->cls == 2 ? el->rows : 1, elems = k->elements > 1 ? k->elements : 1;
     const hfx_type *ty = elems > 1 ? hfx_type_array(t->c->types, el, elems) : el;
     ir_var *v = constant_var(t, i, IRV_UNIFORM, ty);
@@ -250,15 +271,46 @@ static ir_expr *constant_register(d3d9_tx *t, uint32_t i, unsigned num) {
         for (unsigned q = 0; q < n; q++) comps[q] = (uint8_t)(k->cls == 3 ? q * el->cols + j : j * el->cols + q);
         x = d3d9_tx_swizzle(t, x, comps, n);
     }
-    return d3d9_tx_float4(t, x);
+    return register_value(t, x);
 }
 
-/* A c register as float4: its def, the parameter covering it, or zero. */
+/* Register num of preshader output i: the variable codegen gives hfx_c registers (glsl_pack.c). */
+static ir_expr *preshader_register(d3d9_tx *t, uint32_t i, unsigned num) {
+    const d3d9_preshader_out *o = &t->s->pres[i];
+    if (!t->pres[i]) {
+        if (!t->pack) {
+            d3d9_tx_fail(t, "preshaders need packed registers (HFXC_PACK_UNIFORMS)");
+            return NULL;
+        }
+        ir_var *v = HFX_NEW(t->c->arena, ir_var);
+        v->kind = IRV_PRIVATE;
+        v->name = v->glsl = hfx_arena_printf(t->c->arena, "hfx_pre_c%u", o->reg);
+        v->type = o->count == 1 ? t->f4 : hfx_type_matrix(t->c->types, B_FLOAT, o->count, 4);
+        v->param = HFX_NONE;
+        v->pre = d3d9_tx_const4(t, (const float[4]){0, 0, 0, 0}); /* marks it a preshader; never evaluated here */
+        v->pre_code = o->code;
+        v->pre_words = o->words;
+        v->pre_text = o->text ? o->text : hfx_arena_printf(t->c->arena, "c%u", o->reg);
+        if (!HFX_ARENA_GROW(t->c->arena, t->sh->pres, t->sh->pre_count, t->sh->pre_cap, 4)) return NULL;
+        t->sh->pres[t->sh->pre_count++] = v;
+        t->pres[i] = v;
+    }
+    ir_expr *x = d3d9_tx_var(t, t->pres[i]);
+    if (o->count == 1) return x;
+    unsigned row = num - o->reg;
+    const uint8_t comps[4] = {(uint8_t)(row * 4), (uint8_t)(row * 4 + 1), (uint8_t)(row * 4 + 2), (uint8_t)(row * 4 + 3)};
+    return d3d9_tx_swizzle(t, x, comps, 4);
+}
+
+/* A c register as float4: its def, a preshader's output, the parameter covering it, or zero. */
 static ir_expr *const_register(d3d9_tx *t, unsigned num) {
     for (uint32_t i = 0; i < t->s->inst_count; i++) {
         const d3d9_inst *in = &t->s->insts[i];
         if (in->op == D3D9_DEF && in->dst.num == num) return d3d9_tx_const4(t, in->value.f);
     }
+    for (uint32_t i = 0; i < t->s->pre_count; i++)
+        if (num >= t->s->pres[i].reg && num < t->s->pres[i].reg + t->s->pres[i].count && t->s->pres[i].count <= 4)
+            return preshader_register(t, i, num);
     int k = constant_at(t->s, D3D9_RS_FLOAT4, num);
     if (k >= 0) return constant_register(t, (uint32_t)k, num);
     return d3d9_tx_const4(t, (const float[4]){0, 0, 0, 0});
@@ -302,7 +354,7 @@ static ir_expr *int_op(d3d9_tx *t, hfx_op op, ir_expr *a, int k) {
 static ir_expr *array_register(d3d9_tx *t, uint32_t i, ir_expr *idx) {
     const d3d9_constant *k = &t->s->constants[i];
     const hfx_type *el = constant_type(t, k);
-    if (!el || k->type != 3) { d3d9_tx_fail(t, "constant '%s' of this type is not supported yet", k->name); return NULL; }
+    if (!el) { d3d9_tx_fail(t, "constant '%s' of this type is not supported yet", k->name); return NULL; }
     unsigned per = k->cls == 3 ? el->cols : k->cls == 2 ? el->rows : 1;
     ir_var *v = constant_var(t, i, IRV_UNIFORM, hfx_type_array(t->c->types, el, k->elements));
     if (!v) return NULL;
@@ -311,28 +363,28 @@ static ir_expr *array_register(d3d9_tx *t, uint32_t i, ir_expr *idx) {
     e->a[0] = d3d9_tx_var(t, v);
     e->a[1] = per > 1 ? int_op(t, OP_DIV, off, (int)per) : off;
     e->range = IR_RANGE_ANY;
-    if (k->cls != 2 && k->cls != 3) return d3d9_tx_float4(t, e);
+    if (k->cls != 2 && k->cls != 3) return register_value(t, e);
     ir_expr *j = int_op(t, OP_MOD, ir_clone_expr(t->c, off), (int)per);
     if (k->cls == 2) { /* row j */
-        ir_expr *row = ir_new_expr(t->c, IE_INDEX, hfx_type_vector(t->c->types, B_FLOAT, el->cols), t->loc, 2);
+        ir_expr *row = ir_new_expr(t->c, IE_INDEX, hfx_type_vector(t->c->types, el->base, el->cols), t->loc, 2);
         row->a[0] = e;
         row->a[1] = j;
         row->range = IR_RANGE_IN_BOUNDS;
-        return d3d9_tx_float4(t, row);
+        return register_value(t, row);
     }
-    ir_expr *col = ir_new_expr(t->c, IE_CONSTRUCT, hfx_type_vector(t->c->types, B_FLOAT, el->rows), t->loc, el->rows);
+    ir_expr *col = ir_new_expr(t->c, IE_CONSTRUCT, hfx_type_vector(t->c->types, el->base, el->rows), t->loc, el->rows);
     for (unsigned q = 0; q < el->rows; q++) { /* column j: element q of each row */
-        ir_expr *row = ir_new_expr(t->c, IE_INDEX, hfx_type_vector(t->c->types, B_FLOAT, el->cols), t->loc, 2);
+        ir_expr *row = ir_new_expr(t->c, IE_INDEX, hfx_type_vector(t->c->types, el->base, el->cols), t->loc, 2);
         row->a[0] = q ? ir_clone_expr(t->c, e) : e;
         row->a[1] = ir_const_scalar(t->c, t->i1, q, t->loc);
         row->range = IR_RANGE_IN_BOUNDS;
-        ir_expr *c = ir_new_expr(t->c, IE_INDEX, t->f1, t->loc, 2);
+        ir_expr *c = ir_new_expr(t->c, IE_INDEX, hfx_type_scalar(t->c->types, el->base), t->loc, 2);
         c->a[0] = row;
         c->a[1] = q ? ir_clone_expr(t->c, j) : j;
         c->range = IR_RANGE_IN_BOUNDS;
         col->a[q] = c;
     }
-    return d3d9_tx_float4(t, el->rows == 1 ? col->a[0] : col);
+    return register_value(t, el->rows == 1 ? col->a[0] : col);
 }
 
 /* c[a0.x + n] or c[aL + n]. */
@@ -554,6 +606,7 @@ static void setup(d3d9_tx *t, ir_ctx *c, const d3d9_shader *s) {
     t->b4 = hfx_type_vector(ty, B_BOOL, 4);
     t->loc = (hfx_loc){s->file_index, 0, s->base};
     t->consts = HFX_NEW_ARRAY(c->arena, ir_var *, s->constant_count ? s->constant_count : 1);
+    t->pres = HFX_NEW_ARRAY(c->arena, ir_var *, s->pre_count ? s->pre_count : 1);
     t->prologue = ir_new_stmt(c, IS_BLOCK, t->loc);
     t->blocks[0].s = t->prologue;
     t->blocks[1].s = ir_new_stmt(c, IS_BLOCK, t->loc);
@@ -585,23 +638,22 @@ static ir_shader *finish(d3d9_tx *t) {
     compile->name = src->name;
     compile->intrinsic = -1;
     compile->loc = src->loc;
-    ir_shader *sh = HFX_NEW(c->arena, ir_shader);
+    ir_shader *sh = t->sh;
     sh->stage = s->stage == D3D9_VS ? IR_VERTEX : IR_PIXEL;
     sh->entry = f;
     sh->funcs = HFX_NEW_ARRAY(c->arena, ir_func *, 1);
     sh->funcs[0] = f;
     sh->func_count = sh->func_cap = 1;
     sh->compile = compile;
-    sh->uses_discard = t->sh && t->sh->uses_discard;
     return sh;
 }
 
-struct ir_shader *d3d9_to_ir(struct ir_ctx *c, const d3d9_shader *s) {
+struct ir_shader *d3d9_to_ir(struct ir_ctx *c, const d3d9_shader *s, bool packed) {
     d3d9_tx t;
     memset(&t, 0, sizeof t);
     setup(&t, c, s);
-    ir_shader scratch = {0};
-    t.sh = &scratch;
+    t.pack = packed;
+    t.sh = HFX_NEW(c->arena, ir_shader);
     if (!model_supported(&t)) return NULL;
     for (uint32_t i = 0; i < s->inst_count && !t.failed; i++) {
         t.loc = (hfx_loc){s->file_index, 0, s->base + s->insts[i].offset};

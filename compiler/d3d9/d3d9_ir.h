@@ -20,13 +20,14 @@ typedef struct d3d9_tx {
     ir_var *outputs[5][12];   /* [0] oPos/oFog/oPts, [1] oD, [2] oT / o, [3] oC, [4] oDepth */
     ir_var **consts;          /* per CTAB constant: its parameter's uniform (lazy) */
     ir_var *samplers[16];
+    ir_var **pres;            /* per d3d9_shader.pres entry: its private register variable (lazy) */
     ir_stmt *prologue;        /* declarations and setup, before the instructions */
     struct { ir_stmt *s; uint32_t cap; } blocks[D3D9_MAX_DEPTH + 2]; /* [0] the prologue, [1] the body, then open ifs / loops */
     uint32_t depth;           /* blocks[depth] receives the next statement */
     ir_var **params; uint32_t param_count, param_cap;
     hfx_loc loc;              /* the instruction being translated */
     uint32_t regfile_size;
-    bool failed;
+    bool failed, pack;
 } d3d9_tx;
 
 /* --- d3d9_ir.c --- */

@@ -429,7 +429,7 @@ static bool bytecode_stage(hfx_codegen *cg, const d3d9_shader *s, ir_shader **sh
     *sh = NULL;
     if (!s) return true;
     uint32_t errors = cg->c.diags->errors;
-    ir_shader *x = d3d9_to_ir(&cg->c, s);
+    ir_shader *x = d3d9_to_ir(&cg->c, s, cg->pack);
     if (!x || cg->c.diags->errors > errors || ir_lower(&cg->c, x) != 0) return false;
     return (*sh = x) != NULL;
 }

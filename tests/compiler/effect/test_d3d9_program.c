@@ -153,6 +153,13 @@ static void draw(const hfx_fx_program *p, const hfx_fx_effect *fx, unsigned char
         else if (strcmp(n, "Colors") == 0) set4(prog, g, colors, 2);
         else if (strcmp(n, "Scale") == 0 && loc >= 0) f.Uniform1fv(loc, 1, &scale);
     }
+    /* what the runtime's preshaders would put in their registers: (0.1, 0.2, 0.3, 0.4) */
+    static const float pre[4] = {0.1f, 0.2f, 0.3f, 0.4f};
+    for (uint32_t i = 0; i < p->preshader_count; i++) {
+        char name[32];
+        snprintf(name, sizeof name, "hfx_c[%u]", p->preshaders[i].reg);
+        set4(prog, name, pre, 1);
+    }
     /* a 1x1 texture of (51, 102, 153, 204) / 255 = (0.2, 0.4, 0.6, 0.8) on unit 0 for every sampler */
     static const unsigned char texel[4] = {51, 102, 153, 204};
     GLuint tex;
@@ -315,6 +322,44 @@ static void vs_ps_3_0_flow_drawn(void) {
     close_fixture(&x);
 }
 
+/* A register the shader's PRES block computes (d3d9_shader.pres, filled by the effect reader): the
+ * program gets a preshader entry with the code, the GLSL reads it from hfx_c. */
+static void preshader_registers(void) {
+    fixture x;
+    open_fixture(&x, true);
+    static const uint32_t vs[] = {VS(2, 0), OP(0x1f, 2), 0x80000000u, DST(R_INPUT, 0, 0xf),
+                                  OP(0x01, 2), DST(R_RASTOUT, 0, 0xf), SRC(R_INPUT, 0, XYZW), END_TOKEN};
+    static const uint32_t ps[] = {PS(2, 0), OP(0x01, 2), DST(R_COLOROUT, 0, 0xf), SRC(R_CONST, 5, XYZW), END_TOKEN};
+    static const uint32_t code[3] = {7, 8, 9}; /* carried, not run here */
+    static const d3d9_preshader_out out = {5, 1, code, 3, "Tint * 2"};
+    d3d9_shader *v = decode(&x, vs, sizeof vs / 4, 0), *p = decode(&x, ps, sizeof ps / 4, 64);
+    p->pres = &out;
+    p->pre_count = 1;
+    hfx_fx_program prog;
+    int rc = hfx_codegen_d3d9_program(x.cg, v, p, false, &prog);
+    CHECK_INT(rc, 0);
+    if (rc == 0) {
+        CHECK_INT(prog.preshader_count, 1);
+        CHECK_INT(prog.pre_words, 3);
+        if (prog.preshader_count == 1) {
+            CHECK_INT(prog.preshaders[0].rows, 1);
+            CHECK_INT(prog.preshaders[0].cols, 4);
+            CHECK_INT(prog.pre_code[prog.preshaders[0].first + 2], 9);
+            char want[96];
+            snprintf(want, sizeof want, "vec4 hfx_pre_c5; // hfx_c[%u] = Tint * 2, computed on the CPU (a preshader)",
+                     prog.preshaders[0].reg);
+            CHECK_CONTAINS(prog.code[1][HFX_TARGET_GLSL330].data, want);
+        }
+        if (gl) {
+            unsigned char left[4], right[4];
+            draw(&prog, x.fx, left, right);
+            near(right, 0.1f, 0.2f, 0.3f, 0.4f);
+        }
+    }
+    hfx_fx_program_clear(&prog);
+    close_fixture(&x);
+}
+
 static void old_models_refused_with_location(void) {
     fixture x;
     open_fixture(&x, true);
@@ -352,6 +397,7 @@ int main(void) {
     RUN(old_models_refused_with_location);
     RUN(vs_ps_3_0_flow_drawn);
     RUN(subroutines_refused_at_instruction);
+    RUN(preshader_registers);
     if (gl) test_gl_destroy(gl);
     return test_summary();
 }
