@@ -327,6 +327,7 @@ static ir_var *register_file(d3d9_tx *t) {
     for (uint32_t i = 0; i < t->s->inst_count; i++)
         if (t->s->insts[i].op == D3D9_DEF && t->s->insts[i].dst.num + 1u > n) n = t->s->insts[i].dst.num + 1u;
     if (!n) n = 1;
+    if (n > HFX_FX_MAX_REGS) { d3d9_tx_fail(t, "relative addressing over %u registers", n); return NULL; }
     t->regfile = new_local(t, "hfx_c_file", hfx_type_array(t->c->types, t->f4, n));
     t->regfile_size = n;
     for (unsigned r = 0; r < n && !t->failed; r++) {
@@ -397,6 +398,7 @@ static ir_expr *relative_const(d3d9_tx *t, const d3d9_src *x) {
     int k = constant_at(t->s, D3D9_RS_FLOAT4, x->num);
     if (k >= 0 && t->s->constants[k].elements > 1) return array_register(t, (uint32_t)k, idx);
     ir_var *file = register_file(t);
+    if (!file) return NULL;
     ir_expr *ix = ir_new_expr(t->c, IE_INDEX, t->f4, t->loc, 2);
     ix->a[0] = d3d9_tx_var(t, file);
     ix->a[1] = idx;

@@ -32,6 +32,7 @@ static ir_expr *bool_source(d3d9_tx *t, const d3d9_src *s) {
         }
         return b;
     }
+    if (s->type != D3D9_REG_PREDICATE) { d3d9_tx_fail(t, "a condition in register type %u is not supported", s->type); return NULL; }
     ir_expr *p = d3d9_tx_read(t, s);
     static const uint8_t x = 0;
     return p ? d3d9_tx_swizzle(t, p, &x, 1) : NULL;
@@ -57,6 +58,7 @@ static void open_if(d3d9_tx *t, ir_expr *cond) {
 
 /* for (int k = 0; k < count.x; k++) { [aL = count.y + k * count.z;] ... } */
 static void open_loop(d3d9_tx *t, const d3d9_src *counter, bool with_aL) {
+    if (counter->type != D3D9_REG_CONSTINT) { d3d9_tx_fail(t, "a loop counted by register type %u", counter->type); return; }
     ir_expr *i4 = d3d9_tx_int4(t, counter->num);
     if (!i4) return;
     ir_var *k = HFX_NEW(t->c->arena, ir_var);
