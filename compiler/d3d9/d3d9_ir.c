@@ -8,8 +8,9 @@
  *    parameters by semantic (dcl usage, or the fixed meaning of ps_2_x's v and t), so attributes,
  *    varyings and fragment outputs work as for a compiled entry; outputs start at zero;
  *  - s registers are the CTAB sampler parameters, of the dcl's dimension.
- * The subset handled: vs_2_0 / 2_x / 3_0 and ps_2_0 / 2_x / 3_0 (d3d9_ir_ops.c lists the
- * instructions); anything else is a located X5006. */
+ *  - ps_1_x: t registers (1.1-1.3) are locals tex / texcoord fill, results and constants are
+ *    clamped to the model's range, the pixel is r0 at the end (docs/d3d9.md).
+ * Anything not handled (d3d9_ir_ops.c, d3d9_ir_flow.c) is a located X5006. */
 #include "d3d9/d3d9_ir.h"
 
 #include <stdio.h>
@@ -406,6 +407,17 @@ static ir_expr *relative_const(d3d9_tx *t, const d3d9_src *x) {
     return ix;
 }
 
+bool d3d9_tx_ps1(const d3d9_tx *t) { return t->s->stage == D3D9_PS && t->s->model < D3D9_SM(2, 0); }
+
+ir_var *d3d9_tx_texcoord(d3d9_tx *t, unsigned n) { return input(t, D3D9_REG_ADDR, n); }
+
+/* ps_1_1..1_3's t registers: what tex / texcoord put there. */
+static ir_var *texture_register(d3d9_tx *t, unsigned num) {
+    if (num >= 8) return NULL;
+    if (!t->texregs[num]) t->texregs[num] = new_local(t, hfx_arena_printf(t->c->arena, "hfx_t%u", num), t->f4);
+    return t->texregs[num];
+}
+
 ir_expr *d3d9_tx_reg(d3d9_tx *t, unsigned type, unsigned num) {
     ir_var *v = NULL;
     switch (type) {
@@ -414,7 +426,21 @@ ir_expr *d3d9_tx_reg(d3d9_tx *t, unsigned type, unsigned num) {
         if (!t->temps[num]) t->temps[num] = new_local(t, hfx_arena_printf(t->c->arena, "hfx_r%u", num), t->f4);
         v = t->temps[num];
         break;
-    case D3D9_REG_CONST: return const_register(t, num);
+    case D3D9_REG_CONST:
+        if (d3d9_tx_ps1(t)) { /* ps_1_x constants are clamped to [-1, 1] when read */
+            ir_expr *x = const_register(t, num);
+            if (!x || x->kind == IE_CONST) {
+                for (int q = 0; x && q < 4; q++) x->cval[q] = x->cval[q] < -1 ? -1 : x->cval[q] > 1 ? 1 : x->cval[q];
+                return x;
+            }
+            ir_expr *c = ir_new_expr(t->c, IE_INTRIN, t->f4, t->loc, 3);
+            c->intrin = HFX_INTR_CLAMP;
+            c->a[0] = x;
+            c->a[1] = ir_const_scalar(t->c, t->f4, -1, t->loc);
+            c->a[2] = ir_const_scalar(t->c, t->f4, 1, t->loc);
+            return c;
+        }
+        return const_register(t, num);
     case D3D9_REG_PREDICATE:
         if (!t->p0) t->p0 = new_local(t, "hfx_p0", t->b4);
         return d3d9_tx_var(t, t->p0);
@@ -424,6 +450,7 @@ ir_expr *d3d9_tx_reg(d3d9_tx *t, unsigned type, unsigned num) {
         v = output(t, type, num); /* the old value, for a predicated write */
         break;
     case D3D9_REG_ADDR:
+        if (t->s->stage == D3D9_PS && t->s->model < D3D9_SM(1, 4)) { v = texture_register(t, num); break; }
         if (t->s->stage == D3D9_PS) { v = input(t, type, num); break; }
         d3d9_tx_fail(t, "a0 read as a value");
         return NULL;
@@ -459,10 +486,21 @@ static ir_expr *modify(d3d9_tx *t, ir_expr *x, unsigned mod) {
         n->a[0] = x;
         x = n;
     }
-    if (mod != D3D9_SMOD_NONE && mod != D3D9_SMOD_NEG && mod != D3D9_SMOD_ABS && mod != D3D9_SMOD_ABSNEG) {
-        d3d9_tx_fail(t, "source modifier %u is not supported yet", mod);
-        return NULL;
+    if (mod == D3D9_SMOD_NONE || mod == D3D9_SMOD_NEG || mod == D3D9_SMOD_ABS || mod == D3D9_SMOD_ABSNEG) return x;
+    /* ps_1_x: bias x - 0.5, bx2 2x - 1, comp 1 - x, x2 2x, each optionally negated */
+    float mul = 1, add = 0;
+    switch (mod) {
+    case D3D9_SMOD_BIAS: add = -0.5f; break;
+    case D3D9_SMOD_BIASNEG: mul = -1; add = 0.5f; break;
+    case D3D9_SMOD_SIGN: mul = 2; add = -1; break;
+    case D3D9_SMOD_SIGNNEG: mul = -2; add = 1; break;
+    case D3D9_SMOD_COMP: mul = -1; add = 1; break;
+    case D3D9_SMOD_X2: mul = 2; break;
+    case D3D9_SMOD_X2NEG: mul = -2; break;
+    default: d3d9_tx_fail(t, "source modifier %u is not supported here", mod); return NULL;
     }
+    if (mul != 1) x = ir_new_binary(t->c, OP_MUL, t->f4, x, ir_const_scalar(t->c, t->f4, mul, t->loc));
+    if (add != 0) x = ir_new_binary(t->c, OP_ADD, t->f4, x, ir_const_scalar(t->c, t->f4, add, t->loc));
     return x;
 }
 
@@ -527,7 +565,9 @@ ir_var *d3d9_tx_sampler(d3d9_tx *t, unsigned num) {
     int k = constant_at(t->s, D3D9_RS_SAMPLER, num);
     const d3d9_inst *d = find_dcl(t->s, D3D9_REG_SAMPLER, num);
     if (k < 0) { d3d9_tx_fail(t, "s%u is sampled but no constant names it", num); return NULL; }
-    hfx_dim dim = !d || d->sampler_type == 2 ? DIM_2D : d->sampler_type == 3 ? DIM_CUBE : d->sampler_type == 4 ? DIM_3D : DIM_1D;
+    unsigned st = d ? d->sampler_type : t->s->constants[k].type == 14 ? 3 : t->s->constants[k].type == 13 ? 4
+                : t->s->constants[k].type == 11 ? 1 : 2; /* ps_1_x declares no samplers: the CTAB's type */
+    hfx_dim dim = st == 2 ? DIM_2D : st == 3 ? DIM_CUBE : st == 4 ? DIM_3D : DIM_1D;
     if (t->s->constants[k].count > 1 || t->s->constants[k].elements > 1) {
         d3d9_tx_fail(t, "sampler arrays are not supported yet");
         return NULL;
@@ -551,6 +591,7 @@ static ir_var *dst_var(d3d9_tx *t, const d3d9_dst *d) {
             if (!t->a0) t->a0 = new_local(t, "hfx_a0", t->i4);
             return t->a0;
         }
+        if (t->s->model < D3D9_SM(1, 4)) return texture_register(t, d->num);
         d3d9_tx_fail(t, "writing t registers (ps_1_x) is not supported yet");
         return NULL;
     default:
@@ -561,14 +602,27 @@ static ir_var *dst_var(d3d9_tx *t, const d3d9_dst *d) {
 
 void d3d9_tx_write(d3d9_tx *t, const d3d9_dst *d, ir_expr *value) {
     if (!value || t->failed) return;
-    if (d->relative || d->shift) { d3d9_tx_fail(t, "relative or shifted destinations are not supported yet"); return; }
+    if (d->relative) { d3d9_tx_fail(t, "relative destinations are not supported yet"); return; }
     ir_var *v = dst_var(t, d);
     if (!v) return;
+    if (d->shift && value->type->base == B_FLOAT) { /* ps_1_x: _x2 _x4 _x8 _d2 _d4 _d8 */
+        float k = d->shift > 0 ? (float)(1 << d->shift) : 1.0f / (float)(1 << -d->shift);
+        value = ir_new_binary(t->c, OP_MUL, value->type, value, ir_const_scalar(t->c, value->type, k, t->loc));
+    }
     if (d->mods & D3D9_DMOD_SAT) {
         ir_expr *s = ir_new_expr(t->c, IE_INTRIN, value->type, t->loc, 1);
         s->intrin = HFX_INTR_SATURATE;
         s->a[0] = value;
         value = s;
+    } else if (d3d9_tx_ps1(t) && value->type->base == B_FLOAT) {
+        /* ps_1_x registers hold [-1, 1] (ps_1_4: [-8, 8], D3D's minimum MaxPixelShaderValue) */
+        float r = t->s->model == D3D9_SM(1, 4) ? 8.0f : 1.0f;
+        ir_expr *c = ir_new_expr(t->c, IE_INTRIN, value->type, t->loc, 3);
+        c->intrin = HFX_INTR_CLAMP;
+        c->a[0] = value;
+        c->a[1] = ir_const_scalar(t->c, value->type, -r, t->loc);
+        c->a[2] = ir_const_scalar(t->c, value->type, r, t->loc);
+        value = c;
     }
     uint8_t comps[4];
     unsigned n = 0, width = hfx_type_components(v->type);
@@ -590,7 +644,7 @@ void d3d9_tx_write(d3d9_tx *t, const d3d9_dst *d, ir_expr *value) {
 }
 
 static bool model_supported(d3d9_tx *t) {
-    if (t->s->model >= D3D9_SM(2, 0)) return true;
+    if (t->s->model >= D3D9_SM(2, 0) || t->s->stage == D3D9_PS || t->s->model == D3D9_SM(1, 1)) return true;
     d3d9_tx_fail(t, "%s bytecode to GLSL is not supported yet", d3d9_model_name(t->s->stage, t->s->model));
     return false;
 }
@@ -663,6 +717,11 @@ struct ir_shader *d3d9_to_ir(struct ir_ctx *c, const d3d9_shader *s, bool packed
     }
     if (t.failed) return NULL;
     if (t.depth != 1) { d3d9_tx_fail(&t, "flow control does not close"); return NULL; }
+    if (d3d9_tx_ps1(&t)) { /* ps_1_x has no oC0: the pixel is r0 at the end */
+        d3d9_dst oc = {D3D9_REG_COLOROUT, 0xf, 0, 0, false, 0, 0, 0, 0};
+        d3d9_tx_write(&t, &oc, d3d9_tx_reg(&t, D3D9_REG_TEMP, 0));
+        if (t.failed) return NULL;
+    }
     t.loc = (hfx_loc){s->file_index, 0, s->base};
     return finish(&t);
 }

@@ -20,6 +20,7 @@ typedef struct d3d9_tx {
     ir_var *outputs[5][12];   /* [0] oPos/oFog/oPts, [1] oD, [2] oT / o, [3] oC, [4] oDepth */
     ir_var **consts;          /* per CTAB constant: its parameter's uniform (lazy) */
     ir_var *samplers[16];
+    ir_var *texregs[8];       /* ps_1_1..1_3: t registers, written by tex / texcoord (locals) */
     ir_var **pres;            /* per d3d9_shader.pres entry: its private register variable (lazy) */
     ir_stmt *prologue;        /* declarations and setup, before the instructions */
     struct { ir_stmt *s; uint32_t cap; } blocks[D3D9_MAX_DEPTH + 2]; /* [0] the prologue, [1] the body, then open ifs / loops */
@@ -42,6 +43,8 @@ ir_var *d3d9_tx_sampler(d3d9_tx *t, unsigned num);
 ir_expr *d3d9_tx_bool(d3d9_tx *t, unsigned num);                 /* b register: defb or its parameter */
 ir_expr *d3d9_tx_int4(d3d9_tx *t, unsigned num);                 /* i register: defi or its parameter */
 ir_var *d3d9_tx_local(d3d9_tx *t, const char *name, const hfx_type *ty); /* a zeroed local of the entry */
+ir_var *d3d9_tx_texcoord(d3d9_tx *t, unsigned n);                /* the TEXCOORDn input parameter */
+bool d3d9_tx_ps1(const d3d9_tx *t);                              /* ps_1_1 .. ps_1_4 */
 void d3d9_tx_write(d3d9_tx *t, const d3d9_dst *d, ir_expr *value); /* dst.mask = value.mask, with _sat */
 void d3d9_tx_add(d3d9_tx *t, uint32_t block, ir_stmt *s);        /* appends s to blocks[block] */
 void d3d9_tx_emit(d3d9_tx *t, ir_expr *e);                        /* e as a statement of the current block */

@@ -76,6 +76,45 @@ static ir_intrin tex_intrin(hfx_dim dim, int form) {
     return dim == DIM_1D ? t1[form] : dim == DIM_3D ? t3[form] : dim == DIM_CUBE ? tc[form] : t2[form];
 }
 
+/* A plain read of sampler s at uv (float4; the dimension takes its components). */
+static ir_expr *sample(d3d9_tx *t, ir_var *s, ir_expr *uv) {
+    if (!s || !uv) return NULL;
+    unsigned n = s->dim == DIM_1D ? 1 : s->dim == DIM_2D ? 2 : 3;
+    return intrin(t, tex_intrin(s->dim, TEXF_PLAIN), t->f4, 2, d3d9_tx_var(t, s), comps(t, uv, 0, n), NULL);
+}
+
+/* ps_1_4's texld / texcrd source: a texture coordinate set (tN) or a register (rN, phase 2),
+ * with _dz / _dw dividing xy by z / w. */
+static ir_expr *ps14_coords(d3d9_tx *t, const d3d9_src *x) {
+    d3d9_src plain = *x;
+    plain.mod = D3D9_SMOD_NONE;
+    ir_expr *c = x->type == D3D9_REG_ADDR ? d3d9_tx_float4(t, d3d9_tx_var(t, d3d9_tx_texcoord(t, x->num)))
+                                          : d3d9_tx_read(t, &plain);
+    if (!c || (x->mod != D3D9_SMOD_DZ && x->mod != D3D9_SMOD_DW)) return x->mod == D3D9_SMOD_NONE || !c ? c : NULL;
+    const uint8_t by = x->mod == D3D9_SMOD_DZ ? 2 : 3, xy[2] = {0, 1};
+    ir_expr *q = ir_new_binary(t->c, OP_DIV, t->f2, d3d9_tx_swizzle(t, c, xy, 2),
+                               ir_new_convert(t->c, t->f2, d3d9_tx_swizzle(t, ir_clone_expr(t->c, c), &by, 1)));
+    return d3d9_tx_float4(t, q);
+}
+
+/* ps_1_x: tex tN (1.1-1.3: sampler N at texture coordinates N), texld rN, src (1.4: sampler N). */
+static ir_expr *ps1_tex(d3d9_tx *t, const d3d9_inst *in) {
+    ir_expr *uv = t->s->model < D3D9_SM(1, 4) ? d3d9_tx_float4(t, d3d9_tx_var(t, d3d9_tx_texcoord(t, in->dst.num)))
+                                               : ps14_coords(t, &in->src[0]);
+    if (!uv) { d3d9_tx_fail(t, "texture coordinates of this form are not supported"); return NULL; }
+    return sample(t, d3d9_tx_sampler(t, in->dst.num), uv);
+}
+
+/* texcoord tN (1.1-1.3): the coordinates clamped to [0, 1], w = 1; texcrd rN, tM (1.4): as they are. */
+static ir_expr *ps1_texcoord(d3d9_tx *t, const d3d9_inst *in) {
+    if (t->s->model == D3D9_SM(1, 4)) return ps14_coords(t, &in->src[0]);
+    ir_expr *c = d3d9_tx_var(t, d3d9_tx_texcoord(t, in->dst.num));
+    ir_expr *e = ir_new_expr(t->c, IE_CONSTRUCT, t->f4, t->loc, 2);
+    e->a[0] = intrin(t, HFX_INTR_SATURATE, t->f3, 1, comps(t, c, 0, 3), NULL, NULL);
+    e->a[1] = ir_const_scalar(t->c, t->f1, 1, t->loc);
+    return e->a[0] ? e : NULL;
+}
+
 /* texld / texldp / texldb / texldl / texldd: the coordinates as the form takes them. */
 static ir_expr *texture(d3d9_tx *t, const d3d9_inst *in, int form) {
     if (in->src[1].type != D3D9_REG_SAMPLER) { d3d9_tx_fail(t, "texture read without a sampler operand"); return NULL; }
@@ -98,12 +137,14 @@ static ir_expr *texture(d3d9_tx *t, const d3d9_inst *in, int form) {
 
 /* texkill: discard when a component of its write mask is negative (SM2+). */
 static void texkill(d3d9_tx *t, const d3d9_inst *in) {
-    ir_expr *x = d3d9_tx_reg(t, in->dst.type, in->dst.num);
+    bool ps1 = d3d9_tx_ps1(t); /* ps_1_x: texkill tN tests texture coordinates N, xyz */
+    ir_expr *x = ps1 && in->dst.type == D3D9_REG_ADDR ? d3d9_tx_float4(t, d3d9_tx_var(t, d3d9_tx_texcoord(t, in->dst.num)))
+                                                      : d3d9_tx_reg(t, in->dst.type, in->dst.num);
     if (!x) return;
     uint8_t c[4];
     unsigned n = 0;
     for (unsigned k = 0; k < 4; k++)
-        if (in->dst.mask & (1u << k)) c[n++] = (uint8_t)k;
+        if (ps1 ? k < 3 : (in->dst.mask & (1u << k)) != 0) c[n++] = (uint8_t)k;
     if (!n) return;
     x = d3d9_tx_swizzle(t, x, c, n);
     d3d9_tx_emit(t, intrin(t, HFX_INTR_CLIP, hfx_type_void(t->c->types), 1, x, NULL, NULL));
@@ -159,6 +200,7 @@ static ir_expr *arith(d3d9_tx *t, const d3d9_inst *in) {
         return bin(t, OP_MUL, f4, a, splat(t, intrin(t, HFX_INTR_RSQRT, t->f1, 1, dot(t, ir_clone_expr(t->c, a), ir_clone_expr(t->c, a), 3), NULL, NULL)));
     case D3D9_LRP: return intrin(t, HFX_INTR_LERP, f4, 3, c, b, a);
     case D3D9_CMP: return select4(t, bin(t, OP_GE, t->b4, a, zero4(t)), b, c);
+    case D3D9_CND: return select4(t, bin(t, OP_GT, t->b4, a, d3d9_tx_const4(t, (const float[4]){0.5f, 0.5f, 0.5f, 0.5f})), b, c);
     case D3D9_CRS: return d3d9_tx_float4(t, intrin(t, HFX_INTR_CROSS, t->f3, 2, comps(t, a, 0, 3), comps(t, b, 0, 3), NULL));
     case D3D9_LIT:
         return intrin(t, HFX_INTR_LIT, f4, 3, comps(t, a, 0, 1), comps(t, ir_clone_expr(t->c, a), 1, 1), comps(t, ir_clone_expr(t->c, a), 3, 1));
@@ -199,6 +241,16 @@ void d3d9_tx_inst(d3d9_tx *t, const d3d9_inst *in) {
         return;
     }
     if (in->op == D3D9_TEXKILL) { texkill(t, in); return; }
+    if (t->s->stage == D3D9_VS && t->s->model < D3D9_SM(2, 0) && in->op == D3D9_MOV && in->dst.type == D3D9_REG_ADDR) {
+        d3d9_tx_fail(t, "vs_1_1's mov to a0 is not supported yet");
+        return;
+    }
+    if (d3d9_tx_ps1(t) && (in->op == D3D9_TEX || in->op == D3D9_TEXCOORD)) {
+        ir_expr *v = in->op == D3D9_TEX ? ps1_tex(t, in) : ps1_texcoord(t, in);
+        if (v) d3d9_tx_write(t, &in->dst, v);
+        else if (!t->failed) d3d9_tx_fail(t, "%s could not be translated", op->name);
+        return;
+    }
     if (in->op == D3D9_MOVA && t->s->stage != D3D9_VS) return;
     ir_expr *v = arith(t, in);
     if (!v) {

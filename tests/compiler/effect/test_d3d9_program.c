@@ -360,15 +360,61 @@ static void preshader_registers(void) {
     close_fixture(&x);
 }
 
-static void old_models_refused_with_location(void) {
+/* ps_1_1 (no length fields): tex, result shift, _bx2, complement, co-issue, constants clamped to
+ * [-1, 1], cnd on r0.a; the pixel is r0. Drawn with the texel (0.2, 0.4, 0.6, 0.8). */
+static size_t ps11_tokens(uint32_t *w) {
+    static const ctab_const k[] = {{"TexSampler", 3, 0, 1, 4, 12, 1, 1, 1}};
+    size_t n = 0;
+    w[n++] = PS(1, 1);
+    n += put_ctab(w + n, "hand", k, 1);
+    const uint32_t code[] = {
+        0x51, DST(R_CONST, 0, 0xf), fbits(0.5f), fbits(0.25f), fbits(1), fbits(-1),
+        0x51, DST(R_CONST, 1, 0xf), fbits(2), 0, 0, 0,                           /* read as 1: clamped */
+        0x42, DST(R_ADDR, 0, 0xf),                                                /* tex t0 */
+        0x05, DST(R_TEMP, 0, 0xf) | 1u << 24, SRC(R_ADDR, 0, XYZW), SRC(R_CONST, 0, 0), /* mul_x2 r0, t0, c0.x: t0 */
+        0x02, DST(R_TEMP, 0, 0x7), SRC(R_TEMP, 0, XYZW), SRCM(R_ADDR, 0, XYZW, 4), /* add r0.rgb, r0, t0_bx2: (-0.4, 0.2, 0.8) */
+        0x01 | COISSUE_BIT, DST(R_TEMP, 0, 0x8), SRCM(R_ADDR, 0, XYZW, 6),         /* +mov r0.a, 1 - t0: 0.2 */
+        0x04, DST(R_TEMP, 0, 0x7), SRC(R_TEMP, 0, XYZW), SRC(R_CONST, 1, 0), SRC(R_CONST, 0, 0x55), /* (-0.15, 0.45, 1) */
+        0x50, DST(R_TEMP, 1, 0xf), SRC(R_TEMP, 0, 0xff), SRC(R_CONST, 0, 0), SRC(R_CONST, 0, 0x55), /* 0.2 > 0.5? : 0.25 */
+        0x02, DST(R_TEMP, 0, 0x1), SRC(R_TEMP, 0, XYZW), SRC(R_TEMP, 1, XYZW),     /* r0.r = -0.15 + 0.25 = 0.1 */
+        END_TOKEN};
+    memcpy(w + n, code, sizeof code);
+    return n + sizeof code / 4;
+}
+
+static void ps_1_1_drawn(void) {
     fixture x;
     open_fixture(&x, true);
-    static const uint32_t ps11[] = {PS(1, 1), 0x42, DST(R_ADDR, 0, 0xf), 0x01, DST(R_TEMP, 0, 0xf), SRC(R_ADDR, 0, XYZW), END_TOKEN};
+    uint32_t pw[256];
+    d3d9_shader *vs = decode(&x, vs30, sizeof vs30 / 4, 0), *ps = decode(&x, pw, ps11_tokens(pw), 512);
+    hfx_fx_program prog;
+    int rc = vs && ps ? hfx_codegen_d3d9_program(x.cg, vs, ps, false, &prog) : -1;
+    CHECK_INT(rc, 0);
+    if (rc != 0) {
+        char *d = hfx_diags_format(&x.diags, 0);
+        fprintf(stderr, "%s", d);
+        free(d);
+    } else {
+        if (getenv("HFX_D3D9_SHOW")) printf("%s\n", prog.code[1][HFX_TARGET_GLSL330].data);
+        if (gl) {
+            unsigned char left[4], right[4];
+            draw(&prog, x.fx, left, right);
+            near(right, 0.1f, 0.45f, 1, 0.2f);
+        }
+    }
+    hfx_fx_program_clear(&prog);
+    close_fixture(&x);
+}
+
+static void old_forms_refused_with_location(void) {
+    fixture x;
+    open_fixture(&x, true);
+    static const uint32_t ps11[] = {PS(1, 1), 0x40, DST(R_ADDR, 0, 0xf), 0x43, DST(R_ADDR, 1, 0xf), SRC(R_ADDR, 0, XYZW), END_TOKEN};
     d3d9_shader *ps = decode(&x, ps11, sizeof ps11 / 4, 96);
     hfx_fx_program prog;
     CHECK_INT(hfx_codegen_d3d9_program(x.cg, NULL, ps, false, &prog), -1);
     char *text = hfx_diags_format(&x.diags, 0);
-    CHECK_STR(text, "t.fxb(0,96): error X5006: ps_1_1 bytecode to GLSL is not supported yet\n");
+    CHECK_STR(text, "t.fxb(0,108): error X5006: texbem is not supported yet\n");
     free(text);
     hfx_fx_program_clear(&prog);
     close_fixture(&x);
@@ -394,7 +440,8 @@ int main(void) {
     if (gl) CHECK_INT(test_gl_fns_load(&f), 0);
     else printf("no OSMesa GL 3.3 context: programs are built and checked, not drawn\n");
     RUN(vs_ps_2_0_drawn);
-    RUN(old_models_refused_with_location);
+    RUN(ps_1_1_drawn);
+    RUN(old_forms_refused_with_location);
     RUN(vs_ps_3_0_flow_drawn);
     RUN(subroutines_refused_at_instruction);
     RUN(preshader_registers);
