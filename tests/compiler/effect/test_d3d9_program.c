@@ -406,6 +406,38 @@ static void ps_1_1_drawn(void) {
     close_fixture(&x);
 }
 
+/* ps_1_4: texld r0, t0 (sampler 0); phase; add r0, r0_bx2, c0 = (-0.1, 0.3, 0.7, 1.1), inside ps_1_4's
+ * [-8, 8]; mad r0, r0, c0, c0 = (0.45, 0.65, 0.85, 1.05), which the target stores as 1. */
+static void ps_1_4_drawn(void) {
+    fixture x;
+    open_fixture(&x, true);
+    static const ctab_const k[] = {{"TexSampler", 3, 0, 1, 4, 12, 1, 1, 1}};
+    uint32_t pw[256];
+    size_t n = 0;
+    pw[n++] = PS(1, 4);
+    n += put_ctab(pw + n, "hand", k, 1);
+    const uint32_t code[] = {
+        0x51, DST(R_CONST, 0, 0xf), fbits(0.5f), fbits(0.5f), fbits(0.5f), fbits(0.5f),
+        0x42, DST(R_TEMP, 0, 0xf), SRC(R_ADDR, 0, XYZW),
+        0xfffd,
+        0x02, DST(R_TEMP, 0, 0xf), SRCM(R_TEMP, 0, XYZW, 4), SRC(R_CONST, 0, XYZW),
+        0x04, DST(R_TEMP, 0, 0xf), SRC(R_TEMP, 0, XYZW), SRC(R_CONST, 0, XYZW), SRC(R_CONST, 0, XYZW),
+        END_TOKEN};
+    memcpy(pw + n, code, sizeof code);
+    n += sizeof code / 4;
+    d3d9_shader *vs = decode(&x, vs30, sizeof vs30 / 4, 0), *ps = decode(&x, pw, n, 512);
+    hfx_fx_program prog;
+    int rc = vs && ps ? hfx_codegen_d3d9_program(x.cg, vs, ps, false, &prog) : -1;
+    CHECK_INT(rc, 0);
+    if (rc == 0 && gl) {
+        unsigned char left[4], right[4];
+        draw(&prog, x.fx, left, right);
+        near(right, 0.45f, 0.65f, 0.85f, 1);
+    }
+    hfx_fx_program_clear(&prog);
+    close_fixture(&x);
+}
+
 static void old_forms_refused_with_location(void) {
     fixture x;
     open_fixture(&x, true);
@@ -441,6 +473,7 @@ int main(void) {
     else printf("no OSMesa GL 3.3 context: programs are built and checked, not drawn\n");
     RUN(vs_ps_2_0_drawn);
     RUN(ps_1_1_drawn);
+    RUN(ps_1_4_drawn);
     RUN(old_forms_refused_with_location);
     RUN(vs_ps_3_0_flow_drawn);
     RUN(subroutines_refused_at_instruction);
