@@ -231,6 +231,14 @@ d3d9_shader *d3d9_decode(hfx_arena *arena, hfx_diags *diags, const d3d9_input *i
     return diags->errors == errors ? r.sh : NULL;
 }
 
+bool d3d9_is_shader(const void *data, size_t size) {
+    if (size < 8) return false;
+    const unsigned char *p = data;
+    uint32_t kind = (uint32_t)p[2] | (uint32_t)p[3] << 8;
+    if (kind != 0xfffe && kind != 0xffff) return false;
+    return p[1] < 16 && p[0] < 16 && model_known(kind == 0xfffe ? D3D9_VS : D3D9_PS, (uint8_t)D3D9_SM(p[1], p[0]));
+}
+
 int d3d9_disassemble_blob(hfx_arena *arena, hfx_diags *diags, const d3d9_input *in, sbuf *out) {
     d3d9_shader *s = d3d9_decode(arena, diags, in);
     if (!s) return -1;

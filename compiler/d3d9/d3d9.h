@@ -13,6 +13,7 @@
 #define HFX_D3D9_H
 
 #include <stdbool.h>
+#include <stddef.h>
 #include <stdint.h>
 
 #include "base/arena.h"
@@ -154,6 +155,18 @@ typedef struct d3d9_comment {
     uint32_t offset;          /* byte offset of the comment token in the blob */
 } d3d9_comment;
 
+/* Registers a preshader computes (fx_2_0 keeps a shader's PRES block, an FXLVM program, in a
+ * comment: the effect reader validates it, translates it into a common/eval_code program and
+ * lists its outputs here before hfx_codegen_d3d9_program). The shader reads c[reg .. reg +
+ * count - 1] from them; the program's hfx_fx_preshader entries carry the code to the runtime,
+ * which runs it at Apply as for a compiled effect (needs HFXC_PACK_UNIFORMS). */
+typedef struct d3d9_preshader_out {
+    uint32_t reg, count;      /* first c register, how many (1..4) */
+    const uint32_t *code;     /* eval_code words computing count * 4 floats, register after register */
+    uint32_t words;
+    const char *text;         /* what it computes, for the GLSL comment; NULL: "c<reg>" */
+} d3d9_preshader_out;
+
 typedef struct d3d9_shader {
     d3d9_stage stage;
     uint8_t model;            /* D3D9_SM(major, minor) */
@@ -165,6 +178,7 @@ typedef struct d3d9_shader {
     const char *target;       /* CTAB's target string ("ps_2_0"); NULL when the CTAB has none */
     const char *file;         /* file name for diagnostics (from the decode input) */
     uint32_t file_index, base; /* hfx_diags file and the blob's byte offset in it */
+    const d3d9_preshader_out *pres; uint32_t pre_count; /* set by the effect reader (NULL, 0: none) */
 } d3d9_shader;
 
 /* What to decode: `size` bytes at `data` (any alignment; little-endian words), which sit at
@@ -191,6 +205,10 @@ void d3d9_disassemble(const d3d9_shader *s, sbuf *out);
  * listing; returns 0, or -1 with located errors in diags. */
 int d3d9_disassemble_blob(hfx_arena *arena, hfx_diags *diags, const d3d9_input *in, sbuf *out);
 
+/* Whether `size` bytes start with a vs / ps version token hfx reads (vs_1_1..3_0, ps_1_1..3_0):
+ * how `hfxc --disassemble` tells a raw shader blob (.vso, .pso, fxc /T ps_2_0) from an effect. */
+bool d3d9_is_shader(const void *data, size_t size);
+
 /* Instruction slots fxc counts for s (its listing's "approximately N"): arithmetic and texture. */
 void d3d9_count_slots(const d3d9_shader *s, uint32_t *arith, uint32_t *tex);
 
@@ -200,9 +218,10 @@ const char *d3d9_model_name(d3d9_stage stage, uint8_t model);
 /* The translator to hfx's IR (d3d9_ir.c): one stage, with D3D9's register semantics (c registers
  * read from the effect's packed hfx_c array at the CTAB's register, r as vec4 locals, v / t / o
  * registers as the entry's inputs and outputs by semantic, samplers by the CTAB's names).
+ * packed: the program packs parameters into hfx_c (HFXC_PACK_UNIFORMS), which s->pres needs.
  * Returns NULL with located errors (X5006 for what it does not translate). */
 struct ir_ctx;
 struct ir_shader;
-struct ir_shader *d3d9_to_ir(struct ir_ctx *c, const d3d9_shader *s);
+struct ir_shader *d3d9_to_ir(struct ir_ctx *c, const d3d9_shader *s, bool packed);
 
 #endif

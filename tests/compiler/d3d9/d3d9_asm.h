@@ -36,4 +36,33 @@ static inline uint32_t fbits(float f) {
     return u;
 }
 
+/* A CTAB comment laid out by hand: header, constant infos, type infos, then strings. */
+typedef struct ctab_const { const char *name; uint16_t set, reg, count, cls, type, rows, cols, elems; } ctab_const;
+
+static inline size_t put_ctab(uint32_t *w, const char *creator, const ctab_const *k, unsigned n) {
+    unsigned char b[1024] = {0};
+    size_t infos = 28, types = infos + 20 * n, strs = types + 16 * n, at = strs;
+#define PUT32(off, v) do { uint32_t v_ = (v); memcpy(b + (off), &v_, 4); } while (0)
+#define PUT16(off, v) do { uint16_t v_ = (uint16_t)(v); memcpy(b + (off), &v_, 2); } while (0)
+    PUT32(0, 28);
+    PUT32(4, at); memcpy(b + at, creator, strlen(creator) + 1); at += strlen(creator) + 1;
+    PUT32(8, 0xfffe0300u);
+    PUT32(12, n);
+    PUT32(16, infos);
+    PUT32(24, at); memcpy(b + at, "vs_3_0", 7); at += 7;
+    for (unsigned i = 0; i < n; i++) {
+        size_t c = infos + 20 * i, t = types + 16 * i;
+        PUT32(c, at); memcpy(b + at, k[i].name, strlen(k[i].name) + 1); at += strlen(k[i].name) + 1;
+        PUT16(c + 4, k[i].set); PUT16(c + 6, k[i].reg); PUT16(c + 8, k[i].count);
+        PUT32(c + 12, t);
+        PUT16(t, k[i].cls); PUT16(t + 2, k[i].type); PUT16(t + 4, k[i].rows); PUT16(t + 6, k[i].cols);
+        PUT16(t + 8, k[i].elems);
+    }
+    size_t words = (at + 3) / 4;
+    w[0] = COMMENT(words + 1);
+    w[1] = 0x42415443u; /* CTAB */
+    memcpy(w + 2, b, words * 4);
+    return words + 2;
+}
+
 #endif

@@ -58,35 +58,6 @@ static void ps_2_0_texture(void) {
            "// approximately 4 instruction slots used (1 texture, 3 arithmetic)\n");
 }
 
-/* A CTAB comment laid out by hand: header, constant infos, type infos, then strings. */
-typedef struct ctab_const { const char *name; uint16_t set, reg, count, cls, type, rows, cols, elems; } ctab_const;
-
-static size_t put_ctab(uint32_t *w, const char *creator, const ctab_const *k, unsigned n) {
-    unsigned char b[1024] = {0};
-    size_t infos = 28, types = infos + 20 * n, strs = types + 16 * n, at = strs;
-#define PUT32(off, v) do { uint32_t v_ = (v); memcpy(b + (off), &v_, 4); } while (0)
-#define PUT16(off, v) do { uint16_t v_ = (uint16_t)(v); memcpy(b + (off), &v_, 2); } while (0)
-    PUT32(0, 28);
-    PUT32(4, at); memcpy(b + at, creator, strlen(creator) + 1); at += strlen(creator) + 1;
-    PUT32(8, 0xfffe0300u);
-    PUT32(12, n);
-    PUT32(16, infos);
-    PUT32(24, at); memcpy(b + at, "vs_3_0", 7); at += 7;
-    for (unsigned i = 0; i < n; i++) {
-        size_t c = infos + 20 * i, t = types + 16 * i;
-        PUT32(c, at); memcpy(b + at, k[i].name, strlen(k[i].name) + 1); at += strlen(k[i].name) + 1;
-        PUT16(c + 4, k[i].set); PUT16(c + 6, k[i].reg); PUT16(c + 8, k[i].count);
-        PUT32(c + 12, t);
-        PUT16(t, k[i].cls); PUT16(t + 2, k[i].type); PUT16(t + 4, k[i].rows); PUT16(t + 6, k[i].cols);
-        PUT16(t + 8, k[i].elems);
-    }
-    size_t words = (at + 3) / 4;
-    w[0] = COMMENT(words + 1);
-    w[1] = 0x42415443u; /* CTAB */
-    memcpy(w + 2, b, words * 4);
-    return words + 2;
-}
-
 static void vs_3_0_listing(void) {
     static const ctab_const k[] = {
         {"Flag", 0, 0, 1, 0, 1, 1, 1, 1},
@@ -248,7 +219,18 @@ static void errors_located(void) {
             "t.vso(0,8): error X5002: break is not allowed in ps_2_0\n");
 }
 
+static void shader_detection(void) {
+    static const uint32_t ps[] = {PS(2, 0), END_TOKEN}, vs11[] = {VS(1, 1), END_TOKEN}, vs10[] = {VS(1, 0), END_TOKEN};
+    static const uint32_t fx[] = {0xfeff0901u, 0}; /* an fx_2_0 effect's version word */
+    CHECK(d3d9_is_shader(ps, sizeof ps));
+    CHECK(d3d9_is_shader(vs11, sizeof vs11));
+    CHECK(!d3d9_is_shader(vs10, sizeof vs10));
+    CHECK(!d3d9_is_shader(fx, sizeof fx));
+    CHECK(!d3d9_is_shader(ps, 4));
+}
+
 int main(void) {
+    RUN(shader_detection);
     RUN(ps_2_0_texture);
     RUN(vs_3_0_listing);
     RUN(ps_1_x_listing);
