@@ -5,6 +5,8 @@
 
 #include <stdbool.h>
 
+#include "d3d9/d3d9.h"
+#include "effect/codegen.h"
 #include "effect/fx2.h"
 #include "eval.h"
 
@@ -80,6 +82,8 @@ typedef struct fx2_reader {
     uint32_t *pass_tech;      /* per pass: its technique */
     fx2_object *objects; uint32_t object_count;
     uint32_t shader_count;    /* the header's third word */
+    hfx_codegen *cg;          /* made with the first program */
+    struct fx2_program_key *keys; uint32_t key_cap; /* per program: the bytecode pair that made it */
 } fx2_reader;
 
 /* fx2_read.c */
@@ -116,6 +120,9 @@ bool hfx_fx2_finish(fx2_reader *r);
  * r->fx->exprs; *first, *words say where. False (and a located error) when it cannot be. */
 bool hfx_fxlvm_translate(fx2_reader *r, const fx2_blob *blob, uint32_t n, hfx_ev_base base, uint32_t *first,
                          uint32_t *words);
+/* A shader's PRES block (its FXLVM program): the c registers it computes, in runs of up to 4
+ * registers, each with its eval_code (arena); false (and a located error) when it cannot be. */
+bool hfx_fxlvm_preshader(fx2_reader *r, const fx2_blob *blob, d3d9_preshader_out **outs, uint32_t *count);
 /* Its instructions as text (`mov oc0.x, c[c32.x].x`), one a line, for the listing (arena). */
 char *hfx_fxlvm_text(fx2_reader *r, const fx2_blob *blob);
 

@@ -731,7 +731,7 @@ bool hfx_fx2_open(fx2_reader *r, hfx_arena *arena, hfx_diags *diags, const char 
         return false;
     }
     r->fx->source_name = hfx_fx2_strdup(r, name);
-    r->fx->targets = targets;
+    if (flags & HFX_FX2_DECODE_ONLY) r->fx->targets = targets;
     return true;
 }
 

@@ -7,6 +7,8 @@
 
 #include "effect/fx2_int.h"
 #include "eval_code.h"
+#include "glsl/glslang.h"
+#include "ir/ir.h"
 #include "states.h"
 
 /* The state operations in D3DX's order (the number a state record stores), spelled as
@@ -285,29 +287,153 @@ typedef struct stage_src {
     uint32_t at;
 } stage_src;
 
-static const char *profile_of(const fx2_blob *b, char *buf, size_t n) {
-    uint32_t v = b->size >= 4 ? (uint32_t)b->data[0] | (uint32_t)b->data[1] << 8 | (uint32_t)b->data[2] << 16 |
-                                    (uint32_t)b->data[3] << 24
-                              : 0;
-    snprintf(buf, n, "%s_%u_%u", (v >> 16) == 0xfffe ? "vs" : (v >> 16) == 0xffff ? "ps" : "?", (v >> 8) & 0xff, v & 0xff);
-    return buf;
+/* What made a program: the two shaders' bytecode (NULL: none) and the pass's ShadeMode. */
+typedef struct fx2_program_key {
+    const uint8_t *vs, *ps;
+    bool flat;
+} fx2_program_key;
+
+/* GLSL names, as build.c gives compiled parameters: the top-level numerics and samplers, and
+ * struct members (by their own names); elements, textures, strings and shaders have none. */
+static void glsl_names(fx2_reader *r) {
+    hfx_fx_effect *fx = r->fx;
+    for (uint32_t i = 0; i < fx->param_count; i++) {
+        hfx_fx_param *p = &fx->params[i];
+        bool member = p->parent != HFX_NONE && !fx->params[p->parent].elements;
+        bool readable = p->klass != HFX_CLASS_OBJECT || (p->type >= HFX_TYPE_SAMPLER && p->type <= HFX_TYPE_SAMPLERCUBE);
+        if ((p->parent == HFX_NONE || member) && readable && !p->glsl_name)
+            p->glsl_name = hfx_fx2_strdup(r, hfx_glsl_name(r->arena, p->name));
+    }
 }
 
-/* The one place shader bytecode becomes a program (compiler/d3d9's reader and the builder's
- * program for a vs + ps pair). Until that reader is here, a located error says so: a pass with
- * shaders never loads half. */
-static uint32_t shader_program(fx2_reader *r, const fx2_blob *vs, const fx2_blob *ps, const char *pass, uint32_t at) {
-    const fx2_blob *b = vs ? vs : ps;
-    char prof[32];
-    if (!b) {
-        hfx_fx2_error(r, at, "pass '%s': the shader array entries it picks have no bytecode", pass);
+/* Whether some pass turns the alpha test on (its pixel shaders then carry it, as build.c's). */
+static bool enables_alpha_test(const hfx_fx_effect *fx) {
+    for (uint32_t i = 0; i < fx->state_count; i++)
+        if (fx->states[i].id == HFX_ST_ALPHATESTENABLE &&
+            !(fx->states[i].kind == HFX_FX_VALUE_INT && fx->states[i].i == 0))
+            return true;
+    return false;
+}
+
+static bool pass_is_flat(const hfx_fx_effect *fx, uint32_t pass) {
+    const hfx_fx_pass *pa = &fx->passes[pass];
+    for (uint32_t i = 0; i < pa->state_count; i++) {
+        const hfx_fx_state *st = &fx->states[pa->first_state + i];
+        if (st->id == HFX_ST_SHADEMODE && st->kind == HFX_FX_VALUE_INT && st->i == 1) return true; /* D3DSHADE_FLAT */
+    }
+    return false;
+}
+
+/* One shader's bytecode decoded (compiler/d3d9), with its PRES block's registers. */
+static d3d9_shader *decode_shader(fx2_reader *r, const fx2_blob *b) {
+    if (!b || r->failed) return NULL;
+    d3d9_input in = {b->data, b->size, r->file, b->at};
+    d3d9_shader *s = d3d9_decode(r->arena, r->diags, &in);
+    if (!s) {
+        r->failed = true;
+        return NULL;
+    }
+    for (uint32_t i = 0; i < s->comment_count; i++) {
+        const d3d9_comment *c = &s->comments[i];
+        if (c->fourcc != 0x53455250u /* PRES */ || c->word_count < 2) continue;
+        fx2_blob pres = {b->data + c->offset + 8, (c->word_count - 1) * 4, b->at + c->offset + 8};
+        d3d9_preshader_out *outs;
+        uint32_t n;
+        if (!hfx_fxlvm_preshader(r, &pres, &outs, &n)) return NULL;
+        s->pres = outs, s->pre_count = n;
+    }
+    return s;
+}
+
+static void clear_pending(void *p) { hfx_fx_program_clear(p); }
+
+/* The one place shader bytecode becomes a program: compiler/d3d9 reads and translates each
+ * stage, the code generator builds the pass's program as for a compiled effect. A pair made
+ * before is shared. */
+static uint32_t shader_program(fx2_reader *r, const fx2_blob *vs, const fx2_blob *ps, uint32_t pass, uint32_t at) {
+    hfx_fx_effect *fx = r->fx;
+    if (!vs && !ps) {
+        hfx_fx2_error(r, at, "pass '%s': the shader array entries it picks have no bytecode", fx->passes[pass].name);
         r->failed = true;
         return HFX_NONE;
     }
-    hfx_error(r->diags, (hfx_loc){r->file, 0, b->at}, X_FX2_BINARY, "pass '%s': %s bytecode: hfx cannot translate "
-              "D3D9 shader bytecode yet", pass, profile_of(b, prof, sizeof prof));
-    r->failed = true;
-    return HFX_NONE;
+    bool flat = pass_is_flat(fx, pass);
+    for (uint32_t i = 0; i < fx->program_count; i++)
+        if (r->keys[i].vs == (vs ? vs->data : NULL) && r->keys[i].ps == (ps ? ps->data : NULL) && r->keys[i].flat == flat)
+            return i;
+    if (!r->cg) {
+        glsl_names(r);
+        r->cg = hfx_codegen_new(r->arena, r->diags, hfx_types_new(r->arena), NULL, fx, r->targets,
+                                (r->diags->flags & HFXC_PACK_UNIFORMS) != 0, NULL, NULL);
+        if (!r->cg) {
+            hfx_fx2_error(r, at, "the code generator could not start");
+            r->failed = true;
+            return HFX_NONE;
+        }
+        hfx_codegen_set_alpha_test(r->cg, enables_alpha_test(fx));
+    }
+    d3d9_shader *v = decode_shader(r, vs), *p = decode_shader(r, ps);
+    if (r->failed) return HFX_NONE;
+    hfx_fx_program *pending = HFX_NEW(r->arena, hfx_fx_program);
+    hfx_arena_cleanup *cleanup = hfx_arena_on_escape(r->arena, clear_pending, pending);
+    int rc = hfx_codegen_d3d9_program(r->cg, v, p, flat, pending);
+    hfx_arena_forget(r->arena, cleanup);
+    uint32_t cap = r->program_cap;
+    if (rc < 0 || !FX2_GROW(r, fx->programs, fx->program_count, r->program_cap)) {
+        hfx_fx_program_clear(pending);
+        r->failed = true;
+        return HFX_NONE;
+    }
+    if (cap != r->program_cap || !r->keys) {
+        fx2_program_key *keys = HFX_NEW_ARRAY(r->arena, fx2_program_key, r->program_cap);
+        if (r->keys) memcpy(keys, r->keys, fx->program_count * sizeof *keys);
+        r->keys = keys;
+    }
+    r->keys[fx->program_count] = (fx2_program_key){vs ? vs->data : NULL, ps ? ps->data : NULL, flat};
+    fx->programs[fx->program_count] = *pending;
+    return fx->program_count++;
+}
+
+/* Every GLSL shader made, through glslang (unless HFXC_NO_SELF_CHECK), as build.c checks a
+ * compiled effect's: a rejection is hfx's own bug, never handed to a driver. */
+static void self_check(fx2_reader *r) {
+    const hfx_fx_effect *fx = r->fx;
+    if ((r->diags->flags & HFXC_NO_SELF_CHECK) || !fx->program_count || !hfx_glslang_available()) return;
+    hfx_arena_escape_off(r->arena); /* glslang holds its own memory */
+    if (!hfx_glslang_begin()) {
+        hfx_error(r->diags, (hfx_loc){r->file, 0, 0}, X_INTERNAL, "internal: glslang could not start for the self-check");
+        r->failed = true;
+        hfx_arena_escape_on(r->arena);
+        return;
+    }
+    for (uint32_t i = 0; i < fx->program_count; i++)
+        for (int s = 0; s < HFX_STAGE_COUNT; s++)
+            for (int t = 0; t < HFX_TARGET_SPIRV; t++) {
+                char *log = NULL;
+                const hfx_fx_code *code = &fx->programs[i].code[s][t];
+                if (!code->data || hfx_glslang_check(code->data, s, (hfx_target)t, &log) == 0) continue;
+                const char *e = log && strstr(log, "ERROR:") ? strstr(log, "ERROR:") : "glslang gave no reason";
+                hfx_error(r->diags, (hfx_loc){r->file, 0, 0}, X_INTERNAL, "internal: the %s shader hfx made from "
+                          "program %u's bytecode does not compile (target %d): %.*s", s ? "pixel" : "vertex", i, t,
+                          (int)strcspn(e, "\n"), e);
+                free(log);
+                r->failed = true;
+            }
+    hfx_glslang_end();
+    hfx_arena_escape_on(r->arena);
+}
+
+/* The targets every program carries code for (SPIR-V is made from a compiled effect's GLSL by
+ * build.c; a binary's programs have the GLSL targets). */
+static unsigned present_targets(const hfx_fx_effect *fx, unsigned asked) {
+    for (uint32_t i = 0; i < fx->program_count; i++) {
+        unsigned here = 0;
+        for (int t = 0; t < HFX_TARGET_COUNT; t++)
+            for (int s = 0; s < HFX_STAGE_COUNT; s++)
+                if (fx->programs[i].code[s][t].data) here |= 1u << t;
+        asked &= here;
+    }
+    return asked;
 }
 
 static const fx2_blob *object_blob(fx2_reader *r, uint32_t id) {
@@ -379,7 +505,7 @@ static void pass_variants(fx2_reader *r, uint32_t pass, const stage_src s[2]) {
         if (known) continue;
         const fx2_blob *b[2];
         for (int k = 0; k < 2; k++) b[k] = s[k].array != HFX_NONE ? element_blob(r, s[k].array, idx[k]) : s[k].blob;
-        uint32_t prog = shader_program(r, b[0], b[1], fx->passes[pass].name, s[s[0].array == HFX_NONE].at);
+        uint32_t prog = shader_program(r, b[0], b[1], pass, s[s[0].array == HFX_NONE].at);
         if (prog == HFX_NONE || !FX2_GROW(r, fx->variants, fx->variant_count, r->variant_cap)) return;
         fx->variants[fx->variant_count++] = (hfx_fx_variant){pass, idx[0], idx[1], prog};
     }
@@ -402,7 +528,7 @@ static void pass_program(fx2_reader *r, uint32_t pass) {
         return;
     }
     if (!s[0].blob && !s[1].blob) return;
-    pa->program = shader_program(r, s[0].blob, s[1].blob, pa->name, 0);
+    pa->program = shader_program(r, s[0].blob, s[1].blob, pass, 0);
     for (uint32_t i = 0; i < pa->state_count; i++) {
         hfx_fx_state *st = &fx->states[pa->first_state + i];
         if (st->kind == HFX_FX_VALUE_PROGRAM) st->ref = pa->program;
@@ -411,7 +537,9 @@ static void pass_program(fx2_reader *r, uint32_t pass) {
 
 bool hfx_fx2_finish(fx2_reader *r) {
     for (uint32_t i = 0; i < r->raw_count && !r->failed; i++) resolve(r, &r->raws[i]);
-    if (!(r->flags & HFX_FX2_DECODE_ONLY))
-        for (uint32_t p = 0; p < r->fx->pass_count && !r->failed; p++) pass_program(r, p);
+    if (r->flags & HFX_FX2_DECODE_ONLY) return !r->failed;
+    for (uint32_t p = 0; p < r->fx->pass_count && !r->failed; p++) pass_program(r, p);
+    if (!r->failed && !r->diags->errors) self_check(r);
+    r->fx->targets = present_targets(r->fx, r->targets);
     return !r->failed;
 }

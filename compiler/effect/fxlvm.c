@@ -27,7 +27,7 @@
 enum { T_IMM = 1, T_CONST = 2, T_OUT = 4, T_TEMP = 7 };
 enum { MAX_REGS = 256, MAX_COMPONENTS = MAX_REGS * 4, MAX_WORDS = 1u << 16, MAX_DEPTH = 512 };
 
-typedef enum { N_CONST, N_PARAM, N_ELEMENT, N_TABLE, N_CALL, N_BINARY, N_SELECT_GE, N_CONVERT } node_kind;
+typedef enum { N_CONST, N_PARAM, N_ELEMENT, N_TABLE, N_CALL, N_BINARY, N_SELECT_GE, N_CONVERT, N_NEG } node_kind;
 
 typedef struct node {
     node_kind kind;
@@ -39,6 +39,8 @@ typedef struct node {
     hfx_ev_base base;       /* the parameter's */
     uint32_t size;          /* words of its code, saturating at MAX_WORDS */
     uint32_t depth;         /* of its tree: bounds the recursion that writes it */
+    uint32_t need;          /* stack slots its code needs, the larger operand written first where
+                             * the order is free (Sethi and Ullman's numbering) */
 } node;
 
 typedef struct ctab_entry {
@@ -134,6 +136,28 @@ static void read_ctab(vm *m) {
 
 /* --- nodes ----------------------------------------------------------------------------------- */
 
+/* Operands whose order a stack program may swap: + * min max, and < >= as > <=. */
+static bool swappable(const node *n) {
+    if (n->kind == N_BINARY)
+        return n->op == HFX_EV_ADD || n->op == HFX_EV_MUL || n->op == HFX_EV_LT || n->op == HFX_EV_GE;
+    return n->kind == N_CALL && n->kid_count == 2 && (n->op == HFX_EV_FN_MIN || n->op == HFX_EV_FN_MAX);
+}
+
+static uint32_t max2(uint32_t a, uint32_t b) { return a > b ? a : b; }
+
+static uint32_t needs(const vm *m, const node *n) {
+    uint32_t k[3] = {0};
+    for (uint32_t i = 0; i < n->kid_count; i++) k[i] = m->nodes[n->kids[i]].need;
+    switch (n->kind) {
+    case N_CONST: case N_PARAM: return 1;
+    case N_SELECT_GE: return max2(max2(k[0], k[1] + 1), max2(k[2] + 2, 4));
+    default:
+        if (n->kid_count < 2) return max2(k[0], 1);
+        if (swappable(n)) return k[0] == k[1] ? k[0] + 1 : max2(k[0], k[1]);
+        return max2(k[0], k[1] + 1);
+    }
+}
+
 static uint32_t add_node(vm *m, node n) {
     if (m->failed) return HFX_NONE;
     for (uint32_t k = 0; k < n.kid_count; k++)
@@ -148,6 +172,7 @@ static uint32_t add_node(vm *m, node n) {
     }
     if (n.kind == N_SELECT_GE) size += 3; /* CONST 0, GE */
     n.size = size > MAX_WORDS ? MAX_WORDS : size;
+    n.need = needs(m, &n);
     if (n.size >= MAX_WORDS || n.depth > MAX_DEPTH) {
         fail(m, 0, "%sthe computation is too large to run as hfx's expression code", "");
         return HFX_NONE;
@@ -300,7 +325,7 @@ static const opinfo *find_op(uint32_t code, uint32_t inputs) {
 static uint32_t compute(vm *m, uint32_t code, const uint32_t *x, uint32_t n) {
     switch (code) {
     case 0x100: return x[0];
-    case 0x101: return op2(m, N_BINARY, HFX_EV_SUB, constant(m, 0.0), x[0]);
+    case 0x101: return x[0] == HFX_NONE ? HFX_NONE : add_node(m, (node){.kind = N_NEG, .kids = {x[0]}, .kid_count = 1});
     case 0x103: return op2(m, N_BINARY, HFX_EV_DIV, constant(m, 1.0), x[0]);
     case 0x104: return call1(m, HFX_EV_FN_FRAC, x[0]);
     case 0x105: return call1(m, HFX_EV_FN_EXP2, x[0]);
@@ -396,14 +421,18 @@ static void emit(vm *m, uint32_t id) {
         for (uint32_t i = 0; i < n->count; i++)
             put_float(m, n->offset + 4 * i < m->lit_count ? m->lit[n->offset + 4 * i] : 0.0);
         return;
-    case N_CALL:
-        for (uint32_t k = 0; k < n->kid_count; k++) emit(m, n->kids[k]);
-        put(m, hfx_evc_word(HFX_EVC_CALL, n->op, 0));
+    case N_CALL: case N_BINARY: {
+        /* the operand needing more of the stack first, where that changes nothing: x < y is y > x */
+        bool swap = swappable(n) && m->nodes[n->kids[1]].need > m->nodes[n->kids[0]].need;
+        uint32_t op = n->op;
+        if (swap && n->kind == N_BINARY && (op == HFX_EV_LT || op == HFX_EV_GE)) op = op == HFX_EV_LT ? HFX_EV_GT : HFX_EV_LE;
+        for (uint32_t k = 0; k < n->kid_count; k++) emit(m, n->kids[swap ? n->kid_count - 1 - k : k]);
+        put(m, hfx_evc_word(n->kind == N_CALL ? HFX_EVC_CALL : HFX_EVC_BINARY, op, 0));
         return;
-    case N_BINARY:
+    }
+    case N_NEG:
         emit(m, n->kids[0]);
-        emit(m, n->kids[1]);
-        put(m, hfx_evc_word(HFX_EVC_BINARY, n->op, 0));
+        put(m, hfx_evc_word(HFX_EVC_UNARY, HFX_EV_NEG, 0));
         return;
     case N_SELECT_GE: /* kids: value if >= 0, value if < 0, the tested value */
         emit(m, n->kids[0]);
@@ -454,36 +483,83 @@ static bool load(vm *m, fx2_reader *r, const fx2_blob *blob) {
     return !m->failed;
 }
 
+/* Loads and runs the program over symbolic registers: m->out holds the outputs' trees. */
+static bool execute(vm *m, fx2_reader *r, const fx2_blob *blob) {
+    if (!load(m, r, blob)) return false;
+    uint32_t at, size;
+    if (!find_comment(m, 0x434c5846u /* FXLC */, &at, &size) || size < 1) {
+        fail(m, 0, "%sno FXLC block (the code)", "");
+        return false;
+    }
+    uint32_t count = m->w[at], i = at + 1, end = at + size;
+    for (uint32_t k = 0; k < count && !m->failed; k++) run_instruction(m, &i, end);
+    return !m->failed;
+}
+
+/* Output components first .. first + n - 1 as one program of base `base` (n <= 16), in the
+ * arena; an output the program never writes is D3DX's zero. */
+static uint32_t *write_outputs(vm *m, uint32_t first, uint32_t n, hfx_ev_base base, uint32_t *words) {
+    m->code_count = 0;
+    for (uint32_t c = 0; c < n && !m->failed; c++) {
+        uint32_t node = m->out[first + c] != HFX_NONE ? m->out[first + c] : constant(m, 0.0);
+        if (node == HFX_NONE) break;
+        emit(m, node);
+        if (c) put(m, hfx_evc_word(HFX_EVC_CONCAT, 0, c + 1));
+    }
+    put(m, hfx_evc_word(HFX_EVC_CONVERT, base, n));
+    if (m->failed) return NULL;
+    char err[160];
+    if (hfx_evc_validate(m->code, m->code_count, m->r->fx->value_words, err, sizeof err)) {
+        fail(m, 0, "%s", err);
+        return NULL;
+    }
+    uint32_t *code = HFX_NEW_ARRAY(m->r->arena, uint32_t, m->code_count);
+    memcpy(code, m->code, m->code_count * sizeof *code);
+    *words = m->code_count;
+    return code;
+}
+
 bool hfx_fxlvm_translate(fx2_reader *r, const fx2_blob *blob, uint32_t n, hfx_ev_base base, uint32_t *first,
                          uint32_t *words) {
     vm m;
-    if (!load(&m, r, blob)) return false;
-    uint32_t at, size;
-    if (!find_comment(&m, 0x434c5846u /* FXLC */, &at, &size) || size < 1) {
-        fail(&m, 0, "%sno FXLC block (the code)", "");
-        return false;
-    }
-    uint32_t count = m.w[at], i = at + 1, end = at + size;
-    for (uint32_t k = 0; k < count && !m.failed; k++) run_instruction(&m, &i, end);
-    for (uint32_t c = 0; c < n && !m.failed; c++) {
-        if (m.out[c] == HFX_NONE) m.out[c] = constant(&m, 0.0); /* an output the program leaves as D3DX's zero */
-        emit(&m, m.out[c]);
-        if (c) put(&m, hfx_evc_word(HFX_EVC_CONCAT, 0, c + 1));
-    }
-    put(&m, hfx_evc_word(HFX_EVC_CONVERT, base, n));
-    if (m.failed) return false;
-    char err[160];
-    if (hfx_evc_validate(m.code, m.code_count, r->fx->value_words, err, sizeof err)) {
-        fail(&m, 0, "%s", err);
-        return false;
-    }
+    if (!execute(&m, r, blob)) return false;
+    uint32_t count;
+    const uint32_t *code = write_outputs(&m, 0, n, base, &count);
+    if (!code) return false;
     hfx_fx_effect *fx = r->fx;
     *first = fx->expr_words;
-    for (uint32_t k = 0; k < m.code_count; k++) {
+    for (uint32_t k = 0; k < count; k++) {
         if (!FX2_GROW(r, fx->exprs, fx->expr_words, r->expr_cap)) return false;
-        fx->exprs[fx->expr_words++] = m.code[k];
+        fx->exprs[fx->expr_words++] = code[k];
     }
-    *words = m.code_count;
+    *words = count;
+    return true;
+}
+
+bool hfx_fxlvm_preshader(fx2_reader *r, const fx2_blob *blob, d3d9_preshader_out **outs, uint32_t *count) {
+    vm m;
+    *outs = NULL, *count = 0;
+    if (!execute(&m, r, blob)) return false;
+    bool written[MAX_REGS];
+    uint32_t runs = 0;
+    for (uint32_t reg = 0; reg < MAX_REGS; reg++) {
+        written[reg] = false;
+        for (uint32_t k = 0; k < 4; k++) written[reg] |= m.out[reg * 4 + k] != HFX_NONE;
+    }
+    d3d9_preshader_out *list = HFX_NEW_ARRAY(r->arena, d3d9_preshader_out, MAX_REGS);
+    for (uint32_t reg = 0; reg < MAX_REGS;) { /* runs of written registers, 4 at most (16 components) */
+        if (!written[reg]) {
+            reg++;
+            continue;
+        }
+        uint32_t n = 1;
+        while (n < 4 && reg + n < MAX_REGS && written[reg + n]) n++;
+        d3d9_preshader_out *o = &list[runs++];
+        o->reg = reg, o->count = n, o->text = NULL;
+        if (!(o->code = write_outputs(&m, reg * 4, n * 4, HFX_EV_FLOAT, &o->words))) return false;
+        reg += n;
+    }
+    *outs = list, *count = runs;
     return true;
 }
 

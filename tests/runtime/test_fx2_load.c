@@ -150,6 +150,41 @@ static void pass_binds_the_texture(void) {
     hfx_device_sync(dev);
 }
 
+/* Real bytecode: a pass-through vs_2_0 and a ps_2_0 array (red, green) picked by ShaderIndex,
+ * drawn over a blue clear: the centre pixel is the picked shader's colour. */
+static void shaders_draw(void) {
+    size_t size;
+    uint8_t *file = fxb_shader_file(&size);
+    char *errors = NULL;
+    hfx_effect *fx = hfx_effect_load_memory(dev, file, size, "s.fxb", NULL, &errors);
+    if (!fx) fprintf(stderr, "did not load:\n%s\n", errors ? errors : "(no message)");
+    CHECK(fx != NULL);
+    hfx_free(errors);
+    free(file);
+    if (!fx) return;
+    static const float quad[12] = {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1};
+    hfx_pass *p = hfx_technique_pass(hfx_effect_technique(fx, "T"), 0);
+    CHECK_INT(hfx_pass_attribute_location(p, "POSITION0"), 0);
+    for (int k = 0; k < 2; k++) {
+        CHECK_INT(hfx_param_set_int(hfx_effect_param(fx, "ShaderIndex"), k), HFX_OK);
+        GLuint buffer, vao = tgl_triangles(&g, quad, 6, &buffer);
+        g.ClearColor(0, 0, 1, 1);
+        g.Clear(GL_COLOR_BUFFER_BIT);
+        hfx_effect_begin(fx);
+        CHECK_INT(hfx_pass_apply(p), HFX_OK);
+        g.DrawArrays(GL_TRIANGLES, 0, 6);
+        hfx_effect_end(fx);
+        unsigned char px[4];
+        test_gl_read(gl, W / 2, H / 2, px);
+        CHECK_INT(px[0], k ? 0 : 255);
+        CHECK_INT(px[1], k ? 255 : 0);
+        CHECK_INT(px[2], 0);
+        g.DeleteBuffers(1, &buffer);
+        g.DeleteVertexArrays(1, &vao);
+    }
+    hfx_effect_destroy(fx);
+}
+
 int main(void) {
     gl = test_gl_create(W, H);
     if (!gl) test_skip("no OSMesa context");
@@ -161,6 +196,7 @@ int main(void) {
     RUN(states_on_gl);
     RUN(computed_state_follows_its_parameter);
     RUN(pass_binds_the_texture);
+    RUN(shaders_draw);
     hfx_device_destroy(dev);
     test_gl_destroy(gl);
     return test_summary();

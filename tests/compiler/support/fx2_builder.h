@@ -257,4 +257,62 @@ static inline uint8_t *fxb_sample_file(size_t *size, fxb_sample *where, int sele
     return f;
 }
 
+/* Hand-assembled shaders (D3D9 tokens):
+ *   vs_2_0: dcl_position v0; mov oPos, v0
+ *   ps_2_0: def c0, R, G, 0, 1; mov oC0, c0 */
+static inline uint32_t fxb_vs_passthrough(fxb *b) {
+    const uint32_t t[] = {0xfffe0200u, 0x0200001fu, 0x80000000u, 0x900f0000u,
+                          0x02000001u, 0xc00f0000u, 0x90e40000u, 0x0000ffffu};
+    return fxb_words(b, t, 8);
+}
+
+static inline uint32_t fxb_ps_colour(fxb *b, float red, float green) {
+    uint32_t r, g, one = 0x3f800000u;
+    memcpy(&r, &red, 4), memcpy(&g, &green, 4);
+    const uint32_t t[] = {0xffff0200u, 0x05000051u, 0xa00f0000u, r, g, 0, one,
+                          0x02000001u, 0x800f0800u, 0xa0e40000u, 0x0000ffffu};
+    return fxb_words(b, t, 11);
+}
+
+/* An effect with real shaders:
+ *     int ShaderIndex = 0;
+ *     pixelshader PSArray[2] = { (red: 1, 0, 0, 1), (green: 0, 1, 0, 1) };
+ *     technique T { pass P { CullMode = None; VertexShader = <passthrough>;
+ *                            PixelShader = (PSArray[ShaderIndex]); } }
+ * Objects: 1-2 PSArray, 3 the pass's VertexShader, 4 its PixelShader. */
+static inline uint8_t *fxb_shader_file(size_t *size) {
+    fxb b = {0};
+    uint32_t t_index = fxb_type(&b, FXB_INT, FXB_SCALAR, "ShaderIndex", NULL, 0, 1, 1), v_index = fxb_u32(&b, 0);
+    uint32_t t_ps = fxb_type(&b, FXB_PIXELSHADER, FXB_OBJECT, "PSArray", NULL, 2, 0, 0);
+    uint32_t v_ps = fxb_words(&b, (const uint32_t[]){1, 2}, 2);
+    uint32_t s_int = fxb_type(&b, FXB_INT, FXB_SCALAR, NULL, NULL, 0, 1, 1), none = fxb_u32(&b, 1);
+    uint32_t s_vs = fxb_type(&b, FXB_VERTEXSHADER, FXB_OBJECT, NULL, NULL, 0, 0, 0), o3 = fxb_u32(&b, 3);
+    uint32_t s_pst = fxb_type(&b, FXB_PIXELSHADER, FXB_OBJECT, NULL, NULL, 0, 0, 0), o4 = fxb_u32(&b, 4);
+    uint32_t tn = fxb_name(&b, "T"), pn = fxb_name(&b, "P");
+    uint32_t start = fxb_words(&b, (const uint32_t[]){2, 1, 3, 5}, 4);
+    fxb_words(&b, (const uint32_t[]){t_index, v_index, 0, 0, t_ps, v_ps, 0, 0}, 8);
+    fxb_words(&b, (const uint32_t[]){tn, 0, 1, pn, 0, 3}, 6);
+    fxb_words(&b, (const uint32_t[]){8, 0, s_int, none, 146, 0, s_vs, o3, 147, 0, s_pst, o4}, 12);
+    fxb_words(&b, (const uint32_t[]){2, 2}, 2); /* strings (the array's shaders), resources */
+    for (int k = 0; k < 2; k++) {
+        fxb_u32(&b, 1 + (uint32_t)k), fxb_u32(&b, 44);
+        fxb_ps_colour(&b, k ? 0.0f : 1.0f, k ? 1.0f : 0.0f);
+    }
+    fxb_words(&b, (const uint32_t[]){0, 0, 0xffffffffu, 1, 0, 32}, 6); /* VertexShader: bytecode */
+    fxb_vs_passthrough(&b);
+    { /* PixelShader = (PSArray[ShaderIndex]): mov oc0.x, c0.x */
+        fxb_words(&b, (const uint32_t[]){0, 0, 0xffffffffu, 2, 2}, 5);
+        uint32_t size_at = fxb_u32(&b, 0), begin = b.n;
+        fxb_name(&b, "PSArray");
+        const fxb_input in[] = {{"ShaderIndex", 0, 1, FXB_INT, 1, 1}};
+        const uint32_t code[] = {0x10000001u, 1, 0, 2, 0, 0, 4, 0};
+        fxb_fxlvm(&b, in, 1, NULL, 0, 1, code, 8);
+        uint32_t n = b.n - begin;
+        memcpy(b.d + size_at, &n, 4);
+    }
+    uint8_t *f = fxb_file(&b, start, size);
+    free(b.d);
+    return f;
+}
+
 #endif
