@@ -38,7 +38,7 @@ typedef enum {
     HFX_EVC_MATMUL, HFX_EVC_OP_COUNT
 } hfx_evc_op;
 
-enum { HFX_EVC_MAX_DEPTH = 8, HFX_EVC_MAX_WORDS = 1u << 20 };
+enum { HFX_EVC_MAX_DEPTH = 16, HFX_EVC_MAX_WORDS = 1u << 20 }; /* 16: fxc's preshaders (FXLVM trees) need more than 8 */
 
 /* The instruction word. */
 static inline uint32_t hfx_evc_word(hfx_evc_op op, uint32_t a, uint32_t b) {

@@ -129,9 +129,9 @@ static void validator_refuses(void) {
     check_invalid(underflow, 3, "word 2: takes more values than the stack holds");
     const uint32_t two[] = {W(CONST, F, 1), 0, W(CONST, F, 1), 0};
     check_invalid(two, 4, "does not leave exactly one value");
-    uint32_t deep[18];
-    for (int i = 0; i < 9; i++) deep[2 * i] = W(CONST, F, 1), deep[2 * i + 1] = 0;
-    check_invalid(deep, 18, "word 16: the stack grows too deep");
+    uint32_t deep[2 * (HFX_EVC_MAX_DEPTH + 1)]; /* one constant more than the stack holds */
+    for (int i = 0; i <= HFX_EVC_MAX_DEPTH; i++) deep[2 * i] = W(CONST, F, 1), deep[2 * i + 1] = 0;
+    check_invalid(deep, 2 * (HFX_EVC_MAX_DEPTH + 1), "word 32: the stack grows too deep"); /* 16 deep */
     const uint32_t empty_table[] = {W(CONST, I, 1), 0, W(TABLE, I, 1), 0};
     check_invalid(empty_table, 4, "a table of a wrong shape");
     const uint32_t huge_table[] = {W(CONST, I, 1), 0, W(TABLE, I, 16), 0xffffffffu, 1};
