@@ -513,10 +513,20 @@ void hfx_build_technique(hfx_builder *b, const hfx_technique_ast *ta) {
     }
 }
 
+/* technique10 / technique11: an effect written for Direct3D 9 and 10 keeps both kinds side by
+ * side; fx_2_0 loads the Direct3D 9 ones and skips these (checked, not built), with a warning. */
+static bool is_d3d10_technique(hfx_builder *b, const hfx_decl *d) {
+    const char *k = d->technique->keyword;
+    if (!k || (strcasecmp(k, "technique10") != 0 && strcasecmp(k, "technique11") != 0)) return false;
+    hfx_warning(b->diags, d->loc, X_UNSUPPORTED, "'%s': %s is Direct3D 10 effect syntax, ignored in fx_2_0",
+                d->technique->name ? d->technique->name : "", k);
+    return true;
+}
+
 bool hfx_build_techniques(hfx_builder *b) {
     for (uint32_t i = 0; i < b->ast->decl_count; i++) {
         const hfx_decl *d = b->ast->decls[i];
-        if (d->kind == DECL_TECHNIQUE && d->technique) hfx_build_technique(b, d->technique);
+        if (d->kind == DECL_TECHNIQUE && d->technique && !is_d3d10_technique(b, d)) hfx_build_technique(b, d->technique);
     }
     return !b->failed_alloc;
 }

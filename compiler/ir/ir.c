@@ -1,6 +1,7 @@
 /* ir.c: copies the checked AST of one entry point and everything it calls into the IR.
  * The copy is per stage of each pass, so specialisation never touches the shared tree. */
 #include "ir/ir.h"
+#include "check/conv.h"
 
 #include <string.h>
 #include <strings.h>
@@ -274,6 +275,15 @@ static ir_expr *rebuild(builder *b, const hfx_type *ty, ir_expr **scalars, uint3
     return r;
 }
 
+/* Whether a cast from -> to takes the components one by one: to or from a struct, and to or
+ * from an array where no plain conversion applies ((float4)arr, (float[2])v4). A scalar fills. */
+static bool restructures(const hfx_type *from, const hfx_type *to) {
+    if (hfx_type_components(from) <= 1) return false;
+    if (from->kind == TY_STRUCT || to->kind == TY_STRUCT) return true;
+    if (from->kind != TY_ARRAY && to->kind != TY_ARRAY) return false;
+    return !hfx_conv_classify(from, to, true).ok;
+}
+
 /* (S2)s1, (float4)s, (S)v: the source's components in order, rebuilt as the target type. */
 static ir_expr *build_restructure(builder *b, const hfx_expr *e) {
     ir_expr *x = build_expr(b, e->args[0]);
@@ -332,8 +342,7 @@ static ir_expr *build_expr(builder *b, const hfx_expr *e) {
         if (r && r->n == 1 && hfx_type_equal(r->a[0]->type, r->type)) return r->a[0];
         return r;
     case EX_CAST:
-        if ((e->type->kind == TY_STRUCT || e->args[0]->type->kind == TY_STRUCT) && hfx_type_components(e->args[0]->type) > 1)
-            return build_restructure(b, e);
+        if (restructures(e->args[0]->type, e->type)) return build_restructure(b, e);
         r = build_children(b, e, IE_CONVERT, e->type);
         if (r && r->n == 1 && hfx_type_equal(r->a[0]->type, r->type)) return r->a[0];
         return r;
@@ -601,6 +610,16 @@ static bool bind_uniform_params(builder *b, const hfx_expr *compile, ir_func *en
     return true;
 }
 
+/* The compile arguments were built after the entry, and the functions they call with them
+ * (`strokePS(fadeout(t, m, f))`): the entry, which now reads them, goes back to the end. */
+static void move_entry_last(ir_shader *sh, ir_func *entry) {
+    uint32_t at = 0;
+    while (at < sh->func_count && sh->funcs[at] != entry) at++;
+    if (at == sh->func_count) return;
+    memmove(&sh->funcs[at], &sh->funcs[at + 1], sizeof *sh->funcs * (sh->func_count - at - 1));
+    sh->funcs[sh->func_count - 1] = entry;
+}
+
 ir_shader *ir_build(ir_ctx *c, const hfx_expr *compile, ir_stage stage) {
     const hfx_func *f = compile->fn ? compile->fn : find_entry(c, compile);
     if (!f) {
@@ -616,6 +635,7 @@ ir_shader *ir_build(ir_ctx *c, const hfx_expr *compile, ir_stage stage) {
     if (!entry || b.failed) return NULL;
     entry->is_entry = true;
     if (!bind_uniform_params(&b, compile, entry)) return NULL;
+    move_entry_last(b.sh, entry);
     b.sh->entry = entry;
     return b.failed ? NULL : b.sh;
 }
