@@ -632,12 +632,37 @@ static void functions_in_compile_arguments(void) {
     CHECK_NEAR(px[2], 1.0f, TOL);
 }
 
+/* Entry-point arrays with a semantic take one register each (`float4 t[2] : TEXCOORD0` is
+ * TEXCOORD0 and TEXCOORD1), in both directions; an output struct member without a semantic
+ * goes nowhere. uv[0] is the quad's TEXCOORD0 (u, v, 0, 1): t[1] = (0, 1, 0.75, 0), so the pixel
+ * shader gives (t[0].x, t[0].y, t[1].z, t[1].y) = (0.25, 0.5, 0.75, 1) either way. */
+static void entry_point_arrays(void) {
+    const char *src =
+        "struct VO { float4 p : POSITION; float4 t[2] : TEXCOORD0; float unused; };\n"
+        "VO vs(float4 p : POSITION, float4 uv[2] : TEXCOORD0) {\n"
+        "  VO o; o.p = p; o.t[0] = float4(0.25, 0.5, 0, 0); o.t[1] = float4(uv[0].zw, 0.75, 0) + uv[1] * 0;\n"
+        "  o.unused = 3; return o; }\n"
+        "float4 apart(float4 a : TEXCOORD0, float4 b : TEXCOORD1) : COLOR { return float4(a.xy, b.z, b.y); }\n"
+        "float4 whole(float4 t[2] : TEXCOORD0) : COLOR { return float4(t[0].xy, t[1].z, t[1].y); }\n"
+        "technique A { pass P { VertexShader = compile vs_3_0 vs(); PixelShader = compile ps_3_0 apart(); } }\n"
+        "technique W { pass P { VertexShader = compile vs_3_0 vs(); PixelShader = compile ps_3_0 whole(); } }\n";
+    for (int t = 0; t < 2; t++) {
+        float px[4] = {0};
+        CHECK(render(src, t ? "W" : "A", NULL, 0, W / 2, H / 2, px));
+        CHECK_NEAR(px[0], 0.25f, TOL);
+        CHECK_NEAR(px[1], 0.5f, TOL);
+        CHECK_NEAR(px[2], 0.75f, TOL);
+        CHECK_NEAR(px[3], 1.0f, TOL);
+    }
+}
+
 int main(void) {
     gl = test_gl_create(W, H);
     if (!gl) test_skip("no OSMesa GL 3.3 context");
     load_gl();
     RUN(mul_row_vector);
     RUN(functions_in_compile_arguments);
+    RUN(entry_point_arrays);
     RUN(scalar_casts_fill_structs_and_arrays);
     RUN(pow_of_negative_base);
     RUN(pow_small_of_expression);
