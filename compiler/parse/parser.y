@@ -404,6 +404,7 @@ unary
     | '~' unary                              { $$ = pb_unary(ctx, OP_BITNOT, $2, @1); }
     | '(' ctor_type ')' unary                { $$ = pb_cast(ctx, $2, $4, @1); }
     | '(' ctor_type dims ')' unary           { $$ = pb_cast(ctx, pb_array_type(ctx, $2, $3), $5, @1); }
+    | '(' struct_spec ')' unary              { ctx->pending_struct = NULL; $$ = pb_cast(ctx, $2, $4, @1); }
     ;
 
 /* The binary operators in one rule: precedence declarations order them like C, which keeps
