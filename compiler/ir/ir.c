@@ -182,6 +182,33 @@ static ir_var *lookup_var(builder *b, const hfx_expr *e) {
 
 static ir_func *build_func(builder *b, const hfx_func *f, hfx_loc use);
 
+/* `S[1]` of a sampler array parameter with a constant index: the element's own sampler (each
+ * element of `sampler S[2] = {...}` is a sampler of the effect), one GLSL sampler per element
+ * read. NULL when e is no such read. */
+static ir_expr *sampler_element(builder *b, const hfx_expr *e) {
+    const hfx_expr *base = e->args[0], *index = e->args[1];
+    const hfx_decl *d = base->kind == EX_IDENT ? base->sym : NULL;
+    const hfx_fx_effect *fx = b->c->fx;
+    if (!d || !d->is_global || !fx || d->index >= fx->top_param_count || d->type->kind != TY_ARRAY ||
+        d->type->elem->kind != TY_SAMPLER || index->kind != EX_INT || index->ival < 0 ||
+        index->ival >= (int64_t)fx->params[d->index].child_count)
+        return NULL;
+    uint32_t param = fx->params[d->index].first_child + (uint32_t)index->ival;
+    ir_var *v = NULL;
+    for (uint32_t i = 0; i < b->sh->global_count && !v; i++)
+        if (b->sh->globals[i]->kind == IRV_SAMPLER && b->sh->globals[i]->param == param) v = b->sh->globals[i];
+    if (!v) {
+        v = new_var(b, IRV_SAMPLER, d, d->type->elem);
+        v->param = param;
+        v->dim = d->type->elem->dim;
+        v->glsl = hfx_arena_printf(b->c->arena, "%s_%u", hfx_glsl_name(b->c->arena, d->name), (unsigned)index->ival);
+        add_global(b, v);
+    }
+    ir_expr *r = ir_new_expr(b->c, IE_VAR, v->type, e->loc, 0);
+    r->var = v;
+    return r;
+}
+
 static ir_expr *build_call(builder *b, const hfx_expr *e) {
     ir_expr *r;
     if (e->fn) {
@@ -346,7 +373,9 @@ static ir_expr *build_expr(builder *b, const hfx_expr *e) {
         r = build_children(b, e, IE_CONVERT, e->type);
         if (r && r->n == 1 && hfx_type_equal(r->a[0]->type, r->type)) return r->a[0];
         return r;
-    case EX_INDEX: return build_children(b, e, IE_INDEX, e->type);
+    case EX_INDEX:
+        if ((r = sampler_element(b, e))) return r;
+        return build_children(b, e, IE_INDEX, e->type);
     case EX_SWIZZLE:
         r = build_children(b, e, IE_SWIZZLE, e->type);
         if (r) {
@@ -405,6 +434,7 @@ static void build_decls(builder *b, const hfx_stmt *s, stmt_list *out) {
     for (uint32_t i = 0; i < s->decl_count; i++) {
         const hfx_decl *d = s->decls[i];
         if (d->kind != DECL_VAR) continue; /* local struct / typedef declarations: types only */
+        if (d->type && d->type->kind == TY_STRING) continue; /* `string s = "x";`: nothing a shader computes with */
         ir_var *v = new_var(b, IRV_LOCAL, d, d->type);
         v->glsl = local_name(b, d->name);
         ir_stmt *st = new_stmt(b, IS_DECL, d->loc);
