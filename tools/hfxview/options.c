@@ -192,6 +192,7 @@ int hv_options_parse(hv_options *o, int argc, char **argv, char *err, size_t err
         } else if (TAKE("--mesh")) {
             if (!*v) return fail(err, errlen, "missing mesh after", a);
             o->mesh = v;
+            o->mesh_given = 1;
         } else if (TAKE("--size")) {
             if (!parse_size(v, &o->width, &o->height)) return fail(err, errlen, "--size takes WIDTHxHEIGHT, not", v);
         } else if (TAKE("--texture")) {
