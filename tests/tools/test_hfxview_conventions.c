@@ -320,6 +320,32 @@ static void directx_names_light_the_sphere(void) {
     free(out);
 }
 
+/* --technique all: each technique into OUT.N.png, named on stdout (the corpus survey's mode). */
+static void every_technique(void) {
+    static const char fx[] =
+        "float4x4 MatrixTransform;\n"
+        "float4 VS(float4 p : POSITION0) : POSITION0 { return mul(p, MatrixTransform); }\n"
+        "float4 Red() : COLOR0 { return float4(1, 0, 0, 1); }\n"
+        "float4 Green() : COLOR0 { return float4(0, 1, 0, 1); }\n"
+        "technique A { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 Red(); } }\n"
+        "technique B { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 Green(); } }\n";
+    char *path = view_format("%s/two.fx", tmp), *out = NULL;
+    FILE *f = fopen(path, "w");
+    if (f) fputs(fx, f), fclose(f);
+    char *cmd = view_format("%s %s --technique all -o %s/two.png --size 16x16", hfxview, path, tmp);
+    CHECK_INT(view_run(cmd, &out), 0);
+    CHECK_CONTAINS(out, "technique 0 A\ntechnique 1 B\n");
+    view_png img;
+    char *png = view_format("%s/two.1.png", tmp);
+    if (view_png_read(&img, png) == 0) {
+        CHECK(view_pixel_near(&img, 8, 8, 0, 255, 0, 0));
+        view_png_free(&img);
+    } else {
+        CHECK(0);
+    }
+    free(png), free(cmd), free(out), free(path);
+}
+
 int main(void) {
     test_gl *gl = test_gl_create(4, 4);
     if (!gl) test_skip("no OSMesa context");
@@ -344,6 +370,7 @@ int main(void) {
         RUN(sprite_effect_fills_the_image);
         RUN(skinned_effect_shows_its_mesh);
         RUN(directx_names_light_the_sphere);
+        RUN(every_technique);
         test_remove_dir(tmp);
         free(tmp);
         free(hfxview);

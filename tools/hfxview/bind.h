@@ -11,7 +11,7 @@
  * particle sizes and durations; identity for matrix arrays (bone palettes). Lights, materials
  * and weights are only given values when the effect left them at zero (no initializer), so an
  * effect's own defaults win, unless --light names the light; the camera position and the clock
- * always follow the scene. docs/annotations.md lists every convention. */
+ * always follow the scene. tools/hfxview/README.md lists every convention. */
 #ifndef HFXVIEW_BIND_H
 #define HFXVIEW_BIND_H
 

@@ -9,7 +9,7 @@
 
 const char *hv_usage(void) {
     return "usage: hfxview EFFECT.fx|EFFECT.hfxo [-o OUT.png] [options]\n"
-           "  --technique NAME|N        technique to draw (default: the first)\n"
+           "  --technique NAME|N|all    technique to draw (default: the first); all: each to OUT.N.png\n"
            "  --pass all|N              draw every pass in order (default) or only pass N\n"
            "  --mesh NAME|FILE.obj      sphere (default), plane, quad, cube, torus, teapot, screen (the\n"
            "                            image in pixels, for post-processing), or an OBJ file\n"
