@@ -219,6 +219,28 @@ static void palettes_weights_and_defaults(void) {
     hfx_effect_destroy(fx);
 }
 
+/* Names the table lacks, by their ending: a light's colour, a colour (white; fog and emission
+ * stay black), a density, a texture's size, a far plane. A viewport size and no matrix: the
+ * effect draws in pixels (DigitalRise's post-processing). */
+static void endings_and_pixel_effects(void) {
+    hfx_effect *fx = load("float3 SunLight;\nfloat4 InstanceColor;\nfloat4 FogColor;\nfloat Density;\n"
+                          "float2 ReflectionTextureSize;\nfloat CameraFar;\nfloat2 ViewportSize : VIEWPORTSIZE;\n");
+    if (!fx) return;
+    hv_bind_scene(fx, &scene);
+    expect(fx, "SunLight", light_rgb, 3);
+    expect(fx, "InstanceColor", white, 4);
+    expect(fx, "FogColor", (const float[4]){0, 0, 0, 0}, 4);
+    expect(fx, "Density", (const float[1]){1}, 1);
+    expect(fx, "ReflectionTextureSize", (const float[2]){256, 256}, 2);
+    expect(fx, "CameraFar", (const float[1]){100}, 1);
+    expect(fx, "ViewportSize", (const float[2]){128, 128}, 2);
+    CHECK_INT(hv_effect_wants_pixels(fx), 1);
+    hfx_effect_destroy(fx);
+    fx = load("float2 ViewportSize;\nfloat4x4 World;\n");
+    if (fx) CHECK_INT(hv_effect_wants_pixels(fx), 0); /* a matrix: it places its mesh in the scene */
+    hfx_effect_destroy(fx);
+}
+
 /* The view-only binding (each frame) moves the clock and the camera, and leaves lights alone. */
 static void view_binding_follows_the_clock(void) {
     hfx_effect *fx = load("float Time;\nfloat3 LightDir;\nfloat3 EyePosition;\n");
@@ -362,6 +384,7 @@ int main(void) {
     RUN(directx_sdk_and_engine_names);
     RUN(palettes_weights_and_defaults);
     RUN(view_binding_follows_the_clock);
+    RUN(endings_and_pixel_effects);
     hfx_device_destroy(dev);
     test_gl_destroy(gl);
     hfxview = view_build_path("tools/hfxview/hfxview");

@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #define PI HV_PI
 
@@ -191,10 +192,25 @@ static int is_pixel_transform(const hfx_param *p) {
            (!strcmp(stem, "matrixtransform") || !strcmp(stem, "spritetransform") || !strcmp(stem, "transformmatrix"));
 }
 
+/* DigitalRise's post-processing: a viewport size (by name or VIEWPORTSIZE) and no matrix at
+ * all, so the vertex shader maps pixels to clip space itself. */
+static int is_viewport_size_param(hfx_param *p) {
+    char low[64];
+    const char *sem = hfx_param_semantic(p);
+    hv_lower_copy(low, sizeof low, hfx_param_name(p));
+    return !strcmp(low, "viewportsize") || !strcmp(low, "viewportpixelsize") ||
+           (sem && (!strcasecmp(sem, "ViewportSize") || !strcasecmp(sem, "ViewportPixelSize")));
+}
+
 int hv_effect_wants_pixels(hfx_effect *fx) {
-    for (size_t i = 0; i < hfx_effect_param_count(fx); i++)
-        if (is_pixel_transform(hfx_effect_param_at(fx, i))) return 1;
-    return 0;
+    int viewport = 0, matrices = 0;
+    for (size_t i = 0; i < hfx_effect_param_count(fx); i++) {
+        hfx_param *p = hfx_effect_param_at(fx, i);
+        if (is_pixel_transform(p)) return 1;
+        viewport |= is_viewport_size_param(p);
+        matrices |= hfx_param_get_class(p) == HFX_CLASS_MATRIX;
+    }
+    return viewport && !matrices;
 }
 
 /* ---- the whole effect -------------------------------------------------------------------- */

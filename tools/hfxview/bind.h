@@ -48,8 +48,9 @@ int hv_bind_scene_report(hfx_effect *fx, const hv_scene *s, const char **how, si
 /* The numeric parameters no convention recognised, as ", "-separated "Name" or "Name = 0" (still
  * zero: the likely reason for a black picture) into out; how many. */
 size_t hv_unbound_list(hfx_effect *fx, const char *const *how, char *out, size_t cap);
-/* 1 when the effect draws in pixels through SpriteBatch's MatrixTransform (SpriteEffect and its
- * kin): a viewer then draws the image's rectangle rather than a sphere. */
+/* 1 when the effect draws in pixels: SpriteBatch's MatrixTransform (SpriteEffect and its kin),
+ * or a viewport size and no matrix (DigitalRise's post-processing maps pixels itself): a
+ * viewer then draws the image's rectangle rather than a sphere. */
 int hv_effect_wants_pixels(hfx_effect *fx);
 /* Only what follows the camera and the viewport (semantics, matrices, the camera position), as
  * a viewer does every frame: lights and materials keep what the user set, zeros included. */

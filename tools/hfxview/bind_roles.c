@@ -88,6 +88,28 @@ static const struct { const char *stem; role r; float v; } roles[] = {
 /* c1 and c3 (the seed tutorials' attenuation constants) would lose their digits as stems. */
 static const struct { const char *name; float v; } exact_scalars[] = {{"c1", 1}, {"c3", 0.01f}};
 
+/* Endings that say what a name the table lacks is: "SunLight" and "SkyLight" are light
+ * colours, "InstanceColor" a colour (white; emission, fog and borders stay black), "Density"
+ * and "BumpStrength" weights of 1, "ReflectionTextureSize" a texture's size. */
+static const struct { const char *ending; role r; float v; } endings[] = {
+    {"light", R_LIGHT_COLOR, 0}, {"color", R_WHITE, 0}, {"colour", R_WHITE, 0}, {"intensity", R_SCALAR, 1},
+    {"strength", R_SCALAR, 1}, {"amount", R_SCALAR, 1}, {"density", R_SCALAR, 1}, {"texturesize", R_SCALAR, 256},
+    {"mapsize", R_SCALAR, 256}, {"far", R_SCALAR, 100}, {"farplane", R_SCALAR, 100}, {"farclip", R_SCALAR, 100},
+    {"near", R_SCALAR, 0.1f}, {"nearplane", R_SCALAR, 0.1f}, {"nearclip", R_SCALAR, 0.1f},
+};
+
+static int ends_in(const char *s, const char *ending) {
+    size_t n = strlen(s), k = strlen(ending);
+    return n >= k && !strcmp(s + n - k, ending);
+}
+
+static role role_by_ending(const char *stem, float *v) {
+    if (strstr(stem, "emissive") || strstr(stem, "fog") || strstr(stem, "border") || strstr(stem, "clear")) return R_NONE;
+    for (size_t i = 0; i < sizeof endings / sizeof *endings; i++)
+        if (ends_in(stem, endings[i].ending)) return *v = endings[i].v, endings[i].r;
+    return R_NONE;
+}
+
 static role role_of(const char *name, float *v) {
     char stem[128];
     for (size_t i = 0; i < sizeof exact_scalars / sizeof *exact_scalars; i++)
@@ -95,7 +117,7 @@ static role role_of(const char *name, float *v) {
     hv_name_stem(stem, sizeof stem, name);
     for (size_t i = 0; i < sizeof roles / sizeof *roles; i++)
         if (!strcmp(stem, roles[i].stem)) return *v = roles[i].v, roles[i].r;
-    return R_NONE;
+    return role_by_ending(stem, v);
 }
 
 enum { ARRAY_LIGHTS = 3 }; /* how many lights light arrays get */
