@@ -41,3 +41,12 @@ if(GLSLANG_INCLUDE_DIR AND HFX_GLSLANG_glslang)
   target_link_libraries(hfx_glslang INTERFACE ${HFX_GLSLANG_PATHS} stdc++ pthread m)
 endif()
 find_program(GLSLANG_VALIDATOR glslangValidator)
+# SPIRV-Tools' validator (C interface, C++ inside): the Vulkan back end checks every module
+# before vkCreateShaderModule, since a driver given invalid SPIR-V is undefined behaviour.
+find_path(SPIRV_TOOLS_INCLUDE_DIR spirv-tools/libspirv.h)
+find_library(SPIRV_TOOLS_LIBRARY NAMES SPIRV-Tools)
+if(SPIRV_TOOLS_INCLUDE_DIR AND SPIRV_TOOLS_LIBRARY)
+  add_library(hfx_spirv_tools INTERFACE)
+  target_include_directories(hfx_spirv_tools INTERFACE ${SPIRV_TOOLS_INCLUDE_DIR})
+  target_link_libraries(hfx_spirv_tools INTERFACE ${SPIRV_TOOLS_LIBRARY} stdc++ pthread m)
+endif()

@@ -48,6 +48,11 @@ configure_file(${CMAKE_CURRENT_LIST_DIR}/hfx.pc.in ${PROJECT_BINARY_DIR}/hfx.pc 
 set(HFX_PC_NAME hfx-runtime)
 set(HFX_PC_DESCRIPTION "The hfx runtime alone: loads compiled effects (.hfxo), no compiler")
 set(HFX_PC_LIBS "-lhfx_runtime -lhfx_common -lz -lm")
+set(HFX_CMAKE_RUNTIME_LIBS hfx::hfx_common)
+if(HFX_VULKAN) # the Vulkan back end validates SPIR-V with SPIRV-Tools (C++ inside)
+  string(APPEND HFX_PC_LIBS " -lSPIRV-Tools -lstdc++ -lpthread")
+  list(APPEND HFX_CMAKE_RUNTIME_LIBS "${SPIRV_TOOLS_LIBRARY}" stdc++ pthread m)
+endif()
 configure_file(${CMAKE_CURRENT_LIST_DIR}/hfx.pc.in ${PROJECT_BINARY_DIR}/hfx-runtime.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/hfx.pc ${PROJECT_BINARY_DIR}/hfx-runtime.pc
   DESTINATION ${HFX_INSTALL_PKGCONFIGDIR})

@@ -187,6 +187,7 @@ void hfx_vk_device_destroy(hfx_device *dev) {
         hfx_vk_samplers_free(dev);
         frames_free(dev);
         hfx_vk_chunk_free(dev, &dev->vk->zero);
+        hfx_vk_validator_free(dev->vk);
         free(dev->vk);
     }
     free(dev);
@@ -240,6 +241,7 @@ hfx_device *hfx_device_create_vulkan(const hfx_vulkan_desc *d, char **error) {
         return create_failed(dev, NULL, error);
     }
     read_limits(vk, d);
+    if (hfx_vk_validator_make(vk)) return create_failed(dev, "out of memory", error);
     vk->last_pso = UINT32_MAX;
     hfx_rs_defaults(dev->rs);
     if (hfx_vk_chunk_make(dev, 64, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, &vk->zero)) return create_failed(dev, NULL, error);

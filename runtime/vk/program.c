@@ -3,8 +3,15 @@
  * sampler per sampler the program reads) and pipeline layout, and the map from the effect's
  * parameters to the block: packed ones into hfx_c (the D3D9 register file, laid out as GL's
  * hfx_c[]), the others leaf by leaf at the offsets the module declares (reflect.c). */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+/* libspirv.h defines (not declares) a const with external linkage; renamed here so that a
+ * program including it too (the compiler's tests) links with this file. */
+#define kDefaultMaxIdBound hfx_vk_spv_max_id_bound
+#include <spirv-tools/libspirv.h>
+#undef kDefaultMaxIdBound
 
 #include "spirv_loc.h"
 #include "vk/vk.h"
@@ -18,11 +25,63 @@ typedef struct build {
 
 static const char *name_of(const hfx_shared *sh) { return sh->fx->source_name ? sh->fx->source_name : "effect"; }
 
-static int make_module(hfx_shared *sh, const hfx_fx_code *code, const char *what, VkShaderModule *out) {
+/* Once per device, not per module: the context holds the grammar tables the validator reads. */
+int hfx_vk_validator_make(struct hfx_vk_device *vk) {
+    vk->spirv = spvContextCreate(SPV_ENV_VULKAN_1_0);
+    return vk->spirv ? HFX_OK : HFX_ERR_MEMORY;
+}
+
+void hfx_vk_validator_free(struct hfx_vk_device *vk) {
+    if (vk->spirv) spvContextDestroy(vk->spirv);
+    vk->spirv = NULL;
+}
+
+/* "technique 'T', pass 'P'" of the first pass (or shader-array variant) that uses program index,
+ * for messages: programs are per pass, so that names the code the user wrote. */
+static void program_user(const hfx_fx_effect *fx, uint32_t index, char *out, size_t n) {
+    uint32_t pass = HFX_NONE;
+    for (uint32_t i = 0; i < fx->pass_count && pass == HFX_NONE; i++)
+        if (fx->passes[i].program == index) pass = i;
+    for (uint32_t i = 0; i < fx->variant_count && pass == HFX_NONE; i++)
+        if (fx->variants[i].program == index && fx->variants[i].pass < fx->pass_count) pass = fx->variants[i].pass;
+    const char *tech = "";
+    for (uint32_t t = 0; t < fx->technique_count && pass != HFX_NONE; t++)
+        if (pass - fx->techniques[t].first_pass < fx->techniques[t].pass_count) tech = fx->techniques[t].name;
+    if (pass == HFX_NONE) snprintf(out, n, "program %u", index);
+    else snprintf(out, n, "technique '%s', pass '%s'", tech ? tech : "", fx->passes[pass].name ? fx->passes[pass].name : "");
+}
+
+/* Vulkan leaves invalid SPIR-V undefined (a driver may crash or hang on it), so a module the
+ * validator refuses is the effect's load error and never reaches vkCreateShaderModule. Size and
+ * magic first: the cheap refusal of what is not SPIR-V at all. */
+static int check_module(hfx_shared *sh, uint32_t index, const hfx_fx_code *code, const char *what) {
     struct hfx_vk_device *vk = sh->dev->vk;
+    const uint32_t *words = (const uint32_t *)(const void *)code->data;
+    char user[160];
     if (!code->data || code->size < 20 || code->size % 4)
         return hfx_rt_fail(sh->dev, HFX_ERR_LOAD, "%s: the %s shader has no SPIR-V for Vulkan (compile with the "
                            "spirv-vk target)", name_of(sh), what);
+    program_user(sh->fx, index, user, sizeof user);
+    if (words[0] != 0x07230203u)
+        return hfx_rt_fail(sh->dev, HFX_ERR_LOAD, "%s: %s: the %s shader's code is not SPIR-V (no magic number)",
+                           name_of(sh), user, what);
+    spv_diagnostic diag = NULL;
+    spv_result_t r = spvValidateBinary(vk->spirv, words, code->size / 4, &diag);
+    int rc = HFX_OK;
+    if (r != SPV_SUCCESS) {
+        const char *text = diag && diag->error ? diag->error : "no reason given";
+        int len = (int)strcspn(text, "\n"); /* the reason; the disassembled instruction follows it */
+        rc = hfx_rt_fail(sh->dev, HFX_ERR_LOAD, "%s: %s: the %s shader's SPIR-V is not valid for Vulkan 1.0: %.*s",
+                         name_of(sh), user, what, len, text);
+    }
+    spvDiagnosticDestroy(diag);
+    return rc;
+}
+
+static int make_module(hfx_shared *sh, uint32_t index, const hfx_fx_code *code, const char *what, VkShaderModule *out) {
+    struct hfx_vk_device *vk = sh->dev->vk;
+    int rc = check_module(sh, index, code, what);
+    if (rc) return rc;
     VkShaderModuleCreateInfo ci = {.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO, .codeSize = code->size,
                                    .pCode = (const uint32_t *)(const void *)code->data};
     VkResult r = vk->fn.CreateShaderModule(vk->device, &ci, NULL, out);
@@ -144,8 +203,8 @@ int hfx_vk_program_build(hfx_shared *sh, uint32_t index) {
     if (fp->sampler_count > 32)
         return hfx_rt_fail(sh->dev, HFX_ERR_LOAD, "%s: a program samples more than 32 samplers", name_of(sh));
     p->sampler_count = fp->sampler_count;
-    int rc = make_module(sh, &fp->code[HFX_STAGE_VERTEX][HFX_TARGET_SPIRV_VK], "vertex", &p->vs);
-    if (!rc) rc = make_module(sh, &fp->code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV_VK], "pixel", &p->fs);
+    int rc = make_module(sh, index, &fp->code[HFX_STAGE_VERTEX][HFX_TARGET_SPIRV_VK], "vertex", &p->vs);
+    if (!rc) rc = make_module(sh, index, &fp->code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV_VK], "pixel", &p->fs);
     if (!rc) rc = read_block(&b, fp);
     if (!rc) rc = map_uniforms(&b, fp);
     if (!rc) rc = make_layouts(sh, p);

@@ -104,6 +104,7 @@ struct hfx_vk_device {
     uint32_t sampler_count, sampler_cap;
     int mirror_once;                /* samplerMirrorClampToEdge */
     int custom_border;              /* VK_EXT_custom_border_color (without format) */
+    struct spv_context_t *spirv;    /* SPIRV-Tools' validator for Vulkan 1.0 (program.c): every module passes it */
 };
 
 struct hfx_vertex_layout {
@@ -209,6 +210,8 @@ void hfx_vk_block_free(vk_block *b);
 
 /* program.c */
 int hfx_vk_program_build(hfx_shared *sh, uint32_t index);
+int hfx_vk_validator_make(struct hfx_vk_device *vk); /* 0, or HFX_ERR_MEMORY */
+void hfx_vk_validator_free(struct hfx_vk_device *vk);
 void hfx_vk_program_free(hfx_device *dev, vk_program *p);
 
 /* pipeline.c */

@@ -1,0 +1,103 @@
+/* test_program.c (Vulkan): a .hfxo whose SPIR-V for Vulkan is corrupted is refused at load with
+ * the validator's reason, naming the effect, pass and stage, before the driver sees the module
+ * (runtime/vk/program.c); the same file uncorrupted loads and draws. The .hfxo is written by
+ * the compiler's own writer, so its CRC is right and only the module is wrong. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "effect.h"
+#include "hfx/hfxc.h"
+#include "vk_draw.h"
+
+static test_vk *V;
+static const float CLEAR[4] = {0, 0, 0, 1};
+static const vk_quad FULL = {-1, -1, 1, 1, 0.5f, 1, 1, 0};
+
+static const char red[] = "float4 VS(float4 p : POSITION) : POSITION { return p; }\n"
+                          "float4 PS() : COLOR { return float4(1, 0, 0, 1); }\n"
+                          "technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n";
+
+/* The .hfxo of `red` with word `word` of pass P's pixel shader module set to `value`
+ * (word UINT32_MAX: unchanged). */
+static void *hfxo_with(uint32_t word, uint32_t value, size_t *size) {
+    hfxc_options opt = {0};
+    opt.targets = 1u << HFX_TARGET_SPIRV_VK;
+    hfxc_result *r = hfxc_compile_memory(red, sizeof red - 1, "red.fx", &opt);
+    hfx_fx_effect *fx = hfxc_result_take_effect(r);
+    hfxc_result_free(r);
+    CHECK(fx != NULL && fx->program_count == 1);
+    if (!fx || fx->program_count != 1) return hfx_fx_effect_free(fx), NULL;
+    hfx_fx_code *ps = &fx->programs[0].code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV_VK];
+    CHECK(ps->size >= 20 && ps->size % 4 == 0);
+    if (word != UINT32_MAX && word < ps->size / 4) memcpy(ps->data + 4 * word, &value, 4);
+    void *out = NULL;
+    CHECK(hfx_fx_write_hfxo(fx, &out, size) == 0);
+    hfx_fx_effect_free(fx);
+    return out;
+}
+
+/* Loads the .hfxo; NULL with *errors set when refused. */
+static hfx_effect *load(void *bytes, size_t size, char **errors) {
+    *errors = NULL;
+    hfx_effect *fx = bytes ? hfx_effect_load_memory(test_vk_device(V), bytes, size, "red.hfxo", NULL, errors) : NULL;
+    free(bytes);
+    return fx;
+}
+
+static void check_refused(uint32_t word, uint32_t value, const char *expected) {
+    size_t size = 0;
+    char *errors = NULL;
+    void *bytes = hfxo_with(word, value, &size);
+    hfx_effect *fx = load(bytes, size, &errors);
+    CHECK(fx == NULL);
+    CHECK_STR(errors ? errors : "", expected);
+    CHECK_STR(hfx_device_last_error(test_vk_device(V)), expected);
+    hfx_free(errors);
+    hfx_effect_destroy(fx);
+}
+
+/* Word 0 is the magic number 0x07230203: anything else is not SPIR-V, refused before the
+ * validator runs. */
+static void no_magic_refused(void) {
+    check_refused(0, 0x03022307u, "red.fx: technique 'T', pass 'P': the pixel shader's code is not SPIR-V (no "
+                                  "magic number)");
+}
+
+/* Word 3 is the ID bound, one more than the largest ID: 1 leaves no ID valid, and SPIRV-Tools
+ * reports the first instruction defining one (spirv-val says the same of the file). */
+static void bad_bound_refused(void) {
+    check_refused(3, 1, "red.fx: technique 'T', pass 'P': the pixel shader's SPIR-V is not valid for Vulkan "
+                        "1.0: Result <id> '1' must be less than the ID bound '1'.");
+}
+
+/* The device still works after the refusals, and the uncorrupted file draws its red. */
+static void valid_draws(void) {
+    size_t size = 0;
+    char *errors = NULL;
+    void *bytes = hfxo_with(UINT32_MAX, 0, &size);
+    hfx_effect *fx = load(bytes, size, &errors);
+    if (!fx) fprintf(stderr, "load: %s\n", errors ? errors : "");
+    hfx_free(errors);
+    CHECK(fx != NULL);
+    if (!fx) return;
+    CHECK_INT(vk_draw(V, fx, "T", &FULL, 1, CLEAR), 0);
+    CHECK_PIXEL(V, 8, 8, 255, 0, 0, 255);
+    hfx_effect_destroy(fx);
+}
+
+int main(void) {
+    const char *why = NULL;
+    V = test_vk_create(16, 16, &why);
+    if (!V) test_skip(why ? why : "no Vulkan device");
+    hfx_vertex_layout *layout = vk_layout(V);
+    test_vk_target(V)->layout = layout;
+    RUN(no_magic_refused);
+    RUN(bad_bound_refused);
+    RUN(valid_draws);
+    hfx_vertex_layout_destroy(layout);
+    int messages = test_vk_messages(V);
+    test_vk_destroy(V);
+    CHECK_INT(messages, 0); /* the validation layer saw no invalid module */
+    return test_summary();
+}
