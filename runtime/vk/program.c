@@ -69,10 +69,16 @@ static int check_module(hfx_shared *sh, uint32_t index, const hfx_fx_code *code,
     spv_result_t r = spvValidateBinary(vk->spirv, words, code->size / 4, &diag);
     int rc = HFX_OK;
     if (r != SPV_SUCCESS) {
+        /* The reason's first line (the disassembled instruction follows it); it can quote the
+         * module's own bytes, so what is not printable ASCII shows as '?'. */
         const char *text = diag && diag->error ? diag->error : "no reason given";
-        int len = (int)strcspn(text, "\n"); /* the reason; the disassembled instruction follows it */
-        rc = hfx_rt_fail(sh->dev, HFX_ERR_LOAD, "%s: %s: the %s shader's SPIR-V is not valid for Vulkan 1.0: %.*s",
-                         name_of(sh), user, what, len, text);
+        char reason[256];
+        size_t n = 0;
+        for (; text[n] && text[n] != '\n' && n + 1 < sizeof reason; n++)
+            reason[n] = (unsigned char)text[n] < 0x20 || (unsigned char)text[n] > 0x7e ? '?' : text[n];
+        reason[n] = '\0';
+        rc = hfx_rt_fail(sh->dev, HFX_ERR_LOAD, "%s: %s: the %s shader's SPIR-V is not valid for Vulkan 1.0: %s",
+                         name_of(sh), user, what, reason);
     }
     spvDiagnosticDestroy(diag);
     return rc;

@@ -71,6 +71,14 @@ static void bad_bound_refused(void) {
                         "1.0: Result <id> '1' must be less than the ID bound '1'.");
 }
 
+/* Words 7.. are `OpExtInstImport %1 "GLSL.std.450"`; word 9 is "GLSL": with byte 0xC0 for its first 'L'
+ * the import names no instruction set. The validator quotes the name; the byte that is not
+ * printable ASCII shows as '?' (spirv-val prints it raw). */
+static void bad_import_refused(void) {
+    check_refused(9, 0x4C53C047u, "red.fx: technique 'T', pass 'P': the pixel shader's SPIR-V is not valid for Vulkan "
+                                  "1.0: Invalid extended instruction import 'G?SL.std.450'");
+}
+
 /* The device still works after the refusals, and the uncorrupted file draws its red. */
 static void valid_draws(void) {
     size_t size = 0;
@@ -94,6 +102,7 @@ int main(void) {
     test_vk_target(V)->layout = layout;
     RUN(no_magic_refused);
     RUN(bad_bound_refused);
+    RUN(bad_import_refused);
     RUN(valid_draws);
     hfx_vertex_layout_destroy(layout);
     int messages = test_vk_messages(V);
