@@ -9,7 +9,6 @@
 #include <string.h>
 
 #include "glsl/glsl.h"
-#include "glsl/glslang.h"
 
 /* A stage built and lowered once: programs share it (BasicEffect's 32 programs use 20 vertex
  * and 4 pixel shaders; the IR is only read after lowering). */
@@ -425,33 +424,6 @@ int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps,
     return program_of(cg, sh, flat_colors, vs ? vs->loc : ps ? ps->loc : (hfx_loc){0, 1, 1}, out);
 }
 
-/* glslang's self-check of a bytecode program's GLSL (unless HFXC_NO_SELF_CHECK), here rather
- * than in the effect reader, so no translation of fxc's bytecode reaches a driver unchecked: a
- * rejection is hfx's bug, an X9000 at the shader's first token. */
-static int self_check_bytecode(hfx_codegen *cg, const d3d9_shader *vs, const d3d9_shader *ps, const hfx_fx_program *p) {
-    hfx_diags *d = cg->c.diags;
-    if ((d->flags & HFXC_NO_SELF_CHECK) || !hfx_glslang_available()) return 0;
-    if (!hfx_glslang_begin()) {
-        hfx_error(d, (hfx_loc){0, 1, 1}, X_INTERNAL, "internal: glslang could not start for the self-check");
-        return -1;
-    }
-    int rc = 0;
-    for (int s = 0; s < HFX_STAGE_COUNT; s++)
-        for (int t = 0; t < HFX_TARGET_SPIRV; t++) {
-            char *log = NULL;
-            if (!p->code[s][t].data || hfx_glslang_check(p->code[s][t].data, s, (hfx_target)t, &log) == 0) continue;
-            const d3d9_shader *at = s == 0 ? vs : ps;
-            const char *e = log && strstr(log, "ERROR:") ? strstr(log, "ERROR:") : log ? log : "glslang gave no reason";
-            hfx_error(d, at ? (hfx_loc){at->file_index, 0, at->base} : (hfx_loc){0, 1, 1}, X_INTERNAL,
-                      "internal: the GLSL hfx made from this %s does not compile: %.*s",
-                      at ? d3d9_model_name(at->stage, at->model) : "stand-in", (int)strcspn(e, "\n"), e);
-            free(log);
-            rc = -1;
-        }
-    hfx_glslang_end();
-    return rc;
-}
-
 /* A bytecode stage: translated (d3d9/d3d9_ir.c), lowered like a compiled one. */
 static bool bytecode_stage(hfx_codegen *cg, const d3d9_shader *s, ir_shader **sh) {
     *sh = NULL;
@@ -470,6 +442,5 @@ int hfx_codegen_d3d9_program(hfx_codegen *cg, const d3d9_shader *vs, const d3d9_
     if (!vs_ok || !ps_ok) return -1;
     const d3d9_shader *at = vs ? vs : ps;
     hfx_loc loc = at ? (hfx_loc){at->file_index, 0, at->base} : (hfx_loc){0, 1, 1};
-    if (program_of(cg, sh, flat_colors, loc, out) != 0) return -1;
-    return self_check_bytecode(cg, vs, ps, out);
+    return program_of(cg, sh, flat_colors, loc, out);
 }

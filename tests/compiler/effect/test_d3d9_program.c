@@ -502,24 +502,6 @@ static void subroutines_refused_at_instruction(void) {
     close_fixture(&x);
 }
 
-/* HFXC_TEST_BREAK_GLSL spoils every shader: the self-check inside hfx_codegen_d3d9_program must
- * refuse the program with an X9000 at the shader rather than return GLSL that does not compile. */
-static void self_check_refuses_bad_glsl(void) {
-    if (!hfx_glslang_available()) return;
-    fixture x;
-    open_fixture(&x, true);
-    x.diags.flags |= HFXC_TEST_BREAK_GLSL;
-    static const uint32_t ps[] = {PS(2, 0), OP(0x01, 2), DST(R_COLOROUT, 0, 0xf), SRC(R_CONST, 5, XYZW), END_TOKEN};
-    d3d9_shader *p = decode(&x, ps, sizeof ps / 4, 64);
-    hfx_fx_program prog;
-    CHECK_INT(hfx_codegen_d3d9_program(x.cg, NULL, p, false, &prog), -1);
-    char *text = hfx_diags_format(&x.diags, 0);
-    CHECK_CONTAINS(text, "t.fxb(0,64): error X9000: internal: the GLSL hfx made from this ps_2_0 does not compile: ERROR:");
-    free(text);
-    hfx_fx_program_clear(&prog);
-    close_fixture(&x);
-}
-
 int main(void) {
     gl = test_gl_create(W, H);
     if (gl) CHECK_INT(test_gl_fns_load(&f), 0);
@@ -532,7 +514,6 @@ int main(void) {
     RUN(vs_ps_3_0_flow_drawn);
     RUN(subroutines_refused_at_instruction);
     RUN(preshader_registers);
-    RUN(self_check_refuses_bad_glsl);
     if (gl) test_gl_destroy(gl);
     return test_summary();
 }
