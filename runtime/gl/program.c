@@ -254,6 +254,19 @@ static GLint glsl_reg_location(void *ctx, uint32_t i) {
     return b->sh->dev->gl.GetUniformLocation(b->p->object, name);
 }
 
+/* A packed parameter whose registers hold its words as they are (4 components a row) and all
+ * reach GL: Apply's one-change path sends it like a separate uniform, one glUniform4fv. */
+static void reg4_of(const hfx_rt_program *p, hfx_slot *slot) {
+    if (slot->reg_cols != 4 || slot->reg >= p->reg_active || slot->reg_rows > p->reg_active - slot->reg) return;
+    slot->mode = SLOT_REG4;
+    slot->up.call.f = p->reg_call;
+    slot->up.location = p->reg_locs[slot->reg];
+    slot->up.count = slot->reg_rows;
+    slot->up.kind = UK_FLOAT;
+    slot->up.fn = UP_F4;
+    slot->up.words = 4u * slot->reg_rows;
+}
+
 /* What Apply reads, derived once the uploads and the extras' locations are known: shared with
  * spirv_load.c, which finds the locations its own way. */
 void hfx_rt_program_ready(hfx_rt_program *p, uint32_t tops) {
@@ -263,6 +276,7 @@ void hfx_rt_program_ready(hfx_rt_program *p, uint32_t tops) {
         if (slot->mode == SLOT_REG || !slot->count) {
             /* preshaders read it: off the paths that do not look for them */
             if (hfx_preshaders_read(&p->pre, i)) slot->mode = slot->mode == SLOT_REG ? SLOT_REG_PRE : SLOT_PRE;
+            else if (slot->mode == SLOT_REG) reg4_of(p, slot);
             continue;
         }
         slot->up = p->uploads[slot->first];
@@ -462,7 +476,7 @@ void hfx_rt_upload_all(hfx_effect *fx, hfx_rt_program *p) {
         hfx_slot *s = &p->slots[r];
         if (s->held == fx->stamps[r]) continue;
         s->held = fx->stamps[r];
-        if (s->mode == SLOT_REG || s->mode == SLOT_REG_PRE) hfx_rt_reg_copy(p, s, fx->values, &regs);
+        if (s->mode == SLOT_REG || s->mode == SLOT_REG4 || s->mode == SLOT_REG_PRE) hfx_rt_reg_copy(p, s, fx->values, &regs);
         else hfx_rt_upload_slot(fx, p, s);
         if (hfx_preshaders_read(&p->pre, r)) hfx_preshaders_mark(&p->pre, r);
     }
@@ -513,7 +527,12 @@ int hfx_rt_upload_log(hfx_effect *fx, hfx_rt_program *p) {
         hfx_slot *s = &slots[r];
         if (s->held == stamps[r]) continue;
         s->held = stamps[r];
-        if (s->mode == SLOT_FLOAT)
+        if (s->mode == SLOT_REG4) { /* packed float4 / matrix: into the image, one send at the end */
+            hfx_rt_reg_put4(p, s, values + s->up.offset);
+            uint32_t last = s->reg + s->reg_rows - 1u;
+            regs.lo = s->reg < regs.lo ? s->reg : regs.lo;
+            regs.hi = last > regs.hi ? last : regs.hi;
+        } else if (s->mode == SLOT_FLOAT)
             s->up.call.f(s->up.location, s->up.count, (const void *)(values + s->up.offset));
         else if (s->mode == SLOT_MATRIX)
             s->up.call.m(s->up.location, s->up.count, GL_FALSE, (const void *)(values + s->up.offset));
