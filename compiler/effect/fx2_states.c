@@ -468,7 +468,8 @@ static uint32_t selected(const hfx_fx_effect *fx, const stage_src *s, const uint
     if (s->array == HFX_NONE) return HFX_NONE;
     const hfx_fx_state *st = &fx->states[s->state];
     hfx_ev_value v;
-    return hfx_evc_run(fx->exprs + st->ref, st->count, values, &v) && v.c[0] > 0 ? (uint32_t)v.c[0] : 0;
+    uint32_t entries = fx->params[s->array].child_count;
+    return hfx_evc_run(fx->exprs + st->ref, st->count, values, &v) ? hfx_evc_index(&v, entries ? entries - 1 : 0) : 0;
 }
 
 /* The int parameter the selectors read (XNA's ShaderIndex): the one top-level scalar they
