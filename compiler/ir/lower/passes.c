@@ -10,6 +10,7 @@ int ir_lower(ir_ctx *c, ir_shader *sh) {
     ir_pass_fold(c, sh);       /* constant folding and propagation of const variables */
     ir_pass_calls(c, sh);      /* f(x, 1): a copy of f with the 1 bound, as fxc inlines it */
     ir_pass_dce(c, sh);        /* if (false) branches, code after return, unreached functions */
+    ir_pass_once(c, sh);       /* pow(x, 3) as fxc's products; coordinates read twice computed once */
     ir_pass_flatten(c, sh);    /* a small if / else choosing a local's value: a select, as fxc flattens it */
     ir_pass_distances(c, sh);  /* distance(P, L) beside L - P: length(L - P), the driver shares the difference */
     ir_pass_globals(c, sh);    /* private copies of the uniforms some function writes */
