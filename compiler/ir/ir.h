@@ -168,6 +168,7 @@ void ir_pass_distances(ir_ctx *c, ir_shader *sh);  /* distance(P, L) beside L - 
 void ir_pass_globals(ir_ctx *c, ir_shader *sh);
 void ir_pass_licm(ir_ctx *c, ir_shader *sh);       /* loop-invariant work to locals before the loop */
 void ir_pass_ranges(ir_ctx *c, ir_shader *sh);     /* array reads a loop counter keeps in range */
+void ir_pass_registers(ir_ctx *c, ir_shader *sh); /* register(cN) reservations of what the stage reads: X4500, X4509 */
 int ir_pass_check(ir_ctx *c, ir_shader *sh);   /* target limits: reports what GLSL cannot express */
 void ir_pass_uses(ir_ctx *c, ir_shader *sh);
 void ir_pass_preshade(ir_ctx *c, ir_shader *sh);    /* uniform-only work to preshaders (codegen, when packing) */

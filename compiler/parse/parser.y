@@ -111,7 +111,7 @@ cbuffer_members
 
 mods
     : MODIFIER                               { $$ = $1.mods; }
-    | mods MODIFIER                          { $$ = $1 | $2.mods; }
+    | mods MODIFIER                          { $$ = pb_more_mods(ctx, $1, $2.mods, @2); }
     ;
 
 decl_specs

@@ -17,6 +17,7 @@ int ir_lower(ir_ctx *c, ir_shader *sh) {
     ir_pass_licm(c, sh);       /* loop-invariant work before the loop; after globals, so a written uniform is its copy */
     ir_pass_ranges(c, sh);     /* arr[i] with a for counter i >= 0 (below a bound): a cheaper guard, or none */
     ir_pass_uses(c, sh);       /* globals and samplers the stage reads, in first-use order */
+    ir_pass_registers(c, sh);  /* register(c0) reservations: overlaps and ranges, as fxc refuses them */
     if (ir_pass_check(c, sh) != 0) return -1;
     return c->diags->errors > errors ? -1 : 0;
 }
