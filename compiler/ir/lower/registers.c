@@ -5,6 +5,7 @@
  * hfx does not read (other banks, `c[...]` offsets) is left alone. */
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "ir/ir.h"
 
@@ -37,6 +38,19 @@ static void bank_sizes(const char *profile, uint32_t *c, uint32_t *s) {
 
 typedef struct reservation { const ir_var *v; char bank; uint32_t first, count; } reservation;
 
+/* The reservation that applies to a profile: `register(c0)`, or `register(ps, c1)` when the
+ * shader is a pixel shader (ps, ps_3_0...); NULL for another profile's. A declaration keeps only
+ * the last reservation written (`: register(vs, c0) : register(ps, c1)`): the others' shaders
+ * are not checked. */
+static const char *reg_for(const char *reg, const char *profile) {
+    const char *comma = reg ? strchr(reg, ',') : NULL;
+    if (!comma) return reg;
+    size_t n = (size_t)(comma - reg);
+    if (!profile || strncasecmp(reg, profile, n) != 0 || (profile[n] && profile[n] != '_')) return NULL;
+    while (*++comma == ' ') {}
+    return comma;
+}
+
 static bool parse_reg(const char *reg, char *bank, uint32_t *index) {
     if (!reg || (reg[0] != 'c' && reg[0] != 'C' && reg[0] != 's' && reg[0] != 'S') || reg[1] < '0' || reg[1] > '9') return false;
     char *end;
@@ -49,18 +63,19 @@ static bool parse_reg(const char *reg, char *bank, uint32_t *index) {
 
 void ir_pass_registers(ir_ctx *c, ir_shader *sh) {
     uint32_t limit_c, limit_s, n = 0;
-    bank_sizes(sh->compile ? sh->compile->profile : NULL, &limit_c, &limit_s);
+    const char *profile = sh->compile ? sh->compile->profile : NULL;
+    bank_sizes(profile, &limit_c, &limit_s);
     reservation *r = HFX_NEW_ARRAY(c->arena, reservation, sh->global_count ? sh->global_count : 1);
     for (uint32_t i = 0; i < sh->global_count; i++) {
         const ir_var *v = sh->globals[i];
         reservation x = {v, 0, 0, 0};
-        if ((v->kind != IRV_UNIFORM && v->kind != IRV_SAMPLER) || !v->decl || !parse_reg(v->decl->reg, &x.bank, &x.first)) continue;
+        if ((v->kind != IRV_UNIFORM && v->kind != IRV_SAMPLER) || !v->decl || !parse_reg(reg_for(v->decl->reg, profile), &x.bank, &x.first)) continue;
         x.count = x.bank == 's' ? (v->kind == IRV_SAMPLER ? sampler_regs(v->type) : 0)
                                 : float_regs(v->type, (v->decl->mods & MOD_ROW_MAJOR) != 0);
         if (!x.count) continue;
         uint32_t limit = x.bank == 's' ? limit_s : limit_c;
         if (x.first + x.count > limit) {
-            hfx_error(c->diags, v->decl->loc, 4509, "invalid register semantic '%s'", v->decl->reg);
+            hfx_error(c->diags, v->decl->loc, 4509, "invalid register semantic '%c%u'", x.bank, x.first);
             continue;
         }
         for (uint32_t k = 0; k < n; k++) {
