@@ -1,31 +1,14 @@
 /* registers.c: `register(c0)` reservations as fxc allocates them for one shader: among the
  * globals the shader reads, two whose registers overlap is X4500 ("overlapping register
  * semantics not yet implemented"), and a register past the profile's bank is X4509 ("invalid
- * register semantic"). Only float constants (c) and samplers (s) are counted; a reservation
- * hfx does not read (other banks, `c[...]` offsets) is left alone. */
+ * register semantic"). Only float constants (c) and samplers (s) are counted, each variable by
+ * its first register; a reservation hfx does not read (other banks, `c[...]` offsets) is left
+ * alone. */
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
 
 #include "ir/ir.h"
-
-/* Registers a value of type t takes in the float bank: one per vector, a matrix one per column
- * (fxc's default column_major packing) or per row when row_major. */
-static uint32_t float_regs(const hfx_type *t, bool row_major) {
-    switch (t->kind) {
-    case TY_SCALAR: case TY_VECTOR: return 1;
-    case TY_MATRIX: return row_major ? t->rows : t->cols;
-    case TY_ARRAY: return t->array_len * float_regs(t->elem, row_major);
-    case TY_STRUCT: {
-        uint32_t n = 0;
-        for (uint32_t i = 0; i < t->st->field_count; i++) n += float_regs(t->st->fields[i].type, row_major);
-        return n;
-    }
-    default: return 0;
-    }
-}
-
-static uint32_t sampler_regs(const hfx_type *t) { return t->kind == TY_ARRAY ? t->array_len * sampler_regs(t->elem) : 1; }
 
 /* The float constant registers of a profile ("ps_2_0": 32, "ps_3_0": 224, vertex shaders 256)
  * and its samplers (vs_3_0: 4, pixel shaders 16). */
@@ -70,8 +53,10 @@ void ir_pass_registers(ir_ctx *c, ir_shader *sh) {
         const ir_var *v = sh->globals[i];
         reservation x = {v, 0, 0, 0};
         if ((v->kind != IRV_UNIFORM && v->kind != IRV_SAMPLER) || !v->decl || !parse_reg(reg_for(v->decl->reg, profile), &x.bank, &x.first)) continue;
-        x.count = x.bank == 's' ? (v->kind == IRV_SAMPLER ? sampler_regs(v->type) : 0)
-                                : float_regs(v->type, (v->decl->mods & MOD_ROW_MAJOR) != 0);
+        /* the first register only: fxc allocates the registers a shader reads, and FNA's
+         * EnvironmentMapEffect puts a float3x3 on the fourth column of a float4x4 whose first
+         * three columns its shaders read */
+        x.count = x.bank == 's' ? v->kind == IRV_SAMPLER : hfx_type_is_numeric(v->type) || v->type->kind == TY_ARRAY;
         if (!x.count) continue;
         uint32_t limit = x.bank == 's' ? limit_s : limit_c;
         if (x.first + x.count > limit) {
