@@ -9,7 +9,8 @@
  * the function, hfx_onceN, assigned in a comma expression at the place of the call:
  * `(hfx_once0 = 1.0 - d, hfx_once0 * (hfx_once0 * hfx_once0))`, which keeps the order of
  * evaluation wherever the call stands (conditions, loop steps, short-circuit operands).
- * Static globals' initialisers have no function to hold a local: the printer expands there. */
+ * Static globals' initialisers have no function to hold a local: there a pure operand is read
+ * again, and one with side effects is left to the printer's helper (glsl_intrin.c). */
 #include <math.h>
 
 #include "ir/ir.h"
@@ -65,10 +66,11 @@ static ir_expr *var_ref(ir_ctx *c, ir_var *v, hfx_loc loc) {
     return r;
 }
 
-/* *x read once: a temporary when it is not repeatable; *set gets `tmp = x` (else NULL). */
+/* *x read once: a temporary when it is not repeatable; *set gets `tmp = x` (else NULL). In a
+ * static initialiser (no function to hold the local) a pure x is read again instead. */
 static ir_expr *read_once(once *o, ir_expr *x, ir_expr **set) {
     *set = NULL;
-    if (repeatable(x) || !hfx_type_is_numeric(x->type)) return x;
+    if (repeatable(x) || !hfx_type_is_numeric(x->type) || (!o->fn && !ir_has_side_effects(x))) return x;
     ir_var *t = new_temp(o, x->type, x->loc);
     if (!t) return x;
     *set = ir_new_expr(o->c, IE_ASSIGN, x->type, x->loc, 2);
@@ -119,6 +121,7 @@ static void expand_pow(once *o, ir_expr **slot) {
     if (e->n != 2 || !float_base(e->type->base) || !hfx_type_equal(e->a[0]->type, e->type) ||
         !ir_pow_products(e->a[1], hfx_type_components(e->type), &n))
         return;
+    if (!o->fn && ir_has_side_effects(e->a[0])) return;
     ir_expr *set, *x = read_once(o, e->a[0], &set);
     ir_expr *value = products(o, x, e->type, n, &set);
     *slot = after(o->c, set, value);
@@ -130,6 +133,7 @@ static void coordinate_once(once *o, ir_expr **slot) {
     const hfx_intrinsic_info *info = hfx_intrinsic_info_of((int)e->intrin);
     if (!info || info->sig != SIG_TEX || e->n != 2) return;
     if (info->form != TEXF_LOD && info->form != TEXF_BIAS && info->form != TEXF_PROJ) return;
+    if (!o->fn) return;
     ir_expr *set;
     e->a[1] = read_once(o, e->a[1], &set);
     *slot = after(o->c, set, e);
@@ -144,6 +148,9 @@ static void visit(ir_ctx *c, ir_expr **slot, void *data) {
 }
 
 void ir_pass_once(ir_ctx *c, ir_shader *sh) {
+    once g = {c, NULL, NULL, 0, 0, 0}; /* static initialisers: pow's products, no locals */
+    for (uint32_t i = 0; i < sh->global_count; i++)
+        if (sh->globals[i]->init) ir_walk_expr(c, &sh->globals[i]->init, visit, &g);
     for (uint32_t i = 0; i < sh->func_count; i++) {
         once o = {c, sh->funcs[i], NULL, 0, 0, 0};
         ir_stmt *body = sh->funcs[i]->body;
