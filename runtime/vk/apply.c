@@ -106,13 +106,19 @@ static int gather_textures(hfx_effect *fx, const hfx_fx_pass *fp, const vk_progr
         if (use->sampler >= fx->sh->fx->sampler_count) return fail(fx->dev, HFX_ERR_LOAD, "a program names no sampler");
         uint32_t t = texture_param(fx, fp, use);
         VkImageView view = (VkImageView)(uintptr_t)fx->textures[t];
+        VkImageLayout layout = (VkImageLayout)fx->texture_layouts[t];
+        if (!view) { /* none set: the default of the sampler's dimension, (0, 0, 0, 1) as D3D9 */
+            const hfx_fx_sampler *fs = &fx->sh->fx->samplers[use->sampler];
+            view = fx->dev->vk->defaults[fs->dim <= HFX_FX_DIM_CUBE ? fs->dim : HFX_FX_DIM_2D].view;
+            layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+        }
         if (!view)
             return hfx_rt_fail(fx->dev, HFX_ERR_NOT_FOUND, "hfx_pass_apply_vk: sampler '%s' has no texture "
-                               "(hfx_param_set_texture_vk)", fx->sh->fx->params[fx->sh->fx->samplers[use->sampler].param].name);
+                               "(hfx_param_set_texture_vk; or hfx_vulkan_desc.queue for the default textures)",
+                               fx->sh->fx->params[fx->sh->fx->samplers[use->sampler].param].name);
         VkSampler s;
         int rc = sampler_of(fx, use->sampler, &s);
         if (rc) return rc;
-        VkImageLayout layout = (VkImageLayout)fx->texture_layouts[t];
         if (b->views[k] != view || b->layouts[k] != layout || b->vk_samplers[k] != s) *changed = 1;
         b->views[k] = view, b->layouts[k] = layout, b->vk_samplers[k] = s;
     }

@@ -22,7 +22,10 @@
     X(DestroySampler) X(CreateDescriptorPool) X(DestroyDescriptorPool) X(ResetDescriptorPool) \
     X(AllocateDescriptorSets) X(UpdateDescriptorSets) X(CmdBindPipeline) X(CmdBindDescriptorSets) \
     X(CmdBindVertexBuffers) X(CmdSetViewport) X(CmdSetScissor) X(CmdSetStencilReference) \
-    X(CmdSetBlendConstants) X(CmdSetDepthBias)
+    X(CmdSetBlendConstants) X(CmdSetDepthBias) X(CreateImage) X(DestroyImage) X(GetImageMemoryRequirements) \
+    X(BindImageMemory) X(CreateImageView) X(DestroyImageView) X(CreateCommandPool) X(DestroyCommandPool) \
+    X(AllocateCommandBuffers) X(BeginCommandBuffer) X(EndCommandBuffer) X(CmdPipelineBarrier) \
+    X(CmdClearColorImage) X(QueueSubmit) X(QueueWaitIdle)
 
 typedef struct hfx_vk_fns {
     PFN_vkGetInstanceProcAddr GetInstanceProcAddr;
@@ -76,6 +79,14 @@ typedef struct vk_pso {
     int needs_zero;                 /* reads an attribute the layout lacks: bind VK_ZERO_BINDING */
 } vk_pso;
 
+/* A 1x1 image of (0, 0, 0, 1) per sampler dimension (HFX_FX_DIM_*), as D3D9 samples a stage
+ * with no texture: what a sampler the application gave no texture reads (defaults.c). */
+typedef struct vk_default_image {
+    VkImage image;
+    VkDeviceMemory memory;
+    VkImageView view;
+} vk_default_image;
+
 typedef struct vk_sampler_entry {
     hfx_sampler_desc desc;
     VkSampler sampler;
@@ -104,6 +115,7 @@ struct hfx_vk_device {
     uint32_t sampler_count, sampler_cap;
     int mirror_once;                /* samplerMirrorClampToEdge */
     int custom_border;              /* VK_EXT_custom_border_color (without format) */
+    vk_default_image defaults[4];   /* per hfx_fx_dim; none without hfx_vulkan_desc.queue */
 };
 
 struct hfx_vertex_layout {
@@ -192,6 +204,11 @@ void hfx_vk_chunk_free(hfx_device *dev, vk_chunk *c);
 /* A slice of size bytes of the current frame's ring: its buffer, offset and memory. */
 int hfx_vk_slice(hfx_device *dev, uint32_t size, VkBuffer *buffer, uint32_t *offset, uint8_t **map);
 int hfx_vk_descriptor_set(hfx_device *dev, VkDescriptorSetLayout layout, VkDescriptorSet *set);
+int hfx_vk_memory_type(const struct hfx_vk_device *vk, uint32_t bits, VkMemoryPropertyFlags want); /* -1: none */
+
+/* defaults.c */
+int hfx_vk_defaults_make(hfx_device *dev, VkQueue queue, uint32_t family);
+void hfx_vk_defaults_free(hfx_device *dev);
 
 /* reflect.c: the members of a module's uniform block (set 0, binding HFX_VK_BINDING_BLOCK). */
 typedef struct vk_leaf {

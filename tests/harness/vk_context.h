@@ -59,6 +59,11 @@ void test_vk_buffer_free(test_vk *v, test_vk_buffer *b);
 int test_vk_texture_make(test_vk *v, int width, int height, const unsigned char *texels, test_vk_texture *out);
 /* The same with every mip level, each a linear halving of the one above (glGenerateMipmap's). */
 int test_vk_texture_make_mipmapped(test_vk *v, int width, int height, const unsigned char *texels, test_vk_texture *out);
+/* A 2D texture, a cube (texels: the six faces +X, -X, +Y, -Y, +Z, -Z one after the other, each
+ * width x height) or a volume (depth slices one after the other), mipmapped or with one level. */
+typedef enum { TEST_VK_2D, TEST_VK_CUBE, TEST_VK_3D } test_vk_kind;
+int test_vk_texture_make_kind(test_vk *v, test_vk_kind kind, int width, int height, int depth, int mipmapped,
+                              const unsigned char *texels, test_vk_texture *out);
 void test_vk_texture_free(test_vk *v, test_vk_texture *t);
 
 #endif
