@@ -262,8 +262,8 @@ static int canonical_semantic(const char *s, char out[24]) {
 
 hfx_vertex_layout *hfx_vertex_layout_create(hfx_device *dev, const hfx_vertex_element *e, size_t count) {
     if (!dev || !dev->vk || (!e && count)) return NULL;
-    if (count > VK_MAX_ATTRIBUTES) {
-        hfx_rt_fail(dev, HFX_ERR_COUNT, "hfx_vertex_layout_create: at most %d elements", VK_MAX_ATTRIBUTES);
+    if (count > VK_MAX_LAYOUT_ELEMENTS) {
+        hfx_rt_fail(dev, HFX_ERR_COUNT, "hfx_vertex_layout_create: at most %d elements", VK_MAX_LAYOUT_ELEMENTS);
         return NULL;
     }
     hfx_vertex_layout *l = calloc(1, sizeof *l);

@@ -35,7 +35,9 @@ typedef struct hfx_vk_fns {
 #undef HFX_VK_FN_
 } hfx_vk_fns;
 
-enum { VK_ZERO_BINDING = 15, VK_MAX_FRAMES = 8, VK_MAX_ATTRIBUTES = 16 };
+/* A program reads at most 16 attributes (Vulkan's least maxVertexInputAttributes); a layout may
+ * describe more, for the programs that read different ones. */
+enum { VK_ZERO_BINDING = 15, VK_MAX_FRAMES = 8, VK_MAX_ATTRIBUTES = 16, VK_MAX_LAYOUT_ELEMENTS = 32 };
 
 /* A host-visible, coherent buffer, mapped for its lifetime. */
 typedef struct vk_chunk {
@@ -121,8 +123,8 @@ struct hfx_vk_device {
 struct hfx_vertex_layout {
     hfx_device *dev;
     size_t count;
-    char semantics[VK_MAX_ATTRIBUTES][24];
-    hfx_vertex_element e[VK_MAX_ATTRIBUTES];
+    char semantics[VK_MAX_LAYOUT_ELEMENTS][24];
+    hfx_vertex_element e[VK_MAX_LAYOUT_ELEMENTS];
 };
 
 /* How one leaf of the uniform block is filled from the effect's values. */
@@ -145,6 +147,8 @@ typedef struct vk_slot {
 
 typedef struct vk_program {
     VkShaderModule vs, fs;
+    VkShaderModule fs_fewer[4];     /* fs_fewer[n]: fs for n colour attachments, when it writes more (outputs.c) */
+    uint32_t colors_written;        /* the pixel shader's highest colour Location + 1 */
     VkDescriptorSetLayout set_layout;
     VkPipelineLayout layout;
     uint32_t block_size;            /* 0: no uniforms */
@@ -227,6 +231,10 @@ void hfx_vk_block_free(vk_block *b);
 /* program.c */
 int hfx_vk_program_build(hfx_shared *sh, uint32_t index);
 void hfx_vk_program_free(hfx_device *dev, vk_program *p);
+
+/* outputs.c */
+int hfx_vk_outputs_make(hfx_device *dev, const hfx_fx_code *code, vk_program *p);
+VkShaderModule hfx_vk_fragment_module(const vk_program *p, uint32_t color_count);
 
 /* pipeline.c */
 void hfx_vk_states_of(const hfx_rs_value *rs, vk_states *st);

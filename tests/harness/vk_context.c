@@ -324,8 +324,8 @@ test_vk *test_vk_create(int width, int height, const char **why) {
     return v;
 }
 
-void test_vk_destroy(test_vk *v) {
-    if (!v) return;
+int test_vk_destroy(test_vk *v) {
+    if (!v) return 0;
     if (v->device) vkDeviceWaitIdle(v->device);
     hfx_device_destroy(v->dev);
     if (v->device) {
@@ -348,9 +348,11 @@ void test_vk_destroy(test_vk *v) {
             (PFN_vkDestroyDebugUtilsMessengerEXT)vkGetInstanceProcAddr(v->instance, "vkDestroyDebugUtilsMessengerEXT");
         if (destroy) destroy(v->instance, v->messenger, NULL);
     }
+    int messages = v->messages; /* the messenger is gone: nothing more can come */
     if (v->instance) vkDestroyInstance(v->instance, NULL);
     free(v->pixels);
     free(v);
+    return messages;
 }
 
 hfx_device *test_vk_device(test_vk *v) { return v->dev; }

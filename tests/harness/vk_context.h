@@ -28,7 +28,7 @@ typedef struct test_vk_buffer {
 
 /* NULL when no Vulkan device can be made; *why (static text or NULL) says why. */
 test_vk *test_vk_create(int width, int height, const char **why);
-void test_vk_destroy(test_vk *v);
+int test_vk_destroy(test_vk *v); /* the validation messages of the whole run, its end included */
 hfx_device *test_vk_device(test_vk *v);
 hfx_vk_target *test_vk_target(test_vk *v);          /* the offscreen target; set its layout before Apply */
 int test_vk_width(const test_vk *v);

@@ -3,7 +3,8 @@
  * samplers the application gave no texture (bound only by register, or with no `Texture =`:
  * the default (0, 0, 0, 1) of their dimension), cube and volume textures through cube and 3D
  * views, and vertex inputs the layout lacks ((0, 0, 0, 1), as D3D9 gives an element its vertex
- * declaration lacks). The validation layer must stay silent through all of it. */
+ * declaration lacks), and colours written past the target's attachments (dropped). The
+ * validation layer must stay silent through all of it. */
 #include <stdio.h>
 
 #include "vk_draw.h"
@@ -127,6 +128,24 @@ static void missing_inputs(void) {
     hfx_effect_destroy(fx);
 }
 
+static const char *MORE_TARGETS =
+    "struct PO { float4 c0 : COLOR0; float4 c1 : COLOR1; float4 c3 : COLOR3; };\n"
+    "PO PS() { PO o; o.c0 = float4(0, 1, 0, 1); o.c1 = float4(1, 0, 0, 1); o.c3 = float4(0, 0, 1, 1); return o; }\n"
+    "technique T { pass P { PixelShader = compile ps_3_0 PS(); } }\n";
+
+/* COLOR1 and COLOR3 written with one colour attachment: dropped, as D3D9 drops what goes to a
+ * render target that is not set; COLOR0 lands, and the validation layer says nothing (each
+ * message fails the test in main). */
+static void more_outputs_than_targets(void) {
+    hfx_effect *fx = vk_load(V, MORE_TARGETS);
+    if (!fx) return;
+    CHECK_INT(vk_draw(V, fx, "T", &FULL, 1, CLEAR), 0);
+    CHECK_PIXEL(V, 32, 32, 0, 255, 0, 255);
+    CHECK_INT(vk_draw(V, fx, "T", &FULL, 1, CLEAR), 0); /* the same pipeline again */
+    CHECK_PIXEL(V, 10, 50, 0, 255, 0, 255);
+    hfx_effect_destroy(fx);
+}
+
 int main(void) {
     const char *why = NULL;
     V = test_vk_create(64, 64, &why);
@@ -137,6 +156,7 @@ int main(void) {
     RUN(samplers_without_textures);
     RUN(cube_and_volume);
     RUN(missing_inputs);
+    RUN(more_outputs_than_targets);
     hfx_vertex_layout_destroy(layout);
     int messages = test_vk_messages(V);
     test_vk_destroy(V);
