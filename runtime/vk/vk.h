@@ -195,6 +195,8 @@ struct hfx_vk_instance {
     vk_bound **bound;               /* per program, made at its first Apply */
     uint32_t bound_count;           /* programs (the shared part may be gone when this is freed) */
     int begun;                      /* hfx_effect_begin saved the render states */
+    uint32_t last_program;          /* the last Apply's program + 1 (0: none): a pass that sets no
+                                     * shaders keeps it, as D3D9 keeps the device's shaders */
     hfx_rs_value saved[HFX_ST_COUNT_];
 };
 

@@ -146,6 +146,22 @@ static void more_outputs_than_targets(void) {
     hfx_effect_destroy(fx);
 }
 
+static const char *SECOND_PASS_NO_SHADERS =
+    "float4 PS() : COLOR0 { return float4(0, 1, 0, 1); }\n"
+    "technique T { pass P { PixelShader = compile ps_2_0 PS(); } pass Q { ZEnable = false; } }\n";
+
+/* A pass that sets no shaders keeps the ones set before it, as in D3D9 (and GL's bound
+ * program): the right half, drawn by pass Q, is green too. */
+static void pass_without_shaders(void) {
+    hfx_effect *fx = vk_load(V, SECOND_PASS_NO_SHADERS);
+    if (!fx) return;
+    const vk_quad halves[2] = {{-1, -1, 0, 1, 0.5f, 1, 1, 0}, {0, -1, 1, 1, 0.5f, 1, 1, 0}};
+    CHECK_INT(vk_draw(V, fx, "T", halves, 2, CLEAR), 0);
+    CHECK_PIXEL(V, 16, 32, 0, 255, 0, 255);
+    CHECK_PIXEL(V, 48, 32, 0, 255, 0, 255);
+    hfx_effect_destroy(fx);
+}
+
 int main(void) {
     const char *why = NULL;
     V = test_vk_create(64, 64, &why);
@@ -157,6 +173,7 @@ int main(void) {
     RUN(cube_and_volume);
     RUN(missing_inputs);
     RUN(more_outputs_than_targets);
+    RUN(pass_without_shaders);
     hfx_vertex_layout_destroy(layout);
     int messages = test_vk_messages(V);
     test_vk_destroy(V);
