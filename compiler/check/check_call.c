@@ -152,6 +152,9 @@ static const hfx_type *state_call(check_ctx *c, hfx_expr *e) {
         e->arg_count = entry->arg_count;
         return ck_compile(c, e);
     }
+    size_t n = strlen(e->name);
+    if (strncmp(e->name, "Set", 3) == 0 && n > 8 && strcmp(e->name + n - 5, "State") == 0)
+        return set_type(e, hfx_type_void(c->types)); /* SetBlendState(bs, ...): the state objects are dropped */
     check_args(c, e);
     return set_type(e, e->arg_count ? e->args[0]->type : hfx_type_void(c->types));
 }

@@ -410,10 +410,12 @@ static bool numeric_leaves(const hfx_type *ty) {
     return true;
 }
 
-/* (S2)s1, (float4)s, (S)v: a cast to or from a struct takes the components in order when the
- * source has at least as many (HLSL's componentwise-compatible types). */
+/* (S2)s1, (float4)s, (S)v, (float4)arr, (float2x2)arr, (float[2])v4: a cast to or from a struct
+ * or an array takes the components in order when the source has at least as many (HLSL's
+ * componentwise-compatible types). */
 static bool restructure(const hfx_type *from, const hfx_type *to) {
-    if (from->kind != TY_STRUCT && to->kind != TY_STRUCT) return false;
+    bool aggregate = from->kind == TY_STRUCT || to->kind == TY_STRUCT || from->kind == TY_ARRAY || to->kind == TY_ARRAY;
+    if (!aggregate) return false;
     unsigned nf = hfx_type_components(from), nt = hfx_type_components(to);
     return numeric_leaves(from) && numeric_leaves(to) && nt > 0 && nf >= nt;
 }

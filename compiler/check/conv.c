@@ -76,6 +76,37 @@ static hfx_conv numeric_to_array(const hfx_type *from, const hfx_type *to) {
     return shape(CONV_SHAPE_RESHAPE, from->base == e->base ? CONV_BASE_EXACT : CONV_BASE_CONVERT);
 }
 
+/* The numeric leaves of ty in order (fields, elements), up to cap; false when an object is
+ * among them or there are more. */
+static bool leaves_of(const hfx_type *ty, const hfx_type **out, unsigned *n, unsigned cap) {
+    if (hfx_type_is_numeric(ty)) {
+        if (*n == cap) return false;
+        out[(*n)++] = ty;
+        return true;
+    }
+    if (ty->kind == TY_ARRAY) {
+        for (uint32_t i = 0; i < ty->array_len; i++)
+            if (!leaves_of(ty->elem, out, n, cap)) return false;
+        return true;
+    }
+    if (ty->kind != TY_STRUCT) return false;
+    for (uint32_t i = 0; i < ty->st->field_count; i++)
+        if (!leaves_of(ty->st->fields[i].type, out, n, cap)) return false;
+    return true;
+}
+
+/* `VS_OUT o = input;`: two struct (or array) types whose members are the same types in the
+ * same order convert implicitly, as fxc lets them (a struct of another name, same layout). */
+static bool componentwise_equal(const hfx_type *from, const hfx_type *to) {
+    enum { CAP = 64 };
+    const hfx_type *a[CAP], *b[CAP];
+    unsigned na = 0, nb = 0;
+    if (!leaves_of(from, a, &na, CAP) || !leaves_of(to, b, &nb, CAP) || na != nb || !na) return false;
+    for (unsigned i = 0; i < na; i++)
+        if (a[i] != b[i]) return false; /* numeric types are interned: pointer equality */
+    return true;
+}
+
 hfx_conv hfx_conv_classify(const hfx_type *from, const hfx_type *to, bool explicit_cast) {
     if (!from || !to) return fail();
     if (hfx_type_is_numeric(from) && hfx_type_is_numeric(to)) return classify_numeric(from, to, explicit_cast);
@@ -91,7 +122,8 @@ hfx_conv hfx_conv_classify(const hfx_type *from, const hfx_type *to, bool explic
     case TY_STRING: case TY_VERTEXSHADER: case TY_PIXELSHADER:
         return shape(CONV_SHAPE_EXACT, CONV_BASE_EXACT);
     case TY_STRUCT: case TY_ARRAY:
-        return hfx_type_equal(from, to) ? shape(CONV_SHAPE_EXACT, CONV_BASE_EXACT) : fail();
+        if (hfx_type_equal(from, to)) return shape(CONV_SHAPE_EXACT, CONV_BASE_EXACT);
+        return from->kind == TY_STRUCT && componentwise_equal(from, to) ? shape(CONV_SHAPE_RESHAPE, CONV_BASE_EXACT) : fail();
     default:
         return fail();
     }

@@ -72,7 +72,7 @@ static bool constant_value(hfx_builder *b, const hfx_state_info *info, const hfx
     }
     out->kind = HFX_FX_VALUE_INT;
     double v = c->v[0];
-    out->i = v >= 4294967295.0 ? -1 : v > 2147483647.0 ? (int32_t)(uint32_t)v : v < -2147483648.0 ? INT32_MIN : (int32_t)v;
+    out->i = v > 2147483647.0 ? (int32_t)hfx_ev_uint(v) : hfx_ev_int(v); /* a uint keeps its bits (colours) */
     return true;
 }
 
@@ -132,7 +132,7 @@ static const hfx_state_info *lookup_state(hfx_builder *b, const hfx_state_assign
     if (!sa->index) return info;
     hfx_cvec c = {0};
     bool ok = hfx_build_eval(b, sa->index, &c, NULL) && c.integral && c.v[0] >= 0 && c.v[0] <= info->max_index;
-    if (ok) *index = (uint32_t)c.v[0];
+    if (ok) *index = hfx_ev_uint(c.v[0]);
     hfx_cvec_free(&c);
     if (!ok) {
         hfx_error(b->diags, sa->index->loc, X_INVALID_SUBSCRIPT, "'%s': state index must be a constant from 0 to %u",
@@ -153,10 +153,61 @@ static hfx_fx_dim sampler_dim(const hfx_type *ty) {
     }
 }
 
+/* The D3DTEXTUREFILTERTYPE of a Direct3D 10 filter word: POINT 1, LINEAR 2, ANISOTROPIC 3. */
+static int32_t filter_type(const char *word, size_t len) {
+    if (len == 5 && strncasecmp(word, "POINT", 5) == 0) return 1;
+    if (len == 6 && strncasecmp(word, "LINEAR", 6) == 0) return 2;
+    return 0;
+}
+
+/* `Filter = MIN_LINEAR_MAG_MIP_POINT;`, Direct3D 10's one filter state, in a sampler an effect
+ * shares with Direct3D 9: MinFilter, MagFilter and MipFilter from the POINT / LINEAR word after
+ * each of MIN, MAG and MIP; ANISOTROPIC (and COMPARISON_ANISOTROPIC) is anisotropic min and mag
+ * filtering with linear mips. True when sa was a Filter state (taken, or reported). */
+static bool d3d10_filter(hfx_builder *b, const hfx_state_assign *sa) {
+    if (!sa->name || strcasecmp(sa->name, "Filter") != 0 || !sa->value) return false;
+    const char *v = is_name(sa->value) ? sa->value->name : NULL;
+    int32_t f[3] = {0, 0, 0}; /* min, mag, mip */
+    if (v && strncasecmp(v, "COMPARISON_", 11) == 0) v += 11;
+    if (v && strcasecmp(v, "ANISOTROPIC") == 0) {
+        f[0] = f[1] = 3;
+        f[2] = 2;
+    }
+    bool pending[3] = {false, false, false};
+    for (const char *w = v; w && *w && !f[2];) {
+        size_t len = strcspn(w, "_");
+        int32_t type = filter_type(w, len);
+        for (int k = 0; k < 3; k++) {
+            static const char *const names[3] = {"MIN", "MAG", "MIP"};
+            if (len == 3 && strncasecmp(w, names[k], 3) == 0) pending[k] = true;
+            if (type && pending[k]) f[k] = type, pending[k] = false;
+        }
+        w += len + (w[len] == '_');
+    }
+    if (!f[0] || !f[1] || !f[2]) {
+        hfx_error(b->diags, sa->value->loc, X_TYPE_MISMATCH, "Filter cannot take this value");
+        return true;
+    }
+    static const char *const states[3] = {"MinFilter", "MagFilter", "MipFilter"};
+    for (int k = 0; k < 3; k++)
+        add_state(b, &(hfx_fx_state){.id = hfx_state_lookup(states[k])->id, .kind = HFX_FX_VALUE_INT, .i = f[k],
+                                     .line = sa->loc.line, .col = sa->loc.col});
+    return true;
+}
+
+/* A state name fxc does not know, in a sampler block: fxc skips it, so an effect that also
+ * targets Direct3D 10 (MaxAnisotropy's D3D10 spelling, ComparisonFunc...) still loads. */
+static bool unknown_sampler_state(hfx_builder *b, const hfx_state_assign *sa) {
+    if (!sa->name || hfx_state_lookup(sa->name)) return false;
+    hfx_warning(b->diags, sa->loc, X_UNKNOWN_STATE, "unrecognized sampler state '%s' ignored", sa->name);
+    return true;
+}
+
 static void sampler_block(hfx_builder *b, hfx_fx_sampler *s, const hfx_expr *block) {
     s->first_state = b->fx->state_count;
     for (uint32_t i = 0; i < block->state_count; i++) {
         const hfx_state_assign *sa = &block->states[i];
+        if (d3d10_filter(b, sa) || unknown_sampler_state(b, sa)) continue;
         uint32_t index;
         const hfx_state_info *info = lookup_state(b, sa, &index);
         if (!info || !sa->value) continue;
@@ -243,7 +294,7 @@ static int shader_compile(hfx_builder *b, const hfx_expr *v, const hfx_expr **ou
         if (v->arg_count != 2) break;
         hfx_cvec c = {0};
         bool constant = hfx_build_eval(b, v->args[1], &c, NULL) && c.integral;
-        int64_t i = constant ? (int64_t)c.v[0] : -1;
+        int64_t i = constant ? hfx_ev_int(c.v[0]) : -1;
         hfx_cvec_free(&c);
         const hfx_expr *arr = v->args[0];
         const hfx_decl *d = arr->kind == EX_IDENT && arr->sym ? arr->sym : hfx_build_global(b, arr->name);
@@ -434,7 +485,7 @@ static uint32_t selected(const hfx_fx_effect *fx, const pass_shaders *sh, int s,
     if (!sh->sel[s].array) return HFX_NONE;
     const hfx_fx_state *st = &fx->states[sh->sel_state[s]];
     hfx_ev_value v;
-    return hfx_evc_run(fx->exprs + st->ref, st->count, values, &v) ? (uint32_t)v.c[0] : 0;
+    return hfx_evc_run(fx->exprs + st->ref, st->count, values, &v) ? hfx_evc_index(&v, HFX_NONE - 1) : 0;
 }
 
 /* The program of one pair of array entries (or the pass's fixed shader for a fixed stage). */
@@ -513,10 +564,20 @@ void hfx_build_technique(hfx_builder *b, const hfx_technique_ast *ta) {
     }
 }
 
+/* technique10 / technique11: an effect written for Direct3D 9 and 10 keeps both kinds side by
+ * side; fx_2_0 loads the Direct3D 9 ones and skips these (checked, not built), with a warning. */
+static bool is_d3d10_technique(hfx_builder *b, const hfx_decl *d) {
+    const char *k = d->technique->keyword;
+    if (!k || (strcasecmp(k, "technique10") != 0 && strcasecmp(k, "technique11") != 0)) return false;
+    hfx_warning(b->diags, d->loc, X_UNSUPPORTED, "'%s': %s is Direct3D 10 effect syntax, ignored in fx_2_0",
+                d->technique->name ? d->technique->name : "", k);
+    return true;
+}
+
 bool hfx_build_techniques(hfx_builder *b) {
     for (uint32_t i = 0; i < b->ast->decl_count; i++) {
         const hfx_decl *d = b->ast->decls[i];
-        if (d->kind == DECL_TECHNIQUE && d->technique) hfx_build_technique(b, d->technique);
+        if (d->kind == DECL_TECHNIQUE && d->technique && !is_d3d10_technique(b, d)) hfx_build_technique(b, d->technique);
     }
     return !b->failed_alloc;
 }

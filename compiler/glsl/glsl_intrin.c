@@ -349,7 +349,7 @@ static int small_power(const ir_expr *y) {
     double k = y->cval[0];
     for (unsigned i = 1; i < hfx_type_components(y->type); i++)
         if (y->cval[i] != k) return 0;
-    return k == 1 || k == 2 || k == 3 || k == 4 ? (int)k : 0;
+    return k == 1 || k == 2 || k == 3 || k == 4 ? (int)hfx_ev_int(k) : 0;
 }
 
 /* An operand cheap to repeat: a variable, or a swizzle or member of one. */
@@ -503,7 +503,12 @@ static void lower_dst(gp *p, const ir_expr *e, int max) {
 
 static void lower_sincos(gp *p, const ir_expr *e, int max) {
     (void)max;
-    helper_typed(p, "sincos", e->a[0]->type, "void hfx_sincos($T x, out $T s, out $T c) { s = sin(x); c = cos(x); }\n");
+    const hfx_type *t = e->a[0]->type;
+    if (glsl_is_matrix(t)) /* GLSL's sin takes no matrix: column by column (HLSL rows) */
+        helper_typed(p, "sincos", t, hfx_arena_printf(p->c->arena, "void hfx_sincos($T x, out $T s, out $T c) {\n"
+                                     "    for (int i = 0; i < %u; i++) { s[i] = sin(x[i]); c[i] = cos(x[i]); }\n}\n", t->rows));
+    else
+        helper_typed(p, "sincos", t, "void hfx_sincos($T x, out $T s, out $T c) { s = sin(x); c = cos(x); }\n");
     sb_put(p->out, "hfx_sincos(");
     glsl_expr(p, e->a[0], PREC_ASSIGN);
     sb_put(p->out, ", ");

@@ -1,6 +1,7 @@
 /* ir.c: copies the checked AST of one entry point and everything it calls into the IR.
  * The copy is per stage of each pass, so specialisation never touches the shared tree. */
 #include "ir/ir.h"
+#include "check/conv.h"
 
 #include <string.h>
 #include <strings.h>
@@ -181,6 +182,33 @@ static ir_var *lookup_var(builder *b, const hfx_expr *e) {
 
 static ir_func *build_func(builder *b, const hfx_func *f, hfx_loc use);
 
+/* `S[1]` of a sampler array parameter with a constant index: the element's own sampler (each
+ * element of `sampler S[2] = {...}` is a sampler of the effect), one GLSL sampler per element
+ * read. NULL when e is no such read. */
+static ir_expr *sampler_element(builder *b, const hfx_expr *e) {
+    const hfx_expr *base = e->args[0], *index = e->args[1];
+    const hfx_decl *d = base->kind == EX_IDENT ? base->sym : NULL;
+    const hfx_fx_effect *fx = b->c->fx;
+    if (!d || !d->is_global || !fx || d->index >= fx->top_param_count || d->type->kind != TY_ARRAY ||
+        d->type->elem->kind != TY_SAMPLER || index->kind != EX_INT || index->ival < 0 ||
+        index->ival >= (int64_t)fx->params[d->index].child_count)
+        return NULL;
+    uint32_t param = fx->params[d->index].first_child + (uint32_t)index->ival;
+    ir_var *v = NULL;
+    for (uint32_t i = 0; i < b->sh->global_count && !v; i++)
+        if (b->sh->globals[i]->kind == IRV_SAMPLER && b->sh->globals[i]->param == param) v = b->sh->globals[i];
+    if (!v) {
+        v = new_var(b, IRV_SAMPLER, d, d->type->elem);
+        v->param = param;
+        v->dim = d->type->elem->dim;
+        v->glsl = hfx_arena_printf(b->c->arena, "%s_%u", hfx_glsl_name(b->c->arena, d->name), (unsigned)index->ival);
+        add_global(b, v);
+    }
+    ir_expr *r = ir_new_expr(b->c, IE_VAR, v->type, e->loc, 0);
+    r->var = v;
+    return r;
+}
+
 static ir_expr *build_call(builder *b, const hfx_expr *e) {
     ir_expr *r;
     if (e->fn) {
@@ -274,6 +302,15 @@ static ir_expr *rebuild(builder *b, const hfx_type *ty, ir_expr **scalars, uint3
     return r;
 }
 
+/* Whether a cast from -> to takes the components one by one: to or from a struct, and to or
+ * from an array where no plain conversion applies ((float4)arr, (float[2])v4). A scalar fills. */
+static bool restructures(const hfx_type *from, const hfx_type *to) {
+    if (hfx_type_components(from) <= 1) return false;
+    if (from->kind == TY_STRUCT || to->kind == TY_STRUCT) return true;
+    if (from->kind != TY_ARRAY && to->kind != TY_ARRAY) return false;
+    return !hfx_conv_classify(from, to, true).ok;
+}
+
 /* (S2)s1, (float4)s, (S)v: the source's components in order, rebuilt as the target type. */
 static ir_expr *build_restructure(builder *b, const hfx_expr *e) {
     ir_expr *x = build_expr(b, e->args[0]);
@@ -332,12 +369,13 @@ static ir_expr *build_expr(builder *b, const hfx_expr *e) {
         if (r && r->n == 1 && hfx_type_equal(r->a[0]->type, r->type)) return r->a[0];
         return r;
     case EX_CAST:
-        if ((e->type->kind == TY_STRUCT || e->args[0]->type->kind == TY_STRUCT) && hfx_type_components(e->args[0]->type) > 1)
-            return build_restructure(b, e);
+        if (restructures(e->args[0]->type, e->type)) return build_restructure(b, e);
         r = build_children(b, e, IE_CONVERT, e->type);
         if (r && r->n == 1 && hfx_type_equal(r->a[0]->type, r->type)) return r->a[0];
         return r;
-    case EX_INDEX: return build_children(b, e, IE_INDEX, e->type);
+    case EX_INDEX:
+        if ((r = sampler_element(b, e))) return r;
+        return build_children(b, e, IE_INDEX, e->type);
     case EX_SWIZZLE:
         r = build_children(b, e, IE_SWIZZLE, e->type);
         if (r) {
@@ -396,6 +434,7 @@ static void build_decls(builder *b, const hfx_stmt *s, stmt_list *out) {
     for (uint32_t i = 0; i < s->decl_count; i++) {
         const hfx_decl *d = s->decls[i];
         if (d->kind != DECL_VAR) continue; /* local struct / typedef declarations: types only */
+        if (d->type && d->type->kind == TY_STRING) continue; /* `string s = "x";`: nothing a shader computes with */
         ir_var *v = new_var(b, IRV_LOCAL, d, d->type);
         v->glsl = local_name(b, d->name);
         ir_stmt *st = new_stmt(b, IS_DECL, d->loc);
@@ -601,6 +640,16 @@ static bool bind_uniform_params(builder *b, const hfx_expr *compile, ir_func *en
     return true;
 }
 
+/* The compile arguments were built after the entry, and the functions they call with them
+ * (`strokePS(fadeout(t, m, f))`): the entry, which now reads them, goes back to the end. */
+static void move_entry_last(ir_shader *sh, ir_func *entry) {
+    uint32_t at = 0;
+    while (at < sh->func_count && sh->funcs[at] != entry) at++;
+    if (at == sh->func_count) return;
+    memmove(&sh->funcs[at], &sh->funcs[at + 1], sizeof *sh->funcs * (sh->func_count - at - 1));
+    sh->funcs[sh->func_count - 1] = entry;
+}
+
 ir_shader *ir_build(ir_ctx *c, const hfx_expr *compile, ir_stage stage) {
     const hfx_func *f = compile->fn ? compile->fn : find_entry(c, compile);
     if (!f) {
@@ -616,6 +665,7 @@ ir_shader *ir_build(ir_ctx *c, const hfx_expr *compile, ir_stage stage) {
     if (!entry || b.failed) return NULL;
     entry->is_entry = true;
     if (!bind_uniform_params(&b, compile, entry)) return NULL;
+    move_entry_last(b.sh, entry);
     b.sh->entry = entry;
     return b.failed ? NULL : b.sh;
 }

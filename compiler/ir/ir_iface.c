@@ -75,6 +75,8 @@ static void walk(ir_ctx *c, leaves *l, const hfx_type *ty, const char *sem, cons
     if (ty->kind == TY_STRUCT) {
         for (uint32_t i = 0; i < ty->st->field_count; i++) {
             const hfx_field *f = &ty->st->fields[i];
+            /* fxc lets an output struct carry members without a semantic: they go nowhere */
+            if (o->outputs && !f->semantic && f->type->kind != TY_STRUCT) continue;
             spot s = spot_in(at, i, hfx_arena_printf(c->arena, "%s.%s", path, hfx_glsl_name(c->arena, f->name)));
             walk(c, l, f->type, f->semantic, &s, f->loc, o, f->mods);
         }

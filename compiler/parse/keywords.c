@@ -43,18 +43,22 @@ typedef struct entry {
  * under another letter would never be found, which test_parse_lex would see. A spelling may
  * match several entries (`technique` is a keyword and, in any case, an effect-layer word);
  * kw_lookup applies them all. */
-static const entry b_words[] = {KEYWORD("break", BREAK), SCALAR("bool", B_BOOL)};
+/* Direct3D 10 state objects (`BlendState b { ... };`) are any-case words that start a global. */
+static const entry b_words[] = {KEYWORD("break", BREAK), SCALAR("bool", B_BOOL), ANY_CASE("blendstate", D3D10_STATE)};
 static const entry c_words[] = {
     KEYWORD("case", CASE), KEYWORD("cbuffer", CBUFFER), INTERP("centroid", MOD_CENTROID), MODIFIER_KW("column_major", MOD_COLUMN_MAJOR),
     KEYWORD("compile", COMPILE), ANY_CASE("compile", COMPILE), MODIFIER_KW("const", MOD_CONST),
     KEYWORD("continue", CONTINUE),
 };
 static const entry d_words[] = {
-    KEYWORD("default", DEFAULT), KEYWORD("discard", DISCARD), KEYWORD("do", DO), SCALAR("double", B_DOUBLE),
+    ANY_CASE("depthstencilstate", D3D10_STATE), KEYWORD("default", DEFAULT), KEYWORD("discard", DISCARD), KEYWORD("do", DO), SCALAR("double", B_DOUBLE),
     SCALAR_ONLY("dword", B_UINT), SCALAR_ONLY("DWORD", B_UINT),
 };
-static const entry e_words[] = {KEYWORD("else", ELSE), MODIFIER_KW("extern", MOD_EXTERN)};
-static const entry f_words[] = {KEYWORD("false", FALSE_KW), SCALAR("float", B_FLOAT), KEYWORD("for", FOR)};
+/* `export` marks a library function (fx_2_0 takes it and it changes nothing): a modifier of no bits */
+static const entry e_words[] = {KEYWORD("else", ELSE), MODIFIER_KW("export", 0), MODIFIER_KW("extern", MOD_EXTERN)};
+static const entry f_words[] = {
+    KEYWORD("false", FALSE_KW), SCALAR("float", B_FLOAT), KEYWORD("for", FOR), ANY_CASE("fxgroup", FXGROUP),
+};
 static const entry g_words[] = {MODIFIER_KW("groupshared", MOD_GROUPSHARED)};
 static const entry h_words[] = {SCALAR("half", B_HALF)};
 static const entry i_words[] = {
@@ -76,7 +80,7 @@ static const entry p_words[] = {
     MODIFIER_KW("precise", MOD_PRECISE),
 };
 static const entry r_words[] = {
-    KEYWORD("register", REGISTER), KEYWORD("return", RETURN), MODIFIER_KW("row_major", MOD_ROW_MAJOR),
+    ANY_CASE("rasterizerstate", D3D10_STATE), KEYWORD("register", REGISTER), KEYWORD("return", RETURN), MODIFIER_KW("row_major", MOD_ROW_MAJOR),
 };
 static const entry s_words[] = {
     INTERP("sample", MOD_SAMPLE), OBJECT("sampler", TY_SAMPLER, DIM_GENERIC),
@@ -84,7 +88,7 @@ static const entry s_words[] = {
     OBJECT("sampler3d", TY_SAMPLER, DIM_3D), OBJECT("samplercomparisonstate", TY_SAMPLER, DIM_GENERIC),
     OBJECT("samplercube", TY_SAMPLER, DIM_CUBE), OBJECT("samplerstate", TY_SAMPLER, DIM_GENERIC),
     KEYWORD("sampler_state", SAMPLER_STATE), ANY_CASE("sampler_state", SAMPLER_STATE),
-    MODIFIER_KW("shared", MOD_SHARED), MODIFIER_KW("static", MOD_STATIC), TYPE("string", E_STRING),
+    MODIFIER_KW("shared", MOD_SHARED), MODIFIER_KW("static", MOD_STATIC), TYPE("string", E_STRING), TYPE("String", E_STRING),
     KEYWORD("struct", STRUCT), KEYWORD("switch", SWITCH),
 };
 static const entry t_words[] = {

@@ -118,6 +118,7 @@ parse_typename *parse_find_typename(parse_ctx *ctx, const char *name);
 parse_vec parse_vec_new(void);
 parse_vec parse_vec_one(parse_ctx *ctx, void *item);
 parse_vec parse_vec_push(parse_ctx *ctx, parse_vec v, void *item);
+parse_vec parse_vec_concat(parse_ctx *ctx, parse_vec a, parse_vec b); /* a's items, then b's */
 
 /* parse_expr.c: expressions */
 hfx_expr *pb_expr(parse_ctx *ctx, hfx_expr_kind kind, hfx_loc loc);
@@ -153,6 +154,8 @@ const hfx_type *pb_template(parse_ctx *ctx, const hfx_type *object, const hfx_ty
 const hfx_type *pb_typename(parse_ctx *ctx, const parse_tok *t, hfx_loc loc);
 const hfx_type *pb_unsigned(parse_ctx *ctx, const hfx_type *ty, hfx_loc loc); /* unsigned int */
 const hfx_type *pb_struct(parse_ctx *ctx, const char *name, parse_vec fields, hfx_loc loc);
+const hfx_type *pb_struct_derived(parse_ctx *ctx, const char *name, const hfx_type *base, parse_vec fields,
+                                  hfx_loc loc);
 const hfx_type *pb_struct_ref(parse_ctx *ctx, const char *name, hfx_loc loc);
 parse_vec pb_fields(parse_ctx *ctx, parse_vec fields, parse_specs *specs, parse_vec declarators);
 parse_specs *pb_specs(parse_ctx *ctx, uint32_t mods, const hfx_type *type, hfx_loc loc);
@@ -180,6 +183,9 @@ hfx_decl *pb_technique(parse_ctx *ctx, const char *keyword, const char *name, pa
                        parse_vec passes, hfx_loc loc);
 void pb_global(parse_ctx *ctx, hfx_decl *d);
 void pb_globals(parse_ctx *ctx, parse_vec decls);
+/* `RasterizerState rs { ... };`, `fxgroup g { ... }`: Direct3D 10 effect syntax an fx_2_0 effect
+ * drops, with a warning. */
+void pb_d3d10_ignored(parse_ctx *ctx, const char *what, const char *name, hfx_loc loc);
 
 /* parse_decl.c: statements (depth-limited like expressions) */
 hfx_stmt *pb_stmt(parse_ctx *ctx, hfx_stmt_kind kind, hfx_loc loc);

@@ -274,6 +274,11 @@ void pb_global(parse_ctx *ctx, hfx_decl *d) {
     ctx->globals = parse_vec_push(ctx, ctx->globals, d);
 }
 
+void pb_d3d10_ignored(parse_ctx *ctx, const char *what, const char *name, hfx_loc loc) {
+    hfx_warning(ctx->diags, loc, X_UNSUPPORTED, "'%s': %s is Direct3D 10 effect syntax, ignored in fx_2_0", name ? name : "",
+                what);
+}
+
 void pb_globals(parse_ctx *ctx, parse_vec decls) {
     for (uint32_t i = 0; i < decls.count; i++) pb_global(ctx, decls.items[i]);
 }

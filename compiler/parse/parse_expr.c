@@ -21,6 +21,11 @@ parse_vec parse_vec_push(parse_ctx *ctx, parse_vec v, void *item) {
 
 parse_vec parse_vec_one(parse_ctx *ctx, void *item) { return parse_vec_push(ctx, parse_vec_new(), item); }
 
+parse_vec parse_vec_concat(parse_ctx *ctx, parse_vec a, parse_vec b) {
+    for (uint32_t i = 0; i < b.count; i++) a = parse_vec_push(ctx, a, b.items[i]);
+    return a;
+}
+
 /* ---- nodes with depth ---- */
 
 typedef parse_expr_node expr_node;
@@ -330,15 +335,15 @@ static bool fold_int(const hfx_expr *e, int64_t *out) {
     hfx_ev_op op;
     double r;
     switch (e->kind) {
-    case EX_INT: case EX_BOOL: *out = (int64_t)hfx_ev_normalise(HFX_EV_INT, (double)e->ival); return true;
+    case EX_INT: case EX_BOOL: *out = hfx_ev_int(hfx_ev_normalise(HFX_EV_INT, (double)e->ival)); return true;
     case EX_UNARY:
         if (!fold_int(e->args[0], &a) || !hfx_op_ev(e->op, &op) || !hfx_ev_unary(op, HFX_EV_INT, (double)a, &r)) return false;
-        *out = (int64_t)r;
+        *out = hfx_ev_int(r);
         return true;
     case EX_BINARY:
         if (!fold_int(e->args[0], &a) || !fold_int(e->args[1], &b) || !hfx_op_ev(e->op, &op)) return false;
         if (!hfx_ev_binary(op, HFX_EV_INT, (double)a, (double)b, &r)) return false;
-        *out = (int64_t)r;
+        *out = hfx_ev_int(r);
         return true;
     case EX_TERNARY:
         if (!fold_int(e->args[0], &a)) return false;
@@ -414,6 +419,19 @@ const hfx_type *pb_struct(parse_ctx *ctx, const char *name, parse_vec fields, hf
     for (uint32_t i = 0; i < st->field_count; i++) st->fields[i] = *(hfx_field *)fields.items[i];
     ctx->pending_struct = st;
     return type;
+}
+
+/* `struct B : A { ... }`: B has A's members first, then its own (fxc's struct inheritance). */
+const hfx_type *pb_struct_derived(parse_ctx *ctx, const char *name, const hfx_type *base, parse_vec fields,
+                                  hfx_loc loc) {
+    parse_vec all = parse_vec_new();
+    if (base && base->kind == TY_STRUCT) {
+        for (uint32_t i = 0; i < base->st->field_count; i++) all = parse_vec_push(ctx, all, &base->st->fields[i]);
+    } else {
+        hfx_error(ctx->diags, loc, X_TYPE_MISMATCH, "'%s': a struct can only inherit from a struct", name);
+    }
+    for (uint32_t i = 0; i < fields.count; i++) all = parse_vec_push(ctx, all, fields.items[i]);
+    return pb_struct(ctx, name, all, loc);
 }
 
 const hfx_type *pb_struct_ref(parse_ctx *ctx, const char *name, hfx_loc loc) {

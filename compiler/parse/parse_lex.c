@@ -97,6 +97,8 @@ static int effect_keyword_any_case(const parse_ctx *ctx, const hfx_token *t, int
     case TECHNIQUE:
     case PASS: return n && (n->kind == TK_IDENT || is_punct(n, P_LBRACE) || is_punct(n, P_LT)) ? code : 0;
     case SAMPLER_STATE: return is_punct(n, P_LBRACE) ? code : 0;
+    case D3D10_STATE: case FXGROUP: /* `BlendState b {`, `fxgroup g {`: a global's first word */
+        return ctx->brace_depth == 0 && n && n->kind == TK_IDENT ? code : 0;
     default: return n && n->kind == TK_IDENT && n->next && n->next->kind == TK_IDENT ? code : 0; /* COMPILE */
     }
 }
@@ -230,20 +232,23 @@ static bool closes(int code) { return code == ')' || code == ']' || code == '}';
 /* State blocks (pass, sampler_state, `sampler2D s {`) hold `Name = value;` lists, where two
  * identifiers in a row are no unknown type: the syntax error message depends on it. */
 static void track_state_blocks(parse_ctx *ctx, int code) {
-    if (code == PASS || code == SAMPLER_STATE) ctx->state_block_next = true;
+    if (code == PASS || code == SAMPLER_STATE || code == D3D10_STATE) ctx->state_block_next = true;
     if (code == TECHNIQUE) ctx->technique_next = true;
     uint32_t *top = ctx->state_block_count ? &ctx->state_blocks[ctx->state_block_count - 1] : NULL;
     if (code == '{') {
         /* `pass P <float3 v = {1,2,3};> {`: only the brace after the name or annotations opens it */
         bool after_head = ctx->prev_code == IDENT || ctx->prev_code == PASS || ctx->prev_code == SAMPLER_STATE ||
-                          ctx->prev_code == TECHNIQUE || ctx->prev_code == '>';
+                          ctx->prev_code == TECHNIQUE || ctx->prev_code == '>' || ctx->prev_code == ']';
         if (ctx->technique_next && after_head) { /* a technique's body holds passes, not states */
             ctx->technique_next = false;
             return;
         }
         /* `sampler2D s {` or, with annotations, `sampler2D s <...> {` */
         bool sampler_style = (ctx->prev_code == IDENT && ctx->hist_code[0] == TYPE_NAME) || ctx->prev_code == '>';
-        bool opens_block = (ctx->state_block_next && after_head) || sampler_style;
+        /* `pass P { ZEnable = true; { CullMode = None; } }`: braces nested in a state block */
+        bool nested = ctx->state_block_count && ctx->state_blocks[ctx->state_block_count - 1] + 1 == ctx->brace_depth &&
+                      (ctx->prev_code == ';' || ctx->prev_code == '{' || ctx->prev_code == '}');
+        bool opens_block = (ctx->state_block_next && after_head) || sampler_style || nested;
         if (opens_block && ctx->state_block_count < 4) ctx->state_blocks[ctx->state_block_count++] = ctx->brace_depth;
         if (opens_block) ctx->state_block_next = false;
     } else if (code == '}' && top && *top > ctx->brace_depth) {

@@ -45,7 +45,7 @@ static void yyerror(YYLTYPE *loc, parse_ctx *ctx, const char *msg);
 %token <tok> IDENT TYPE_NAME INTCONST FLOATCONST STRING ASM_BLOCK MODIFIER ASSIGN_OP
 %token <tok> STRUCT TYPEDEF TECHNIQUE PASS COMPILE SAMPLER_STATE REGISTER TRUE_KW FALSE_KW NULL_KW
 %token <tok> IF ELSE FOR WHILE DO SWITCH CASE DEFAULT BREAK CONTINUE DISCARD RETURN VECTOR MATRIX
-%token <tok> LE GE EQ NE ANDAND OROR SHL SHR INC DEC OTHER CBUFFER UNSIGNED
+%token <tok> LE GE EQ NE ANDAND OROR SHL SHR INC DEC OTHER CBUFFER UNSIGNED FXGROUP D3D10_STATE
 
 %precedence LOWER_THAN_ELSE
 %precedence ELSE
@@ -90,9 +90,19 @@ global
     | function                               { pb_global(ctx, $1); }
     | technique                              { pb_global(ctx, $1); }
     | CBUFFER name_opt cbuffer_register '{' cbuffer_members '}'
+    | D3D10_STATE IDENT '{' states '}'       { pb_d3d10_ignored(ctx, $1.text, $2.text, @2); }
+    | D3D10_STATE IDENT dims '{' states '}'  { pb_d3d10_ignored(ctx, $1.text, $2.text, @2); }
+    | FXGROUP name_opt '{' group_techniques '}' { pb_d3d10_ignored(ctx, "fxgroup", $2.text, @1); }
     | ';'
     | error ';'
     | error '}'
+    ;
+
+/* Direct3D 10 / 11 groups of techniques: parsed, then dropped (pb_d3d10_ignored). */
+group_techniques
+    : %empty
+    | group_techniques technique
+    | group_techniques ';'
     ;
 
 /* SM4 constant buffers in SM2/SM3 code: the members are ordinary globals (parameters). */
@@ -139,6 +149,7 @@ struct_spec
     : STRUCT IDENT '{' fields '}'            { $$ = pb_struct(ctx, $2.text, $4, @2); }
     | STRUCT '{' fields '}'                  { $$ = pb_struct(ctx, NULL, $3, @1); }
     | STRUCT IDENT '{' fields error '}'      { $$ = pb_struct(ctx, $2.text, $4, @2); }
+    | STRUCT IDENT ':' TYPE_NAME '{' fields '}' { $$ = pb_struct_derived(ctx, $2.text, pb_typename(ctx, &$4, @4), $6, @2); }
     | STRUCT IDENT                           { $$ = pb_struct_ref(ctx, $2.text, @2); }
     ;
 
@@ -170,6 +181,8 @@ decl_post
     | decl_post ':' IDENT                    { $$ = pb_decl_semantic($1, $3.text); }
     | decl_post ':' REGISTER '(' IDENT ')'   { $$ = pb_decl_register($1, $5.text); }
     | decl_post ':' REGISTER '(' IDENT ',' IDENT ')' { $$ = pb_decl_register($1, $7.text); }
+    | decl_post ':' REGISTER '(' IDENT '[' expr ']' ')' { $$ = pb_decl_register($1, $5.text); }
+    | decl_post ':' REGISTER '(' IDENT ',' IDENT '[' expr ']' ')' { $$ = pb_decl_register($1, $7.text); }
     | decl_post annotations                  { $$ = pb_decl_annotations(ctx, $1, $2); }
     ;
 
@@ -283,6 +296,7 @@ states
     : %empty                                 { $$ = parse_vec_new(); }
     | states state                           { $$ = parse_vec_push(ctx, $1, $2); }
     | states error ';'                       { $$ = $1; }
+    | states '{' states '}'                  { $$ = parse_vec_concat(ctx, $1, $3); }
     ;
 
 state
@@ -390,6 +404,7 @@ unary
     | '~' unary                              { $$ = pb_unary(ctx, OP_BITNOT, $2, @1); }
     | '(' ctor_type ')' unary                { $$ = pb_cast(ctx, $2, $4, @1); }
     | '(' ctor_type dims ')' unary           { $$ = pb_cast(ctx, pb_array_type(ctx, $2, $3), $5, @1); }
+    | '(' struct_spec ')' unary              { ctx->pending_struct = NULL; $$ = pb_cast(ctx, $2, $4, @1); }
     ;
 
 /* The binary operators in one rule: precedence declarations order them like C, which keeps

@@ -12,6 +12,51 @@
 
 #include "pp/pp_internal.h"
 
+static uint32_t put_utf8(char *out, uint32_t cp) {
+    if (cp < 0x80) { out[0] = (char)cp; return 1; }
+    if (cp < 0x800) { out[0] = (char)(0xC0 | cp >> 6); out[1] = (char)(0x80 | (cp & 0x3F)); return 2; }
+    if (cp < 0x10000) {
+        out[0] = (char)(0xE0 | cp >> 12); out[1] = (char)(0x80 | ((cp >> 6) & 0x3F)); out[2] = (char)(0x80 | (cp & 0x3F));
+        return 3;
+    }
+    out[0] = (char)(0xF0 | cp >> 18); out[1] = (char)(0x80 | ((cp >> 12) & 0x3F));
+    out[2] = (char)(0x80 | ((cp >> 6) & 0x3F)); out[3] = (char)(0x80 | (cp & 0x3F));
+    return 4;
+}
+
+/* fxc and XNA's content pipeline read UTF-16 sources (Visual Studio saves them so): one with a
+ * byte-order mark (FF FE little endian, FE FF big endian) becomes UTF-8 behind a UTF-8 mark,
+ * which the lexer skips, so columns count as in the original. An unpaired surrogate is U+FFFD.
+ * Any other text is returned as it is. */
+char *pp_decode_source(hfx_arena *arena, char *text, uint32_t *size) {
+    const unsigned char *u = (const unsigned char *)text;
+    uint32_t n = *size;
+    bool le = n >= 2 && u[0] == 0xFF && u[1] == 0xFE, be = n >= 2 && u[0] == 0xFE && u[1] == 0xFF;
+    if (!le && !be) return text;
+    uint32_t units = (n - 2) / 2;
+    char *out = hfx_arena_alloc_raw(arena, (size_t)units * 3 + 4); /* a unit gives at most 3 bytes */
+    if (!out) return NULL;
+    memcpy(out, "\xEF\xBB\xBF", 3);
+    uint32_t len = 3;
+    for (uint32_t i = 0; i < units; i++) {
+        const unsigned char *p = u + 2 + 2 * i;
+        uint32_t cp = le ? (uint32_t)(p[0] | p[1] << 8) : (uint32_t)(p[0] << 8 | p[1]);
+        if (cp >= 0xD800 && cp < 0xDC00 && i + 1 < units) {
+            const unsigned char *q = p + 2;
+            uint32_t lo = le ? (uint32_t)(q[0] | q[1] << 8) : (uint32_t)(q[0] << 8 | q[1]);
+            if (lo >= 0xDC00 && lo < 0xE000) {
+                cp = 0x10000 + ((cp - 0xD800) << 10) + (lo - 0xDC00);
+                i++;
+            }
+        }
+        if (cp >= 0xD800 && cp < 0xE000) cp = 0xFFFD;
+        len += put_utf8(out + len, cp);
+    }
+    out[len] = 0;
+    *size = len;
+    return out;
+}
+
 char *pp_read_file(hfx_arena *arena, const char *path, uint32_t *size) {
     struct stat st;
     if (stat(path, &st) != 0 || !S_ISREG(st.st_mode)) return NULL;
@@ -28,7 +73,7 @@ char *pp_read_file(hfx_arena *arena, const char *path, uint32_t *size) {
     if (!buf || got != n) return NULL;
     buf[n] = 0;
     *size = (uint32_t)n;
-    return buf;
+    return pp_decode_source(arena, buf, size);
 }
 
 char *pp_dirname(hfx_arena *arena, const char *path) {

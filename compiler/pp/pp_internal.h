@@ -144,7 +144,8 @@ bool pp_eval_condition(hfx_pp *pp, hfx_token *line, hfx_loc directive);
 
 /* pp_file.c */
 /* Reads a whole file into the arena, NUL-terminated; NULL when it cannot be read. */
-char *pp_read_file(hfx_arena *arena, const char *path, uint32_t *size);
+char *pp_read_file(hfx_arena *arena, const char *path, uint32_t *size); /* UTF-16 decoded */
+char *pp_decode_source(hfx_arena *arena, char *text, uint32_t *size); /* UTF-16 with a BOM to UTF-8 */
 /* Finds an #include'd file as fxc does; returns the path it opened (arena) or NULL. */
 const char *pp_find_include(hfx_pp *pp, const char *name, bool angled, const char *including_dir);
 char *pp_dirname(hfx_arena *arena, const char *path);

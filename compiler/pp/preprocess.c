@@ -481,6 +481,7 @@ hfx_token *hfx_preprocess(hfx_arena *arena, hfx_diags *diags, const char *name, 
     if (!name) name = "memory";
     bool too_large = text && size > HFXC_MAX_SOURCE_BYTES;
     char *copy = too_large ? NULL : text ? hfx_arena_strndup(arena, text, size) : pp_read_file(arena, name, &size);
+    if (copy && text) copy = pp_decode_source(arena, copy, &size);
     uint32_t f = hfx_diags_add_file(diags, name, text ? NULL : name, copy ? copy : "", copy ? size : 0);
     if (!copy && size > HFXC_MAX_SOURCE_BYTES) {
         hfx_error(diags, (hfx_loc){f, 1, 1}, X_SOURCE_TOO_LARGE, "the source is %u bytes: hfx compiles source files of up to %u MiB",

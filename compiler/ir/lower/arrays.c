@@ -1,6 +1,6 @@
 /* arrays.c: arrays of arrays, which GLSL 330 and ES 300 lack, become flat arrays: the type
  * float[2][3] is float[6], a[i][j] is a[i * 3 + j], and a nested initializer is spliced into
- * one list. Local and static variables only; a uniform array of arrays, or an inner array used
+ * one list. Local and static variables and function parameters only; a uniform array of arrays, or an inner array used
  * as a value (a[i] passed on whole), is reported at its HLSL position. */
 #include "ir/ir.h"
 
@@ -95,6 +95,9 @@ void ir_pass_arrays(ir_ctx *c, ir_shader *sh) {
         v->type = flat_type(c, v->type);
     }
     for (uint32_t i = 0; i < sh->func_count; i++) {
+        ir_func *f = sh->funcs[i];
+        for (uint32_t k = 0; k < f->param_count; k++) /* float f(float a[2][2]): a float[4] parameter */
+            if (nested(f->params[k]->type)) f->params[k]->type = flat_type(c, f->params[k]->type);
         flatten_decls(c, sh->funcs[i]->body);
         ir_walk_stmt_exprs(c, sh->funcs[i]->body, flatten_expr, &bad);
         ir_walk_stmt_exprs(c, sh->funcs[i]->body, check_left, &bad);

@@ -125,11 +125,33 @@ static ir_expr *bool_row(ir_ctx *c, ir_expr *e, unsigned r) {
     return x;
 }
 
+/* `M > 6 ? M : -M`: a bool matrix choosing between two matrices, row by row. */
+static void select_rows(ir_ctx *c, ir_expr **slot) {
+    ir_expr *e = *slot;
+    const hfx_type *t = e->type;
+    if (t->kind != TY_MATRIX || t->rows != e->a[0]->type->rows || t->cols != e->a[0]->type->cols ||
+        ir_has_side_effects(e->a[1]) || ir_has_side_effects(e->a[2]))
+        return;
+    ir_expr *m = ir_new_expr(c, IE_CONSTRUCT, t, e->loc, t->rows);
+    for (unsigned r = 0; r < t->rows; r++) {
+        ir_expr *x = ir_new_expr(c, IE_SELECT, hfx_type_vector(c->types, t->base, t->cols), e->loc, 3);
+        if (!(x->a[0] = bool_row(c, e->a[0], r))) return;
+        x->a[1] = row_of(c, e->a[1], r);
+        x->a[2] = row_of(c, e->a[2], r);
+        m->a[r] = x;
+    }
+    *slot = m;
+}
+
 static void lower_bool_matrix(ir_ctx *c, ir_expr **slot, void *data) {
     (void)data;
     ir_expr *e = *slot;
+    if (e->kind == IE_SELECT && is_bool_matrix(e->a[0])) {
+        select_rows(c, slot);
+        return;
+    }
     if (e->kind == IE_INDEX && is_bool_matrix(e->a[0]) && ir_is_const(e->a[1])) {
-        ir_expr *row = bool_row(c, e->a[0], (unsigned)e->a[1]->cval[0]);
+        ir_expr *row = bool_row(c, e->a[0], hfx_ev_uint(e->a[1]->cval[0]));
         if (row) *slot = row;
         return;
     }

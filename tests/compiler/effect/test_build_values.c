@@ -431,6 +431,58 @@ static void located_errors(void) {
     check_error(src, "t.fx(6,20): error X3094: shader arrays chosen by more than one int parameter are not supported");
 }
 
+/* An effect written for Direct3D 9 and 10 (issue 30): the D3D10 state objects, technique10 and
+ * fxgroup are dropped with a warning each, D3D10's Filter becomes D3D9's three filter states
+ * (D3DTEXF_POINT 1, LINEAR 2, ANISOTROPIC 3), an unknown sampler state is skipped, nested
+ * braces in a pass hold more states, and the Direct3D 9 technique loads. */
+static void d3d10_syntax_beside_d3d9(void) {
+    hfxc_result *r = compile(
+        "float4 c;\n"
+        "RasterizerState rs { CullMode = None; FillMode = Solid; };\n"
+        "BlendState bs { BlendEnable[0] = TRUE; SrcBlend = ONE; };\n"
+        "DepthStencilState ds { DepthEnable = FALSE; };\n"
+        "SamplerState lin { Filter = MIN_LINEAR_MAG_MIP_POINT; AddressU = Wrap; };\n"
+        "sampler an = sampler_state { Filter = ANISOTROPIC; ComparisonFunc = LESS; };\n"
+        "float4 ps() : COLOR0 { return c; }\n"
+        "technique10 T10 { pass P { SetPixelShader(CompileShader(ps_4_0, ps())); SetRasterizerState(rs);\n"
+        "  SetBlendState(bs, float4(0, 0, 0, 0), 0xFFFFFFFF); SetDepthStencilState(ds, 0); } }\n"
+        "fxgroup G { technique11 T11 { pass P { SetPixelShader(CompileShader(ps_5_0, ps())); } } }\n"
+        "technique T { pass P { PixelShader = compile ps_2_0 ps(); { CullMode = CW; } ZEnable = false; } }\n");
+    const hfx_fx_effect *fx = effect_of(r);
+    CHECK(fx != NULL);
+    char *text = hfxc_diagnostics_text(r);
+    CHECK_CONTAINS(text, "t.fx(2,17): warning X3094: 'rs': RasterizerState is Direct3D 10 effect syntax, ignored in fx_2_0");
+    CHECK_CONTAINS(text, "t.fx(3,12): warning X3094: 'bs': BlendState is Direct3D 10 effect syntax, ignored in fx_2_0");
+    CHECK_CONTAINS(text, "t.fx(4,19): warning X3094: 'ds': DepthStencilState is Direct3D 10 effect syntax, ignored in fx_2_0");
+    CHECK_CONTAINS(text, "t.fx(6,52): warning X3000: unrecognized sampler state 'ComparisonFunc' ignored");
+    CHECK_CONTAINS(text, "t.fx(8,13): warning X3094: 'T10': technique10 is Direct3D 10 effect syntax, ignored in fx_2_0");
+    CHECK_CONTAINS(text, "t.fx(10,1): warning X3094: 'G': fxgroup is Direct3D 10 effect syntax, ignored in fx_2_0");
+    free(text);
+    if (!fx) goto done;
+    CHECK_INT(fx->technique_count, 1);
+    CHECK_STR(fx->techniques[0].name, "T");
+    CHECK_INT(fx->sampler_count, 2);
+    static const char *const filters[] = {"MinFilter", "MagFilter", "MipFilter"};
+    static const int32_t lin[] = {2, 1, 1, 3}, an[] = {3, 3, 2}; /* lin's fourth: D3DTADDRESS_WRAP 1 */
+    for (uint32_t k = 0; k < 3; k++) {
+        const hfx_fx_state *a = &fx->states[fx->samplers[0].first_state + k], *b = &fx->states[fx->samplers[1].first_state + k];
+        CHECK_INT(a->id, state_id(filters[k]));
+        CHECK_INT(a->i, lin[k]);
+        CHECK_INT(b->id, state_id(filters[k]));
+        CHECK_INT(b->i, an[k]);
+    }
+    CHECK_INT(fx->samplers[0].state_count, 4);
+    CHECK_INT(fx->states[fx->samplers[0].first_state + 3].i, 1);
+    CHECK_INT(fx->samplers[1].state_count, 3);
+    const hfx_fx_pass *p = &fx->passes[fx->techniques[0].first_pass];
+    CHECK_INT(p->state_count, 3); /* PixelShader, CullMode (nested), ZEnable */
+    CHECK_INT(fx->states[p->first_state + 1].id, state_id("CullMode"));
+    CHECK_INT(fx->states[p->first_state + 1].i, 2); /* D3DCULL_CW */
+    CHECK_INT(fx->states[p->first_state + 2].id, state_id("ZEnable"));
+done:
+    hfxc_result_free(r);
+}
+
 int main(void) {
     RUN(defaults_are_folded);
     RUN(intrinsics_and_d3d_rules_fold);
@@ -442,5 +494,6 @@ int main(void) {
     RUN(sampler_arrays);
     RUN(shader_variables_and_arrays);
     RUN(located_errors);
+    RUN(d3d10_syntax_beside_d3d9);
     return test_summary();
 }

@@ -598,11 +598,71 @@ static void vector_logic_and_bits(void) {
     check_pixel(src, u, 2, 1, 0, 13.0f / 16, 0.5f);
 }
 
+/* User functions called in compile arguments, nested, from both stages and in several passes:
+ * each comes out before the entry that now calls it. t = 0.25, m = 0.125, f = 0.5:
+ * helper(t) = 0.5, fadeout = saturate(0.5 - 0.125) * 0.5 = 0.1875.
+ * T: k = fadeout + helper(m) = 0.4375; fade = 0.1875; size = lerp(0.25, 0.75, 0.1875) = 0.34375.
+ * U: k = helper(f) = 1; fade = helper(0.1875) = 0.375; size = lerp(0, 1, 0.1875) = 0.1875. */
+static void functions_in_compile_arguments(void) {
+    const char *src =
+        "float t; float m; float f;\n"
+        "float helper(float x) { return x * 2; }\n"
+        "float fadeout(float t, float m, float f) { return saturate(helper(t) - m) * f; }\n"
+        "float4 lerpsize(float t, float m, float4 a, float4 b, float f) { return lerp(a, b, fadeout(t, m, f)); }\n"
+        "struct V { float4 pos : POSITION; float2 uv : TEXCOORD0; };\n"
+        "V vs(float4 p : POSITION, float2 uv : TEXCOORD0, uniform float k) { V o; o.pos = p; o.uv = float2(k, uv.y); return o; }\n"
+        "float4 strokePS(uniform float fade, uniform float4 size, float2 uv : TEXCOORD0) : COLOR0 {\n"
+        "  return float4(fade, size.y, uv.x, 1); }\n"
+        "technique T {\n"
+        "  pass P0 { VertexShader = compile vs_3_0 vs(fadeout(t, m, f) + helper(m));\n"
+        "            PixelShader = compile ps_3_0 strokePS(fadeout(t, m, f), lerpsize(t, m, 0.25, 0.75, f)); }\n"
+        "  pass P1 { VertexShader = compile vs_3_0 vs(helper(t));\n"
+        "            PixelShader = compile ps_3_0 strokePS(helper(fadeout(t, m, f)), lerpsize(t, m, 0, 1, helper(f))); } }\n"
+        "technique U { pass P0 { VertexShader = compile vs_3_0 vs(helper(f));\n"
+        "  PixelShader = compile ps_3_0 strokePS(helper(fadeout(t, m, f)), lerpsize(t, m, 0, 1, f)); } }\n";
+    const uval u[] = { {"t", 'f', 1, {0.25f}, {0}}, {"m", 'f', 1, {0.125f}, {0}}, {"f", 'f', 1, {0.5f}, {0}} };
+    float px[4] = {0};
+    CHECK(render(src, "T", u, 3, W / 2, H / 2, px));
+    CHECK_NEAR(px[0], 0.1875f, TOL);
+    CHECK_NEAR(px[1], 0.34375f, TOL);
+    CHECK_NEAR(px[2], 0.4375f, TOL);
+    CHECK(render(src, "U", u, 3, W / 2, H / 2, px));
+    CHECK_NEAR(px[0], 0.375f, TOL);
+    CHECK_NEAR(px[1], 0.1875f, TOL);
+    CHECK_NEAR(px[2], 1.0f, TOL);
+}
+
+/* Entry-point arrays with a semantic take one register each (`float4 t[2] : TEXCOORD0` is
+ * TEXCOORD0 and TEXCOORD1), in both directions; an output struct member without a semantic
+ * goes nowhere. uv[0] is the quad's TEXCOORD0 (u, v, 0, 1): t[1] = (0, 1, 0.75, 0), so the pixel
+ * shader gives (t[0].x, t[0].y, t[1].z, t[1].y) = (0.25, 0.5, 0.75, 1) either way. */
+static void entry_point_arrays(void) {
+    const char *src =
+        "struct VO { float4 p : POSITION; float4 t[2] : TEXCOORD0; float unused; };\n"
+        "VO vs(float4 p : POSITION, float4 uv[2] : TEXCOORD0) {\n"
+        "  VO o; o.p = p; o.t[0] = float4(0.25, 0.5, 0, 0); o.t[1] = float4(uv[0].zw, 0.75, 0) + uv[1] * 0;\n"
+        "  o.unused = 3; return o; }\n"
+        "float4 apart(float4 a : TEXCOORD0, float4 b : TEXCOORD1) : COLOR { return float4(a.xy, b.z, b.y); }\n"
+        "float4 whole(float4 t[2] : TEXCOORD0) : COLOR { return float4(t[0].xy, t[1].z, t[1].y); }\n"
+        "technique A { pass P { VertexShader = compile vs_3_0 vs(); PixelShader = compile ps_3_0 apart(); } }\n"
+        "technique W { pass P { VertexShader = compile vs_3_0 vs(); PixelShader = compile ps_3_0 whole(); } }\n";
+    for (int t = 0; t < 2; t++) {
+        float px[4] = {0};
+        CHECK(render(src, t ? "W" : "A", NULL, 0, W / 2, H / 2, px));
+        CHECK_NEAR(px[0], 0.25f, TOL);
+        CHECK_NEAR(px[1], 0.5f, TOL);
+        CHECK_NEAR(px[2], 0.75f, TOL);
+        CHECK_NEAR(px[3], 1.0f, TOL);
+    }
+}
+
 int main(void) {
     gl = test_gl_create(W, H);
     if (!gl) test_skip("no OSMesa GL 3.3 context");
     load_gl();
     RUN(mul_row_vector);
+    RUN(functions_in_compile_arguments);
+    RUN(entry_point_arrays);
     RUN(scalar_casts_fill_structs_and_arrays);
     RUN(pow_of_negative_base);
     RUN(pow_small_of_expression);

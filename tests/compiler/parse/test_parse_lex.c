@@ -301,11 +301,12 @@ static void object_types(void) {
     }
     static const char *const misses[] = {"texture4d x;", "texture2 x;", "texture_2d x;", "sampler_2d x;",
                                          "Texture2DArray x;", "samplerstates x;", "vertexshaders x;",
-                                         "Void x;", "VOID x;", "String x;", "STRING x;", "strin x;", "voi x;"};
+                                         "Void x;", "VOID x;", "STRING x;", "strin x;", "voi x;"};
     for (size_t i = 0; i < sizeof misses / sizeof *misses; i++) EXPECT_CODE(misses[i], IDENT);
     CHECK(expect_type("void", make_void, NULL));
     object_spec str = {TY_STRING, DIM_GENERIC};
     CHECK(expect_type("string", make_object, &str));
+    CHECK(expect_type("String", make_object, &str)); /* fxc takes both spellings (issue 30) */
 }
 
 /* In a state block a type's spelling names a state (`VertexShader = ...`), except as a

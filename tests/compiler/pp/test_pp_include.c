@@ -1,6 +1,8 @@
 /* #include: where files are searched (the includer's folder, the root's folder, -I paths),
  * backslashes and case differences, missing files, cycles, depth, #pragma once, and the
  * locations of tokens that come from included files. Files are made in a temp folder. */
+#include <stdbool.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -210,6 +212,53 @@ static void root_read_from_disk_with_crlf_and_bom(void) {
     done(&r);
 }
 
+/* Writes `text` as UTF-16 with its byte-order mark; \x01 stands for U+20AC (one unit) and \x02
+ * for U+1F600 (the surrogate pair D83D DE00), both in comments here. */
+static void put_utf16(const char *rel, const char *text, bool big_endian) {
+    FILE *f = fopen(path_of(rel), "wb");
+    if (!f) return;
+    uint16_t units[512];
+    size_t n = 0;
+    units[n++] = 0xFEFF;
+    for (const char *c = text; *c && n < 510; c++) {
+        if (*c == 1) units[n++] = 0x20AC;
+        else if (*c == 2) { units[n++] = 0xD83D; units[n++] = 0xDE00; }
+        else units[n++] = (uint16_t)(unsigned char)*c;
+    }
+    for (size_t i = 0; i < n; i++) {
+        unsigned char b[2] = {(unsigned char)(units[i] & 0xFF), (unsigned char)(units[i] >> 8)};
+        if (big_endian) { unsigned char t = b[0]; b[0] = b[1]; b[1] = t; }
+        fwrite(b, 1, 2, f);
+    }
+    fclose(f);
+}
+
+/* fxc and XNA's content pipeline read UTF-16 sources with a BOM, little or big endian (issue
+ * 30): tokens, lines and columns as in the text, an included UTF-16 file as well. */
+static void utf16_sources(void) {
+    put_utf16("u16le.fx", "// \x01 \x02\r\n#include \"u16be.fxh\"\r\nfloat a[N];\r\n#error done\r\n", false);
+    put_utf16("u16be.fxh", "#define N 4 // \x02\n", true);
+    pp_run r;
+    pp_file(&r, "u16le.fx", NULL);
+    CHECK_STR(r.out, "float a [ 4 ] ;");
+    CHECK_STR(r.diag, "u16le.fx(4,1): error X1003: done\n");
+    hfx_token *a = find_tok(&r, "a");
+    CHECK(a != NULL);
+    if (a) {
+        CHECK_INT(a->loc.line, 3);
+        CHECK_INT(a->loc.col, 7);
+    }
+    done(&r);
+    /* the same text in memory, big endian */
+    static const char mem[] = "\xFE\xFF\0f\0l\0o\0a\0t\0 \0b\0;";
+    hfx_arena_init(&r.arena);
+    hfx_diags_init(&r.diags, &r.arena, 0);
+    r.toks = hfx_preprocess(&r.arena, &r.diags, "mem.fx", mem, sizeof mem - 1, NULL);
+    CHECK_STR(join_all(&r.arena, r.toks), "float b ;");
+    CHECK_INT(r.diags.errors, 0);
+    done(&r);
+}
+
 int main(void) {
     dir = test_temp_dir();
     if (!dir) test_skip("no temp folder");
@@ -223,6 +272,7 @@ int main(void) {
     RUN(conditionals_are_per_file);
     RUN(include_from_macro_and_file_macro);
     RUN(root_read_from_disk_with_crlf_and_bom);
+    RUN(utf16_sources);
     int rc = test_summary();
     char cmd[1200];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
