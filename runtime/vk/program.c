@@ -146,6 +146,7 @@ int hfx_vk_program_build(hfx_shared *sh, uint32_t index) {
     p->sampler_count = fp->sampler_count;
     int rc = make_module(sh, &fp->code[HFX_STAGE_VERTEX][HFX_TARGET_SPIRV_VK], "vertex", &p->vs);
     if (!rc) rc = make_module(sh, &fp->code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV_VK], "pixel", &p->fs);
+    if (!rc) rc = hfx_vk_outputs_make(sh->dev, &fp->code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV_VK], p);
     if (!rc) rc = read_block(&b, fp);
     if (!rc) rc = map_uniforms(&b, fp);
     if (!rc) rc = make_layouts(sh, p);
@@ -160,6 +161,8 @@ void hfx_vk_program_free(hfx_device *dev, vk_program *p) {
     if (p->set_layout) vk->fn.DestroyDescriptorSetLayout(vk->device, p->set_layout, NULL);
     if (p->vs) vk->fn.DestroyShaderModule(vk->device, p->vs, NULL);
     if (p->fs) vk->fn.DestroyShaderModule(vk->device, p->fs, NULL);
+    for (int n = 0; n < 4; n++)
+        if (p->fs_fewer[n]) vk->fn.DestroyShaderModule(vk->device, p->fs_fewer[n], NULL);
     free(p->slots);
     free(p->uploads);
     memset(p, 0, sizeof *p);
