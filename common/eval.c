@@ -21,9 +21,18 @@ static double float_to_uint(double v) {
     return v >= 4294967295.0 ? 4294967295.0 : trunc(v);
 }
 
-/* The low 32 bits of an integral double, as int or uint. */
-static int32_t bits_i(double v) { return (int32_t)(uint32_t)(uint64_t)(int64_t)v; }
-static uint32_t bits_u(double v) { return (uint32_t)(uint64_t)(int64_t)v; }
+/* The only casts from a floating type to an integer one in the libraries: v is already
+ * truncated into the target's range, so the cast is defined. */
+int32_t hfx_ev_int(double v) { return (int32_t)float_to_int(v); }
+uint32_t hfx_ev_uint(double v) { return (uint32_t)float_to_uint(v); }
+
+/* The low 32 bits of an integral double, as int or uint (fmod is exact; NaN and infinities,
+ * which no int holds, give 0). */
+static uint32_t bits_u(double v) {
+    double m = fmod(trunc(v), 4294967296.0);
+    return hfx_ev_uint(m < 0 ? m + 4294967296.0 : m);
+}
+static int32_t bits_i(double v) { return (int32_t)bits_u(v); }
 
 double hfx_ev_convert(hfx_ev_base from, hfx_ev_base to, double v) {
     switch (to) {

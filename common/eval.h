@@ -56,6 +56,12 @@ typedef struct hfx_ev_value {
     double c[HFX_EV_MAX_COMPONENTS];
 } hfx_ev_value;
 
+/* THE float -> integer conversion: every one in hfx's libraries goes through these (C11 6.3.1.4
+ * leaves a cast of an out-of-range value undefined; docs/conventions.md, "Float to integer";
+ * tests/common/float_casts.cmake finds a raw one). Truncates toward zero, NaN gives 0, out of range clamps
+ * (uint: negatives give 0): Direct3D's rule above. */
+int32_t hfx_ev_int(double v);
+uint32_t hfx_ev_uint(double v);
 /* v of base `from` as base `to`, by the conversion rules above. */
 double hfx_ev_convert(hfx_ev_base from, hfx_ev_base to, double v);
 /* A value of base b from any double (a literal): converted as from float, or kept when integral in range. */

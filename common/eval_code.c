@@ -103,7 +103,7 @@ static double from_bits(hfx_ev_base b, uint32_t w) {
 }
 
 uint32_t hfx_evc_bits(hfx_ev_base b, double v) {
-    if (b != HFX_EV_FLOAT) return b == HFX_EV_UINT ? (uint32_t)v : (uint32_t)(int32_t)v;
+    if (b != HFX_EV_FLOAT) return b == HFX_EV_UINT ? hfx_ev_uint(v) : (uint32_t)hfx_ev_int(v);
     float f = (float)v;
     uint32_t w;
     memcpy(&w, &f, sizeof w);
@@ -143,17 +143,27 @@ static bool call(hfx_ev_fn fn, hfx_ev_value *args, unsigned n, hfx_ev_value *out
     return hfx_ev_call(fn, args, n, out); /* float-only functions of int arguments */
 }
 
+/* An index of base b as D3D9 takes it into an array of count: truncated, clamped into it. */
+static uint32_t clamped_index(hfx_ev_base b, double i, uint32_t count) {
+    int32_t k = hfx_ev_int(hfx_ev_convert(b, HFX_EV_INT, i));
+    return k < 0 ? 0 : (uint32_t)k >= count ? count - 1 : (uint32_t)k;
+}
+
+uint32_t hfx_evc_index(const hfx_ev_value *v, uint32_t last) {
+    if (!v->n) return 0;
+    if (v->base == HFX_EV_UINT) return v->c[0] > last ? last : hfx_ev_uint(v->c[0]);
+    int32_t k = hfx_ev_int(hfx_ev_convert(v->base, HFX_EV_INT, v->c[0]));
+    return k < 0 ? 0 : (uint32_t)k > last ? last : (uint32_t)k;
+}
+
 static bool table(hfx_ev_value *index, hfx_ev_base b, uint32_t n, const uint32_t *data) {
-    double i = hfx_ev_convert(index->base, HFX_EV_INT, index->c[0]);
-    uint32_t count = data[0];
-    uint32_t k = i < 0 ? 0 : i >= count ? count - 1 : (uint32_t)i;
+    uint32_t k = clamped_index(index->base, index->c[0], data[0]);
     load(index, b, n, data + 1 + (size_t)k * n);
     return true;
 }
 
 static bool element(hfx_ev_value *index, hfx_ev_base b, uint32_t n, const uint32_t *w, const uint32_t *values) {
-    double i = hfx_ev_convert(index->base, HFX_EV_INT, index->c[0]);
-    uint32_t k = i < 0 ? 0 : i >= w[1] ? w[1] - 1 : (uint32_t)i;
+    uint32_t k = clamped_index(index->base, index->c[0], w[1]);
     load(index, b, n, values + w[0] + (size_t)k * w[2]);
     return true;
 }

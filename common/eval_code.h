@@ -38,7 +38,7 @@ typedef enum {
     HFX_EVC_MATMUL, HFX_EVC_OP_COUNT
 } hfx_evc_op;
 
-enum { HFX_EVC_MAX_DEPTH = 8, HFX_EVC_MAX_WORDS = 1u << 20 };
+enum { HFX_EVC_MAX_DEPTH = 16, HFX_EVC_MAX_WORDS = 1u << 20 }; /* 16: fxc's preshaders (FXLVM trees) need more than 8 */
 
 /* The instruction word. */
 static inline uint32_t hfx_evc_word(hfx_evc_op op, uint32_t a, uint32_t b) {
@@ -52,6 +52,9 @@ int hfx_evc_validate(const uint32_t *code, uint32_t words, uint32_t value_words,
 uint32_t hfx_evc_next(const uint32_t *code, uint32_t at, uint32_t words);
 /* Component v of base b as a program or a parameter holds it: float bits, or int / uint bits. */
 uint32_t hfx_evc_bits(hfx_ev_base b, double v);
+/* The array entry a selector value (`PixelShader = (PSArray[i]);`) names, as D3D9 indexes: its
+ * first component truncated by the rule of eval.h (NaN 0), clamped to [0, last]. */
+uint32_t hfx_evc_index(const hfx_ev_value *v, uint32_t last);
 /* Runs a validated program over the parameter words; false when the arithmetic does not fold
  * (an integer division by zero, shapes that do not combine): the caller keeps its last value. */
 bool hfx_evc_run(const uint32_t *code, uint32_t words, const uint32_t *values, hfx_ev_value *out);

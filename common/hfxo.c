@@ -12,6 +12,7 @@
 #include <zlib.h>
 
 #include "eval_code.h"
+#include "states.h"
 
 #define HFXO_VERSION 3u /* 3: preshaders (PRES, PCOD); 2: registers of HFXC_PACK_UNIFORMS (EXPR was added as an optional section) */
 #define HFXO_OLDEST 2u  /* version 2 files read as they are: they have no preshaders */
@@ -819,13 +820,31 @@ static bool check_annotation(reader *r, const hfx_fx_annotation *a, uint32_t i) 
     return true;
 }
 
+static bool reads_parameters(const uint32_t *code, uint32_t words) {
+    for (uint32_t at = 0; at < words; at = hfx_evc_next(code, at, words))
+        if ((code[at] & 0xffu) == HFX_EVC_PARAM || (code[at] & 0xffu) == HFX_EVC_ELEMENT) return true;
+    return false;
+}
+
+/* A shader-array selector (`PixelShader = (PSArray[i]);`) must leave one index. A program's
+ * shape does not depend on the values, so one run tells; a program of constants that gives no
+ * exact index (1e30, NaN, -1, 2.5) always would, and is refused too. Apply clamps the others. */
+static bool check_selector(reader *r, const hfx_fx_effect *fx, const hfx_fx_state *s, uint32_t i) {
+    hfx_ev_value v;
+    if (!hfx_evc_run(fx->exprs + s->ref, s->count, fx->values, &v)) return true; /* kept at Apply */
+    if (v.n != 1) return fail(r, "state %u: a shader array selector gives %u values, not one index", i, (unsigned)v.n);
+    if (!reads_parameters(fx->exprs + s->ref, s->count) && hfx_evc_index(&v, HFX_NONE - 1) != v.c[0])
+        return fail(r, "state %u: a shader array selector always gives %g, no array index", i, v.c[0]);
+    return true;
+}
+
 /* An expression program: inside EXPR, and valid (eval_code.h), so Apply can run it blindly. */
 static bool check_expr(reader *r, const hfx_fx_effect *fx, const hfx_fx_state *s, uint32_t i) {
     char why[96];
     if (!s->count || !range_ok(s->ref, s->count, fx->expr_words)) return fail(r, "state %u has its program outside EXPR", i);
     if (hfx_evc_validate(fx->exprs + s->ref, s->count, fx->value_words, why, sizeof why) != 0)
         return fail(r, "state %u: %s", i, why);
-    return true;
+    return s->id == HFX_ST_VERTEXSHADER || s->id == HFX_ST_PIXELSHADER ? check_selector(r, fx, s, i) : true;
 }
 
 static bool check_state(reader *r, const hfx_fx_effect *fx, const hfx_fx_state *s, uint32_t i) {

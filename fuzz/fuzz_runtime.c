@@ -1,14 +1,17 @@
 /* The runtime on .hfxo bytes (linked with hfx_runtime: no compiler), on an OSMesa context:
  * the size field and CRC-32 are repaired first (fuzz_check.h), the effect is loaded for GLSL
- * 330, then every pass of every technique is applied, inside begin/end, on the effect and on
- * a clone. Refused files must say why; accepted ones must apply without a crash or a GL error
- * left behind for the application. */
+ * 330, every annotation is read, every parameter set to hostile values (NaN, infinities,
+ * FLT_MAX, denormals, INT_MIN, INT_MAX: fuzz_values.h) and a scene bound with hostile matrices,
+ * then every pass of every technique is applied, inside begin/end, on the effect and on a clone
+ * (given other hostile values). Refused files must say why; accepted ones must apply without a
+ * crash or undefined behaviour (UBSan with float-cast-overflow). */
 #include <stdint.h>
 #include <stdlib.h>
 
 #include <hfx/hfx.h>
 
 #include "fuzz_check.h"
+#include "fuzz_values.h"
 #include "gl_context.h"
 
 typedef unsigned (*gl_get_error_fn)(void);
@@ -44,10 +47,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     hfx_effect *fx = hfx_effect_load_memory(dev, fuzz_repair_hfxo(data, size, bytes), size, "fuzz.hfxo", NULL, &errors);
     fuzz_require(fx != NULL || (errors && *errors), "a refused effect without a reason");
     if (fx) {
+        uint32_t seed = fuzz_seed(data, size);
+        fuzz_read_annotations(fx, bytes, size);
+        apply_all(fx);
+        fuzz_hostile_values(fx, seed);
         apply_all(fx);
         hfx_effect *copy = hfx_effect_clone(fx);
         fuzz_require(copy != NULL, "clone failed");
         hfx_effect_destroy(fx);
+        apply_all(copy);
+        fuzz_hostile_values(copy, seed + 1);
         apply_all(copy);
         hfx_effect_destroy(copy);
     }

@@ -405,6 +405,10 @@ extern const hfx_backend hfx_gl_backend;
 /* state_values.c: render and sampler states as data (D3D9's defaults, a state's current value). */
 void hfx_rs_defaults(hfx_rs_value *rs);
 void hfx_rs_resolve(const hfx_effect *fx, const hfx_fx_state *st, hfx_rs_value *out);
+/* The shader-array entry the selector state `state` (a VertexShader / PixelShader EXPR state of
+ * pass `pass`; stage 0 / 1) picks now: its value truncated by Direct3D's rule (NaN 0) and clamped
+ * into the entries the pass's variants name, as D3D9 clamps an array index. HFX_NONE for none. */
+uint32_t hfx_rs_selected(const hfx_effect *fx, uint32_t state, uint32_t pass, int stage);
 
 /* device_core.c */
 int hfx_rt_fail(hfx_device *dev, int code, const char *fmt, ...) __attribute__((format(printf, 3, 4)));

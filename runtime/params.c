@@ -5,6 +5,7 @@
 #include <string.h>
 #include <strings.h>
 
+#include "eval.h"
 #include "internal.h"
 
 static const hfx_fx_param *info(const hfx_param *p) { return p->info; }
@@ -428,6 +429,6 @@ int hfx_annotation_int(const hfx_annotation *a, int *out) {
     if (!a || !out) return HFX_ERR_NULL;
     if (a->a->type == HFX_TYPE_STRING || !a->a->count || !a->a->data)
         return hfx_rt_fail(a->sh->dev, HFX_ERR_TYPE, "annotation '%s' is not numeric", hfx_annotation_name(a));
-    *out = a->a->type == HFX_TYPE_FLOAT ? (int)annotation_word(a->a, 0) : (int)(int32_t)a->a->data[0];
+    *out = a->a->type == HFX_TYPE_FLOAT ? hfx_ev_int(annotation_word(a->a, 0)) : (int)(int32_t)a->a->data[0];
     return HFX_OK;
 }

@@ -45,15 +45,25 @@ void hfx_rt_copy_textures(hfx_effect *to, uint32_t j, const hfx_effect *from, ui
     copy_textures(to, j, from, i, 0);
 }
 
-/* Old values of top-level parameters whose shape is unchanged; each is marked changed as a set
- * would, so the next Apply sends it. */
+/* Whether top-level parameter i of from holds something else than its file said: the
+ * application (or a viewer's panel) set it. One set back to the file's value counts as unset. */
+static int set_by_application(const hfx_effect *from, uint32_t i) {
+    const hfx_fx_param *p = &from->sh->fx->params[i];
+    const uint32_t *defaults = from->sh->fx->values;
+    if (!p->words) return 0;
+    return !defaults || memcmp(from->values + p->offset, defaults + p->offset, p->words * sizeof *defaults) != 0;
+}
+
+/* Top-level parameters whose shape is unchanged keep what the application set (each marked
+ * changed as a set would, so the next Apply sends it); the others take the file's new default,
+ * so an edited initializer shows. Textures are never in the file: they are all kept. */
 static void carry_values(hfx_effect *to, const hfx_effect *from) {
     const hfx_fx_effect *a = from->sh->fx, *b = to->sh->fx;
     for (uint32_t i = 0; i < a->top_param_count; i++) {
         if (!a->params[i].name) continue;
         uint32_t j = hfx_fx_param_find(b, a->params[i].name);
         if (j == HFX_NONE || j >= b->top_param_count || !same_shape(a, i, b, j, 0)) continue;
-        if (a->params[i].words)
+        if (set_by_application(from, i))
             memcpy(to->values + b->params[j].offset, from->values + a->params[i].offset, a->params[i].words * sizeof *to->values);
         copy_textures(to, j, from, i, 0);
         hfx_rt_mark_changed(to, j);

@@ -53,6 +53,17 @@ static int shape_fits(const hfx_param *p, int id) {
     return k == HFX_CLASS_SCALAR || k == HFX_CLASS_VECTOR;
 }
 
+/* FX Composer's `Object = "SpotLight0"` and DXSAS's `SasBindAddress` say whose matrix or
+ * position a parameter is: `float4x4 ShadowXf : View < string Object = "SpotLight0"; >` is the
+ * light's view, not the camera's, and is the application's to set. Only an Object naming a
+ * camera (or none) leaves the parameter to the scene. */
+static int names_another_object(hfx_param *p) {
+    if (hfx_param_annotation(p, "SasBindAddress")) return 1;
+    hfx_annotation *a = hfx_param_annotation(p, "Object");
+    const char *object = a ? hfx_annotation_string(a) : NULL;
+    return object && *object && strncasecmp(object, "Camera", 6) != 0;
+}
+
 /* The effect's top-level parameters with a standard semantic, as (index << 8 | id). */
 static int make_plan(hfx_effect *fx) {
     size_t n = hfx_effect_param_count(fx);
@@ -61,7 +72,7 @@ static int make_plan(hfx_effect *fx) {
     for (size_t i = 0; i < n; i++) {
         hfx_param *p = hfx_effect_param_at(fx, i);
         int id = semantic_id(hfx_param_semantic(p));
-        if (id != S_NONE && shape_fits(p, id)) fx->sas_plan[fx->sas_count++] = (uint32_t)i << 8 | (uint32_t)id;
+        if (id != S_NONE && shape_fits(p, id) && !names_another_object(p)) fx->sas_plan[fx->sas_count++] = (uint32_t)i << 8 | (uint32_t)id;
     }
     fx->sas_ready = 1;
     return HFX_OK;

@@ -65,12 +65,12 @@ static void convert_value(const hfx_state_info *info, int is_float, int32_t i, c
         } else {
             unpack_color((uint32_t)i, out->f);
         }
-        out->i = is_float ? (int32_t)f[0] : i;
+        out->i = is_float ? hfx_ev_int(f[0]) : i;
     } else if (kind == HFX_SV_FLOAT) {
         out->f[0] = is_float ? f[0] : (float)i;
-        out->i = (int32_t)out->f[0];
+        out->i = hfx_ev_int(out->f[0]);
     } else {
-        out->i = is_float ? (int32_t)f[0] : i;
+        out->i = is_float ? hfx_ev_int(f[0]) : i;
         out->f[0] = (float)out->i;
     }
 }
@@ -82,7 +82,7 @@ static void resolve_expr(const hfx_effect *fx, const hfx_state_info *info, const
     hfx_ev_value v;
     if (!hfx_evc_run(e->exprs + st->ref, st->count, fx->values, &v)) return;
     if (v.base != HFX_EV_FLOAT) {
-        convert_value(info, 0, (int32_t)(int64_t)v.c[0], NULL, 1, out);
+        convert_value(info, 0, (int32_t)hfx_evc_bits(v.base, v.c[0]), NULL, 1, out);
         return;
     }
     float f[4] = {0};
@@ -113,6 +113,19 @@ void hfx_rs_resolve(const hfx_effect *fx, const hfx_fx_state *st, hfx_rs_value *
     } else {
         convert_value(info, 0, st->i, NULL, 1, out);
     }
+}
+
+uint32_t hfx_rs_selected(const hfx_effect *fx, uint32_t state, uint32_t pass, int stage) {
+    const hfx_fx_effect *e = fx->sh->fx;
+    if (state >= e->state_count) return HFX_NONE;
+    uint32_t last = 0;
+    for (uint32_t i = 0; i < e->variant_count; i++) {
+        uint32_t k = stage ? e->variants[i].ps : e->variants[i].vs;
+        if (e->variants[i].pass == pass && k != HFX_NONE && k > last) last = k;
+    }
+    const hfx_fx_state *st = &e->states[state];
+    hfx_ev_value v;
+    return hfx_evc_run(e->exprs + st->ref, st->count, fx->values, &v) ? hfx_evc_index(&v, last) : 0;
 }
 
 void hfx_sampler_desc_default(hfx_sampler_desc *d) {

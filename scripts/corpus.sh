@@ -9,6 +9,11 @@
 #                                           and GLSL ES 300, validate each shader with
 #                                           glslangValidator, render it with hfxview; print a
 #                                           table, the failures' first lines, `N/M compiled`
+#   scripts/corpus.sh techniques DIR [BUILD] every technique of every root effect drawn by
+#                                           hfxview with its defaults at 128x128, each picture
+#                                           classed drawn / black / blank (scripts/png_class.py),
+#                                           with the parameters hfxview could not bind; prints
+#                                           `N/M techniques draw something`
 #   scripts/corpus.sh roots                 the root effects' paths relative to DIR, one a line
 #                                           (bench/bench_corpus DIR LIST times their compile)
 #
@@ -57,6 +62,38 @@ one() {
     printf "%-6s %-6s %-8s %-6s %s\n" "$c330" "$ces" "$val" "$ren" "$fx"
 }
 
+# Every technique of one effect (one hfxview run, --technique all): lines
+# "class effect#index technique | the parameters hfxview could not bind".
+techs() {
+    local fx=$1 out=$2 view=$3 here=$4 name i t cls unbound
+    name=$(echo "$fx" | tr '/' '_')
+    local -a inc; mapfile -t inc < <(include_dirs "$fx")
+    timeout 300 "$view" "${inc[@]}" "$fx" --technique all -o "$out/png/$name.png" --size 128x128 \
+        >"$out/log/$name.list" 2>"$out/log/$name.view"
+    unbound=$(grep -o 'not bound, left at.*' "$out/log/$name.view" | cut -d: -f2- | head -1)
+    while read -r i t; do
+        cls=$(python3 "$here/scripts/png_class.py" "$out/png/$name.$i.png" | cut -d' ' -f1)
+        printf "%-7s %s#%d %s |%s\n" "$cls" "$fx" "$i" "$t" "$unbound"
+    done < <(sed -n 's/^technique //p' "$out/log/$name.list")
+}
+
+techniques() {
+    local dir=$1 build=${2:-$here/build/test}
+    local view=$build/tools/hfxview/hfxview
+    [ -x "$view" ] || { echo "no hfxview in $build (build first)" >&2; exit 2; }
+    local out; out=$(mktemp -d /tmp/hfx-techniques-XXXXXX)
+    mkdir -p "$out/log" "$out/png"
+    export -f techs include_dirs
+    (cd "$dir" && roots | xargs -d '\n' -P "$(nproc)" -I{} bash -c 'techs "$@"' _ {} "$out" "$view" "$here") |
+        sort -k2 > "$out/techniques.txt"
+    local total drawn
+    total=$(wc -l < "$out/techniques.txt")
+    drawn=$(grep -c '^drawn' "$out/techniques.txt")
+    awk '{print $1}' "$out/techniques.txt" | sort | uniq -c
+    echo "outputs in $out (techniques.txt, png/)"
+    echo "$drawn/$total techniques draw something"
+}
+
 roots() {
     tail -n +2 "$list" | awk -F'\t' '$4 == "root" { gsub("/", "+", $1); print $1 "/" $3 }'
 }
@@ -87,6 +124,7 @@ run() {
 case "${1:-}" in
 extract) extract "$2" "$3" ;;
 run) run "$2" "${3:-}" ;;
+techniques) techniques "$2" "${3:-}" ;;
 roots) roots ;;
-*) sed -n '2,16p' "$0"; exit 2 ;;
+*) sed -n '2,21p' "$0"; exit 2 ;;
 esac

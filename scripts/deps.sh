@@ -5,7 +5,7 @@ set -euo pipefail
 pkgs=(build-essential cmake ninja-build pkg-config re2c bison glslang-dev glslang-tools libosmesa6-dev
       libgl-dev libegl-dev libgl1-mesa-dri libegl-mesa0 zlib1g-dev libpng-dev libcjson-dev libstb-dev libglfw3-dev libdevil-dev xvfb xauth valgrind spirv-tools
       mesa-vulkan-drivers libvulkan-dev vulkan-validationlayers # the Vulkan back end's tests: lavapipe, validation on
-      clang-14 libclang-rt-14-dev # clang: the fuzz harnesses (libFuzzer) and their sanitizer runtimes
+      clang-14 libclang-rt-14-dev clang-tools-14 # clang: the fuzz harnesses (libFuzzer), their sanitizer runtimes; clang-query (float_casts)
       emscripten chromium) # the web page (web/): WebAssembly build, and its tests in headless Chromium
 missing=()
 for p in "${pkgs[@]}"; do

@@ -3,7 +3,9 @@
 // picker, "Slider" a range with UIMin / UIMax / UIStep, bools a checkbox, ints and floats
 // number fields, textures an image picker (the checker until one is chosen); the members of
 // struct parameters (arrays of light structs...) fold under the parameter's name. Matrices, and
-// parameters with a scene semantic, are bound from the camera every frame and only listed.
+// parameters with a scene semantic, are bound from the camera every frame and only listed. Each
+// name's tooltip says how hfxview's binding (bind.h) filled it; a line at the top lists the
+// parameters it could not bind.
 "use strict";
 
 const HfxParams = (() => {
@@ -119,13 +121,16 @@ const HfxParams = (() => {
   function build(panel, effect, h) {
     panel.textContent = "";
     const groups = new Map();
+    // What the binding could not recognise, so that a black picture explains itself.
+    if (effect.unbound) panel.append(Object.assign(document.createElement("p"), {className: "unbound",
+      textContent: "Not bound, left at the effect's values: " + effect.unbound}));
     for (const p of effect.params) {
       if (String(ann(p, "UIWidget") ?? "").toLowerCase() === "none" || p.type === "string") continue;
       if (p.type.startsWith("sampler")) continue;
       const label = document.createElement("label");
       const name = document.createElement("span");
       name.textContent = ann(p, "UIName") ?? p.name;
-      name.title = p.name + (p.semantic ? " : " + p.semantic : "");
+      name.title = p.name + (p.semantic ? " : " + p.semantic : "") + (p.bound ? " (" + p.bound + ")" : "");
       const c = isAutomatic(p) ? Object.assign(document.createElement("span"), {className: "auto", textContent: "from the camera"})
         : control(p, h);
       if (!c) continue;

@@ -115,7 +115,7 @@ static bool fold_op(hfx_op op, int64_t a, const int64_t *b, int64_t *out) {
     if (!hfx_op_ev(op, &ev)) return false;
     if (b ? !hfx_ev_binary(ev, HFX_EV_INT, (double)a, (double)*b, &r) : !hfx_ev_unary(ev, HFX_EV_INT, (double)a, &r))
         return false;
-    *out = (int64_t)r;
+    *out = hfx_ev_int(r);
     return true;
 }
 
@@ -123,8 +123,8 @@ bool ck_fold_int(check_ctx *c, hfx_expr *e, int64_t *out) {
     int64_t a, b;
     if (!e) return false;
     switch (e->kind) {
-    case EX_INT: case EX_BOOL: *out = (int64_t)hfx_ev_normalise(HFX_EV_INT, (double)e->ival); return true;
-    case EX_FLOAT: *out = (int64_t)hfx_ev_convert(HFX_EV_FLOAT, HFX_EV_INT, e->fval); return true;
+    case EX_INT: case EX_BOOL: *out = hfx_ev_int(hfx_ev_normalise(HFX_EV_INT, (double)e->ival)); return true;
+    case EX_FLOAT: *out = hfx_ev_int(e->fval); return true;
     case EX_IDENT: {
         hfx_decl *d = e->sym ? e->sym : ck_lookup(c, e->name);
         if (!d || d->kind != DECL_VAR || !(d->mods & MOD_CONST) || !d->init) return false;

@@ -20,6 +20,7 @@ typedef struct cli_options {
     const char *entry;       /* /E */
     const char *profile;     /* /T */
     unsigned targets;        /* bits (1 << hfx_target); 0 = the library's default */
+    bool disassemble;        /* --disassemble, /dumpbin: listings of fxc's binaries */
     bool reflect, annotations, ast, werror, quiet, no_warnings, pack_uniforms, no_self_check, no_preshaders, no_derived_varyings;
     int jobs;                /* 0 = one per core */
     bool depfile;            /* -MD: write a Make / Ninja depfile per input */

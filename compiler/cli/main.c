@@ -25,6 +25,8 @@ static const char usage_text[] =
     "  --reflect             print the effect and its compiled interface as JSON\n"
     "  --annotations         print parameters, annotations, techniques and states as JSON\n"
     "  --ast                 print the syntax tree and stop\n"
+    "  --disassemble, /dumpbin  print the listing of effects fxc compiled (fx_2_0 .fxo / .fxb,\n"
+    "                        uncompressed XNA .xnb): parameters, techniques, states, shaders\n"
     "  --separate-uniforms   one GLSL uniform per parameter; by default float parameters\n"
     "                        share one vec4 array per program (D3D9 registers, one upload)\n"
     "  --no-preshaders       keep work on parameters alone in the shaders; by default it runs\n"
@@ -136,6 +138,7 @@ static int flag(cli_options *o, const char *a, bool *handled) {
     if (!strcmp(a, "--reflect")) o->reflect = true;
     else if (!strcmp(a, "--annotations")) o->annotations = true;
     else if (!strcmp(a, "--ast")) o->ast = true;
+    else if (!strcmp(a, "--disassemble") || !strcmp(a, "/dumpbin") || !strcmp(a, "-dumpbin")) o->disassemble = true;
     else if (!strcmp(a, "--werror") || !strcmp(a, "/WX") || !strcmp(a, "-WX")) o->werror = true;
     else if (!strcmp(a, "--no-warnings")) o->no_warnings = true;
     else if (!strcmp(a, "--no-self-check")) o->no_self_check = true;
@@ -244,6 +247,35 @@ static void keep_freed_memory(void) {
 #endif
 }
 
+/* --disassemble: each input's listing on stdout (or in the -o file for one input). */
+static int disassemble(const cli_options *o) {
+    int rc = EXIT_OK;
+    for (size_t i = 0; i < o->input_count; i++) {
+        FILE *f = fopen(o->inputs[i], "rb");
+        long n = -1;
+        if (f && fseek(f, 0, SEEK_END) == 0) n = ftell(f);
+        char *data = n >= 0 ? malloc((size_t)n + 1) : NULL;
+        if (!data || fseek(f, 0, SEEK_SET) != 0 || fread(data, 1, (size_t)n, f) != (size_t)n) {
+            fprintf(stderr, "hfxc: error: cannot read '%s'\n", o->inputs[i]);
+            free(data);
+            if (f) fclose(f);
+            rc = EXIT_COMPILE;
+            continue;
+        }
+        fclose(f);
+        char *diags = NULL, *text = hfxc_disassemble(data, (size_t)n, o->inputs[i], &diags);
+        if (diags) fputs(diags, stderr);
+        FILE *out = o->output && o->input_count == 1 ? fopen(o->output, "w") : stdout;
+        if (text && out) fputs(text, out);
+        if (out && out != stdout) fclose(out);
+        if (!text || !out) rc = EXIT_COMPILE;
+        free(text);
+        free(diags);
+        free(data);
+    }
+    return rc;
+}
+
 int main(int argc, char **argv) {
     keep_freed_memory();
     cli_options o;
@@ -253,6 +285,10 @@ int main(int argc, char **argv) {
     if (rc < 0) rc = check_inputs(&o);
     else goto done;
     if (rc != EXIT_OK) goto done;
+    if (o.disassemble) {
+        rc = disassemble(&o);
+        goto done;
+    }
     cli_job *jobs = calloc(o.input_count, sizeof *jobs);
     if (!jobs) {
         rc = EXIT_USAGE;

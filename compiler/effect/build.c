@@ -267,7 +267,7 @@ uint32_t hfx_build_param_of(hfx_builder *b, const hfx_expr *e) {
         uint32_t p = hfx_build_param_of(b, e->args[0]);
         hfx_cvec c = {0};
         bool constant = p != HFX_NONE && hfx_build_eval(b, e->args[1], &c, NULL) && c.integral;
-        uint32_t i = constant && c.v[0] >= 0 && c.v[0] < b->fx->params[p].elements ? (uint32_t)c.v[0] : HFX_NONE;
+        uint32_t i = constant && c.v[0] >= 0 && c.v[0] < b->fx->params[p].elements ? hfx_ev_uint(c.v[0]) : HFX_NONE;
         hfx_cvec_free(&c);
         return i == HFX_NONE ? HFX_NONE : b->fx->params[p].first_child + i;
     }

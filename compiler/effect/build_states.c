@@ -72,7 +72,7 @@ static bool constant_value(hfx_builder *b, const hfx_state_info *info, const hfx
     }
     out->kind = HFX_FX_VALUE_INT;
     double v = c->v[0];
-    out->i = v >= 4294967295.0 ? -1 : v > 2147483647.0 ? (int32_t)(uint32_t)v : v < -2147483648.0 ? INT32_MIN : (int32_t)v;
+    out->i = v > 2147483647.0 ? (int32_t)hfx_ev_uint(v) : hfx_ev_int(v); /* a uint keeps its bits (colours) */
     return true;
 }
 
@@ -132,7 +132,7 @@ static const hfx_state_info *lookup_state(hfx_builder *b, const hfx_state_assign
     if (!sa->index) return info;
     hfx_cvec c = {0};
     bool ok = hfx_build_eval(b, sa->index, &c, NULL) && c.integral && c.v[0] >= 0 && c.v[0] <= info->max_index;
-    if (ok) *index = (uint32_t)c.v[0];
+    if (ok) *index = hfx_ev_uint(c.v[0]);
     hfx_cvec_free(&c);
     if (!ok) {
         hfx_error(b->diags, sa->index->loc, X_INVALID_SUBSCRIPT, "'%s': state index must be a constant from 0 to %u",
@@ -294,7 +294,7 @@ static int shader_compile(hfx_builder *b, const hfx_expr *v, const hfx_expr **ou
         if (v->arg_count != 2) break;
         hfx_cvec c = {0};
         bool constant = hfx_build_eval(b, v->args[1], &c, NULL) && c.integral;
-        int64_t i = constant ? (int64_t)c.v[0] : -1;
+        int64_t i = constant ? hfx_ev_int(c.v[0]) : -1;
         hfx_cvec_free(&c);
         const hfx_expr *arr = v->args[0];
         const hfx_decl *d = arr->kind == EX_IDENT && arr->sym ? arr->sym : hfx_build_global(b, arr->name);
@@ -485,7 +485,7 @@ static uint32_t selected(const hfx_fx_effect *fx, const pass_shaders *sh, int s,
     if (!sh->sel[s].array) return HFX_NONE;
     const hfx_fx_state *st = &fx->states[sh->sel_state[s]];
     hfx_ev_value v;
-    return hfx_evc_run(fx->exprs + st->ref, st->count, values, &v) ? (uint32_t)v.c[0] : 0;
+    return hfx_evc_run(fx->exprs + st->ref, st->count, values, &v) ? hfx_evc_index(&v, HFX_NONE - 1) : 0;
 }
 
 /* The program of one pair of array entries (or the pass's fixed shader for a fixed stage). */

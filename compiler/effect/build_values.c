@@ -193,8 +193,8 @@ bool hfx_build_eval(hfx_builder *b, const hfx_expr *e, hfx_cvec *out, const hfx_
 
 static uint32_t word_of(double v, hfx_ev_base from, hfx_base base) {
     v = hfx_ev_convert(from, hfx_base_ev(base), v);
-    if (base == B_UINT) return (uint32_t)v;
-    if (is_integral_base(base)) return (uint32_t)(int32_t)v;
+    if (base == B_UINT) return hfx_ev_uint(v);
+    if (is_integral_base(base)) return (uint32_t)hfx_ev_int(v);
     float f = (float)v;
     uint32_t w;
     memcpy(&w, &f, sizeof w);

@@ -338,7 +338,7 @@ static int build_interface(hfx_codegen *cg, ir_shader *vs, ir_shader *ps, bool f
     io->flat_count = flat.count;
     io->attrs = assign_locations(a, &attrs);
     io->attr_count = attrs.count;
-    const char *prof = vs && vs->compile->profile ? vs->compile->profile : "vs_3_0";
+    const char *prof = vs && vs->compile && vs->compile->profile ? vs->compile->profile : "vs_3_0";
     io->clamp_vs_colors = strncmp(prof, "vs_1", 4) == 0 || strncmp(prof, "vs_2", 4) == 0;
     return 0;
 }
@@ -384,11 +384,9 @@ static char *print_stage(hfx_codegen *cg, const ir_shader *sh, int s, const glsl
     return text ? text : glsl_print(&cg->c, sh, s == 0 ? IR_VERTEX : IR_PIXEL, io, t);
 }
 
-int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps, bool flat_colors, hfx_fx_program *out) {
-    memset(out, 0, sizeof *out);
-    ir_shader *sh[2];
-    bool vs_ok = stage(cg, vs, IR_VERTEX, &sh[0]), ps_ok = stage(cg, ps, IR_PIXEL, &sh[1]);
-    if (!vs_ok || !ps_ok) return -1;
+/* The program of two lowered stages (either may be NULL: the fixed-function stand-in); `loc`
+ * for an out-of-memory error. */
+static int program_of(hfx_codegen *cg, ir_shader *sh[2], bool flat_colors, hfx_loc loc, hfx_fx_program *out) {
     glsl_iface io = {0};
     if (!(cg->c.diags->flags & HFXC_NO_DERIVED_VARYINGS))
         io.derived_count = ir_pass_varyings(&cg->c, &sh[0], &sh[1], cg->pack, &io.derived);
@@ -414,6 +412,35 @@ int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps,
     if (cg->alpha_test && writes_color0(cg, sh[1])) out->flags |= HFX_FX_PROGRAM_ALPHA_TEST;
     return 0;
 oom:
-    hfx_error(cg->c.diags, vs ? vs->loc : ps ? ps->loc : (hfx_loc){0, 1, 1}, X_MEMORY_LIMIT, "out of memory");
+    hfx_error(cg->c.diags, loc, X_MEMORY_LIMIT, "out of memory");
     return -1;
+}
+
+int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps, bool flat_colors, hfx_fx_program *out) {
+    memset(out, 0, sizeof *out);
+    ir_shader *sh[2];
+    bool vs_ok = stage(cg, vs, IR_VERTEX, &sh[0]), ps_ok = stage(cg, ps, IR_PIXEL, &sh[1]);
+    if (!vs_ok || !ps_ok) return -1;
+    return program_of(cg, sh, flat_colors, vs ? vs->loc : ps ? ps->loc : (hfx_loc){0, 1, 1}, out);
+}
+
+/* A bytecode stage: translated (d3d9/d3d9_ir.c), lowered like a compiled one. */
+static bool bytecode_stage(hfx_codegen *cg, const d3d9_shader *s, ir_shader **sh) {
+    *sh = NULL;
+    if (!s) return true;
+    uint32_t errors = cg->c.diags->errors;
+    ir_shader *x = d3d9_to_ir(&cg->c, s, cg->pack);
+    if (!x || cg->c.diags->errors > errors || ir_lower(&cg->c, x) != 0) return false;
+    return (*sh = x) != NULL;
+}
+
+int hfx_codegen_d3d9_program(hfx_codegen *cg, const d3d9_shader *vs, const d3d9_shader *ps, bool flat_colors,
+                             hfx_fx_program *out) {
+    memset(out, 0, sizeof *out);
+    ir_shader *sh[2];
+    bool vs_ok = bytecode_stage(cg, vs, &sh[0]), ps_ok = bytecode_stage(cg, ps, &sh[1]);
+    if (!vs_ok || !ps_ok) return -1;
+    const d3d9_shader *at = vs ? vs : ps;
+    hfx_loc loc = at ? (hfx_loc){at->file_index, 0, at->base} : (hfx_loc){0, 1, 1};
+    return program_of(cg, sh, flat_colors, loc, out);
 }

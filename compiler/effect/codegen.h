@@ -7,6 +7,7 @@
 #ifndef HFX_CODEGEN_H
 #define HFX_CODEGEN_H
 
+#include "d3d9/d3d9.h"
 #include "parse/ast.h"
 #include "effect.h"
 
@@ -25,5 +26,13 @@ void hfx_codegen_set_alpha_test(hfx_codegen *cg, bool on);
  * Fills *out (malloc'ed members, freed with the effect); may set fx->samplers[i].dim.
  * Returns 0, or -1 with errors in diags. */
 int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps, bool flat_colors, hfx_fx_program *out);
+/* The same from fxc's bytecode (the fx_2_0 reader, per pass): vs, ps decoded by d3d9_decode (NULL:
+ * no shader, the fixed-function stand-in), each translated by d3d9_to_ir into the IR, lowered,
+ * printed for every target and self-checked as a compiled stage is; attributes, samplers and
+ * uniforms filled from fx->params / fx->samplers, which the reader has filled (CTAB names are the
+ * parameters' names). ast may be NULL in hfx_codegen_new for this use. Returns 0, or -1 with
+ * located errors (X5006 for bytecode the translator does not handle). */
+int hfx_codegen_d3d9_program(hfx_codegen *cg, const d3d9_shader *vs, const d3d9_shader *ps, bool flat_colors,
+                             hfx_fx_program *out);
 
 #endif

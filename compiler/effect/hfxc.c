@@ -3,12 +3,14 @@
 #include "hfx/hfxc.h"
 
 #include <setjmp.h>
+#include <stdio.h>
 #include <stdbool.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "parse/ast.h"
 #include "effect/build.h"
+#include "effect/fx2.h"
 #include "check/check.h"
 #include "effect.h"
 #include "pp/token_cache.h"
@@ -74,6 +76,33 @@ static void run_phases(hfxc_result *r, const char *name, const char *text, size_
         r->effect = hfx_build_effect(&r->arena, &r->diags, types, r->ast, name, default_targets(opt));
 }
 
+/* An effect fxc compiled (fx_2_0, or inside an XNA .xnb): read, not compiled. A file's bytes
+ * go in the arena, which grows its limit by what a source of that size may use. */
+static void run_binary(hfxc_result *r, const char *name, const char *text, size_t size, const hfxc_options *opt) {
+    const char *path = text ? NULL : name;
+    if (path) {
+        FILE *f = fopen(path, "rb");
+        long len = -1;
+        if (f && fseek(f, 0, SEEK_END) == 0) len = ftell(f);
+        char *data = len >= 0 && (size_t)len <= HFXC_MAX_SOURCE_BYTES ? hfx_arena_alloc_raw(&r->arena, (size_t)len + 1) : NULL;
+        if (!data || fseek(f, 0, SEEK_SET) != 0 || fread(data, 1, (size_t)len, f) != (size_t)len) {
+            hfx_error(&r->diags, (hfx_loc){hfx_diags_add_file(&r->diags, name, path, NULL, 0), 0, 0}, X_PP_INCLUDE,
+                      len > (long)HFXC_MAX_SOURCE_BYTES ? "the effect is larger than hfx reads" : "cannot read the file");
+            if (f) fclose(f);
+            return;
+        }
+        fclose(f);
+        text = data;
+        size = (size_t)len;
+    }
+    r->arena.limit += size * HFXC_MEMORY_PER_BYTE;
+    r->effect = hfx_fx2_read(&r->arena, &r->diags, name, path, text, size, default_targets(opt), opt ? opt->flags : 0);
+}
+
+static bool is_binary(const char *name, const char *text, size_t size) {
+    return text ? hfx_fx2_is_binary(text, size) != 0 : hfx_fx2_file_is_binary(name) != 0;
+}
+
 /* After a failed allocation: nothing of the partial work is kept, and one located error says
  * why (the arena's limit is lifted so that the message itself can be stored). */
 static void out_of_memory(hfxc_result *r) {
@@ -117,7 +146,8 @@ static hfxc_result *compile(const char *name, const char *text, size_t size, con
     r->arena.escape = &escape;
     if (setjmp(escape) == 0) {
         hfx_arena_escape_on(&r->arena);
-        run_phases(r, name, text, size, opt);
+        if (is_binary(name, text, size)) run_binary(r, name, text, size, opt);
+        else run_phases(r, name, text, size, opt);
         hfx_arena_escape_off(&r->arena);
     } else {
         r->arena.escape_depth = 0;
@@ -179,4 +209,30 @@ const char *hfxc_dependency_at(const hfxc_result *r, size_t i) {
 
 char *hfxc_result_ast_dump(const hfxc_result *r) {
     return r && r->ast ? hfx_ast_dump(r->ast) : strdup("");
+}
+
+char *hfxc_disassemble(const void *data, size_t size, const char *name, char **diagnostics) {
+    hfxc_result *r = calloc(1, sizeof *r);
+    if (diagnostics) *diagnostics = NULL;
+    if (!r) return NULL;
+    hfx_arena_init(&r->arena);
+    r->arena.limit = HFXC_MEMORY_FLOOR + (size <= HFXC_MAX_SOURCE_BYTES ? size * HFXC_MEMORY_PER_BYTE : 0);
+    hfx_diags_init(&r->diags, &r->arena, 0);
+    char *text = NULL, *listing = NULL;
+    jmp_buf escape;
+    r->arena.escape = &escape;
+    if (setjmp(escape) == 0) {
+        hfx_arena_escape_on(&r->arena);
+        listing = hfx_fx2_listing(&r->arena, &r->diags, name ? name : "memory", data, size);
+        hfx_arena_escape_off(&r->arena);
+    } else {
+        r->arena.escape_depth = 0;
+        listing = NULL;
+    }
+    r->arena.escape = NULL;
+    if (r->arena.failed) out_of_memory(r);
+    if (listing && !r->diags.errors) text = strdup(listing);
+    if (diagnostics) *diagnostics = hfx_diags_format(&r->diags, 0);
+    hfxc_result_free(r);
+    return text;
 }

@@ -147,7 +147,7 @@ static void print_stmt(gp *p, const ir_stmt *s) {
         p->indent--;
         line_start(p);
         sb_put(p->out, "case ");
-        if (ir_is_const(s->expr)) sb_printf(p->out, "%lld", (long long)s->expr->cval[0]); /* the switch is on int */
+        if (ir_is_const(s->expr)) sb_printf(p->out, "%d", (int)hfx_ev_int(s->expr->cval[0])); /* the switch is on int */
         else glsl_expr(p, s->expr, PREC_COMMA);
         sb_put(p->out, ":\n");
         p->indent++;

@@ -121,7 +121,7 @@ static void put_float(gp *p, double v) {
     if (isinf(v)) { sb_put(p->out, v > 0 ? "3.40282347e+38" : "-3.40282347e+38"); return; }
     float f = (float)v;
     if (f == truncf(f) && fabsf(f) < 1e9f) { /* what %.9g prints for integers, without snprintf */
-        sb_printf(p->out, "%s%lld.0", signbit(f) && f == 0 ? "-" : "", (long long)f);
+        sb_printf(p->out, "%s%lld.0", signbit(f) && f == 0 ? "-" : "", (long long)hfx_ev_int(f));
         return;
     }
     snprintf(buf, sizeof buf, "%.9g", (double)f);
@@ -134,9 +134,9 @@ static void put_scalar(gp *p, hfx_base b, double v) {
     case B_BOOL: sb_put(p->out, v != 0 ? "true" : "false"); break;
     case B_INT:
         if (v <= -2147483648.0) sb_put(p->out, "(-2147483647 - 1)"); /* 2147483648 is no int literal */
-        else sb_printf(p->out, "%lld", (long long)v);
+        else sb_printf(p->out, "%lld", (long long)hfx_ev_int(v));
         break;
-    case B_UINT: sb_printf(p->out, p->legacy ? "%lld" : "%lldu", (long long)v); break;
+    case B_UINT: sb_printf(p->out, p->legacy ? "%lld" : "%lldu", (long long)hfx_ev_uint(v)); break;
     default: put_float(p, v);
     }
 }
@@ -636,7 +636,7 @@ static void print_index(gp *p, const ir_expr *e, int max) {
     bool conv = i->type->base != B_INT && !ir_is_const(i), saved = p->lvalue;
     if (conv) sb_put(p->out, "int(");
     p->lvalue = false; /* the index itself is read */
-    if (ir_is_const(i)) sb_printf(p->out, "%lld", (long long)i->cval[0]);
+    if (ir_is_const(i)) sb_printf(p->out, "%lld", (long long)hfx_ev_int(i->cval[0]));
     else glsl_expr(p, i, PREC_COMMA - 1);
     p->lvalue = saved;
     if (conv) sb_put(p->out, ")");

@@ -349,7 +349,7 @@ static int small_power(const ir_expr *y) {
     double k = y->cval[0];
     for (unsigned i = 1; i < hfx_type_components(y->type); i++)
         if (y->cval[i] != k) return 0;
-    return k == 1 || k == 2 || k == 3 || k == 4 ? (int)k : 0;
+    return k == 1 || k == 2 || k == 3 || k == 4 ? (int)hfx_ev_int(k) : 0;
 }
 
 /* An operand cheap to repeat: a variable, or a swizzle or member of one. */

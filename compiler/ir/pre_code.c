@@ -173,7 +173,7 @@ static void index_of(pc *p, const ir_expr *e) {
     const hfx_type *t = e->a[0]->type;
     unsigned width = t->kind == TY_MATRIX ? t->cols : 1, count = t->kind == TY_MATRIX ? t->rows : t->cols;
     double i = e->a[1]->cval[0];
-    unsigned k = i < 0 ? 0 : i >= count ? count - 1 : (unsigned)i;
+    unsigned k = hfx_ev_uint(i) >= count ? count - 1 : hfx_ev_uint(i); /* NaN and negatives: 0 */
     uint8_t comps[4];
     for (unsigned j = 0; j < width; j++) comps[j] = (uint8_t)(k * width + j);
     emit(p, e->a[0]);

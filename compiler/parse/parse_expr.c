@@ -335,15 +335,15 @@ static bool fold_int(const hfx_expr *e, int64_t *out) {
     hfx_ev_op op;
     double r;
     switch (e->kind) {
-    case EX_INT: case EX_BOOL: *out = (int64_t)hfx_ev_normalise(HFX_EV_INT, (double)e->ival); return true;
+    case EX_INT: case EX_BOOL: *out = hfx_ev_int(hfx_ev_normalise(HFX_EV_INT, (double)e->ival)); return true;
     case EX_UNARY:
         if (!fold_int(e->args[0], &a) || !hfx_op_ev(e->op, &op) || !hfx_ev_unary(op, HFX_EV_INT, (double)a, &r)) return false;
-        *out = (int64_t)r;
+        *out = hfx_ev_int(r);
         return true;
     case EX_BINARY:
         if (!fold_int(e->args[0], &a) || !fold_int(e->args[1], &b) || !hfx_op_ev(e->op, &op)) return false;
         if (!hfx_ev_binary(op, HFX_EV_INT, (double)a, (double)b, &r)) return false;
-        *out = (int64_t)r;
+        *out = hfx_ev_int(r);
         return true;
     case EX_TERNARY:
         if (!fold_int(e->args[0], &a)) return false;

@@ -130,8 +130,10 @@ typedef struct hfx_scene {
  * matrix (a float3x3 or 4x3 its upper-left block); CameraPosition / ViewPosition / EyePosition
  * the camera (ViewInverse's translation, w = 1); Time, ElapsedTime, ViewportPixelSize (and
  * ViewportSize) the scene's. Each matrix is computed at most once per call, and a parameter
- * whose value is unchanged is not set (Apply then sends nothing). Returns how many parameters
- * the effect binds, or an error code. */
+ * whose value is unchanged is not set (Apply then sends nothing). A parameter whose `Object`
+ * annotation names something other than a camera ("SpotLight0"), or that has a
+ * `SasBindAddress`, is not the scene's and is left alone. Returns how many parameters the
+ * effect binds, or an error code. */
 int hfx_effect_bind_scene(hfx_effect *fx, const hfx_scene *scene);
 int hfx_scene_semantic_known(const char *semantic); /* 1 when hfx_effect_bind_scene fills this semantic */
 

@@ -76,6 +76,10 @@ char *hfxc_result_ast_dump(const hfxc_result *r);                /* readable AST
  * what was read up to them. Strings live as long as the result. */
 size_t hfxc_dependency_count(const hfxc_result *r);
 const char *hfxc_dependency_at(const hfxc_result *r, size_t i);
+/* `hfxc --disassemble` (fxc's /dumpbin): the listing of an effect fxc compiled (fx_2_0, or an
+ * uncompressed XNA .xnb holding one): parameters, techniques, passes, states, each shader's
+ * assembly. NULL when it does not decode; *diagnostics (may be NULL; free() it) says why. */
+char *hfxc_disassemble(const void *data, size_t size, const char *name, char **diagnostics);
 const char *hfxc_version(void);
 
 #ifdef __cplusplus

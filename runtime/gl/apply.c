@@ -43,18 +43,14 @@ static inline void apply_program(hfx_device *dev, hfx_rt_program *prog) {
 }
 
 /* The array index a selector state gives now (HFX_NONE for a fixed stage). */
-static uint32_t selected(const hfx_effect *fx, uint32_t state) {
-    if (state == HFX_NONE) return HFX_NONE;
-    const hfx_fx_effect *e = fx->sh->fx;
-    const hfx_fx_state *st = &e->states[state];
-    hfx_ev_value v;
-    return hfx_evc_run(e->exprs + st->ref, st->count, fx->values, &v) ? (uint32_t)v.c[0] : 0;
+static uint32_t selected(const hfx_effect *fx, const hfx_rt_pass *rp, int stage) {
+    return hfx_rs_selected(fx, rp->selector[stage], (uint32_t)(rp - fx->sh->passes), stage);
 }
 
 /* A pass drawn from shader arrays: the program of the entries its selectors pick now, as
  * D3D9 evaluates `VertexShader = (VSArray[VSIndices[ShaderIndex]]);` at Apply. */
 static hfx_rt_program *variant_program(hfx_effect *fx, const hfx_rt_pass *rp) {
-    uint32_t vs = selected(fx, rp->selector[0]), ps = selected(fx, rp->selector[1]);
+    uint32_t vs = selected(fx, rp, 0), ps = selected(fx, rp, 1);
     for (uint32_t i = 0; i < rp->variant_count; i++)
         if (rp->variants[i].vs == vs && rp->variants[i].ps == ps) return &fx->sh->programs[rp->variants[i].program];
     hfx_rt_fail(fx->dev, HFX_ERR_NOT_FOUND, "no program for shader array entries %d and %d (only those the compiler "

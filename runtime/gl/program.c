@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "eval.h"
 #include "internal.h"
 
 typedef struct active_uniform {
@@ -421,7 +422,7 @@ void hfx_rt_upload_slow(hfx_device *dev, const hfx_upload *up, const uint32_t *v
         if (to_int) {
             float f;
             memcpy(&f, &src[i], sizeof f);
-            int32_t v = (int32_t)f;
+            int32_t v = hfx_ev_int(f);
             memcpy(&dev->scratch[i], &v, sizeof v);
         } else {
             dev->scratch[i] = (float)(int32_t)src[i];

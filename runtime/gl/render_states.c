@@ -249,7 +249,7 @@ void hfx_rs_check(hfx_shared *sh, const hfx_fx_state *st, uint32_t program) {
         hfx_rs_value v;
         memset(&v, 0, sizeof v);
         if (st->kind == HFX_FX_VALUE_PARAM || st->kind == HFX_FX_VALUE_EXPR) v.i = 1; /* unknown until Apply */
-        else if (st->kind == HFX_FX_VALUE_FLOAT) v.i = (int32_t)st->f[0];
+        else if (st->kind == HFX_FX_VALUE_FLOAT) v.i = hfx_ev_int(st->f[0]);
         else v.i = st->i;
         int alpha = program != HFX_NONE && (sh->fx->programs[program].flags & HFX_FX_PROGRAM_ALPHA_TEST);
         if (st->id == HFX_ST_ALPHATESTENABLE && !v.i) return; /* turning it off needs nothing */

@@ -29,8 +29,7 @@ static uint32_t selected(const hfx_effect *fx, const hfx_fx_pass *fp, uint32_t i
     for (uint32_t i = 0; i < fp->state_count && fp->first_state + i < e->state_count; i++) {
         const hfx_fx_state *st = &e->states[fp->first_state + i];
         if (st->id != id || st->kind != HFX_FX_VALUE_EXPR) continue;
-        hfx_ev_value v;
-        return hfx_evc_run(e->exprs + st->ref, st->count, fx->values, &v) ? (uint32_t)v.c[0] : 0;
+        return hfx_rs_selected(fx, fp->first_state + i, (uint32_t)(fp - e->passes), id == HFX_ST_PIXELSHADER);
     }
     return HFX_NONE;
 }

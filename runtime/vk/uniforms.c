@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "eval.h"
 #include "vk/vk.h"
 
 int hfx_vk_bound_make(hfx_effect *fx, const vk_program *p, vk_bound **out) {
@@ -54,7 +55,7 @@ static void convert(uint8_t *dst, const uint32_t *src, uint32_t n, uint16_t kind
         if (kind == VK_UP_TO_INT) {
             float f;
             memcpy(&f, &w, 4);
-            int32_t v = (int32_t)f;
+            int32_t v = hfx_ev_int(f);
             memcpy(dst + 4 * i, &v, 4);
         } else {
             float f = (float)(int32_t)w;

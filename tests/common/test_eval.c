@@ -188,8 +188,30 @@ static void whole_values(void) {
     CHECK(!hfx_ev_fit(&two, HFX_EV_INT, 3, &out));
 }
 
+/* hfx_ev_int / hfx_ev_uint, the one float-to-integer conversion of the libraries: where C's cast
+ * is undefined (NaN, infinities, beyond the type) it gives the clamp of the rule above. */
+static void to_integers(void) {
+    static const struct { double v; int32_t i; uint32_t u; } rows[] = {
+        {2.9, 2, 2}, {-2.9, -2, 0}, {-0.5, 0, 0}, {0.0, 0, 0},           /* toward zero; uint: negatives 0 */
+        {NAN, 0, 0}, {INFINITY, INT32_MAX, UINT32_MAX}, {-INFINITY, INT32_MIN, 0},
+        {1e30, INT32_MAX, UINT32_MAX}, {-1e30, INT32_MIN, 0}, {1e10, INT32_MAX, UINT32_MAX},
+        {FLT_MAX, INT32_MAX, UINT32_MAX}, {FLT_TRUE_MIN, 0, 0},            /* a denormal */
+        {2147483647.9, INT32_MAX, 2147483647u}, {2147483648.0, INT32_MAX, 2147483648u},
+        {-2147483648.9, INT32_MIN, 0}, {4294967295.9, INT32_MAX, UINT32_MAX}, {3e9, INT32_MAX, 3000000000u},
+    };
+    for (size_t k = 0; k < sizeof rows / sizeof *rows; k++) {
+        CHECK_INT(hfx_ev_int(rows[k].v), rows[k].i);
+        CHECK_INT(hfx_ev_uint(rows[k].v), rows[k].u);
+    }
+    /* int <-> uint keep the low 32 bits, also of integral values beyond 64 bits (no cast of them) */
+    CHECK(hfx_ev_convert(HFX_EV_INT, HFX_EV_UINT, 1e20) == 1661992960.0); /* 1e20 mod 2^32 */
+    CHECK(hfx_ev_convert(HFX_EV_UINT, HFX_EV_INT, -4294967297.0) == -1.0);
+    CHECK(hfx_ev_convert(HFX_EV_INT, HFX_EV_UINT, INFINITY) == 0.0);
+}
+
 int main(void) {
     RUN(conversions);
+    RUN(to_integers);
     RUN(binary_operators);
     RUN(unary_operators);
     RUN(scalar_intrinsics);

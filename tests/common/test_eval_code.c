@@ -2,6 +2,7 @@
  * (values worked out by hand), D3D9's clamped table index, and a validator that refuses every
  * malformed program, so one read from a hostile .hfxo never runs out of bounds (the random
  * changes at the end run under ASan in CI). */
+#include <math.h>
 #include <string.h>
 
 #include "eval_code.h"
@@ -55,6 +56,31 @@ static void table_index_clamps(void) {
     values[1] = 2;
 }
 
+/* A float index (a hostile program) goes through the rule of eval.h before the clamp: Ref = NaN
+ * is 0 (10), +inf and 1e30 clamp to the last element (40), -inf to the first, 2.9 truncates to 2. */
+static void float_table_index(void) {
+    const uint32_t code[] = {W(PARAM, F, 1), 0, W(TABLE, I, 1), 4, 10, 20, 30, 40};
+    const struct { float ref; double want; } rows[] = {{NAN, 10}, {INFINITY, 40}, {1e30f, 40}, {-INFINITY, 10}, {2.9f, 30}};
+    hfx_ev_value v;
+    for (size_t k = 0; k < sizeof rows / sizeof *rows; k++) {
+        values[0] = fbits(rows[k].ref);
+        CHECK(run(code, 8, &v) && v.c[0] == rows[k].want);
+    }
+    values[0] = fbits(0.5f);
+}
+
+/* hfx_evc_index, a selector's value as a shader-array entry in [0, last] (last = 2 here). */
+static void selector_index(void) {
+    const struct { int b; double v; uint32_t want; } rows[] = {
+        {F, 1e30, 2}, {F, NAN, 0}, {F, -INFINITY, 0}, {F, INFINITY, 2}, {F, 1.9, 1}, {F, -0.5, 0},
+        {I, -3, 0}, {I, 1, 1}, {HFX_EV_UINT, 4294967295.0, 2}, {HFX_EV_BOOL, 1, 1},
+    };
+    for (size_t k = 0; k < sizeof rows / sizeof *rows; k++) {
+        hfx_ev_value v = {(hfx_ev_base)rows[k].b, 1, {rows[k].v}};
+        CHECK_INT(hfx_evc_index(&v, 2), rows[k].want);
+    }
+}
+
 /* v.wx = (4, 1); an int plus a float is a float: 2 + 0.5; normalize((0, 3, 4)) = (0, 0.6, 0.8) */
 static void swizzle_promotion_and_calls(void) {
     const uint32_t sw[] = {W(PARAM, F, 4), 2, W(SWIZZLE, 2, 0), 0x03u};
@@ -103,9 +129,9 @@ static void validator_refuses(void) {
     check_invalid(underflow, 3, "word 2: takes more values than the stack holds");
     const uint32_t two[] = {W(CONST, F, 1), 0, W(CONST, F, 1), 0};
     check_invalid(two, 4, "does not leave exactly one value");
-    uint32_t deep[18];
-    for (int i = 0; i < 9; i++) deep[2 * i] = W(CONST, F, 1), deep[2 * i + 1] = 0;
-    check_invalid(deep, 18, "word 16: the stack grows too deep");
+    uint32_t deep[2 * (HFX_EVC_MAX_DEPTH + 1)]; /* one constant more than the stack holds */
+    for (int i = 0; i <= HFX_EVC_MAX_DEPTH; i++) deep[2 * i] = W(CONST, F, 1), deep[2 * i + 1] = 0;
+    check_invalid(deep, 2 * (HFX_EVC_MAX_DEPTH + 1), "word 32: the stack grows too deep"); /* 16 deep */
     const uint32_t empty_table[] = {W(CONST, I, 1), 0, W(TABLE, I, 1), 0};
     check_invalid(empty_table, 4, "a table of a wrong shape");
     const uint32_t huge_table[] = {W(CONST, I, 1), 0, W(TABLE, I, 16), 0xffffffffu, 1};
@@ -210,6 +236,8 @@ int main(void) {
     setup();
     RUN(parameter_times_constant);
     RUN(table_index_clamps);
+    RUN(float_table_index);
+    RUN(selector_index);
     RUN(swizzle_promotion_and_calls);
     RUN(select_and_failures);
     RUN(matrix_products);

@@ -1,5 +1,6 @@
 /* test_reload.c: hfx_effect_reload on a .fx rewritten between loads: values whose parameter kept
- * its shape survive and reach GL under the new code, the rest take the new defaults, the
+ * its shape and was set by the application survive and reach GL under the new code, the rest
+ * take the new defaults (an edited initializer shows), the
  * technique is kept by name, a failed compile changes nothing, clones keep the old code, and a
  * reload between begin and end leaves end restoring what begin saw. Every expected colour is
  * worked out by hand from the shaders below (GL rounds x * 255 to the nearest byte). */
@@ -350,6 +351,44 @@ static void test_reload_between_begin_and_end(void) {
     CHECK_INT(g.GetError(), GL_NO_ERROR);
 }
 
+/* An edited initializer shows after a reload unless the application set that parameter:
+ * Base's default goes from red to green and nobody set it, so the new green is drawn; Add was
+ * set to (0, 0, 0.5, 0), so its new default (0.25, 0, 0, 0) does not replace it. The pixel is
+ * Base + Add = (0, 1, 0.5) -> (0, 255, 127.5). The file grows by a character, so
+ * hfx_effect_reload_if_changed sees the change whatever the clock's resolution. */
+static void test_reload_takes_new_defaults(void) {
+    static const char red[] =
+        "float4 Base = float4(1, 0, 0, 1);\n"
+        "float4 Add = float4(0, 0, 0, 0);\n"
+        "float4 VS(float4 pos : POSITION0) : POSITION0 { return pos; }\n"
+        "float4 PS() : COLOR0 { return Base + Add; }\n"
+        "technique Main { pass P0 { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n";
+    static const char green[] =
+        "float4 Base = float4(0, 1, 0, 1);\n"
+        "float4 Add = float4(0.25, 0, 0, 0);\n"
+        "float4 VS(float4 pos : POSITION0) : POSITION0 { return pos; }\n"
+        "float4 PS() : COLOR0 { return Base + Add; }\n"
+        "technique Main { pass P0 { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n";
+    static const float add[4] = {0, 0, 0.5f, 0};
+    write_file(red);
+    hfx_effect *fx = hfx_effect_load(dev, path, NULL, NULL);
+    CHECK(fx != NULL);
+    if (!fx) return;
+    CHECK_INT(hfx_param_set_floats(hfx_effect_param(fx, "Add"), add, 4), HFX_OK);
+    render(fx);
+    check_pixel(8, 8, (const int[3]){255, 0, 128});
+    write_file(green);
+    CHECK_INT(hfx_effect_reload_if_changed(fx, NULL, NULL), 1);
+    float v[4];
+    CHECK_INT(hfx_param_get_floats(hfx_effect_param(fx, "Base"), v, 4), HFX_OK);
+    CHECK(v[0] == 0 && v[1] == 1 && v[2] == 0 && v[3] == 1);
+    CHECK_INT(hfx_param_get_floats(hfx_effect_param(fx, "Add"), v, 4), HFX_OK);
+    CHECK(v[0] == 0 && v[1] == 0 && v[2] == 0.5f && v[3] == 0);
+    render(fx);
+    check_pixel(8, 8, (const int[3]){0, 255, 128});
+    hfx_effect_destroy(fx);
+}
+
 int main(void) {
     gl = test_gl_create(W, H);
     if (!gl) test_skip("no OSMesa context");
@@ -363,6 +402,7 @@ int main(void) {
     RUN(test_reload_from_memory_needs_a_path);
     RUN(test_reload_from_hfxo);
     RUN(test_reload_between_begin_and_end);
+    RUN(test_reload_takes_new_defaults);
     remove(path);
     hfx_device_destroy(dev);
     test_gl_destroy(gl);

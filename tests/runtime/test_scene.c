@@ -194,6 +194,26 @@ static void singular_inverse_is_zero(void) {
     hfx_effect_destroy(fx);
 }
 
+/* `Object = "SpotLight0"` or a SasBindAddress makes a View semantic another object's (FX
+ * Composer's shadow effects: the light's view), so the scene leaves it alone; Object =
+ * "Camera" is the scene's. */
+static void another_objects_matrix_left_alone(void) {
+    static const char src[] =
+        "float4x4 light : View < string Object = \"SpotLight0\"; >;\n"
+        "float4x4 sas : View < string SasBindAddress = \"Sas.Skeleton.MeshToJointToWorld[0]\"; >;\n"
+        "float4x4 cam : View < string Object = \"Camera\"; >;\n";
+    hfx_effect *fx = hfx_effect_load_memory(dev, src, sizeof src - 1, "object.fx", NULL, NULL);
+    CHECK(fx != NULL);
+    if (!fx) return;
+    hfx_scene s = the_scene();
+    CHECK_INT(hfx_effect_bind_scene(fx, &s), 1);
+    float zero[16] = {0};
+    check_floats(fx, "light", zero, 16, "a light's view");
+    check_floats(fx, "sas", zero, 16, "a SAS address");
+    check_floats(fx, "cam", V, 16, "the camera's view");
+    hfx_effect_destroy(fx);
+}
+
 int main(void) {
     test_gl *gl = test_gl_create(4, 4);
     if (!gl) test_skip("no OSMesa context");
@@ -202,6 +222,7 @@ int main(void) {
     RUN(unchanged_scene_marks_nothing);
     RUN(semantics_known_and_nulls);
     RUN(singular_inverse_is_zero);
+    RUN(another_objects_matrix_left_alone);
     hfx_device_destroy(dev);
     test_gl_destroy(gl);
     return test_summary();

@@ -74,6 +74,14 @@ static void compiler_is_absent(void) {
     CHECK_CONTAINS(errors, "inline.fx: this program links hfx_runtime");
     if (fx) hfx_effect_destroy(fx);
     hfx_free(errors);
+    /* An effect fxc compiled (fx_2_0's magic, then nothing that matters): the message names it. */
+    static const unsigned char fxb[12] = {0x01, 0x09, 0xff, 0xfe, 4, 0, 0, 0, 0, 0, 0, 0};
+    fx = hfx_effect_load_memory(rto_device(g_ctx), fxb, sizeof fxb, "stock.fxb", NULL, &errors);
+    CHECK(fx == NULL);
+    CHECK_CONTAINS(errors, "stock.fxb: an effect compiled by fxc (fx_2_0); this program links hfx_runtime, which loads "
+                           ".hfxo files only: convert it with `hfxc -o X.hfxo X.fxb` or link hfx");
+    if (fx) hfx_effect_destroy(fx);
+    hfx_free(errors);
 }
 
 /* hfxc --quiet --no-warnings --target glsl330,glsles300 -o TMP/hfxo/ seeds... */

@@ -3,6 +3,8 @@
 #include "test.h"
 
 #include "../../tools/hfxview/bind.c"
+#include "../../tools/hfxview/bind_roles.c"
+#include "../../tools/hfxview/bind_sas.c"
 #include "../../tools/hfxview/options.c"
 #include "../../tools/hfxview/vmath.c"
 

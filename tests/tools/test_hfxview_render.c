@@ -233,7 +233,8 @@ static void exit_codes_and_messages(void) {
     free(out);
     CHECK_INT(hv(&out, FX "ambient.fx --list"), 0);
     CHECK_CONTAINS(out, "technique Textured\n  pass 0 P0\ntechnique Material\n  pass 0 P0\n");
-    CHECK_CONTAINS(out, "parameter World : World\n");
+    CHECK_CONTAINS(out, "parameter World : World  (SAS semantic)\n");
+    CHECK_CONTAINS(out, "parameter AmbientColor  (name: white (a material or light colour))\n");
     free(out);
 }
 

@@ -1,13 +1,14 @@
 /* bind.c: automatic parameter values (see bind.h). */
-#include "bind.h"
+#include "bind_internal.h"
 
 #include <ctype.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
-#define PI 3.14159265358979323846f
+#define PI HV_PI
 
 void hv_scene_from_options(hv_scene *s, const hv_options *o) {
     memset(s, 0, sizeof *s);
@@ -24,9 +25,11 @@ void hv_scene_from_options(hv_scene *s, const hv_options *o) {
                                                                     : hv_vec3_sub(o->at, o->light_position));
     memcpy(s->light_color, o->light_color, sizeof s->light_color);
     s->light_given = o->light_given;
+    s->time = HV_HEADLESS_TIME_SECONDS;
+    s->elapsed_time = 1.0f / 60.0f;
 }
 
-static void lower_copy(char *out, size_t cap, const char *in) {
+void hv_lower_copy(char *out, size_t cap, const char *in) {
     size_t i = 0;
     for (; in[i] && i + 1 < cap; i++) out[i] = (char)tolower((unsigned char)in[i]);
     out[i] = '\0';
@@ -48,7 +51,7 @@ static void matrix_stem(char *out, size_t cap, const char *name) {
     if (!strncmp(name, "mat", 3) && isupper((unsigned char)name[3])) name += 3;
     else if (!strncmp(name, "fx", 2) && isupper((unsigned char)name[2])) name += 2;
     else if ((name[0] == 'm' || name[0] == 'x') && isupper((unsigned char)name[1])) name++;
-    lower_copy(out, cap, name);
+    hv_lower_copy(out, cap, name);
     static const char *const suffixes[] = {"matrix", "mat", "xf", "_"};
     for (size_t i = 0; i < sizeof suffixes / sizeof suffixes[0]; i++)
         if (ends_with(out, suffixes[i])) out[strlen(out) - strlen(suffixes[i])] = '\0';
@@ -86,7 +89,7 @@ static void base_matrix(const hv_scene *s, int kind, float out[16]) {
 
 int hv_scene_matrix(const hv_scene *s, const char *name, int is_semantic, float out[16]) {
     char stem[128];
-    if (is_semantic) lower_copy(stem, sizeof stem, name);
+    if (is_semantic) hv_lower_copy(stem, sizeof stem, name);
     else matrix_stem(stem, sizeof stem, name);
     for (size_t b = 0; b < sizeof matrix_bases / sizeof matrix_bases[0]; b++) {
         size_t n = strlen(matrix_bases[b].stem);
@@ -111,7 +114,7 @@ static size_t param_words(const hfx_param *p) {
 }
 
 /* True when a numeric parameter holds only zeros: it had no initializer worth keeping. */
-static int param_is_zero(const hfx_param *p) {
+int hv_param_is_zero(const hfx_param *p) {
     size_t n = param_words(p);
     if (n == 0 || n > 4096) return 0;
     union { float f[4096]; int i[4096]; } v;
@@ -123,7 +126,7 @@ static int param_is_zero(const hfx_param *p) {
 }
 
 /* Sets a float scalar or vector from up to 4 values, padding with the last of `pad`. */
-static int set_vector(hfx_param *p, const float *v, size_t n, float pad) {
+int hv_set_vector(hfx_param *p, const float *v, size_t n, float pad) {
     size_t want = hfx_param_rows(p) * hfx_param_columns(p);
     float buf[16];
     if (hfx_param_get_type(p) != HFX_TYPE_FLOAT || want == 0 || want > 4) return 0;
@@ -131,15 +134,15 @@ static int set_vector(hfx_param *p, const float *v, size_t n, float pad) {
     return hfx_param_set_floats(p, buf, want) == HFX_OK;
 }
 
-static int set_scalar_default(hfx_param *p, float v) {
-    if (!param_is_zero(p)) return 0;
-    if (hfx_param_get_type(p) == HFX_TYPE_FLOAT) return set_vector(p, &v, 1, v);
+int hv_set_scalar_default(hfx_param *p, float v) {
+    if (!hv_param_is_zero(p)) return 0;
+    if (hfx_param_get_type(p) == HFX_TYPE_FLOAT) return hv_set_vector(p, &v, 1, v);
     if (hfx_param_get_type(p) == HFX_TYPE_INT) return hfx_param_set_int(p, (int)v) == HFX_OK;
     if (hfx_param_get_type(p) == HFX_TYPE_BOOL) return hfx_param_set_bool(p, v != 0) == HFX_OK;
     return 0;
 }
 
-static int set_matrix_param(hfx_param *p, const float m[16]) {
+int hv_set_matrix_param(hfx_param *p, const float m[16]) {
     size_t rows = hfx_param_rows(p), cols = hfx_param_columns(p);
     if (hfx_param_get_class(p) != HFX_CLASS_MATRIX || hfx_param_get_type(p) != HFX_TYPE_FLOAT) return 0;
     if (rows == 4 && cols == 4) return hfx_param_set_matrix(p, m) == HFX_OK;
@@ -149,163 +152,65 @@ static int set_matrix_param(hfx_param *p, const float m[16]) {
     return hfx_param_set_floats(p, sub, rows * cols) == HFX_OK;
 }
 
-/* ---- lights and materials ---------------------------------------------------------------- */
-
-typedef enum {
-    R_NONE, R_CAMERA, R_LIGHT_DIR, R_LIGHT_POS, R_LIGHT_COLOR, R_TARGET, R_WHITE, R_SCALAR, R_LIGHT_COUNT, R_RADIUS
-} role;
-
-/* Lower-case names, as the seed tutorials, XNA samples and FX Composer write them. */
-static const struct { const char *name; role r; float v; } named_roles[] = {
-    {"campos", R_CAMERA, 0}, {"camposition", R_CAMERA, 0}, {"camerapos", R_CAMERA, 0}, {"cameraposition", R_CAMERA, 0},
-    {"eyepos", R_CAMERA, 0}, {"eyeposition", R_CAMERA, 0}, {"viewpos", R_CAMERA, 0}, {"viewposition", R_CAMERA, 0},
-    {"posicioncamara", R_CAMERA, 0}, {"camaraposicion", R_CAMERA, 0},
-    {"lightdirection", R_LIGHT_DIR, 0}, {"lightdir", R_LIGHT_DIR, 0}, {"direccionluz", R_LIGHT_DIR, 0},
-    {"lamp0dir", R_LIGHT_DIR, 0}, {"dirlight", R_LIGHT_DIR, 0},
-    {"lightposition", R_LIGHT_POS, 0}, {"lightpos", R_LIGHT_POS, 0}, {"posicionluz", R_LIGHT_POS, 0},
-    {"lamp0pos", R_LIGHT_POS, 0}, {"pointlightposition", R_LIGHT_POS, 0},
-    {"lightcolor", R_LIGHT_COLOR, 0}, {"lightcolour", R_LIGHT_COLOR, 0}, {"colorluz", R_LIGHT_COLOR, 0},
-    {"lamp0color", R_LIGHT_COLOR, 0}, {"lightdiffuse", R_LIGHT_COLOR, 0},
-    {"blancoluz", R_TARGET, 0}, {"lighttarget", R_TARGET, 0}, {"spottarget", R_TARGET, 0},
-    {"specularcolor", R_WHITE, 0}, {"ambientcolor", R_WHITE, 0}, {"diffusecolor", R_WHITE, 0},
-    {"specularpower", R_SCALAR, 50}, {"shininess", R_SCALAR, 32}, {"specpower", R_SCALAR, 32},
-    {"specularintensity", R_SCALAR, 1}, {"diffuseintensity", R_SCALAR, 1}, {"ambientintensity", R_SCALAR, 0.05f},
-    {"c1", R_SCALAR, 1}, {"c3", R_SCALAR, 0.01f}, {"rango", R_SCALAR, 20}, {"lightrange", R_SCALAR, 20},
-    {"falloff", R_SCALAR, 0.8f}, {"angulointerno", R_SCALAR, 0.15f}, {"anguloexterno", R_SCALAR, 0.3f},
-    {"innerangle", R_SCALAR, 0.15f}, {"outerangle", R_SCALAR, 0.3f},
-    {"activelights", R_LIGHT_COUNT, 0}, {"numlights", R_LIGHT_COUNT, 0}, {"lightcount", R_LIGHT_COUNT, 0},
-    {"lightradius", R_RADIUS, 0},
-};
-
-enum { ARRAY_LIGHTS = 3 }; /* how many lights light arrays get */
-
-static role role_of(const char *name, float *v) {
-    char low[128];
-    lower_copy(low, sizeof low, name);
-    for (size_t i = 0; i < sizeof named_roles / sizeof named_roles[0]; i++)
-        if (!strcmp(low, named_roles[i].name)) {
-            *v = named_roles[i].v;
-            return named_roles[i].r;
-        }
-    return R_NONE;
-}
-
-/* Light k of an array: the scene light, then others turned 120 degrees about y, closer in. */
-static hv_vec3 array_light_position(const hv_scene *s, size_t k) {
-    hv_vec3 p = hv_vec3_scale(hv_vec3_normalize(s->light_position), 2.5f);
-    float m[16];
-    hv_mat4_rotation_y(m, (float)k * 2.0f * PI / 3.0f);
-    return hv_mat4_transform_point(m, p, NULL);
-}
-
-static const float array_light_colors[ARRAY_LIGHTS][4] = {{1.0f, 0.85f, 0.7f, 1}, {0.6f, 0.8f, 1.0f, 1}, {0.7f, 1.0f, 0.7f, 1}};
-
-static int bind_array(hfx_param *p, role r, const hv_scene *s) {
+/* Identity in every element of an all-zero matrix array: a bone palette (Bones[], MatrixPalette)
+ * or instance transforms the application would fill; zeros collapse every vertex to a point. */
+int hv_set_identity_palette(hfx_param *p) {
     size_t n = hfx_param_elements(p), set = 0;
-    for (size_t k = 0; k < n && k < ARRAY_LIGHTS; k++) {
-        hfx_param *e = hfx_param_element(p, k);
-        hv_vec3 pos = array_light_position(s, k);
-        float v[4] = {pos.x, pos.y, pos.z, 1}, radius = 5.0f;
-        if (r == R_LIGHT_POS) set += set_vector(e, v, 3, 1);
-        else if (r == R_LIGHT_COLOR) set += set_vector(e, array_light_colors[k], 4, 1);
-        else if (r == R_RADIUS) set += set_vector(e, &radius, 1, radius);
-        else if (r == R_LIGHT_DIR) {
-            hv_vec3 d = hv_vec3_normalize(hv_vec3_sub(s->at, pos));
-            float dv[4] = {d.x, d.y, d.z, 0};
-            set += set_vector(e, dv, 3, 0);
-        }
+    float id[16];
+    hv_mat4_identity(id);
+    if (!n || !hv_param_is_zero(p)) return 0;
+    for (size_t k = 0; k < n; k++) set += hv_set_matrix_param(hfx_param_element(p, k), id);
+    return set == n;
+}
+
+void hv_light_scene(const hv_scene *s, hv_scene *light) {
+    *light = *s;
+    hv_vec3 d = hv_vec3_normalize(hv_vec3_sub(s->at, s->light_position));
+    hv_vec3 up = fabsf(d.y) > 0.99f ? hv_vec3_make(0, 0, 1) : hv_vec3_make(0, 1, 0);
+    hv_mat4_look_at_rh(light->view, s->light_position, s->at, up);
+    hv_mat4_perspective_fov_rh(light->projection, 60.0f * PI / 180.0f, 1.0f, 0.1f, 100.0f);
+    light->eye = s->light_position;
+}
+
+/* SpriteBatch's projection (XNA, FNA): x 0..width to -1..1, y 0..height to 1..-1, moved half a
+ * pixel up and left as on Direct3D 9 (FNA's half-pixel offset), so pixel (0, 0)'s centre is
+ * the sprite's texel (0, 0) centre and the rectangle's edges fall between pixel centres. */
+static void pixel_projection(const hv_scene *s, float m[16]) {
+    memset(m, 0, 16 * sizeof *m);
+    m[0] = 2.0f / (float)s->width;
+    m[5] = -2.0f / (float)s->height;
+    m[10] = -1.0f;
+    m[12] = -1.0f - 1.0f / (float)s->width;
+    m[13] = 1.0f + 1.0f / (float)s->height;
+    m[15] = 1.0f;
+}
+
+static int is_pixel_transform(const hfx_param *p) {
+    char stem[64];
+    hv_name_stem(stem, sizeof stem, hfx_param_name(p));
+    return hfx_param_get_class(p) == HFX_CLASS_MATRIX && hfx_param_elements(p) == 0 &&
+           (!strcmp(stem, "matrixtransform") || !strcmp(stem, "spritetransform") || !strcmp(stem, "transformmatrix"));
+}
+
+/* DigitalRise's post-processing: a viewport size (by name or VIEWPORTSIZE) and no matrix at
+ * all, so the vertex shader maps pixels to clip space itself. */
+static int is_viewport_size_param(hfx_param *p) {
+    char low[64];
+    const char *sem = hfx_param_semantic(p);
+    hv_lower_copy(low, sizeof low, hfx_param_name(p));
+    return !strcmp(low, "viewportsize") || !strcmp(low, "viewportpixelsize") ||
+           (sem && (!strcasecmp(sem, "ViewportSize") || !strcasecmp(sem, "ViewportPixelSize")));
+}
+
+int hv_effect_wants_pixels(hfx_effect *fx) {
+    int viewport = 0, matrices = 0;
+    for (size_t i = 0; i < hfx_effect_param_count(fx); i++) {
+        hfx_param *p = hfx_effect_param_at(fx, i);
+        if (is_pixel_transform(p)) return 1;
+        viewport |= is_viewport_size_param(p);
+        matrices |= hfx_param_get_class(p) == HFX_CLASS_MATRIX;
     }
-    return set > 0;
-}
-
-static int is_light_role(role r) {
-    return r == R_LIGHT_DIR || r == R_LIGHT_POS || r == R_LIGHT_COLOR || r == R_TARGET;
-}
-
-static int bind_role(hfx_param *p, role r, float v, const hv_scene *s) {
-    float vec[4] = {0, 0, 0, 1};
-    int forced = r == R_CAMERA || (s->light_given && is_light_role(r));
-    if (r == R_NONE || (!forced && !param_is_zero(p))) return 0;
-    if (hfx_param_elements(p)) return bind_array(p, r, s);
-    switch (r) {
-    case R_CAMERA: vec[0] = s->eye.x; vec[1] = s->eye.y; vec[2] = s->eye.z; return set_vector(p, vec, 4, 1);
-    case R_LIGHT_DIR:
-        vec[0] = s->light_direction.x; vec[1] = s->light_direction.y; vec[2] = s->light_direction.z; vec[3] = 0;
-        return set_vector(p, vec, 4, 0);
-    case R_LIGHT_POS:
-        vec[0] = s->light_position.x; vec[1] = s->light_position.y; vec[2] = s->light_position.z;
-        return set_vector(p, vec, 4, 1);
-    case R_LIGHT_COLOR: memcpy(vec, s->light_color, 3 * sizeof *vec); return set_vector(p, vec, 4, 1);
-    case R_TARGET: vec[0] = s->at.x; vec[1] = s->at.y; vec[2] = s->at.z; return set_vector(p, vec, 4, 1);
-    case R_WHITE: vec[0] = vec[1] = vec[2] = 1; return set_vector(p, vec, 4, 1);
-    case R_SCALAR: return set_scalar_default(p, v);
-    case R_LIGHT_COUNT: return set_scalar_default(p, ARRAY_LIGHTS);
-    case R_RADIUS: return set_scalar_default(p, 5.0f);
-    default: return 0;
-    }
-}
-
-/* ---- structs of lights (multilights: LuzDireccional, LuzPuntual, LuzSpot) ------------------ */
-
-static hfx_param *member_named(hfx_param *p, const char *const *names) {
-    for (size_t i = 0; i < hfx_param_member_count(p); i++) {
-        hfx_param *m = hfx_param_member_at(p, i);
-        char low[64];
-        lower_copy(low, sizeof low, hfx_param_name(m));
-        for (size_t k = 0; names[k]; k++)
-            if (!strcmp(low, names[k])) return m;
-    }
-    return NULL;
-}
-
-static const char *const m_direction[] = {"direccion", "direction", "dir", NULL};
-static const char *const m_position[] = {"posicion", "position", "pos", NULL};
-static const char *const m_target[] = {"blanco", "target", NULL};
-static const char *const m_color[] = {"color", "colour", "diffuse", NULL};
-static const char *const m_range[] = {"rango", "range", "radius", NULL};
-static const char *const m_c1[] = {"c1", NULL}, *const m_c3[] = {"c3", NULL};
-static const char *const m_inner[] = {"angulointerno", "innerangle", "inner", NULL};
-static const char *const m_outer[] = {"anguloexterno", "outerangle", "outer", NULL};
-static const char *const m_falloff[] = {"falloff", NULL};
-static const char *const m_enabled[] = {"encender", "enabled", "enable", "on", NULL};
-
-static int set_member(hfx_param *s, const char *const *names, const float *v, size_t n) {
-    hfx_param *m = member_named(s, names);
-    if (!m || !param_is_zero(m)) return 0;
-    if (hfx_param_get_type(m) == HFX_TYPE_FLOAT) return set_vector(m, v, n, v[n - 1]);
-    return set_scalar_default(m, v[0]);
-}
-
-/* One light struct: its kind shows in its members (a target: spot; a position: point). */
-static int bind_light_struct(hfx_param *l, const hv_scene *s) {
-    hfx_param *pos = member_named(l, m_position), *dir = member_named(l, m_direction);
-    int spot = member_named(l, m_target) != NULL;
-    if (!pos && !dir) return 0;
-    static const float dir_color[4] = {0.6f, 0.6f, 0.6f, 1}, point_color[4] = {1.0f, 0.6f, 0.3f, 1},
-                       spot_color[4] = {0.4f, 0.6f, 1.0f, 1}, one = 1, range = 20, c3 = 0.01f, inner = 0.15f,
-                       outer = 0.3f, falloff = 0.8f;
-    hv_vec3 p = spot ? s->light_position : hv_vec3_make(-2.0f, 1.5f, 2.0f);
-    float pv[3] = {p.x, p.y, p.z}, tv[3] = {s->at.x, s->at.y, s->at.z};
-    float dv[3] = {s->light_direction.x, s->light_direction.y, s->light_direction.z};
-    int n = 0;
-    n += set_member(l, m_direction, dv, 3);
-    n += set_member(l, m_position, pv, 3);
-    n += set_member(l, m_target, tv, 3);
-    n += set_member(l, m_color, pos ? (spot ? spot_color : point_color) : dir_color, 4);
-    n += set_member(l, m_range, &range, 1);
-    n += set_member(l, m_c1, &one, 1);
-    n += set_member(l, m_c3, &c3, 1);
-    n += set_member(l, m_inner, &inner, 1);
-    n += set_member(l, m_outer, &outer, 1);
-    n += set_member(l, m_falloff, &falloff, 1);
-    n += set_member(l, m_enabled, &one, 1);
-    return n > 0;
-}
-
-static int bind_struct(hfx_param *p, const hv_scene *s) {
-    if (!hfx_param_elements(p)) return bind_light_struct(p, s);
-    hfx_param *first = hfx_param_element(p, 0); /* one light of each kind is enough to see */
-    return first ? bind_light_struct(first, s) : 0;
+    return viewport && !matrices;
 }
 
 /* ---- the whole effect -------------------------------------------------------------------- */
@@ -315,44 +220,59 @@ static int is_viewport_size(const char *lower) {
     return !strcmp(lower, "viewportpixelsize") || !strcmp(lower, "viewportsize");
 }
 
-static int set_viewport_size(hfx_param *p, const hv_scene *s) {
-    float wh[2] = {(float)s->width, (float)s->height};
-    return set_vector(p, wh, 2, 0);
+/* "LightViewProj", "gLightWVP", "ShadowViewProjection": the light's matrices. */
+static int light_matrix(const hv_scene *s, const char *name, float m[16]) {
+    char stem[128];
+    hv_name_stem(stem, sizeof stem, name);
+    const char *rest = !strncmp(stem, "light", 5) ? stem + 5 : !strncmp(stem, "shadow", 6) ? stem + 6 : NULL;
+    if (!rest || !*rest) return 0;
+    hv_scene light;
+    hv_light_scene(s, &light);
+    return hv_scene_matrix(&light, rest, 1, m);
 }
 
-/* What follows the camera and the viewport: matrices by semantic or name, the viewport size by
- * name, the camera position. The count set (0 or 1), or -1 when p is none of those. */
-static int bind_view_one(hfx_param *p, const hv_scene *s) {
-    float m[16], v = 0;
-    const char *sem = hfx_param_semantic(p);
-    hfx_param_class k = hfx_param_get_class(p);
-    if (sem && *sem && hfx_scene_semantic_known(sem)) return 0; /* hfx_effect_bind_scene's, set already */
-    if (k == HFX_CLASS_MATRIX && hfx_param_elements(p) == 0) {
-        if (sem && *sem && hv_scene_matrix(s, sem, 1, m)) return set_matrix_param(p, m); /* "WVP", "ViewI"... */
-        return hv_scene_matrix(s, hfx_param_name(p), 0, m) && set_matrix_param(p, m);
+/* Matrices: by semantic, then name, SpriteBatch's, the light's; any other one, and every
+ * matrix array, the identity when the effect left it at zero. */
+static const char *bind_matrix(hfx_param *p, const hv_scene *s, int view_only, int *set) {
+    float m[16];
+    const char *sem = hfx_param_semantic(p), *name = hfx_param_name(p);
+    if (hfx_param_elements(p)) {
+        if (view_only) return NULL;
+        *set = hv_set_identity_palette(p);
+        return *set ? "identity in every element (a bone or instance palette)" : NULL;
     }
-    if (k != HFX_CLASS_SCALAR && k != HFX_CLASS_VECTOR) return -1;
-    /* the runtime binds the semantics (hfx_effect_bind_scene); DigitalRise's post-processing
-     * declares its viewport size by name only */
-    char low_name[64];
-    lower_copy(low_name, sizeof low_name, hfx_param_name(p));
-    if (is_viewport_size(low_name)) return set_viewport_size(p, s);
-    return role_of(hfx_param_name(p), &v) == R_CAMERA ? bind_role(p, R_CAMERA, v, s) : -1;
+    if (sem && *sem && hv_scene_matrix(s, sem, 1, m)) return *set = hv_set_matrix_param(p, m), "semantic: the scene's matrix";
+    if (hv_scene_matrix(s, name, 0, m)) return *set = hv_set_matrix_param(p, m), "name: the scene's matrix";
+    if (is_pixel_transform(p)) {
+        pixel_projection(s, m);
+        return *set = hv_set_matrix_param(p, m), "name: SpriteBatch's pixel projection";
+    }
+    if (light_matrix(s, name, m)) return *set = hv_set_matrix_param(p, m), "name: the light's matrix";
+    if (view_only || !hv_param_is_zero(p)) return NULL;
+    hv_mat4_identity(m);
+    *set = hv_set_matrix_param(p, m);
+    return "identity (no convention names it)";
 }
 
-static int bind_one(hfx_param *p, const hv_scene *s) {
-    int n = bind_view_one(p, s);
-    float v = 0;
-    if (n >= 0) return n;
+static const char *bind_one(hfx_param *p, const hv_scene *s, int view_only, int *set) {
+    const char *sem = hfx_param_semantic(p), *how;
+    char low[64];
+    *set = 0;
+    if (sem && *sem && hfx_scene_semantic_known(sem) && !hfx_param_annotation(p, "Object") &&
+        !hfx_param_annotation(p, "SasBindAddress"))
+        return "SAS semantic";
+    if ((how = hv_bind_by_annotation(p, s, view_only, set))) return how;
     hfx_param_class k = hfx_param_get_class(p);
-    if (k == HFX_CLASS_STRUCT) return bind_struct(p, s);
-    if (k != HFX_CLASS_SCALAR && k != HFX_CLASS_VECTOR) return 0;
-    role r = role_of(hfx_param_name(p), &v); /* sets v: before it is passed */
-    return bind_role(p, r, v, s);
+    if (k == HFX_CLASS_MATRIX && hfx_param_get_type(p) == HFX_TYPE_FLOAT) return bind_matrix(p, s, view_only, set);
+    hv_lower_copy(low, sizeof low, hfx_param_name(p));
+    if ((k == HFX_CLASS_SCALAR || k == HFX_CLASS_VECTOR) && is_viewport_size(low)) {
+        float wh[2] = {(float)s->width, (float)s->height};
+        return *set = hv_set_vector(p, wh, 2, 0), "name: the viewport size";
+    }
+    return hv_bind_by_name(p, s, view_only, set);
 }
 
-/* The standard SAS semantics go through the runtime (hfx_effect_bind_scene); the rest of this
- * file guesses from names, for tutorials' effects that carry no semantics. */
+/* The standard SAS semantics go through the runtime (hfx_effect_bind_scene). */
 static int bind_semantics(hfx_effect *fx, const hv_scene *s) {
     hfx_scene scene;
     memset(&scene, 0, sizeof scene);
@@ -361,21 +281,47 @@ static int bind_semantics(hfx_effect *fx, const hv_scene *s) {
     memcpy(scene.projection, s->projection, sizeof scene.projection);
     scene.viewport_width = (float)s->width;
     scene.viewport_height = (float)s->height;
+    scene.time = s->time;
+    scene.elapsed_time = s->elapsed_time;
     int n = hfx_effect_bind_scene(fx, &scene);
     return n > 0 ? n : 0;
 }
 
-int hv_bind_scene(hfx_effect *fx, const hv_scene *s) {
-    int n = bind_semantics(fx, s);
-    for (size_t i = 0; i < hfx_effect_param_count(fx); i++) n += bind_one(hfx_effect_param_at(fx, i), s);
+static int bind_all(hfx_effect *fx, const hv_scene *s, int view_only, const char **how, size_t count) {
+    bind_semantics(fx, s);
+    int n = 0, set;
+    for (size_t i = 0; i < hfx_effect_param_count(fx); i++) {
+        const char *h = bind_one(hfx_effect_param_at(fx, i), s, view_only, &set);
+        n += h != NULL;
+        if (i < count) how[i] = h;
+    }
     return n;
 }
 
-int hv_bind_view(hfx_effect *fx, const hv_scene *s) {
-    int n = bind_semantics(fx, s);
+int hv_bind_scene_report(hfx_effect *fx, const hv_scene *s, const char **how, size_t count) {
+    return bind_all(fx, s, 0, how, count);
+}
+
+int hv_bind_scene(hfx_effect *fx, const hv_scene *s) { return bind_all(fx, s, 0, NULL, 0); }
+
+int hv_bind_view(hfx_effect *fx, const hv_scene *s) { return bind_all(fx, s, 1, NULL, 0); }
+
+static int is_numeric(const hfx_param *p) {
+    hfx_param_type t = hfx_param_get_type(p);
+    hfx_param_class k = hfx_param_get_class(p);
+    return (t == HFX_TYPE_FLOAT || t == HFX_TYPE_INT || t == HFX_TYPE_BOOL) && k != HFX_CLASS_OBJECT;
+}
+
+size_t hv_unbound_list(hfx_effect *fx, const char *const *how, char *out, size_t cap) {
+    size_t n = 0, used = 0;
+    if (cap) out[0] = '\0';
     for (size_t i = 0; i < hfx_effect_param_count(fx); i++) {
-        int k = bind_view_one(hfx_effect_param_at(fx, i), s);
-        n += k > 0 ? k : 0;
+        hfx_param *p = hfx_effect_param_at(fx, i);
+        if (how[i] || !is_numeric(p)) continue;
+        int w = snprintf(out + used, cap > used ? cap - used : 0, "%s%s%s", n ? ", " : "", hfx_param_name(p),
+                         hv_param_is_zero(p) ? " = 0" : "");
+        if (w > 0) used = used + (size_t)w < cap ? used + (size_t)w : cap;
+        n++;
     }
     return n;
 }

@@ -1,10 +1,17 @@
-/* bind.h: filling an effect's parameters without code, the way FX Composer does: the standard
- * SAS semantics through the runtime's hfx_effect_bind_scene, then matrices by name or other
- * spellings (World, matWorldViewProj, WorldITXf...), the camera position, and light and material
- * parameters the seed tutorials use (LightDirection, direccionLuz, posicionLuz, LightPosition[],
- * structs of lights...). Lights and materials are only given values when the effect left them
- * at zero (no initializer), so an effect's own defaults win, unless --light names the light;
- * the camera position always follows the camera. */
+/* bind.h: filling an effect's parameters without code, the one binding hfxview and the web
+ * page share. In order: the standard SAS semantics through the runtime's hfx_effect_bind_scene;
+ * FX Composer / DXSAS annotations (Object = "SpotLight0" gives the light's matrices and
+ * vectors, Space, SasBindAddress, UIWidget = "Color", UIMin); then names, case-insensitively,
+ * after the DirectX SDK's and engines' decorations are stripped (g_, m_, Hungarian f/v/c, mat,
+ * x, fx): matrices (World, matWorldViewProj, WorldITXf, MatrixTransform: SpriteBatch's pixel
+ * projection), XNA's stock effects' and samples' lights and materials (DirLight0DiffuseColor,
+ * diffuseLightColor, EnvironmentMapAmount), the DirectX SDK's (g_LightDir, g_MaterialDiffuseColor,
+ * g_matDiffuse), engines' (Color, lightIntensity, invLightRadius), the seed tutorials' Spanish
+ * ones, a clock for time (g_fTime, CurrentTime), post-processing weights and intensities,
+ * particle sizes and durations; identity for matrix arrays (bone palettes). Lights, materials
+ * and weights are only given values when the effect left them at zero (no initializer), so an
+ * effect's own defaults win, unless --light names the light; the camera position and the clock
+ * always follow the scene. tools/hfxview/README.md lists every convention. */
 #ifndef HFXVIEW_BIND_H
 #define HFXVIEW_BIND_H
 
@@ -21,7 +28,10 @@ typedef struct hv_scene {
     float light_color[3];
     int light_given;                         /* --light: override the effect's own light values */
     int width, height;
+    float time, elapsed_time;                /* seconds: a running clock in a window, fixed headless */
 } hv_scene;
+
+enum { HV_HEADLESS_TIME_SECONDS = 1 };       /* time parameters in pictures: reproducible */
 
 void hv_scene_from_options(hv_scene *s, const hv_options *o);
 
@@ -29,8 +39,19 @@ void hv_scene_from_options(hv_scene *s, const hv_options *o);
  * "WorldITXf"...): 1 with out filled, or 0 when it names none. */
 int hv_scene_matrix(const hv_scene *s, const char *name, int is_semantic, float out[16]);
 
-/* Sets every matrix, camera, light and material parameter it recognises; the count set. */
+/* Sets every matrix, camera, light and material parameter it recognises; the count recognised. */
 int hv_bind_scene(hfx_effect *fx, const hv_scene *s);
+/* The same, saying how: how[i] for hfx_effect_param_at(fx, i) (i < count) is a phrase such as
+ * "semantic WorldViewProjection" or "name: light direction", or NULL when nothing recognised
+ * the parameter (it keeps the effect's value). */
+int hv_bind_scene_report(hfx_effect *fx, const hv_scene *s, const char **how, size_t count);
+/* The numeric parameters no convention recognised, as ", "-separated "Name" or "Name = 0" (still
+ * zero: the likely reason for a black picture) into out; how many. */
+size_t hv_unbound_list(hfx_effect *fx, const char *const *how, char *out, size_t cap);
+/* 1 when the effect draws in pixels: SpriteBatch's MatrixTransform (SpriteEffect and its kin),
+ * or a viewport size and no matrix (DigitalRise's post-processing maps pixels itself): a
+ * viewer then draws the image's rectangle rather than a sphere. */
+int hv_effect_wants_pixels(hfx_effect *fx);
 /* Only what follows the camera and the viewport (semantics, matrices, the camera position), as
  * a viewer does every frame: lights and materials keep what the user set, zeros included. */
 int hv_bind_view(hfx_effect *fx, const hv_scene *s);

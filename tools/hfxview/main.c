@@ -78,7 +78,14 @@ static int load_effect(viewer *v) {
     return v->fx ? EXIT_OK : EXIT_EFFECT;
 }
 
-static void list_effect(hfx_effect *fx) {
+/* --list: techniques, passes, and each parameter with how hfxview binds it. */
+static void list_effect(viewer *v) {
+    hfx_effect *fx = v->fx;
+    size_t count = hfx_effect_param_count(fx);
+    const char **how = calloc(count ? count : 1, sizeof *how);
+    hv_scene scene;
+    hv_scene_from_options(&scene, &v->opt);
+    if (how) hv_bind_scene_report(fx, &scene, how, count);
     for (size_t i = 0; i < hfx_effect_technique_count(fx); i++) {
         hfx_technique *t = hfx_effect_technique_at(fx, i);
         printf("technique %s\n", hfx_technique_name(t));
@@ -91,8 +98,10 @@ static void list_effect(hfx_effect *fx) {
         printf("parameter %s", hfx_param_name(p));
         if (hfx_param_elements(p)) printf("[%zu]", hfx_param_elements(p));
         if (sem && *sem) printf(" : %s", sem);
-        printf("\n");
+        const char *texture = "texture: --texture, the file its annotations name, or a checkerboard";
+        printf("  (%s)\n", how && how[i] ? how[i] : hfx_param_texture_target(p) ? texture : "not bound: the effect's value");
     }
+    free(how);
 }
 
 /* The first technique that draws something: an effect may include a file whose technique is
@@ -109,7 +118,7 @@ static int pick_technique(viewer *v) {
     hfx_effect *fx = v->fx;
     size_t count = hfx_effect_technique_count(fx);
     const char *want = v->opt.technique;
-    if (!want) v->technique = default_technique(fx);
+    if (!want || !strcmp(want, "all")) v->technique = default_technique(fx);
     else if (!(v->technique = hfx_effect_technique(fx, want))) {
         char *end;
         unsigned long i = strtoul(want, &end, 10);
@@ -130,11 +139,41 @@ static int pick_technique(viewer *v) {
     return EXIT_OK;
 }
 
+/* Binds the scene; then says which numeric parameters no convention recognised (those --set
+ * does not name), so that a black picture explains itself. */
+static void bind_and_tell(viewer *v, const hv_scene *scene) {
+    size_t count = hfx_effect_param_count(v->fx);
+    const char **how = calloc(count ? count : 1, sizeof *how);
+    if (!how) return (void)hv_bind_scene(v->fx, scene);
+    hv_bind_scene_report(v->fx, scene, how, count);
+    for (size_t i = 0; i < v->opt.set_count; i++) {
+        size_t n = (size_t)(v->opt.sets[i].value - 1 - v->opt.sets[i].name);
+        for (size_t k = 0; k < count; k++) {
+            const char *name = hfx_param_name(hfx_effect_param_at(v->fx, k));
+            if (strlen(name) <= n && !strncmp(name, v->opt.sets[i].name, strlen(name))) how[k] = "--set";
+        }
+    }
+    char list[1024];
+    size_t unbound = hv_unbound_list(v->fx, how, list, sizeof list);
+    if (unbound)
+        fprintf(stderr, "hfxview: %zu parameter%s not bound, left at the effect's values: %s\n", unbound,
+                unbound == 1 ? "" : "s", list);
+    free(how);
+}
+
+/* SpriteEffect and its kin draw in pixels (MatrixTransform): the image's rectangle, unless --mesh. */
+static int pick_mesh(viewer *v) {
+    if (v->opt.mesh_given || !hv_effect_wants_pixels(v->fx)) return EXIT_OK;
+    hv_mesh_free(&v->mesh);
+    if (hv_mesh_screen(&v->mesh, v->opt.width, v->opt.height) != 0) return input_error("out of memory building the screen mesh");
+    return EXIT_OK;
+}
+
 /* The scene's matrices, camera and light, then the --set values over them (GL and --vulkan alike). */
 static int bind_scene_and_sets(viewer *v) {
     hv_scene scene;
     hv_scene_from_options(&scene, &v->opt);
-    hv_bind_scene(v->fx, &scene);
+    bind_and_tell(v, &scene);
     for (size_t i = 0; i < v->opt.set_count; i++) {
         char name[256];
         size_t n = (size_t)(v->opt.sets[i].value - 1 - v->opt.sets[i].name);
@@ -213,10 +252,23 @@ static int watch_headless(viewer *v) {
     }
 }
 
-/* The window loop: T cycles techniques, Left / Right turn the mesh, Escape quits. */
+static double seconds_now(void) {
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
+}
+
+/* The window loop: T cycles techniques, Left / Right turn the mesh, Escape quits. The clock
+ * runs: time parameters (Time, g_fTime, CurrentTime) follow it every frame. */
 static int show_window(viewer *v) {
+    double start = seconds_now(), last = start;
     while (!hv_context_should_close(v->ctx)) {
         if (v->opt.watch) watch_step(v);
+        hv_scene scene;
+        double now = seconds_now();
+        hv_scene_from_options(&scene, &v->opt);
+        scene.time = (float)(now - start), scene.elapsed_time = (float)(now - last), last = now;
+        hv_bind_view(v->fx, &scene);
         if (draw(v) != EXIT_OK) return EXIT_EFFECT;
         hv_context_present(v->ctx);
         if (hv_context_key_pressed(v->ctx, 'T')) {
@@ -226,12 +278,7 @@ static int show_window(viewer *v) {
             printf("technique %s\n", hfx_technique_name(v->technique));
         }
         int turn = hv_context_key_pressed(v->ctx, 262) - hv_context_key_pressed(v->ctx, 263); /* GLFW arrows */
-        if (turn) {
-            v->opt.yaw_degrees += 15.0f * (float)turn;
-            hv_scene scene;
-            hv_scene_from_options(&scene, &v->opt);
-            hv_bind_scene(v->fx, &scene);
-        }
+        v->opt.yaw_degrees += 15.0f * (float)turn; /* the next frame's hv_bind_view turns the matrices */
     }
     return EXIT_OK;
 }
@@ -250,8 +297,8 @@ static int write_image(viewer *v, hv_image *img) {
 static int vulkan_steps(viewer *v, hv_vk *g) {
     int rc;
     if ((rc = load_effect(v)) != EXIT_OK) return rc;
-    if (v->opt.list) return list_effect(v->fx), EXIT_OK;
-    if ((rc = pick_technique(v)) != EXIT_OK) return rc;
+    if (v->opt.list) return list_effect(v), EXIT_OK;
+    if ((rc = pick_technique(v)) != EXIT_OK || (rc = pick_mesh(v)) != EXIT_OK) return rc;
     if ((rc = bind_scene_and_sets(v)) != EXIT_OK) return rc;
     hv_image img;
     size_t failed = 0;
@@ -280,6 +327,29 @@ static int run_vulkan(viewer *v) {
 }
 #endif
 
+/* --technique all: every technique into OUT.N.png (N its index, OUT the -o path less ".png"),
+ * with a line "technique N NAME" for each on stdout; for surveys (scripts/corpus.sh). The
+ * first failure's status, after trying them all. */
+static int draw_every_technique(viewer *v) {
+    const char *out = v->opt.output ? v->opt.output : "hfxview.png";
+    size_t n = hfx_effect_technique_count(v->fx), stem = strlen(out);
+    int worst = EXIT_OK;
+    if (stem > 4 && !strcmp(out + stem - 4, ".png")) stem -= 4;
+    for (size_t i = 0; i < n; i++) {
+        char path[1024];
+        snprintf(path, sizeof path, "%.*s.%zu.png", (int)stem, out, i);
+        v->technique = hfx_effect_technique_at(v->fx, i);
+        printf("technique %zu %s\n", i, hfx_technique_name(v->technique));
+        fflush(stdout);
+        v->opt.output = path;
+        int rc = draw(v);
+        if (rc == EXIT_OK) rc = save_png(v);
+        if (worst == EXIT_OK) worst = rc;
+    }
+    v->opt.output = out;
+    return worst;
+}
+
 static int run(viewer *v) {
     int rc;
     if (!strcmp(v->opt.mesh, "screen")) {
@@ -306,10 +376,10 @@ static int run(viewer *v) {
     }
     if ((rc = load_effect(v)) != EXIT_OK) return rc;
     if (v->opt.list) {
-        list_effect(v->fx);
+        list_effect(v);
         return EXIT_OK;
     }
-    if ((rc = pick_technique(v)) != EXIT_OK) return rc;
+    if ((rc = pick_technique(v)) != EXIT_OK || (rc = pick_mesh(v)) != EXIT_OK) return rc;
     if (hv_gpu_mesh_upload(v->gl, &v->gpu, &v->mesh) != 0) {
         fprintf(stderr, "hfxview: cannot upload the mesh\n");
         return EXIT_EFFECT;
@@ -321,6 +391,7 @@ static int run(viewer *v) {
         if ((rc = draw(v)) != EXIT_OK) return rc; /* the swapped buffer is gone: draw once more */
         return save_png(v);
     }
+    if (v->opt.technique && !strcmp(v->opt.technique, "all")) return draw_every_technique(v);
     if ((rc = draw(v)) != EXIT_OK) return rc;
     if ((rc = save_png(v)) != EXIT_OK || !v->opt.watch) return rc;
     return watch_headless(v);

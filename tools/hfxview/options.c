@@ -9,7 +9,7 @@
 
 const char *hv_usage(void) {
     return "usage: hfxview EFFECT.fx|EFFECT.hfxo [-o OUT.png] [options]\n"
-           "  --technique NAME|N        technique to draw (default: the first)\n"
+           "  --technique NAME|N|all    technique to draw (default: the first); all: each to OUT.N.png\n"
            "  --pass all|N              draw every pass in order (default) or only pass N\n"
            "  --mesh NAME|FILE.obj      sphere (default), plane, quad, cube, torus, teapot, screen (the\n"
            "                            image in pixels, for post-processing), or an OBJ file\n"
@@ -192,6 +192,7 @@ int hv_options_parse(hv_options *o, int argc, char **argv, char *err, size_t err
         } else if (TAKE("--mesh")) {
             if (!*v) return fail(err, errlen, "missing mesh after", a);
             o->mesh = v;
+            o->mesh_given = 1;
         } else if (TAKE("--size")) {
             if (!parse_size(v, &o->width, &o->height)) return fail(err, errlen, "--size takes WIDTHxHEIGHT, not", v);
         } else if (TAKE("--texture")) {

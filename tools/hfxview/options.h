@@ -14,6 +14,7 @@ typedef struct hv_options {
     const char *technique;   /* name or index; NULL: the first */
     int pass;                /* -1: every pass in order, else only pass N */
     const char *mesh;        /* built-in name or .obj path */
+    int mesh_given;          /* --mesh: else an effect in pixels (SpriteEffect) gets "screen" */
     int width, height;
     hv_kv textures[32]; size_t texture_count;
     hv_kv sets[64]; size_t set_count;

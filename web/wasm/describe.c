@@ -3,7 +3,9 @@
  * parameters and arrays of structs as their leaves), as JSON. */
 #include <emscripten.h>
 #include <stdio.h>
+#include <string.h>
 
+#include "bind.h"
 #include "json.h"
 #include "session.h"
 
@@ -48,6 +50,13 @@ static void value_json(hfxw_json *j, const hfx_param *p) {
 
 /* One parameter, named by its path ("spots[1].Color" for a leaf of a struct parameter), and
  * the top-level parameter it belongs to (group). */
+/* How bind.c bound top-level parameter `group` when the effect loaded, or NULL. */
+static const char *bound_how(const hfxw_session *s, const char *group) {
+    for (size_t i = 0; i < s->bound_count; i++)
+        if (!strcmp(hfx_param_name(hfx_effect_param_at(s->fx, i)), group)) return s->bound[i];
+    return NULL;
+}
+
 static void param_json(hfxw_json *j, hfx_param *p, const char *path, const char *group) {
     hfx_param_type t = hfx_param_get_type(p);
     hfx_param_class c = hfx_param_get_class(p);
@@ -59,6 +68,7 @@ static void param_json(hfxw_json *j, hfx_param *p, const char *path, const char 
     hfxw_json_raw(j, ","), hfxw_json_key(j, "rows"), hfxw_json_num(j, (double)hfx_param_rows(p));
     hfxw_json_raw(j, ","), hfxw_json_key(j, "columns"), hfxw_json_num(j, (double)hfx_param_columns(p));
     hfxw_json_raw(j, ","), hfxw_json_key(j, "elements"), hfxw_json_num(j, (double)hfx_param_elements(p));
+    hfxw_json_raw(j, ","), hfxw_json_key(j, "bound"), hfxw_json_str(j, bound_how(hfxw_get(), group));
     hfxw_json_raw(j, ","), hfxw_json_key(j, "texture"), hfxw_json_raw(j, hfx_param_texture_target(p) ? "true" : "false");
     hfxw_json_raw(j, ","), hfxw_json_key(j, "value"), value_json(j, p);
     hfxw_json_raw(j, ","), hfxw_json_key(j, "annotations"), hfxw_json_raw(j, "{");
@@ -110,7 +120,8 @@ static void techniques_json(hfxw_json *j, hfx_effect *fx) {
     hfxw_json_raw(j, "]");
 }
 
-/* {"techniques": [{name, passes}], "params": [{name, group, ...}]}, or null without an effect. */
+/* {"techniques": [{name, passes}], "params": [{name, group, bound, ...}], "unbound": "A = 0, B"}
+ * (the parameters bind.c left at the effect's values), or null without an effect. */
 EMSCRIPTEN_KEEPALIVE const char *hfxw_describe(void) {
     hfxw_session *s = hfxw_get();
     if (!s->fx) return hfxw_answer(NULL);
@@ -122,6 +133,10 @@ EMSCRIPTEN_KEEPALIVE const char *hfxw_describe(void) {
         hfx_param *p = hfx_effect_param_at(s->fx, i);
         leaves_json(&j, p, hfx_param_name(p), hfx_param_name(p), &first);
     }
-    hfxw_json_raw(&j, "]}");
+    hfxw_json_raw(&j, "]");
+    char unbound[1024] = "";
+    if (s->bound && s->bound_count == hfx_effect_param_count(s->fx)) hv_unbound_list(s->fx, s->bound, unbound, sizeof unbound);
+    hfxw_json_raw(&j, ","), hfxw_json_key(&j, "unbound"), hfxw_json_str(&j, unbound);
+    hfxw_json_raw(&j, "}");
     return hfxw_answer(hfxw_json_take(&j));
 }

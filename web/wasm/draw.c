@@ -4,6 +4,7 @@
  * own states, the mesh drawn; with blend_add the application's additive blending from the
  * second pass on, as hfxview --blend-passes add and XNA multi-pass lighting do)
  * through its GL table loaded over WebGL 2, so the page and hfxview draw alike. */
+#include <emscripten.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -80,16 +81,22 @@ static void scene_of(const hfxw_session *s, int width, int height, hv_scene *sc)
     o.eye = orbit_eye(s);
     o.width = width, o.height = height;
     hv_scene_from_options(sc, &o);
+    sc->time = (float)((emscripten_get_now() - s->start_ms) / 1000.0); /* the clock runs on the page */
 }
 
 void hfxw_bind_scene(hfxw_session *s, int width, int height) {
     hv_scene sc;
+    s->start_ms = emscripten_get_now();
     scene_of(s, width, height, &sc);
-    hv_bind_scene(s->fx, &sc);
+    free((void *)s->bound);
+    s->bound_count = hfx_effect_param_count(s->fx);
+    s->bound = calloc(s->bound_count ? s->bound_count : 1, sizeof *s->bound);
+    if (!s->bound) s->bound_count = 0;
+    hv_bind_scene_report(s->fx, &sc, s->bound, s->bound_count);
 }
 
-/* Each frame: the camera's matrices and position only, so that a light or material the user
- * set (to zero too) in the panel stays as set. */
+/* Each frame: the camera's matrices and position and the clock only, so that a light or
+ * material the user set (to zero too) in the panel stays as set. */
 static void bind_view(hfxw_session *s, int width, int height) {
     hv_scene sc;
     scene_of(s, width, height, &sc);

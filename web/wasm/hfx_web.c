@@ -60,7 +60,9 @@ static void release_effect(hfxw_session *s) {
     if (s->texture_count) s->gl.DeleteTextures((GLsizei)s->texture_count, s->textures);
     hfx_fx_effect_free(s->code);
     free(s->hfxo);
+    free((void *)s->bound);
     s->fx = NULL, s->code = NULL, s->hfxo = NULL, s->hfxo_size = 0, s->texture_count = 0;
+    s->bound = NULL, s->bound_count = 0;
 }
 
 /* The compiled effect into the runtime, through its .hfxo (what an application would ship):

@@ -28,6 +28,9 @@ typedef struct hfxw_session {
     float yaw, pitch, distance; /* orbit camera around the origin, degrees and units */
     float clear[4];
     int width, height;       /* the canvas at the last frame */
+    const char **bound;      /* how bind.c bound each top-level parameter (NULL: not bound), for the panel */
+    size_t bound_count;
+    double start_ms;         /* when the effect loaded: time parameters count from it */
     char *answer;            /* the last JSON handed to JavaScript (freed on the next answer) */
     char message[256];       /* the last setter's error, "" when it worked */
 } hfxw_session;
@@ -42,8 +45,9 @@ int hfxw_mesh_set(hfxw_session *s, const char *spec, char *err, size_t errlen);
 unsigned hfxw_texture_rgba(hfxw_session *s, const unsigned char *rgba, int width, int height);
 void hfxw_bind_default_textures(hfxw_session *s);
 /* World (identity), View, Projection, the camera, and hfxview's default light into every
- * parameter they fit by name or semantic; lights and materials only where the effect left zero.
- * Once, when an effect loads (each frame binds only the camera's). */
+ * parameter they fit by name, semantic or annotation (bind.h); lights and materials only where
+ * the effect left zero. Once, when an effect loads (each frame binds only the camera's and the
+ * clock's); keeps how each parameter was bound in s->bound for the panel. */
 void hfxw_bind_scene(hfxw_session *s, int width, int height);
 
 #endif

@@ -151,7 +151,7 @@ static void lower_bool_matrix(ir_ctx *c, ir_expr **slot, void *data) {
         return;
     }
     if (e->kind == IE_INDEX && is_bool_matrix(e->a[0]) && ir_is_const(e->a[1])) {
-        ir_expr *row = bool_row(c, e->a[0], (unsigned)e->a[1]->cval[0]);
+        ir_expr *row = bool_row(c, e->a[0], hfx_ev_uint(e->a[1]->cval[0]));
         if (row) *slot = row;
         return;
     }

@@ -25,7 +25,7 @@ static bool int_scalar(const hfx_type *t) { return t->kind == TY_SCALAR && t->ba
 
 static bool int_const(const ir_expr *e, int64_t *out) {
     if (!ir_is_const(e) || !int_scalar(e->type)) return false;
-    *out = (int64_t)e->cval[0];
+    *out = hfx_ev_int(e->cval[0]);
     return true;
 }
 

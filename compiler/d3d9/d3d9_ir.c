@@ -1,0 +1,727 @@
+/* d3d9_ir.c: a decoded shader to hfx's IR, with D3D9's register semantics:
+ *  - r registers are float4 locals (zero at the start), a0 an int4 local;
+ *  - c registers are read from the effect's parameters by the CTAB (the constant covering the
+ *    register; a column-major matrix's register j is its column j, a row-major one's row j, an
+ *    array's element by register), or `def` values; registers nothing covers read zero; relative
+ *    reads (c[a0.x + n]) go through a local register file filled from the same reads;
+ *  - v / t / vPos / vFace inputs and oPos / oD / oT / o / oC / oDepth outputs are the entry's
+ *    parameters by semantic (dcl usage, or the fixed meaning of ps_2_x's v and t), so attributes,
+ *    varyings and fragment outputs work as for a compiled entry; outputs start at zero;
+ *  - s registers are the CTAB sampler parameters, of the dcl's dimension.
+ *  - ps_1_x: t registers (1.1-1.3) are locals tex / texcoord fill, results and constants are
+ *    clamped to the model's range, the pixel is r0 at the end (docs/d3d9.md).
+ * Anything not handled (d3d9_ir_ops.c, d3d9_ir_flow.c) is a located X5006. */
+#include "d3d9/d3d9_ir.h"
+
+#include <stdio.h>
+
+void d3d9_tx_fail(d3d9_tx *t, const char *fmt, ...) {
+    char msg[256];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    if (!t->failed) hfx_error(t->c->diags, t->loc, X_D3D9_UNSUPPORTED, "%s", msg);
+    t->failed = true;
+}
+
+ir_expr *d3d9_tx_var(d3d9_tx *t, ir_var *v) {
+    ir_expr *e = ir_new_expr(t->c, IE_VAR, v->type, t->loc, 0);
+    e->var = v;
+    return e;
+}
+
+ir_expr *d3d9_tx_swizzle(d3d9_tx *t, ir_expr *x, const uint8_t *comps, unsigned n) {
+    hfx_base b = x->type->base;
+    ir_expr *e = ir_new_expr(t->c, IE_SWIZZLE, n == 1 ? hfx_type_scalar(t->c->types, b)
+                                                      : hfx_type_vector(t->c->types, b, n), t->loc, 1);
+    e->a[0] = x;
+    memcpy(e->comps, comps, n);
+    e->comp_count = (uint8_t)n;
+    return e;
+}
+
+ir_expr *d3d9_tx_const4(d3d9_tx *t, const float v[4]) {
+    ir_expr *e = ir_new_expr(t->c, IE_CONST, t->f4, t->loc, 0);
+    for (int k = 0; k < 4; k++) e->cval[k] = v[k];
+    return e;
+}
+
+ir_expr *d3d9_tx_float4(d3d9_tx *t, ir_expr *x) {
+    unsigned n = hfx_type_components(x->type);
+    if (n == 4 && x->type->kind == TY_VECTOR) return x;
+    if (n == 1) return ir_new_convert(t->c, t->f4, x);
+    ir_expr *e = ir_new_expr(t->c, IE_CONSTRUCT, t->f4, t->loc, 1 + (4 - n));
+    e->a[0] = x;
+    for (unsigned k = n; k < 4; k++) e->a[1 + k - n] = ir_const_scalar(t->c, t->f1, 0, t->loc);
+    return e;
+}
+
+void d3d9_tx_add(d3d9_tx *t, uint32_t block, ir_stmt *s) {
+    ir_stmt *b = t->blocks[block].s;
+    if (!HFX_ARENA_GROW(t->c->arena, b->body, b->count, t->blocks[block].cap, 16)) return;
+    b->body[b->count++] = s;
+}
+
+void d3d9_tx_emit(d3d9_tx *t, ir_expr *e) {
+    ir_stmt *s = ir_new_stmt(t->c, IS_EXPR, t->loc);
+    s->expr = e;
+    d3d9_tx_add(t, t->depth, s);
+}
+
+static hfx_decl *fake_decl(d3d9_tx *t, hfx_decl_kind k, const char *name, const hfx_type *ty, uint32_t mods,
+                           const char *semantic) {
+    hfx_decl *d = HFX_NEW(t->c->arena, hfx_decl);
+    d->kind = k;
+    d->loc = t->loc;
+    d->name = name;
+    d->type = ty;
+    d->mods = mods;
+    d->semantic = semantic;
+    return d;
+}
+
+/* A local of the entry, declared (zero) in the prologue. */
+static ir_var *new_local(d3d9_tx *t, const char *name, const hfx_type *ty) {
+    ir_var *v = HFX_NEW(t->c->arena, ir_var);
+    v->kind = IRV_LOCAL;
+    v->decl = fake_decl(t, DECL_VAR, name, ty, 0, NULL);
+    v->name = name;
+    v->glsl = name;
+    v->type = ty;
+    v->param = HFX_NONE;
+    ir_stmt *s = ir_new_stmt(t->c, IS_DECL, t->loc);
+    s->var = v;
+    s->expr = ty->kind == TY_ARRAY ? NULL : ir_const_scalar(t->c, ty, 0, t->loc);
+    d3d9_tx_add(t, 0, s);
+    return v;
+}
+
+ir_var *d3d9_tx_local(d3d9_tx *t, const char *name, const hfx_type *ty) { return new_local(t, name, ty); }
+
+static ir_var *new_param(d3d9_tx *t, const char *name, const hfx_type *ty, bool out, const char *semantic) {
+    ir_var *v = HFX_NEW(t->c->arena, ir_var);
+    v->kind = IRV_PARAM;
+    v->mods = out ? MOD_OUT : MOD_IN;
+    v->decl = fake_decl(t, DECL_PARAM, name, ty, v->mods, semantic);
+    v->name = name;
+    v->glsl = name;
+    v->type = ty;
+    v->param = HFX_NONE;
+    if (HFX_ARENA_GROW(t->c->arena, t->params, t->param_count, t->param_cap, 8)) t->params[t->param_count++] = v;
+    if (out) { /* D3D9 leaves unwritten output components undefined; hfx makes them zero */
+        ir_expr *e = ir_new_expr(t->c, IE_ASSIGN, ty, t->loc, 2);
+        e->op = OP_NONE;
+        e->a[0] = d3d9_tx_var(t, v);
+        e->a[1] = ir_const_scalar(t->c, ty, 0, t->loc);
+        ir_stmt *s = ir_new_stmt(t->c, IS_EXPR, t->loc);
+        s->expr = e;
+        d3d9_tx_add(t, 0, s);
+    }
+    return v;
+}
+
+static const char *usage_semantic(d3d9_tx *t, unsigned usage, unsigned index) {
+    static const char *const names[] = {"POSITION", "BLENDWEIGHT", "BLENDINDICES", "NORMAL", "PSIZE", "TEXCOORD",
+                                        "TANGENT", "BINORMAL", "TESSFACTOR", "POSITIONT", "COLOR", "FOG", "DEPTH",
+                                        "SAMPLE"};
+    return hfx_arena_printf(t->c->arena, "%s%u", names[usage < 14 ? usage : 0], index);
+}
+
+/* The dcl of a register, or NULL. */
+static const d3d9_inst *find_dcl(const d3d9_shader *s, unsigned type, unsigned num) {
+    for (uint32_t i = 0; i < s->inst_count; i++)
+        if (s->insts[i].op == D3D9_DCL && s->insts[i].dst.type == type && s->insts[i].dst.num == num) return &s->insts[i];
+    return NULL;
+}
+
+/* An input register's parameter: vs and ps_3_0 by their dcl's usage; ps_2_x's v by COLOR, t by TEXCOORD. */
+static ir_var *input(d3d9_tx *t, unsigned type, unsigned num) {
+    int slot = type == D3D9_REG_INPUT ? 0 : type == D3D9_REG_ADDR ? 1 : 2;
+    if (num >= 16) return NULL;
+    if (t->inputs[slot][num]) return t->inputs[slot][num];
+    const d3d9_shader *s = t->s;
+    const char *sem;
+    const hfx_type *ty = t->f4;
+    if (slot == 2) {
+        sem = num == 0 ? "VPOS" : "VFACE";
+        ty = num == 0 ? t->f2 : t->f1;
+    } else if (slot == 1 || (s->stage == D3D9_PS && s->model < D3D9_SM(3, 0))) {
+        sem = hfx_arena_printf(t->c->arena, "%s%u", slot == 1 ? "TEXCOORD" : "COLOR", num);
+    } else {
+        const d3d9_inst *d = find_dcl(s, type, num);
+        if (!d) { d3d9_tx_fail(t, "v%u is read but never declared", num); return NULL; }
+        sem = usage_semantic(t, d->usage, d->usage_index);
+    }
+    return t->inputs[slot][num] = new_param(t, hfx_arena_printf(t->c->arena, "hfx_in_%s", sem), ty, false, sem);
+}
+
+/* An output register's parameter. */
+static ir_var *output(d3d9_tx *t, unsigned type, unsigned num) {
+    int slot = type == D3D9_REG_RASTOUT ? 0 : type == D3D9_REG_ATTROUT ? 1 : type == D3D9_REG_OUTPUT ? 2
+             : type == D3D9_REG_COLOROUT ? 3 : 4;
+    if (num >= 12) return NULL;
+    if (t->outputs[slot][num]) return t->outputs[slot][num];
+    const char *sem;
+    const hfx_type *ty = t->f4;
+    switch (slot) {
+    case 0: sem = num == 0 ? "POSITION0" : num == 1 ? "FOG0" : "PSIZE0"; if (num) ty = t->f1; break;
+    case 1: sem = hfx_arena_printf(t->c->arena, "COLOR%u", num); break;
+    case 2:
+        if (t->s->model >= D3D9_SM(3, 0)) {
+            const d3d9_inst *d = find_dcl(t->s, type, num);
+            if (!d) { d3d9_tx_fail(t, "o%u is written but never declared", num); return NULL; }
+            sem = usage_semantic(t, d->usage, d->usage_index);
+            if (d->usage == 4 || d->usage == 11) ty = t->f1; /* psize, fog */
+        } else sem = hfx_arena_printf(t->c->arena, "TEXCOORD%u", num);
+        break;
+    case 3: sem = hfx_arena_printf(t->c->arena, "COLOR%u", num); break;
+    default: sem = "DEPTH0"; ty = t->f1; break;
+    }
+    return t->outputs[slot][num] = new_param(t, hfx_arena_printf(t->c->arena, "hfx_out_%s", sem), ty, true, sem);
+}
+
+/* The CTAB constant of a register set covering register n, or -1. */
+static int constant_at(const d3d9_shader *s, unsigned set, unsigned n) {
+    for (uint32_t i = 0; i < s->constant_count; i++) {
+        const d3d9_constant *k = &s->constants[i];
+        if (k->regset == set && n >= k->reg && n < (unsigned)k->reg + k->count) return (int)i;
+    }
+    return -1;
+}
+
+/* The effect parameter a CTAB constant names: its uniform (or sampler) variable, made once. */
+static ir_var *constant_var(d3d9_tx *t, uint32_t i, ir_var_kind kind, const hfx_type *ty) {
+    if (t->consts[i]) return t->consts[i];
+    const d3d9_constant *k = &t->s->constants[i];
+    const hfx_fx_effect *fx = t->c->fx;
+    uint32_t p = HFX_NONE;
+    for (uint32_t j = 0; fx && j < fx->top_param_count && j < fx->param_count; j++)
+        if (fx->params[j].name && strcmp(fx->params[j].name, k->name) == 0) { p = j; break; }
+    if (p == HFX_NONE || !fx->params[p].glsl_name) {
+        d3d9_tx_fail(t, "constant '%s' names no parameter of the effect", k->name);
+        return NULL;
+    }
+    /* fxc lists a parameter once per register set it uses (an int in c for arithmetic and in i
+     * for a loop): one variable, so the GLSL declares the uniform once */
+    for (uint32_t j = 0; j < t->s->constant_count; j++) {
+        ir_var *o = t->consts[j];
+        if (!o || o->param != p) continue;
+        if (o->kind == kind && hfx_type_equal(o->type, ty)) return t->consts[i] = o;
+        d3d9_tx_fail(t, "constant '%s' is read as two different types", k->name);
+        return NULL;
+    }
+    ir_var *v = HFX_NEW(t->c->arena, ir_var);
+    v->kind = kind;
+    v->name = k->name;
+    v->glsl = fx->params[p].glsl_name;
+    v->type = ty;
+    v->param = p;
+    hfx_decl *d = fake_decl(t, DECL_VAR, k->name, ty, 0, NULL);
+    d->is_global = true;
+    d->index = p;
+    v->decl = d;
+    return t->consts[i] = v;
+}
+
+/* The HLSL type of a float CTAB constant (one element). */
+/* The HLSL type of a constant in float registers (one element): fxc keeps int and bool
+ * parameters used in arithmetic there, so the parameter keeps its own type and is converted. */
+static const hfx_type *constant_type(d3d9_tx *t, const d3d9_constant *k) {
+    unsigned r = k->rows ? k->rows : 1, c = k->cols ? k->cols : 1;
+    hfx_base b = k->type == 1 ? B_BOOL : k->type == 2 ? B_INT : k->type == 3 ? B_FLOAT : B_NONE;
+    if (r > 4 || c > 4 || b == B_NONE) return NULL;
+    if (k->cls == 0) return hfx_type_scalar(t->c->types, b);
+    if (k->cls == 1) return hfx_type_vector(t->c->types, b, c);
+    if (k->cls == 2 || k->cls == 3) return hfx_type_matrix(t->c->types, b, r, c);
+    return NULL;
+}
+
+/* x (a scalar or vector of the constant's base) as float4, for a register read. */
+static ir_expr *register_value(d3d9_tx *t, ir_expr *x) {
+    if (x->type->base != B_FLOAT) {
+        unsigned n = hfx_type_components(x->type);
+        x = ir_new_convert(t->c, n == 1 ? t->f1 : hfx_type_vector(t->c->types, B_FLOAT, n), x);
+    }
+    return d3d9_tx_float4(t, x);
+}
+
+/* Register `num` of the float constant i: column j of a column-major matrix, row j of a row-major
+ * one, the value of a scalar or vector; arrays by element. */
+static ir_expr *constant_register(d3d9_tx *t, uint32_t i, unsigned num) {
+    const d3d9_constant *k = &t->s->constants[i];
+    const hfx_type *el = constant_type(t, k);
+    if (!el) { d3d9_tx_fail(t, "constant '%s' of this type is not supported yet", k->name); return NULL; }
+    unsigned per = k->cls == 3 ? el->cols : k->cls == 2 ? el->rows : 1, elems = k->elements > 1 ? k->elements : 1;
+    const hfx_type *ty = elems > 1 ? hfx_type_array(t->c->types, el, elems) : el;
+    ir_var *v = constant_var(t, i, IRV_UNIFORM, ty);
+    if (!v) return NULL;
+    unsigned off = num - k->reg, e = off / per, j = off % per;
+    ir_expr *x = d3d9_tx_var(t, v);
+    if (elems > 1) {
+        if (e >= elems) return d3d9_tx_const4(t, (const float[4]){0, 0, 0, 0});
+        ir_expr *ix = ir_new_expr(t->c, IE_INDEX, el, t->loc, 2);
+        ix->a[0] = x;
+        ix->a[1] = ir_const_scalar(t->c, t->i1, e, t->loc);
+        ix->range = IR_RANGE_IN_BOUNDS;
+        x = ix;
+    }
+    if (k->cls == 2 || k->cls == 3) {
+        uint8_t comps[4];
+        unsigned n = k->cls == 3 ? el->rows : el->cols;
+        for (unsigned q = 0; q < n; q++) comps[q] = (uint8_t)(k->cls == 3 ? q * el->cols + j : j * el->cols + q);
+        x = d3d9_tx_swizzle(t, x, comps, n);
+    }
+    return register_value(t, x);
+}
+
+/* Register num of preshader output i: the variable codegen gives hfx_c registers (glsl_pack.c). */
+static ir_expr *preshader_register(d3d9_tx *t, uint32_t i, unsigned num) {
+    const d3d9_preshader_out *o = &t->s->pres[i];
+    if (!t->pres[i]) {
+        if (!t->pack) {
+            d3d9_tx_fail(t, "preshaders need packed registers (HFXC_PACK_UNIFORMS)");
+            return NULL;
+        }
+        ir_var *v = HFX_NEW(t->c->arena, ir_var);
+        v->kind = IRV_PRIVATE;
+        v->name = v->glsl = hfx_arena_printf(t->c->arena, "hfx_pre_c%u", o->reg);
+        v->type = o->count == 1 ? t->f4 : hfx_type_matrix(t->c->types, B_FLOAT, o->count, 4);
+        v->param = HFX_NONE;
+        v->pre = d3d9_tx_const4(t, (const float[4]){0, 0, 0, 0}); /* marks it a preshader; never evaluated here */
+        v->pre_code = o->code;
+        v->pre_words = o->words;
+        v->pre_text = o->text ? o->text : hfx_arena_printf(t->c->arena, "c%u", o->reg);
+        if (!HFX_ARENA_GROW(t->c->arena, t->sh->pres, t->sh->pre_count, t->sh->pre_cap, 4)) return NULL;
+        t->sh->pres[t->sh->pre_count++] = v;
+        t->pres[i] = v;
+    }
+    ir_expr *x = d3d9_tx_var(t, t->pres[i]);
+    if (o->count == 1) return x;
+    unsigned row = num - o->reg;
+    const uint8_t comps[4] = {(uint8_t)(row * 4), (uint8_t)(row * 4 + 1), (uint8_t)(row * 4 + 2), (uint8_t)(row * 4 + 3)};
+    return d3d9_tx_swizzle(t, x, comps, 4);
+}
+
+/* A c register as float4: its def, a preshader's output, the parameter covering it, or zero. */
+static ir_expr *const_register(d3d9_tx *t, unsigned num) {
+    for (uint32_t i = 0; i < t->s->inst_count; i++) {
+        const d3d9_inst *in = &t->s->insts[i];
+        if (in->op == D3D9_DEF && in->dst.num == num) return d3d9_tx_const4(t, in->value.f);
+    }
+    for (uint32_t i = 0; i < t->s->pre_count; i++)
+        if (num >= t->s->pres[i].reg && num < t->s->pres[i].reg + t->s->pres[i].count && t->s->pres[i].count <= 4)
+            return preshader_register(t, i, num);
+    int k = constant_at(t->s, D3D9_RS_FLOAT4, num);
+    if (k >= 0) return constant_register(t, (uint32_t)k, num);
+    return d3d9_tx_const4(t, (const float[4]){0, 0, 0, 0});
+}
+
+/* The register file for relative reads: every c register up to the highest one declared or
+ * defined, filled once at the start. */
+static ir_var *register_file(d3d9_tx *t) {
+    if (t->regfile) return t->regfile;
+    unsigned n = 0;
+    for (uint32_t i = 0; i < t->s->constant_count; i++)
+        if (t->s->constants[i].regset == D3D9_RS_FLOAT4 && (unsigned)t->s->constants[i].reg + t->s->constants[i].count > n)
+            n = t->s->constants[i].reg + t->s->constants[i].count;
+    for (uint32_t i = 0; i < t->s->inst_count; i++)
+        if (t->s->insts[i].op == D3D9_DEF && t->s->insts[i].dst.num + 1u > n) n = t->s->insts[i].dst.num + 1u;
+    if (!n) n = 1;
+    if (n > HFX_FX_MAX_REGS) { d3d9_tx_fail(t, "relative addressing over %u registers", n); return NULL; }
+    t->regfile = new_local(t, "hfx_c_file", hfx_type_array(t->c->types, t->f4, n));
+    t->regfile_size = n;
+    for (unsigned r = 0; r < n && !t->failed; r++) {
+        ir_expr *ix = ir_new_expr(t->c, IE_INDEX, t->f4, t->loc, 2);
+        ix->a[0] = d3d9_tx_var(t, t->regfile);
+        ix->a[1] = ir_const_scalar(t->c, t->i1, r, t->loc);
+        ix->range = IR_RANGE_IN_BOUNDS;
+        ir_expr *as = ir_new_expr(t->c, IE_ASSIGN, t->f4, t->loc, 2);
+        as->op = OP_NONE;
+        as->a[0] = ix;
+        as->a[1] = const_register(t, r);
+        ir_stmt *s = ir_new_stmt(t->c, IS_EXPR, t->loc);
+        s->expr = as;
+        d3d9_tx_add(t, 0, s);
+    }
+    return t->regfile;
+}
+
+static ir_expr *int_op(d3d9_tx *t, hfx_op op, ir_expr *a, int k) {
+    return ir_new_binary(t->c, op, t->i1, a, ir_const_scalar(t->c, t->i1, k, t->loc));
+}
+
+/* A relative read inside an array constant (fxc's indexing of `float4x3 Bones[72]`): the
+ * element and, for matrices, the row or column, from the index; past the array it reads zero. */
+static ir_expr *array_register(d3d9_tx *t, uint32_t i, ir_expr *idx) {
+    const d3d9_constant *k = &t->s->constants[i];
+    const hfx_type *el = constant_type(t, k);
+    if (!el) { d3d9_tx_fail(t, "constant '%s' of this type is not supported yet", k->name); return NULL; }
+    unsigned per = k->cls == 3 ? el->cols : k->cls == 2 ? el->rows : 1;
+    ir_var *v = constant_var(t, i, IRV_UNIFORM, hfx_type_array(t->c->types, el, k->elements));
+    if (!v) return NULL;
+    ir_expr *off = int_op(t, OP_SUB, idx, k->reg);
+    ir_expr *e = ir_new_expr(t->c, IE_INDEX, el, t->loc, 2);
+    e->a[0] = d3d9_tx_var(t, v);
+    e->a[1] = per > 1 ? int_op(t, OP_DIV, off, (int)per) : off;
+    e->range = IR_RANGE_ANY;
+    if (k->cls != 2 && k->cls != 3) return register_value(t, e);
+    ir_expr *j = int_op(t, OP_MOD, ir_clone_expr(t->c, off), (int)per);
+    if (k->cls == 2) { /* row j */
+        ir_expr *row = ir_new_expr(t->c, IE_INDEX, hfx_type_vector(t->c->types, el->base, el->cols), t->loc, 2);
+        row->a[0] = e;
+        row->a[1] = j;
+        row->range = IR_RANGE_IN_BOUNDS;
+        return register_value(t, row);
+    }
+    ir_expr *col = ir_new_expr(t->c, IE_CONSTRUCT, hfx_type_vector(t->c->types, el->base, el->rows), t->loc, el->rows);
+    for (unsigned q = 0; q < el->rows; q++) { /* column j: element q of each row */
+        ir_expr *row = ir_new_expr(t->c, IE_INDEX, hfx_type_vector(t->c->types, el->base, el->cols), t->loc, 2);
+        row->a[0] = q ? ir_clone_expr(t->c, e) : e;
+        row->a[1] = ir_const_scalar(t->c, t->i1, q, t->loc);
+        row->range = IR_RANGE_IN_BOUNDS;
+        ir_expr *c = ir_new_expr(t->c, IE_INDEX, hfx_type_scalar(t->c->types, el->base), t->loc, 2);
+        c->a[0] = row;
+        c->a[1] = q ? ir_clone_expr(t->c, j) : j;
+        c->range = IR_RANGE_IN_BOUNDS;
+        col->a[q] = c;
+    }
+    return register_value(t, el->rows == 1 ? col->a[0] : col);
+}
+
+/* c[a0.x + n] or c[aL + n]. */
+static ir_expr *relative_const(d3d9_tx *t, const d3d9_src *x) {
+    ir_var *base = x->rel_type == D3D9_REG_ADDR ? t->a0 : t->aL;
+    if (!base) { d3d9_tx_fail(t, "relative addressing through a register never written"); return NULL; }
+    ir_expr *idx = x->rel_type == D3D9_REG_ADDR ? d3d9_tx_swizzle(t, d3d9_tx_var(t, base), &x->rel_comp, 1)
+                                                : d3d9_tx_var(t, base);
+    if (x->num) idx = ir_new_binary(t->c, OP_ADD, t->i1, idx, ir_const_scalar(t->c, t->i1, x->num, t->loc));
+    int k = constant_at(t->s, D3D9_RS_FLOAT4, x->num);
+    if (k >= 0 && t->s->constants[k].elements > 1) return array_register(t, (uint32_t)k, idx);
+    ir_var *file = register_file(t);
+    if (!file) return NULL;
+    ir_expr *ix = ir_new_expr(t->c, IE_INDEX, t->f4, t->loc, 2);
+    ix->a[0] = d3d9_tx_var(t, file);
+    ix->a[1] = idx;
+    ix->range = IR_RANGE_ANY;
+    return ix;
+}
+
+bool d3d9_tx_ps1(const d3d9_tx *t) { return t->s->stage == D3D9_PS && t->s->model < D3D9_SM(2, 0); }
+
+ir_var *d3d9_tx_texcoord(d3d9_tx *t, unsigned n) { return input(t, D3D9_REG_ADDR, n); }
+
+/* ps_1_1..1_3's t registers: what tex / texcoord put there. */
+static ir_var *texture_register(d3d9_tx *t, unsigned num) {
+    if (num >= 8) return NULL;
+    if (!t->texregs[num]) t->texregs[num] = new_local(t, hfx_arena_printf(t->c->arena, "hfx_t%u", num), t->f4);
+    return t->texregs[num];
+}
+
+ir_expr *d3d9_tx_reg(d3d9_tx *t, unsigned type, unsigned num) {
+    ir_var *v = NULL;
+    switch (type) {
+    case D3D9_REG_TEMP:
+        if (num >= 32) break;
+        if (!t->temps[num]) t->temps[num] = new_local(t, hfx_arena_printf(t->c->arena, "hfx_r%u", num), t->f4);
+        v = t->temps[num];
+        break;
+    case D3D9_REG_CONST:
+        if (d3d9_tx_ps1(t)) { /* ps_1_x constants are clamped to [-1, 1] when read */
+            ir_expr *x = const_register(t, num);
+            if (!x || x->kind == IE_CONST) {
+                for (int q = 0; x && q < 4; q++) x->cval[q] = x->cval[q] < -1 ? -1 : x->cval[q] > 1 ? 1 : x->cval[q];
+                return x;
+            }
+            ir_expr *c = ir_new_expr(t->c, IE_INTRIN, t->f4, t->loc, 3);
+            c->intrin = HFX_INTR_CLAMP;
+            c->a[0] = x;
+            c->a[1] = ir_const_scalar(t->c, t->f4, -1, t->loc);
+            c->a[2] = ir_const_scalar(t->c, t->f4, 1, t->loc);
+            return c;
+        }
+        return const_register(t, num);
+    case D3D9_REG_PREDICATE:
+        if (!t->p0) t->p0 = new_local(t, "hfx_p0", t->b4);
+        return d3d9_tx_var(t, t->p0);
+    case D3D9_REG_CONSTBOOL: { ir_expr *b = d3d9_tx_bool(t, num); return b ? ir_new_convert(t->c, t->b4, b) : NULL; }
+    case D3D9_REG_INPUT: case D3D9_REG_MISC: v = input(t, type, num); break;
+    case D3D9_REG_RASTOUT: case D3D9_REG_ATTROUT: case D3D9_REG_OUTPUT: case D3D9_REG_COLOROUT: case D3D9_REG_DEPTHOUT:
+        v = output(t, type, num); /* the old value, for a predicated write */
+        break;
+    case D3D9_REG_ADDR:
+        if (t->s->stage == D3D9_PS && t->s->model < D3D9_SM(1, 4)) { v = texture_register(t, num); break; }
+        if (t->s->stage == D3D9_PS) { v = input(t, type, num); break; }
+        d3d9_tx_fail(t, "a0 read as a value");
+        return NULL;
+    default:
+        d3d9_tx_fail(t, "reading register type %u is not supported yet", type);
+        return NULL;
+    }
+    if (!v) return NULL;
+    return d3d9_tx_float4(t, d3d9_tx_var(t, v));
+}
+
+/* Source modifiers of SM2+ (ps_1_x's are refused with the model). */
+static ir_expr *modify(d3d9_tx *t, ir_expr *x, unsigned mod) {
+    if (x->type->base == B_BOOL) {
+        if (mod == D3D9_SMOD_NOT) {
+            ir_expr *n = ir_new_expr(t->c, IE_UNARY, x->type, t->loc, 1);
+            n->op = OP_NOT;
+            n->a[0] = x;
+            return n;
+        }
+        if (mod != D3D9_SMOD_NONE) { d3d9_tx_fail(t, "source modifier %u on a bool is not supported", mod); return NULL; }
+        return x;
+    }
+    if (mod == D3D9_SMOD_ABS || mod == D3D9_SMOD_ABSNEG) {
+        ir_expr *a = ir_new_expr(t->c, IE_INTRIN, t->f4, t->loc, 1);
+        a->intrin = HFX_INTR_ABS;
+        a->a[0] = x;
+        x = a;
+    }
+    if (mod == D3D9_SMOD_NEG || mod == D3D9_SMOD_ABSNEG) {
+        ir_expr *n = ir_new_expr(t->c, IE_UNARY, t->f4, t->loc, 1);
+        n->op = OP_NEG;
+        n->a[0] = x;
+        x = n;
+    }
+    if (mod == D3D9_SMOD_NONE || mod == D3D9_SMOD_NEG || mod == D3D9_SMOD_ABS || mod == D3D9_SMOD_ABSNEG) return x;
+    /* ps_1_x: bias x - 0.5, bx2 2x - 1, comp 1 - x, x2 2x, each optionally negated */
+    float mul = 1, add = 0;
+    switch (mod) {
+    case D3D9_SMOD_BIAS: add = -0.5f; break;
+    case D3D9_SMOD_BIASNEG: mul = -1; add = 0.5f; break;
+    case D3D9_SMOD_SIGN: mul = 2; add = -1; break;
+    case D3D9_SMOD_SIGNNEG: mul = -2; add = 1; break;
+    case D3D9_SMOD_COMP: mul = -1; add = 1; break;
+    case D3D9_SMOD_X2: mul = 2; break;
+    case D3D9_SMOD_X2NEG: mul = -2; break;
+    default: d3d9_tx_fail(t, "source modifier %u is not supported here", mod); return NULL;
+    }
+    if (mul != 1) x = ir_new_binary(t->c, OP_MUL, t->f4, x, ir_const_scalar(t->c, t->f4, mul, t->loc));
+    if (add != 0) x = ir_new_binary(t->c, OP_ADD, t->f4, x, ir_const_scalar(t->c, t->f4, add, t->loc));
+    return x;
+}
+
+ir_expr *d3d9_tx_read(d3d9_tx *t, const d3d9_src *x) {
+    ir_expr *r = NULL;
+    if (x->relative) {
+        if (x->type != D3D9_REG_CONST) { d3d9_tx_fail(t, "relative addressing of register type %u is not supported yet", x->type); return NULL; }
+        r = relative_const(t, x);
+    } else r = d3d9_tx_reg(t, x->type, x->num);
+    if (!r) return NULL;
+    if (x->swizzle != 0xe4) {
+        uint8_t comps[4] = {x->swizzle & 3, (x->swizzle >> 2) & 3, (x->swizzle >> 4) & 3, (x->swizzle >> 6) & 3};
+        r = d3d9_tx_swizzle(t, r, comps, 4);
+    }
+    return modify(t, r, x->mod);
+}
+
+/* The def* instruction defining register num of a type, or NULL. */
+static const d3d9_inst *find_def(const d3d9_shader *s, unsigned op, unsigned num) {
+    for (uint32_t i = 0; i < s->inst_count; i++)
+        if (s->insts[i].op == op && s->insts[i].dst.num == num) return &s->insts[i];
+    return NULL;
+}
+
+ir_expr *d3d9_tx_bool(d3d9_tx *t, unsigned num) {
+    const hfx_type *b1 = hfx_type_scalar(t->c->types, B_BOOL);
+    const d3d9_inst *d = find_def(t->s, D3D9_DEFB, num);
+    if (d) return ir_const_scalar(t->c, b1, d->value.u[0] != 0, t->loc);
+    int k = constant_at(t->s, D3D9_RS_BOOL, num);
+    if (k < 0) return ir_const_scalar(t->c, b1, 0, t->loc);
+    const d3d9_constant *c = &t->s->constants[k];
+    if (c->count > 1 || c->elements > 1 || c->cls != 0) { d3d9_tx_fail(t, "bool constant '%s' of this shape is not supported yet", c->name); return NULL; }
+    ir_var *v = constant_var(t, (uint32_t)k, IRV_UNIFORM, b1);
+    return v ? d3d9_tx_var(t, v) : NULL;
+}
+
+ir_expr *d3d9_tx_int4(d3d9_tx *t, unsigned num) {
+    const d3d9_inst *d = find_def(t->s, D3D9_DEFI, num);
+    if (d) {
+        ir_expr *e = ir_new_expr(t->c, IE_CONST, t->i4, t->loc, 0);
+        for (int q = 0; q < 4; q++) e->cval[q] = d->value.i[q];
+        return e;
+    }
+    int k = constant_at(t->s, D3D9_RS_INT4, num);
+    if (k < 0) return ir_const_scalar(t->c, t->i4, 0, t->loc);
+    const d3d9_constant *c = &t->s->constants[k];
+    if (c->count > 1 || c->elements > 1 || c->cls > 1 || c->cols > 4) { d3d9_tx_fail(t, "int constant '%s' of this shape is not supported yet", c->name); return NULL; }
+    const hfx_type *ty = c->cls == 0 ? t->i1 : hfx_type_vector(t->c->types, B_INT, c->cols ? c->cols : 1);
+    ir_var *v = constant_var(t, (uint32_t)k, IRV_UNIFORM, ty);
+    if (!v) return NULL;
+    unsigned n = hfx_type_components(ty);
+    if (n == 4) return d3d9_tx_var(t, v);
+    ir_expr *e = ir_new_expr(t->c, IE_CONSTRUCT, t->i4, t->loc, 1 + 4 - n);
+    e->a[0] = d3d9_tx_var(t, v);
+    for (unsigned q = n; q < 4; q++) e->a[1 + q - n] = ir_const_scalar(t->c, t->i1, 0, t->loc);
+    return e;
+}
+
+ir_var *d3d9_tx_sampler(d3d9_tx *t, unsigned num) {
+    if (num >= 16) return NULL;
+    if (t->samplers[num]) return t->samplers[num];
+    int k = constant_at(t->s, D3D9_RS_SAMPLER, num);
+    const d3d9_inst *d = find_dcl(t->s, D3D9_REG_SAMPLER, num);
+    if (k < 0) { d3d9_tx_fail(t, "s%u is sampled but no constant names it", num); return NULL; }
+    unsigned st = d ? d->sampler_type : t->s->constants[k].type == 14 ? 3 : t->s->constants[k].type == 13 ? 4
+                : t->s->constants[k].type == 11 ? 1 : 2; /* ps_1_x declares no samplers: the CTAB's type */
+    hfx_dim dim = st == 2 ? DIM_2D : st == 3 ? DIM_CUBE : st == 4 ? DIM_3D : DIM_1D;
+    if (t->s->constants[k].count > 1 || t->s->constants[k].elements > 1) {
+        d3d9_tx_fail(t, "sampler arrays are not supported yet");
+        return NULL;
+    }
+    ir_var *v = constant_var(t, (uint32_t)k, IRV_SAMPLER, hfx_type_object(t->c->types, TY_SAMPLER, dim));
+    if (v) v->dim = dim;
+    return t->samplers[num] = v;
+}
+
+/* An output or temporary as an l-value, or NULL. */
+static ir_var *dst_var(d3d9_tx *t, const d3d9_dst *d) {
+    switch (d->type) {
+    case D3D9_REG_TEMP: d3d9_tx_reg(t, D3D9_REG_TEMP, d->num); return d->num < 32 ? t->temps[d->num] : NULL;
+    case D3D9_REG_RASTOUT: case D3D9_REG_ATTROUT: case D3D9_REG_OUTPUT: case D3D9_REG_COLOROUT: case D3D9_REG_DEPTHOUT:
+        return output(t, d->type, d->num);
+    case D3D9_REG_PREDICATE:
+        if (!t->p0) t->p0 = new_local(t, "hfx_p0", t->b4);
+        return t->p0;
+    case D3D9_REG_ADDR:
+        if (t->s->stage == D3D9_VS) {
+            if (!t->a0) t->a0 = new_local(t, "hfx_a0", t->i4);
+            return t->a0;
+        }
+        if (t->s->model < D3D9_SM(1, 4)) return texture_register(t, d->num);
+        d3d9_tx_fail(t, "writing t registers (ps_1_x) is not supported yet");
+        return NULL;
+    default:
+        d3d9_tx_fail(t, "writing register type %u is not supported yet", d->type);
+        return NULL;
+    }
+}
+
+void d3d9_tx_write(d3d9_tx *t, const d3d9_dst *d, ir_expr *value) {
+    if (!value || t->failed) return;
+    if (d->relative) { d3d9_tx_fail(t, "relative destinations are not supported yet"); return; }
+    ir_var *v = dst_var(t, d);
+    if (!v) return;
+    if (d->shift && value->type->base == B_FLOAT) { /* ps_1_x: _x2 _x4 _x8 _d2 _d4 _d8 */
+        float k = d->shift > 0 ? (float)(1 << d->shift) : 1.0f / (float)(1 << -d->shift);
+        value = ir_new_binary(t->c, OP_MUL, value->type, value, ir_const_scalar(t->c, value->type, k, t->loc));
+    }
+    if (d->mods & D3D9_DMOD_SAT) {
+        ir_expr *s = ir_new_expr(t->c, IE_INTRIN, value->type, t->loc, 1);
+        s->intrin = HFX_INTR_SATURATE;
+        s->a[0] = value;
+        value = s;
+    } else if (d3d9_tx_ps1(t) && value->type->base == B_FLOAT) {
+        /* ps_1_x registers hold [-1, 1] (ps_1_4: [-8, 8], D3D's minimum MaxPixelShaderValue) */
+        float r = t->s->model == D3D9_SM(1, 4) ? 8.0f : 1.0f;
+        ir_expr *c = ir_new_expr(t->c, IE_INTRIN, value->type, t->loc, 3);
+        c->intrin = HFX_INTR_CLAMP;
+        c->a[0] = value;
+        c->a[1] = ir_const_scalar(t->c, value->type, -r, t->loc);
+        c->a[2] = ir_const_scalar(t->c, value->type, r, t->loc);
+        value = c;
+    }
+    uint8_t comps[4];
+    unsigned n = 0, width = hfx_type_components(v->type);
+    for (unsigned k = 0; k < 4; k++)
+        if (d->mask & (1u << k) && k < width) comps[n++] = (uint8_t)k;
+    if (!n) return;
+    ir_expr *lhs = d3d9_tx_var(t, v), *rhs = value;
+    if (v->type->base != value->type->base) rhs = ir_new_convert(t->c, hfx_type_vector(t->c->types, v->type->base, 4), rhs);
+    if (width == 1) rhs = d3d9_tx_swizzle(t, rhs, comps, 1);
+    else if (n < 4) {
+        lhs = d3d9_tx_swizzle(t, lhs, comps, n);
+        rhs = d3d9_tx_swizzle(t, rhs, comps, n);
+    }
+    ir_expr *as = ir_new_expr(t->c, IE_ASSIGN, lhs->type, t->loc, 2);
+    as->op = OP_NONE;
+    as->a[0] = lhs;
+    as->a[1] = rhs;
+    d3d9_tx_emit(t, as);
+}
+
+static bool model_supported(d3d9_tx *t) {
+    if (t->s->model >= D3D9_SM(2, 0) || t->s->stage == D3D9_PS || t->s->model == D3D9_SM(1, 1)) return true;
+    d3d9_tx_fail(t, "%s bytecode to GLSL is not supported yet", d3d9_model_name(t->s->stage, t->s->model));
+    return false;
+}
+
+static void setup(d3d9_tx *t, ir_ctx *c, const d3d9_shader *s) {
+    t->c = c;
+    t->s = s;
+    hfx_types *ty = c->types;
+    t->f1 = hfx_type_scalar(ty, B_FLOAT);
+    t->f2 = hfx_type_vector(ty, B_FLOAT, 2);
+    t->f3 = hfx_type_vector(ty, B_FLOAT, 3);
+    t->f4 = hfx_type_vector(ty, B_FLOAT, 4);
+    t->i1 = hfx_type_scalar(ty, B_INT);
+    t->i4 = hfx_type_vector(ty, B_INT, 4);
+    t->b4 = hfx_type_vector(ty, B_BOOL, 4);
+    t->loc = (hfx_loc){s->file_index, 0, s->base};
+    t->consts = HFX_NEW_ARRAY(c->arena, ir_var *, s->constant_count ? s->constant_count : 1);
+    t->pres = HFX_NEW_ARRAY(c->arena, ir_var *, s->pre_count ? s->pre_count : 1);
+    t->prologue = ir_new_stmt(c, IS_BLOCK, t->loc);
+    t->blocks[0].s = t->prologue;
+    t->blocks[1].s = ir_new_stmt(c, IS_BLOCK, t->loc);
+    t->depth = 1;
+}
+
+/* The entry: `void hfx_d3d9_main(in ..., out ...)`, body = prologue then instructions. */
+static ir_shader *finish(d3d9_tx *t) {
+    ir_ctx *c = t->c;
+    const d3d9_shader *s = t->s;
+    hfx_func *src = HFX_NEW(c->arena, hfx_func);
+    src->ret = hfx_type_void(c->types);
+    src->name = s->stage == D3D9_VS ? "hfx_d3d9_vs" : "hfx_d3d9_ps";
+    src->loc = (hfx_loc){s->file_index, 0, s->base};
+    ir_func *f = HFX_NEW(c->arena, ir_func);
+    f->name = f->glsl = src->name;
+    f->ret = src->ret;
+    f->src = src;
+    f->is_entry = f->reached = true;
+    f->params = t->params;
+    f->param_count = t->param_count;
+    t->depth = 0;
+    ir_stmt *body = t->blocks[1].s;
+    d3d9_tx_add(t, 0, body);
+    f->body = t->prologue;
+    hfx_expr *compile = HFX_NEW(c->arena, hfx_expr);
+    compile->kind = EX_COMPILE;
+    compile->profile = d3d9_model_name(s->stage, s->model);
+    compile->name = src->name;
+    compile->intrinsic = -1;
+    compile->loc = src->loc;
+    ir_shader *sh = t->sh;
+    sh->stage = s->stage == D3D9_VS ? IR_VERTEX : IR_PIXEL;
+    sh->entry = f;
+    sh->funcs = HFX_NEW_ARRAY(c->arena, ir_func *, 1);
+    sh->funcs[0] = f;
+    sh->func_count = sh->func_cap = 1;
+    sh->compile = compile;
+    return sh;
+}
+
+struct ir_shader *d3d9_to_ir(struct ir_ctx *c, const d3d9_shader *s, bool packed) {
+    d3d9_tx t;
+    memset(&t, 0, sizeof t);
+    setup(&t, c, s);
+    t.pack = packed;
+    t.sh = HFX_NEW(c->arena, ir_shader);
+    if (!model_supported(&t)) return NULL;
+    for (uint32_t i = 0; i < s->inst_count && !t.failed; i++) {
+        t.loc = (hfx_loc){s->file_index, 0, s->base + s->insts[i].offset};
+        d3d9_tx_inst(&t, &s->insts[i]);
+    }
+    if (t.failed) return NULL;
+    if (t.depth != 1) { d3d9_tx_fail(&t, "flow control does not close"); return NULL; }
+    if (d3d9_tx_ps1(&t)) { /* ps_1_x has no oC0: the pixel is r0 at the end */
+        d3d9_dst oc = {D3D9_REG_COLOROUT, 0xf, 0, 0, false, 0, 0, 0, 0};
+        d3d9_tx_write(&t, &oc, d3d9_tx_reg(&t, D3D9_REG_TEMP, 0));
+        if (t.failed) return NULL;
+    }
+    t.loc = (hfx_loc){s->file_index, 0, s->base};
+    return finish(&t);
+}
