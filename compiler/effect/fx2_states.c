@@ -461,7 +461,7 @@ static uint32_t selected(const hfx_fx_effect *fx, const stage_src *s, const uint
     if (s->array == HFX_NONE) return HFX_NONE;
     const hfx_fx_state *st = &fx->states[s->state];
     hfx_ev_value v;
-    return hfx_evc_run(fx->exprs + st->ref, st->count, values, &v) && v.c[0] > 0 ? (uint32_t)v.c[0] : 0;
+    return hfx_evc_run(fx->exprs + st->ref, st->count, values, &v) ? hfx_evc_index(&v, HFX_NONE - 1) : 0;
 }
 
 /* The int parameter the selectors read (XNA's ShaderIndex): the one top-level scalar they
