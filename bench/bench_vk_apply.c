@@ -1,15 +1,17 @@
 /* bench_vk_apply.c: CPU cost of setting N of 100 float4 parameters and hfx_pass_apply_vk, against
- * a hand-written Vulkan loop doing the same work, in the same run on the same lavapipe device:
- * write the changed values into the program's uniform block, copy the block into a new slice
- * of a persistently mapped ring, bind the pipeline, set viewport and scissor, and bind the same
- * descriptor set with the slice's dynamic offset. Both record into a command buffer that is
- * never submitted (reset every 1000 draws), so only the CPU side is timed.
+ * raw Vulkan doing the same work, in the same run on the same lavapipe device. The raw loop is
+ * what a hand-written renderer pays per draw for the same shader: the changed values into its copy
+ * of the uniform block, that block into a new slice of a persistently mapped ring (its one buffer
+ * write), then bind the pipeline, set viewport and scissor, and bind the descriptor set with the
+ * slice's dynamic offset. Both record into a command buffer that is never submitted (reset every
+ * 1000 draws), so only the CPU side is measured. The pixel shader reads every parameter against
+ * an interpolated value (s = s * t + p_k), so no preshader takes the parameters off the GPU.
  *
- *   ./bench_vk_apply [ITER]          best of five rounds of ITER applies for N = 1, 10, 100 (wall
- *                                    clock: noisy on a shared machine)
- *   ./bench_vk_apply ITER LOOP N     one loop alone, LOOP = hfx | raw, for instruction counts, which
- *       are stable: valgrind --tool=callgrind with ITER 200 and 1200; the difference of the two
- *       totals / 1000 is the per-Apply count (setup cancels out). */
+ *   ./bench_vk_apply [ITER]          N = 1, 10, 100: this thread's CPU time and user-space
+ *       instructions (perf_event_open) per Apply, best of five rounds after one not kept
+ *   ./bench_vk_apply ITER LOOP N     one loop alone, LOOP = hfx | raw, for callgrind
+ *       (valgrind --tool=callgrind --toggle-collect=run_hfx, or run_raw: instructions x ITER). */
+#define _DEFAULT_SOURCE /* syscall, for bench.h's instruction counter */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -27,7 +29,8 @@ typedef struct raw_loop {
     VkDescriptorPool pool;
     VkDescriptorSet set;
     test_vk_buffer ring;
-    uint8_t *map, image[PARAMS * 16];
+    uint8_t *map, *image;
+    uint32_t at[PARAMS]; /* byte offset of p_k in the block */
     uint32_t used, size, align;
 } raw_loop;
 
@@ -35,10 +38,11 @@ static char *effect_source(void) {
     size_t cap = 64 * PARAMS + 512, n = 0;
     char *s = malloc(cap);
     for (int i = 0; i < PARAMS; i++) n += (size_t)snprintf(s + n, cap - n, "float4 p%d;\n", i);
-    n += (size_t)snprintf(s + n, cap - n, "float4 VS(float4 p : POSITION) : POSITION { return p; }\n"
-                                          "float4 PS() : COLOR { return 0");
-    for (int i = 0; i < PARAMS; i++) n += (size_t)snprintf(s + n, cap - n, " + p%d", i);
-    snprintf(s + n, cap - n, "; }\ntechnique T { pass P { VertexShader = compile vs_3_0 VS(); "
+    n += (size_t)snprintf(s + n, cap - n, "void VS(float4 p : POSITION, out float4 o : POSITION, out float4 t : TEXCOORD0)"
+                                          " { o = p; t = p; }\n"
+                                          "float4 PS(float4 t : TEXCOORD0) : COLOR { float4 s = 0;");
+    for (int i = 0; i < PARAMS; i++) n += (size_t)snprintf(s + n, cap - n, " s = s * t + p%d;", i);
+    snprintf(s + n, cap - n, " return s; }\ntechnique T { pass P { VertexShader = compile vs_3_0 VS(); "
                              "PixelShader = compile ps_3_0 PS(); } }\n");
     return s;
 }
@@ -50,11 +54,10 @@ static void begin_cmd(VkCommandBuffer cmd, const hfx_vk_target *t) {
     vkBeginCommandBuffer(cmd, &bi);
 }
 
-static double run_hfx(test_vk *v, VkCommandBuffer cmd, hfx_effect *fx, hfx_param **params, int n, int iter) {
+static void run_hfx(test_vk *v, VkCommandBuffer cmd, hfx_effect *fx, hfx_param **params, int n, int iter) {
     hfx_pass *pass = hfx_technique_pass(hfx_effect_current_technique(fx), 0);
     const hfx_vk_target *t = test_vk_target(v);
     float value[4] = {0, 0, 0, 1};
-    double start = now();
     for (int i = 0; i < iter; i++) {
         if (i % BATCH == 0) {
             hfx_device_begin_frame_vk(test_vk_device(v));
@@ -64,22 +67,20 @@ static double run_hfx(test_vk *v, VkCommandBuffer cmd, hfx_effect *fx, hfx_param
         for (int k = 0; k < n; k++) hfx_param_set_floats(params[k], value, 4);
         hfx_pass_apply_vk(pass, cmd, t);
     }
-    return now() - start;
 }
 
-static double run_raw(test_vk *v, VkCommandBuffer cmd, raw_loop *r, int n, int iter) {
+static void run_raw(test_vk *v, VkCommandBuffer cmd, raw_loop *r, int n, int iter) {
     const hfx_vk_target *t = test_vk_target(v);
     float value[4] = {0, 0, 0, 1};
     VkViewport vp = {0, 0, (float)t->width, (float)t->height, 0, 1};
     VkRect2D sc = {{0, 0}, {t->width, t->height}};
-    double start = now();
     for (int i = 0; i < iter; i++) {
         if (i % BATCH == 0) {
             r->used = 0;
             begin_cmd(cmd, t);
         }
         value[0] = (float)i;
-        for (int k = 0; k < n; k++) memcpy(r->image + r->prog->regs_at + 16 * k, value, 16);
+        for (int k = 0; k < n; k++) memcpy(r->image + r->at[k], value, 16);
         uint32_t offset = r->used;
         memcpy(r->map + offset, r->image, r->size);
         r->used += (r->size + r->align - 1) & ~(r->align - 1);
@@ -88,7 +89,6 @@ static double run_raw(test_vk *v, VkCommandBuffer cmd, raw_loop *r, int n, int i
         vkCmdSetScissor(cmd, 0, 1, &sc);
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, r->prog->layout, 0, 1, &r->set, 1, &offset);
     }
-    return now() - start;
 }
 
 /* The hand-written loop's own ring and descriptor set; program and pipeline as hfx made them. */
@@ -98,6 +98,8 @@ static int raw_setup(test_vk *v, hfx_effect *fx, raw_loop *r) {
     r->prog = &fx->sh->vk->programs[0];
     r->pipeline = dev->vk->psos[0].pipeline;
     r->size = r->prog->block_size;
+    if (r->prog->regs_at < 0 || !(r->image = calloc(1, r->size))) return 0;
+    for (int k = 0; k < PARAMS; k++) r->at[k] = (uint32_t)r->prog->regs_at + 16 * r->prog->slots[k].reg;
     r->align = (uint32_t)dev->vk->ubo_align;
     VkDevice d = dev->vk->device;
     size_t ring = (size_t)BATCH * ((r->size + r->align - 1) & ~(r->align - 1));
@@ -130,18 +132,43 @@ static VkCommandBuffer command_buffer(test_vk *v, VkCommandPool *pool) {
     return cmd;
 }
 
+/* Per Apply: this thread's CPU time (ns) and user-space instructions, best of ROUNDS after one not kept. */
+enum { ROUNDS = 5 };
+typedef struct figure {
+    double ns, instructions;
+} figure;
+
+static figure best_of(test_vk *v, VkCommandBuffer cmd, hfx_effect *fx, hfx_param **params, raw_loop *r, int n, int iter,
+                      int counter) {
+    figure best = {1e30, 1e30};
+    for (int round = 0; round <= ROUNDS; round++) {
+        uint64_t i0 = instructions_read(counter);
+        double t0 = thread_now();
+        if (fx) run_hfx(v, cmd, fx, params, n, iter);
+        else run_raw(v, cmd, r, n, iter);
+        double t = thread_now() - t0;
+        uint64_t i = instructions_read(counter) - i0;
+        if (round == 0) continue;
+        if (1e9 * t / iter < best.ns) best.ns = 1e9 * t / iter;
+        if ((double)i / iter < best.instructions) best.instructions = (double)i / iter;
+    }
+    return best;
+}
+
 static void measure(test_vk *v, VkCommandBuffer cmd, hfx_effect *fx, hfx_param **params, raw_loop *r, int iter) {
     static const int ns[3] = {1, 10, 100};
+    int counter = instructions_open();
+    printf("set + hfx_pass_apply_vk against raw Vulkan (one buffer write and the binds), per Apply, best of %d rounds "
+           "of %d\n%-8s %10s %10s %8s %12s %12s %8s\n", ROUNDS, iter, "changed", "hfx ns", "raw ns", "ratio",
+           "hfx instr", "raw instr", "ratio");
     for (int k = 0; k < 3; k++) {
-        double best_hfx = 1e30, best_raw = 1e30;
-        for (int round = 0; round < 5; round++) {
-            double h = run_hfx(v, cmd, fx, params, ns[k], iter), w = run_raw(v, cmd, r, ns[k], iter);
-            if (h < best_hfx) best_hfx = h;
-            if (w < best_raw) best_raw = w;
-        }
-        printf("N = %3d: hfx %7.1f ns/apply, hand-written %7.1f ns/apply, ratio %.2f\n", ns[k], 1e9 * best_hfx / iter,
-               1e9 * best_raw / iter, best_hfx / best_raw);
+        figure h = best_of(v, cmd, fx, params, r, ns[k], iter, counter);
+        figure w = best_of(v, cmd, NULL, NULL, r, ns[k], iter, counter);
+        printf("%-8d %10.1f %10.1f %7.3fx", ns[k], h.ns, w.ns, h.ns / w.ns);
+        if (counter >= 0) printf(" %12.1f %12.1f %7.3fx\n", h.instructions, w.instructions, h.instructions / w.instructions);
+        else printf(" %12s %12s %8s\n", "-", "-", "-");
     }
+    if (counter >= 0) close(counter);
 }
 
 int main(int argc, char **argv) {
@@ -174,6 +201,7 @@ int main(int argc, char **argv) {
     vkDestroyDescriptorPool(fx->dev->vk->device, r.pool, NULL);
     vkDestroyCommandPool(fx->dev->vk->device, pool, NULL);
     test_vk_buffer_free(v, &r.ring);
+    free(r.image);
     hfx_effect_destroy(fx);
     hfx_vertex_layout_destroy(layout);
     test_vk_destroy(v);

@@ -196,10 +196,44 @@ static double d3d_log(double x) { return d3d_log2(x) * 0.69314718055994531; }
 static double d3d_log10(double x) { return d3d_log2(x) * 0.30102999566398120; }
 static double d3d_sqrt(double x) { return sqrt(fabs(x)); }
 
+/* asin, acos, atan and atan2 as fxc expands them into instructions (Direct3D 9 has none for
+ * them): fixed polynomials in single precision, the printer's hfx_acos... (glsl_intrin.c), so
+ * a value folded or preshaded is the value the GPU computes. */
+static double fxc_acos(double x) {
+    double a = fabs(x);
+    double p = round_float(round_float(round_float(round_float(a * -0.0187292993f) + 0.0742610022f) * a) - 0.212114394f);
+    p = round_float(round_float(p * a) + 1.57072878f);
+    double r = round_float(p * round_float(sqrt(fabs(round_float(1.0 - a)))));
+    return x < -x ? round_float(r + round_float(round_float(r * -2.0) + 3.14159274f)) : r;
+}
+static double fxc_asin(double x) { return round_float(1.57079637f - fxc_acos(x)); }
+/* atan of a = min / max in 0..1, folded to the octant the caller says */
+static double fxc_atan01(double a) {
+    double s = round_float(a * a);
+    double p = round_float(round_float(s * 0.0208350997f) - 0.0851330012f);
+    p = round_float(round_float(p * s) + 0.180141002f);
+    p = round_float(round_float(p * s) - 0.330299497f);
+    p = round_float(round_float(p * s) + 0.999866009f);
+    return round_float(a * p);
+}
+static double fxc_atan(double x) {
+    double ax = fabs(x), r = fxc_atan01(round_float(fmin(ax, 1.0) * round_float(1.0 / fmax(ax, 1.0))));
+    if (1.0 < ax) r = round_float(r + round_float(round_float(r * -2.0) + 1.57079637f));
+    return x < -x ? -r : r;
+}
+static double fxc_atan2(double y, double x) {
+    double ax = fabs(x), ay = fabs(y);
+    double r = fxc_atan01(round_float(fmin(ax, ay) * round_float(1.0 / fmax(ax, ay))));
+    if (ax < ay) r = round_float(r + round_float(round_float(r * -2.0) + 1.57079637f));
+    if (x < -x) r = round_float(r - 3.14159274f);
+    double lo = fmin(x, y), hi = fmax(x, y);
+    return lo < -lo && hi >= -hi ? -r : r;
+}
+
 /* Componentwise float functions of one argument. */
 static bool float1(hfx_ev_fn fn, double x, double *out) {
     static double (*const libm[])(double) = {
-        [HFX_EV_FN_ACOS] = acos, [HFX_EV_FN_ASIN] = asin, [HFX_EV_FN_ATAN] = atan, [HFX_EV_FN_CEIL] = ceil,
+        [HFX_EV_FN_ACOS] = fxc_acos, [HFX_EV_FN_ASIN] = fxc_asin, [HFX_EV_FN_ATAN] = fxc_atan, [HFX_EV_FN_CEIL] = ceil,
         [HFX_EV_FN_COS] = cos, [HFX_EV_FN_COSH] = cosh, [HFX_EV_FN_EXP] = exp, [HFX_EV_FN_EXP2] = exp2,
         [HFX_EV_FN_FLOOR] = floor, [HFX_EV_FN_LOG] = d3d_log, [HFX_EV_FN_LOG10] = d3d_log10, [HFX_EV_FN_LOG2] = d3d_log2,
         [HFX_EV_FN_SIN] = sin, [HFX_EV_FN_SINH] = sinh, [HFX_EV_FN_SQRT] = d3d_sqrt, [HFX_EV_FN_TAN] = tan,
@@ -219,7 +253,7 @@ static bool float1(hfx_ev_fn fn, double x, double *out) {
 /* Componentwise float functions of two and three arguments. */
 static bool float23(hfx_ev_fn fn, const double *a, double *out) {
     switch (fn) {
-    case HFX_EV_FN_ATAN2: *out = atan2(a[0], a[1]); break;
+    case HFX_EV_FN_ATAN2: *out = fxc_atan2(a[0], a[1]); break;
     case HFX_EV_FN_FMOD: *out = fmod(a[0], a[1]); break;
     case HFX_EV_FN_POW: *out = pow(fabs(a[0]), a[1]); break; /* D3D9's pow instruction takes |x| */
     case HFX_EV_FN_STEP: *out = a[1] >= a[0]; break;

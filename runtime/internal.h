@@ -168,6 +168,9 @@ typedef struct hfx_upload {
 enum { /* hfx_slot.mode */
     SLOT_NONE,   /* the program does not read the parameter */
     SLOT_FLOAT,  /* one UK_FLOAT upload: slot.up */
+    SLOT_REG4,   /* SLOT_REG with rows of 4 components, all in registers GL kept: the registers hold
+                  * the words as they are, so slot.up sends them from the values (glUniform4fv on
+                  * hfx_c[reg], reg_rows elements) after a copy into the image */
     SLOT_MATRIX, /* one UK_MATRIX upload: slot.up */
     SLOT_OTHER,  /* uploads[first .. first + count) */
     SLOT_REG,    /* packed into the program's registers (hfx_c): reg, reg_rows, reg_cols, up.offset */
@@ -469,6 +472,13 @@ static inline void hfx_rt_reg_fill(hfx_rt_program *p, const hfx_slot *s, const u
     } else {
         for (uint32_t i = 0; i < s->reg_rows; i++) memcpy(dst + 4 * i, src + i * s->reg_cols, 4 * (size_t)s->reg_cols);
     }
+}
+
+/* A SLOT_REG4 parameter's words into its registers, as they are. */
+static inline void hfx_rt_reg_put4(hfx_rt_program *p, const hfx_slot *s, const uint32_t *src) {
+    float *dst = p->regs + 4 * (size_t)s->reg;
+    if (s->reg_rows == 1) memcpy(dst, src, 16); /* float4 in a fixed-size copy */
+    else memcpy(dst, src, 16 * (size_t)s->reg_rows);
 }
 
 /* The same, adding its registers to the range to send. */

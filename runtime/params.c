@@ -287,6 +287,12 @@ unsigned int hfx_param_texture_target(const hfx_param *p) {
             const hfx_rt_binding *bd = &sh->passes[i].bindings[b];
             if (bd->texture_param == p->index || bd->sampler_param == p->index) return bd->target;
         }
+    /* no GL bindings (a Vulkan device): the dimension its samplers are sampled with */
+    for (uint32_t i = 0; !sh->passes && i < sh->fx->sampler_count; i++) {
+        const hfx_fx_sampler *s = &sh->fx->samplers[i];
+        if (s->texture_param != p->index && s->param != p->index) continue;
+        return s->dim == HFX_FX_DIM_CUBE ? GL_TEXTURE_CUBE_MAP : s->dim == HFX_FX_DIM_3D ? GL_TEXTURE_3D : GL_TEXTURE_2D;
+    }
     return 0;
 }
 

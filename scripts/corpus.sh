@@ -16,6 +16,13 @@
 #                                           `N/M techniques draw something`
 #   scripts/corpus.sh roots                 the root effects' paths relative to DIR, one a line
 #                                           (bench/bench_corpus DIR LIST times their compile)
+#   scripts/corpus.sh compare DIR [BUILD]   every technique (with a pass) of every root effect
+#                                           drawn by hfxview on GL and with --vulkan (128x128,
+#                                           its defaults), the pictures compared: "alike" when
+#                                           99% of the pixels are within 2/255 in every channel;
+#                                           prints a line per technique, the validation layer's
+#                                           messages, and `alike A / drawn D`;
+#                                           HFX_CORPUS_EVERY=N takes every Nth root effect only
 #
 # BUILD is a build folder of this checkout (default build/test). Output files go to a
 # temporary folder (kept: its path is printed), PNGs under <tmp>/png for a contact sheet.
@@ -60,6 +67,81 @@ one() {
         timeout 60 "$view" "${inc[@]}" "$fx" -o "$out/png/$name.png" --size 128x128 >"$out/log/$name.view" 2>&1 && ren=ok || ren=FAIL
     fi
     printf "%-6s %-6s %-8s %-6s %s\n" "$c330" "$ces" "$val" "$ren" "$fx"
+}
+
+# The share of pixels of two PNGs within 2/255 in every channel (RGB, through ImageMagick's
+# `convert FILE ppm:-`), as a fraction; -1 when their sizes differ or one cannot be read.
+alike_share() {
+    python3 - "$1" "$2" <<'PY'
+import subprocess, sys
+def load(path):
+    data = subprocess.run(["convert", path, "ppm:-"], capture_output=True, check=True).stdout
+    magic, w, h, _, px = data.split(maxsplit=4)
+    return int(w), int(h), px
+try:
+    (w, h, a), (w2, h2, b) = load(sys.argv[1]), load(sys.argv[2])
+except Exception:
+    print(-1); sys.exit()
+if (w, h) != (w2, h2): print(-1); sys.exit()
+n = w * h
+near = sum(1 for i in range(n) if all(abs(a[3 * i + c] - b[3 * i + c]) <= 2 for c in range(3)))
+print(f"{near / n:.4f}")
+PY
+}
+
+# One effect's techniques: "GL VK alike share messages effect#technique" per technique with a pass.
+compare_one() {
+    local fx=$1 out=$2 view=$3 name t
+    name=$(echo "$fx" | tr '/' '_')
+    local -a inc; mapfile -t inc < <(include_dirs "$fx")
+    for t in $("$view" "${inc[@]}" "$fx" --list 2>/dev/null |
+               awk '/^technique /{n++} /^  pass/ && !seen[n]++ {print n - 1}'); do
+        local png=$out/png/$name.$t gl=FAIL vk=FAIL same=- share=- msgs
+        timeout 120 "$view" "${inc[@]}" "$fx" --technique "$t" --size 128x128 -o "$png.gl.png" \
+            >"$out/log/$name.$t.gl" 2>&1 && gl=ok
+        timeout 120 "$view" "${inc[@]}" "$fx" --technique "$t" --size 128x128 --vulkan -o "$png.vk.png" \
+            >"$out/log/$name.$t.vk" 2>&1 && vk=ok
+        msgs=$(grep -c "^vulkan validation:" "$out/log/$name.$t.vk")
+        if [ -f "$png.gl.png" ] && [ -f "$png.vk.png" ]; then
+            share=$(alike_share "$png.gl.png" "$png.vk.png")
+            same=$(awk -v s="$share" 'BEGIN { print (s >= 0.99 ? "alike" : "DIFFER") }')
+        fi
+        printf "%-4s %-4s %-6s %-6s %-3s %s#%s\n" "$gl" "$vk" "$same" "$share" "$msgs" "$fx" "$t"
+    done
+}
+
+compare() {
+    local dir=$1 build=${2:-$here/build/test}
+    local view=$build/tools/hfxview/hfxview
+    [ -x "$view" ] || { echo "no hfxview in $build (build first)" >&2; exit 2; }
+    local out; out=$(mktemp -d /tmp/hfx-compare-XXXXXX)
+    mkdir -p "$out/log" "$out/png"
+    export -f compare_one include_dirs alike_share
+    printf "%-4s %-4s %-6s %-6s %-3s %s\n" GL VK same share msg "effect#technique"
+    local every=${HFX_CORPUS_EVERY:-1} # a sample: every Nth root effect (a full run takes hours on lavapipe)
+    (cd "$dir" && roots | awk -v n="$every" '(NR - 1) % n == 0' |
+        xargs -d '\n' -P "$(nproc)" -I{} bash -c 'compare_one "$@"' _ {} "$out" "$view") |
+        sort -k6 | tee "$out/table.txt"
+    echo
+    echo "validation messages, by VUID or message id (most frequent first):"
+    cat "$out"/log/*.vk 2>/dev/null | grep "^vulkan validation:" | grep -o "VUID-[A-Za-z0-9_-]*\|UNASSIGNED-[A-Za-z0-9_-]*\|Undefined-Value-[A-Za-z0-9_-]*" |
+        sort | uniq -c | sort -rn | head -15
+    echo
+    echo "Vulkan failures (first error line, most frequent first):"
+    grep -h "error" "$out"/log/*.vk 2>/dev/null | grep -v "^vulkan validation:" | sed "s/^[^:]*: //; s/'[^']*'/'_'/g" |
+        sort | uniq -c | sort -rn | head -10
+    awk -v out="$out" '
+        { techniques++ }
+        $1 == "ok" { gl++ }
+        $1 == "ok" && $2 == "ok" { both++ }
+        $1 == "ok" && $3 == "alike" && $2 == "ok" { alike++ }
+        $5 > 0 { noisy++; messages += $5 }
+        END {
+            printf "\noutputs in %s\n", out
+            printf "%d techniques; GL drew %d, Vulkan drew %d of those\n", techniques, gl, both
+            printf "%d techniques with validation messages (%d messages)\n", noisy, messages
+            printf "alike %d / drawn %d (%.1f%%)\n", alike, gl, gl ? 100 * alike / gl : 0
+        }' "$out/table.txt"
 }
 
 # Every technique of one effect (one hfxview run, --technique all): lines
@@ -124,7 +206,8 @@ run() {
 case "${1:-}" in
 extract) extract "$2" "$3" ;;
 run) run "$2" "${3:-}" ;;
+compare) compare "$2" "${3:-}" ;;
 techniques) techniques "$2" "${3:-}" ;;
 roots) roots ;;
-*) sed -n '2,21p' "$0"; exit 2 ;;
+*) sed -n '2,28p' "$0"; exit 2 ;;
 esac

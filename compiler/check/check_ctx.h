@@ -62,6 +62,9 @@ typedef struct check_ctx {
     check_edge *edges; uint32_t edge_count, edge_cap;  /* in the arena */
 } check_ctx;
 
+/* check_attrs.c: a statement's attributes (X3524, X3084; X3554 warnings) */
+void ck_attributes(check_ctx *c, const hfx_stmt *s);
+
 /* check.c: the call graph */
 void ck_record_call(check_ctx *c, hfx_func *to, hfx_loc loc, bool compile);
 

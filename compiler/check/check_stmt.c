@@ -127,6 +127,7 @@ static void check_for(check_ctx *c, hfx_stmt *s) {
 
 static void check_stmt(check_ctx *c, hfx_stmt *s) {
     if (!s) return;
+    if (s->attr_count) ck_attributes(c, s);
     switch (s->kind) {
     case ST_BLOCK:
         ck_scope_push(c);

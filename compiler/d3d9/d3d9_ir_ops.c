@@ -241,8 +241,10 @@ void d3d9_tx_inst(d3d9_tx *t, const d3d9_inst *in) {
         return;
     }
     if (in->op == D3D9_TEXKILL) { texkill(t, in); return; }
-    if (t->s->stage == D3D9_VS && t->s->model < D3D9_SM(2, 0) && in->op == D3D9_MOV && in->dst.type == D3D9_REG_ADDR) {
-        d3d9_tx_fail(t, "vs_1_1's mov to a0 is not supported yet");
+    if (t->s->stage == D3D9_VS && in->op == D3D9_MOV && in->dst.type == D3D9_REG_ADDR) {
+        /* vs_1_1 loads a0 with mov, rounding to nearest as mova does */
+        ir_expr *a = d3d9_tx_read(t, &in->src[0]);
+        if (a) d3d9_tx_write(t, &in->dst, intrin(t, HFX_INTR_ROUND, t->f4, 1, a, NULL, NULL));
         return;
     }
     if (d3d9_tx_ps1(t) && (in->op == D3D9_TEX || in->op == D3D9_TEXCOORD)) {

@@ -407,6 +407,7 @@ static uint32_t program_for(hfx_builder *b, const hfx_expr *vs, const hfx_expr *
 typedef struct pass_shaders {
     const hfx_expr *vs, *ps;  /* the compile expressions the pass's shader states lead to */
     bool any;                 /* a shader state was set (even to NULL) */
+    bool set[2];              /* vertex, pixel: the pass names that stage's shader (even NULL) */
     bool flat_colors;         /* ShadeMode = FLAT: COLOR varyings are not interpolated */
     shader_select sel[2];     /* vertex, pixel: a shader array chosen at Apply (array NULL: none) */
     uint32_t sel_state[2];    /* the EXPR state computing that index */
@@ -435,6 +436,7 @@ static void pass_state(hfx_builder *b, const hfx_state_assign *sa, pass_shaders 
             sel->array = NULL;
             found = -1;
         }
+        sh->set[vertex ? 0 : 1] = true;
         if (found < 0) {
             st.kind = HFX_FX_VALUE_UNSUPPORTED;
         } else {
@@ -528,7 +530,27 @@ static void build_variants(hfx_builder *b, const pass_shaders *sh, uint32_t pass
     }
 }
 
-static void build_pass(hfx_builder *b, const hfx_pass_ast *pa, hfx_fx_pass *pass, uint32_t index) {
+/* The shaders a D3D9 device holds after a pass: a pass that names no vertex (pixel) shader keeps
+ * the one the previous pass of the technique set, as the device keeps it between passes (XNA
+ * effects that set VertexShader in pass 0 only). A stage chosen from a shader array at Apply is
+ * not carried over (which entry the device holds is known only then). */
+typedef struct held_shaders { const hfx_expr *c[2]; bool held[2]; } held_shaders;
+
+static void keep_held(pass_shaders *sh, held_shaders *held) {
+    const hfx_expr **c[2] = {&sh->vs, &sh->ps};
+    for (int s = 0; s < 2; s++) {
+        if (!sh->set[s] && held->held[s]) {
+            *c[s] = held->c[s];
+            sh->any = true;
+        }
+        if (sh->set[s]) {
+            held->c[s] = *c[s];
+            held->held[s] = !sh->sel[s].array;
+        }
+    }
+}
+
+static void build_pass(hfx_builder *b, const hfx_pass_ast *pa, hfx_fx_pass *pass, uint32_t index, held_shaders *held) {
     pass->name = hfx_build_strdup(b, pa->name ? pa->name : "");
     pass->annotation_count = hfx_build_annotations(b, pa->annotations, pa->annotation_count, &pass->first_annotation);
     pass->first_state = b->fx->state_count;
@@ -536,6 +558,7 @@ static void build_pass(hfx_builder *b, const hfx_pass_ast *pa, hfx_fx_pass *pass
     pass_shaders sh = {0};
     for (uint32_t i = 0; i < pa->state_count; i++) pass_state(b, &pa->states[i], &sh);
     pass->state_count = b->fx->state_count - pass->first_state;
+    keep_held(&sh, held);
     if (sh.sel[0].array || sh.sel[1].array) build_variants(b, &sh, index, pa->loc);
     else if (sh.any && (sh.vs || sh.ps)) pass->program = program_for(b, sh.vs, sh.ps, sh.flat_colors, pa->loc);
     for (uint32_t i = 0; i < pass->state_count; i++) {
@@ -552,6 +575,7 @@ void hfx_build_technique(hfx_builder *b, const hfx_technique_ast *ta) {
     fx->techniques[t].annotation_count =
         hfx_build_annotations(b, ta->annotations, ta->annotation_count, &fx->techniques[t].first_annotation);
     fx->techniques[t].first_pass = fx->pass_count;
+    held_shaders held = {{NULL, NULL}, {false, false}};
     for (uint32_t i = 0; i < ta->pass_count; i++) {
         if (!HFX_BUILD_GROW(b, fx->passes, fx->pass_count, b->pass_cap)) return;
         /* built in its slot, already counted, so that the effect owns its name at once (an
@@ -559,7 +583,7 @@ void hfx_build_technique(hfx_builder *b, const hfx_technique_ast *ta) {
          * arrays but not passes, so the slot stays where it is */
         hfx_fx_pass *pass = &fx->passes[fx->pass_count];
         memset(pass, 0, sizeof *pass);
-        build_pass(b, &ta->passes[i], pass, fx->pass_count++);
+        build_pass(b, &ta->passes[i], pass, fx->pass_count++, &held);
         fx->techniques[t].pass_count++;
     }
 }

@@ -212,9 +212,9 @@ static uint32_t read_annotations(fx2_reader *r, reader_ext *x, uint32_t *off, ui
         if (r->failed) break;
         bool string = t.klass == PC_OBJECT && t.type == PT_STRING && !t.elements;
         bool numeric = t.klass <= PC_MATRIX_COLUMNS;
-        /* textures or structs as annotations, or more than a float4x4 (hfx's annotations hold
-         * 16 words): nothing the API shows */
-        if ((!string && !numeric) || (numeric && all_words(&t) > 16)) continue;
+        /* textures, structs or arrays as annotations (hfx's annotation is one scalar, vector or
+         * matrix, or a string): nothing the API shows */
+        if ((!string && !numeric) || (numeric && t.elements)) continue;
         if (!FX2_GROW(r, fx->annotations, fx->annotation_count, r->anno_cap)) break;
         hfx_fx_annotation *a = &fx->annotations[fx->annotation_count];
         memset(a, 0, sizeof *a);

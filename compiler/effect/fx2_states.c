@@ -267,6 +267,13 @@ static void resolve(fx2_reader *r, fx2_raw *raw) {
             raw->object = r->param_object[p];
             return;
         }
+        const hfx_fx_param *q = &fx->params[p];
+        if (raw->op != OP_TEXTURE && raw->op != OP_SAMPLER && (q->klass == HFX_CLASS_OBJECT || !q->words)) {
+            hfx_error(r->diags, (hfx_loc){r->file, 0, raw->blob.at}, X_FX2_BINARY, "state %s: parameter '%s' holds no "
+                      "value for it", state_name(raw), q->name);
+            r->failed = true;
+            return;
+        }
         st->kind = HFX_FX_VALUE_PARAM;
         st->ref = p;
     } else if (!is_shader_op(raw->op)) { /* usage 0 on a value: an expression of parameters */
@@ -461,7 +468,8 @@ static uint32_t selected(const hfx_fx_effect *fx, const stage_src *s, const uint
     if (s->array == HFX_NONE) return HFX_NONE;
     const hfx_fx_state *st = &fx->states[s->state];
     hfx_ev_value v;
-    return hfx_evc_run(fx->exprs + st->ref, st->count, values, &v) ? hfx_evc_index(&v, HFX_NONE - 1) : 0;
+    uint32_t entries = fx->params[s->array].child_count;
+    return hfx_evc_run(fx->exprs + st->ref, st->count, values, &v) ? hfx_evc_index(&v, entries ? entries - 1 : 0) : 0;
 }
 
 /* The int parameter the selectors read (XNA's ShaderIndex): the one top-level scalar they

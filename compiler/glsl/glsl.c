@@ -248,7 +248,7 @@ static void declare_interface(gp *p) {
             if (modern) sb_printf(p->out, "layout(location = %d) in vec4 %s;\n", io->attrs[i].location, io->attrs[i].glsl_name);
             else sb_printf(p->out, "attribute vec4 %s;\n", io->attrs[i].glsl_name);
         }
-        if (p->sh) sb_put(p->out, "uniform vec4 hfx_pos_fixup;\n");
+        sb_put(p->out, "uniform vec4 hfx_pos_fixup;\n");
     }
     for (uint32_t i = 0; i < io->varying_count; i++)
         sb_printf(p->out, "%s%s vec4 %s;\n", modern && is_flat(io, io->varyings[i]) ? "flat " : "",
@@ -365,6 +365,16 @@ static void alpha_test(gp *p, const char *color) {
     sb_printf(p->out, "if (!hfx_alpha_pass(%s.a)) discard;\n", color);
 }
 
+/* Every vertex shader, the stand-in too, ends in D3D9's clip space made GL's (hfx_pos_fixup). */
+static void print_pos_fixup(gp *p) {
+    line_start(p);
+    sb_put(p->out, "gl_Position.y *= 1.0 - 2.0 * hfx_pos_fixup.z; // render targets: D3D9's row order\n");
+    line_start(p);
+    sb_put(p->out, "gl_Position.xy += hfx_pos_fixup.xy * gl_Position.w; // D3D9 pixel centres\n");
+    line_start(p);
+    sb_put(p->out, "gl_Position.z = gl_Position.z * 2.0 - gl_Position.w; // D3D depth 0..1 to GL -1..1\n");
+}
+
 static void print_main(gp *p) {
     const ir_func *f = p->sh->entry;
     ir_leaf *in = p->in, *out = p->outv;
@@ -394,12 +404,7 @@ static void print_main(gp *p) {
                 line_start(p);
                 sb_printf(p->out, "%s = vec4(0.0);\n", varying_name(p, p->io->varyings[i]));
             }
-        line_start(p);
-        sb_put(p->out, "gl_Position.y *= 1.0 - 2.0 * hfx_pos_fixup.z; // render targets: D3D9's row order\n");
-        line_start(p);
-        sb_put(p->out, "gl_Position.xy += hfx_pos_fixup.xy * gl_Position.w; // D3D9 pixel centres\n");
-        line_start(p);
-        sb_put(p->out, "gl_Position.z = gl_Position.z * 2.0 - gl_Position.w; // D3D depth 0..1 to GL -1..1\n");
+        print_pos_fixup(p);
     } else {
         bool color0 = false;
         for (int i = 0; i < nout; i++) {
@@ -412,7 +417,10 @@ static void print_main(gp *p) {
 }
 
 /* D3D9 without a vertex or pixel shader runs fixed-function; these stand-ins pass positions
- * through untransformed and texture coordinates and colours along. */
+ * through untransformed (D3D9's vertex processing with its identity transform states: the
+ * position is already clip space, depth 0..1) and texture coordinates and colours along. The
+ * vertex stand-in ends with hfx_pos_fixup as every vertex shader does, so it draws the same
+ * pixels on every back end and in render targets. */
 static void print_fixed_main(gp *p) {
     sb_put(p->out, "void main()\n{\n");
     p->indent = 1;
@@ -425,6 +433,7 @@ static void print_fixed_main(gp *p) {
             line_start(p);
             sb_printf(p->out, "%s = %s;\n", varying_name(p, p->io->varyings[i]), a ? a : "vec4(0.0)");
         }
+        print_pos_fixup(p);
     } else {
         bool has_color = false;
         for (uint32_t i = 0; i < p->io->varying_count; i++) has_color |= strcmp(p->io->varyings[i], "COLOR0") == 0;

@@ -345,7 +345,9 @@ static void print_binary(gp *p, const ir_expr *e, int max) {
 static void print_select(gp *p, const ir_expr *e, int max) {
     const ir_expr *c = e->a[0];
     if (ncomp(c->type) > 1) {
-        if (is_float(e->type->base) && !p->legacy) {
+        /* mix(b, a, c) evaluates b first: with side effects, hfx_select keeps HLSL's order */
+        bool effects = ir_has_side_effects(c) || ir_has_side_effects(e->a[1]) || ir_has_side_effects(e->a[2]);
+        if (is_float(e->type->base) && !p->legacy && !effects) {
             const ir_expr *args[3] = { e->a[2], e->a[1], c }; /* mix picks y where the bool is true */
             call_args(p, "mix", (ir_expr *const *)args, 3);
         } else {

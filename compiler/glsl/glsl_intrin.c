@@ -343,57 +343,39 @@ static void d3d_log2(gp *p, const ir_expr *x) {
     sb_put(p->out, whole ? "), -3.40282347e+38)" : ")), -3.40282347e+38)");
 }
 
-/* A constant exponent 1..4 in every component, else 0. */
-static int small_power(const ir_expr *y) {
-    if (y->kind != IE_CONST || !hfx_type_is_numeric(y->type)) return 0;
-    double k = y->cval[0];
-    for (unsigned i = 1; i < hfx_type_components(y->type); i++)
-        if (y->cval[i] != k) return 0;
-    return k == 1 || k == 2 || k == 3 || k == 4 ? (int)hfx_ev_int(k) : 0;
-}
-
-/* An operand cheap to repeat: a variable, or a swizzle or member of one. */
-static bool repeatable(const ir_expr *x) {
-    while (x->kind == IE_SWIZZLE || x->kind == IE_FIELD) x = x->a[0];
-    return x->kind == IE_VAR;
-}
-
-/* |x|^k as products, as fxc expands a small constant power: x * x for 2, x * x * x * x for 4
- * (even powers need no abs), abs(x) times the even part for 1 and 3. */
-static void power_by_products(gp *p, const ir_expr *x, int k, int max) {
-    wrap_open(p, PREC_MUL, max);
-    for (int i = 0; i < k; i++) {
-        if (i) sb_put(p->out, " * ");
-        bool odd_first = (k & 1) && i == 0;
-        if (odd_first) sb_put(p->out, "abs(");
-        glsl_expr(p, x, odd_first ? PREC_ASSIGN : PREC_MUL);
-        if (odd_first) sb_put(p->out, ")");
+/* fxc's products for pow(x, n) (ir_pow_products' rule), as a helper taking x once:
+ * hfx_pow3(x) is x * (x * x). lower/once.c expands the products inside functions; this is for
+ * the places without a function to hold a local (static initialisers). */
+static void power_by_helper(gp *p, const ir_expr *x, int n) {
+    const char *name = hfx_arena_printf(p->c->arena, n < 0 ? "powm%d" : "pow%d", n < 0 ? -n : n);
+    if (glsl_helper(p, hfx_arena_printf(p->c->arena, "%s %s", name, ty(p, x->type)))) {
+        const char *tn = ty(p, x->type);
+        uint32_t m = (uint32_t)(n < 0 ? -(int64_t)n : n);
+        sb_printf(&p->helpers, "%s hfx_%s(%s x)\n{\n    %s r = %s(1.0);\n    %s s = x;\n", tn, name, tn, tn, tn, tn);
+        bool first = true;
+        for (int i = 0; i < 32 && m >> i; i++) {
+            if (i) sb_put(&p->helpers, "    s = s * s;\n");
+            if (!(m >> i & 1)) continue;
+            sb_put(&p->helpers, first ? "    r = s;\n" : "    r = r * s;\n");
+            first = false;
+        }
+        sb_put(&p->helpers, n < 0 ? "    return 1.0 / r;\n}\n" : "    return r;\n}\n");
     }
-    wrap_close(p, PREC_MUL, max);
-}
-
-/* The same products for an operand too dear to print k times (`pow(1 - d, 2)`): a helper
- * takes it once, hfx_pow2(x) and so on, overloaded by type. */
-static void power_by_helper(gp *p, const ir_expr *x, int k) {
-    static const char *const name[] = {NULL, "pow1", "pow2", "pow3", "pow4"};
-    static const char *const body[] = {
-        NULL,
-        "$T hfx_pow1($T x) { return abs(x); }\n",
-        "$T hfx_pow2($T x) { return x * x; }\n",
-        "$T hfx_pow3($T x) { return abs(x) * x * x; }\n",
-        "$T hfx_pow4($T x) { $T s = x * x; return s * s; }\n",
-    };
-    helper_typed(p, name[k], x->type, body[k]);
-    sb_printf(p->out, "hfx_pow%d(", k);
+    sb_printf(p->out, "hfx_%s(", name);
     glsl_expr(p, x, PREC_ASSIGN);
     sb_put(p->out, ")");
 }
 
-/* pow(x, y) is exp(y * log(x)) with D3D9's log: |x|, and pow(0, 0) = 1, pow(0, y > 0) = 0. */
+/* pow(x, y) is exp(y * log(x)) with D3D9's log: |x|, and pow(0, 0) = 1, pow(0, y > 0) = 0;
+ * fxc's products where it expands a constant exponent. */
 static void lower_pow(gp *p, const ir_expr *e, int max) {
-    int k = small_power(e->a[1]);
-    if (k && repeatable(e->a[0])) { power_by_products(p, e->a[0], k, max); return; }
-    if (k && is_float(e->a[0]->type->base)) { power_by_helper(p, e->a[0], k); return; }
+    (void)max;
+    int n;
+    if (is_float(e->type->base) && hfx_type_equal(e->a[0]->type, e->type) &&
+        ir_pow_products(e->a[1], ncomp(e->type), &n)) {
+        power_by_helper(p, e->a[0], n);
+        return;
+    }
     sb_put(p->out, "exp2(");
     glsl_expr(p, e->a[1], PREC_MUL);
     sb_put(p->out, " * ");
@@ -469,18 +451,64 @@ static void lower_lit(gp *p, const ir_expr *e, int max) {
     args(p, "hfx_lit", e->a, 3);
 }
 
-/* asin and acos through atan(y, x): drivers' asin / acos are polynomials with errors near
- * 2e-4 (Mesa), their atan is good to about 1e-6; (1 - x)(1 + x) keeps 1 - x^2 exact near 1. */
-static void lower_asin(gp *p, const ir_expr *e, int max) {
-    (void)max;
-    helper_typed(p, "asin", e->type, "$T hfx_asin($T x) { return atan(x, sqrt((1.0 - x) * (1.0 + x))); }\n");
-    args(p, "hfx_asin", e->a, 1);
-}
+/* asin, acos, atan and atan2 as fxc expands them (Direct3D 9 has no instruction for them): a
+ * fixed polynomial, so the values are Windows' to the last digits (asin(-0.5) = -0.523645,
+ * asin(0) = 6.76e-5, atan(1) = 0.7854096, atan2(-0, -1) = +pi). The same arithmetic is
+ * common/eval.c's (hfx_ev_fxc_acos...). A comparison gives 0 or 1 to multiply by, which GLSL
+ * 110 has too. The scalar and vector forms differ only in how they compare. */
+static const char *const acos_text[2] = {
+    "float hfx_acos(float x)\n{\n    float a = abs(x);\n"
+    "    float p = ((a * -0.0187292993 + 0.0742610022) * a - 0.212114394) * a + 1.57072878;\n"
+    "    float r = p * sqrt(abs(1.0 - a));\n    return r + float(x < -x) * (r * -2.0 + 3.14159274);\n}\n",
+    "$T hfx_acos($T x)\n{\n    $T a = abs(x);\n"
+    "    $T p = ((a * -0.0187292993 + 0.0742610022) * a - 0.212114394) * a + 1.57072878;\n"
+    "    $T r = p * sqrt(abs(1.0 - a));\n    return r + $T(lessThan(x, -x)) * (r * -2.0 + 3.14159274);\n}\n"};
+
+/* p(a) * a, the odd polynomial of atan on 0..1 */
+#define HFX_ATAN_POLY(T) \
+    "    " T " s = a * a;\n    " T " p = (((s * 0.0208350997 - 0.0851330012) * s + 0.180141002) * s - 0.330299497) * s + 0.999866009;\n" \
+    "    " T " r = a * p;\n"
+static const char *const atan_text[2] = {
+    "float hfx_atan(float x)\n{\n    float a = min(abs(x), 1.0) * (1.0 / max(abs(x), 1.0));\n" HFX_ATAN_POLY("float")
+    "    r = a * p + float(1.0 < abs(x)) * (r * -2.0 + 1.57079637);\n    return r * (1.0 - 2.0 * float(x < -x));\n}\n",
+    "$T hfx_atan($T x)\n{\n    $T a = min(abs(x), 1.0) * (1.0 / max(abs(x), 1.0));\n" HFX_ATAN_POLY("$T")
+    "    r = a * p + $T(lessThan($T(1.0), abs(x))) * (r * -2.0 + 1.57079637);\n"
+    "    return r * (1.0 - 2.0 * $T(lessThan(x, -x)));\n}\n"};
+static const char *const atan2_text[2] = {
+    "float hfx_atan2(float y, float x)\n{\n    float a = min(abs(x), abs(y)) * (1.0 / max(abs(x), abs(y)));\n" HFX_ATAN_POLY("float")
+    "    r = a * p + float(abs(x) < abs(y)) * (r * -2.0 + 1.57079637);\n"
+    "    r = r + float(x < -x) * -3.14159274;\n    float lo = min(x, y), hi = max(x, y);\n"
+    "    return r * (1.0 - 2.0 * float(lo < -lo) * float(hi >= -hi));\n}\n",
+    "$T hfx_atan2($T y, $T x)\n{\n    $T a = min(abs(x), abs(y)) * (1.0 / max(abs(x), abs(y)));\n" HFX_ATAN_POLY("$T")
+    "    r = a * p + $T(lessThan(abs(x), abs(y))) * (r * -2.0 + 1.57079637);\n"
+    "    r = r + $T(lessThan(x, -x)) * -3.14159274;\n    $T lo = min(x, y), hi = max(x, y);\n"
+    "    return r * (1.0 - 2.0 * $T(lessThan(lo, -lo)) * $T(greaterThanEqual(hi, -hi)));\n}\n"};
+#undef HFX_ATAN_POLY
 
 static void lower_acos(gp *p, const ir_expr *e, int max) {
     (void)max;
-    helper_typed(p, "acos", e->type, "$T hfx_acos($T x) { return atan(sqrt((1.0 - x) * (1.0 + x)), x); }\n");
+    helper_typed(p, "acos", e->type, acos_text[ncomp(e->type) > 1]);
     args(p, "hfx_acos", e->a, 1);
+}
+
+/* asin(x) = pi/2 - acos(x), as fxc computes it. */
+static void lower_asin(gp *p, const ir_expr *e, int max) {
+    (void)max;
+    helper_typed(p, "acos", e->type, acos_text[ncomp(e->type) > 1]);
+    helper_typed(p, "asin", e->type, "$T hfx_asin($T x) { return 1.57079637 - hfx_acos(x); }\n");
+    args(p, "hfx_asin", e->a, 1);
+}
+
+static void lower_atan(gp *p, const ir_expr *e, int max) {
+    (void)max;
+    helper_typed(p, "atan", e->type, atan_text[ncomp(e->type) > 1]);
+    args(p, "hfx_atan", e->a, 1);
+}
+
+static void lower_atan2(gp *p, const ir_expr *e, int max) {
+    (void)max;
+    helper_typed(p, "atan2", e->type, atan2_text[ncomp(e->type) > 1]);
+    args(p, "hfx_atan2", e->a, 2);
 }
 
 /* mad(a, b, c) = a * b + c (GLSL 330 has no fma; the driver fuses it when it can). */

@@ -305,7 +305,12 @@ static ir_expr *rebuild(builder *b, const hfx_type *ty, ir_expr **scalars, uint3
 /* Whether a cast from -> to takes the components one by one: to or from a struct, and to or
  * from an array where no plain conversion applies ((float4)arr, (float[2])v4). A scalar fills. */
 static bool restructures(const hfx_type *from, const hfx_type *to) {
-    if (hfx_type_components(from) <= 1) return false;
+    /* A one-component struct or array to another one-component type (`T t = s;` with
+     * struct S { float a; } and struct T { float b; }) takes its one component too; a scalar
+     * source fills instead, elsewhere. */
+    if (hfx_type_components(from) <= 1)
+        return (from->kind == TY_STRUCT || from->kind == TY_ARRAY) && hfx_type_components(to) == 1 &&
+               !hfx_type_equal(from, to);
     if (from->kind == TY_STRUCT || to->kind == TY_STRUCT) return true;
     if (from->kind != TY_ARRAY && to->kind != TY_ARRAY) return false;
     return !hfx_conv_classify(from, to, true).ok;

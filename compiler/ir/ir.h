@@ -5,7 +5,7 @@
  * Everything lives in the compilation's arena.
  *
  * Pass order (lower/passes.c, ir_lower): specialise -> arrays -> intrinsics -> lvalues -> fold
- * -> calls -> dce -> flatten -> distances -> globals -> licm -> ranges -> uses -> check; codegen then runs
+ * -> calls -> dce -> once -> flatten -> distances -> globals -> licm -> ranges -> uses -> check; codegen then runs
  * preshade on each stage and varyings on each program's pair.
  * glsl.c prints the result; a preshader or SPIR-V back end would read the same tree. */
 #ifndef HFX_IR_H
@@ -162,11 +162,13 @@ void ir_pass_lvalues(ir_ctx *c, ir_shader *sh);     /* m._11_22 = v: one target 
 void ir_pass_fold(ir_ctx *c, ir_shader *sh);
 void ir_pass_calls(ir_ctx *c, ir_shader *sh);       /* copies of callees with constant arguments bound */
 void ir_pass_dce(ir_ctx *c, ir_shader *sh);
+void ir_pass_once(ir_ctx *c, ir_shader *sh);       /* operands a lowering reads twice computed once; pow's products */
 void ir_pass_flatten(ir_ctx *c, ir_shader *sh);    /* if (c) x = a; else x = b; as x = c ? a : b (small, pure) */
 void ir_pass_distances(ir_ctx *c, ir_shader *sh);  /* distance(P, L) beside L - P: length(L - P), sharing it */
 void ir_pass_globals(ir_ctx *c, ir_shader *sh);
 void ir_pass_licm(ir_ctx *c, ir_shader *sh);       /* loop-invariant work to locals before the loop */
 void ir_pass_ranges(ir_ctx *c, ir_shader *sh);     /* array reads a loop counter keeps in range */
+void ir_pass_registers(ir_ctx *c, ir_shader *sh); /* register(cN) reservations of what the stage reads: X4500, X4509 */
 int ir_pass_check(ir_ctx *c, ir_shader *sh);   /* target limits: reports what GLSL cannot express */
 void ir_pass_uses(ir_ctx *c, ir_shader *sh);
 void ir_pass_preshade(ir_ctx *c, ir_shader *sh);    /* uniform-only work to preshaders (codegen, when packing) */
@@ -228,6 +230,9 @@ bool ir_integer_division(const ir_expr *e); /* an integer / or %: may trap; a gu
  * sincos's / modf's / frexp's outputs. */
 bool ir_writes_operand(const ir_expr *e, uint32_t i);
 bool ir_const_truth(const ir_expr *e); /* the first component as a bool */
+/* fxc expands pow(x, y) into multiplications: y a constant splat integer n whose squaring takes
+ * few enough of them for a value of `comps` components (once.c). */
+bool ir_pow_products(const ir_expr *y, unsigned comps, int *n);
 
 /* Walks every expression slot in a statement tree (pre-order on statements, post-order on
  * expressions); fn may replace *slot. */

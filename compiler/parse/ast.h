@@ -166,7 +166,7 @@ struct hfx_decl {
     const hfx_type *type;      /* VAR, PARAM, TYPEDEF (the aliased type), STRUCT (the struct type) */
     uint32_t mods;             /* MOD_* (storage class, in/out/uniform, row_major...) */
     const char *semantic;      /* NULL when none */
-    const char *reg;           /* `register(c0)`: "c0"; NULL when none */
+    const char *reg;           /* `register(c0)`: "c0"; `register(ps, c1)`: "ps,c1" (the last one written); NULL when none */
     hfx_annotation_ast *annotations; uint32_t annotation_count;
     hfx_expr *init;            /* initializer or parameter default; NULL when none */
     hfx_func *func;            /* FUNC */

@@ -159,6 +159,8 @@ const hfx_type *pb_struct_derived(parse_ctx *ctx, const char *name, const hfx_ty
 const hfx_type *pb_struct_ref(parse_ctx *ctx, const char *name, hfx_loc loc);
 parse_vec pb_fields(parse_ctx *ctx, parse_vec fields, parse_specs *specs, parse_vec declarators);
 parse_specs *pb_specs(parse_ctx *ctx, uint32_t mods, const hfx_type *type, hfx_loc loc);
+/* mods then one more modifier: row_major or column_major twice is X3048 */
+uint32_t pb_more_mods(parse_ctx *ctx, uint32_t mods, uint32_t more, hfx_loc loc);
 
 /* parse_decl.c: declarations, one hfx_decl per declarator */
 parse_declarator *pb_declarator(parse_ctx *ctx, const char *name, hfx_loc loc);

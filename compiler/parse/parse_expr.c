@@ -374,6 +374,12 @@ const hfx_type *pb_array_type(parse_ctx *ctx, const hfx_type *elem, parse_vec di
     return t;
 }
 
+uint32_t pb_more_mods(parse_ctx *ctx, uint32_t mods, uint32_t more, hfx_loc loc) {
+    if (mods & more & (MOD_ROW_MAJOR | MOD_COLUMN_MAJOR))
+        hfx_error(ctx->diags, loc, 3048, "duplicate usages specified");
+    return mods | more;
+}
+
 parse_specs *pb_specs(parse_ctx *ctx, uint32_t mods, const hfx_type *type, hfx_loc loc) {
     parse_specs *s = HFX_NEW(ctx->arena, parse_specs);
     if (!s) return ctx->oom_specs;
@@ -384,6 +390,11 @@ parse_specs *pb_specs(parse_ctx *ctx, uint32_t mods, const hfx_type *type, hfx_l
     s->loc = loc;
     const hfx_type *elem = type;
     while (elem && elem->kind == TY_ARRAY) elem = elem->elem;
+    /* row_major / column_major: for matrices, once (X3048 for both; X3077 on a scalar or vector) */
+    if ((mods & MOD_ROW_MAJOR) && (mods & MOD_COLUMN_MAJOR))
+        hfx_error(ctx->diags, loc, 3048, "row_major and column_major cannot be used together");
+    else if (elem && (mods & (MOD_ROW_MAJOR | MOD_COLUMN_MAJOR)) && (elem->kind == TY_SCALAR || elem->kind == TY_VECTOR))
+        hfx_error(ctx->diags, loc, 3077, "non-matrix types cannot be declared row_major or column_major");
     /* #pragma pack_matrix: the default for matrices that name no majorness themselves */
     if (elem && elem->kind == TY_MATRIX && !(mods & (MOD_ROW_MAJOR | MOD_COLUMN_MAJOR))) s->mods |= ctx->pack_mods;
     if (type && type->kind == TY_STRUCT && ctx->pending_struct == type->st) {

@@ -121,7 +121,7 @@ cbuffer_members
 
 mods
     : MODIFIER                               { $$ = $1.mods; }
-    | mods MODIFIER                          { $$ = $1 | $2.mods; }
+    | mods MODIFIER                          { $$ = pb_more_mods(ctx, $1, $2.mods, @2); }
     ;
 
 decl_specs
@@ -180,7 +180,7 @@ decl_post
     : decl_head
     | decl_post ':' IDENT                    { $$ = pb_decl_semantic($1, $3.text); }
     | decl_post ':' REGISTER '(' IDENT ')'   { $$ = pb_decl_register($1, $5.text); }
-    | decl_post ':' REGISTER '(' IDENT ',' IDENT ')' { $$ = pb_decl_register($1, $7.text); }
+    | decl_post ':' REGISTER '(' IDENT ',' IDENT ')' { $$ = pb_decl_register($1, hfx_arena_printf(ctx->arena, "%s,%s", $5.text, $7.text)); }
     | decl_post ':' REGISTER '(' IDENT '[' expr ']' ')' { $$ = pb_decl_register($1, $5.text); }
     | decl_post ':' REGISTER '(' IDENT ',' IDENT '[' expr ']' ')' { $$ = pb_decl_register($1, $7.text); }
     | decl_post annotations                  { $$ = pb_decl_annotations(ctx, $1, $2); }

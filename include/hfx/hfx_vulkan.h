@@ -37,6 +37,12 @@ typedef struct hfx_vulkan_desc {
     /* VK_EXT_custom_border_color enabled with customBorderColors and customBorderColorWithoutFormat:
      * BorderColor is any colour; else the nearest of Vulkan's three fixed ones */
     VkBool32 custom_border_colors;
+    /* A queue of queue_family that hfx_device_create_vulkan submits one command buffer to (and
+     * waits for) to make its default textures: 1 x 1 images of (0, 0, 0, 1), 2D, cube and
+     * volume, which a sampler reads when the application set no texture for it, as D3D9
+     * samples a stage with no texture and GL an unbound unit. VK_NULL_HANDLE: no defaults, and
+     * such a sampler makes hfx_pass_apply_vk fail. */
+    VkQueue queue;
 } hfx_vulkan_desc;
 
 /* Where the next draws go: the render pass (or, with VK_NULL_HANDLE, dynamic rendering with

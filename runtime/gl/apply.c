@@ -101,14 +101,6 @@ static __attribute__((noinline)) int apply_first(hfx_pass *p) {
     return rc;
 }
 
-/* One changed packed parameter: its registers alone. Out of line, so the float path of
- * hfx_pass_apply saves no registers. */
-static __attribute__((noinline)) int upload_one_reg(hfx_effect *fx, hfx_rt_program *prog, const hfx_slot *s) {
-    hfx_rt_reg_fill(prog, s, fx->values);
-    hfx_rt_reg_send(prog, (hfx_reg_range){s->reg, s->reg + s->reg_rows - 1u});
-    return HFX_OK;
-}
-
 /* The same program-only pass again, with no other state set since, only uploads what the
  * parameters' log holds past what its program saw: the per-draw path of a game loop. */
 int hfx_pass_apply(hfx_pass *p) {
@@ -127,11 +119,13 @@ int hfx_pass_apply(hfx_pass *p) {
     /* one change since the last Apply (a per-object World, say): no loop, no saved registers */
     uint32_t r = fx->log[seen & fx->log_mask];
     hfx_slot *s = &prog->slots[r];
-    if (s->held == fx->stamps[r] || (s->mode != SLOT_FLOAT && s->mode != SLOT_REG)) return hfx_rt_upload_log(fx, prog);
+    uint64_t stamp = fx->stamps[r];
+    if (s->held == stamp || s->mode - (uint32_t)SLOT_FLOAT > SLOT_REG4 - SLOT_FLOAT) return hfx_rt_upload_log(fx, prog);
     prog->memo_seen = seen + 1;
-    s->held = fx->stamps[r];
-    if (s->mode == SLOT_REG) return upload_one_reg(fx, prog, s);
-    s->up.call.f(s->up.location, s->up.count, (const void *)(fx->values + s->up.offset));
+    s->held = stamp;
+    const uint32_t *src = fx->values + s->up.offset;
+    if (s->mode == SLOT_REG4) hfx_rt_reg_put4(prog, s, src); /* the image stays whole for a later range */
+    s->up.call.f(s->up.location, s->up.count, (const void *)src);
     return HFX_OK;
 }
 

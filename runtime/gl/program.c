@@ -255,6 +255,19 @@ static GLint glsl_reg_location(void *ctx, uint32_t i) {
     return b->sh->dev->gl.GetUniformLocation(b->p->object, name);
 }
 
+/* A packed parameter whose registers hold its words as they are (4 components a row) and all
+ * reach GL: Apply's one-change path sends it like a separate uniform, one glUniform4fv. */
+static void reg4_of(const hfx_rt_program *p, hfx_slot *slot) {
+    if (slot->reg_cols != 4 || slot->reg >= p->reg_active || slot->reg_rows > p->reg_active - slot->reg) return;
+    slot->mode = SLOT_REG4;
+    slot->up.call.f = p->reg_call;
+    slot->up.location = p->reg_locs[slot->reg];
+    slot->up.count = slot->reg_rows;
+    slot->up.kind = UK_FLOAT;
+    slot->up.fn = UP_F4;
+    slot->up.words = 4u * slot->reg_rows;
+}
+
 /* What Apply reads, derived once the uploads and the extras' locations are known: shared with
  * spirv_load.c, which finds the locations its own way. */
 void hfx_rt_program_ready(hfx_rt_program *p, uint32_t tops) {
@@ -264,6 +277,7 @@ void hfx_rt_program_ready(hfx_rt_program *p, uint32_t tops) {
         if (slot->mode == SLOT_REG || !slot->count) {
             /* preshaders read it: off the paths that do not look for them */
             if (hfx_preshaders_read(&p->pre, i)) slot->mode = slot->mode == SLOT_REG ? SLOT_REG_PRE : SLOT_PRE;
+            else if (slot->mode == SLOT_REG) reg4_of(p, slot);
             continue;
         }
         slot->up = p->uploads[slot->first];
@@ -463,7 +477,7 @@ void hfx_rt_upload_all(hfx_effect *fx, hfx_rt_program *p) {
         hfx_slot *s = &p->slots[r];
         if (s->held == fx->stamps[r]) continue;
         s->held = fx->stamps[r];
-        if (s->mode == SLOT_REG || s->mode == SLOT_REG_PRE) hfx_rt_reg_copy(p, s, fx->values, &regs);
+        if (s->mode == SLOT_REG || s->mode == SLOT_REG4 || s->mode == SLOT_REG_PRE) hfx_rt_reg_copy(p, s, fx->values, &regs);
         else hfx_rt_upload_slot(fx, p, s);
         if (hfx_preshaders_read(&p->pre, r)) hfx_preshaders_mark(&p->pre, r);
     }
@@ -493,6 +507,32 @@ int hfx_rt_upload_changed(hfx_effect *fx, hfx_rt_program *p) {
     return hfx_rt_upload_log(fx, p);
 }
 
+/* The run of log entries [seen, len) that are packed rows of four (or held already): copies into
+ * the image, widening *range; returns where the run stopped. On its own, so the loop keeps all it
+ * reads in registers (the common frame: float4s and matrices only). */
+static uint64_t copy_rows4(hfx_effect *fx, hfx_rt_program *p, uint64_t seen, uint64_t len, hfx_reg_range *range) {
+    const uint32_t *log = fx->log, *values = fx->values;
+    const uint64_t *stamps = fx->stamps;
+    uint32_t mask = fx->log_mask, lo = range->lo, hi = range->hi;
+    hfx_slot *slots = p->slots;
+    float *regs = p->regs;
+    for (; seen != len; seen++) {
+        uint32_t r = log[seen & mask];
+        hfx_slot *s = &slots[r];
+        if (s->held == stamps[r]) continue;
+        if (s->mode != SLOT_REG4) break;
+        s->held = stamps[r];
+        float *dst = regs + 4 * (size_t)s->reg;
+        if (s->reg_rows == 1) memcpy(dst, values + s->up.offset, 16);
+        else memcpy(dst, values + s->up.offset, 16 * (size_t)s->reg_rows);
+        uint32_t last = s->reg + s->reg_rows - 1u;
+        lo = s->reg < lo ? s->reg : lo;
+        hi = last > hi ? last : hi;
+    }
+    range->lo = lo, range->hi = hi;
+    return seen;
+}
+
 /* Visits the log entries written since the program last looked; an entry whose parameter the
  * program already holds at its latest version (changed twice, or not read) costs no call.
  * The fields the loop reads are copied first: the GL calls could, as far as the compiler
@@ -503,18 +543,21 @@ int hfx_rt_upload_log(hfx_effect *fx, hfx_rt_program *p) {
         hfx_rt_upload_all(fx, p);
         return HFX_OK;
     }
+    hfx_reg_range regs = {UINT32_MAX, 0};
+    p->memo_seen = len;
+    if (p->regs) seen = copy_rows4(fx, p, seen, len, &regs);
     const uint32_t *log = fx->log, *values = fx->values;
     const uint64_t *stamps = fx->stamps;
     uint32_t mask = fx->log_mask;
     hfx_slot *slots = p->slots;
-    hfx_reg_range regs = {UINT32_MAX, 0};
-    p->memo_seen = len;
     for (; seen != len; seen++) {
         uint32_t r = log[seen & mask];
         hfx_slot *s = &slots[r];
         if (s->held == stamps[r]) continue;
         s->held = stamps[r];
-        if (s->mode == SLOT_FLOAT)
+        if (s->mode == SLOT_REG4) /* packed float4 / matrix: into the image, one send at the end */
+            hfx_rt_reg_copy(p, s, values, &regs);
+        else if (s->mode == SLOT_FLOAT)
             s->up.call.f(s->up.location, s->up.count, (const void *)(values + s->up.offset));
         else if (s->mode == SLOT_MATRIX)
             s->up.call.m(s->up.location, s->up.count, GL_FALSE, (const void *)(values + s->up.offset));

@@ -35,14 +35,16 @@ static uint32_t selected(const hfx_effect *fx, const hfx_fx_pass *fp, uint32_t i
 }
 
 /* The pass's program: its own, or the shader-array variant its selectors pick now. */
-static int choose_program(hfx_pass *p, uint32_t *out) {
+static int choose_program(hfx_pass *p, uint32_t *out, int *kept) {
     const hfx_fx_effect *e = p->fx->sh->fx;
     const hfx_fx_pass *fp = &e->passes[p->index];
     int variants = 0;
     for (uint32_t i = 0; i < e->variant_count && !variants; i++) variants = e->variants[i].pass == p->index;
     *out = fp->program;
+    *kept = !variants && fp->program >= e->program_count && p->fx->vk->last_program;
+    if (*kept) *out = p->fx->vk->last_program - 1; /* the shaders stay set */
     if (!variants)
-        return fp->program < e->program_count ? HFX_OK : fail(p->fx->dev, HFX_ERR_NOT_FOUND, "the pass sets no shaders");
+        return *out < e->program_count ? HFX_OK : fail(p->fx->dev, HFX_ERR_NOT_FOUND, "the pass sets no shaders");
     uint32_t vs = selected(p->fx, fp, HFX_ST_VERTEXSHADER), ps = selected(p->fx, fp, HFX_ST_PIXELSHADER);
     for (uint32_t i = 0; i < e->variant_count; i++)
         if (e->variants[i].pass == p->index && e->variants[i].vs == vs && e->variants[i].ps == ps)
@@ -56,8 +58,8 @@ static int choose_program(hfx_pass *p, uint32_t *out) {
 static int program_of(hfx_pass *p, uint32_t *out) {
     uint64_t now = p->fx->log_len + 1;
     if (p->chosen_seen == now) return *out = p->chosen_index, HFX_OK;
-    int rc = choose_program(p, out);
-    if (rc == HFX_OK) p->chosen_index = *out, p->chosen_seen = now;
+    int kept = 0, rc = choose_program(p, out, &kept);
+    if (rc == HFX_OK && !kept) p->chosen_index = *out, p->chosen_seen = now; /* kept: the last Apply's, may change */
     return rc;
 }
 
@@ -105,13 +107,19 @@ static int gather_textures(hfx_effect *fx, const hfx_fx_pass *fp, const vk_progr
         if (use->sampler >= fx->sh->fx->sampler_count) return fail(fx->dev, HFX_ERR_LOAD, "a program names no sampler");
         uint32_t t = texture_param(fx, fp, use);
         VkImageView view = (VkImageView)(uintptr_t)fx->textures[t];
+        VkImageLayout layout = (VkImageLayout)fx->texture_layouts[t];
+        if (!view) { /* none set: the default of the sampler's dimension, (0, 0, 0, 1) as D3D9 */
+            const hfx_fx_sampler *fs = &fx->sh->fx->samplers[use->sampler];
+            view = fx->dev->vk->defaults[fs->dim <= HFX_FX_DIM_CUBE ? fs->dim : HFX_FX_DIM_2D].view;
+            layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+        }
         if (!view)
             return hfx_rt_fail(fx->dev, HFX_ERR_NOT_FOUND, "hfx_pass_apply_vk: sampler '%s' has no texture "
-                               "(hfx_param_set_texture_vk)", fx->sh->fx->params[fx->sh->fx->samplers[use->sampler].param].name);
+                               "(hfx_param_set_texture_vk; or hfx_vulkan_desc.queue for the default textures)",
+                               fx->sh->fx->params[fx->sh->fx->samplers[use->sampler].param].name);
         VkSampler s;
         int rc = sampler_of(fx, use->sampler, &s);
         if (rc) return rc;
-        VkImageLayout layout = (VkImageLayout)fx->texture_layouts[t];
         if (b->views[k] != view || b->layouts[k] != layout || b->vk_samplers[k] != s) *changed = 1;
         b->views[k] = view, b->layouts[k] = layout, b->vk_samplers[k] = s;
     }
@@ -234,5 +242,6 @@ int hfx_pass_apply_vk(hfx_pass *p, VkCommandBuffer cmd, const hfx_vk_target *t) 
     const vk_pso *pso;
     if ((rc = hfx_vk_pipeline(dev, &key, &pso))) return rc;
     record(dev, cmd, prog, b, pso, t);
+    fx->vk->last_program = index + 1;
     return HFX_OK;
 }

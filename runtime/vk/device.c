@@ -29,7 +29,7 @@ static const char *load_functions(hfx_vk_fns *f, VkInstance inst, VkDevice devic
     return NULL;
 }
 
-static int memory_type(const struct hfx_vk_device *vk, uint32_t bits, VkMemoryPropertyFlags want) {
+int hfx_vk_memory_type(const struct hfx_vk_device *vk, uint32_t bits, VkMemoryPropertyFlags want) {
     for (uint32_t i = 0; i < vk->memory.memoryTypeCount; i++)
         if ((bits & (1u << i)) && (vk->memory.memoryTypes[i].propertyFlags & want) == want) return (int)i;
     return -1;
@@ -43,7 +43,7 @@ int hfx_vk_chunk_make(hfx_device *dev, VkDeviceSize size, VkBufferUsageFlags usa
     if (r != VK_SUCCESS) return hfx_vk_fail(dev, r, "vkCreateBuffer");
     VkMemoryRequirements req;
     vk->fn.GetBufferMemoryRequirements(vk->device, c->buffer, &req);
-    int type = memory_type(vk, req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+    int type = hfx_vk_memory_type(vk, req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
     if (type < 0) {
         hfx_vk_chunk_free(dev, c);
         return hfx_rt_fail(dev, HFX_ERR_VULKAN, "the device has no host-visible, coherent memory for uniform buffers");
@@ -188,6 +188,7 @@ void hfx_vk_device_destroy(hfx_device *dev) {
         frames_free(dev);
         hfx_vk_chunk_free(dev, &dev->vk->zero);
         hfx_vk_validator_free(dev->vk);
+        hfx_vk_defaults_free(dev);
         free(dev->vk);
     }
     free(dev);
@@ -247,6 +248,7 @@ hfx_device *hfx_device_create_vulkan(const hfx_vulkan_desc *d, char **error) {
     if (hfx_vk_chunk_make(dev, 64, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, &vk->zero)) return create_failed(dev, NULL, error);
     static const float zero_one[4] = {0, 0, 0, 1}; /* what GL's disabled attribute arrays read */
     memcpy(vk->zero.map, zero_one, sizeof zero_one);
+    if (d->queue && hfx_vk_defaults_make(dev, d->queue, d->queue_family)) return create_failed(dev, NULL, error);
     return dev;
 }
 
@@ -262,8 +264,8 @@ static int canonical_semantic(const char *s, char out[24]) {
 
 hfx_vertex_layout *hfx_vertex_layout_create(hfx_device *dev, const hfx_vertex_element *e, size_t count) {
     if (!dev || !dev->vk || (!e && count)) return NULL;
-    if (count > VK_MAX_ATTRIBUTES) {
-        hfx_rt_fail(dev, HFX_ERR_COUNT, "hfx_vertex_layout_create: at most %d elements", VK_MAX_ATTRIBUTES);
+    if (count > VK_MAX_LAYOUT_ELEMENTS) {
+        hfx_rt_fail(dev, HFX_ERR_COUNT, "hfx_vertex_layout_create: at most %d elements", VK_MAX_LAYOUT_ELEMENTS);
         return NULL;
     }
     hfx_vertex_layout *l = calloc(1, sizeof *l);

@@ -201,7 +201,7 @@ static VkResult create_pipeline(struct hfx_vk_device *vk, const vk_pso_key *k, V
     o->stages[0] = (VkPipelineShaderStageCreateInfo){.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
                                                      .stage = VK_SHADER_STAGE_VERTEX_BIT, .module = p->vs, .pName = "main"};
     o->stages[1] = o->stages[0];
-    o->stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT, o->stages[1].module = p->fs;
+    o->stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT, o->stages[1].module = hfx_vk_fragment_module(p, k->color_count);
     *needs_zero = vertex_input_of(p, k->layout, &o->vi);
     fixed_state(vk, k, o);
     blend_and_dynamic(k, o);

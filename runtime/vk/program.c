@@ -51,13 +51,29 @@ static void program_user(const hfx_fx_effect *fx, uint32_t index, char *out, siz
     else snprintf(out, n, "technique '%s', pass '%s'", tech ? tech : "", fx->passes[pass].name ? fx->passes[pass].name : "");
 }
 
+/* Whether SPIRV-Tools accepts words[0..count) for Vulkan 1.0; if not, its reason's first line
+ * (the disassembled instruction follows it) in reason[256]. The reason can quote the module's
+ * own bytes, so what is not printable ASCII shows as '?'. */
+int hfx_vk_spirv_valid(const struct hfx_vk_device *vk, const uint32_t *words, size_t count, char reason[256]) {
+    spv_diagnostic diag = NULL;
+    spv_result_t r = spvValidateBinary(vk->spirv, words, count, &diag);
+    if (r != SPV_SUCCESS) {
+        const char *text = diag && diag->error ? diag->error : "no reason given";
+        size_t n = 0;
+        for (; text[n] && text[n] != '\n' && n + 1 < 256; n++)
+            reason[n] = (unsigned char)text[n] < 0x20 || (unsigned char)text[n] > 0x7e ? '?' : text[n];
+        reason[n] = '\0';
+    }
+    spvDiagnosticDestroy(diag);
+    return r == SPV_SUCCESS;
+}
+
 /* Vulkan leaves invalid SPIR-V undefined (a driver may crash or hang on it), so a module the
  * validator refuses is the effect's load error and never reaches vkCreateShaderModule. Size and
  * magic first: the cheap refusal of what is not SPIR-V at all. */
 static int check_module(hfx_shared *sh, uint32_t index, const hfx_fx_code *code, const char *what) {
-    struct hfx_vk_device *vk = sh->dev->vk;
     const uint32_t *words = (const uint32_t *)(const void *)code->data;
-    char user[160];
+    char user[160], reason[256];
     if (!code->data || code->size < 20 || code->size % 4)
         return hfx_rt_fail(sh->dev, HFX_ERR_LOAD, "%s: the %s shader has no SPIR-V for Vulkan (compile with the "
                            "spirv-vk target)", name_of(sh), what);
@@ -65,23 +81,10 @@ static int check_module(hfx_shared *sh, uint32_t index, const hfx_fx_code *code,
     if (words[0] != 0x07230203u)
         return hfx_rt_fail(sh->dev, HFX_ERR_LOAD, "%s: %s: the %s shader's code is not SPIR-V (no magic number)",
                            name_of(sh), user, what);
-    spv_diagnostic diag = NULL;
-    spv_result_t r = spvValidateBinary(vk->spirv, words, code->size / 4, &diag);
-    int rc = HFX_OK;
-    if (r != SPV_SUCCESS) {
-        /* The reason's first line (the disassembled instruction follows it); it can quote the
-         * module's own bytes, so what is not printable ASCII shows as '?'. */
-        const char *text = diag && diag->error ? diag->error : "no reason given";
-        char reason[256];
-        size_t n = 0;
-        for (; text[n] && text[n] != '\n' && n + 1 < sizeof reason; n++)
-            reason[n] = (unsigned char)text[n] < 0x20 || (unsigned char)text[n] > 0x7e ? '?' : text[n];
-        reason[n] = '\0';
-        rc = hfx_rt_fail(sh->dev, HFX_ERR_LOAD, "%s: %s: the %s shader's SPIR-V is not valid for Vulkan 1.0: %s",
-                         name_of(sh), user, what, reason);
-    }
-    spvDiagnosticDestroy(diag);
-    return rc;
+    if (!hfx_vk_spirv_valid(sh->dev->vk, words, code->size / 4, reason))
+        return hfx_rt_fail(sh->dev, HFX_ERR_LOAD, "%s: %s: the %s shader's SPIR-V is not valid for Vulkan 1.0: %s",
+                           name_of(sh), user, what, reason);
+    return HFX_OK;
 }
 
 static int make_module(hfx_shared *sh, uint32_t index, const hfx_fx_code *code, const char *what, VkShaderModule *out) {
@@ -211,6 +214,7 @@ int hfx_vk_program_build(hfx_shared *sh, uint32_t index) {
     p->sampler_count = fp->sampler_count;
     int rc = make_module(sh, index, &fp->code[HFX_STAGE_VERTEX][HFX_TARGET_SPIRV_VK], "vertex", &p->vs);
     if (!rc) rc = make_module(sh, index, &fp->code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV_VK], "pixel", &p->fs);
+    if (!rc) rc = hfx_vk_outputs_make(sh->dev, &fp->code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV_VK], p);
     if (!rc) rc = read_block(&b, fp);
     if (!rc) rc = map_uniforms(&b, fp);
     if (!rc) rc = make_layouts(sh, p);
@@ -225,6 +229,8 @@ void hfx_vk_program_free(hfx_device *dev, vk_program *p) {
     if (p->set_layout) vk->fn.DestroyDescriptorSetLayout(vk->device, p->set_layout, NULL);
     if (p->vs) vk->fn.DestroyShaderModule(vk->device, p->vs, NULL);
     if (p->fs) vk->fn.DestroyShaderModule(vk->device, p->fs, NULL);
+    for (int n = 0; n < 4; n++)
+        if (p->fs_fewer[n]) vk->fn.DestroyShaderModule(vk->device, p->fs_fewer[n], NULL);
     free(p->slots);
     free(p->uploads);
     memset(p, 0, sizeof *p);

@@ -106,18 +106,44 @@ static void run_preshaders(hfx_effect *fx, const vk_program *p, vk_bound *b) {
     if (range.lo <= range.hi) b->dirty = 1;
 }
 
-/* The log entries written since the program last looked; a whole ring behind, everything. */
+/* A packed parameter of rows of 4 components: its words are its registers as they are. */
+static inline void put_rows4(uint8_t *regs, const vk_slot *s, const uint32_t *values) {
+    uint8_t *dst = regs + 16 * (size_t)s->reg;
+    if (s->reg_rows == 1) memcpy(dst, values + s->offset, 16); /* float4 in a fixed-size copy */
+    else memcpy(dst, values + s->offset, 16 * (size_t)s->reg_rows);
+}
+
+/* The log entries written since the program last looked; a whole ring behind, everything. A
+ * packed float4 or matrix no preshader reads (the common case) is a copy into the image in the
+ * loop; anything else goes through write_slot. The fields the loop reads are copied first. */
 static void scan_log(hfx_effect *fx, const vk_program *p, vk_bound *b) {
-    if (fx->log_len - b->seen > (uint64_t)fx->log_mask + 1) {
+    uint64_t seen = b->seen, len = fx->log_len;
+    if (len - seen > (uint64_t)fx->log_mask + 1) {
         scan_all(fx, p, b);
         return;
     }
-    for (; b->seen != fx->log_len; b->seen++) {
-        uint32_t r = fx->log[b->seen & fx->log_mask];
-        if (b->held[r] == fx->stamps[r] || !depends_on(p, b, r)) continue;
-        b->held[r] = fx->stamps[r];
-        write_slot(p, b, r, fx->values);
+    const uint32_t *log = fx->log, *values = fx->values;
+    const uint64_t *stamps = fx->stamps;
+    uint64_t *held = b->held;
+    uint32_t mask = fx->log_mask;
+    uint8_t *regs = p->regs_at >= 0 ? b->image + p->regs_at : NULL;
+    int plain = !b->pre.total, dirty = 0;
+    for (; seen != len; seen++) {
+        uint32_t r = log[seen & mask];
+        if (held[r] == stamps[r]) continue;
+        const vk_slot *s = &p->slots[r];
+        if (plain && s->mode == SLOT_REG && s->reg_cols == 4) {
+            held[r] = stamps[r];
+            put_rows4(regs, s, values);
+            dirty = 1;
+            continue;
+        }
+        if (!depends_on(p, b, r)) continue;
+        held[r] = stamps[r];
+        write_slot(p, b, r, values);
     }
+    b->seen = len;
+    if (dirty) b->dirty = 1;
 }
 
 static void put(vk_bound *b, int32_t at, const void *v, size_t n) {

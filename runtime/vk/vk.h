@@ -22,7 +22,10 @@
     X(DestroySampler) X(CreateDescriptorPool) X(DestroyDescriptorPool) X(ResetDescriptorPool) \
     X(AllocateDescriptorSets) X(UpdateDescriptorSets) X(CmdBindPipeline) X(CmdBindDescriptorSets) \
     X(CmdBindVertexBuffers) X(CmdSetViewport) X(CmdSetScissor) X(CmdSetStencilReference) \
-    X(CmdSetBlendConstants) X(CmdSetDepthBias)
+    X(CmdSetBlendConstants) X(CmdSetDepthBias) X(CreateImage) X(DestroyImage) X(GetImageMemoryRequirements) \
+    X(BindImageMemory) X(CreateImageView) X(DestroyImageView) X(CreateCommandPool) X(DestroyCommandPool) \
+    X(AllocateCommandBuffers) X(BeginCommandBuffer) X(EndCommandBuffer) X(CmdPipelineBarrier) \
+    X(CmdClearColorImage) X(QueueSubmit) X(QueueWaitIdle)
 
 typedef struct hfx_vk_fns {
     PFN_vkGetInstanceProcAddr GetInstanceProcAddr;
@@ -32,7 +35,9 @@ typedef struct hfx_vk_fns {
 #undef HFX_VK_FN_
 } hfx_vk_fns;
 
-enum { VK_ZERO_BINDING = 15, VK_MAX_FRAMES = 8, VK_MAX_ATTRIBUTES = 16 };
+/* A program reads at most 16 attributes (Vulkan's least maxVertexInputAttributes); a layout may
+ * describe more, for the programs that read different ones. */
+enum { VK_ZERO_BINDING = 15, VK_MAX_FRAMES = 8, VK_MAX_ATTRIBUTES = 16, VK_MAX_LAYOUT_ELEMENTS = 32 };
 
 /* A host-visible, coherent buffer, mapped for its lifetime. */
 typedef struct vk_chunk {
@@ -76,6 +81,14 @@ typedef struct vk_pso {
     int needs_zero;                 /* reads an attribute the layout lacks: bind VK_ZERO_BINDING */
 } vk_pso;
 
+/* A 1x1 image of (0, 0, 0, 1) per sampler dimension (HFX_FX_DIM_*), as D3D9 samples a stage
+ * with no texture: what a sampler the application gave no texture reads (defaults.c). */
+typedef struct vk_default_image {
+    VkImage image;
+    VkDeviceMemory memory;
+    VkImageView view;
+} vk_default_image;
+
 typedef struct vk_sampler_entry {
     hfx_sampler_desc desc;
     VkSampler sampler;
@@ -105,13 +118,14 @@ struct hfx_vk_device {
     int mirror_once;                /* samplerMirrorClampToEdge */
     int custom_border;              /* VK_EXT_custom_border_color (without format) */
     struct spv_context_t *spirv;    /* SPIRV-Tools' validator for Vulkan 1.0 (program.c): every module passes it */
+    vk_default_image defaults[4];   /* per hfx_fx_dim; none without hfx_vulkan_desc.queue */
 };
 
 struct hfx_vertex_layout {
     hfx_device *dev;
     size_t count;
-    char semantics[VK_MAX_ATTRIBUTES][24];
-    hfx_vertex_element e[VK_MAX_ATTRIBUTES];
+    char semantics[VK_MAX_LAYOUT_ELEMENTS][24];
+    hfx_vertex_element e[VK_MAX_LAYOUT_ELEMENTS];
 };
 
 /* How one leaf of the uniform block is filled from the effect's values. */
@@ -134,6 +148,8 @@ typedef struct vk_slot {
 
 typedef struct vk_program {
     VkShaderModule vs, fs;
+    VkShaderModule fs_fewer[4];     /* fs_fewer[n]: fs for n colour attachments, when it writes more (outputs.c) */
+    uint32_t colors_written;        /* the pixel shader's highest colour Location + 1 */
     VkDescriptorSetLayout set_layout;
     VkPipelineLayout layout;
     uint32_t block_size;            /* 0: no uniforms */
@@ -180,6 +196,8 @@ struct hfx_vk_instance {
     vk_bound **bound;               /* per program, made at its first Apply */
     uint32_t bound_count;           /* programs (the shared part may be gone when this is freed) */
     int begun;                      /* hfx_effect_begin saved the render states */
+    uint32_t last_program;          /* the last Apply's program + 1 (0: none): a pass that sets no
+                                     * shaders keeps it, as D3D9 keeps the device's shaders */
     hfx_rs_value saved[HFX_ST_COUNT_];
 };
 
@@ -193,6 +211,11 @@ void hfx_vk_chunk_free(hfx_device *dev, vk_chunk *c);
 /* A slice of size bytes of the current frame's ring: its buffer, offset and memory. */
 int hfx_vk_slice(hfx_device *dev, uint32_t size, VkBuffer *buffer, uint32_t *offset, uint8_t **map);
 int hfx_vk_descriptor_set(hfx_device *dev, VkDescriptorSetLayout layout, VkDescriptorSet *set);
+int hfx_vk_memory_type(const struct hfx_vk_device *vk, uint32_t bits, VkMemoryPropertyFlags want); /* -1: none */
+
+/* defaults.c */
+int hfx_vk_defaults_make(hfx_device *dev, VkQueue queue, uint32_t family);
+void hfx_vk_defaults_free(hfx_device *dev);
 
 /* reflect.c: the members of a module's uniform block (set 0, binding HFX_VK_BINDING_BLOCK). */
 typedef struct vk_leaf {
@@ -212,7 +235,12 @@ void hfx_vk_block_free(vk_block *b);
 int hfx_vk_program_build(hfx_shared *sh, uint32_t index);
 int hfx_vk_validator_make(struct hfx_vk_device *vk); /* 0, or HFX_ERR_MEMORY */
 void hfx_vk_validator_free(struct hfx_vk_device *vk);
+int hfx_vk_spirv_valid(const struct hfx_vk_device *vk, const uint32_t *words, size_t count, char reason[256]);
 void hfx_vk_program_free(hfx_device *dev, vk_program *p);
+
+/* outputs.c */
+int hfx_vk_outputs_make(hfx_device *dev, const hfx_fx_code *code, vk_program *p);
+VkShaderModule hfx_vk_fragment_module(const vk_program *p, uint32_t color_count);
 
 /* pipeline.c */
 void hfx_vk_states_of(const hfx_rs_value *rs, vk_states *st);

@@ -193,12 +193,24 @@ static int bind_memory(test_vk *v, VkMemoryRequirements req, VkMemoryPropertyFla
     return type >= 0 && vkAllocateMemory(v->device, &ai, NULL, mem) == VK_SUCCESS;
 }
 
-static int make_image_levels(test_vk *v, VkFormat format, VkImageUsageFlags usage, VkImageAspectFlags aspect, int w,
-                             int h, uint32_t levels, VkImage *img, VkDeviceMemory *mem, VkImageView *view) {
-    VkImageCreateInfo ci = {.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO, .imageType = VK_IMAGE_TYPE_2D,
-                            .format = format, .extent = {(uint32_t)w, (uint32_t)h, 1}, .mipLevels = levels,
-                            .arrayLayers = 1, .samples = VK_SAMPLE_COUNT_1_BIT, .tiling = VK_IMAGE_TILING_OPTIMAL,
-                            .usage = usage};
+/* What an image is: a 2D image, a cube (6 layers, CUBE_COMPATIBLE) or a volume of depth slices. */
+typedef struct image_shape {
+    test_vk_kind kind;
+    int w, h, d;               /* d: slices of a volume, 1 otherwise */
+    uint32_t levels;
+} image_shape;
+
+static uint32_t shape_layers(const image_shape *s) { return s->kind == TEST_VK_CUBE ? 6 : 1; }
+
+static int make_shaped(test_vk *v, VkFormat format, VkImageUsageFlags usage, VkImageAspectFlags aspect,
+                       const image_shape *s, VkImage *img, VkDeviceMemory *mem, VkImageView *view) {
+    static const VkImageViewType view_types[] = {VK_IMAGE_VIEW_TYPE_2D, VK_IMAGE_VIEW_TYPE_CUBE, VK_IMAGE_VIEW_TYPE_3D};
+    VkImageCreateInfo ci = {.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
+                            .flags = s->kind == TEST_VK_CUBE ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT : 0,
+                            .imageType = s->kind == TEST_VK_3D ? VK_IMAGE_TYPE_3D : VK_IMAGE_TYPE_2D,
+                            .format = format, .extent = {(uint32_t)s->w, (uint32_t)s->h, (uint32_t)s->d},
+                            .mipLevels = s->levels, .arrayLayers = shape_layers(s), .samples = VK_SAMPLE_COUNT_1_BIT,
+                            .tiling = VK_IMAGE_TILING_OPTIMAL, .usage = usage};
     if (vkCreateImage(v->device, &ci, NULL, img) != VK_SUCCESS) return 0;
     VkMemoryRequirements req;
     vkGetImageMemoryRequirements(v->device, *img, &req);
@@ -207,14 +219,15 @@ static int make_image_levels(test_vk *v, VkFormat format, VkImageUsageFlags usag
         return 0;
     vkBindImageMemory(v->device, *img, *mem, 0);
     VkImageViewCreateInfo vi = {.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO, .image = *img,
-                                .viewType = VK_IMAGE_VIEW_TYPE_2D, .format = format,
-                                .subresourceRange = {aspect, 0, levels, 0, 1}};
+                                .viewType = view_types[s->kind], .format = format,
+                                .subresourceRange = {aspect, 0, s->levels, 0, shape_layers(s)}};
     return vkCreateImageView(v->device, &vi, NULL, view) == VK_SUCCESS;
 }
 
 static int make_image(test_vk *v, VkFormat format, VkImageUsageFlags usage, VkImageAspectFlags aspect, int w, int h,
                       VkImage *img, VkDeviceMemory *mem, VkImageView *view) {
-    return make_image_levels(v, format, usage, aspect, w, h, 1, img, mem, view);
+    image_shape s = {TEST_VK_2D, w, h, 1, 1};
+    return make_shaped(v, format, usage, aspect, &s, img, mem, view);
 }
 
 static VkFormat depth_format(test_vk *v) {
@@ -284,7 +297,7 @@ static int make_target(test_vk *v) {
 
 static int make_hfx(test_vk *v, const VkPhysicalDeviceFeatures *features) {
     hfx_vulkan_desc d = {v->instance, v->phys, v->device, v->family, vkGetInstanceProcAddr, 2, features, 0, VK_FALSE,
-                         v->custom_border ? VK_TRUE : VK_FALSE};
+                         v->custom_border ? VK_TRUE : VK_FALSE, v->queue};
     char *err = NULL;
     v->dev = hfx_device_create_vulkan(&d, &err);
     if (!v->dev) fprintf(stderr, "hfx_device_create_vulkan: %s\n", err ? err : "?");
@@ -311,8 +324,8 @@ test_vk *test_vk_create(int width, int height, const char **why) {
     return v;
 }
 
-void test_vk_destroy(test_vk *v) {
-    if (!v) return;
+int test_vk_destroy(test_vk *v) {
+    if (!v) return 0;
     if (v->device) vkDeviceWaitIdle(v->device);
     hfx_device_destroy(v->dev);
     if (v->device) {
@@ -335,9 +348,11 @@ void test_vk_destroy(test_vk *v) {
             (PFN_vkDestroyDebugUtilsMessengerEXT)vkGetInstanceProcAddr(v->instance, "vkDestroyDebugUtilsMessengerEXT");
         if (destroy) destroy(v->instance, v->messenger, NULL);
     }
+    int messages = v->messages; /* the messenger is gone: nothing more can come */
     if (v->instance) vkDestroyInstance(v->instance, NULL);
     free(v->pixels);
     free(v);
+    return messages;
 }
 
 hfx_device *test_vk_device(test_vk *v) { return v->dev; }
@@ -492,7 +507,7 @@ static void level_barrier(VkCommandBuffer cmd, VkImage img, uint32_t level, VkIm
     VkImageMemoryBarrier b = {.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER, .srcAccessMask = src,
                               .dstAccessMask = dst, .oldLayout = from, .newLayout = to,
                               .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED, .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                              .image = img, .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, level, 1, 0, 1}};
+                              .image = img, .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, level, 1, 0, VK_REMAINING_ARRAY_LAYERS}};
     vkCmdPipelineBarrier(cmd, s1, s2, 0, 0, NULL, 0, NULL, 1, &b);
 }
 
@@ -501,23 +516,78 @@ static void layout_barrier(VkCommandBuffer cmd, VkImage img, VkImageLayout from,
     VkImageMemoryBarrier b = {.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER, .srcAccessMask = src,
                               .dstAccessMask = dst, .oldLayout = from, .newLayout = to,
                               .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED, .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                              .image = img, .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, VK_REMAINING_MIP_LEVELS, 0, 1}};
+                              .image = img, .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, VK_REMAINING_MIP_LEVELS, 0,
+                                                                 VK_REMAINING_ARRAY_LAYERS}};
     vkCmdPipelineBarrier(cmd, s1, s2, 0, 0, NULL, 0, NULL, 1, &b);
 }
 
-static int upload(test_vk *v, test_vk_texture *t, const test_vk_buffer *staging, int w, int h, uint32_t levels);
+static int half(int n, uint32_t i) { return n >> i > 0 ? n >> i : 1; }
 
-int test_vk_texture_make(test_vk *v, int width, int height, const unsigned char *texels, test_vk_texture *out) {
+/* Level i from level i - 1, halved with a linear blit (a 2 x 2 box, 2 x 2 x 2 for a volume, as
+ * glGenerateMipmap's), every layer of a cube at once. */
+static void blit_level(VkCommandBuffer cmd, VkImage img, uint32_t i, const image_shape *s) {
+    uint32_t layers = shape_layers(s);
+    level_barrier(cmd, img, i - 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                  VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                  VK_PIPELINE_STAGE_TRANSFER_BIT);
+    VkImageBlit b = {{VK_IMAGE_ASPECT_COLOR_BIT, i - 1, 0, layers}, {{0, 0, 0}, {half(s->w, i - 1), half(s->h, i - 1), half(s->d, i - 1)}},
+                     {VK_IMAGE_ASPECT_COLOR_BIT, i, 0, layers}, {{0, 0, 0}, {half(s->w, i), half(s->h, i), half(s->d, i)}}};
+    vkCmdBlitImage(cmd, img, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, img, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &b,
+                   VK_FILTER_LINEAR);
+    level_barrier(cmd, img, i - 1, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                  VK_ACCESS_TRANSFER_READ_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                  VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
+}
+
+/* Level 0 from staging (faces or slices one after the other), the others blitted down from it;
+ * every level left shader-readable. */
+static int upload(test_vk *v, test_vk_texture *t, const test_vk_buffer *staging, const image_shape *s) {
+    VkCommandBufferAllocateInfo ai = {.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO, .commandPool = v->pool,
+                                      .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY, .commandBufferCount = 1};
+    VkCommandBuffer cmd;
+    if (vkAllocateCommandBuffers(v->device, &ai, &cmd) != VK_SUCCESS) return 0;
+    VkCommandBufferBeginInfo bi = {.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
+                                   .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
+    vkBeginCommandBuffer(cmd, &bi);
+    layout_barrier(cmd, t->image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
+                   VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+    VkBufferImageCopy copy = {.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, shape_layers(s)},
+                              .imageExtent = {(uint32_t)s->w, (uint32_t)s->h, (uint32_t)s->d}};
+    vkCmdCopyBufferToImage(cmd, staging->buffer, t->image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+    for (uint32_t i = 1; i < s->levels; i++) blit_level(cmd, t->image, i, s);
+    level_barrier(cmd, t->image, s->levels - 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                  VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                  VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_VERTEX_SHADER_BIT);
+    vkEndCommandBuffer(cmd);
+    int ok = submit_and_wait(v, cmd) == 0;
+    vkFreeCommandBuffers(v->device, v->pool, 1, &cmd);
+    return ok;
+}
+
+int test_vk_texture_make_kind(test_vk *v, test_vk_kind kind, int width, int height, int depth, int mipmapped,
+                              const unsigned char *texels, test_vk_texture *out) {
     memset(out, 0, sizeof *out);
+    image_shape s = {kind, width, height, kind == TEST_VK_3D && depth > 1 ? depth : 1, 1};
+    int biggest = width > height ? width : height;
+    if (s.d > biggest) biggest = s.d;
+    while (mipmapped && (biggest >> s.levels) > 0) s.levels++;
     test_vk_buffer staging;
-    size_t bytes = (size_t)width * (size_t)height * 4;
+    size_t bytes = (size_t)width * (size_t)height * (size_t)s.d * shape_layers(&s) * 4;
     if (!test_vk_buffer_make(v, texels, bytes, &staging)) return 0;
-    VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    int ok = make_image(v, VK_FORMAT_R8G8B8A8_UNORM, usage, VK_IMAGE_ASPECT_COLOR_BIT, width, height, &out->image,
-                        &out->memory, &out->view) &&
-             upload(v, out, &staging, width, height, 1);
+    VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    int ok = make_shaped(v, VK_FORMAT_R8G8B8A8_UNORM, usage, VK_IMAGE_ASPECT_COLOR_BIT, &s, &out->image, &out->memory,
+                         &out->view) &&
+             upload(v, out, &staging, &s);
     test_vk_buffer_free(v, &staging);
     return ok;
+}
+
+int test_vk_texture_make(test_vk *v, int width, int height, const unsigned char *texels, test_vk_texture *out) {
+    return test_vk_texture_make_kind(v, TEST_VK_2D, width, height, 1, 0, texels, out);
+}
+
+int test_vk_texture_make_mipmapped(test_vk *v, int width, int height, const unsigned char *texels, test_vk_texture *out) {
+    return test_vk_texture_make_kind(v, TEST_VK_2D, width, height, 1, 1, texels, out);
 }
 
 void test_vk_texture_free(test_vk *v, test_vk_texture *t) {
@@ -543,55 +613,3 @@ int test_vk_write_png(const test_vk *v, const char *path) {
 #endif
 }
 
-/* Level i from level i - 1, halved with a linear blit (a 2 x 2 box, as glGenerateMipmap's). */
-static void blit_level(VkCommandBuffer cmd, VkImage img, uint32_t i, int w, int h) {
-    int sw = w >> (i - 1), sh = h >> (i - 1), dw = sw > 1 ? sw / 2 : 1, dh = sh > 1 ? sh / 2 : 1;
-    level_barrier(cmd, img, i - 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                  VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                  VK_PIPELINE_STAGE_TRANSFER_BIT);
-    VkImageBlit b = {{VK_IMAGE_ASPECT_COLOR_BIT, i - 1, 0, 1}, {{0, 0, 0}, {sw, sh, 1}},
-                     {VK_IMAGE_ASPECT_COLOR_BIT, i, 0, 1}, {{0, 0, 0}, {dw, dh, 1}}};
-    vkCmdBlitImage(cmd, img, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, img, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &b,
-                   VK_FILTER_LINEAR);
-    level_barrier(cmd, img, i - 1, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                  VK_ACCESS_TRANSFER_READ_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                  VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
-}
-
-/* Level 0 from staging, the others blitted down from it; every level left shader-readable. */
-static int upload(test_vk *v, test_vk_texture *t, const test_vk_buffer *staging, int w, int h, uint32_t levels) {
-    VkCommandBufferAllocateInfo ai = {.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO, .commandPool = v->pool,
-                                      .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY, .commandBufferCount = 1};
-    VkCommandBuffer cmd;
-    if (vkAllocateCommandBuffers(v->device, &ai, &cmd) != VK_SUCCESS) return 0;
-    VkCommandBufferBeginInfo bi = {.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
-                                   .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
-    vkBeginCommandBuffer(cmd, &bi);
-    layout_barrier(cmd, t->image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
-                   VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
-    VkBufferImageCopy copy = {.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
-                              .imageExtent = {(uint32_t)w, (uint32_t)h, 1}};
-    vkCmdCopyBufferToImage(cmd, staging->buffer, t->image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
-    for (uint32_t i = 1; i < levels; i++) blit_level(cmd, t->image, i, w, h);
-    level_barrier(cmd, t->image, levels - 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                  VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                  VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_VERTEX_SHADER_BIT);
-    vkEndCommandBuffer(cmd);
-    int ok = submit_and_wait(v, cmd) == 0;
-    vkFreeCommandBuffers(v->device, v->pool, 1, &cmd);
-    return ok;
-}
-
-int test_vk_texture_make_mipmapped(test_vk *v, int width, int height, const unsigned char *texels, test_vk_texture *out) {
-    memset(out, 0, sizeof *out);
-    uint32_t levels = 1;
-    while ((width >> levels) > 0 || (height >> levels) > 0) levels++;
-    test_vk_buffer staging;
-    if (!test_vk_buffer_make(v, texels, (size_t)width * (size_t)height * 4, &staging)) return 0;
-    VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    int ok = make_image_levels(v, VK_FORMAT_R8G8B8A8_UNORM, usage, VK_IMAGE_ASPECT_COLOR_BIT, width, height, levels,
-                               &out->image, &out->memory, &out->view) &&
-             upload(v, out, &staging, width, height, levels);
-    test_vk_buffer_free(v, &staging);
-    return ok;
-}

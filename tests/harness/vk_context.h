@@ -28,7 +28,7 @@ typedef struct test_vk_buffer {
 
 /* NULL when no Vulkan device can be made; *why (static text or NULL) says why. */
 test_vk *test_vk_create(int width, int height, const char **why);
-void test_vk_destroy(test_vk *v);
+int test_vk_destroy(test_vk *v); /* the validation messages of the whole run, its end included */
 hfx_device *test_vk_device(test_vk *v);
 hfx_vk_target *test_vk_target(test_vk *v);          /* the offscreen target; set its layout before Apply */
 int test_vk_width(const test_vk *v);
@@ -59,6 +59,11 @@ void test_vk_buffer_free(test_vk *v, test_vk_buffer *b);
 int test_vk_texture_make(test_vk *v, int width, int height, const unsigned char *texels, test_vk_texture *out);
 /* The same with every mip level, each a linear halving of the one above (glGenerateMipmap's). */
 int test_vk_texture_make_mipmapped(test_vk *v, int width, int height, const unsigned char *texels, test_vk_texture *out);
+/* A 2D texture, a cube (texels: the six faces +X, -X, +Y, -Y, +Z, -Z one after the other, each
+ * width x height) or a volume (depth slices one after the other), mipmapped or with one level. */
+typedef enum { TEST_VK_2D, TEST_VK_CUBE, TEST_VK_3D } test_vk_kind;
+int test_vk_texture_make_kind(test_vk *v, test_vk_kind kind, int width, int height, int depth, int mipmapped,
+                              const unsigned char *texels, test_vk_texture *out);
 void test_vk_texture_free(test_vk *v, test_vk_texture *t);
 
 #endif

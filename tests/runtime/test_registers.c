@@ -1,6 +1,7 @@
 /* test_registers.c: packed parameters (hfxc --pack-uniforms): one `uniform vec4 hfx_c[N]` per
  * program, as D3D9's constant registers. Checks the register image GL holds (read back element
- * by element), that Apply sends all the changed registers in one call, that GL trimming the
+ * by element), that Apply sends all the changed registers in one call (one changed float4 or
+ * matrix alone in its own, the image kept whole), that GL trimming the
  * array's unread tail costs no error, clones, and a rendered pixel. */
 #include "gl_context.h"
 #include "internal.h"
@@ -163,6 +164,67 @@ static void test_one_call_for_the_changed_range(void) {
     g.UseProgram(0);
 }
 
+/* A float4 (reg 0), a float4x4 (regs 1..4) and a float4 (reg 5): rows of four, whose registers
+ * are their words as they are. */
+static hfx_fx_effect *rows_of_four_effect(void) {
+    static const char *const fs =
+        "#version 330\n"
+        "out vec4 hfx_out0;\n"
+        "uniform vec4 hfx_c[6];\n"
+        "void main() { hfx_out0 = hfx_c[0] + hfx_c[1] + hfx_c[2] + hfx_c[3] + hfx_c[4] + hfx_c[5]; }\n";
+    hfx_fx_effect *fx = tb_new();
+    uint32_t a = tb_param(fx, "A", "A", HFX_CLASS_VECTOR, HFX_TYPE_FLOAT, 1, 4, 0, HFX_NONE, 0, 4);
+    uint32_t w = tb_param(fx, "World", "World", HFX_CLASS_MATRIX, HFX_TYPE_FLOAT, 4, 4, 0, HFX_NONE, 4, 16);
+    uint32_t e = tb_param(fx, "E", "E", HFX_CLASS_VECTOR, HFX_TYPE_FLOAT, 1, 4, 0, HFX_NONE, 20, 4);
+    uint32_t prog = tb_program(fx, tb_vs_pos, fs);
+    tb_attribute(fx, prog, "POSITION0", "POSITION0", 0);
+    uses_reg(fx, prog, a, 0);
+    uses_reg(fx, prog, w, 1);
+    uses_reg(fx, prog, e, 5);
+    fx->programs[prog].reg_count = 6;
+    tb_technique(fx, "T");
+    tb_pass(fx, "P", prog, 0, 0);
+    return fx;
+}
+
+/* One changed float4 or matrix is one glUniform4fv over its own registers, and it also lands in
+ * the register image: a later range over those registers (A and E changed, World not) sends
+ * World's latest value, not the one before the single change. */
+static void test_one_change_keeps_the_image(void) {
+    hfx_device *dev = hfx_device_create_gl(tc_loader);
+    hfx_effect *fx = load(dev, rows_of_four_effect());
+    hfx_pass *pass = first_pass(fx);
+    CHECK_INT(hfx_pass_apply(pass), HFX_OK);
+    float w[16];
+    for (int i = 0; i < 16; i++) w[i] = (float)(40 + i);
+    tc_reset();
+    set(fx, "World", w, 16);
+    CHECK_INT(hfx_pass_apply(pass), HFX_OK);
+    CHECK_INT(tc_calls(), 1);
+    CHECK_INT(tc_count("glUniform4fv"), 1);
+    check_reg(1, 4, 40, 41, 42, 43);
+    check_reg(4, 4, 52, 53, 54, 55);
+    tc_reset();
+    set(fx, "A", (float[4]){1, 2, 3, 4}, 4);
+    CHECK_INT(hfx_pass_apply(pass), HFX_OK);
+    CHECK_INT(tc_calls(), 1);
+    check_reg(0, 4, 1, 2, 3, 4);
+    tc_reset();
+    set(fx, "A", (float[4]){5, 6, 7, 8}, 4);
+    set(fx, "E", (float[4]){9, 10, 11, 12}, 4);
+    CHECK_INT(hfx_pass_apply(pass), HFX_OK);
+    CHECK_INT(tc_calls(), 1); /* registers 0..5 in one call, World's from the image */
+    check_reg(0, 4, 5, 6, 7, 8);
+    check_reg(1, 4, 40, 41, 42, 43);
+    check_reg(3, 4, 48, 49, 50, 51);
+    check_reg(4, 4, 52, 53, 54, 55);
+    check_reg(5, 4, 9, 10, 11, 12);
+    CHECK_INT(g.GetError(), GL_NO_ERROR);
+    hfx_effect_destroy(fx);
+    hfx_device_destroy(dev);
+    g.UseProgram(0);
+}
+
 /* GL keeps hfx_c[0] only: registers past it are kept on the CPU and never sent. */
 static void test_unread_tail(void) {
     hfx_device *dev = hfx_device_create_gl(tc_loader);
@@ -245,6 +307,7 @@ int main(void) {
     vao = tgl_triangles(&g, full, 6, &vbo);
     RUN(test_register_layout);
     RUN(test_one_call_for_the_changed_range);
+    RUN(test_one_change_keeps_the_image);
     RUN(test_unread_tail);
     RUN(test_clones);
     RUN(test_pixel);

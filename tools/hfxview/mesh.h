@@ -24,6 +24,15 @@ typedef struct hv_mesh {
     int oom;          /* an allocation failed while building */
 } hv_mesh;
 
+/* The inputs a mesh never has, and the constant each drawing path (GL, --vulkan, the web page)
+ * gives them, the same everywhere: a white COLOR0 (an untextured, unlit model looks as its
+ * material), no COLOR1, a full weight on the first bone; TEXCOORD1..7 reuse TEXCOORD0, as a
+ * single-UV model would. Any other input the mesh lacks reads the runtime's (0, 0, 0, 1),
+ * what Direct3D 9 gives an element the vertex declaration lacks (docs/runtime.md). */
+typedef struct hv_vertex_constant { const char *semantic; float v[4]; } hv_vertex_constant;
+extern const hv_vertex_constant hv_vertex_constants[];
+extern const size_t hv_vertex_constant_count;
+
 /* Names hv_mesh_builtin knows, NULL-terminated. */
 extern const char *const hv_mesh_names[];
 

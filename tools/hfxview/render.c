@@ -38,12 +38,6 @@ static const vertex_stream streams[] = {
     {"BINORMAL0", offsetof(hv_vertex, binormal), 3},
 };
 
-/* Inputs a mesh never has; the fixed-function values D3D9 would supply. */
-static const struct { const char *semantic; float v[4]; } constants[] = {
-    {"COLOR0", {1, 1, 1, 1}}, {"COLOR1", {0, 0, 0, 0}}, {"BLENDWEIGHT0", {1, 0, 0, 0}},
-    {"BLENDINDICES0", {0, 0, 0, 0}}, {"PSIZE0", {1, 0, 0, 0}},
-};
-
 void hv_bind_attributes(const hv_gl *gl, const hv_gpu_mesh *g, const hfx_pass *pass) {
     gl->BindVertexArray(g->vao);
     gl->BindBuffer(GL_ARRAY_BUFFER, g->vbo);
@@ -55,9 +49,10 @@ void hv_bind_attributes(const hv_gl *gl, const hv_gpu_mesh *g, const hfx_pass *p
                                 (const void *)streams[i].offset);
         gl->EnableVertexAttribArray((GLuint)loc);
     }
-    for (size_t i = 0; i < sizeof constants / sizeof constants[0]; i++) {
-        int loc = hfx_pass_attribute_location(pass, constants[i].semantic);
-        if (loc >= 0) gl->VertexAttrib4f((GLuint)loc, constants[i].v[0], constants[i].v[1], constants[i].v[2], constants[i].v[3]);
+    for (size_t i = 0; i < hv_vertex_constant_count; i++) { /* mesh.h */
+        const hv_vertex_constant *c = &hv_vertex_constants[i];
+        int loc = hfx_pass_attribute_location(pass, c->semantic);
+        if (loc >= 0) gl->VertexAttrib4f((GLuint)loc, c->v[0], c->v[1], c->v[2], c->v[3]);
     }
     /* Other texture coordinate sets reuse the first, as a single-UV model would in XNA. */
     for (int set = 1; set < 8; set++) {

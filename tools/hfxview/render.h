@@ -17,8 +17,8 @@ int hv_gpu_mesh_upload(const hv_gl *gl, hv_gpu_mesh *g, const hv_mesh *m); /* 0,
 void hv_gpu_mesh_release(const hv_gl *gl, hv_gpu_mesh *g);
 
 /* Binds the mesh's attributes to the locations the pass's vertex shader wants, by semantic
- * (POSITION0, NORMAL0, TEXCOORD0, TANGENT0, BINORMAL0); inputs the mesh lacks (COLOR0...)
- * get a constant white. Call after hfx_pass_apply. */
+ * (POSITION0, NORMAL0, TEXCOORD0, TANGENT0, BINORMAL0); inputs the mesh lacks get
+ * hv_vertex_constants (mesh.h), TEXCOORD1..7 the first set. Call after hfx_pass_apply. */
 void hv_bind_attributes(const hv_gl *gl, const hv_gpu_mesh *g, const hfx_pass *pass);
 
 /* DrawIndexedPrimitives: binds the attributes for the applied pass and draws the triangles. */

@@ -9,23 +9,32 @@
 #include "image.h"
 #include "render.h"
 
-typedef enum { KIND_2D, KIND_CUBE, KIND_3D } tex_kind;
+typedef hv_tex_kind tex_kind;
+#define KIND_2D HV_TEX_2D
+#define KIND_CUBE HV_TEX_CUBE
+#define KIND_3D HV_TEX_3D
 
 static int is_texture(hfx_param_type t) { return t >= HFX_TYPE_TEXTURE && t <= HFX_TYPE_TEXTURECUBE; }
 static int is_sampler(hfx_param_type t) { return t >= HFX_TYPE_SAMPLER && t <= HFX_TYPE_SAMPLERCUBE; }
 
-static unsigned int track(hv_textures *t, unsigned int id) {
-    if (id && t->count < sizeof t->ids / sizeof t->ids[0]) t->ids[t->count++] = id;
-    return id;
-}
-
-static unsigned int make(const hv_gl *gl, const hv_image *img, tex_kind kind) {
+/* GL's textures: ids to delete at release. */
+static uint64_t gl_make(void *ctx, const hv_image *img, hv_tex_kind kind) {
+    const hv_gl *gl = ctx;
     if (kind == KIND_CUBE) return hv_texture_cube(gl, img);
     return kind == KIND_3D ? hv_texture_3d(gl, img) : hv_texture_2d(gl, img);
 }
 
+static int gl_set(hfx_param *p, uint64_t id) { return hfx_param_set_texture(p, (unsigned int)id); }
+
+static uint64_t track(hv_textures *t, uint64_t id) {
+    if (id && t->count < sizeof t->ids / sizeof t->ids[0]) t->ids[t->count++] = id;
+    return id;
+}
+
+static uint64_t make(const hv_texture_maker *m, const hv_image *img, tex_kind kind) { return m->make(m->ctx, img, kind); }
+
 /* The default texture of each kind: a checkerboard (a checkered volume for 3D), never black. */
-static unsigned int checker(hv_textures *t, const hv_gl *gl, tex_kind kind) {
+static uint64_t checker(hv_textures *t, const hv_texture_maker *gl, tex_kind kind) {
     if (t->checker[kind]) return t->checker[kind];
     static const unsigned char light[4] = {235, 235, 235, 255}, dark[4] = {90, 90, 100, 255};
     hv_image img;
@@ -36,10 +45,10 @@ static unsigned int checker(hv_textures *t, const hv_gl *gl, tex_kind kind) {
     return t->checker[kind];
 }
 
-static unsigned int from_file(hv_textures *t, const hv_gl *gl, const char *path, tex_kind kind, char *err, size_t errlen) {
+static uint64_t from_file(hv_textures *t, const hv_texture_maker *gl, const char *path, tex_kind kind, char *err, size_t errlen) {
     hv_image img;
     if (hv_image_load(&img, path, err, errlen) != 0) return 0;
-    unsigned int id = track(t, make(gl, &img, kind));
+    uint64_t id = track(t, make(gl, &img, kind));
     hv_image_free(&img);
     if (!id) snprintf(err, errlen, "cannot make a texture from '%s'", path);
     return id;
@@ -88,7 +97,7 @@ static int find_file(const hv_options *o, const char *name, char *out, size_t ou
 
 /* The file the parameter's annotations name (ResourceName, or the SDK's `string name`), when
  * it can be read; else 0 and a note, and the caller falls back to the default. */
-static unsigned int from_annotation(hv_textures *t, const hv_gl *gl, const hv_options *o, hfx_param *p) {
+static uint64_t from_annotation(hv_textures *t, const hv_texture_maker *gl, const hv_options *o, hfx_param *p) {
     static const char *const file_names[] = {"ResourceName", "name", "File", "FileName", NULL};
     const char *name = string_annotation(p, file_names);
     char path[1024], err[512];
@@ -97,7 +106,7 @@ static unsigned int from_annotation(hv_textures *t, const hv_gl *gl, const hv_op
         fprintf(stderr, "hfxview: note: %s names '%s', not found; using the default texture\n", hfx_param_name(p), name);
         return 0;
     }
-    unsigned int id = from_file(t, gl, path, kind_of(p), err, sizeof err);
+    uint64_t id = from_file(t, gl, path, kind_of(p), err, sizeof err);
     if (!id) fprintf(stderr, "hfxview: note: %s; using the default texture\n", err);
     return id;
 }
@@ -108,7 +117,7 @@ static int has_texture_params(hfx_effect *fx) {
     return 0;
 }
 
-static int bind_given(hv_textures *t, const hv_gl *gl, hfx_effect *fx, const hv_kv *given, char *err, size_t errlen) {
+static int bind_given(hv_textures *t, const hv_texture_maker *gl, hfx_effect *fx, const hv_kv *given, char *err, size_t errlen) {
     char name[256];
     size_t n = (size_t)(given->value - 1 - given->name);
     if (n >= sizeof name) n = sizeof name - 1;
@@ -119,13 +128,14 @@ static int bind_given(hv_textures *t, const hv_gl *gl, hfx_effect *fx, const hv_
         snprintf(err, errlen, "--texture: the effect has no texture or sampler parameter '%s'", name);
         return -1;
     }
-    unsigned int id = from_file(t, gl, given->value, kind_of(p), err, errlen);
+    uint64_t id = from_file(t, gl, given->value, kind_of(p), err, errlen);
     if (!id) return -1;
-    hfx_param_set_texture(p, id);
+    gl->set(p, id);
     return 0;
 }
 
-int hv_bind_textures(hv_textures *t, const hv_gl *gl, hfx_effect *fx, const hv_options *o, char *err, size_t errlen) {
+int hv_bind_textures_with(hv_textures *t, const hv_texture_maker *gl, hfx_effect *fx, const hv_options *o, char *err,
+                          size_t errlen) {
     memset(t, 0, sizeof *t);
     for (size_t k = 0; k < o->texture_count; k++)
         if (bind_given(t, gl, fx, &o->textures[k], err, errlen) != 0) return -1;
@@ -137,14 +147,22 @@ int hv_bind_textures(hv_textures *t, const hv_gl *gl, hfx_effect *fx, const hv_o
         unsigned int current = 0;
         if (!(is_texture(type) || (samplers_too && is_sampler(type)))) continue;
         if (hfx_param_get_texture(p, &current) == HFX_OK && current) continue; /* given above */
-        unsigned int id = from_annotation(t, gl, o, p);
+        uint64_t id = from_annotation(t, gl, o, p);
         if (!id) id = checker(t, gl, kind_of(p));
-        if (id) hfx_param_set_texture(p, id);
+        if (id) gl->set(p, id);
     }
     return 0;
 }
 
+int hv_bind_textures(hv_textures *t, const hv_gl *gl, hfx_effect *fx, const hv_options *o, char *err, size_t errlen) {
+    const hv_texture_maker m = {(void *)gl, gl_make, gl_set};
+    return hv_bind_textures_with(t, &m, fx, o, err, errlen);
+}
+
 void hv_textures_release(hv_textures *t, const hv_gl *gl) {
-    if (t->count) gl->DeleteTextures((GLsizei)t->count, t->ids);
+    for (size_t i = 0; i < t->count; i++) {
+        GLuint id = (GLuint)t->ids[i];
+        gl->DeleteTextures(1, &id);
+    }
     memset(t, 0, sizeof *t);
 }

@@ -6,19 +6,33 @@
 #define HFXVIEW_TEXTURES_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "gl.h"
 #include "hfx/hfx.h"
+#include "image.h"
 #include "options.h"
 
 typedef struct hv_textures {
-    unsigned int ids[64];
+    uint64_t ids[64];        /* what the maker made (GL: texture names to delete) */
     size_t count;
-    unsigned int checker[3]; /* the default 2D, cube and 3D textures, made on first use */
+    uint64_t checker[3];     /* the default 2D, cube and 3D textures, made on first use */
 } hv_textures;
+
+typedef enum { HV_TEX_2D, HV_TEX_CUBE, HV_TEX_3D } hv_tex_kind;
+
+/* Where the textures are made: GL's (hv_bind_textures) or --vulkan's (vulkan.c). make returns
+ * a non-zero handle (a GL name, a VkImageView), 0 on failure; set gives it to a parameter. */
+typedef struct hv_texture_maker {
+    void *ctx;
+    uint64_t (*make)(void *ctx, const hv_image *img, hv_tex_kind kind);
+    int (*set)(hfx_param *p, uint64_t handle);
+} hv_texture_maker;
 
 /* 0, or -1 with a message (--texture: an unknown parameter name or an unreadable image).
  * Files named by annotations that cannot be read are a note on stderr and the default. */
+int hv_bind_textures_with(hv_textures *t, const hv_texture_maker *m, hfx_effect *fx, const hv_options *o, char *err,
+                          size_t errlen);
 int hv_bind_textures(hv_textures *t, const hv_gl *gl, hfx_effect *fx, const hv_options *o, char *err, size_t errlen);
 void hv_textures_release(hv_textures *t, const hv_gl *gl);
 

@@ -19,6 +19,6 @@ int hv_vk_open(hv_vk **out, int width, int height, hfx_device **dev, char *err, 
 int hv_vk_render(hv_vk *g, hfx_effect *fx, hfx_technique *t, const hv_options *o, const hv_mesh *m, hv_image *img,
                  size_t *failed_pass);
 size_t hv_vk_pipelines(const hv_vk *g);   /* pipelines the device made */
-void hv_vk_close(hv_vk *g);                /* destroy the effects first */
+int hv_vk_close(hv_vk *g);                 /* destroy the effects first; the validation messages sent */
 
 #endif

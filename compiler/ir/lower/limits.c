@@ -21,6 +21,14 @@ static void check_expr(ir_ctx *c, ir_expr **slot, void *data) {
         (*bad)++;
         return;
     }
+    if (ir_integer_division(e) && ir_is_const(e->a[1])) { /* fxc refuses an integer / or % by a constant 0 */
+        for (unsigned i = 0; i < hfx_type_components(e->a[1]->type) && i < 16; i++)
+            if (e->a[1]->cval[i] == 0) {
+                hfx_error(c->diags, e->a[1]->loc, 3033, "division by zero");
+                (*bad)++;
+                break;
+            }
+    }
     if (e->kind == IE_INDEX && e->a[0]->type->kind == TY_ARRAY && e->a[0]->type->elem->kind == TY_SAMPLER) {
         hfx_error(c->diags, e->loc, X_UNSUPPORTED, "arrays of samplers are not supported");
         (*bad)++;

@@ -438,6 +438,41 @@ static void ps_1_4_drawn(void) {
     close_fixture(&x);
 }
 
+/* vs_1_1 (no length fields; relative sources carry no address token): mov a0.x, c8.x rounds 0.6 to
+ * 1 (the reference's "rounding to nearest"; truncation would give 0); mov oD0, c6[a0.x] is
+ * Colors[1] = (0, 0, 0.3, 0), which ps_2_0's mov oC0, v0 shows. */
+static void vs_1_1_drawn(void) {
+    fixture x;
+    open_fixture(&x, false);
+    static const ctab_const k[] = {{"Colors", 2, 6, 2, 1, 3, 1, 4, 2}};
+    uint32_t vw[256];
+    size_t n = 0;
+    vw[n++] = VS(1, 1);
+    n += put_ctab(vw + n, "hand", k, 1);
+    const uint32_t code[] = {
+        0x1f, 0x80000000u, DST(R_INPUT, 0, 0xf),
+        0x51, DST(R_CONST, 8, 0xf), fbits(0.6f), 0, 0, 0,
+        0x01, DST(R_ADDR, 0, 0x1), SRC(R_CONST, 8, 0),
+        0x01, DST(R_RASTOUT, 0, 0xf), SRC(R_INPUT, 0, XYZW),
+        0x01, DST(R_ATTROUT, 0, 0xf), SRC(R_CONST, 6, XYZW) | REL,
+        END_TOKEN};
+    memcpy(vw + n, code, sizeof code);
+    n += sizeof code / 4;
+    static const uint32_t ps[] = {PS(2, 0), OP(0x1f, 2), 0x80000000u, DST(R_INPUT, 0, 0xf),
+                                  OP(0x01, 2), DST(R_COLOROUT, 0, 0xf), SRC(R_INPUT, 0, XYZW), END_TOKEN};
+    d3d9_shader *v = decode(&x, vw, n, 0), *p = decode(&x, ps, sizeof ps / 4, 1024);
+    hfx_fx_program prog;
+    int rc = v && p ? hfx_codegen_d3d9_program(x.cg, v, p, false, &prog) : -1;
+    CHECK_INT(rc, 0);
+    if (rc == 0 && gl) {
+        unsigned char left[4], right[4];
+        draw(&prog, x.fx, left, right);
+        near(right, 0, 0, 0.3f, 0);
+    }
+    hfx_fx_program_clear(&prog);
+    close_fixture(&x);
+}
+
 static void old_forms_refused_with_location(void) {
     fixture x;
     open_fixture(&x, true);
@@ -474,6 +509,7 @@ int main(void) {
     RUN(vs_ps_2_0_drawn);
     RUN(ps_1_1_drawn);
     RUN(ps_1_4_drawn);
+    RUN(vs_1_1_drawn);
     RUN(old_forms_refused_with_location);
     RUN(vs_ps_3_0_flow_drawn);
     RUN(subroutines_refused_at_instruction);

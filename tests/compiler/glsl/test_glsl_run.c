@@ -434,14 +434,15 @@ static void pow_of_negative_base(void) {
     check_pixel(src, u, 1, 0.5f, 0.5f, 0, 1);
 }
 
-/* A small constant power of an expression (not a variable) is products through a helper, with
- * |x| for odd powers: X - 0.25 = -0.75 gives 0.75, 0.5625, 0.421875, 0.31640625. */
+/* A small constant power of an expression (not a variable) is fxc's products of it, computed
+ * once: X - 0.25 = -0.75 gives -0.75, 0.5625, -0.421875, 0.31640625 (the sign kept). */
 static void pow_small_of_expression(void) {
     const char *src = "float X;\n" VS_PASS
-        "float4 ps() : COLOR { return float4(pow(X - 0.25, 1), pow(X - 0.25, 2), pow(X - 0.25, 3), pow(X - 0.25, 4)); }\n"
+        "float4 ps() : COLOR { return float4(pow(X - 0.25, 1) + 1, pow(X - 0.25, 2), pow(X - 0.25, 3) + 1, pow(X - 0.25, 4)); }\n"
         TECH("ps()");
     const uval u[] = {{"X", 'f', 1, {-0.5f}, {0}}};
-    check_pixel(src, u, 1, 0.75f, 0.5625f, 0.421875f, 0.31640625f);
+    /* fxc's products keep the sign: (-0.75 + 1, 0.5625, -0.421875 + 1, 0.31640625) */
+    check_pixel(src, u, 1, 0.25f, 0.5625f, 0.578125f, 0.31640625f);
 }
 
 /* (float[4])U and (int[4])U take U's components in order; (int)-1.6 truncates to -1:

@@ -39,7 +39,7 @@ static void semantics_and_registers(void) {
     CHECK_STR(r->errors, "");
     CHECK_STR(r->dump, "var sampler s : register(s0)\n"
                        "var float4 c : register(c12)\n"
-                       "var float4 k : register(c3)\n"
+                       "var float4 k : register(vs,c3)\n" /* the profile kept: lower/registers.c checks it */
                        "var float4 x : COLOR : register(c1)\n");
     hfx_decl *x = tp_find(r, "x");
     CHECK(x && x->semantic && x->reg);
