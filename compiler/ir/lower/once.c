@@ -13,6 +13,7 @@
  * again, and one with side effects is left to the printer's helper (glsl_intrin.c). */
 #include <math.h>
 
+#include "eval.h"
 #include "ir/ir.h"
 
 typedef struct once {
@@ -30,13 +31,13 @@ bool ir_pow_products(const ir_expr *y, unsigned comps, int *n) {
     if (!(k >= -2147483647.0 && k <= 2147483647.0) || k != trunc(k)) return false;
     /* fxc: the highest set bit of |n| plus the set bits, less one, multiplications at most
      * 2c + 1 for a positive n and c + 1 for a negative one (c: the components) */
-    uint32_t m = (uint32_t)fabs(k);
+    uint32_t m = hfx_ev_uint(fabs(k));
     int bits = 0, top = -1;
     for (int i = 0; i < 32; i++)
         if (m >> i & 1) bits++, top = i;
     int limit = k < 0 ? (int)comps + 1 : 2 * (int)comps + 1;
     if (top + bits - 1 > limit) return false;
-    *n = (int)k;
+    *n = hfx_ev_int(k);
     return true;
 }
 
