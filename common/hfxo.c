@@ -11,6 +11,7 @@
 #include <string.h>
 #include <zlib.h>
 
+#include "bytes.h"
 #include "eval_code.h"
 #include "states.h"
 
@@ -60,9 +61,7 @@ static uint32_t crc32_of(const uint8_t *p, size_t n) {
     return (uint32_t)crc;
 }
 
-static uint32_t rd32(const uint8_t *p) {
-    return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
-}
+static uint32_t rd32(const uint8_t *p) { return hfx_le32(p); }
 
 /* ============================== writer ============================== */
 

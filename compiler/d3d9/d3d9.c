@@ -5,6 +5,8 @@
 
 #include <stdio.h>
 
+#include "bytes.h"
+
 static const d3d9_op_info ops[] = {
 #define D3D9_OP(id, name, token, dst, src, slots, vs0, vs1, ps0, ps1, flags) \
     {name, token, dst, src, slots, vs0, vs1, ps0, ps1, flags},
@@ -33,8 +35,7 @@ const char *d3d9_model_name(d3d9_stage stage, uint8_t model) {
 }
 
 uint32_t d3d9_word(const d3d9_reader *r, uint32_t i) {
-    const unsigned char *p = r->bytes + (size_t)i * 4;
-    return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
+    return hfx_le32(r->bytes + (size_t)i * 4);
 }
 
 void d3d9_fail(d3d9_reader *r, uint32_t word, unsigned code, const char *fmt, ...) {

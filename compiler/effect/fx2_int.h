@@ -8,6 +8,7 @@
 #include "d3d9/d3d9.h"
 #include "effect/codegen.h"
 #include "effect/fx2.h"
+#include "bytes.h"
 #include "eval.h"
 
 /* D3DXPARAMETER_CLASS and D3DXPARAMETER_TYPE as the file stores them. */
@@ -29,6 +30,9 @@ typedef struct fx2_blob {
     uint32_t size;
     uint32_t at;              /* its offset in the file */
 } fx2_blob;
+
+/* A selector blob starts with the length of the array's name; 0 when the blob is too short. */
+static inline uint32_t hfx_fx2_name_len(const fx2_blob *b) { return b->size >= 4 ? hfx_le32(b->data) : 0; }
 
 /* A type as the file lays it out (a typedef record). */
 typedef struct fx2_type {

@@ -138,8 +138,7 @@ static void put_state(fx2_reader *r, sbuf *out, const fx2_raw *raw, const char *
     if (raw->usage == USE_PARAM) {
         sb_printf(out, "<%.*s>;\n", (int)strnlen((const char *)raw->blob.data, raw->blob.size), (const char *)raw->blob.data);
     } else if (raw->usage == USE_SELECTOR && raw->object != HFX_NONE) {
-        uint32_t len = raw->blob.data[0] | (uint32_t)raw->blob.data[1] << 8 | (uint32_t)raw->blob.data[2] << 16 |
-                       (uint32_t)raw->blob.data[3] << 24,
+        uint32_t len = hfx_fx2_name_len(&raw->blob),
                  skip = 4 + ((len + 3) & ~3u);
         if (skip > raw->blob.size) skip = raw->blob.size;
         fx2_blob code = {raw->blob.data + skip, raw->blob.size - skip, raw->blob.at + skip};

@@ -11,14 +11,10 @@
 
 enum { FX2_MAGIC = 0xFEFF0901u, XNA_MAGIC = 0xBCF00BCFu, MAX_TYPE_DEPTH = 16, MAX_ELEMENTS = 1u << 16 };
 
-static uint32_t le32(const uint8_t *p) {
-    return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
-}
-
 int hfx_fx2_is_binary(const void *data, size_t size) {
     const uint8_t *p = data;
     if (!p || size < 4) return 0;
-    uint32_t m = le32(p);
+    uint32_t m = hfx_le32(p);
     return m == FX2_MAGIC || m == XNA_MAGIC || (p[0] == 'X' && p[1] == 'N' && p[2] == 'B');
 }
 
@@ -64,7 +60,7 @@ bool hfx_fx2_u32(fx2_reader *r, uint32_t off, uint32_t *v, const char *what) {
         *v = 0;
         return false;
     }
-    *v = le32(r->data + off);
+    *v = hfx_le32(r->data + off);
     return true;
 }
 
@@ -241,7 +237,7 @@ static uint32_t read_annotations(fx2_reader *r, reader_ext *x, uint32_t *off, ui
             out_of_memory(r);
             break;
         }
-        for (uint32_t k = 0; k < a->count; k++) a->data[k] = le32(r->data + value_off + 4 * k);
+        for (uint32_t k = 0; k < a->count; k++) a->data[k] = hfx_le32(r->data + value_off + 4 * k);
     }
     return added;
 }
@@ -293,6 +289,18 @@ static uint32_t new_param(fx2_reader *r, param_side *ps, const fx2_type *t, uint
 static bool is_sampler(uint32_t t) { return t >= PT_SAMPLER && t <= PT_SAMPLERCUBE; }
 
 /* The sampler block at off (state count, then state records): its raws and hfx sampler. */
+
+/* A state assignment at off, not yet read: no usage, no state, nothing but where it stands. */
+static fx2_raw *new_raw(fx2_reader *r, uint32_t off) {
+    if (!HFX_ARENA_GROW(r->arena, r->raws, r->raw_count, r->raw_cap, 16)) return NULL;
+    fx2_raw *raw = &r->raws[r->raw_count++];
+    memset(raw, 0, sizeof *raw);
+    raw->at = off;
+    raw->usage = USE_NONE;
+    raw->state = HFX_NONE;
+    return raw;
+}
+
 static uint32_t read_sampler(fx2_reader *r, uint32_t param, uint32_t off) {
     hfx_fx_effect *fx = r->fx;
     uint32_t count;
@@ -310,13 +318,9 @@ static uint32_t read_sampler(fx2_reader *r, uint32_t param, uint32_t off) {
     r->param_raw_first[param] = r->raw_count;
     off += 4;
     for (uint32_t i = 0; i < count && !r->failed; i++, off += 16) {
-        if (!HFX_ARENA_GROW(r->arena, r->raws, r->raw_count, r->raw_cap, 16)) break;
-        fx2_raw *raw = &r->raws[r->raw_count++];
+        fx2_raw *raw = new_raw(r, off);
         uint32_t type_off;
-        memset(raw, 0, sizeof *raw);
-        raw->at = off;
-        raw->usage = USE_NONE;
-        raw->state = HFX_NONE;
+        if (!raw) break;
         if (!hfx_fx2_u32(r, off, &raw->op, "sampler state") || !hfx_fx2_u32(r, off + 8, &type_off, "sampler state") ||
             !hfx_fx2_u32(r, off + 12, &raw->value_at, "sampler state"))
             break;
@@ -429,7 +433,7 @@ static bool read_params(fx2_reader *r, reader_ext *x, uint32_t *off, uint32_t co
     for (uint32_t i = 0; i < fx->top_param_count; i++) {
         const hfx_fx_param *p = &fx->params[i];
         if (p->klass == HFX_CLASS_OBJECT) continue;
-        for (uint32_t k = 0; k < p->words; k++) fx->values[p->offset + k] = le32(r->data + r->param_value_at[i] + 4 * k);
+        for (uint32_t k = 0; k < p->words; k++) fx->values[p->offset + k] = hfx_le32(r->data + r->param_value_at[i] + 4 * k);
     }
     return true;
 }
@@ -438,13 +442,9 @@ static bool read_params(fx2_reader *r, reader_ext *x, uint32_t *off, uint32_t co
 
 static void read_state(fx2_reader *r, uint32_t off) {
     hfx_fx_effect *fx = r->fx;
-    if (!HFX_ARENA_GROW(r->arena, r->raws, r->raw_count, r->raw_cap, 16)) return;
-    fx2_raw *raw = &r->raws[r->raw_count++];
+    fx2_raw *raw = new_raw(r, off);
     uint32_t type_off;
-    memset(raw, 0, sizeof *raw);
-    raw->at = off;
-    raw->usage = USE_NONE;
-    raw->state = HFX_NONE;
+    if (!raw) return;
     if (!hfx_fx2_u32(r, off, &raw->op, "state") || !hfx_fx2_u32(r, off + 4, &raw->index, "state") ||
         !hfx_fx2_u32(r, off + 8, &type_off, "state") || !hfx_fx2_u32(r, off + 12, &raw->value_at, "state"))
         return;
@@ -686,8 +686,8 @@ bool hfx_fx2_xnb(fx2_reader *r, uint32_t *start) {
 static bool find_container(fx2_reader *r, uint32_t *start) {
     const uint8_t *p = r->data;
     *start = 0;
-    if (r->size >= 8 && le32(p) == XNA_MAGIC) {
-        uint32_t skip = le32(p + 4);
+    if (r->size >= 8 && hfx_le32(p) == XNA_MAGIC) {
+        uint32_t skip = hfx_le32(p + 4);
         if (skip < 8 || skip > r->size) {
             hfx_fx2_fatal(r, 4, "XNA effect header: %u bytes of header do not fit the data", skip);
             return false;

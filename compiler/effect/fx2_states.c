@@ -217,9 +217,7 @@ static void expression(fx2_reader *r, const fx2_raw *raw, hfx_fx_state *st, cons
 /* The selector `(Array[expression])`: the blob holds the array's name (length first), then the
  * expression; the state becomes the index. */
 static void selector(fx2_reader *r, fx2_raw *raw, hfx_fx_state *st) {
-    uint32_t len = raw->blob.size >= 4 ? (uint32_t)raw->blob.data[0] | (uint32_t)raw->blob.data[1] << 8 |
-                                             (uint32_t)raw->blob.data[2] << 16 | (uint32_t)raw->blob.data[3] << 24
-                                       : 0;
+    uint32_t len = hfx_fx2_name_len(&raw->blob);
     if (len > raw->blob.size - 4 || raw->blob.size < 4) {
         hfx_error(r->diags, (hfx_loc){r->file, 0, raw->blob.at}, X_FX2_BINARY, "state %s: a shader array selector "
                   "of %u bytes names an array of %u", state_name(raw), raw->blob.size, len);
