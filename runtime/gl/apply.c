@@ -120,7 +120,7 @@ int hfx_pass_apply(hfx_pass *p) {
     uint32_t r = fx->log[seen & fx->log_mask];
     hfx_slot *s = &prog->slots[r];
     uint64_t stamp = fx->stamps[r];
-    if (s->held == stamp || s->mode - (uint32_t)SLOT_FLOAT > SLOT_REG4 - SLOT_FLOAT) return hfx_rt_upload_log(fx, prog);
+    if (s->held == stamp || (s->mode != SLOT_FLOAT && s->mode != SLOT_REG4)) return hfx_rt_upload_log(fx, prog);
     prog->memo_seen = seen + 1;
     s->held = stamp;
     const uint32_t *src = fx->values + s->up.offset;
