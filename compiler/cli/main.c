@@ -96,7 +96,8 @@ static const char *value_of(const char *arg, const char *name, int argc, char **
 }
 
 typedef enum {
-    OPT_OUTPUT, OPT_DEFINE, OPT_INCLUDE, OPT_PROFILE, OPT_ENTRY, OPT_TARGET, OPT_EMIT, OPT_JOBS, OPT_DEPFILE, OPT_DEP_TARGET
+    OPT_OUTPUT, OPT_DEFINE, OPT_INCLUDE, OPT_PROFILE, OPT_ENTRY, OPT_TARGET, OPT_EMIT, OPT_JOBS, OPT_DEPFILE, OPT_DEP_TARGET,
+    OPT_FXC_OUTPUT, OPT_FORMAT, OPT_HEADER, OPT_HEADER_NAME, OPT_LISTING
 } opt_kind;
 
 static const struct {
@@ -107,13 +108,36 @@ static const struct {
     {"--define", OPT_DEFINE}, {"--include", OPT_INCLUDE}, {"--depfile", OPT_DEPFILE},
     {"-MF", OPT_DEPFILE}, {"-MT", OPT_DEP_TARGET},
     {"-o", OPT_OUTPUT}, {"-D", OPT_DEFINE}, {"-I", OPT_INCLUDE}, {"-T", OPT_PROFILE}, {"-E", OPT_ENTRY},
-    {"-j", OPT_JOBS}, {"-Fo", OPT_OUTPUT},
-    {"/Fo", OPT_OUTPUT}, {"/D", OPT_DEFINE}, {"/I", OPT_INCLUDE}, {"/T", OPT_PROFILE}, {"/E", OPT_ENTRY},
+    {"-j", OPT_JOBS}, {"-Fo", OPT_FXC_OUTPUT}, {"--format", OPT_FORMAT}, {"/Fh", OPT_HEADER}, {"-Fh", OPT_HEADER},
+    {"/Vn", OPT_HEADER_NAME}, {"-Vn", OPT_HEADER_NAME}, {"/Fc", OPT_LISTING}, {"-Fc", OPT_LISTING},
+    {"/Fo", OPT_FXC_OUTPUT}, {"/D", OPT_DEFINE}, {"/I", OPT_INCLUDE}, {"/T", OPT_PROFILE}, {"/E", OPT_ENTRY},
 };
+
+/* fxc's outputs: /Fo writes fxc's fx_2_0 (-o hfx's .hfxo), /Fh a C header, /Vn its array, /Fc
+ * the listing, --format hfxo|fxc the format of whichever output option is given. */
+static int set_fxc_option(cli_options *o, opt_kind kind, const char *v) {
+    switch (kind) {
+    case OPT_FXC_OUTPUT:
+        o->output = v;
+        if (!o->format_given) o->format = CLI_FORMAT_FXC;
+        break;
+    case OPT_FORMAT:
+        if (strcmp(v, "hfxo") && strcmp(v, "fxc")) return usage_error("unknown format '%s' (hfxo or fxc)", v);
+        o->format = strcmp(v, "fxc") ? CLI_FORMAT_HFXO : CLI_FORMAT_FXC;
+        o->format_given = true;
+        break;
+    case OPT_HEADER: o->header = v; break;
+    case OPT_HEADER_NAME: o->header_name = v; break;
+    default: o->listing = v; break;
+    }
+    return EXIT_OK;
+}
 
 static int set_valued(cli_options *o, opt_kind kind, const char *v) {
     switch (kind) {
     case OPT_OUTPUT: o->output = v; break;
+    case OPT_FXC_OUTPUT: case OPT_FORMAT: case OPT_HEADER: case OPT_HEADER_NAME: case OPT_LISTING:
+        return set_fxc_option(o, kind, v);
     case OPT_DEFINE: if (push(&o->defines, &o->define_count, v)) return EXIT_USAGE; break;
     case OPT_INCLUDE: if (push(&o->include_dirs, &o->include_dir_count, v)) return EXIT_USAGE; break;
     case OPT_PROFILE: o->profile = v; break;
@@ -150,6 +174,8 @@ static int flag(cli_options *o, const char *a, bool *handled) {
     else if (!strcmp(a, "-MD") || !strcmp(a, "-MMD")) o->depfile = true; /* no system headers to leave out */
     else if (!strcmp(a, "-MP")) o->depfile_phony = true;
     else if (!strcmp(a, "/nologo") || !strcmp(a, "-nologo")) {
+    } else if (!strcmp(a, "/Zpr") || !strcmp(a, "-Zpr") || !strcmp(a, "/Zpc") || !strcmp(a, "-Zpc")) {
+        o->matrix_packing = a[3] == 'r' ? 1 : -1;
     } else if (!strcmp(a, "/Zi") || !strcmp(a, "/Od") || !strcmp(a, "/Gec") || !strcmp(a, "/Gfp") ||
                (a[0] == '/' && a[1] == 'O' && a[2] >= '0' && a[2] <= '3' && !a[3])) {
         /* fxc's debug and optimisation switches change nothing here. */
