@@ -225,7 +225,7 @@ static void resource_at(writer *w, const place *at, uint32_t usage, const void *
 static uint32_t expr_typedef(writer *w, const hfx_state_info *info) {
     if (info->kind == HFX_SV_FLOAT) return plain_typedef(w, PT_FLOAT, PC_SCALAR, 1, 1);
     if (info->kind == HFX_SV_VECTOR) return plain_typedef(w, PT_FLOAT, PC_VECTOR, 1, 4);
-    return plain_typedef(w, info->kind == HFX_SV_BOOL ? PT_BOOL : PT_INT, PC_SCALAR, 1, 1);
+    return plain_typedef(w, PT_INT, PC_MATRIX_ROWS, 1, 1);
 }
 
 /* An expression's FXLVM program (a selector's with the array's name before it). */
@@ -311,7 +311,7 @@ static bool state(writer *w, const hfx_fx_state *s, const place *at, uint32_t *o
     }
     switch (s->kind) {
     case HFX_FX_VALUE_INT:
-        *type = plain_typedef(w, info->kind == HFX_SV_BOOL ? PT_BOOL : PT_INT, PC_SCALAR, 1, 1);
+        *type = plain_typedef(w, PT_INT, PC_MATRIX_ROWS, 1, 1); /* fxc's spelling of a DWORD state: an int 1x1 */
         *value = u32(w, &w->data, (uint32_t)s->i);
         return true;
     case HFX_FX_VALUE_FLOAT: {

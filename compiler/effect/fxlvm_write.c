@@ -438,7 +438,17 @@ static void run(wr *w, const uint32_t *code, uint32_t words) {
 
 /* The CTAB comment: a shader's constant table layout, each input a float4 register range with
  * its type (class, type, rows, cols, elements), as fxlvm.c and MojoShader read it. */
+/* A constant table lists its entries by name, as fxc's (insertion: a handful of inputs). */
+static void sort_by_name(wr *w) {
+    for (uint32_t i = 1; i < w->in_count; i++)
+        for (uint32_t j = i; j > 0 && strcmp(w->fx->params[w->in[j - 1].param].name, w->fx->params[w->in[j].param].name) > 0; j--) {
+            input t = w->in[j];
+            w->in[j] = w->in[j - 1], w->in[j - 1] = t;
+        }
+}
+
 static void put_ctab(wr *w, uint32_t *out, uint32_t *count, uint32_t cap) {
+    sort_by_name(w);
     uint32_t names = 28 + 20 * w->in_count, len = 0, name_at[MAX_INPUTS];
     for (uint32_t i = 0; i < w->in_count; i++)
         name_at[i] = names + len, len += ((uint32_t)strlen(w->fx->params[w->in[i].param].name) + 4) & ~3u;
@@ -457,7 +467,7 @@ static void put_ctab(wr *w, uint32_t *out, uint32_t *count, uint32_t cap) {
         const hfx_fx_param *p = &w->fx->params[w->in[i].param];
         memcpy(b + name_at[i], p->name, strlen(p->name) + 1);
         uint16_t klass = p->klass == HFX_CLASS_MATRIX ? 2 : p->klass == HFX_CLASS_VECTOR ? 1 : 0;
-        uint16_t t[8] = {klass, (uint16_t)p->type, (uint16_t)p->rows, (uint16_t)p->cols, (uint16_t)p->elements, 0, 0, 0};
+        uint16_t t[8] = {klass, (uint16_t)p->type, (uint16_t)p->rows, (uint16_t)p->cols, (uint16_t)(p->elements ? p->elements : 1), 0, 0, 0};
         memcpy(b + types + 16 * i, t, 16);
     }
     memcpy(b + strings + 1, "hfx", 3);
