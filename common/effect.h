@@ -83,9 +83,9 @@ typedef struct hfx_fx_state {
     int32_t i;
     float f[4];
     uint32_t ref;          /* param index for PARAM, program index for PROGRAM, first word for EXPR */
+    uint32_t line, col;    /* where the state was written, for load-time reports */
     uint32_t source;       /* VertexShader / PixelShader: 1 + the shader parameter the value names (the array an
                             * EXPR picks from, `= <vs>`); 0 when the shader is given inline (fx_2_0's writer) */
-    uint32_t line, col;    /* where the state was written, for load-time reports */
 } hfx_fx_state;
 
 typedef enum { HFX_FX_DIM_2D, HFX_FX_DIM_1D, HFX_FX_DIM_3D, HFX_FX_DIM_CUBE } hfx_fx_dim;
@@ -95,6 +95,8 @@ typedef struct hfx_fx_sampler {
     uint32_t texture_param; /* from `Texture = <t>`; HFX_NONE if the sampler names no texture */
     hfx_fx_dim dim;         /* what the shaders sample it as */
     uint32_t first_state, state_count; /* the sampler_state block, less Texture */
+    uint32_t texture_slot;  /* how many of those states came before Texture (an fx_2_0 binary's order, which
+                             * its writer keeps; 0 otherwise) */
 } hfx_fx_sampler;
 
 typedef struct hfx_fx_attribute {

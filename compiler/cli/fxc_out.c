@@ -67,6 +67,12 @@ static void write_header(const cli_options *o, cli_job *job, const uint8_t *data
 void cli_write_fxc(const cli_options *o, cli_job *job, const hfx_fx_effect *fx) {
     bool fo = o->output && o->format == CLI_FORMAT_FXC;
     if (!fo && !o->header && !o->listing) return;
+    if (o->entry) { /* fxc's /T vs_* | ps_* /E: one shader's bytecode, the D3D9 back end's output */
+        job->error = text_printf("'%s': one shader's bytecode (/E with /Fo, /Fh, /Fc) needs hfxc's D3D9 back end, "
+                                 "not built in yet; -o writes .hfxo", job->input);
+        job->ok = false;
+        return;
+    }
     hfx_fx2_write_options opt = {bytecode_of, NULL, o->matrix_packing};
     void *data = NULL;
     size_t size = 0;

@@ -273,6 +273,17 @@ static bool stage_code(writer *w, uint32_t program, int stage, const void **data
     return false;
 }
 
+/* The program a pass's shader state takes its bytecode from: the pass's, or in a pass drawn from
+ * shader arrays (which has none), any variant's: a stage given inline is the same in each. */
+static uint32_t program_of(const writer *w, const hfx_fx_state *s, const place *at) {
+    const hfx_fx_effect *fx = w->fx;
+    if (s->ref != HFX_NONE || at->a >= fx->technique_count) return s->ref;
+    uint32_t pass = fx->techniques[at->a].first_pass + at->b;
+    for (uint32_t i = 0; i < fx->variant_count; i++)
+        if (fx->variants[i].pass == pass) return fx->variants[i].program;
+    return HFX_NONE;
+}
+
 static void shader_state(writer *w, const hfx_fx_state *s, const place *at, uint32_t *type, uint32_t *value) {
     int stage = s->id == HFX_ST_PIXELSHADER;
     uint32_t id = new_object(w);
@@ -296,7 +307,7 @@ static void shader_state(writer *w, const hfx_fx_state *s, const place *at, uint
     }
     const void *data;
     size_t size;
-    if (!stage_code(w, s->ref, stage, &data, &size, s) || !size) return; /* NULL: an object without data */
+    if (!stage_code(w, program_of(w, s, at), stage, &data, &size, s) || !size) return; /* NULL: no data */
     resource_at(w, at, USE_DATA, data, (uint32_t)size);
 }
 
@@ -342,21 +353,27 @@ static bool state(writer *w, const hfx_fx_state *s, const place *at, uint32_t *o
 
 /* --- parameters ------------------------------------------------------------------------------ */
 
-/* A sampler's value: state count, then records; its Texture first (a `<name>` resource). */
+/* A sampler's Texture record (a `<name>` resource) at position `count` of its block. */
+static void sampler_texture(writer *w, uint32_t top, uint32_t element, const hfx_fx_sampler *s, uint32_t count,
+                            uint32_t rec[4]) {
+    const hfx_fx_param *t = &w->fx->params[s->texture_param];
+    place at = {HFX_NONE, top, element, count};
+    rec[0] = OP_TEXTURE, rec[1] = 0;
+    rec[2] = plain_typedef(w, t->klass == HFX_CLASS_OBJECT ? (uint32_t)t->type : PT_TEXTURE, PC_OBJECT, 0, 0);
+    rec[3] = u32(w, &w->data, new_object(w));
+    char path[512];
+    param_path(w->fx, s->texture_param, path, sizeof path);
+    resource_at(w, &at, USE_PARAM, path, (uint32_t)strlen(path) + 1);
+}
+
+/* A sampler's value: state count, then records, its Texture where the block had it. */
 static uint32_t sampler_value(writer *w, uint32_t top, uint32_t element, const hfx_fx_sampler *s) {
     uint32_t rec[64][4], count = 0;
-    if (s->texture_param != HFX_NONE && s->texture_param < w->fx->param_count) {
-        const hfx_fx_param *t = &w->fx->params[s->texture_param];
-        place at = {HFX_NONE, top, element, count};
-        rec[count][0] = OP_TEXTURE, rec[count][1] = 0;
-        rec[count][2] = plain_typedef(w, t->klass == HFX_CLASS_OBJECT ? (uint32_t)t->type : PT_TEXTURE, PC_OBJECT, 0, 0);
-        rec[count][3] = u32(w, &w->data, new_object(w));
-        char path[512];
-        param_path(w->fx, s->texture_param, path, sizeof path);
-        resource_at(w, &at, USE_PARAM, path, (uint32_t)strlen(path) + 1);
-        count++;
-    }
-    for (uint32_t i = 0; i < s->state_count && count < 64; i++) {
+    bool texture = s->texture_param != HFX_NONE && s->texture_param < w->fx->param_count;
+    for (uint32_t i = 0; i <= s->state_count && count < 64; i++) {
+        if (texture && i == (s->texture_slot < s->state_count ? s->texture_slot : s->state_count))
+            sampler_texture(w, top, element, s, count, rec[count]), count++;
+        if (i == s->state_count || count == 64) break;
         place at = {HFX_NONE, top, element, count};
         if (state(w, &w->fx->states[s->first_state + i], &at, &rec[count][0], &rec[count][2], &rec[count][3]))
             rec[count++][1] = 0;
@@ -381,7 +398,7 @@ static uint32_t param_value(writer *w, uint32_t top) {
         uint32_t first = HFX_NONE;
         for (uint32_t e = 0; e < n; e++) {
             const hfx_fx_param *leaf = p->elements ? &fx->params[p->first_child + e] : p;
-            hfx_fx_sampler none = {top, HFX_NONE, HFX_FX_DIM_2D, 0, 0};
+            hfx_fx_sampler none = {top, HFX_NONE, HFX_FX_DIM_2D, 0, 0, 0};
             const hfx_fx_sampler *s = leaf->sampler < fx->sampler_count ? &fx->samplers[leaf->sampler] : &none;
             uint32_t at = sampler_value(w, top, p->elements ? e : 0, s);
             if (first == HFX_NONE) first = at;

@@ -49,6 +49,8 @@ typedef struct wr {
     uint32_t *code; uint32_t code_count, code_cap, instructions;
     input in[MAX_INPUTS]; uint32_t in_count;
     uint32_t temps;
+    uint32_t uses[MAX_TEMPS];  /* reads of each temporary component */
+    uint32_t def[MAX_TEMPS];   /* where its writing instruction's output table word is in code */
     char *err; size_t err_size;
     bool failed;
 } wr;
@@ -96,6 +98,8 @@ static void put_opnd(wr *w, const opnd *o) {
     put(w, o->indexed ? 1 : 0);
     if (o->indexed) put(w, o->itable), put(w, o->ioffset);
     put(w, o->table), put(w, o->offset);
+    if (o->indexed && o->itable == T_TEMP && o->ioffset < MAX_TEMPS) w->uses[o->ioffset]++;
+    if (o->table == T_TEMP && o->offset < MAX_TEMPS) w->uses[o->offset]++;
 }
 
 /* One one-component instruction over inputs x, into a fresh temporary. */
@@ -105,7 +109,8 @@ static opnd emit(wr *w, uint32_t op, const opnd *x, uint32_t n, bool integral) {
     put(w, op << 20 | 1u);
     put(w, n);
     for (uint32_t i = 0; i < n; i++) put_opnd(w, &x[i]);
-    put_opnd(w, &out);
+    if (out.offset < MAX_TEMPS) w->def[out.offset] = w->code_count + 1;
+    put(w, 0), put(w, out.table), put(w, out.offset);
     w->instructions++;
     return out;
 }
@@ -483,6 +488,14 @@ uint32_t *hfx_fxlvm_write(const hfx_fx_effect *fx, const uint32_t *code, uint32_
     if (!w.failed && w.depth != 1) fail(&w, "internal: the expression leaves no single value");
     value v = w.failed ? (value){0} : w.stack[0];
     for (uint32_t k = 0; k < v.n && k < 4 && !w.failed; k++) { /* the outputs: oc0.xyzw */
+        const opnd *o = &v.c[k];
+        bool once = o->table == T_TEMP && !o->indexed && o->offset < MAX_TEMPS && !w.uses[o->offset];
+        for (uint32_t j = 0; j < v.n && j < 4 && once; j++) once = j == k || v.c[j].table != T_TEMP || v.c[j].offset != o->offset;
+        if (once) { /* a temporary nothing reads: its instruction writes the output itself, as fxc's */
+            w.code[w.def[o->offset]] = T_OUT, w.code[w.def[o->offset] + 1] = k;
+            w.uses[o->offset] = 1;
+            continue;
+        }
         put(&w, OP_MOV << 20 | 1u), put(&w, 1), put_opnd(&w, &v.c[k]);
         put_opnd(&w, &(opnd){.table = T_OUT, .offset = k});
         w.instructions++;
