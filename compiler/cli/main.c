@@ -1,5 +1,5 @@
-/* main.c: hfxc, the command line. Takes fxc's spelling (/T fx_2_0 /Fo out.hfxo /D N=V /I dir
- * /E main /nologo) and the GNU one (-o, -D, -I, --target, --emit-glsl, --reflect...). Exit 0 on
+/* main.c: hfxc, the command line. Takes fxc's spelling (/T fx_2_0 /Fo out.fxo /Fh /Vn /Fc /D N=V
+ * /I dir /E main /nologo: fxc's outputs, in fxc_out.c) and the GNU one (-o, -D, -I, --target, --emit-glsl, --reflect...). Exit 0 on
  * success, 1 when a file fails to compile, 2 on bad usage (one line on stderr saying why). */
 #include <errno.h>
 #include <malloc.h>
@@ -15,7 +15,12 @@ static const char usage_text[] =
     "usage: hfxc [options] file.fx...\n"
     "Compiles Direct3D 9 effect files (.fx) to .hfxo (GLSL programs + effect data).\n"
     "\n"
-    "  -o, /Fo PATH          output file (one input) or folder (several inputs, or PATH ending in /)\n"
+    "  -o PATH               the .hfxo to write (one input), or a folder (several, or PATH ending in /)\n"
+    "  /Fo PATH              fxc's fx_2_0 effect to write (FNA, MojoShader, D3DX load it), or a folder\n"
+    "  --format hfxo|fxc     the format of -o or /Fo, whichever is given\n"
+    "  /Fh FILE, /Vn NAME    a C header of the fx_2_0 bytes: const BYTE NAME[] (default g_<input>)\n"
+    "  /Fc FILE              the listing of the fx_2_0 written\n"
+    "  /Zpr, /Zpc            matrices without row_major / column_major are row- / column-major in it\n"
     "  -D, /D NAME[=VALUE]   define a macro\n"
     "  -I, /I DIR            add an include folder\n"
     "  /T PROFILE            fx_2_0 (default), or vs_3_0, ps_2_0... with /E\n"
@@ -44,7 +49,7 @@ static const char usage_text[] =
     "  -MP                   add an empty rule per include, so deleting one does not break make\n"
     "  -j, --jobs N          compile N files at a time (default: one per core)\n"
     "  --quiet               no progress line and no summary\n"
-    "  /nologo               accepted for fxc compatibility\n"
+    "  /nologo, /Od, /O0-/O3, /Gec, /Zi  accepted for fxc compatibility; change nothing\n"
     "  --help, /?            this text\n"
     "  --version             the version\n";
 
