@@ -49,6 +49,7 @@ typedef struct writer {
     uint32_t shaders;      /* shader objects */
     string_obj *strings; uint32_t string_count, string_cap;
     resource *res; uint32_t res_count, res_cap;
+    uint32_t *ops;         /* per hfx state id: its operation (malloc'ed on first use) */
     hfx_fx_code *leaf_code; /* per parameter: a shader leaf's bytecode (size 0: none; not owned) */
     char *err; size_t err_size;
     bool failed;
@@ -205,10 +206,18 @@ static void param_path(const hfx_fx_effect *fx, uint32_t p, char *buf, size_t si
 
 /* --- states ---------------------------------------------------------------------------------- */
 
-static uint32_t op_of(uint32_t id) {
-    for (uint32_t op = 0; op < OP_COUNT; op++)
-        if (hfx_fx2_state_id(op) == id) return op;
-    return HFX_NONE;
+/* D3DX's operation number of an hfx state (the reader's table read backwards, once a write). */
+static uint32_t op_of(writer *w, uint32_t id) {
+    if (!w->ops) {
+        uint32_t n = hfx_state_count() + 1;
+        if (!(w->ops = malloc(n * sizeof *w->ops))) return HFX_NONE;
+        memset(w->ops, 0xff, n * sizeof *w->ops);
+        for (uint32_t op = OP_COUNT; op-- > 0;) {
+            uint32_t s = hfx_fx2_state_id(op);
+            if (s && s < n) w->ops[s] = op;
+        }
+    }
+    return id <= hfx_state_count() ? w->ops[id] : HFX_NONE;
 }
 
 /* The resource record of a state: (technique, pass, -1, state) or (-1, parameter, element, state). */
@@ -314,7 +323,7 @@ static void shader_state(writer *w, const hfx_fx_state *s, const place *at, uint
 /* One state record's typedef and value offsets (its resource added); false: not written. */
 static bool state(writer *w, const hfx_fx_state *s, const place *at, uint32_t *op, uint32_t *type, uint32_t *value) {
     const hfx_state_info *info = hfx_state_by_id(s->id);
-    *op = op_of(s->id);
+    *op = op_of(w, s->id);
     if (!info || *op == HFX_NONE || s->kind == HFX_FX_VALUE_UNSUPPORTED) return false; /* nothing fx_2_0 can say */
     if (info->kind == HFX_SV_SHADER) {
         shader_state(w, s, at, type, value);
@@ -567,6 +576,7 @@ int hfx_fx2_write(const hfx_fx_effect *fx, const char *name_, const hfx_fx2_writ
     free(w.res);
     free(w.strings);
     free(w.leaf_code);
+    free(w.ops);
     free(w.data.d);
     free(w.st.d);
     if (w.failed) {
