@@ -10,14 +10,21 @@
 
 #define PI HV_PI
 
+float hv_scene_far(hv_vec3 eye, hv_vec3 at) {
+    float d = hv_vec3_length(hv_vec3_sub(eye, at));
+    return d > 0.25f ? 4.0f * d : 1.0f;
+}
+
 void hv_scene_from_options(hv_scene *s, const hv_options *o) {
     memset(s, 0, sizeof *s);
     hv_mat4_rotation_y(s->world, o->yaw_degrees * PI / 180.0f);
     hv_mat4_look_at_rh(s->view, o->eye, o->at, o->up);
     s->width = o->width;
     s->height = o->height;
-    hv_mat4_perspective_fov_rh(s->projection, o->fov_degrees * PI / 180.0f, (float)o->width / (float)o->height, 0.1f,
-                               100.0f);
+    s->znear = 0.1f;
+    s->zfar = hv_scene_far(o->eye, o->at);
+    hv_mat4_perspective_fov_rh(s->projection, o->fov_degrees * PI / 180.0f, (float)o->width / (float)o->height,
+                               s->znear, s->zfar);
     s->eye = o->eye;
     s->at = o->at;
     s->light_position = o->light_position;
@@ -168,7 +175,8 @@ void hv_light_scene(const hv_scene *s, hv_scene *light) {
     hv_vec3 d = hv_vec3_normalize(hv_vec3_sub(s->at, s->light_position));
     hv_vec3 up = fabsf(d.y) > 0.99f ? hv_vec3_make(0, 0, 1) : hv_vec3_make(0, 1, 0);
     hv_mat4_look_at_rh(light->view, s->light_position, s->at, up);
-    hv_mat4_perspective_fov_rh(light->projection, 60.0f * PI / 180.0f, 1.0f, 0.1f, 100.0f);
+    light->zfar = hv_scene_far(s->light_position, s->at);
+    hv_mat4_perspective_fov_rh(light->projection, 60.0f * PI / 180.0f, 1.0f, light->znear, light->zfar);
     light->eye = s->light_position;
 }
 
@@ -192,13 +200,25 @@ static int is_pixel_transform(const hfx_param *p) {
            (!strcmp(stem, "matrixtransform") || !strcmp(stem, "spritetransform") || !strcmp(stem, "transformmatrix"));
 }
 
+/* The size in pixels of what is drawn into: SAS's ViewportPixelSize, DigitalRise's
+ * VIEWPORTSIZE, ViewportSize and TargetSize (its filters read SourceSize, the same picture),
+ * and engines' ScreenSize, ScreenResolution, RenderTargetSize; a two-component Viewport
+ * (UltimaXNA's half-pixel offset). A lower-case name. */
+static int is_viewport_size(const char *lower, const hfx_param *p) {
+    static const char *const names[] = {"viewportpixelsize", "viewportsize", "targetsize", "sourcesize", "screensize",
+                                        "screenresolution", "resolution", "rendertargetsize"};
+    for (size_t i = 0; i < sizeof names / sizeof *names; i++)
+        if (!strcmp(lower, names[i])) return 1;
+    return !strcmp(lower, "viewport") && hfx_param_rows(p) * hfx_param_columns(p) == 2;
+}
+
 /* DigitalRise's post-processing: a viewport size (by name or VIEWPORTSIZE) and no matrix at
  * all, so the vertex shader maps pixels to clip space itself. */
 static int is_viewport_size_param(hfx_param *p) {
     char low[64];
     const char *sem = hfx_param_semantic(p);
     hv_lower_copy(low, sizeof low, hfx_param_name(p));
-    return !strcmp(low, "viewportsize") || !strcmp(low, "viewportpixelsize") ||
+    return is_viewport_size(low, p) ||
            (sem && (!strcasecmp(sem, "ViewportSize") || !strcasecmp(sem, "ViewportPixelSize")));
 }
 
@@ -215,11 +235,6 @@ int hv_effect_wants_pixels(hfx_effect *fx) {
 
 /* ---- the whole effect -------------------------------------------------------------------- */
 
-/* SAS's ViewportPixelSize; DigitalRise's VIEWPORTSIZE semantic and ViewportSize name. */
-static int is_viewport_size(const char *lower) {
-    return !strcmp(lower, "viewportpixelsize") || !strcmp(lower, "viewportsize");
-}
-
 /* "LightViewProj", "gLightWVP", "ShadowViewProjection": the light's matrices. */
 static int light_matrix(const hv_scene *s, const char *name, float m[16]) {
     char stem[128];
@@ -231,11 +246,23 @@ static int light_matrix(const hv_scene *s, const char *name, float m[16]) {
     return hv_scene_matrix(&light, rest, 1, m);
 }
 
+/* IEX, the Japanese teaching engine (its effects write "float4x4 TransMatrix; // world" and
+ * "float4x4 Projection; // World * View * Projection"), names the world TransMatrix and sets
+ * the whole transform into Projection, keeping the plain one as matProjection: an effect
+ * that declares TransMatrix follows it. */
+static int iex_matrix(const hv_scene *s, const char *name, int iex, float m[16]) {
+    if (!iex) return 0;
+    if (!strcmp(name, "TransMatrix")) return hv_scene_matrix(s, "World", 1, m);
+    if (!strcmp(name, "Projection")) return hv_scene_matrix(s, "WorldViewProjection", 1, m);
+    return 0;
+}
+
 /* Matrices: by semantic, then name, SpriteBatch's, the light's; any other one, and every
  * matrix array, the identity when the effect left it at zero. */
-static const char *bind_matrix(hfx_param *p, const hv_scene *s, int view_only, int *set) {
+static const char *bind_matrix(hfx_param *p, const hv_scene *s, int view_only, int iex, int *set) {
     float m[16];
     const char *sem = hfx_param_semantic(p), *name = hfx_param_name(p);
+    if (iex_matrix(s, name, iex, m)) return *set = hv_set_matrix_param(p, m), "name: IEX's matrices (TransMatrix the world, Projection the whole transform)";
     if (hfx_param_elements(p)) {
         if (view_only) return NULL;
         *set = hv_set_identity_palette(p);
@@ -254,7 +281,7 @@ static const char *bind_matrix(hfx_param *p, const hv_scene *s, int view_only, i
     return "identity (no convention names it)";
 }
 
-static const char *bind_one(hfx_param *p, const hv_scene *s, int view_only, int *set) {
+static const char *bind_one(hfx_param *p, const hv_scene *s, int view_only, int iex, int *set) {
     const char *sem = hfx_param_semantic(p), *how;
     char low[64];
     *set = 0;
@@ -263,9 +290,9 @@ static const char *bind_one(hfx_param *p, const hv_scene *s, int view_only, int 
         return "SAS semantic";
     if ((how = hv_bind_by_annotation(p, s, view_only, set))) return how;
     hfx_param_class k = hfx_param_get_class(p);
-    if (k == HFX_CLASS_MATRIX && hfx_param_get_type(p) == HFX_TYPE_FLOAT) return bind_matrix(p, s, view_only, set);
+    if (k == HFX_CLASS_MATRIX && hfx_param_get_type(p) == HFX_TYPE_FLOAT) return bind_matrix(p, s, view_only, iex, set);
     hv_lower_copy(low, sizeof low, hfx_param_name(p));
-    if ((k == HFX_CLASS_SCALAR || k == HFX_CLASS_VECTOR) && is_viewport_size(low)) {
+    if ((k == HFX_CLASS_SCALAR || k == HFX_CLASS_VECTOR) && is_viewport_size(low, p)) {
         float wh[2] = {(float)s->width, (float)s->height};
         return *set = hv_set_vector(p, wh, 2, 0), "name: the viewport size";
     }
@@ -289,9 +316,9 @@ static int bind_semantics(hfx_effect *fx, const hv_scene *s) {
 
 static int bind_all(hfx_effect *fx, const hv_scene *s, int view_only, const char **how, size_t count) {
     bind_semantics(fx, s);
-    int n = 0, set;
+    int n = 0, set, iex = hfx_effect_param(fx, "TransMatrix") != NULL;
     for (size_t i = 0; i < hfx_effect_param_count(fx); i++) {
-        const char *h = bind_one(hfx_effect_param_at(fx, i), s, view_only, &set);
+        const char *h = bind_one(hfx_effect_param_at(fx, i), s, view_only, iex, &set);
         n += h != NULL;
         if (i < count) how[i] = h;
     }
