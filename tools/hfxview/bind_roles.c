@@ -26,7 +26,7 @@ void hv_name_stem(char *out, size_t cap, const char *name) {
 typedef enum {
     R_NONE, R_CAMERA, R_LIGHT_DIR, R_LIGHT_POS, R_LIGHT_COLOR, R_TARGET, R_WHITE, R_GREY, R_SCALAR, R_LIGHT_COUNT,
     R_RADIUS, R_TIME, R_ELAPSED, R_WEIGHTS, R_VIEWPORT_SCALE, R_NEAR, R_FAR,
-    R_CAMERA_FORWARD, R_CAMERA_UP, R_WORLD_UP, R_FOG_START, R_FOG_END
+    R_CAMERA_FORWARD, R_CAMERA_UP, R_WORLD_UP, R_FOG_START, R_FOG_END, R_FIRST_CHANNEL
 } role;
 
 static const char *const role_phrases[] = {
@@ -36,7 +36,7 @@ static const char *const role_phrases[] = {
     "name: equal weights summing to 1", "name: the particles' viewport scale", "name: the camera's near plane",
     "name: the camera's far plane", "name: the camera's forward direction", "name: the camera's up direction",
     "name: the world's up direction (0, 1, 0)", "name: fog start beyond the far plane (no fog)",
-    "name: fog end beyond the far plane (no fog)",
+    "name: fog end beyond the far plane (no fog)", "name: the first channel (1, 0, 0, 0)",
 };
 
 /* Stems (lower case, no digits, no underscores; see hv_name_stem) as the XNA stock effects and
@@ -90,6 +90,11 @@ static const struct { const char *stem; role r; float v; } roles[] = {
     {"duration", R_SCALAR, 2}, {"endvelocity", R_SCALAR, 1}, {"viewportscale", R_VIEWPORT_SCALE, 0},
     {"lightpower", R_SCALAR, 1}, {"ambientpower", R_SCALAR, 0.2f}, {"texelwidth", R_SCALAR, 1.0f / 256},
     {"texelheight", R_SCALAR, 1.0f / 256}, {"texelsize", R_SCALAR, 1.0f / 256},
+    {"conedirection", R_LIGHT_DIR, 0}, {"coneangle", R_SCALAR, 0.5f}, {"conedecay", R_SCALAR, 2}, /* spot cones */
+    {"scale", R_SCALAR, 1}, {"scalefactor", R_SCALAR, 1}, /* a multiplier: zero would erase what it scales */
+    {"shadowmaskchannel", R_FIRST_CHANNEL, 0}, /* DigitalRise: which channel of the shadow mask to read */
+    {"iterations", R_SCALAR, 32}, {"numberofsamples", R_SCALAR, 16}, {"numsamples", R_SCALAR, 16}, /* loop counts */
+    {"samplecount", R_SCALAR, 16}, {"stepsize", R_SCALAR, 1.0f / 32},
     {"wavelength", R_SCALAR, 1}, {"wavelengths", R_SCALAR, 1}, /* divisors: waves of one unit */
     {"waveheight", R_SCALAR, 0.05f}, {"waveheights", R_SCALAR, 0.05f},
     {"scenenodetype", R_SCALAR, 1}, /* DigitalRise: 1 a static object (G-buffer depth positive), the one mesh */
@@ -104,10 +109,13 @@ static const struct { const char *stem; role r; float v; } roles[] = {
 /* c1 and c3 (the seed tutorials' attenuation constants) would lose their digits as stems. */
 static const struct { const char *name; float v; } exact_scalars[] = {{"c1", 1}, {"c3", 0.01f}};
 
-/* Endings that say what a name the table lacks is: "SunLight" and "SkyLight" are light
+/* Endings that say what a name the table lacks is: DigitalRise's PointLightDiffuse and
+ * SpotlightDirection a light's, AmbientLightUp the world's up; "SunLight" and "SkyLight" are light
  * colours, "InstanceColor" a colour (white; emission, fog and borders stay black), "Density"
  * and "BumpStrength" weights of 1, "ReflectionTextureSize" a texture's size. */
 static const struct { const char *ending; role r; float v; } endings[] = {
+    {"lightdiffuse", R_LIGHT_COLOR, 0}, {"lightspecular", R_WHITE, 0}, {"lightdirection", R_LIGHT_DIR, 0},
+    {"lightposition", R_LIGHT_POS, 0}, {"lightrange", R_SCALAR, 20}, {"up", R_WORLD_UP, 0},
     {"light", R_LIGHT_COLOR, 0}, {"color", R_WHITE, 0}, {"colour", R_WHITE, 0}, {"intensity", R_SCALAR, 1},
     {"strength", R_SCALAR, 1}, {"amount", R_SCALAR, 1}, {"density", R_SCALAR, 1}, {"texturesize", R_SCALAR, 256},
     {"mapsize", R_SCALAR, 256}, {"far", R_FAR, 0}, {"farplane", R_FAR, 0}, {"farclip", R_FAR, 0},
@@ -213,6 +221,7 @@ static int bind_role(hfx_param *p, role r, float v, const hv_scene *s) {
     case R_CAMERA_FORWARD: return set_xyz(p, hv_vec3_normalize(hv_vec3_sub(s->at, s->eye)), 0);
     case R_CAMERA_UP: return set_xyz(p, hv_vec3_make(s->view[1], s->view[5], s->view[9]), 0); /* the view's y axis */
     case R_WORLD_UP: return set_xyz(p, hv_vec3_make(0, 1, 0), 0);
+    case R_FIRST_CHANNEL: vec[0] = 1, vec[3] = 0; return hv_set_vector(p, vec, 4, 0);
     case R_FOG_START: return hv_set_scalar_default(p, s->zfar);
     case R_FOG_END: return hv_set_scalar_default(p, 2.0f * s->zfar);
     case R_NEAR: return hv_set_scalar_default(p, s->znear);
