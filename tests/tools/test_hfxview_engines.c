@@ -61,7 +61,7 @@ static void projection_45(float p[16]) {
  * depth / CameraFar spans a visible part of 0..1 (shadow maps, G-buffers). Fog left at zero
  * starts at the far plane and ends at twice it: no fog in view. */
 static void far_plane_and_fog(void) {
-    hfx_effect *fx = load("float CameraNear : CAMERANEAR;\nfloat CameraFar : CAMERAFAR;\nfloat4x4 Projection;\n"
+    hfx_effect *fx = load("float CameraNear : CAMERANEAR;\nfloat CameraFar : CAMERAFAR;\nfloat4x4 View;\nfloat4x4 Projection;\n"
                           "float FogStart;\nfloat FogEnd;\nfloat FogNear : FOG_NEAR;\nfloat FogFar : FOG_FAR;\n"
                           "float FogKept = 3;\n");
     if (!fx) return;
@@ -140,6 +140,74 @@ static void iex_matrices(void) {
     hfx_effect_destroy(fx);
 }
 
+/* IEX's ShadowProjection is the light's View * Projection (the light at (0, 0, 5): its View a
+ * move of -5 along z; a 60 degree square frustum, far 4 x 5 = 20); MatView with a capital M. */
+static void iex_shadow_and_matview(void) {
+    hfx_effect *fx = load("float4x4 TransMatrix;\nfloat4x4 ShadowProjection;\nfloat4x4 MatView;\n");
+    if (!fx) return;
+    float lv[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, -5, 1}, lp[16], want[16];
+    hv_mat4_perspective_fov_rh(lp, 60.0f * HV_PI / 180.0f, 1.0f, 0.1f, 20.0f);
+    hv_mat4_mul(want, lv, lp);
+    hv_bind_scene(fx, &scene);
+    expect(fx, "ShadowProjection", want, 16);
+    expect(fx, "MatView", camera_view, 16);
+    hfx_effect_destroy(fx);
+}
+
+/* A projection and no matrix that carries a view (UltimaXNA's ProjectionMatrix and WorldMatrix):
+ * it maps pixels, SpriteBatch's projection (2/128, -2/128, the half-pixel offset), and the
+ * effect draws the image's rectangle. With a View it is the camera's projection. */
+static void lone_projection_maps_pixels(void) {
+    hfx_effect *fx = load("float4x4 ProjectionMatrix;\nfloat4x4 WorldMatrix;\n");
+    if (!fx) return;
+    hv_bind_scene(fx, &scene);
+    expect(fx, "ProjectionMatrix",
+           (const float[16]){2.0f / 128, 0, 0, 0, 0, -2.0f / 128, 0, 0, 0, 0, -1, 0, -1 - 1.0f / 128, 1 + 1.0f / 128, 0, 1}, 16);
+    CHECK_INT(hv_effect_wants_pixels(fx), 1);
+    hfx_effect_destroy(fx);
+    fx = load("float4x4 ProjectionMatrix;\nfloat4x4 ViewMatrix;\n");
+    if (!fx) return;
+    float p[16];
+    projection_45(p);
+    hv_bind_scene(fx, &scene);
+    expect(fx, "ProjectionMatrix", p, 16);
+    CHECK_INT(hv_effect_wants_pixels(fx), 0);
+    hfx_effect_destroy(fx);
+    /* DigitalRise's UpsampleFilter: a target size and a projection read only to rebuild depth */
+    fx = load("float2 TargetSize;\nfloat4x4 Projection : PROJECTION;\n");
+    if (fx) CHECK_INT(hv_effect_wants_pixels(fx), 1);
+    hfx_effect_destroy(fx);
+}
+
+/* DigitalRise's light names by their endings (PointLightDiffuse the light's colour, ...Specular
+ * white, SpotlightDirection the light's, AmbientLightUp the world's up), ShadowMaskChannel the
+ * first channel; a spot cone (the XNA recipes' deferred spot light); a Scale left at zero is 1;
+ * loop counts left at zero get a few iterations. */
+static void light_endings_cones_scales_loops(void) {
+    hfx_effect *fx = load("float3 PointLightDiffuse;\nfloat3 PointLightSpecular;\nfloat3 SpotlightDirection;\n"
+                          "float3 AmbientLightUp;\nfloat4 ShadowMaskChannel;\nfloat3 xConeDirection;\n"
+                          "float xConeAngle;\nfloat xConeDecay;\nfloat4 Scale;\nfloat4 ScaleFactor;\n"
+                          "float Offset;\nint Iterations;\nfloat3 StepSize;\n");
+    if (!fx) return;
+    hv_bind_scene(fx, &scene);
+    expect(fx, "PointLightDiffuse", (const float[3]){1, 1, 1}, 3); /* hv_options' default light: white */
+    expect(fx, "PointLightSpecular", (const float[3]){1, 1, 1}, 3);
+    expect(fx, "SpotlightDirection", (const float[3]){0, 0, -1}, 3);
+    expect(fx, "AmbientLightUp", (const float[3]){0, 1, 0}, 3);
+    expect(fx, "ShadowMaskChannel", (const float[4]){1, 0, 0, 0}, 4);
+    expect(fx, "xConeDirection", (const float[3]){0, 0, -1}, 3);
+    expect(fx, "xConeAngle", (const float[1]){0.5f}, 1);
+    expect(fx, "xConeDecay", (const float[1]){2}, 1);
+    expect(fx, "Scale", (const float[4]){1, 1, 1, 1}, 4);
+    expect(fx, "ScaleFactor", (const float[4]){1, 1, 1, 1}, 4);
+    expect(fx, "Offset", (const float[1]){0}, 1); /* zero is a fine offset */
+    expect(fx, "StepSize", (const float[3]){1.0f / 32, 1.0f / 32, 1.0f / 32}, 3);
+    int n = 0;
+    CHECK(hfx_param_get_ints(hv_find_param(fx, "Iterations"), &n, 1) == HFX_OK);
+    CHECK_INT(n, 32);
+    hfx_effect_destroy(fx);
+}
+
 /* ---- hfxview end to end -------------------------------------------------------------------- */
 
 static char *hfxview, *tmp;
@@ -191,6 +259,21 @@ static void iex_effect_shows_its_mesh(void) {
                   "float4 VS(float4 p : POSITION0) : POSITION0 { return mul(p, Projection); }\n" RED_PS TECH);
 }
 
+/* UltimaXNA's isometric world: mul(mul(p, WorldMatrix), ProjectionMatrix), nothing else: the
+ * image's rectangle in pixels, red to every corner. */
+static void lone_projection_fills_the_image(void) {
+    view_png img;
+    if (!run_view("float4x4 ProjectionMatrix;\nfloat4x4 WorldMatrix;\n"
+                  "float4 VS(float4 p : POSITION0) : POSITION0 { return mul(mul(p, WorldMatrix), ProjectionMatrix); }\n"
+                  RED_PS TECH, &img)) {
+        CHECK(0);
+        return;
+    }
+    CHECK(view_pixel_near(&img, 0, 0, 255, 0, 0, 0));
+    CHECK(view_pixel_near(&img, 127, 127, 255, 0, 0, 0));
+    view_png_free(&img);
+}
+
 /* DigitalRise's shadow map: (-z_view - CameraNear) / (CameraFar - CameraNear) in red. At the
  * centre the sphere's front is 2 units from the eye: (2 - 0.1) / (12 - 0.1) = 0.15966, 40.7 of
  * 255 (it was 4.8, black, with a far plane of 100). */
@@ -225,6 +308,9 @@ int main(void) {
     RUN(camera_directions);
     RUN(names_and_sizes);
     RUN(iex_matrices);
+    RUN(iex_shadow_and_matview);
+    RUN(lone_projection_maps_pixels);
+    RUN(light_endings_cones_scales_loops);
     hfx_device_destroy(dev);
     test_gl_destroy(gl);
     hfxview = view_build_path("tools/hfxview/hfxview");
@@ -233,6 +319,7 @@ int main(void) {
         RUN(instancing_inputs);
         RUN(iex_effect_shows_its_mesh);
         RUN(shadow_map_depth_is_visible);
+        RUN(lone_projection_fills_the_image);
         test_remove_dir(tmp);
         free(tmp);
         free(hfxview);
