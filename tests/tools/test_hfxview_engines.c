@@ -121,6 +121,9 @@ static void names_and_sizes(void) {
     fx = load("float2 TargetSize;\nfloat2 SourceSize;\n"); /* DigitalRise's filters: pixels, no matrix */
     if (fx) CHECK_INT(hv_effect_wants_pixels(fx), 1);
     hfx_effect_destroy(fx);
+    fx = load("float2 ScreenResolution;\n"); /* XNA's post-processing: SpriteBatch's vertex shader, clip space */
+    if (fx) CHECK_INT(hv_effect_wants_pixels(fx), 0);
+    hfx_effect_destroy(fx);
 }
 
 /* IEX: an effect that declares TransMatrix (the world) gets the whole transform in Projection;

@@ -235,7 +235,9 @@ static int is_viewport_size_param(hfx_param *p) {
     char low[64];
     const char *sem = hfx_param_semantic(p);
     hv_lower_copy(low, sizeof low, hfx_param_name(p));
-    return is_viewport_size(low, p) ||
+    /* Not ScreenResolution and its kin: XNA's post-processing samples read them in pixel
+     * shaders drawn by SpriteBatch's own vertex shader, so their passes take clip space. */
+    return !strcmp(low, "viewportsize") || !strcmp(low, "viewportpixelsize") || !strcmp(low, "targetsize") ||
            (sem && (!strcasecmp(sem, "ViewportSize") || !strcasecmp(sem, "ViewportPixelSize")));
 }
 
