@@ -27,6 +27,8 @@ typedef struct cli_options {
     bool depfile_phony;      /* -MP: an empty rule per include, so deleting one does not break make */
     const char *depfile_path;/* -MF / --depfile: its name (one input); default <output minus extension>.d */
     const char *dep_target;  /* -MT: the rule's target; default the output path */
+    const char *dump_ir;     /* --dump-ir[=PASS]: a pass's name or "all" (hfxc_options.dump_ir) */
+    const char *dump_ir_file;/* --dump-ir-file: where the dumps go (default stderr) */
 } cli_options;
 
 /* What compiling one input left behind, for main to print in input order. */
@@ -34,6 +36,7 @@ typedef struct cli_job {
     const char *input;
     char *diagnostics;       /* fxc-style lines, malloc'ed */
     char *ast;               /* --ast dump, malloc'ed */
+    char *ir_dump;           /* --dump-ir text, malloc'ed */
     char *error;             /* an output that could not be written, malloc'ed */
     hfx_fx_effect *effect;   /* kept for --reflect / --annotations */
     bool ok;
