@@ -134,7 +134,7 @@ struct ir_func {
     ir_var **params; uint32_t param_count;
     ir_stmt *body;
     const hfx_func *src;
-    bool is_entry, reached;
+    bool is_entry;
 };
 
 /* One stage of one pass, specialised. */
