@@ -149,7 +149,7 @@ static void list_passes(void) {
 static int dump_ir(cli_options *o, const char *a) {
     const char *want = a[9] == '=' ? a + 10 : "all", *name;
     for (size_t i = 0; strcmp(want, "all") != 0; i++) {
-        if (!(name = hfxc_pass_name(i, NULL))) return usage_error("unknown pass '%s' (hfxc --list-passes names them)", want);
+        if (!(name = hfxc_pass_name(i, NULL))) return usage_error("unknown pass '%s' (hfxc --list-passes)", want);
         if (!strcmp(name, want)) break;
     }
     o->dump_ir = want;
