@@ -11,7 +11,8 @@
 /* When a row runs. */
 typedef enum {
     WHEN_ALWAYS,
-    WHEN_PRESHADE,     /* parameters packed and preshaders on (IR_LOWER_PRESHADE) */
+    WHEN_PRESHADE,     /* HLSL stages, parameters packed, preshaders on (IR_LOWER_PRESHADE); fxc's bytecode
+                        * brings its own preshaders (d3d9_ir.c) */
     WHEN_PRESHADERS,   /* the same, and the preshade pass made some */
     WHEN_DERIVE        /* a program's pass: derived varyings on (IR_LOWER_DERIVE) */
 } when;
