@@ -136,7 +136,7 @@ static hfx_effect *instance_create(hfx_shared *sh, const hfx_effect *src) {
                                    root < fx->top_param_count ? root : fx->top_param_count, accept, i, fp};
     }
     for (uint32_t i = 0; i < fx->technique_count; i++) e->techniques[i] = (hfx_technique){e, i};
-    for (uint32_t i = 0; i < fx->pass_count; i++) e->passes[i] = (hfx_pass){.fx = e, .rt = sh->passes ? &sh->passes[i] : NULL, .index = i};
+    for (uint32_t i = 0; i < fx->pass_count; i++) e->passes[i] = (hfx_pass){.fx = e, .index = i};
     e->current = src ? src->current : 0;
     if (sh->dev->be->instance_init && sh->dev->be->instance_init(e)) {
         instance_free(e);
