@@ -1,6 +1,7 @@
-/* load.c: effects from .fx / .hfxo (told apart by their first bytes) into GL objects; the
- * shared part's and the instances' lifetimes; clones; destruction. A failed load deletes what
- * it made and leaves the device as it was. Samplers are made by sampler.c, passes by passes.c. */
+/* load.c: effects from .fx / .hfxo (told apart by their first bytes) into the back end's
+ * objects (its table's shared_build and instance_init); the shared part's and the instances'
+ * lifetimes; clones; destruction. A failed load deletes what it made and leaves the device as
+ * it was. */
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
