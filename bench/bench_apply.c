@@ -26,7 +26,7 @@
 #include <time.h>
 
 #include "gl_context.h"
-#include "internal.h"
+#include "gl/gl_int.h"
 #include "bench.h"
 
 #define PARAMS 100
@@ -110,7 +110,7 @@ static int layout_init(layout *l, hfx_device *dev, int packed) {
     }
     l->pass = hfx_technique_pass(hfx_effect_current_technique(l->fx), 0);
     hfx_pass_apply(l->pass);
-    l->prog = dev->program;
+    l->prog = dev->gl->program;
     GLint(APIENTRYP location)(GLuint, const GLchar *) = (GLint(APIENTRYP)(GLuint, const GLchar *))test_gl_proc("glGetUniformLocation");
     char name[32];
     for (int i = 0; i < PARAMS; i++) {

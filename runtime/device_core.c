@@ -43,4 +43,20 @@ void hfx_device_destroy(hfx_device *dev) {
 
 const char *hfx_device_last_error(const hfx_device *dev) { return dev ? dev->error : "no device"; }
 
+const char *hfx_result_string(int code) {
+    switch (code) {
+    case HFX_OK: return "no error";
+    case HFX_ERR_NULL: return "a NULL handle or pointer";
+    case HFX_ERR_TYPE: return "wrong type for this parameter";
+    case HFX_ERR_COUNT: return "wrong number of values";
+    case HFX_ERR_NOT_FOUND: return "unknown name or index";
+    case HFX_ERR_GL: return "OpenGL refused";
+    case HFX_ERR_LOAD: return "the effect did not compile or the file is not valid";
+    case HFX_ERR_MEMORY: return "out of memory";
+    case HFX_ERR_VULKAN: return "Vulkan refused";
+    case HFX_ERR_STATE: return "a call out of order";
+    default: return "unknown result";
+    }
+}
+
 void hfx_free(void *p) { free(p); }

@@ -1,6 +1,7 @@
-/* load.c: effects from .fx / .hfxo (told apart by their first bytes) into GL objects; the
- * shared part's and the instances' lifetimes; clones; destruction. A failed load deletes what
- * it made and leaves the device as it was. Samplers are made by sampler.c, passes by passes.c. */
+/* load.c: effects from .fx / .hfxo (told apart by their first bytes) into the back end's
+ * objects (its table's shared_build and instance_init); the shared part's and the instances'
+ * lifetimes; clones; destruction. A failed load deletes what it made and leaves the device as
+ * it was. */
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -136,7 +137,7 @@ static hfx_effect *instance_create(hfx_shared *sh, const hfx_effect *src) {
                                    root < fx->top_param_count ? root : fx->top_param_count, accept, i, fp};
     }
     for (uint32_t i = 0; i < fx->technique_count; i++) e->techniques[i] = (hfx_technique){e, i};
-    for (uint32_t i = 0; i < fx->pass_count; i++) e->passes[i] = (hfx_pass){.fx = e, .rt = sh->passes ? &sh->passes[i] : NULL, .index = i};
+    for (uint32_t i = 0; i < fx->pass_count; i++) e->passes[i] = (hfx_pass){.fx = e, .index = i};
     e->current = src ? src->current : 0;
     if (sh->dev->be->instance_init && sh->dev->be->instance_init(e)) {
         instance_free(e);

@@ -278,20 +278,21 @@ int hfx_param_get_texture(const hfx_param *p, unsigned int *out) {
     return HFX_OK;
 }
 
-/* The target the passes bind the texture on: a plain `texture` takes its samplers' dimension. */
+/* GL's enum values for a texture's target, which hfx_param_texture_target returns on every
+ * device (hfx.h): written out so the core needs no GL header. */
+enum { TARGET_2D = 0x0DE1, TARGET_3D = 0x806F, TARGET_CUBE = 0x8513 };
+
+/* The target the passes bind the texture on: the back end's answer where it binds textures
+ * itself (GL); otherwise (Vulkan) the dimension its samplers are sampled with. */
 unsigned int hfx_param_texture_target(const hfx_param *p) {
     if (!p || !is_texture_like(info(p))) return 0;
-    const hfx_shared *sh = p->fx->sh;
-    for (uint32_t i = 0; sh->passes && i < sh->fx->pass_count; i++)
-        for (uint32_t b = 0; b < sh->passes[i].binding_count; b++) {
-            const hfx_rt_binding *bd = &sh->passes[i].bindings[b];
-            if (bd->texture_param == p->index || bd->sampler_param == p->index) return bd->target;
-        }
-    /* no GL bindings (a Vulkan device): the dimension its samplers are sampled with */
-    for (uint32_t i = 0; !sh->passes && i < sh->fx->sampler_count; i++) {
-        const hfx_fx_sampler *s = &sh->fx->samplers[i];
+    const hfx_backend *be = p->fx->dev->be;
+    if (be->texture_target) return be->texture_target(p);
+    const hfx_fx_effect *fx = p->fx->sh->fx;
+    for (uint32_t i = 0; i < fx->sampler_count; i++) {
+        const hfx_fx_sampler *s = &fx->samplers[i];
         if (s->texture_param != p->index && s->param != p->index) continue;
-        return s->dim == HFX_FX_DIM_CUBE ? GL_TEXTURE_CUBE_MAP : s->dim == HFX_FX_DIM_3D ? GL_TEXTURE_3D : GL_TEXTURE_2D;
+        return s->dim == HFX_FX_DIM_CUBE ? TARGET_CUBE : s->dim == HFX_FX_DIM_3D ? TARGET_3D : TARGET_2D;
     }
     return 0;
 }

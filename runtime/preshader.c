@@ -111,21 +111,3 @@ void hfx_preshaders_run(hfx_preshaders *ps, const uint32_t *values, float *regs,
         if (last > range->hi) range->hi = last;
     }
 }
-
-static int add_read(hfx_rt_program *p, uint32_t r) {
-    for (uint32_t k = 0; k < p->read_count; k++)
-        if (p->reads[k] == r) return HFX_OK;
-    uint32_t *grown = realloc(p->reads, ((size_t)p->read_count + 1) * sizeof *grown);
-    if (!grown) return HFX_ERR_MEMORY;
-    p->reads = grown;
-    p->reads[p->read_count++] = r;
-    return HFX_OK;
-}
-
-int hfx_rt_preshaders_setup(hfx_rt_program *p, const hfx_fx_effect *fx, const hfx_fx_program *fp) {
-    if (!fp->preshader_count || !p->regs) return HFX_OK;
-    int rc = hfx_preshaders_init(&p->pre, fx, fp);
-    for (uint32_t r = 0; !rc && r < fx->top_param_count; r++)
-        if (p->pre.count[r]) rc = add_read(p, r);
-    return rc;
-}

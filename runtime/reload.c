@@ -82,17 +82,11 @@ static void keep_technique(hfx_effect *to, const hfx_effect *from) {
         }
 }
 
-/* Between begin and end: end restores the units of the effect's shared part, and begin saved
- * only the old part's. Units only the new code binds have not been touched by the effect since
- * begin, so what GL holds on them now is what begin would have saved; units only the old code
- * bound are kept in the new mask so end still puts them back. The new shared part is this
- * instance's alone, so widening its mask changes no one else. */
-static void keep_saved_units(hfx_effect *to, const hfx_effect *from) {
-    to->saved = from->saved;
-    if (!from->saved.active) return;
-    uint32_t fresh = to->sh->unit_mask & ~from->sh->unit_mask;
-    to->sh->unit_mask |= from->sh->unit_mask;
-    if (fresh && to->dev->be->save_units) to->dev->be->save_units(to->dev, &to->saved, fresh);
+/* Between begin and end: the new instance is begun too, holding what the old one's begin saved
+ * (the back end widens it to what the new code touches), so end restores it. */
+static void keep_begun(hfx_effect *to, const hfx_effect *from) {
+    to->begun = from->begun;
+    if (from->begun && to->dev->be->begun_carry) to->dev->be->begun_carry(to, from);
 }
 
 /* Handles point back at their effect: after the swap they must name the address they live in. */
@@ -140,7 +134,7 @@ int hfx_effect_reload(hfx_effect *fx, const char *path, const hfx_load_options *
     if (!next) return HFX_ERR_LOAD;
     carry_values(next, fx);
     keep_technique(next, fx);
-    keep_saved_units(next, fx);
+    keep_begun(next, fx);
     swap_in(fx, next);
     return HFX_OK;
 }

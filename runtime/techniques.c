@@ -80,14 +80,16 @@ static int program_location(const hfx_fx_effect *fx, uint32_t prog, const char *
 }
 
 /* A pass with shader variants (ShaderIndex): the location any of its programs gives the
- * semantic (the compiler fixes a location per semantic, so they agree). */
+ * semantic (the compiler fixes a location per semantic, so they agree). Read from the compiled
+ * effect, so it answers the same on every back end. */
 int hfx_pass_attribute_location(const hfx_pass *p, const char *semantic) {
     if (!p || !semantic) return -1;
-    const hfx_rt_pass *rp = &p->fx->sh->passes[p->index];
     const hfx_fx_effect *fx = p->fx->sh->fx;
-    if (rp->program != HFX_NONE) return program_location(fx, rp->program, semantic);
-    for (uint32_t v = 0; v < rp->variant_count; v++) {
-        int loc = program_location(fx, rp->variants[v].program, semantic);
+    uint32_t prog = fx->passes[p->index].program;
+    if (prog < fx->program_count) return program_location(fx, prog, semantic);
+    for (uint32_t v = 0; v < fx->variant_count; v++) {
+        if (fx->variants[v].pass != p->index) continue;
+        int loc = program_location(fx, fx->variants[v].program, semantic);
         if (loc >= 0) return loc;
     }
     return -1;

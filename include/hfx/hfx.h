@@ -1,7 +1,11 @@
-/* hfx.h: the hfx runtime. Load Direct3D 9 effects (.fx or .hfxo) and drive OpenGL with them,
- * the way XNA's Effect drives Direct3D. Every handle is opaque; every call that can fail
- * returns HFX_OK (0) or an error code, and hfx_device_last_error() says why. No global state:
- * everything hangs off an hfx_device, one per GL context. */
+/* hfx.h: the hfx runtime. Load Direct3D 9 effects (.fx or .hfxo) and draw with them on OpenGL
+ * or Vulkan, the way XNA's Effect drives Direct3D. Every handle is opaque; every call that can
+ * fail returns HFX_OK (0) or an error code, and hfx_device_last_error() says why. No global
+ * state: everything hangs off an hfx_device, one per OpenGL context (hfx_device_create_gl) or
+ * Vulkan device (hfx_vulkan.h's hfx_device_create_vulkan). The effect, parameter, technique and pass
+ * calls here are the same on both; a few are one back end's (hfx_device_sync, the program cache
+ * and texture names are OpenGL's; Vulkan applies a pass with hfx_pass_apply_vk, which records
+ * into a command buffer). */
 #ifndef HFX_HFX_H
 #define HFX_HFX_H
 
@@ -29,8 +33,12 @@ enum {
     HFX_ERR_GL = -5,        /* OpenGL refused (compile, link, missing entry point) */
     HFX_ERR_LOAD = -6,      /* the effect did not compile or the file is not valid */
     HFX_ERR_MEMORY = -7,
-    HFX_ERR_VULKAN = -8     /* Vulkan refused (a failed call, a missing feature or format) */
+    HFX_ERR_VULKAN = -8,    /* Vulkan refused (a failed call, a missing feature or format) */
+    HFX_ERR_STATE = -9      /* a call out of order: hfx_effect_begin twice, hfx_effect_end without begin */
 };
+
+/* What a return code means, in a few words ("a call out of order"); "unknown result" for none. */
+const char *hfx_result_string(int code);
 
 /* Parameter classes and types: XNA's EffectParameterClass / EffectParameterType (D3DX's). */
 typedef enum {
@@ -67,7 +75,7 @@ typedef struct hfx_load_options {
     hfx_pool *pool;                  /* NULL, or the pool whose `shared` parameters the effect shares */
 } hfx_load_options;
 
-/* Device: one per GL context, which must be current on every call. */
+/* Device: one per GL context, which must be current on every call (Vulkan: hfx_vulkan.h). */
 hfx_device *hfx_device_create_gl(hfx_gl_loader load);            /* loads its own GL function table */
 void hfx_device_destroy(hfx_device *dev);                        /* effects must be destroyed first */
 const char *hfx_device_last_error(const hfx_device *dev);        /* message of the last failed call */
@@ -99,8 +107,10 @@ hfx_effect *hfx_effect_clone(const hfx_effect *fx);              /* same code, i
 void hfx_effect_destroy(hfx_effect *fx);
 hfx_device *hfx_effect_device(const hfx_effect *fx);              /* Effect.GraphicsDevice */
 const char *hfx_effect_warnings(const hfx_effect *fx);           /* load-time notes (unsupported states) or "" */
-int hfx_effect_begin(hfx_effect *fx);                            /* sync, and save the GL state the effect touches */
-int hfx_effect_end(hfx_effect *fx);                              /* restore what begin saved */
+/* Begin saves the state the effect's passes change (GL: syncs, then saves the GL state they touch;
+ * Vulkan: the render states), End restores it. Begin twice, or End without Begin: HFX_ERR_STATE. */
+int hfx_effect_begin(hfx_effect *fx);
+int hfx_effect_end(hfx_effect *fx);
 /* Compiles the effect again (from path, or the file it was loaded from when path is NULL) and, on
  * success, replaces its code in place: parameters whose name, class, type, rows, columns, elements
  * (and member names, for structs) are unchanged keep their values and textures; the current
@@ -184,7 +194,7 @@ size_t hfx_technique_pass_count(const hfx_technique *t);
 hfx_pass *hfx_technique_pass(hfx_technique *t, size_t i);
 hfx_pass *hfx_technique_pass_by_name(hfx_technique *t, const char *name);
 const char *hfx_pass_name(const hfx_pass *p);
-int hfx_pass_apply(hfx_pass *p);                                       /* Passes[i].Apply() */
+int hfx_pass_apply(hfx_pass *p);                                       /* Passes[i].Apply() (GL; Vulkan: hfx_pass_apply_vk) */
 int hfx_pass_attribute_location(const hfx_pass *p, const char *semantic); /* "POSITION0" -> 0; -1 if unused */
 
 /* Annotations on parameters, techniques and passes. */

@@ -1,13 +1,14 @@
-/* apply.c: techniques, passes and Apply, plus begin / end. Apply binds the pass's program,
- * uploads the parameters that changed since that program last saw them, binds textures and
- * sampler objects, and sets render states; everything goes through the device's shadow, so
+/* apply.c: Apply, begin and end on GL, reached through the back end's table from the core's
+ * hfx_pass_apply / hfx_effect_begin / hfx_effect_end (runtime/apply.c). Apply binds the pass's
+ * program, uploads the parameters that changed since that program last saw them, binds textures
+ * and sampler objects, and sets render states; everything goes through the device's shadow, so
  * an Apply with nothing changed makes no GL call. */
 #include <ctype.h>
 #include <string.h>
 #include <strings.h>
 
 #include "eval_code.h"
-#include "internal.h"
+#include "gl/gl_int.h"
 
 static void bind_textures(hfx_effect *fx, const hfx_rt_pass *rp) {
     for (uint32_t i = 0; i < rp->binding_count; i++) {
@@ -16,14 +17,14 @@ static void bind_textures(hfx_effect *fx, const hfx_rt_pass *rp) {
         if (!tex && b->sampler_param != HFX_NONE) tex = fx->textures[b->sampler_param];
         GLuint sampler = 0;
         if (b->sampler != HFX_NONE) {
-            hfx_rt_sampler *s = &fx->sh->samplers[b->sampler];
+            hfx_rt_sampler *s = &fx->sh->gl->samplers[b->sampler];
             hfx_rt_sampler_update(fx, s);
             sampler = s->object;
         }
         if (b->texture_param == HFX_NONE && b->sampler_param == HFX_NONE) {
             /* only sampler states for this stage (MinFilter[3] = ...): the texture stays */
-            hfx_unit_state *u = &fx->dev->units[b->unit];
-            if (u->sampler != sampler) fx->dev->gl.BindSampler((GLuint)b->unit, u->sampler = sampler);
+            hfx_unit_state *u = &fx->dev->gl->units[b->unit];
+            if (u->sampler != sampler) fx->dev->gl->fn.BindSampler((GLuint)b->unit, u->sampler = sampler);
             continue;
         }
         hfx_rt_bind_unit(fx->dev, b->unit, b->target, tex, sampler);
@@ -33,18 +34,18 @@ static void bind_textures(hfx_effect *fx, const hfx_rt_pass *rp) {
 /* Front face (D3D's clockwise, flipped in a framebuffer object), the first vertex as flat
  * shading's provoking vertex (D3D's), program, its position fixup and alpha-test uniforms. */
 static inline void apply_program(hfx_device *dev, hfx_rt_program *prog) {
-    GLenum front = dev->flip ? GL_CCW : GL_CW; /* hfx_rs_front_face */
-    if (dev->state.front_face != front) dev->gl.FrontFace(dev->state.front_face = front);
-    if (dev->state.provoking != GL_FIRST_VERTEX_CONVENTION)
-        dev->gl.ProvokingVertex(dev->state.provoking = GL_FIRST_VERTEX_CONVENTION);
+    GLenum front = dev->gl->flip ? GL_CCW : GL_CW; /* hfx_rs_front_face */
+    if (dev->gl->state.front_face != front) dev->gl->fn.FrontFace(dev->gl->state.front_face = front);
+    if (dev->gl->state.provoking != GL_FIRST_VERTEX_CONVENTION)
+        dev->gl->fn.ProvokingVertex(dev->gl->state.provoking = GL_FIRST_VERTEX_CONVENTION);
     if (!prog) return;
     hfx_rt_use_program(dev, prog->object);
-    if (prog->pos_fixup_serial != dev->pos_fixup_serial || prog->alpha_test) hfx_rt_program_extras(dev, prog);
+    if (prog->pos_fixup_serial != dev->gl->pos_fixup_serial || prog->alpha_test) hfx_rt_program_extras(dev, prog);
 }
 
 /* The array index a selector state gives now (HFX_NONE for a fixed stage). */
 static uint32_t selected(const hfx_effect *fx, const hfx_rt_pass *rp, int stage) {
-    return hfx_rs_selected(fx, rp->selector[stage], (uint32_t)(rp - fx->sh->passes), stage);
+    return hfx_rs_selected(fx, rp->selector[stage], (uint32_t)(rp - fx->sh->gl->passes), stage);
 }
 
 /* A pass drawn from shader arrays: the program of the entries its selectors pick now, as
@@ -52,7 +53,7 @@ static uint32_t selected(const hfx_effect *fx, const hfx_rt_pass *rp, int stage)
 static hfx_rt_program *variant_program(hfx_effect *fx, const hfx_rt_pass *rp) {
     uint32_t vs = selected(fx, rp, 0), ps = selected(fx, rp, 1);
     for (uint32_t i = 0; i < rp->variant_count; i++)
-        if (rp->variants[i].vs == vs && rp->variants[i].ps == ps) return &fx->sh->programs[rp->variants[i].program];
+        if (rp->variants[i].vs == vs && rp->variants[i].ps == ps) return &fx->sh->gl->programs[rp->variants[i].program];
     hfx_rt_fail(fx->dev, HFX_ERR_NOT_FOUND, "no program for shader array entries %d and %d (only those the compiler "
                 "reached by the driving parameter exist)", (int)vs, (int)ps);
     return NULL;
@@ -91,10 +92,10 @@ static int apply_full(hfx_pass *p) {
 }
 
 /* A pass other than the last one applied; a program-only one becomes the device's last. */
-static __attribute__((noinline)) int apply_first(hfx_pass *p) {
+static __attribute__((noinline)) int apply_first(hfx_pass *p, const void *target) {
     hfx_device *dev = p->fx->dev;
-    if (dev->be != &hfx_gl_backend) /* a Vulkan device's applied stays NULL: every Apply comes here */
-        return hfx_rt_fail(dev, HFX_ERR_NOT_FOUND, "hfx_pass_apply: this device is %s's; use its own Apply", dev->be->name);
+    if (target) /* only another back end's Apply passes a target */
+        return hfx_rt_fail(dev, HFX_ERR_NOT_FOUND, "this device is OpenGL's: apply its passes with hfx_pass_apply");
     dev->applied = NULL;
     int rc = apply_full(p);
     if (p->rt->direct) dev->applied = p;
@@ -103,15 +104,15 @@ static __attribute__((noinline)) int apply_first(hfx_pass *p) {
 
 /* The same program-only pass again, with no other state set since, only uploads what the
  * parameters' log holds past what its program saw: the per-draw path of a game loop. */
-int hfx_pass_apply(hfx_pass *p) {
-    if (!p) return HFX_ERR_NULL;
+int hfx_gl_pass_apply(hfx_pass *p, const void *target) {
     hfx_effect *fx = p->fx;
-    if (fx->dev->applied != p) return apply_first(p);
+    if (fx->dev->applied != p || target) return apply_first(p, target);
     hfx_rt_program *prog = p->rt->prog;
     if (prog->switch_count) { /* the variant apply_full picked; a bool can change only with the log */
         hfx_rt_program *base = prog;
         prog = p->switched;
-        if (prog->memo_seen != fx->log_len && hfx_rt_switch_mask(base, fx->values) != p->switch_mask) return apply_first(p);
+        if (prog->memo_seen != fx->log_len && hfx_rt_switch_mask(base, fx->values) != p->switch_mask)
+            return apply_first(p, NULL);
     }
     uint64_t seen = prog->memo_seen;
     if (seen == fx->log_len) return HFX_OK;
@@ -136,60 +137,64 @@ static const GLenum unit_targets[4] = {GL_TEXTURE_BINDING_1D, GL_TEXTURE_BINDING
                                        GL_TEXTURE_BINDING_CUBE_MAP};
 static const GLenum bind_targets[4] = {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP};
 
-void hfx_rt_save_units(hfx_device *dev, hfx_saved *s, uint32_t mask) {
+/* Reads the textures and samplers GL holds on the units in mask into s->units. */
+static void save_units(hfx_device *dev, hfx_saved *s, uint32_t mask) {
     for (int u = 0; u < HFX_MAX_UNITS; u++) {
         if (!(mask & (1u << u))) continue;
-        dev->gl.ActiveTexture(GL_TEXTURE0 + (GLenum)u);
-        for (int t = 0; t < 4; t++) dev->gl.GetIntegerv(unit_targets[t], &s->units[u].tex[t]);
-        dev->gl.GetIntegerv(GL_SAMPLER_BINDING, &s->units[u].sampler);
+        dev->gl->fn.ActiveTexture(GL_TEXTURE0 + (GLenum)u);
+        for (int t = 0; t < 4; t++) dev->gl->fn.GetIntegerv(unit_targets[t], &s->units[u].tex[t]);
+        dev->gl->fn.GetIntegerv(GL_SAMPLER_BINDING, &s->units[u].sampler);
     }
-    dev->gl.ActiveTexture(dev->active_unit);
+    dev->gl->fn.ActiveTexture(dev->gl->active_unit);
 }
 
 /* The shadow is read back first (hfx_device_sync), so the snapshot is the shadow. */
-int hfx_effect_begin(hfx_effect *fx) {
-    if (!fx) return HFX_ERR_NULL;
-    if (fx->dev->be != &hfx_gl_backend) return fx->dev->be->effect_begin(fx);
+int hfx_gl_effect_begin(hfx_effect *fx) {
     hfx_device *dev = fx->dev;
-    hfx_saved *s = &fx->saved;
-    if (s->active) /* a second snapshot would make end restore the effect's own states */
-        return hfx_rt_fail(dev, HFX_ERR_NOT_FOUND, "hfx_effect_begin twice without hfx_effect_end (hfx_device_sync re-reads GL state)");
+    hfx_saved *s = &fx->gl->saved;
     hfx_device_sync(dev);
-    s->state = dev->state;
-    s->program = (GLint)dev->program;
-    s->active_unit = (GLint)dev->active_unit;
-    hfx_rt_save_units(dev, s, fx->sh->unit_mask);
+    s->state = dev->gl->state;
+    s->program = (GLint)dev->gl->program;
+    s->active_unit = (GLint)dev->gl->active_unit;
+    save_units(dev, s, fx->sh->gl->unit_mask);
     s->alpha_test[0] = dev->rs[HFX_ST_ALPHATESTENABLE];
     s->alpha_test[1] = dev->rs[HFX_ST_ALPHAFUNC];
     s->alpha_test[2] = dev->rs[HFX_ST_ALPHAREF];
-    s->active = 1;
     return HFX_OK;
 }
 
-int hfx_effect_end(hfx_effect *fx) {
-    if (!fx) return HFX_ERR_NULL;
-    if (fx->dev->be != &hfx_gl_backend) return fx->dev->be->effect_end(fx);
+int hfx_gl_effect_end(hfx_effect *fx) {
     hfx_device *dev = fx->dev;
-    hfx_saved *s = &fx->saved;
-    if (!s->active) return hfx_rt_fail(dev, HFX_ERR_NOT_FOUND, "hfx_effect_end without hfx_effect_begin");
+    hfx_saved *s = &fx->gl->saved;
     dev->applied = NULL;
     hfx_rt_write_state(dev, &s->state);
     hfx_rt_use_program(dev, (GLuint)s->program);
     for (int u = 0; u < HFX_MAX_UNITS; u++) {
-        if (!(fx->sh->unit_mask & (1u << u))) continue;
-        dev->gl.ActiveTexture(GL_TEXTURE0 + (GLenum)u);
-        for (int t = 0; t < 4; t++) dev->gl.BindTexture(bind_targets[t], (GLuint)s->units[u].tex[t]);
-        dev->gl.BindSampler((GLuint)u, (GLuint)s->units[u].sampler);
-        dev->units[u].target = 0;
-        dev->units[u].sampler = (GLuint)s->units[u].sampler;
+        if (!(fx->sh->gl->unit_mask & (1u << u))) continue;
+        dev->gl->fn.ActiveTexture(GL_TEXTURE0 + (GLenum)u);
+        for (int t = 0; t < 4; t++) dev->gl->fn.BindTexture(bind_targets[t], (GLuint)s->units[u].tex[t]);
+        dev->gl->fn.BindSampler((GLuint)u, (GLuint)s->units[u].sampler);
+        dev->gl->units[u].target = 0;
+        dev->gl->units[u].sampler = (GLuint)s->units[u].sampler;
     }
-    dev->gl.ActiveTexture((GLenum)s->active_unit);
-    dev->active_unit = (GLenum)s->active_unit;
+    dev->gl->fn.ActiveTexture((GLenum)s->active_unit);
+    dev->gl->active_unit = (GLenum)s->active_unit;
     /* D3DX's End restores the states the passes set; GL's are restored above, the alpha test
      * lives in hfx's shadow and reaches the shaders at the next Apply */
     dev->rs[HFX_ST_ALPHATESTENABLE] = s->alpha_test[0];
     dev->rs[HFX_ST_ALPHAFUNC] = s->alpha_test[1];
     dev->rs[HFX_ST_ALPHAREF] = s->alpha_test[2];
-    s->active = 0;
     return HFX_OK;
+}
+
+/* Reload between begin and end: end restores the units of the effect's shared part, and begin
+ * saved only the old part's. Units only the new code binds have not been touched by the effect
+ * since begin, so what GL holds on them now is what begin would have saved; units only the old
+ * code bound are kept in the new mask so end still puts them back. The new shared part is this
+ * instance's alone, so widening its mask changes no one else. */
+void hfx_gl_begun_carry(hfx_effect *to, const hfx_effect *from) {
+    to->gl->saved = from->gl->saved;
+    uint32_t fresh = to->sh->gl->unit_mask & ~from->sh->gl->unit_mask;
+    to->sh->gl->unit_mask |= from->sh->gl->unit_mask;
+    if (fresh) save_units(to->dev, &to->gl->saved, fresh);
 }

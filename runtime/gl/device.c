@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "internal.h"
+#include "gl/gl_int.h"
 
 const char *hfx_gl_load(hfx_gl *gl, hfx_gl_loader load) {
 #define HFX_GL_V_(name, params, args) \
@@ -39,26 +39,26 @@ static float depth_bias_scale(void) { return 16777215.0f; }
 
 static void read_caps(hfx_device *dev) {
     GLint major = 0, minor = 0;
-    dev->gl.GetIntegerv(GL_MAJOR_VERSION, &major);
-    dev->gl.GetIntegerv(GL_MINOR_VERSION, &minor);
-    if (major * 10 + minor >= 46 || hfx_gl_has_extension(&dev->gl, "GL_EXT_texture_filter_anisotropic") ||
-        hfx_gl_has_extension(&dev->gl, "GL_ARB_texture_filter_anisotropic"))
-        dev->gl.GetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &dev->max_anisotropy);
-    dev->srgb_decode = hfx_gl_has_extension(&dev->gl, "GL_EXT_texture_sRGB_decode");
-    dev->depth_bias_scale = depth_bias_scale();
+    dev->gl->fn.GetIntegerv(GL_MAJOR_VERSION, &major);
+    dev->gl->fn.GetIntegerv(GL_MINOR_VERSION, &minor);
+    if (major * 10 + minor >= 46 || hfx_gl_has_extension(&dev->gl->fn, "GL_EXT_texture_filter_anisotropic") ||
+        hfx_gl_has_extension(&dev->gl->fn, "GL_ARB_texture_filter_anisotropic"))
+        dev->gl->fn.GetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &dev->max_anisotropy);
+    dev->gl->srgb_decode = hfx_gl_has_extension(&dev->gl->fn, "GL_EXT_texture_sRGB_decode");
+    dev->gl->depth_bias_scale = depth_bias_scale();
 }
 
 /* Reads the bindings the device shadows, so the shadow starts true. */
 static void read_bindings(hfx_device *dev) {
     GLint v = 0;
-    dev->gl.GetIntegerv(GL_CURRENT_PROGRAM, &v);
-    dev->program = (GLuint)v;
-    dev->gl.GetIntegerv(GL_ACTIVE_TEXTURE, &v);
-    dev->active_unit = (GLenum)v;
+    dev->gl->fn.GetIntegerv(GL_CURRENT_PROGRAM, &v);
+    dev->gl->program = (GLuint)v;
+    dev->gl->fn.GetIntegerv(GL_ACTIVE_TEXTURE, &v);
+    dev->gl->active_unit = (GLenum)v;
     for (int u = 0; u < HFX_MAX_UNITS; u++) {
-        dev->units[u].texture = 0;
-        dev->units[u].target = 0; /* unknown: the first bind on a unit always happens */
-        dev->units[u].sampler = (GLuint)-1;
+        dev->gl->units[u].texture = 0;
+        dev->gl->units[u].target = 0; /* unknown: the first bind on a unit always happens */
+        dev->gl->units[u].sampler = (GLuint)-1;
     }
 }
 
@@ -68,32 +68,32 @@ static void compute_fixup(hfx_device *dev, GLint width, GLint height) {
     float f[4] = {0, 0, 0, 0};
     if (width > 0 && height > 0) {
         f[0] = 1.0f / (float)width;
-        f[1] = (dev->flip ? 1.0f : -1.0f) / (float)height;
-        f[2] = dev->flip ? 1.0f : 0.0f;
+        f[1] = (dev->gl->flip ? 1.0f : -1.0f) / (float)height;
+        f[2] = dev->gl->flip ? 1.0f : 0.0f;
         f[3] = (float)height;
     }
-    if (memcmp(f, dev->pos_fixup, sizeof f) == 0) return;
-    memcpy(dev->pos_fixup, f, sizeof f);
-    dev->pos_fixup_serial++; /* programs compare their copy on their next Apply */
+    if (memcmp(f, dev->gl->pos_fixup, sizeof f) == 0) return;
+    memcpy(dev->gl->pos_fixup, f, sizeof f);
+    dev->gl->pos_fixup_serial++; /* programs compare their copy on their next Apply */
 }
 
 /* Reads the viewport and the draw framebuffer, which the fixup follows. */
 void hfx_rt_read_target(hfx_device *dev) {
     GLint vp[4] = {0}, fbo = 0;
     dev->applied = NULL;
-    dev->gl.GetIntegerv(GL_VIEWPORT, vp);
-    dev->gl.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
-    dev->flip = fbo != 0;
+    dev->gl->fn.GetIntegerv(GL_VIEWPORT, vp);
+    dev->gl->fn.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
+    dev->gl->flip = fbo != 0;
     compute_fixup(dev, vp[2], vp[3]);
 }
 
 void hfx_device_set_viewport(hfx_device *dev, int x, int y, int width, int height) {
     if (!dev || dev->be != &hfx_gl_backend) return; /* Vulkan: hfx_vk_target's size */
     dev->applied = NULL; /* the front face and hfx_pos_fixup may change */
-    dev->gl.Viewport(x, y, width, height);
+    dev->gl->fn.Viewport(x, y, width, height);
     GLint fbo = 0;
-    dev->gl.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
-    dev->flip = fbo != 0;
+    dev->gl->fn.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
+    dev->gl->flip = fbo != 0;
     compute_fixup(dev, width, height);
 }
 
@@ -103,7 +103,7 @@ void hfx_device_set_viewport(hfx_device *dev, int x, int y, int width, int heigh
 void hfx_device_sync(hfx_device *dev) {
     if (!dev || dev->be != &hfx_gl_backend) return; /* Vulkan: nothing is shadowed */
     dev->applied = NULL;
-    hfx_rt_read_state(dev, &dev->state);
+    hfx_rt_read_state(dev, &dev->gl->state);
     hfx_rt_read_target(dev);
     read_bindings(dev);
 }
@@ -111,61 +111,63 @@ void hfx_device_sync(hfx_device *dev) {
 hfx_device *hfx_device_create_gl(hfx_gl_loader load) {
     if (!load) return NULL;
     hfx_device *dev = calloc(1, sizeof *dev);
-    if (!dev) return NULL;
-    dev->be = &hfx_gl_backend;
-    dev->pos_fixup_serial = 1; /* programs start at 0: they compare on their first Apply */
-    if (hfx_gl_load(&dev->gl, load) != NULL) {
+    if (dev) dev->gl = calloc(1, sizeof *dev->gl);
+    if (!dev || !dev->gl || hfx_gl_load(&dev->gl->fn, load) != NULL) {
+        if (dev) free(dev->gl);
         free(dev);
         return NULL;
     }
-    while (dev->gl.GetError() != GL_NO_ERROR) {}
+    dev->be = &hfx_gl_backend;
+    dev->gl->pos_fixup_serial = 1; /* programs start at 0: they compare on their first Apply */
+    while (dev->gl->fn.GetError() != GL_NO_ERROR) {}
     read_caps(dev);
     hfx_rt_spirv_init(dev, load);
     read_bindings(dev);
     hfx_rt_read_target(dev);
-    hfx_rt_read_state(dev, &dev->state);
+    hfx_rt_read_state(dev, &dev->gl->state);
     hfx_rs_defaults(dev->rs);
-    while (dev->gl.GetError() != GL_NO_ERROR) {}
+    while (dev->gl->fn.GetError() != GL_NO_ERROR) {}
     return dev;
 }
 
 void hfx_gl_device_destroy(hfx_device *dev) {
     hfx_rt_textures_free(dev);
-    free(dev->scratch);
-    free(dev->program_cache);
+    free(dev->gl->scratch);
+    free(dev->gl->program_cache);
+    free(dev->gl);
     free(dev);
 }
 
 
 void hfx_rt_bind_unit(hfx_device *dev, int unit, GLenum target, GLuint texture, GLuint sampler) {
-    hfx_unit_state *u = &dev->units[unit];
+    hfx_unit_state *u = &dev->gl->units[unit];
     if (u->texture != texture || u->target != target) {
         /* Not shadowed: applications switch units for their own uploads all the time. */
-        dev->gl.ActiveTexture(GL_TEXTURE0 + (GLenum)unit);
-        dev->active_unit = GL_TEXTURE0 + (GLenum)unit;
+        dev->gl->fn.ActiveTexture(GL_TEXTURE0 + (GLenum)unit);
+        dev->gl->active_unit = GL_TEXTURE0 + (GLenum)unit;
         /* Unbinding the previous target keeps one texture per unit, as D3D has. */
-        if (u->target && u->target != target && u->texture) dev->gl.BindTexture(u->target, 0);
-        dev->gl.BindTexture(target, texture);
+        if (u->target && u->target != target && u->texture) dev->gl->fn.BindTexture(u->target, 0);
+        dev->gl->fn.BindTexture(target, texture);
         hfx_rt_texture_check(dev, target, texture);
         u->texture = texture;
         u->target = target;
     }
     if (u->sampler != sampler) {
-        dev->gl.BindSampler((GLuint)unit, sampler);
+        dev->gl->fn.BindSampler((GLuint)unit, sampler);
         u->sampler = sampler;
     }
 }
 
-static GLboolean enabled(hfx_device *dev, GLenum cap) { return dev->gl.IsEnabled(cap) ? GL_TRUE : GL_FALSE; }
+static GLboolean enabled(hfx_device *dev, GLenum cap) { return dev->gl->fn.IsEnabled(cap) ? GL_TRUE : GL_FALSE; }
 
 static GLenum get_enum(hfx_device *dev, GLenum pname) {
     GLint v[4] = {0};
-    dev->gl.GetIntegerv(pname, v);
+    dev->gl->fn.GetIntegerv(pname, v);
     return (GLenum)v[0];
 }
 
 void hfx_rt_read_state(hfx_device *dev, hfx_glstate *s) {
-    hfx_gl *gl = &dev->gl;
+    hfx_gl *gl = &dev->gl->fn;
     memset(s, 0, sizeof *s);
     s->cull = enabled(dev, GL_CULL_FACE);
     s->cull_face = get_enum(dev, GL_CULL_FACE_MODE);
@@ -227,29 +229,29 @@ void hfx_rt_read_state(hfx_device *dev, hfx_glstate *s) {
 
 static void set_cap(hfx_device *dev, GLenum cap, GLboolean *have, GLboolean want) {
     if (*have == want) return;
-    if (want) dev->gl.Enable(cap);
-    else dev->gl.Disable(cap);
+    if (want) dev->gl->fn.Enable(cap);
+    else dev->gl->fn.Disable(cap);
     *have = want;
 }
 
 static void write_blend(hfx_device *dev, hfx_glstate *s, const hfx_glstate *w) {
     set_cap(dev, GL_BLEND, &s->blend, w->blend);
     if (s->src_rgb != w->src_rgb || s->dst_rgb != w->dst_rgb || s->src_a != w->src_a || s->dst_a != w->dst_a) {
-        dev->gl.BlendFuncSeparate(w->src_rgb, w->dst_rgb, w->src_a, w->dst_a);
+        dev->gl->fn.BlendFuncSeparate(w->src_rgb, w->dst_rgb, w->src_a, w->dst_a);
         s->src_rgb = w->src_rgb, s->dst_rgb = w->dst_rgb, s->src_a = w->src_a, s->dst_a = w->dst_a;
     }
     if (s->eq_rgb != w->eq_rgb || s->eq_a != w->eq_a) {
-        dev->gl.BlendEquationSeparate(w->eq_rgb, w->eq_a);
+        dev->gl->fn.BlendEquationSeparate(w->eq_rgb, w->eq_a);
         s->eq_rgb = w->eq_rgb, s->eq_a = w->eq_a;
     }
     if (memcmp(s->blend_color, w->blend_color, sizeof s->blend_color) != 0) {
-        dev->gl.BlendColor(w->blend_color[0], w->blend_color[1], w->blend_color[2], w->blend_color[3]);
+        dev->gl->fn.BlendColor(w->blend_color[0], w->blend_color[1], w->blend_color[2], w->blend_color[3]);
         memcpy(s->blend_color, w->blend_color, sizeof s->blend_color);
     }
     for (GLuint i = 0; i < 4; i++)
         if (s->color_mask[i] != w->color_mask[i]) {
             uint8_t m = w->color_mask[i];
-            dev->gl.ColorMaski(i, (m & 1) != 0, (m & 2) != 0, (m & 4) != 0, (m & 8) != 0);
+            dev->gl->fn.ColorMaski(i, (m & 1) != 0, (m & 2) != 0, (m & 4) != 0, (m & 8) != 0);
             s->color_mask[i] = m;
         }
 }
@@ -260,31 +262,31 @@ static void write_stencil(hfx_device *dev, hfx_glstate *s, const hfx_glstate *w)
     for (int f = 0; f < 2; f++) {
         if (s->face[f].func != w->face[f].func || s->face[f].ref != w->face[f].ref ||
             s->face[f].mask != w->face[f].mask) {
-            dev->gl.StencilFuncSeparate(faces[f], w->face[f].func, w->face[f].ref, w->face[f].mask);
+            dev->gl->fn.StencilFuncSeparate(faces[f], w->face[f].func, w->face[f].ref, w->face[f].mask);
             s->face[f].func = w->face[f].func, s->face[f].ref = w->face[f].ref, s->face[f].mask = w->face[f].mask;
         }
         if (s->face[f].fail != w->face[f].fail || s->face[f].zfail != w->face[f].zfail ||
             s->face[f].pass != w->face[f].pass) {
-            dev->gl.StencilOpSeparate(faces[f], w->face[f].fail, w->face[f].zfail, w->face[f].pass);
+            dev->gl->fn.StencilOpSeparate(faces[f], w->face[f].fail, w->face[f].zfail, w->face[f].pass);
             s->face[f].fail = w->face[f].fail, s->face[f].zfail = w->face[f].zfail, s->face[f].pass = w->face[f].pass;
         }
         if (s->face[f].write != w->face[f].write) {
-            dev->gl.StencilMaskSeparate(faces[f], w->face[f].write);
+            dev->gl->fn.StencilMaskSeparate(faces[f], w->face[f].write);
             s->face[f].write = w->face[f].write;
         }
     }
 }
 
 void hfx_rt_write_state(hfx_device *dev, const hfx_glstate *w) {
-    hfx_glstate *s = &dev->state;
+    hfx_glstate *s = &dev->gl->state;
     set_cap(dev, GL_CULL_FACE, &s->cull, w->cull);
-    if (s->cull_face != w->cull_face) dev->gl.CullFace(s->cull_face = w->cull_face);
-    if (s->front_face != w->front_face) dev->gl.FrontFace(s->front_face = w->front_face);
-    if (s->provoking != w->provoking) dev->gl.ProvokingVertex(s->provoking = w->provoking);
-    if (s->polygon_mode != w->polygon_mode) dev->gl.PolygonMode(GL_FRONT_AND_BACK, s->polygon_mode = w->polygon_mode);
+    if (s->cull_face != w->cull_face) dev->gl->fn.CullFace(s->cull_face = w->cull_face);
+    if (s->front_face != w->front_face) dev->gl->fn.FrontFace(s->front_face = w->front_face);
+    if (s->provoking != w->provoking) dev->gl->fn.ProvokingVertex(s->provoking = w->provoking);
+    if (s->polygon_mode != w->polygon_mode) dev->gl->fn.PolygonMode(GL_FRONT_AND_BACK, s->polygon_mode = w->polygon_mode);
     set_cap(dev, GL_DEPTH_TEST, &s->depth_test, w->depth_test);
-    if (s->depth_mask != w->depth_mask) dev->gl.DepthMask(s->depth_mask = w->depth_mask);
-    if (s->depth_func != w->depth_func) dev->gl.DepthFunc(s->depth_func = w->depth_func);
+    if (s->depth_mask != w->depth_mask) dev->gl->fn.DepthMask(s->depth_mask = w->depth_mask);
+    if (s->depth_func != w->depth_func) dev->gl->fn.DepthFunc(s->depth_func = w->depth_func);
     write_blend(dev, s, w);
     write_stencil(dev, s, w);
     set_cap(dev, GL_SCISSOR_TEST, &s->scissor, w->scissor);
@@ -292,7 +294,7 @@ void hfx_rt_write_state(hfx_device *dev, const hfx_glstate *w) {
     set_cap(dev, GL_POLYGON_OFFSET_LINE, &s->offset_line, w->offset_line);
     set_cap(dev, GL_POLYGON_OFFSET_POINT, &s->offset_point, w->offset_point);
     if (s->offset_factor != w->offset_factor || s->offset_units != w->offset_units) {
-        dev->gl.PolygonOffset(w->offset_factor, w->offset_units);
+        dev->gl->fn.PolygonOffset(w->offset_factor, w->offset_units);
         s->offset_factor = w->offset_factor, s->offset_units = w->offset_units;
     }
     set_cap(dev, GL_MULTISAMPLE, &s->multisample, w->multisample);
@@ -300,12 +302,12 @@ void hfx_rt_write_state(hfx_device *dev, const hfx_glstate *w) {
     set_cap(dev, GL_DITHER, &s->dither, w->dither);
     set_cap(dev, GL_LINE_SMOOTH, &s->line_smooth, w->line_smooth);
     set_cap(dev, GL_SAMPLE_MASK, &s->sample_mask, w->sample_mask);
-    if (s->sample_mask_value != w->sample_mask_value) dev->gl.SampleMaski(0, s->sample_mask_value = w->sample_mask_value);
+    if (s->sample_mask_value != w->sample_mask_value) dev->gl->fn.SampleMaski(0, s->sample_mask_value = w->sample_mask_value);
     for (int i = 0; i < 6; i++) {
         GLboolean have = (s->clip_planes >> i) & 1, want = (w->clip_planes >> i) & 1;
         if (have == want) continue;
-        if (want) dev->gl.Enable(GL_CLIP_DISTANCE0 + (GLenum)i);
-        else dev->gl.Disable(GL_CLIP_DISTANCE0 + (GLenum)i);
+        if (want) dev->gl->fn.Enable(GL_CLIP_DISTANCE0 + (GLenum)i);
+        else dev->gl->fn.Disable(GL_CLIP_DISTANCE0 + (GLenum)i);
     }
     s->clip_planes = w->clip_planes;
 }

@@ -2,7 +2,7 @@
  * texture units to bind (which texture, which GL sampler object, on which target). */
 #include <stdlib.h>
 
-#include "internal.h"
+#include "gl/gl_int.h"
 
 /* 1D textures are 2D textures of height 1 (docs/conventions.md: the GLSL samples them so,
  * and GL ES has no 1D textures). */
@@ -76,9 +76,9 @@ static void find_variants(const hfx_fx_effect *fx, hfx_rt_pass *rp, uint32_t ind
 int hfx_rt_pass_build(hfx_shared *sh, uint32_t *cap, uint32_t index) {
     const hfx_fx_effect *fx = sh->fx;
     const hfx_fx_pass *fp = &fx->passes[index];
-    hfx_rt_pass *rp = &sh->passes[index];
+    hfx_rt_pass *rp = &sh->gl->passes[index];
     rp->program = fp->program < fx->program_count ? fp->program : HFX_NONE;
-    rp->prog = rp->program != HFX_NONE ? &sh->programs[rp->program] : NULL;
+    rp->prog = rp->program != HFX_NONE ? &sh->gl->programs[rp->program] : NULL;
     rp->render_states = calloc(fp->state_count ? fp->state_count : 1, sizeof *rp->render_states);
     rp->bindings = calloc(HFX_MAX_UNITS, sizeof *rp->bindings);
     if (!rp->render_states || !rp->bindings) return hfx_rt_fail(sh->dev, HFX_ERR_MEMORY, "out of memory");
@@ -122,10 +122,21 @@ int hfx_rt_pass_build(hfx_shared *sh, uint32_t *cap, uint32_t index) {
             int rc = hfx_rt_sampler_override(sh, cap, fp, b);
             if (rc) return rc;
         }
-        sh->unit_mask |= 1u << b->unit;
+        sh->gl->unit_mask |= 1u << b->unit;
     }
-    sh->groups |= rp->groups;
+    sh->gl->groups |= rp->groups;
     rp->direct = rp->prog && !rp->render_state_count && !rp->binding_count;
     return HFX_OK;
 }
 
+/* hfx_param_texture_target on GL: the target the passes bind the texture on (a plain `texture`
+ * takes its samplers' dimension, param_target); 0 when no pass binds it. */
+unsigned int hfx_gl_texture_target(const hfx_param *p) {
+    const hfx_gl_shared *gl = p->fx->sh->gl;
+    for (uint32_t i = 0; i < p->fx->sh->fx->pass_count; i++)
+        for (uint32_t b = 0; b < gl->passes[i].binding_count; b++) {
+            const hfx_rt_binding *bd = &gl->passes[i].bindings[b];
+            if (bd->texture_param == p->index || bd->sampler_param == p->index) return bd->target;
+        }
+    return 0;
+}

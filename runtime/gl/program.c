@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "eval.h"
-#include "internal.h"
+#include "gl/gl_int.h"
 
 typedef struct active_uniform {
     char name[256];
@@ -26,7 +26,7 @@ typedef struct build {
 } build;
 
 static GLuint compile_stage(hfx_shared *sh, GLenum type, const char *src, const char *what) {
-    hfx_gl *gl = &sh->dev->gl;
+    hfx_gl *gl = &sh->dev->gl->fn;
     GLuint s = gl->CreateShader(type);
     if (!s) return 0;
     gl->ShaderSource(s, 1, &src, NULL);
@@ -44,7 +44,7 @@ static GLuint compile_stage(hfx_shared *sh, GLenum type, const char *src, const 
 }
 
 int hfx_rt_program_link(hfx_shared *sh, hfx_rt_program *p, const hfx_fx_program *fp, GLuint vs, GLuint fs) {
-    hfx_gl *gl = &sh->dev->gl;
+    hfx_gl *gl = &sh->dev->gl->fn;
     p->object = gl->CreateProgram();
     if (!p->object) return hfx_rt_fail(sh->dev, HFX_ERR_GL, "glCreateProgram failed");
     gl->AttachShader(p->object, vs);
@@ -68,7 +68,7 @@ int hfx_rt_program_link(hfx_shared *sh, hfx_rt_program *p, const hfx_fx_program 
 }
 
 static int read_active(build *b) {
-    hfx_gl *gl = &b->sh->dev->gl;
+    hfx_gl *gl = &b->sh->dev->gl->fn;
     gl->GetProgramiv(b->p->object, GL_ACTIVE_UNIFORMS, &b->active_count);
     if (b->active_count <= 0) return HFX_OK;
     b->active = calloc((size_t)b->active_count, sizeof *b->active);
@@ -121,10 +121,10 @@ static int upload_fn(GLenum type, uint16_t *fn, uint32_t *comps, int *is_int) {
 static void upload_uint(hfx_device *dev, const hfx_upload *up, const void *v) {
     const GLuint *u = v;
     switch (up->fn) {
-    case UP_U1: dev->gl.Uniform1uiv(up->location, up->count, u); break;
-    case UP_U2: dev->gl.Uniform2uiv(up->location, up->count, u); break;
-    case UP_U3: dev->gl.Uniform3uiv(up->location, up->count, u); break;
-    default: dev->gl.Uniform4uiv(up->location, up->count, u); break;
+    case UP_U1: dev->gl->fn.Uniform1uiv(up->location, up->count, u); break;
+    case UP_U2: dev->gl->fn.Uniform2uiv(up->location, up->count, u); break;
+    case UP_U3: dev->gl->fn.Uniform3uiv(up->location, up->count, u); break;
+    default: dev->gl->fn.Uniform4uiv(up->location, up->count, u); break;
     }
 }
 
@@ -165,11 +165,11 @@ int hfx_rt_upload_setup(const hfx_gl *gl, GLenum type, const hfx_fx_param *p, hf
 int hfx_rt_upload_add(hfx_device *dev, hfx_rt_program *p, uint32_t *cap, const hfx_upload *up) {
     if (!HFX_GROW(p->uploads, p->upload_count, *cap, 8)) return HFX_ERR_MEMORY;
     p->uploads[p->upload_count++] = *up;
-    if (up->kind == UK_CONVERT && up->words > dev->scratch_size) {
-        float *s = realloc(dev->scratch, up->words * sizeof *s);
+    if (up->kind == UK_CONVERT && up->words > dev->gl->scratch_size) {
+        float *s = realloc(dev->gl->scratch, up->words * sizeof *s);
         if (!s) return HFX_ERR_MEMORY;
-        dev->scratch = s;
-        dev->scratch_size = up->words;
+        dev->gl->scratch = s;
+        dev->gl->scratch_size = up->words;
     }
     return HFX_OK;
 }
@@ -183,7 +183,7 @@ static int add_upload(void *ctx, const char *name, const hfx_fx_param *p) {
     hfx_upload up;
     memset(&up, 0, sizeof up);
     uint32_t comps;
-    const hfx_gl *gl = &b->sh->dev->gl;
+    const hfx_gl *gl = &b->sh->dev->gl->fn;
     if (!hfx_rt_upload_setup(gl, u->type, p, &up, &comps)) {
         hfx_shared_warn(b->sh, NULL, "uniform '%s': its GLSL type does not match parameter '%s'; not uploaded", name,
                         p->name ? p->name : "");
@@ -242,7 +242,7 @@ int hfx_rt_regs_setup(hfx_device *dev, hfx_rt_program *p, uint32_t size, GLint (
     p->reg_locs = calloc(size, sizeof *p->reg_locs);
     if (!p->regs || !p->reg_locs) return HFX_ERR_MEMORY;
     p->reg_size = size;
-    p->reg_call = dev->gl.Uniform4fv;
+    p->reg_call = dev->gl->fn.Uniform4fv;
     /* GL keeps the elements up to the last one a shader reads; the rest are never sent */
     while (p->reg_active < size && (p->reg_locs[p->reg_active] = loc_of(ctx, p->reg_active)) >= 0) p->reg_active++;
     return HFX_OK;
@@ -252,7 +252,7 @@ static GLint glsl_reg_location(void *ctx, uint32_t i) {
     build *b = ctx;
     char name[32];
     snprintf(name, sizeof name, "%s[%u]", HFX_FX_REGS_NAME, (unsigned)i);
-    return b->sh->dev->gl.GetUniformLocation(b->p->object, name);
+    return b->sh->dev->gl->fn.GetUniformLocation(b->p->object, name);
 }
 
 /* A packed parameter whose registers hold its words as they are (4 components a row) and all
@@ -289,7 +289,7 @@ void hfx_rt_program_ready(hfx_rt_program *p, uint32_t tops) {
 
 /* Sampler uniforms never change unit: set once, with the program bound briefly. */
 static void set_sampler_units(hfx_shared *sh, hfx_rt_program *p, const hfx_fx_program *fp) {
-    hfx_gl *gl = &sh->dev->gl;
+    hfx_gl *gl = &sh->dev->gl->fn;
     GLint current = 0;
     gl->GetIntegerv(GL_CURRENT_PROGRAM, &current);
     gl->UseProgram(p->object);
@@ -314,8 +314,8 @@ static int link_sources(hfx_shared *sh, hfx_rt_program *p, const hfx_fx_program 
     GLuint vs = compile_stage(sh, GL_VERTEX_SHADER, vs_src, "vertex");
     GLuint fs = vs ? compile_stage(sh, GL_FRAGMENT_SHADER, fs_src, "fragment") : 0;
     int rc = vs && fs ? hfx_rt_program_link(sh, p, fp, vs, fs) : HFX_ERR_GL;
-    if (vs) sh->dev->gl.DeleteShader(vs);
-    if (fs) sh->dev->gl.DeleteShader(fs);
+    if (vs) sh->dev->gl->fn.DeleteShader(vs);
+    if (fs) sh->dev->gl->fn.DeleteShader(fs);
     return rc;
 }
 
@@ -343,7 +343,7 @@ static void find_switches(const hfx_fx_effect *fx, const hfx_fx_program *fp, hfx
 
 int hfx_rt_program_build(hfx_shared *sh, uint32_t index, hfx_target target) {
     const hfx_fx_program *fp = &sh->fx->programs[index];
-    hfx_rt_program *p = &sh->programs[index];
+    hfx_rt_program *p = &sh->gl->programs[index];
     const char *vs_src = fp->code[HFX_STAGE_VERTEX][target].data;
     const char *fs_src = fp->code[HFX_STAGE_FRAGMENT][target].data;
     if (!vs_src || !fs_src)
@@ -397,8 +397,8 @@ hfx_rt_program *hfx_rt_program_switched(hfx_shared *sh, hfx_rt_program *p, uint3
 void hfx_rt_program_free(hfx_device *dev, hfx_rt_program *p) {
     /* GL frees the bound program's name once another is bound (a load binds one briefly) and
      * may hand it to a later program: the shadow must not then take that one for bound. */
-    if (p->object && dev->program == p->object) dev->program = (GLuint)-1;
-    if (p->object) dev->gl.DeleteProgram(p->object);
+    if (p->object && dev->gl->program == p->object) dev->gl->program = (GLuint)-1;
+    if (p->object) dev->gl->fn.DeleteProgram(p->object);
     free(p->slots);
     free(p->reads);
     free(p->uploads);
@@ -430,19 +430,19 @@ void hfx_rt_upload_slow(hfx_device *dev, const hfx_upload *up, const uint32_t *v
         return;
     }
     /* GLSL declared int where the data is float, or the reverse. */
-    hfx_gl *gl = &dev->gl;
+    hfx_gl *gl = &dev->gl->fn;
     int to_int = up->fn >= UP_I1 && up->fn <= UP_U4;
     for (uint32_t i = 0; i < up->words; i++) {
         if (to_int) {
             float f;
             memcpy(&f, &src[i], sizeof f);
             int32_t v = hfx_ev_int(f);
-            memcpy(&dev->scratch[i], &v, sizeof v);
+            memcpy(&dev->gl->scratch[i], &v, sizeof v);
         } else {
-            dev->scratch[i] = (float)(int32_t)src[i];
+            dev->gl->scratch[i] = (float)(int32_t)src[i];
         }
     }
-    const void *d = dev->scratch;
+    const void *d = dev->gl->scratch;
     GLsizei n = up->count;
     switch (up->fn) {
     case UP_F1: gl->Uniform1fv(up->location, n, d); break;
@@ -573,12 +573,32 @@ int hfx_rt_upload_log(hfx_effect *fx, hfx_rt_program *p) {
 
 /* hfx_pos_fixup and the alpha test's uniforms, for programs that declare them. */
 void hfx_rt_program_extras(hfx_device *dev, hfx_rt_program *p) {
-    if (p->pos_fixup_serial != dev->pos_fixup_serial) {
-        p->pos_fixup_serial = dev->pos_fixup_serial;
-        if (p->pos_fixup_loc >= 0 && memcmp(p->pos_fixup, dev->pos_fixup, sizeof p->pos_fixup) != 0) {
-            memcpy(p->pos_fixup, dev->pos_fixup, sizeof p->pos_fixup);
-            dev->gl.Uniform4fv(p->pos_fixup_loc, 1, p->pos_fixup);
+    if (p->pos_fixup_serial != dev->gl->pos_fixup_serial) {
+        p->pos_fixup_serial = dev->gl->pos_fixup_serial;
+        if (p->pos_fixup_loc >= 0 && memcmp(p->pos_fixup, dev->gl->pos_fixup, sizeof p->pos_fixup) != 0) {
+            memcpy(p->pos_fixup, dev->gl->pos_fixup, sizeof p->pos_fixup);
+            dev->gl->fn.Uniform4fv(p->pos_fixup_loc, 1, p->pos_fixup);
         }
     }
     if (p->alpha_test) hfx_rs_alpha_test(dev, p);
+}
+
+/* A program's preshaders (preshader.c) once its registers are set up: the parameters they read
+ * join the program's reads, so a full scan marks them too. */
+static int add_read(hfx_rt_program *p, uint32_t r) {
+    for (uint32_t k = 0; k < p->read_count; k++)
+        if (p->reads[k] == r) return HFX_OK;
+    uint32_t *grown = realloc(p->reads, ((size_t)p->read_count + 1) * sizeof *grown);
+    if (!grown) return HFX_ERR_MEMORY;
+    p->reads = grown;
+    p->reads[p->read_count++] = r;
+    return HFX_OK;
+}
+
+int hfx_rt_preshaders_setup(hfx_rt_program *p, const hfx_fx_effect *fx, const hfx_fx_program *fp) {
+    if (!fp->preshader_count || !p->regs) return HFX_OK;
+    int rc = hfx_preshaders_init(&p->pre, fx, fp);
+    for (uint32_t r = 0; !rc && r < fx->top_param_count; r++)
+        if (p->pre.count[r]) rc = add_read(p, r);
+    return rc;
 }

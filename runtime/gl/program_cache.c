@@ -16,7 +16,7 @@
 #include <string.h>
 #include <zlib.h>
 
-#include "internal.h"
+#include "gl/gl_int.h"
 
 enum { CACHE_VERSION = 1, HEADER_WORDS = 8, MAX_BINARY = 64 << 20 };
 static const char magic[4] = {'H', 'F', 'X', 'B'};
@@ -26,20 +26,20 @@ int hfx_device_set_program_cache(hfx_device *dev, const char *dir) {
     if (dev->be != &hfx_gl_backend) return hfx_rt_fail(dev, HFX_ERR_NOT_FOUND, "the program cache is OpenGL's");
     char *copy = NULL;
     if (dir && *dir && !(copy = strdup(dir))) return hfx_rt_fail(dev, HFX_ERR_MEMORY, "out of memory");
-    free(dev->program_cache);
-    dev->program_cache = copy;
+    free(dev->gl->program_cache);
+    dev->gl->program_cache = copy;
     return HFX_OK;
 }
 
 /* Is there a cache, and can this driver hand out and take back binaries? */
 static int cache_on(const hfx_device *dev) {
-    return dev->program_cache && dev->gl.ProgramParameteri && dev->gl.GetProgramBinary && dev->gl.ProgramBinary;
+    return dev->gl->program_cache && dev->gl->fn.ProgramParameteri && dev->gl->fn.GetProgramBinary && dev->gl->fn.ProgramBinary;
 }
 
 int hfx_rt_program_cache_usable(const hfx_device *dev) {
     GLint formats = 0;
     if (!cache_on(dev)) return 0;
-    dev->gl.GetIntegerv(GL_NUM_PROGRAM_BINARY_FORMATS, &formats);
+    dev->gl->fn.GetIntegerv(GL_NUM_PROGRAM_BINARY_FORMATS, &formats);
     return formats > 0;
 }
 
@@ -53,7 +53,7 @@ static uint64_t fnv1a_str(uint64_t h, const char *s) { return fnv1a(h, s ? s : "
 
 /* "vendor|renderer|version": a new driver makes every entry stale. */
 static void driver_string(const hfx_device *dev, char *out, size_t cap) {
-    const GLubyte *v = dev->gl.GetString(GL_VENDOR), *r = dev->gl.GetString(GL_RENDERER), *ver = dev->gl.GetString(GL_VERSION);
+    const GLubyte *v = dev->gl->fn.GetString(GL_VENDOR), *r = dev->gl->fn.GetString(GL_RENDERER), *ver = dev->gl->fn.GetString(GL_VERSION);
     snprintf(out, cap, "%s|%s|%s", v ? (const char *)v : "", r ? (const char *)r : "", ver ? (const char *)ver : "");
 }
 
@@ -68,9 +68,9 @@ static uint64_t program_key(const hfx_fx_program *fp, const char *vs, const char
 }
 
 static char *entry_path(const hfx_device *dev, uint64_t key) {
-    size_t n = strlen(dev->program_cache) + 32;
+    size_t n = strlen(dev->gl->program_cache) + 32;
     char *path = malloc(n);
-    if (path) snprintf(path, n, "%s/%016llx.hfxbin", dev->program_cache, (unsigned long long)key);
+    if (path) snprintf(path, n, "%s/%016llx.hfxbin", dev->gl->program_cache, (unsigned long long)key);
     return path;
 }
 
@@ -121,12 +121,12 @@ static int try_cached(hfx_device *dev, hfx_rt_program *p, uint64_t key, const ch
     uint32_t length = 0;
     const unsigned char *bin = data ? check_entry(data, size, key, driver, &format, &length) : NULL;
     GLint ok = 0;
-    if (bin && (p->object = dev->gl.CreateProgram()) != 0) {
-        dev->gl.ProgramBinary(p->object, format, bin, (GLsizei)length);
-        dev->gl.GetProgramiv(p->object, GL_LINK_STATUS, &ok);
-        while (dev->gl.GetError() != GL_NO_ERROR) {} /* a refused binary is a miss, not an error */
+    if (bin && (p->object = dev->gl->fn.CreateProgram()) != 0) {
+        dev->gl->fn.ProgramBinary(p->object, format, bin, (GLsizei)length);
+        dev->gl->fn.GetProgramiv(p->object, GL_LINK_STATUS, &ok);
+        while (dev->gl->fn.GetError() != GL_NO_ERROR) {} /* a refused binary is a miss, not an error */
         if (!ok) {
-            dev->gl.DeleteProgram(p->object);
+            dev->gl->fn.DeleteProgram(p->object);
             p->object = 0;
         }
     }
@@ -138,13 +138,13 @@ static int try_cached(hfx_device *dev, hfx_rt_program *p, uint64_t key, const ch
  * a reader never sees half a file. Failures only cost the next load its shortcut. */
 static void store(hfx_device *dev, const hfx_rt_program *p, uint64_t key, const char *driver) {
     GLint len = 0;
-    dev->gl.GetProgramiv(p->object, GL_PROGRAM_BINARY_LENGTH, &len);
+    dev->gl->fn.GetProgramiv(p->object, GL_PROGRAM_BINARY_LENGTH, &len);
     size_t driver_len = strlen(driver), total = HEADER_WORDS * 4 + driver_len + (size_t)len;
     unsigned char *d = len > 0 && len <= MAX_BINARY ? malloc(total) : NULL;
     char *path = d ? entry_path(dev, key) : NULL, *tmp = path ? malloc(strlen(path) + 8) : NULL;
     GLsizei got = 0;
     GLenum format = 0;
-    if (tmp) dev->gl.GetProgramBinary(p->object, len, &got, &format, d + HEADER_WORDS * 4 + driver_len);
+    if (tmp) dev->gl->fn.GetProgramBinary(p->object, len, &got, &format, d + HEADER_WORDS * 4 + driver_len);
     if (tmp && got == len) {
         memcpy(d, magic, 4);
         const uint32_t words[] = {CACHE_VERSION, (uint32_t)key, (uint32_t)(key >> 32), format, (uint32_t)len,
@@ -157,7 +157,7 @@ static void store(hfx_device *dev, const hfx_rt_program *p, uint64_t key, const 
         if (f && fclose(f) != 0) ok = 0;
         if (!ok || rename(tmp, path) != 0) remove(tmp);
     }
-    while (dev->gl.GetError() != GL_NO_ERROR) {}
+    while (dev->gl->fn.GetError() != GL_NO_ERROR) {}
     free(tmp);
     free(path);
     free(d);
@@ -179,5 +179,5 @@ int hfx_rt_program_cached_link(hfx_shared *sh, hfx_rt_program *p, const hfx_fx_p
 }
 
 void hfx_rt_program_binary_hint(hfx_device *dev, GLuint program) {
-    if (cache_on(dev)) dev->gl.ProgramParameteri(program, GL_PROGRAM_BINARY_RETRIEVABLE_HINT, GL_TRUE);
+    if (cache_on(dev)) dev->gl->fn.ProgramParameteri(program, GL_PROGRAM_BINARY_RETRIEVABLE_HINT, GL_TRUE);
 }

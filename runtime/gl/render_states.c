@@ -10,7 +10,7 @@
 #include <string.h>
 
 #include "eval_code.h"
-#include "internal.h"
+#include "gl/gl_int.h"
 
 uint32_t hfx_rs_group(uint32_t id) {
     switch (id) {
@@ -121,7 +121,7 @@ static void want_groups(const hfx_device *dev, uint32_t groups, hfx_glstate *w) 
     if (groups & G_CULL) {
         int32_t c = rs[HFX_ST_CULLMODE].i;
         w->cull = c == 2 || c == 3;
-        w->front_face = dev->flip ? GL_CCW : GL_CW;
+        w->front_face = dev->gl->flip ? GL_CCW : GL_CW;
         w->provoking = GL_FIRST_VERTEX_CONVENTION;
         if (w->cull) w->cull_face = c == 3 ? GL_BACK : GL_FRONT;
     }
@@ -148,7 +148,7 @@ static void want_groups(const hfx_device *dev, uint32_t groups, hfx_glstate *w) 
         GLboolean on = bias != 0.0f || slope != 0.0f;
         w->offset_fill = w->offset_line = w->offset_point = on;
         w->offset_factor = slope;
-        w->offset_units = bias * dev->depth_bias_scale;
+        w->offset_units = bias * dev->gl->depth_bias_scale;
     }
     if (groups & G_MSAA) w->multisample = rs[HFX_ST_MULTISAMPLEANTIALIAS].i != 0;
     if (groups & G_SRGB) w->srgb = rs[HFX_ST_SRGBWRITEENABLE].i != 0;
@@ -170,15 +170,15 @@ void hfx_rs_apply(hfx_effect *fx, const hfx_rt_pass *pass) {
     }
     uint32_t groups = pass->groups & ~G_ALPHATEST;
     if (!groups) return;
-    hfx_glstate want = dev->state;
+    hfx_glstate want = dev->gl->state;
     want_groups(dev, groups, &want);
     hfx_rt_write_state(dev, &want);
 }
 
 /* D3D's front faces are clockwise; y flipped into a framebuffer object, GL sees them CCW. */
 void hfx_rs_front_face(hfx_device *dev) {
-    GLenum want = dev->flip ? GL_CCW : GL_CW;
-    if (dev->state.front_face != want) dev->gl.FrontFace(dev->state.front_face = want);
+    GLenum want = dev->gl->flip ? GL_CCW : GL_CW;
+    if (dev->gl->state.front_face != want) dev->gl->fn.FrontFace(dev->gl->state.front_face = want);
 }
 
 /* The codegen's alpha test: hfx_alpha_func is the D3DCMP value (ALWAYS when the test is off),
@@ -187,11 +187,11 @@ void hfx_rs_alpha_test(hfx_device *dev, hfx_rt_program *p) {
     int32_t func = dev->rs[HFX_ST_ALPHATESTENABLE].i ? dev->rs[HFX_ST_ALPHAFUNC].i : 8;
     float ref = (float)(dev->rs[HFX_ST_ALPHAREF].i & 255) / 255.0f;
     if (func != p->alpha_func && p->alpha_func_loc >= 0) {
-        dev->gl.Uniform1iv(p->alpha_func_loc, 1, &func);
+        dev->gl->fn.Uniform1iv(p->alpha_func_loc, 1, &func);
         p->alpha_func = func;
     }
     if (ref != p->alpha_ref && p->alpha_ref_loc >= 0) {
-        dev->gl.Uniform1fv(p->alpha_ref_loc, 1, &ref);
+        dev->gl->fn.Uniform1fv(p->alpha_ref_loc, 1, &ref);
         p->alpha_ref = ref;
     }
 }

@@ -15,7 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "internal.h"
+#include "gl/gl_int.h"
 
 
 static GLint gl_address(int32_t d3d) {
@@ -45,7 +45,7 @@ static float anisotropy(const hfx_device *dev, const hfx_sampler_desc *d) {
 /* Sets the GL parameters where want differs from have (all of them when have is NULL). */
 static void write_desc(hfx_device *dev, GLuint s, const hfx_sampler_desc *have, const hfx_sampler_desc *want) {
     static const GLenum wrap[3] = {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R};
-    hfx_gl *gl = &dev->gl;
+    hfx_gl *gl = &dev->gl->fn;
     for (int i = 0; i < 3; i++)
         if (!have || have->address[i] != want->address[i]) gl->SamplerParameteri(s, wrap[i], gl_address(want->address[i]));
     if (!have || have->mag != want->mag) gl->SamplerParameteri(s, GL_TEXTURE_MAG_FILTER, linear(want->mag) ? GL_LINEAR : GL_NEAREST);
@@ -58,7 +58,7 @@ static void write_desc(hfx_device *dev, GLuint s, const hfx_sampler_desc *have, 
     if (!have || have->lod_bias != want->lod_bias) gl->SamplerParameterf(s, GL_TEXTURE_LOD_BIAS, want->lod_bias);
     if (!have || memcmp(have->border, want->border, sizeof want->border) != 0)
         gl->SamplerParameterfv(s, GL_TEXTURE_BORDER_COLOR, want->border);
-    if (dev->srgb_decode && want->srgb_set && (!have || have->srgb != want->srgb || !have->srgb_set))
+    if (dev->gl->srgb_decode && want->srgb_set && (!have || have->srgb != want->srgb || !have->srgb_set))
         gl->SamplerParameteri(s, GL_TEXTURE_SRGB_DECODE_EXT, want->srgb ? GL_DECODE_EXT : GL_SKIP_DECODE_EXT);
 }
 
@@ -74,7 +74,7 @@ int hfx_rt_sampler_create(hfx_shared *sh, hfx_rt_sampler *s, const hfx_sampler_d
         memcpy(s->dynamic, dyn, dyn_count * sizeof *s->dynamic);
         s->dynamic_count = dyn_count;
     }
-    dev->gl.GenSamplers(1, &s->object);
+    dev->gl->fn.GenSamplers(1, &s->object);
     if (!s->object) return HFX_ERR_GL;
     write_desc(dev, s->object, NULL, base);
     return HFX_OK;
@@ -98,8 +98,8 @@ void hfx_rt_sampler_free(hfx_device *dev, hfx_rt_sampler *s) {
     /* GL unbinds a deleted sampler from every unit, and may give its name to a later one: the
      * shadow follows, or it would skip binding that one */
     for (int u = 0; s->object && u < HFX_MAX_UNITS; u++)
-        if (dev->units[u].sampler == s->object) dev->units[u].sampler = 0;
-    if (s->object) dev->gl.DeleteSamplers(1, &s->object);
+        if (dev->gl->units[u].sampler == s->object) dev->gl->units[u].sampler = 0;
+    if (s->object) dev->gl->fn.DeleteSamplers(1, &s->object);
     free(s->dynamic);
     memset(s, 0, sizeof *s);
 }
@@ -108,9 +108,9 @@ void hfx_rt_sampler_free(hfx_device *dev, hfx_rt_sampler *s) {
 
 static int push_sampler(hfx_shared *sh, uint32_t *cap, const hfx_sampler_desc *base,
                         const hfx_fx_state *const *dyn, uint32_t dyn_count, uint32_t *index) {
-    if (!HFX_GROW(sh->samplers, sh->sampler_count, *cap, 8)) return hfx_rt_fail(sh->dev, HFX_ERR_MEMORY, "out of memory");
-    *index = sh->sampler_count;
-    int rc = hfx_rt_sampler_create(sh, &sh->samplers[sh->sampler_count++], base, dyn, dyn_count);
+    if (!HFX_GROW(sh->gl->samplers, sh->gl->sampler_count, *cap, 8)) return hfx_rt_fail(sh->dev, HFX_ERR_MEMORY, "out of memory");
+    *index = sh->gl->sampler_count;
+    int rc = hfx_rt_sampler_create(sh, &sh->gl->samplers[sh->gl->sampler_count++], base, dyn, dyn_count);
     return rc ? hfx_rt_fail(sh->dev, rc, "could not create a GL sampler object") : HFX_OK;
 }
 
@@ -124,7 +124,7 @@ void hfx_rt_sampler_check_state(hfx_shared *sh, const hfx_fx_state *st) {
                st->kind == HFX_FX_VALUE_INT && st->i > 3) {
         hfx_shared_warn(sh, st, "'%s': %s filtering is not available in GL; filtering linearly", name,
                         info ? hfx_state_value_name(info, st->i) : "this");
-    } else if (st->id == HFX_ST_SRGBTEXTURE && st->kind == HFX_FX_VALUE_INT && st->i && !sh->dev->srgb_decode) {
+    } else if (st->id == HFX_ST_SRGBTEXTURE && st->kind == HFX_FX_VALUE_INT && st->i && !sh->dev->gl->srgb_decode) {
         hfx_shared_warn(sh, st, "'%s': without EXT_texture_sRGB_decode, only textures with an sRGB format are decoded", name);
     }
 }

@@ -9,17 +9,17 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "internal.h"
+#include "gl/gl_int.h"
 #include "spirv_loc.h"
 
 void hfx_rt_spirv_init(hfx_device *dev, hfx_gl_loader load) {
-    hfx_gl_spirv *s = &dev->spirv;
+    hfx_gl_spirv *s = &dev->gl->spirv;
     memset(s, 0, sizeof *s);
     GLint major = 0, minor = 0;
-    dev->gl.GetIntegerv(GL_MAJOR_VERSION, &major);
-    dev->gl.GetIntegerv(GL_MINOR_VERSION, &minor);
+    dev->gl->fn.GetIntegerv(GL_MAJOR_VERSION, &major);
+    dev->gl->fn.GetIntegerv(GL_MINOR_VERSION, &minor);
     int core = major * 10 + minor >= 46;
-    if (!core && !hfx_gl_has_extension(&dev->gl, "GL_ARB_gl_spirv")) return;
+    if (!core && !hfx_gl_has_extension(&dev->gl->fn, "GL_ARB_gl_spirv")) return;
     *(void **)&s->ShaderBinary = load("glShaderBinary");
     *(void **)&s->SpecializeShader = load(core ? "glSpecializeShader" : "glSpecializeShaderARB");
     if (!s->SpecializeShader)
@@ -30,7 +30,7 @@ void hfx_rt_spirv_init(hfx_device *dev, hfx_gl_loader load) {
 }
 
 int hfx_rt_spirv_check(hfx_device *dev, const hfx_fx_effect *fx) {
-    if (dev->spirv.ok) return HFX_OK;
+    if (dev->gl->spirv.ok) return HFX_OK;
     return hfx_rt_fail(dev, HFX_ERR_GL,
                        "%s: this GL cannot load SPIR-V (it has neither OpenGL 4.6 nor GL_ARB_gl_spirv with "
                        "glShaderBinary and the program interface queries); load the effect with a GLSL target",
@@ -40,7 +40,7 @@ int hfx_rt_spirv_check(hfx_device *dev, const hfx_fx_effect *fx) {
 static const char *name_of(const hfx_shared *sh) { return sh->fx->source_name ? sh->fx->source_name : "effect"; }
 
 static GLuint specialize_stage(hfx_shared *sh, GLenum type, const hfx_fx_code *code, const char *what) {
-    hfx_gl *gl = &sh->dev->gl;
+    hfx_gl *gl = &sh->dev->gl->fn;
     if (!code->data || code->size < 20 || code->size % 4 || code->size > 0x7fffffff) {
         hfx_rt_fail(sh->dev, HFX_ERR_LOAD, "%s: the %s shader's SPIR-V is missing or truncated", name_of(sh), what);
         return 0;
@@ -50,8 +50,8 @@ static GLuint specialize_stage(hfx_shared *sh, GLenum type, const hfx_fx_code *c
         hfx_rt_fail(sh->dev, HFX_ERR_GL, "glCreateShader failed");
         return 0;
     }
-    sh->dev->spirv.ShaderBinary(1, &s, GL_SHADER_BINARY_FORMAT_SPIR_V, code->data, (GLsizei)code->size);
-    sh->dev->spirv.SpecializeShader(s, "main", 0, NULL, NULL);
+    sh->dev->gl->spirv.ShaderBinary(1, &s, GL_SHADER_BINARY_FORMAT_SPIR_V, code->data, (GLsizei)code->size);
+    sh->dev->gl->spirv.SpecializeShader(s, "main", 0, NULL, NULL);
     GLint ok = 0;
     gl->GetShaderiv(s, GL_COMPILE_STATUS, &ok);
     if (ok) return s;
@@ -77,7 +77,7 @@ typedef struct build {
 } build;
 
 static int read_active(build *b) {
-    const hfx_gl_spirv *s = &b->sh->dev->spirv;
+    const hfx_gl_spirv *s = &b->sh->dev->gl->spirv;
     GLint n = 0;
     s->GetProgramInterfaceiv(b->p->object, GL_UNIFORM, GL_ACTIVE_RESOURCES, &n);
     if (n <= 0) return HFX_OK;
@@ -110,7 +110,7 @@ static int add_upload(build *b, const hfx_fx_param *p, uint64_t loc, uint32_t co
     hfx_upload up;
     memset(&up, 0, sizeof up);
     uint32_t comps;
-    if (!hfx_rt_upload_setup(&b->sh->dev->gl, a->type, p, &up, &comps)) {
+    if (!hfx_rt_upload_setup(&b->sh->dev->gl->fn, a->type, p, &up, &comps)) {
         hfx_shared_warn(b->sh, NULL,
                         "SPIR-V uniform at location %llu: its type does not match parameter '%s'; not uploaded",
                         (unsigned long long)loc, p->name ? p->name : "");
@@ -197,15 +197,15 @@ static GLint known_location(const build *b, const hfx_fx_program *fp, const char
 
 int hfx_rt_spirv_program_build(hfx_shared *sh, uint32_t index) {
     const hfx_fx_program *fp = &sh->fx->programs[index];
-    hfx_rt_program *p = &sh->programs[index];
-    if (!sh->dev->spirv.ok) return hfx_rt_spirv_check(sh->dev, sh->fx);
+    hfx_rt_program *p = &sh->gl->programs[index];
+    if (!sh->dev->gl->spirv.ok) return hfx_rt_spirv_check(sh->dev, sh->fx);
     const hfx_fx_code *vcode = &fp->code[HFX_STAGE_VERTEX][HFX_TARGET_SPIRV];
     const hfx_fx_code *fcode = &fp->code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV];
     GLuint vs = specialize_stage(sh, GL_VERTEX_SHADER, vcode, "vertex");
     GLuint fs = vs ? specialize_stage(sh, GL_FRAGMENT_SHADER, fcode, "fragment") : 0;
     int rc = vs && fs ? hfx_rt_program_link(sh, p, NULL, vs, fs) : HFX_ERR_GL;
-    if (vs) sh->dev->gl.DeleteShader(vs);
-    if (fs) sh->dev->gl.DeleteShader(fs);
+    if (vs) sh->dev->gl->fn.DeleteShader(vs);
+    if (fs) sh->dev->gl->fn.DeleteShader(fs);
     if (rc) return rc;
     build b = {sh, p, NULL, 0, 0};
     rc = read_active(&b);

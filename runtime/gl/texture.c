@@ -12,7 +12,7 @@
  * raised back when hfx lowered it and the chain is now whole) or reuses the name. */
 #include <stdlib.h>
 
-#include "internal.h"
+#include "gl/gl_int.h"
 
 static size_t slot_of(const hfx_texture_set *s, GLuint name) {
     size_t mask = s->cap - 1, i = (name * 2654435761u) & mask;
@@ -46,7 +46,7 @@ static hfx_texture_note *add(hfx_texture_set *s, GLuint name) {
     return n;
 }
 
-void hfx_rt_textures_free(hfx_device *dev) { free(dev->checked.notes); }
+void hfx_rt_textures_free(hfx_device *dev) { free(dev->gl->checked.notes); }
 
 /* The face or target GL's level queries take for a texture bound on target. */
 static GLenum level_target(GLenum target) {
@@ -56,9 +56,9 @@ static GLenum level_target(GLenum target) {
 static GLint level_size(hfx_device *dev, GLenum target, GLint level) {
     GLint w = 0, h = 0, d = 0;
     GLenum t = level_target(target);
-    dev->gl.GetTexLevelParameteriv(t, level, GL_TEXTURE_WIDTH, &w);
-    dev->gl.GetTexLevelParameteriv(t, level, GL_TEXTURE_HEIGHT, &h);
-    if (target == GL_TEXTURE_3D) dev->gl.GetTexLevelParameteriv(t, level, GL_TEXTURE_DEPTH, &d);
+    dev->gl->fn.GetTexLevelParameteriv(t, level, GL_TEXTURE_WIDTH, &w);
+    dev->gl->fn.GetTexLevelParameteriv(t, level, GL_TEXTURE_HEIGHT, &h);
+    if (target == GL_TEXTURE_3D) dev->gl->fn.GetTexLevelParameteriv(t, level, GL_TEXTURE_DEPTH, &d);
     GLint m = w > h ? w : h;
     return m > d ? m : d;
 }
@@ -74,8 +74,8 @@ static GLint full_chain(GLint size) {
  * is short; GL's default back when hfx had lowered it and the chain has become whole. */
 static void complete_levels(hfx_device *dev, GLenum target, hfx_texture_note *note) {
     GLint base = 0, max = 0;
-    dev->gl.GetTexParameteriv(target, GL_TEXTURE_BASE_LEVEL, &base);
-    dev->gl.GetTexParameteriv(target, GL_TEXTURE_MAX_LEVEL, &max);
+    dev->gl->fn.GetTexParameteriv(target, GL_TEXTURE_BASE_LEVEL, &base);
+    dev->gl->fn.GetTexParameteriv(target, GL_TEXTURE_MAX_LEVEL, &max);
     int ours = note->lowered_to >= 0 && max == note->lowered_to; /* else the application set it */
     note->lowered_to = -1;
     GLint size = level_size(dev, target, base);
@@ -84,19 +84,19 @@ static void complete_levels(hfx_device *dev, GLenum target, hfx_texture_note *no
     while (have < want && level_size(dev, target, base + have) > 0) have++;
     GLint last = base + have - 1;
     if (have == want) {
-        if (ours) dev->gl.TexParameteri(target, GL_TEXTURE_MAX_LEVEL, 1000);
+        if (ours) dev->gl->fn.TexParameteri(target, GL_TEXTURE_MAX_LEVEL, 1000);
     } else if (max > last || ours) {
-        dev->gl.TexParameteri(target, GL_TEXTURE_MAX_LEVEL, last);
+        dev->gl->fn.TexParameteri(target, GL_TEXTURE_MAX_LEVEL, last);
         note->lowered_to = last;
     }
 }
 
 void hfx_rt_texture_check(hfx_device *dev, GLenum target, GLuint texture) {
     if (!texture) return;
-    hfx_texture_note *note = find(&dev->checked, texture);
+    hfx_texture_note *note = find(&dev->gl->checked, texture);
     if (note && !note->stale) return;
     hfx_texture_note fresh = {texture, -1, 0};
-    if (!note) note = add(&dev->checked, texture);
+    if (!note) note = add(&dev->gl->checked, texture);
     complete_levels(dev, target, note ? note : &fresh);
     if (note) note->stale = 0;
 }
@@ -104,8 +104,8 @@ void hfx_rt_texture_check(hfx_device *dev, GLenum target, GLuint texture) {
 /* A unit still holding the texture is marked stale too, so the next Apply binds and checks it. */
 void hfx_device_texture_changed(hfx_device *dev, unsigned int texture) {
     if (!dev || !texture || dev->be != &hfx_gl_backend) return;
-    hfx_texture_note *note = find(&dev->checked, texture);
+    hfx_texture_note *note = find(&dev->gl->checked, texture);
     if (note) note->stale = 1;
     for (int u = 0; u < HFX_MAX_UNITS; u++)
-        if (dev->units[u].texture == texture) dev->units[u].target = 0;
+        if (dev->gl->units[u].texture == texture) dev->gl->units[u].target = 0;
 }

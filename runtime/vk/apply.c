@@ -217,11 +217,23 @@ static const char *check_target(const hfx_vk_target *t) {
     return NULL;
 }
 
-int hfx_pass_apply_vk(hfx_pass *p, VkCommandBuffer cmd, const hfx_vk_target *t) {
-    if (!p || !cmd || !t) return p ? fail(p->fx->dev, HFX_ERR_NULL, "NULL command buffer or target") : HFX_ERR_NULL;
+/* Where Apply records: hfx_pass_apply_vk's arguments through the core's one Apply entry. */
+typedef struct vk_apply_target {
+    VkCommandBuffer cmd;
+    const hfx_vk_target *t;
+} vk_apply_target;
+
+/* The table's pass_apply: target is a vk_apply_target, or NULL from hfx_pass_apply (which has
+ * no command buffer to record into). */
+int hfx_vk_pass_apply(hfx_pass *p, const void *target) {
+    if (!target)
+        return hfx_rt_fail(p->fx->dev, HFX_ERR_NOT_FOUND, "hfx_pass_apply: this device is Vulkan's; apply its passes "
+                           "with hfx_pass_apply_vk");
+    const vk_apply_target *at = target;
+    VkCommandBuffer cmd = at->cmd;
+    const hfx_vk_target *t = at->t;
     hfx_effect *fx = p->fx;
     hfx_device *dev = fx->dev;
-    if (!dev->vk) return fail(dev, HFX_ERR_NOT_FOUND, "the effect was not loaded on a Vulkan device");
     if (!dev->vk->serial) return fail(dev, HFX_ERR_NOT_FOUND, "call hfx_device_begin_frame_vk before the first Apply");
     const char *bad = check_target(t);
     if (bad) return fail(dev, HFX_ERR_COUNT, bad);
@@ -244,4 +256,11 @@ int hfx_pass_apply_vk(hfx_pass *p, VkCommandBuffer cmd, const hfx_vk_target *t) 
     record(dev, cmd, prog, b, pso, t);
     fx->vk->last_program = index + 1;
     return HFX_OK;
+}
+
+int hfx_pass_apply_vk(hfx_pass *p, VkCommandBuffer cmd, const hfx_vk_target *t) {
+    if (!p || !cmd || !t) return p ? fail(p->fx->dev, HFX_ERR_NULL, "NULL command buffer or target") : HFX_ERR_NULL;
+    if (!p->fx->dev->vk) return fail(p->fx->dev, HFX_ERR_NOT_FOUND, "the effect was not loaded on a Vulkan device");
+    vk_apply_target at = {cmd, t};
+    return hfx_rt_pass_apply(p, &at);
 }

@@ -62,24 +62,35 @@ static hfx_target vk_target_for(hfx_target asked) {
 
 static void vk_destroy(hfx_device *dev) { hfx_vk_device_destroy(dev); }
 
-/* D3DX's Begin / End: the render states the passes set are put back at End. */
+/* D3DX's Begin / End: the render states the passes set are put back at End (the core's
+ * apply.c checks the order). */
 static int vk_effect_begin(hfx_effect *e) {
-    if (e->vk->begun) return hfx_rt_fail(e->dev, HFX_ERR_NOT_FOUND, "hfx_effect_begin twice without hfx_effect_end");
     memcpy(e->vk->saved, e->dev->rs, sizeof e->vk->saved);
-    e->vk->begun = 1;
     return HFX_OK;
 }
 
 static int vk_effect_end(hfx_effect *e) {
-    if (!e->vk->begun) return hfx_rt_fail(e->dev, HFX_ERR_NOT_FOUND, "hfx_effect_end without hfx_effect_begin");
     memcpy(e->dev->rs, e->vk->saved, sizeof e->vk->saved);
-    e->vk->begun = 0;
     return HFX_OK;
 }
 
+/* Reload between begin and end: end restores what the old instance's begin saved. */
+static void vk_begun_carry(hfx_effect *to, const hfx_effect *from) {
+    memcpy(to->vk->saved, from->vk->saved, sizeof to->vk->saved);
+}
+
 const hfx_backend hfx_vk_backend = {
-    "Vulkan",      vk_shared_build, vk_shared_release, vk_instance_init, vk_instance_free, vk_destroy, vk_target_for,
-    NULL,          NULL,            vk_effect_begin,   vk_effect_end,
+    .name = "Vulkan",
+    .shared_build = vk_shared_build,
+    .shared_release = vk_shared_release,
+    .instance_init = vk_instance_init,
+    .instance_free = vk_instance_free,
+    .device_destroy = vk_destroy,
+    .target_for = vk_target_for,
+    .pass_apply = hfx_vk_pass_apply,
+    .effect_begin = vk_effect_begin,
+    .effect_end = vk_effect_end,
+    .begun_carry = vk_begun_carry,
 };
 
 int hfx_param_set_texture_vk(hfx_param *p, VkImageView view, VkImageLayout layout) {

@@ -136,7 +136,7 @@ static int add_upload(void *ctx, const char *path, const hfx_fx_param *p) {
 }
 
 static void pack_slot(vk_slot *slot, const hfx_fx_effect *fx, const hfx_fx_uniform_use *u) {
-    slot->mode = SLOT_REG;
+    slot->mode = VK_SLOT_REG;
     slot->reg = u->reg;
     slot->reg_rows = (uint16_t)hfx_fx_param_packable(fx, u->param);
     slot->reg_cols = (uint16_t)fx->params[u->param].cols;
@@ -160,7 +160,7 @@ static int map_uniforms(build *b, const hfx_fx_program *fp) {
         int rc = hfx_param_leaves(fx, param, fx->params[param].glsl_name, add_upload, b);
         if (rc) return rc;
         slot->count = p->upload_count - slot->first;
-        if (slot->count) slot->mode = SLOT_OTHER;
+        if (slot->count) slot->mode = VK_SLOT_OTHER;
     }
     return HFX_OK;
 }

@@ -79,8 +79,8 @@ static void write_upload(uint8_t *img, const vk_upload *u, const uint32_t *value
 /* Parameter r changed: its registers or uploads, and the preshaders that read it. */
 static void write_slot(const vk_program *p, vk_bound *b, uint32_t r, const uint32_t *values) {
     const vk_slot *s = &p->slots[r];
-    if (s->mode == SLOT_REG) write_regs(b->image + p->regs_at, s, values);
-    for (uint32_t k = 0; s->mode == SLOT_OTHER && k < s->count; k++) write_upload(b->image, &p->uploads[s->first + k], values);
+    if (s->mode == VK_SLOT_REG) write_regs(b->image + p->regs_at, s, values);
+    for (uint32_t k = 0; s->mode == VK_SLOT_OTHER && k < s->count; k++) write_upload(b->image, &p->uploads[s->first + k], values);
     if (hfx_preshaders_read(&b->pre, r)) hfx_preshaders_mark(&b->pre, r);
     b->dirty = 1;
 }
@@ -132,7 +132,7 @@ static void scan_log(hfx_effect *fx, const vk_program *p, vk_bound *b) {
         uint32_t r = log[seen & mask];
         if (held[r] == stamps[r]) continue;
         const vk_slot *s = &p->slots[r];
-        if (plain && s->mode == SLOT_REG && s->reg_cols == 4) {
+        if (plain && s->mode == VK_SLOT_REG && s->reg_cols == 4) {
             held[r] = stamps[r];
             put_rows4(regs, s, values);
             dirty = 1;

@@ -138,12 +138,14 @@ typedef struct vk_upload {
 
 enum { VK_UP_SAME, VK_UP_TO_INT, VK_UP_TO_FLOAT, VK_UP_TO_BOOL };
 
+enum { VK_SLOT_NONE, VK_SLOT_REG, VK_SLOT_OTHER }; /* vk_slot.mode */
+
 /* What a program reads of one top-level parameter: a packed register run, or uploads. */
 typedef struct vk_slot {
-    uint32_t mode;                  /* SLOT_NONE, SLOT_REG, SLOT_OTHER */
+    uint32_t mode;                  /* VK_SLOT_NONE, VK_SLOT_REG, VK_SLOT_OTHER */
     uint32_t reg, first, count;
     uint16_t reg_rows, reg_cols;
-    uint32_t offset;                /* SLOT_REG: the parameter's words */
+    uint32_t offset;                /* VK_SLOT_REG: the parameter's words */
 } vk_slot;
 
 typedef struct vk_program {
@@ -195,13 +197,16 @@ typedef struct vk_bound {
 struct hfx_vk_instance {
     vk_bound **bound;               /* per program, made at its first Apply */
     uint32_t bound_count;           /* programs (the shared part may be gone when this is freed) */
-    int begun;                      /* hfx_effect_begin saved the render states */
     uint32_t last_program;          /* the last Apply's program + 1 (0: none): a pass that sets no
                                      * shaders keeps it, as D3D9 keeps the device's shaders */
     hfx_rs_value saved[HFX_ST_COUNT_];
 };
 
+/* backend.c */
 extern const hfx_backend hfx_vk_backend;
+
+/* apply.c: the table's pass_apply (target: hfx_pass_apply_vk's command buffer and target). */
+int hfx_vk_pass_apply(hfx_pass *p, const void *target);
 
 /* device.c */
 void hfx_vk_device_destroy(hfx_device *dev);

@@ -407,7 +407,8 @@ static void test_reapply_and_sync(void) {
     g.UseProgram(0);
 }
 
-/* A second begin is refused, so end restores what the first begin saw. */
+/* A second begin is refused with HFX_ERR_STATE (a call out of order), so end restores what the
+ * first begin saw; an end without begin gets the same code. */
 static void test_begin_twice(void) {
     hfx_fx_effect *cfx = color_effect();
     uint32_t first = cfx->state_count;
@@ -421,11 +422,15 @@ static void test_begin_twice(void) {
     CHECK_INT(hfx_effect_begin(fx), HFX_OK);
     CHECK_INT(hfx_pass_apply(hfx_technique_pass(hfx_effect_current_technique(fx), 0)), HFX_OK);
     CHECK_INT(g.IsEnabled(GL_BLEND), GL_TRUE);
-    CHECK_INT(hfx_effect_begin(fx), HFX_ERR_NOT_FOUND);
+    CHECK_INT(hfx_effect_begin(fx), HFX_ERR_STATE);
     CHECK(strstr(hfx_device_last_error(dev), "hfx_effect_begin twice") != NULL);
+    CHECK_STR(hfx_result_string(HFX_ERR_STATE), "a call out of order");
     CHECK_INT(hfx_effect_end(fx), HFX_OK);
     CHECK_INT(g.IsEnabled(GL_BLEND), GL_FALSE);
-    CHECK_INT(hfx_effect_end(fx), HFX_ERR_NOT_FOUND);
+    CHECK_INT(hfx_effect_end(fx), HFX_ERR_STATE);
+    CHECK_STR(hfx_device_last_error(dev), "hfx_effect_end without hfx_effect_begin (a call out of order)");
+    CHECK_INT(hfx_effect_begin(fx), HFX_OK); /* the pair works again after the refusals */
+    CHECK_INT(hfx_effect_end(fx), HFX_OK);
     hfx_effect_destroy(fx);
 }
 

@@ -9,7 +9,7 @@
  * sampler objects deleted while the device's shadow still held them bound. */
 #include "compile.h"
 #include "gl_context.h"
-#include "internal.h"
+#include "gl/gl_int.h"
 #include "rt_support.h"
 #include "test.h"
 
@@ -1198,7 +1198,7 @@ static void test_spirv(void) {
     GLuint keep = vao;
     vao = vao45;
     hfx_device *dev = hfx_device_create_gl(test_gl_loader);
-    if (!dev->spirv.ok) {
+    if (!dev->gl->spirv.ok) {
         printf("  no ARB_gl_spirv: SPIR-V not tested\n");
     } else {
         for (int separate = 0; separate < 2; separate++) {

@@ -11,7 +11,7 @@
 
 #include "compile.h"
 #include "gl_context.h"
-#include "internal.h"
+#include "gl/gl_int.h"
 #include "rt_support.h"
 #include "test.h"
 
@@ -101,7 +101,7 @@ static void only_what_changed_runs(void) {
     hfx_effect *fx = load(NULL);
     CHECK(fx != NULL);
     if (!fx) return;
-    hfx_rt_program *prog = &fx->sh->programs[0];
+    hfx_rt_program *prog = &fx->sh->gl->programs[0];
     unsigned char px[4];
     set_all(fx, identity, 0.0f);
     draw(fx, W / 2, H / 2, px);
@@ -147,7 +147,7 @@ static void from_compiled_bytes(hfx_target target) {
 static void hfxo_glsl(void) { from_compiled_bytes(HFX_TARGET_GLSL330); }
 
 static void hfxo_spirv(void) {
-    if (!dev->spirv.ok) {
+    if (!dev->gl->spirv.ok) {
         printf("  no ARB_gl_spirv: SPIR-V not tested\n");
         return;
     }

@@ -310,7 +310,7 @@ static void test_states_persist_and_begin_end_restores(void) {
     CHECK_INT(g.IsEnabled(GL_CULL_FACE), GL_TRUE);
     CHECK_INT(geti(GL_CULL_FACE_MODE), GL_FRONT);
     CHECK_INT(geti(GL_CURRENT_PROGRAM), 0);
-    CHECK_INT(hfx_effect_end(a), HFX_ERR_NOT_FOUND); /* no begin */
+    CHECK_INT(hfx_effect_end(a), HFX_ERR_STATE); /* no begin */
     /* after end the shadow matches GL again, so the next apply really disables culling */
     apply(a);
     CHECK_INT(g.IsEnabled(GL_CULL_FACE), GL_FALSE);

@@ -144,6 +144,13 @@ static void errors(void) {
         CHECK_CONTAINS(hfx_device_last_error(test_vk_device(V)), "Vulkan");
         CHECK_INT(hfx_pass_apply_vk(pass, VK_NULL_HANDLE, test_vk_target(V)), HFX_ERR_NULL);
         CHECK_INT(hfx_param_set_texture_vk(hfx_effect_param(fx, "Color"), VK_NULL_HANDLE, 0), HFX_ERR_TYPE);
+        /* begin and end in order, as on GL: a second begin or a lone end is HFX_ERR_STATE */
+        CHECK_INT(hfx_effect_end(fx), HFX_ERR_STATE);
+        CHECK_INT(hfx_effect_begin(fx), HFX_OK);
+        CHECK_INT(hfx_effect_begin(fx), HFX_ERR_STATE);
+        CHECK_STR(hfx_device_last_error(test_vk_device(V)), "hfx_effect_begin twice without hfx_effect_end (a call out of order)");
+        CHECK_INT(hfx_effect_end(fx), HFX_OK);
+        CHECK_INT(hfx_effect_end(fx), HFX_ERR_STATE);
         hfx_effect_destroy(fx);
     }
 }

@@ -23,11 +23,14 @@ static inline void vk_quad_vertices(const vk_quad *q, vk_vertex out[6]) {
     memcpy(out, q->ccw ? ccw : cw, sizeof cw);
 }
 
+/* Every effect a test loads is one that must load: a failure is a failed CHECK here, so a test
+ * that returns early on NULL still fails (it would otherwise print "ok"). */
 static inline hfx_effect *vk_load(test_vk *v, const char *src) {
     char *errors = NULL;
     hfx_effect *fx = hfx_effect_load_memory(test_vk_device(v), src, strlen(src), "test.fx", NULL, &errors);
     if (!fx) fprintf(stderr, "load: %s\n", errors ? errors : hfx_device_last_error(test_vk_device(v)));
     hfx_free(errors);
+    CHECK(fx != NULL);
     return fx;
 }
 

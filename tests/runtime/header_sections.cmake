@@ -1,0 +1,83 @@
+cmake_minimum_required(VERSION 3.20)
+# ctest -P script: the runtime's internal headers keep one section per .c file, in the chibicc
+# way, so the header doubles as the map of the modules. A section starts with a comment naming
+# its file ("/* program.c: ..." or "/* program.c */"); every function or object the section
+# declares must be defined in that file (a line at column 0 naming it, not a declaration).
+# Fails when a section lies (a function moved to another file and the header did not follow),
+# and when a declaration sits outside any section.
+#   cmake -DSOURCE_DIR=<repo> -P header_sections.cmake
+if(NOT DEFINED SOURCE_DIR)
+  message(FATAL_ERROR "header_sections.cmake: -DSOURCE_DIR= missing")
+endif()
+
+# The header's lines as a list (";" "[" "]" replaced, which CMake lists cannot hold).
+function(header_lines path out)
+  file(READ ${path} text)
+  string(REPLACE ";" "<semi>" text "${text}")
+  string(REPLACE "[" "<lb>" text "${text}")
+  string(REPLACE "]" "<rb>" text "${text}")
+  string(REPLACE "\n" ";" text "${text}")
+  set(${out} "${text}" PARENT_SCOPE)
+endfunction()
+
+# Whether file (its text in `text`) defines name: a line at column 0, not static, naming
+# `name(` (a function) or `name =` (an object) and not ending a declaration.
+function(defines text name out)
+  string(REGEX MATCH "\n[A-Za-z_][^\n;]*[ *]${name}(\\(|\n| =)" hit "\n${text}")
+  set(${out} "${hit}" PARENT_SCOPE)
+endfunction()
+
+set(failures 0)
+# header, the folder its section names are relative to
+foreach(pair "runtime/internal.h|runtime" "runtime/gl/gl_int.h|runtime/gl" "runtime/vk/vk.h|runtime/vk")
+  string(REPLACE "|" ";" pair "${pair}")
+  list(GET pair 0 header)
+  list(GET pair 1 dir)
+  if(NOT EXISTS ${SOURCE_DIR}/${header})
+    continue()
+  endif()
+  header_lines(${SOURCE_DIR}/${header} lines)
+  set(section "")
+  set(checked 0)
+  foreach(line IN LISTS lines)
+    if(line MATCHES "^/\\* ([a-z_0-9]+\\.c)[: ]")
+      set(section ${CMAKE_MATCH_1})
+      if(NOT EXISTS ${SOURCE_DIR}/${dir}/${section})
+        message(SEND_ERROR "${header}: section ${section}: no file ${dir}/${section}")
+        math(EXPR failures "${failures} + 1")
+        set(body "")
+      else()
+        file(READ ${SOURCE_DIR}/${dir}/${section} body)
+      endif()
+      continue()
+    endif()
+    # a declaration: a line at column 0 that is not a type, a macro or a static inline function
+    if(line MATCHES "^(static|typedef|#|enum|struct [a-z_0-9]+ {|union|} )" OR NOT line MATCHES "<semi>|,$")
+      continue()
+    endif()
+    if(line MATCHES "^[A-Za-z_][^(=]*[ *]([A-Za-z_][A-Za-z0-9_]*)(\\(|<semi>)")
+      set(name ${CMAKE_MATCH_1})
+    else()
+      continue()
+    endif()
+    if(section STREQUAL "")
+      message(SEND_ERROR "${header}: ${name} is declared outside any file's section")
+      math(EXPR failures "${failures} + 1")
+      continue()
+    endif()
+    defines("${body}" ${name} hit)
+    if(NOT hit)
+      message(SEND_ERROR "${header}: ${name} is in ${section}'s section but ${dir}/${section} does not define it")
+      math(EXPR failures "${failures} + 1")
+    endif()
+    math(EXPR checked "${checked} + 1")
+  endforeach()
+  message(STATUS "${header}: ${checked} declarations checked")
+  if(checked EQUAL 0)
+    message(SEND_ERROR "${header}: no declaration found: the check cannot see the header")
+    math(EXPR failures "${failures} + 1")
+  endif()
+endforeach()
+if(failures GREATER 0)
+  message(FATAL_ERROR "${failures} header section(s) lie")
+endif()
