@@ -14,7 +14,8 @@ static bool printable(hfx_ev_base b, double v) { return b != HFX_EV_FLOAT || isf
 
 static unsigned comps(const hfx_type *t) { return hfx_type_is_numeric(t) ? hfx_type_components(t) : 0; }
 
-static ir_expr *fold_binary(ir_ctx *c, ir_expr *e) {
+/* any_value: a value outside shader code, which no GLSL literal has to spell. */
+static ir_expr *fold_binary(ir_ctx *c, ir_expr *e, bool any_value) {
     ir_expr *x = e->a[0], *y = e->a[1];
     if (!ir_is_const(x) || !ir_is_const(y)) {
         /* false && e, true || e: the right side matters only for its effects */
@@ -33,7 +34,7 @@ static ir_expr *fold_binary(ir_ctx *c, ir_expr *e) {
         double v;
         if (!hfx_ev_binary(op, b, x->cval[nx == 1 ? 0 : i], y->cval[ny == 1 ? 0 : i], &v)) return e;
         r->cval[i] = hfx_ev_convert(rb, ev(e->type), v);
-        if (!printable(ev(e->type), r->cval[i])) return e;
+        if (!any_value && !printable(ev(e->type), r->cval[i])) return e;
     }
     return r;
 }
@@ -106,7 +107,7 @@ static void fold_one(ir_ctx *c, ir_expr **slot, void *data) {
     ir_expr *e = *slot;
     switch (e->kind) {
     case IE_UNARY: *slot = fold_unary(c, e); break;
-    case IE_BINARY: *slot = fold_binary(c, e); break;
+    case IE_BINARY: *slot = fold_binary(c, e, data != NULL); break;
     case IE_CONVERT: *slot = fold_convert(c, e); break;
     case IE_CONSTRUCT: *slot = fold_construct(c, e); break;
     case IE_SWIZZLE: *slot = fold_swizzle(c, e); break;
@@ -143,7 +144,10 @@ static void fold_value_one(ir_ctx *c, ir_expr **slot, void *data) {
     else fold_one(c, slot, data);
 }
 
-void ir_fold_value(ir_ctx *c, ir_expr **slot) { ir_walk_expr(c, slot, fold_value_one, NULL); }
+void ir_fold_value(ir_ctx *c, ir_expr **slot) {
+    static const bool any_value = true; /* fold_one's data: set for values */
+    ir_walk_expr(c, slot, fold_value_one, (void *)&any_value);
+}
 
 static bool is_const_var(const ir_var *v) {
     return v->decl && (v->decl->mods & MOD_CONST) && hfx_type_is_numeric(v->type) &&
