@@ -1,7 +1,9 @@
-/* pre_code.c: a uniform-only expression (parameters and constants, no varyings, textures or
- * locals) as a common/eval_code program, which the runtime runs on the CPU when one of its
- * parameters changed (a preshader, as fxc makes them), and as readable HLSL for the comment the
- * GLSL carries beside the register that holds it. lower/preshade.c decides what is hoisted. */
+/* pre_code.c: the one writer of common/eval_code programs. A uniform-only expression
+ * (parameters and constants, no varyings, textures or locals) as a program the runtime runs on
+ * the CPU: a preshader, as fxc makes them, rerun when one of its parameters changed, and a
+ * state value that reads parameters (effect/build_code.c builds it as IR), run at Apply. Also
+ * the readable HLSL for the comment the GLSL carries beside a preshader's register.
+ * lower/preshade.c decides what is hoisted. */
 #include <string.h>
 
 #include "base/sbuf.h"
