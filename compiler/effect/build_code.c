@@ -34,7 +34,7 @@ static bool compile(hfx_builder *b, const hfx_expr *e, const hfx_state_info *nam
     ir_expr *v = ir_build_value(&c, e, &src);
     if (!v) return false;
     ir_fold_value(&c, &v);
-    uint32_t n = 0, *code = clamp ? ir_pre_code_index(&c, v, clamp, &n) : ir_pre_code(&c, v, &n);
+    uint32_t n = 0, *code = ir_value_code(&c, v, clamp, &n);
     return code && append(b, code, n, first, words);
 }
 

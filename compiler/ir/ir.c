@@ -452,6 +452,10 @@ static ir_expr *value_name(builder *b, const hfx_expr *e) {
 
 static ir_expr *value_expr(builder *b, const hfx_expr *e) {
     ir_expr *r;
+    if (!e->type) { /* never checked (a hostile or broken tree): no value, rather than a crash */
+        fail(b, e->loc, "not a value");
+        return NULL;
+    }
     if (e->kind == EX_IDENT || e->kind == EX_STATE_REF) r = value_name(b, e);
     else if (e->kind == EX_INDEX && (r = value_param(b, e))) return r;
     else r = build_node(b, e);

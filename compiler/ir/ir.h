@@ -202,9 +202,9 @@ bool ir_pre_node(const ir_ctx *c, const ir_expr *e);   /* a preshader computes e
 bool ir_pre_only(const ir_ctx *c, const ir_expr *e);  /* e reads parameters and constants alone (every node ir_pre_node) */
 bool ir_pre_work(const ir_expr *e);                    /* e computes (not only moves components) */
 uint32_t *ir_pre_code(ir_ctx *c, const ir_expr *e, uint32_t *words); /* validated eval_code (arena), or NULL */
-/* The same, then a table 0 .. count - 1 that clamps the value into an array of count entries
- * (a selector: `PixelShader = (Shaders[i]);`). */
-uint32_t *ir_pre_code_index(ir_ctx *c, const ir_expr *e, uint32_t count, uint32_t *words);
+/* The same for a state value (integer / and % too); clamp > 0: then a table 0 .. clamp - 1 that
+ * clamps it into an array of clamp entries (a selector: `PixelShader = (Shaders[i]);`). */
+uint32_t *ir_value_code(ir_ctx *c, const ir_expr *e, uint32_t clamp, uint32_t *words);
 const char *ir_pre_text(ir_ctx *c, const ir_expr *e); /* e as HLSL, for the GLSL's comment (arena) */
 
 /* Constructors shared by the passes (ir.c). */

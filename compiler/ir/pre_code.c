@@ -100,14 +100,24 @@ static bool const_array(const ir_expr *a) {
 
 static bool table_read(const ir_expr *e) { return e->kind == IE_INDEX && const_array(e->a[0]); }
 
-/* What the writer can write: a preshader's nodes, and a value's table reads. */
-static bool writable(const ir_ctx *c, const ir_expr *e) { return table_read(e) || ir_pre_node(c, e); }
+/* An integer / or %: a state value's (`VertexShader = (VSArray[Index / 2]);`). The runtime
+ * does not fold one by zero and keeps the state's last value; a preshader leaves it to the GPU. */
+static bool value_division(const ir_expr *e) {
+    hfx_ev_op op;
+    return e->kind == IE_BINARY && numeric_base(e->type) && hfx_op_ev(e->op, &op) && (op == HFX_EV_DIV || op == HFX_EV_MOD);
+}
 
 typedef struct pc {
     ir_ctx *c;
     uint32_t *w; uint32_t n, cap;
     bool ok;
+    bool value;   /* a state value's program, not a preshader's */
 } pc;
+
+/* What the writer can write: a preshader's nodes, and a value's table reads and divisions. */
+static bool writable(const pc *p, const ir_expr *e) {
+    return table_read(e) || ir_pre_node(p->c, e) || (p->value && value_division(e));
+}
 
 static void put(pc *p, uint32_t w) {
     if (!p->ok || !HFX_ARENA_GROW(p->c->arena, p->w, p->n, p->cap, 32)) {
@@ -253,7 +263,7 @@ static void operation(pc *p, const ir_expr *e) {
 }
 
 static void emit(pc *p, const ir_expr *e) {
-    if (!p->ok || !writable(p->c, e)) { p->ok = false; return; }
+    if (!p->ok || !writable(p, e)) { p->ok = false; return; }
     switch (e->kind) {
     case IE_CONST: constant(p, e); break;
     case IE_VAR:
@@ -276,8 +286,8 @@ static void emit(pc *p, const ir_expr *e) {
 }
 
 /* e's program; count > 0: then the table 0 .. count - 1 that clamps it (TABLE clamps as D3D9). */
-static uint32_t *program(ir_ctx *c, const ir_expr *e, uint32_t count, uint32_t *words) {
-    pc p = {c, NULL, 0, 0, true};
+static uint32_t *program(ir_ctx *c, const ir_expr *e, bool value, uint32_t count, uint32_t *words) {
+    pc p = {c, NULL, 0, 0, true, value};
     emit(&p, e);
     if (count) {
         put(&p, hfx_evc_word(HFX_EVC_TABLE, HFX_EV_INT, 1));
@@ -289,10 +299,10 @@ static uint32_t *program(ir_ctx *c, const ir_expr *e, uint32_t count, uint32_t *
     return p.w;
 }
 
-uint32_t *ir_pre_code(ir_ctx *c, const ir_expr *e, uint32_t *words) { return program(c, e, 0, words); }
+uint32_t *ir_pre_code(ir_ctx *c, const ir_expr *e, uint32_t *words) { return program(c, e, false, 0, words); }
 
-uint32_t *ir_pre_code_index(ir_ctx *c, const ir_expr *e, uint32_t count, uint32_t *words) {
-    return count ? program(c, e, count, words) : NULL;
+uint32_t *ir_value_code(ir_ctx *c, const ir_expr *e, uint32_t clamp, uint32_t *words) {
+    return program(c, e, true, clamp, words);
 }
 
 /* ---- the comment ---- */
