@@ -2,6 +2,7 @@
  * The copy is per stage of each pass, so specialisation never touches the shared tree. */
 #include "ir/ir.h"
 #include "check/conv.h"
+#include "states.h"
 
 #include <string.h>
 #include <strings.h>
@@ -22,6 +23,7 @@ typedef struct builder {
     ir_var **closed_for_vars; uint32_t closed_count, closed_cap; /* for-init vars whose loop ended */
     int depth;
     bool failed;
+    const ir_value_src *value;   /* building a value outside shader code (ir_build_value) */
 } builder;
 
 /* Growable arrays in the arena (hfx_grow): the old block is simply abandoned. */
@@ -87,7 +89,7 @@ bool ir_is_const(const ir_expr *e) { return e && e->kind == IE_CONST; }
 bool ir_const_truth(const ir_expr *e) { return e->cval[0] != 0; }
 
 static void fail(builder *b, hfx_loc loc, const char *what) {
-    hfx_error(b->c->diags, loc, X_UNSUPPORTED, "%s", what);
+    if (!b->value) hfx_error(b->c->diags, loc, X_UNSUPPORTED, "%s", what); /* a value that is not one: the caller says */
     b->failed = true;
 }
 
@@ -211,6 +213,10 @@ static ir_expr *sampler_element(builder *b, const hfx_expr *e) {
 
 static ir_expr *build_call(builder *b, const hfx_expr *e) {
     ir_expr *r;
+    if (e->fn && b->value) {
+        fail(b, e->loc, "a value cannot call a function");
+        return NULL;
+    }
     if (e->fn) {
         ir_func *f = build_func(b, e->fn, e->loc);
         if (!f) return NULL;
@@ -346,8 +352,10 @@ static ir_expr *build_children(builder *b, const hfx_expr *e, ir_expr_kind k, co
     return r;
 }
 
-static ir_expr *build_expr(builder *b, const hfx_expr *e) {
-    if (!e) return NULL;
+static ir_expr *value_expr(builder *b, const hfx_expr *e);
+
+/* One node of shader code (or of a value: value_expr calls it for what is not a leaf). */
+static ir_expr *build_node(builder *b, const hfx_expr *e) {
     ir_expr *r;
     switch (e->kind) {
     case EX_INT: case EX_BOOL:
@@ -400,6 +408,69 @@ static ir_expr *build_expr(builder *b, const hfx_expr *e) {
         fail(b, e->loc, "this expression cannot be used in shader code");
         return NULL;
     }
+}
+
+static ir_expr *build_expr(builder *b, const hfx_expr *e) {
+    if (!e) return NULL;
+    return b->value ? value_expr(b, e) : build_node(b, e);
+}
+
+/* ---- values outside shader code (ir_build_value) ---- */
+
+/* A state's named value (`SrcAlpha`) as the int the state takes. */
+static ir_expr *state_name(builder *b, const hfx_expr *e) {
+    int32_t v;
+    if (!b->value->names || !e->name || hfx_state_value_lookup(b->value->names, e->name, &v) != 0) return NULL;
+    return ir_const_scalar(b->c, hfx_type_scalar(b->c->types, B_INT), v, e->loc);
+}
+
+/* The parameter e reads (a whole one, or an array's element at a constant index) as a uniform. */
+static ir_expr *value_param(builder *b, const hfx_expr *e) {
+    uint32_t p = b->value->param_of ? b->value->param_of(b->value->data, e) : HFX_NONE;
+    if (p == HFX_NONE || !e->type) return NULL;
+    ir_var *v = new_var(b, IRV_UNIFORM, e->kind == EX_INDEX ? NULL : e->sym, e->type);
+    v->name = b->c->fx && p < b->c->fx->param_count ? b->c->fx->params[p].name : "param";
+    v->param = p;
+    ir_expr *r = ir_new_expr(b->c, IE_VAR, e->type, e->loc, 0);
+    r->var = v;
+    return r;
+}
+
+/* A name in a value: a state's named value, a parameter, or a constant's initialiser (fxc
+ * folds `static const` globals into the value); nothing else has a value outside a shader. */
+static ir_expr *value_name(builder *b, const hfx_expr *e) {
+    ir_expr *r = state_name(b, e);
+    if (!r) r = value_param(b, e);
+    const hfx_decl *d = e->sym;
+    if (!r && d && d->kind == DECL_VAR && d->init && (d->mods & MOD_CONST) && b->depth++ < 64) {
+        r = build_expr(b, d->init);
+        b->depth--;
+    }
+    if (!r) fail(b, e->loc, "not a value");
+    return r;
+}
+
+static ir_expr *value_expr(builder *b, const hfx_expr *e) {
+    ir_expr *r;
+    if (!e->type) { /* never checked (a hostile or broken tree): no value, rather than a crash */
+        fail(b, e->loc, "not a value");
+        return NULL;
+    }
+    if (e->kind == EX_IDENT || e->kind == EX_STATE_REF) r = value_name(b, e);
+    else if (e->kind == EX_INDEX && (r = value_param(b, e))) return r;
+    else r = build_node(b, e);
+    /* the checker leaves state constants' operations untyped (`Red | Green`): ints, as D3D's */
+    if (r && (!r->type || r->type->kind == TY_VOID)) r->type = hfx_type_scalar(b->c->types, B_INT);
+    return r;
+}
+
+ir_expr *ir_build_value(ir_ctx *c, const hfx_expr *e, const ir_value_src *src) {
+    builder b = {0};
+    b.c = c;
+    b.sh = HFX_NEW(c->arena, ir_shader);
+    b.value = src;
+    ir_expr *r = build_expr(&b, e);
+    return b.failed ? NULL : r;
 }
 
 static ir_stmt *new_stmt(builder *b, ir_stmt_kind k, hfx_loc loc) { return ir_new_stmt(b->c, k, loc); }

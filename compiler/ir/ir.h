@@ -180,6 +180,17 @@ uint32_t ir_pass_count(void);
 const char *ir_pass_name(uint32_t i); /* NULL past the end */
 const char *ir_pass_why(uint32_t i);
 const char *ir_pass_runs(uint32_t i); /* when it runs: "every stage", "HLSL stages, parameters packed, preshaders on"... */
+/* A value outside shader code (a state value, a selector's index) as IR, by ir_build's rules:
+ * names are a state's named values (names, may be NULL), constants' initialisers, or the
+ * parameters param_of finds (NULL: none). NULL, nothing reported, when it is no such value. */
+typedef struct ir_value_src {
+    const struct hfx_state_info *names;
+    uint32_t (*param_of)(void *data, const hfx_expr *e);
+    void *data;
+} ir_value_src;
+ir_expr *ir_build_value(ir_ctx *c, const hfx_expr *e, const ir_value_src *src);
+/* Folds *slot as fxc folds a value: ir_pass_fold's operators and conversions, and intrinsics. */
+void ir_fold_value(ir_ctx *c, ir_expr **slot);
 
 /* Passes (one file each in lower/). */
 void ir_pass_specialise(ir_ctx *c, ir_shader *sh);
@@ -218,6 +229,9 @@ bool ir_pre_node(const ir_ctx *c, const ir_expr *e);   /* a preshader computes e
 bool ir_pre_only(const ir_ctx *c, const ir_expr *e);  /* e reads parameters and constants alone (every node ir_pre_node) */
 bool ir_pre_work(const ir_expr *e);                    /* e computes (not only moves components) */
 uint32_t *ir_pre_code(ir_ctx *c, const ir_expr *e, uint32_t *words); /* validated eval_code (arena), or NULL */
+/* The same for a state value (integer / and % too); clamp > 0: then a table 0 .. clamp - 1 that
+ * clamps it into an array of clamp entries (a selector: `PixelShader = (Shaders[i]);`). */
+uint32_t *ir_value_code(ir_ctx *c, const ir_expr *e, uint32_t clamp, uint32_t *words);
 const char *ir_pre_text(ir_ctx *c, const ir_expr *e); /* e as HLSL, for the GLSL's comment (arena) */
 
 /* Constructors shared by the passes (ir.c). */

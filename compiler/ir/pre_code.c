@@ -1,7 +1,9 @@
-/* pre_code.c: a uniform-only expression (parameters and constants, no varyings, textures or
- * locals) as a common/eval_code program, which the runtime runs on the CPU when one of its
- * parameters changed (a preshader, as fxc makes them), and as readable HLSL for the comment the
- * GLSL carries beside the register that holds it. lower/preshade.c decides what is hoisted. */
+/* pre_code.c: the one writer of common/eval_code programs. A uniform-only expression
+ * (parameters and constants, no varyings, textures or locals) as a program the runtime runs on
+ * the CPU: a preshader, as fxc makes them, rerun when one of its parameters changed, and a
+ * state value that reads parameters (effect/build_code.c builds it as IR), run at Apply. Also
+ * the readable HLSL for the comment the GLSL carries beside a preshader's register.
+ * lower/preshade.c decides what is hoisted. */
 #include <string.h>
 
 #include "base/sbuf.h"
@@ -85,11 +87,37 @@ bool ir_pre_work(const ir_expr *e) {
 
 /* ---- the program ---- */
 
+/* A constant array (a state value's `static const` table: `FillMode = (Modes[Index]);`): every
+ * element one constant of at most 16 components. Shader code reads its arrays through variables,
+ * so only values outside shader code have these. */
+static bool const_array(const ir_expr *a) {
+    if (a->kind != IE_CONSTRUCT || a->type->kind != TY_ARRAY || !a->n || a->n != a->type->array_len) return false;
+    for (uint32_t i = 0; i < a->n; i++)
+        if (!ir_is_const(a->a[i]) || !hfx_type_is_numeric(a->a[i]->type) || hfx_type_components(a->a[i]->type) > 16)
+            return false;
+    return true;
+}
+
+static bool table_read(const ir_expr *e) { return e->kind == IE_INDEX && const_array(e->a[0]); }
+
+/* An integer / or %: a state value's (`VertexShader = (VSArray[Index / 2]);`). The runtime
+ * does not fold one by zero and keeps the state's last value; a preshader leaves it to the GPU. */
+static bool value_division(const ir_expr *e) {
+    hfx_ev_op op;
+    return e->kind == IE_BINARY && numeric_base(e->type) && hfx_op_ev(e->op, &op) && (op == HFX_EV_DIV || op == HFX_EV_MOD);
+}
+
 typedef struct pc {
     ir_ctx *c;
     uint32_t *w; uint32_t n, cap;
     bool ok;
+    bool value;   /* a state value's program, not a preshader's */
 } pc;
+
+/* What the writer can write: a preshader's nodes, and a value's table reads and divisions. */
+static bool writable(const pc *p, const ir_expr *e) {
+    return table_read(e) || ir_pre_node(p->c, e) || (p->value && value_division(e));
+}
 
 static void put(pc *p, uint32_t w) {
     if (!p->ok || !HFX_ARENA_GROW(p->c->arena, p->w, p->n, p->cap, 32)) {
@@ -158,8 +186,21 @@ static void construct(pc *p, const ir_expr *e) {
     convert_to(p, e->type);
 }
 
+/* TABLE: the index, then the elements, ints or floats (a bool element is the int 0 or 1). */
+static void table(pc *p, const ir_expr *e) {
+    const ir_expr *arr = e->a[0];
+    unsigned n = hfx_type_components(arr->a[0]->type);
+    hfx_ev_base b = base_of(arr->a[0]->type) == HFX_EV_FLOAT ? HFX_EV_FLOAT : HFX_EV_INT;
+    emit(p, e->a[1]);
+    put(p, hfx_evc_word(HFX_EVC_TABLE, b, n));
+    put(p, arr->n);
+    for (uint32_t i = 0; i < arr->n; i++)
+        for (unsigned k = 0; k < n; k++) put(p, hfx_evc_bits(b, arr->a[i]->cval[k]));
+}
+
 /* A vector element or a matrix row at a constant index; an element of a parameter array. */
 static void index_of(pc *p, const ir_expr *e) {
+    if (table_read(e)) { table(p, e); return; }
     const hfx_fx_param *arr = param_array(p->c, e->a[0]);
     if (arr) {
         const hfx_fx_param *el = &p->c->fx->params[arr->first_child];
@@ -222,7 +263,7 @@ static void operation(pc *p, const ir_expr *e) {
 }
 
 static void emit(pc *p, const ir_expr *e) {
-    if (!p->ok || !ir_pre_node(p->c, e)) { p->ok = false; return; }
+    if (!p->ok || !writable(p, e)) { p->ok = false; return; }
     switch (e->kind) {
     case IE_CONST: constant(p, e); break;
     case IE_VAR:
@@ -244,12 +285,24 @@ static void emit(pc *p, const ir_expr *e) {
     }
 }
 
-uint32_t *ir_pre_code(ir_ctx *c, const ir_expr *e, uint32_t *words) {
-    pc p = {c, NULL, 0, 0, true};
+/* e's program; count > 0: then the table 0 .. count - 1 that clamps it (TABLE clamps as D3D9). */
+static uint32_t *program(ir_ctx *c, const ir_expr *e, bool value, uint32_t count, uint32_t *words) {
+    pc p = {c, NULL, 0, 0, true, value};
     emit(&p, e);
+    if (count) {
+        put(&p, hfx_evc_word(HFX_EVC_TABLE, HFX_EV_INT, 1));
+        put(&p, count);
+        for (uint32_t i = 0; i < count; i++) put(&p, i);
+    }
     if (!p.ok || hfx_evc_validate(p.w, p.n, c->fx->value_words, NULL, 0) != 0) return NULL;
     *words = p.n;
     return p.w;
+}
+
+uint32_t *ir_pre_code(ir_ctx *c, const ir_expr *e, uint32_t *words) { return program(c, e, false, 0, words); }
+
+uint32_t *ir_value_code(ir_ctx *c, const ir_expr *e, uint32_t clamp, uint32_t *words) {
+    return program(c, e, true, clamp, words);
 }
 
 /* ---- the comment ---- */

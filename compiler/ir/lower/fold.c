@@ -1,6 +1,8 @@
 /* fold.c: constant folding of the IR with common/eval, the evaluator every phase shares (ints
  * wrap at 32 bits and divide toward zero, floats are single precision, conversions truncate).
- * Intrinsics are left alone (the GPU computes them as the shader would). */
+ * In shader code intrinsics are left alone (the GPU computes them as the shader would); a value
+ * outside shader code (ir_fold_value: a state value) folds them too, as fxc does, since nothing
+ * but the CPU ever computes it. The one tree walk over constant expressions. */
 #include <math.h>
 
 #include "ir/ir.h"
@@ -12,7 +14,8 @@ static bool printable(hfx_ev_base b, double v) { return b != HFX_EV_FLOAT || isf
 
 static unsigned comps(const hfx_type *t) { return hfx_type_is_numeric(t) ? hfx_type_components(t) : 0; }
 
-static ir_expr *fold_binary(ir_ctx *c, ir_expr *e) {
+/* any_value: a value outside shader code, which no GLSL literal has to spell. */
+static ir_expr *fold_binary(ir_ctx *c, ir_expr *e, bool any_value) {
     ir_expr *x = e->a[0], *y = e->a[1];
     if (!ir_is_const(x) || !ir_is_const(y)) {
         /* false && e, true || e: the right side matters only for its effects */
@@ -31,7 +34,7 @@ static ir_expr *fold_binary(ir_ctx *c, ir_expr *e) {
         double v;
         if (!hfx_ev_binary(op, b, x->cval[nx == 1 ? 0 : i], y->cval[ny == 1 ? 0 : i], &v)) return e;
         r->cval[i] = hfx_ev_convert(rb, ev(e->type), v);
-        if (!printable(ev(e->type), r->cval[i])) return e;
+        if (!any_value && !printable(ev(e->type), r->cval[i])) return e;
     }
     return r;
 }
@@ -104,13 +107,46 @@ static void fold_one(ir_ctx *c, ir_expr **slot, void *data) {
     ir_expr *e = *slot;
     switch (e->kind) {
     case IE_UNARY: *slot = fold_unary(c, e); break;
-    case IE_BINARY: *slot = fold_binary(c, e); break;
+    case IE_BINARY: *slot = fold_binary(c, e, data != NULL); break;
     case IE_CONVERT: *slot = fold_convert(c, e); break;
     case IE_CONSTRUCT: *slot = fold_construct(c, e); break;
     case IE_SWIZZLE: *slot = fold_swizzle(c, e); break;
     case IE_SELECT: *slot = fold_select(c, e); break;
     default: break;
     }
+}
+
+/* An intrinsic of constants (values only): its arguments at their own base, the result at the
+ * checker's type. */
+static ir_expr *fold_call(ir_ctx *c, ir_expr *e) {
+    const hfx_intrinsic_info *info = hfx_intrinsic_info_of((int)e->intrin);
+    unsigned n = comps(e->type);
+    if (!info || info->fold == HFX_EV_FN_NONE || (int)e->n != hfx_ev_fn_args(info->fold) || !n || n > 16) return e;
+    hfx_ev_value args[3], r;
+    hfx_ev_base base = HFX_EV_BOOL; /* the evaluator takes one base: the largest, as BINARY's */
+    for (uint32_t i = 0; i < e->n; i++) {
+        if (!ir_is_const(e->a[i]) || !comps(e->a[i]->type) || comps(e->a[i]->type) > 16) return e;
+        if (ev(e->a[i]->type) > base) base = ev(e->a[i]->type);
+    }
+    for (uint32_t i = 0; i < e->n; i++) {
+        args[i].base = base;
+        args[i].n = (uint8_t)comps(e->a[i]->type);
+        for (unsigned j = 0; j < args[i].n; j++) args[i].c[j] = hfx_ev_convert(ev(e->a[i]->type), base, e->a[i]->cval[j]);
+    }
+    if (!hfx_ev_call(info->fold, args, e->n, &r) || (r.n != n && r.n != 1)) return e;
+    ir_expr *out = ir_new_expr(c, IE_CONST, e->type, e->loc, 0);
+    for (unsigned i = 0; i < n; i++) out->cval[i] = hfx_ev_convert(r.base, ev(e->type), r.c[r.n == 1 ? 0 : i]);
+    return out;
+}
+
+static void fold_value_one(ir_ctx *c, ir_expr **slot, void *data) {
+    if ((*slot)->kind == IE_INTRIN) *slot = fold_call(c, *slot);
+    else fold_one(c, slot, data);
+}
+
+void ir_fold_value(ir_ctx *c, ir_expr **slot) {
+    static const bool any_value = true; /* fold_one's data: set for values */
+    ir_walk_expr(c, slot, fold_value_one, (void *)&any_value);
 }
 
 static bool is_const_var(const ir_var *v) {
