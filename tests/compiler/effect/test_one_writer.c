@@ -153,7 +153,7 @@ static void shader_constants_fold_as_direct3d(void) {
     const hfx_state_assign *a = fx ? &ast->decls[ast->decl_count - 1]->technique->passes[0].states[0] : NULL;
     ir_ctx c = {&arena, &diags, types, ast, fx};
     ir_shader *sh = a ? ir_build(&c, a->value, IR_PIXEL) : NULL;
-    CHECK(sh != NULL && ir_lower(&c, sh) == 0);
+    CHECK(sh != NULL && ir_lower(&c, sh, 0) == 0);
     const ir_expr *k = NULL;
     if (sh) ir_walk_stmt_exprs(&c, sh->entry->body, find_const4, &k);
     CHECK(k != NULL);
