@@ -27,13 +27,25 @@ typedef struct cli_options {
     bool depfile_phony;      /* -MP: an empty rule per include, so deleting one does not break make */
     const char *depfile_path;/* -MF / --depfile: its name (one input); default <output minus extension>.d */
     const char *dep_target;  /* -MT: the rule's target; default the output path */
+    /* fxc's outputs (fxc_out.c): /Fo writes fxc's fx_2_0, -o hfx's .hfxo, --format says which */
+    int format;              /* CLI_FORMAT_* */
+    bool format_given;       /* --format said it: /Fo or -o no longer choose */
+    const char *header;      /* /Fh: a C header holding the effect's bytes */
+    const char *header_name; /* /Vn: its array's name (default g_<input's stem>) */
+    const char *listing;     /* /Fc: the effect's listing (fx2_list.c's) */
+    int matrix_packing;      /* /Zpr: 1 (row_major), /Zpc: -1 (column_major, fxc's default), 0 unsaid */
+    const char *dump_ir;     /* --dump-ir[=PASS]: a pass's name or "all" (hfxc_options.dump_ir) */
+    const char *dump_ir_file;/* --dump-ir-file: where the dumps go (default stderr) */
 } cli_options;
+
+enum { CLI_FORMAT_HFXO, CLI_FORMAT_FXC };
 
 /* What compiling one input left behind, for main to print in input order. */
 typedef struct cli_job {
     const char *input;
     char *diagnostics;       /* fxc-style lines, malloc'ed */
     char *ast;               /* --ast dump, malloc'ed */
+    char *ir_dump;           /* --dump-ir text, malloc'ed */
     char *error;             /* an output that could not be written, malloc'ed */
     hfx_fx_effect *effect;   /* kept for --reflect / --annotations */
     bool ok;
@@ -49,6 +61,8 @@ char *cli_output_path(const cli_options *o, const char *input);
 bool cli_write_depfile(const cli_options *o, const char *input, const hfxc_result *r, char **error);
 /* The rule text: `target: dep...`, Make's escapes, one dependency a line; phony: `dep:` rules. malloc'ed. */
 char *cli_depfile_text(const char *target, const char *const *deps, size_t count, bool phony);
+/* fxc_out.c: /Fo in fxc's format, /Fh, /Fc for a compiled effect (job->ok false on failure). */
+void cli_write_fxc(const cli_options *o, cli_job *job, const hfx_fx_effect *fx);
 const char *cli_target_name(int target);
 int cli_target_from_name(const char *name); /* -1 when unknown */
 

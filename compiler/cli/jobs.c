@@ -52,7 +52,10 @@ char *cli_output_path(const cli_options *o, const char *input) {
     bool folder = o->input_count > 1 || (n && o->output[n - 1] == '/') || is_dir(o->output);
     if (!folder) return strdup(o->output);
     char *s = stem(input);
-    char *path = s ? fmt(o->output[n - 1] == '/' ? "%s%s.hfxo" : "%s/%s.hfxo", o->output, s) : NULL;
+    const char *ext = o->format == CLI_FORMAT_FXC ? "fxo" : "hfxo";
+    char *named = s ? fmt("%s.%s", s, ext) : NULL;
+    char *path = named ? fmt(o->output[n - 1] == '/' ? "%s%s" : "%s/%s", o->output, named) : NULL;
+    free(named);
     free(s);
     return path;
 }
@@ -73,6 +76,8 @@ static bool write_file(const char *path, const void *data, size_t size, char **e
 }
 
 static void write_hfxo(const cli_options *o, cli_job *job, const hfx_fx_effect *fx) {
+    cli_write_fxc(o, job, fx); /* /Fo (fxc's format), /Fh, /Fc */
+    if (o->format == CLI_FORMAT_FXC) return;
     char *path = cli_output_path(o, job->input);
     if (!path) return;
     void *data = NULL;
@@ -204,6 +209,7 @@ static void compile_one(const cli_options *o, cli_job *job, hfxc_session *sessio
     opt.entry = o->entry;
     opt.profile = o->profile;
     opt.session = session;
+    opt.dump_ir = o->dump_ir;
     opt.flags = (o->werror ? HFXC_WERROR : 0) | (o->no_warnings ? HFXC_NO_WARNINGS : 0) | (o->ast ? HFXC_PARSE_ONLY : 0) |
                 (o->pack_uniforms ? HFXC_PACK_UNIFORMS : 0) | (o->no_self_check ? HFXC_NO_SELF_CHECK : 0) |
                 (o->no_preshaders ? HFXC_NO_PRESHADERS : 0) |
@@ -215,6 +221,7 @@ static void compile_one(const cli_options *o, cli_job *job, hfxc_session *sessio
     }
     job->diagnostics = hfxc_diagnostics_text(r);
     job->ok = hfxc_result_ok(r) != 0;
+    if (o->dump_ir) job->ir_dump = hfxc_result_ir_dump(r);
     if (o->ast) {
         job->ast = hfxc_result_ast_dump(r);
     } else if (job->ok) {

@@ -129,7 +129,7 @@ static void both_spellings_on_every_seed(void) {
         char a[1024], b[1024];
         snprintf(a, sizeof a, "%s/fxc_%s.hfxo", tmp, good[i]);
         snprintf(b, sizeof b, "%s/gnu_%s.hfxo", tmp, good[i]);
-        EXPECT_STATUS(0, "/T fx_2_0 /Fo '%s' /nologo '%s'", a, seed);
+        EXPECT_STATUS(0, "/T fx_2_0 --format hfxo /Fo '%s' /nologo '%s'", a, seed);
         run_result r = run_expecting(0, "-o '%s' '%s'", b, seed);
         CHECK_STR(r.out, "");
         run_free(&r);
@@ -175,6 +175,10 @@ static const run_case BAD_USAGE[] = {
      "hfxc: error: unknown target 'glsl999' (glsl330, glsles300, glsl110, spirv) (hfxc --help for usage)\n"},
     {"", 2, 0, SAYS_EXACTLY, "hfxc: error: no input file (hfxc --help for usage)\n"},
     {"'%s' -o", 2, 0, SAYS_EXACTLY, "hfxc: error: option '-o' needs a value (hfxc --help for usage)\n"},
+    {"--dump-ir=bogus '%s'", 2, 0, SAYS_EXACTLY,
+     "hfxc: error: unknown pass 'bogus' (hfxc --list-passes) (hfxc --help for usage)\n"},
+    {"--list-passes", 0, 1, SAYS_AMONG_OTHERS, "specialise   compile arguments replace the entry's uniform parameters\n"},
+    {"--list-passes", 0, 1, SAYS_AMONG_OTHERS, "\npreshade     parameter-only work to preshaders"},
     {"--help", 0, 1, SAYS_AMONG_OTHERS, "usage: hfxc"},
     {"--version", 0, 1, SAYS_AMONG_OTHERS, "hfxc "},
 };
@@ -256,7 +260,7 @@ static void emit_glsl_shows_preshaders(void) {
 
 static void one_entry_point(void) {
     char *seed = test_seed_path("ambient.fx");
-    hfx_fx_effect *fx = compile_to("/T ps_3_0 /E mainPS /Fo", "entry.hfxo", seed);
+    hfx_fx_effect *fx = compile_to("/T ps_3_0 /E mainPS -o", "entry.hfxo", seed);
     if (fx) {
         CHECK_INT(fx->top_param_count, 4);
         CHECK_INT(fx->technique_count, 1);
@@ -312,6 +316,44 @@ static void write_text(const char *path, const char *text) {
     fclose(f);
 }
 
+/* --dump-ir=preshade: the vertex stage's IR after the preshade pass on stderr (the pixel
+ * stage's too), headed with the compile's place, which is where it names the entry (line 2,
+ * column 54); the same text in the --dump-ir-file file, and stderr then has none of it. The
+ * dump's lines are tests/compiler/ir/test_passes.c's, checked there by hand. */
+static void dump_ir_after_a_pass(void) {
+    char path[1024], dump[1024];
+    snprintf(path, sizeof path, "%s/dump.fx", tmp);
+    snprintf(dump, sizeof dump, "%s/dump.txt", tmp);
+    write_text(path,
+        "float4x4 World, ViewProj; float4 VS(float4 p : POSITION0) : POSITION0 { return mul(p, mul(World, ViewProj)); }\n"
+        "technique T { pass P { VertexShader = compile vs_3_0 VS(); } }\n");
+    static const char want[] =
+        "dump.fx(2,54)\n"
+        "shader vertex VS\n"
+        "global uniform float4x4 World\n"
+        "global uniform float4x4 ViewProj\n"
+        "preshader float4x4 hfx_pre0 = mul(World, ViewProj)\n"
+        "function VS : float4\n"
+        "  param float4 p\n"
+        "  block\n"
+        "    return (mul (param p) (private hfx_pre0))\n";
+    run_result r = run_expecting(0, "--dump-ir=preshade -o /dev/null '%s'", path);
+    CHECK_CONTAINS(r.err, "// after preshade: ");
+    CHECK_CONTAINS(r.err, want);
+    CHECK(strstr(r.err, "// after fold: ") == NULL);
+    run_free(&r);
+    r = run_expecting(0, "--dump-ir=preshade --dump-ir-file '%s' -o /dev/null '%s'", dump, path);
+    CHECK_STR(r.err, "");
+    char *text = test_read_file(dump, NULL);
+    CHECK_CONTAINS(text, want);
+    free(text);
+    run_free(&r);
+    r = run_expecting(0, "--dump-ir -o /dev/null '%s'", path); /* every pass: fold's among them */
+    CHECK_CONTAINS(r.err, "// after fold: ");
+    CHECK_CONTAINS(r.err, "// after uses-again: ");
+    run_free(&r);
+}
+
 /* -D / /D / -DNAME=V and -I / /I reach the preprocessor in both spellings. */
 static void defines_and_include_dirs(void) {
     char dir[1024], path[2048], inc[2048], out[2048];
@@ -323,7 +365,7 @@ static void defines_and_include_dirs(void) {
     write_text(path, "#include \"common.fxh\"\nfloat4 c = float4(COLOR_R, 0, 0, 1);\n");
     snprintf(out, sizeof out, "%s/defs.hfxo", tmp);
     static const char *const spellings[] = {"-I '%s' -D COLOR_R=0.5 -DEXTRA=2 -o '%s' '%s'",
-                                            "/I '%s' /D COLOR_R=0.5 /D EXTRA=2 /Fo '%s' '%s'"};
+                                            "/I '%s' /D COLOR_R=0.5 /D EXTRA=2 --format hfxo /Fo '%s' '%s'"};
     for (int k = 0; k < 2; k++) {
         remove(out);
         run_result r = run_expecting(0, spellings[k], dir, out, path);
@@ -544,6 +586,48 @@ static void reflect_json_interface(void) {
 }
 #endif
 
+/* fxc's outputs: /Fo writes fx_2_0 (its bytes: tests/compiler/effect/test_fx2_write.c's tiny
+ * effect, worked out by hand), /Fh a C header of them named by /Vn, /Fc the listing; -o keeps
+ * writing .hfxo; an effect with shaders waits for the D3D9 back end, with a message saying so. */
+static void fxc_outputs(void) {
+    char src[1024], fxo[1024], h[1024], lst[1024];
+    snprintf(src, sizeof src, "%s/tiny.fx", tmp);
+    write_text(src, "float Ref = 0.5;\ntechnique T { pass P { CullMode = None; } }\n");
+    snprintf(fxo, sizeof fxo, "%s/tiny.fxo", tmp);
+    snprintf(h, sizeof h, "%s/tiny.h", tmp);
+    snprintf(lst, sizeof lst, "%s/tiny.lst", tmp);
+    run_result r = run_expecting(0, "/T fx_2_0 /nologo /Fo '%s' /Fh '%s' /Vn g_tiny /Fc '%s' '%s'", fxo, h, lst, src);
+    CHECK_STR(r.err, "");
+    run_free(&r);
+    size_t size = 0;
+    char *bin = test_read_file(fxo, &size), *header = test_read_file(h, NULL), *listing = test_read_file(lst, NULL);
+    CHECK_INT(size, 45 * 4);
+    CHECK(bin && (uint8_t)bin[0] == 0x01 && (uint8_t)bin[1] == 0x09 && (uint8_t)bin[2] == 0xff && (uint8_t)bin[3] == 0xfe);
+    static const char head[] = "#if 0\n//\n// FX Version: fx_2_0\n";
+    CHECK(header && strncmp(header, head, sizeof head - 1) == 0);
+    CHECK_CONTAINS(header, "#endif\n\nconst BYTE g_tiny[] =\n{\n      1,   9, 255, 254,  92,   0,   0,   0,\n");
+    CHECK_CONTAINS(header, ",\n      0,   0,   0,   0\n};\n"); /* 180 bytes: the last line holds 4 (no resources) */
+    CHECK(listing != NULL);
+    if (listing) CHECK_CONTAINS(listing, "float Ref = 0.5;\n");
+    if (listing) CHECK_CONTAINS(listing, "    pass P\n    {\n        CullMode = None;\n    }\n");
+    if (listing && header) CHECK(strstr(header, listing) != NULL);
+    free(bin), free(header), free(listing);
+    /* the same file read back by hfxc: the fxc binary is an input like any */
+    hfx_fx_effect *fx = compile_to("-o", "back.hfxo", fxo);
+    if (fx) {
+        CHECK_INT(fx->top_param_count, 1);
+        CHECK_INT(fx->states[fx->passes[0].first_state].i, 1);
+    }
+    hfx_fx_effect_free(fx);
+    /* shaders: the D3D9 back end's business, said plainly */
+    char *seed = test_seed_path("ambient.fx");
+    if (!seed) return;
+    r = run_expecting(1, "/T fx_2_0 /Fo '%s' '%s'", fxo, seed);
+    CHECK_CONTAINS(r.err, "error X9011: vertex shader: no Direct3D 9 bytecode for this shader");
+    run_free(&r);
+    free(seed);
+}
+
 int main(void) {
     test_require_seeds();
     const char *build = getenv("HFX_BUILD_DIR");
@@ -558,8 +642,10 @@ int main(void) {
     RUN(emit_glsl_writes_each_stage);
     RUN(emit_glsl_shows_preshaders);
     RUN(one_entry_point);
+    RUN(fxc_outputs);
     RUN(defines_and_include_dirs);
     RUN(ast_werror_and_targets);
+    RUN(dump_ir_after_a_pass);
 #ifdef HFX_HAVE_CJSON
     RUN(annotations_json_ambient);
     RUN(annotations_json_spot_specular);
