@@ -1,4 +1,4 @@
-/* sbuf.c: the one growable text buffer (GLSL printer, IR and AST dumps, diagnostics, SPIR-V rewrite,
+/* sbuf.c: the one growable text buffer (GLSL printer, IR and AST dumps, diagnostics,
  * preprocessed text). */
 #include <stdarg.h>
 #include <stdint.h>

@@ -452,16 +452,30 @@ static void build_spirv_target(hfx_builder *b, int target) {
 /* HFX_TARGET_SPIRV and HFX_TARGET_SPIRV_VK: every program's GLSL 330 through glslang (spirv.c);
  * the GLSL 330 goes again unless it was asked for too. Without glslang nothing is made (hfxc
  * says so). */
+/* The GLSL the printer left in the SPIR-V targets' code (codegen.c) when no words are made of it. */
+static void drop_spirv_text(hfx_fx_effect *fx) {
+    for (uint32_t i = 0; i < fx->program_count; i++)
+        for (int s = 0; s < HFX_STAGE_COUNT; s++)
+            for (int t = HFX_TARGET_SPIRV; t <= HFX_TARGET_SPIRV_VK; t++) {
+                free(fx->programs[i].code[s][t].data);
+                fx->programs[i].code[s][t].data = NULL;
+                fx->programs[i].code[s][t].size = 0;
+            }
+}
+
 static void build_spirv(hfx_builder *b, unsigned requested) {
     hfx_fx_effect *fx = b->fx;
     if ((requested & (3u << HFX_TARGET_SPIRV)) && fx->program_count && hfx_spirv_available()) {
         if (!hfx_spirv_begin()) {
             hfx_error(b->diags, (hfx_loc){0, 1, 1}, X_UNSUPPORTED, "SPIR-V: glslang could not start");
+            drop_spirv_text(fx);
         } else {
             for (int t = HFX_TARGET_SPIRV; t <= HFX_TARGET_SPIRV_VK; t++)
                 if (requested & (1u << t)) build_spirv_target(b, t);
             hfx_spirv_end();
         }
+    } else {
+        drop_spirv_text(fx);
     }
     if (!(requested & (1u << HFX_TARGET_GLSL330)))
         for (uint32_t i = 0; i < fx->program_count; i++)
@@ -519,6 +533,7 @@ static hfx_fx_effect *builder_finish(hfx_builder *b, bool ok, uint32_t errors) {
     hfx_arena_escape_off(b->arena);
     if (ok && !b->failed_alloc && b->diags->errors == errors) self_check(b);
     if (ok && !b->failed_alloc && b->diags->errors == errors) build_spirv(b, b->fx->targets);
+    else drop_spirv_text(b->fx);
     hfx_arena_escape_on(b->arena);
     b->fx->targets = present_targets(b->fx);
     if (b->failed_alloc) hfx_error(b->diags, (hfx_loc){0, 1, 1}, X_MEMORY_LIMIT, "out of memory building the effect");

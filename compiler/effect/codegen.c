@@ -405,9 +405,18 @@ static int program_of(hfx_codegen *cg, ir_shader *sh[2], bool flat_colors, hfx_l
     io.uniform_count = out->uniform_count;
     io.reg_count = out->reg_count;
     io.alpha_test = cg->alpha_test;
+    /* The SPIR-V targets' GLSL (glsl_spirv.c) needs both stages' uniforms and structs, which
+     * their GLSL 330 records; glslang makes the words later (build.c). */
+    glsl_record rec[2] = {{0}};
+    bool spirv = cg->targets & (3u << HFX_TARGET_SPIRV);
+    io.fx = cg->c.fx;
+    io.prog = out;
+    io.records[0] = &rec[0];
+    io.records[1] = &rec[1];
     for (int t = 0; t < HFX_TARGET_COUNT; t++) {
-        if (!(cg->targets & (1u << t)) || t >= HFX_TARGET_SPIRV) continue;
+        if (!(cg->targets & (1u << t))) continue;
         for (int s = 0; s < 2; s++) {
+            io.record = spirv && t == HFX_TARGET_GLSL330 ? &rec[s] : NULL;
             char *text = print_stage(cg, sh[s], s, &io, (hfx_target)t, out);
             if (!text) return -1;
             if (cg->c.diags->flags & HFXC_TEST_BREAK_GLSL) text = spoil(text);

@@ -396,7 +396,8 @@ static uint32_t shader_program(fx2_reader *r, const fx2_blob *vs, const fx2_blob
             return i;
     if (!r->cg) {
         glsl_names(r);
-        r->cg = hfx_codegen_new(r->arena, r->diags, hfx_types_new(r->arena), NULL, fx, r->targets,
+        r->cg = hfx_codegen_new(r->arena, r->diags, hfx_types_new(r->arena), NULL, fx,
+                                r->targets & ~(3u << HFX_TARGET_SPIRV), /* no glslang here: GLSL only */
                                 (r->diags->flags & HFXC_PACK_UNIFORMS) != 0, NULL, NULL);
         if (!r->cg) {
             hfx_fx2_error(r, at, "the code generator could not start");

@@ -248,18 +248,23 @@ static void declare_interface(gp *p) {
             if (modern) sb_printf(p->out, "layout(location = %d) in vec4 %s;\n", io->attrs[i].location, io->attrs[i].glsl_name);
             else sb_printf(p->out, "attribute vec4 %s;\n", io->attrs[i].glsl_name);
         }
-        sb_put(p->out, "uniform vec4 hfx_pos_fixup;\n");
+        glsl_uniform(p, NULL, "hfx_pos_fixup", "vec4 hfx_pos_fixup", false);
     }
-    for (uint32_t i = 0; i < io->varying_count; i++)
+    for (uint32_t i = 0; i < io->varying_count; i++) {
+        if (p->vulkan) sb_printf(p->out, "layout(location = %u) ", (unsigned)i); /* both stages list them alike */
         sb_printf(p->out, "%s%s vec4 %s;\n", modern && is_flat(io, io->varyings[i]) ? "flat " : "",
                   !modern ? "varying" : p->stage == IR_VERTEX ? "out" : "in", varying_name(p, io->varyings[i]));
+    }
     if (p->stage == IR_PIXEL) {
         bool vpos = false, color[4] = { !p->sh, false, false, false };
         for (int i = 0; i < p->in_count; i++) vpos |= is_vpos(p->in[i].semantic);
         for (int i = 0; i < p->out_count; i++)
             if (color_target(p->outv[i].semantic) >= 0) color[color_target(p->outv[i].semantic)] = true;
-        if (vpos || p->uses_fixup) sb_put(p->out, "uniform vec4 hfx_pos_fixup;\n");
-        if (p->io->alpha_test) sb_put(p->out, "uniform int hfx_alpha_func;\nuniform float hfx_alpha_ref;\n");
+        if (vpos || p->uses_fixup) glsl_uniform(p, NULL, "hfx_pos_fixup", "vec4 hfx_pos_fixup", false);
+        if (p->io->alpha_test) {
+            glsl_uniform(p, NULL, "hfx_alpha_func", "int hfx_alpha_func", false);
+            glsl_uniform(p, NULL, "hfx_alpha_ref", "float hfx_alpha_ref", false);
+        }
         for (int i = 0; i < 4 && modern; i++)
             if (color[i]) sb_printf(p->out, "layout(location = %d) out vec4 hfx_o_COLOR%d;\n", i, i);
     }
@@ -339,7 +344,7 @@ static void init_privates(gp *p) {
         if (v->kind != IRV_PRIVATE || v->pre || (!v->copy_of && !v->init && !zero_printable(p, v->type))) continue;
         line_start(p);
         sb_printf(p->out, "%s = ", v->glsl);
-        if (v->copy_of) sb_put(p->out, v->copy_of->glsl);
+        if (v->copy_of) glsl_uniform_read(p, p->out, v->copy_of);
         else if (v->init) glsl_expr(p, v->init, PREC_ASSIGN);
         else glsl_zero(p, v->type);
         sb_put(p->out, ";\n");
@@ -371,6 +376,7 @@ static void print_pos_fixup(gp *p) {
     sb_put(p->out, "gl_Position.y *= 1.0 - 2.0 * hfx_pos_fixup.z; // render targets: D3D9's row order\n");
     line_start(p);
     sb_put(p->out, "gl_Position.xy += hfx_pos_fixup.xy * gl_Position.w; // D3D9 pixel centres\n");
+    if (p->vulkan) return; /* Vulkan's clip space has D3D's depth already */
     line_start(p);
     sb_put(p->out, "gl_Position.z = gl_Position.z * 2.0 - gl_Position.w; // D3D depth 0..1 to GL -1..1\n");
 }
@@ -455,13 +461,19 @@ static int switch_number(const gp *p, const ir_var *v) {
     return -1;
 }
 
-/* A switch is a constant when the runtime defines HFX_SWITCH_k (a program variant), else the uniform. */
+static bool is_sampler_type(const hfx_type *t) {
+    while (t->kind == TY_ARRAY) t = t->elem;
+    return t->kind == TY_SAMPLER;
+}
+
+/* A switch is a constant when the runtime defines HFX_SWITCH_k (a program variant), else the
+ * uniform; SPIR-V is compiled once, without variants: the uniform. */
 static void declare_uniform(gp *p, const ir_var *v) {
-    int k = v->param != HFX_NONE ? switch_number(p, v) : -1;
+    int k = v->param != HFX_NONE && !p->spirv ? switch_number(p, v) : -1;
     if (k >= 0) sb_printf(p->out, "#ifdef HFX_SWITCH_%d\nconst bool %s = HFX_SWITCH_%d;\n#else\n", k, v->glsl, k);
-    sb_put(p->out, "uniform ");
-    glsl_decl(p, p->out, v->type, v->glsl);
-    sb_put(p->out, ";\n");
+    sbuf decl = {.arena = p->c->arena};
+    glsl_decl(p, &decl, v->type, v->glsl);
+    glsl_uniform(p, v, v->glsl, decl.d ? decl.d : "", is_sampler_type(v->type));
     if (k >= 0) sb_put(p->out, "#endif\n");
 }
 
@@ -473,7 +485,8 @@ static void declare_globals(gp *p) {
         if (reg != HFX_NONE) {
             glsl_declare_packed(p, v, reg);
         } else if (v->kind == IRV_SAMPLER) {
-            sb_printf(p->out, "uniform %s %s;\n", v->dim == DIM_CUBE ? "samplerCube" : v->dim == DIM_3D ? "sampler3D" : "sampler2D", v->glsl);
+            const char *type = v->dim == DIM_CUBE ? "samplerCube" : v->dim == DIM_3D ? "sampler3D" : "sampler2D";
+            glsl_uniform(p, v, v->glsl, hfx_arena_printf(p->c->arena, "%s %s", type, v->glsl), true);
         } else if (v->kind == IRV_UNIFORM) {
             declare_uniform(p, v);
         } else if (v->kind == IRV_PRIVATE) {
@@ -490,6 +503,7 @@ static const char *header_of(hfx_target t) {
         return "#version 300 es\nprecision highp float;\nprecision highp int;\n"
                "precision highp sampler2D;\nprecision highp sampler3D;\nprecision highp samplerCube;\n";
     if (t == HFX_TARGET_GLSL110) return "#version 110\n";
+    if (t == HFX_TARGET_SPIRV || t == HFX_TARGET_SPIRV_VK) return "#version 450 core\n";
     return "#version 330 core\n";
 }
 
@@ -516,6 +530,8 @@ char *glsl_print(ir_ctx *c, const ir_shader *sh, ir_stage stage, const glsl_ifac
     p.io = io;
     p.target = target;
     p.legacy = target == HFX_TARGET_GLSL110;
+    p.spirv = (target == HFX_TARGET_SPIRV || target == HFX_TARGET_SPIRV_VK) && io && io->fx && io->prog;
+    p.vulkan = p.spirv && target == HFX_TARGET_SPIRV_VK;
     sbuf decls = {.arena = c->arena}, funcs = {.arena = c->arena}, all = {.arena = c->arena};
     p.helpers.arena = p.structs_text.arena = c->arena;
     if (sh) {
@@ -543,7 +559,7 @@ char *glsl_print(ir_ctx *c, const ir_shader *sh, ir_stage stage, const glsl_ifac
               sh ? " from " : " (fixed-function stand-in)", sh ? sh->entry->name : "");
     sb_put(&all, "\n");
     if (p.structs_text.d) { sb_put(&all, p.structs_text.d); }
-    if (decls.d) sb_put(&all, decls.d);
+    glsl_spirv_decls(&p, &all, &decls);
     sb_put(&all, "\n");
     if (p.helpers.d) { sb_put(&all, p.helpers.d); sb_put(&all, "\n"); }
     if (funcs.d) sb_put(&all, funcs.d);

@@ -4,6 +4,15 @@
 
 #include "ir/ir.h"
 
+/* A stage's top-level uniforms and struct types as its GLSL 330 printed them, in order: what the
+ * SPIR-V targets of the program need from both stages (glsl_spirv.c). Arena memory. */
+typedef struct glsl_record {
+    struct glsl_rec_uniform { const char *name, *decl; bool sampler; } *uniforms; /* decl: "vec4 a[3]" */
+    uint32_t uniform_count, uniform_cap;
+    struct glsl_rec_struct { const char *name, *text; } *structs;
+    uint32_t struct_count, struct_cap;
+} glsl_record;
+
 /* What the two stages of a program share. */
 typedef struct glsl_iface {
     const char **varyings; uint32_t varying_count; /* canonical semantics, sorted */
@@ -18,6 +27,12 @@ typedef struct glsl_iface {
     uint32_t reg_count;      /* HFXC_PACK_UNIFORMS: size of hfx_c in both stages (0: nothing packed) */
     bool alpha_test;         /* some pass of the effect enables D3D9's alpha test: COLOR0 carries it */
     const ir_var **pre_vars; const uint32_t *pre_regs; uint32_t pre_count; /* preshaders' registers */
+    /* The SPIR-V targets (HFX_TARGET_SPIRV, HFX_TARGET_SPIRV_VK): the program (its uniforms' and
+     * samplers' locations, common/spirv_loc.c) and both stages' records; `record` is filled by a
+     * GLSL 330 print when set. */
+    const hfx_fx_effect *fx; const hfx_fx_program *prog;
+    const glsl_record *records[2];
+    glsl_record *record;
 } glsl_iface;
 
 /* sem is one of io's derived varyings. */

@@ -57,7 +57,9 @@ static void add_struct(gp *p, const hfx_type *t) {
     }
     if (!HFX_ARENA_GROW(p->c->arena, p->structs, p->struct_count, p->struct_cap, 8)) return;
     p->structs[p->struct_count++] = t;
-    sb_printf(&p->structs_text, "struct %s\n{\n", glsl_type(p, t));
+    size_t from = p->structs_text.len;
+    const char *name = glsl_type(p, t);
+    sb_printf(&p->structs_text, "struct %s\n{\n", name);
     for (uint32_t i = 0; i < t->st->field_count; i++) {
         const hfx_field *f = &t->st->fields[i];
         sb_put(&p->structs_text, "    ");
@@ -65,6 +67,7 @@ static void add_struct(gp *p, const hfx_type *t) {
         sb_put(&p->structs_text, ";\n");
     }
     sb_put(&p->structs_text, "};\n\n");
+    glsl_record_struct(p, name, from);
 }
 
 const char *glsl_type(gp *p, const hfx_type *t) {
@@ -611,8 +614,10 @@ static void print_guarded_read(gp *p, const ir_expr *e) {
         p->out = saved;
         /* an if, not ?: (glslang's SPIR-V for a ?: of a uniform block's struct and a local one
          * stores mismatched types) */
+        sbuf name = {.arena = p->c->arena};
+        glsl_uniform_read(p, &name, v);
         sb_printf(&p->helpers, "%s %s(int i)\n{\n    if (%s) return %s;\n    return %s[i];\n}\n", glsl_ctor_type(p, at->elem),
-                  fn, test, tmp.d ? tmp.d : "0", v->glsl);
+                  fn, test, tmp.d ? tmp.d : "0", name.d ? name.d : v->glsl);
     }
     sb_printf(p->out, "%s(", fn);
     if (e->a[1]->type->base != B_INT) sb_put(p->out, "int(");
@@ -657,7 +662,7 @@ void glsl_expr(gp *p, const ir_expr *e, int max) {
         close_paren(p, neg && PREC_UNARY > max);
         break;
     }
-    case IE_VAR: sb_put(p->out, e->var->glsl); break;
+    case IE_VAR: glsl_uniform_read(p, p->out, e->var); break;
     case IE_UNARY: print_unary(p, e, max); break;
     case IE_BINARY: print_binary(p, e, max); break;
     case IE_SELECT: print_select(p, e, max); break;

@@ -29,6 +29,10 @@ typedef struct gp {
     int in_count, out_count;
     bool uses_fixup;          /* the pixel shader reads hfx_pos_fixup (ddy, VPOS) */
     bool nonsquare;           /* GLSL 110 met a non-square matrix type */
+    bool spirv;               /* HFX_TARGET_SPIRV or HFX_TARGET_SPIRV_VK: glslang makes SPIR-V of it */
+    bool vulkan;              /* HFX_TARGET_SPIRV_VK */
+    const ir_var **bools; uint32_t bool_count, bool_cap; /* SPIR-V (GL): bool uniforms declared as int */
+    size_t block_at; bool has_block; /* Vulkan: where the uniform block goes in the declarations */
 } gp;
 
 /* Expression precedence, GLSL's: lower binds tighter. */
@@ -50,5 +54,13 @@ uint32_t glsl_packed_reg(const gp *p, const ir_var *v); /* v's first register, o
 void glsl_declare_regs(gp *p);                          /* hfx_c, when the stage reads a packed parameter */
 void glsl_declare_packed(gp *p, const ir_var *v, uint32_t reg); /* its private global */
 void glsl_init_packed(gp *p);                           /* main's first lines: each from its registers */
+
+/* glsl_spirv.c: what the SPIR-V targets print differently. Every top-level uniform declaration
+ * goes through glsl_uniform (v NULL for the code generator's own); reads of a uniform through
+ * glsl_uniform_read; glsl_spirv_decls appends the declarations with Vulkan's block in place. */
+void glsl_uniform(gp *p, const ir_var *v, const char *name, const char *decl, bool sampler);
+void glsl_uniform_read(gp *p, sbuf *out, const ir_var *v);
+void glsl_record_struct(gp *p, const char *name, size_t text_from);
+void glsl_spirv_decls(gp *p, sbuf *all, const sbuf *decls);
 
 #endif

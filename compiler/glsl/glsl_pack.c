@@ -29,7 +29,9 @@ static bool stage_packs(const gp *p) {
 }
 
 void glsl_declare_regs(gp *p) {
-    if (stage_packs(p)) sb_printf(p->out, "uniform vec4 %s[%u];\n", HFX_FX_REGS_NAME, p->io->reg_count);
+    if (stage_packs(p))
+        glsl_uniform(p, NULL, HFX_FX_REGS_NAME,
+                     hfx_arena_printf(p->c->arena, "vec4 %s[%u]", HFX_FX_REGS_NAME, p->io->reg_count), false);
 }
 
 void glsl_declare_packed(gp *p, const ir_var *v, uint32_t reg) {

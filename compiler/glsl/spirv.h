@@ -1,6 +1,7 @@
-/* spirv.h: the SPIR-V target (HFX_TARGET_SPIRV), for OpenGL 4.6 / ARB_gl_spirv. Each program's
- * GLSL 330 (which the builder asks the code generator for) is rewritten for SPIR-V (#version
- * 450, explicit uniform locations and sampler bindings, bool uniforms as int) and compiled by
+/* spirv.h: the SPIR-V target (HFX_TARGET_SPIRV), for OpenGL 4.6 / ARB_gl_spirv. The GLSL
+ * printer's SPIR-V mode (glsl/glsl_spirv.c: #version 450, explicit uniform locations and sampler
+ * bindings, bool uniforms as int) leaves each program's GLSL text in code[stage][target], and it
+ * is compiled here by
  * glslang (client OpenGL 450, SPIR-V 1.0), both stages linked together so the varyings get
  * matching locations. docs/conventions.md ("SPIR-V") has the location rules.
  *
@@ -23,20 +24,15 @@ bool hfx_spirv_available(void);   /* false when the compiler was built without g
 bool hfx_spirv_begin(void);       /* glslang_initialize_process; false when it failed */
 void hfx_spirv_end(void);         /* glslang_finalize_process, once per successful begin */
 
-/* The GLSL the SPIR-V is compiled from: code[stage][HFX_TARGET_GLSL330] of p rewritten as above.
- * malloc'ed; NULL when the program has no GLSL 330 for that stage or out of memory. */
-char *hfx_spirv_glsl(const hfx_fx_effect *fx, const hfx_fx_program *p, int stage);
-
-/* Fills code[stage][HFX_TARGET_SPIRV] (malloc'ed words, size in bytes) for both stages of p
- * from its GLSL 330 code. Between hfx_spirv_begin and hfx_spirv_end. Returns 0, or -1 with
+/* Replaces the GLSL text in code[stage][HFX_TARGET_SPIRV] of both stages of p by the SPIR-V
+ * words (malloc'ed, size in bytes); on failure the code is freed. Between hfx_spirv_begin and hfx_spirv_end. Returns 0, or -1 with
  * glslang's messages in *log (malloc'ed, may be NULL). */
 int hfx_spirv_program(const hfx_fx_effect *fx, hfx_fx_program *p, char **log);
 
-/* Vulkan (HFX_TARGET_SPIRV_VK): the same GLSL 330 with the loose uniforms of both stages gathered
+/* Vulkan (HFX_TARGET_SPIRV_VK): the printer's Vulkan mode prints the loose uniforms of both stages gathered
  * into one std140 block `hfx_block` that both declare (set 0, binding HFX_VK_BINDING_BLOCK; the
  * runtime reads the members' offsets from the module), samplers at HFX_VK_BINDING_SAMPLER0 + their index in
  * p->samplers, and no depth remap (Vulkan's clip depth is D3D's 0..1). Compiled for Vulkan 1.0. */
-char *hfx_spirv_vk_glsl(const hfx_fx_effect *fx, const hfx_fx_program *p, int stage);
 int hfx_spirv_vk_program(const hfx_fx_effect *fx, hfx_fx_program *p, char **log);
 
 /* The location the SPIR-V of program p gives the uniform `glsl_name`: p->uniforms in their order

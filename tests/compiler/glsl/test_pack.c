@@ -484,9 +484,10 @@ static void mixed_spirv(void) {
         CHECK_INT(hfx_spirv_location(fx, p, "hfx_c"), 6);
         CHECK_INT(hfx_spirv_location(fx, p, "World"), -1);
         CHECK_INT(hfx_spirv_location(fx, p, "hfx_pos_fixup"), 6 + 15);
-        char *g = hfx_spirv_glsl(fx, p, HFX_STAGE_VERTEX);
-        CHECK_CONTAINS(g, "layout(location = 6) uniform vec4 hfx_c[15];\n");
-        free(g);
+        const hfx_fx_code *vc = &p->code[HFX_STAGE_VERTEX][HFX_TARGET_SPIRV];
+        int32_t regs_loc = -1;
+        CHECK_INT(hfx_spirv_find((const uint32_t *)(const void *)vc->data, vc->size / 4, "hfx_c", &regs_loc, NULL), 1);
+        CHECK_INT(regs_loc, 6);
         for (int s = 0; s < HFX_STAGE_COUNT; s++) CHECK(validate(&p->code[s][HFX_TARGET_SPIRV], "mixed.fx"));
         CHECK_INT(check_spirv_locations(fx, p, "mixed.fx"), 2);
     } else if (fx) {

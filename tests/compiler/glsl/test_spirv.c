@@ -2,7 +2,7 @@
  * fragment module with a valid header (magic, version 1.0), a `main` entry point of the right
  * execution model, that SPIRV-Tools' validator accepts for OpenGL 4.5 (the library spirv-val
  * is built on); uniforms sit at the documented locations, samplers at their units, varyings
- * match between the stages; the GLSL rewrite and bad inputs behave. */
+ * match between the stages; the printer's SPIR-V mode and bad inputs behave. */
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -290,101 +290,74 @@ static void glsl330_kept_when_asked(void) {
     hfxc_result_free(b);
 }
 
-/* The rewrite on a hand-made effect: #version 450, locations, a sampler binding, bools as int. */
-static void glsl_rewrite(void) {
-    hfx_fx_param params[3];
-    memset(params, 0, sizeof params);
-    params[0] = (hfx_fx_param){.name = "m", .glsl_name = "m", .klass = HFX_CLASS_MATRIX, .type = HFX_TYPE_FLOAT,
-                               .rows = 4, .cols = 4, .elements = 3, .parent = HFX_NONE, .sampler = HFX_NONE};
-    params[1] = (hfx_fx_param){.name = "on", .glsl_name = "on", .klass = HFX_CLASS_SCALAR, .type = HFX_TYPE_BOOL,
-                               .rows = 1, .cols = 1, .parent = HFX_NONE, .sampler = HFX_NONE};
-    params[2] = (hfx_fx_param){.name = "s", .glsl_name = "s", .klass = HFX_CLASS_OBJECT, .type = HFX_TYPE_SAMPLER2D,
-                               .parent = HFX_NONE, .sampler = 0};
-    hfx_fx_effect fx;
-    memset(&fx, 0, sizeof fx);
-    fx.params = params;
-    fx.param_count = fx.top_param_count = 3;
-    hfx_fx_sampler_use use = {.glsl_name = "s", .sampler = 0, .unit = 2};
-    hfx_fx_program p;
-    memset(&p, 0, sizeof p);
-    p.samplers = &use;
-    p.sampler_count = 1;
-    hfx_fx_uniform_use uses[2] = {{.param = 0, .reg = HFX_NONE}, {.param = 1, .reg = HFX_NONE}};
-    p.uniforms = uses;
-    p.uniform_count = 2;
-    char fs[] = "#version 330 core\n"
-                "struct S { bool on; };\n"
-                "uniform mat4 m[3];\n"
-                "uniform bool on;\n"
-                "uniform sampler2D s;\n"
-                "uniform float hfx_alpha_ref;\n"
-                "uniform vec4 hfx_mine;\n"
-                "layout(location = 0) out vec4 c;\n"
-                "void main() { c = on ? texture(s, vec2(0.0)) * m[2][0] : hfx_mine; }\n";
-    p.code[HFX_STAGE_FRAGMENT][HFX_TARGET_GLSL330].data = fs;
-    char *g = hfx_spirv_glsl(&fx, &p, HFX_STAGE_FRAGMENT);
-    CHECK(g != NULL);
-    CHECK(g && strncmp(g, "#version 450 core\n", 18) == 0);
-    CHECK_CONTAINS(g, "struct S { bool on; };\n"); /* only top-level declarations change */
-    CHECK_CONTAINS(g, "layout(location = 0) uniform mat4 m[3];\n");
-    CHECK_CONTAINS(g, "layout(location = 3) uniform int on;\n#define on (on != 0)\n");
-    CHECK_CONTAINS(g, "layout(location = 4, binding = 2) uniform sampler2D s;\n");
-    CHECK_CONTAINS(g, "layout(location = 7) uniform float hfx_alpha_ref;\n"); /* 5 + 2 */
-    CHECK_CONTAINS(g, "layout(location = 8) uniform vec4 hfx_mine;\n");       /* after the known three */
-    CHECK(hfx_spirv_glsl(&fx, &p, HFX_STAGE_VERTEX) == NULL);                 /* no vertex GLSL */
-    free(g);
-
-    /* And it compiles: a fragment-only program. */
-    CHECK(hfx_spirv_begin());
-    char *log = NULL;
-    CHECK_INT(hfx_spirv_program(&fx, &p, &log), 0);
-    if (log && *log) fprintf(stderr, "log: %s\n", log);
-    free(log);
-    hfx_fx_code *c = &p.code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV];
-    check_module(c, HFX_STAGE_FRAGMENT, "hand-made");
-    size_t n;
-    const uint32_t *w = words_of(c, &n);
-    int32_t loc, binding;
-    CHECK_INT(hfx_spirv_find(w, n, "on", &loc, &binding), 1);
-    CHECK_INT(loc, 3);
-    CHECK_INT(binding, -1);
-    CHECK_INT(hfx_spirv_find(w, n, "s", &loc, &binding), 1);
-    CHECK_INT(loc, 4);
-    CHECK_INT(binding, 2);
-    free(c->data);
-    c->data = NULL;
-    hfx_spirv_end();
+/* The printer's SPIR-V mode, read back from the module: locations by the rules (parameters in
+ * order, samplers after them at their unit's binding, the known internal ones after those),
+ * bools as int. */
+static void printer_spirv_mode(void) {
+    const char *src = "float4x4 m[3];\nbool on;\ntexture T;\nsampler2D s = sampler_state { Texture = <T>; };\n"
+                      "float4 VS(float4 p : POSITION) : POSITION { return p; }\n"
+                      "float4 PS(float2 uv : TEXCOORD0) : COLOR { return on ? tex2D(s, uv) * m[2][0] : 0; }\n"
+                      "technique t { pass p { AlphaTestEnable = true;\n"
+                      "  VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }\n";
+    hfxc_options o = {0};
+    o.targets = SPIRV;
+    hfxc_result *r = hfxc_compile_memory(src, strlen(src), "mode.fx", &o);
+    const hfx_fx_effect *fx = hfxc_result_effect(r);
+    CHECK(fx != NULL);
+    if (fx) {
+        const hfx_fx_code *c = &fx->programs[0].code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV];
+        check_module(c, HFX_STAGE_FRAGMENT, "mode.fx");
+        size_t n;
+        const uint32_t *w = words_of(c, &n);
+        int32_t loc, binding;
+        CHECK_INT(hfx_spirv_find(w, n, "m", &loc, &binding), 1);
+        CHECK_INT(loc, 0);
+        CHECK_INT(hfx_spirv_find(w, n, "on", &loc, &binding), 1);
+        CHECK_INT(loc, 3); /* after m's 3 matrices */
+        CHECK_INT(binding, -1);
+        CHECK_INT(hfx_spirv_find(w, n, "s", &loc, &binding), 1);
+        CHECK_INT(loc, 4);
+        CHECK_INT(binding, 0); /* its texture unit */
+        CHECK_INT(hfx_spirv_find(w, n, "hfx_alpha_ref", &loc, &binding), 1);
+        CHECK_INT(loc, 7); /* 4 + 1 sampler + hfx_pos_fixup, hfx_alpha_func */
+        CHECK_INT(hfx_spirv_bool_uniform(w, n, NULL, 0), 0); /* `on` is an int */
+        c = &fx->programs[0].code[HFX_STAGE_VERTEX][HFX_TARGET_SPIRV];
+        w = words_of(c, &n);
+        CHECK_INT(hfx_spirv_find(w, n, "hfx_pos_fixup", &loc, &binding), 1);
+        CHECK_INT(loc, 5);
+    }
+    hfxc_result_free(r);
 }
 
-static void bool_field_keeps_bool(void) {
-    hfx_fx_param param = {.name = "on", .glsl_name = "on", .klass = HFX_CLASS_SCALAR, .type = HFX_TYPE_BOOL,
-                          .rows = 1, .cols = 1, .parent = HFX_NONE, .sampler = HFX_NONE};
-    hfx_fx_effect fx;
-    memset(&fx, 0, sizeof fx);
-    fx.params = &param;
-    fx.param_count = fx.top_param_count = 1;
-    hfx_fx_program p;
-    memset(&p, 0, sizeof p);
-    hfx_fx_uniform_use use = {.param = 0, .reg = HFX_NONE};
-    p.uniforms = &use;
-    p.uniform_count = 1;
-    char fs[] = "#version 330 core\nstruct S { bool on; };\nuniform bool on;\nvoid main() { S x; x.on = on; }\n";
-    p.code[HFX_STAGE_FRAGMENT][HFX_TARGET_GLSL330].data = fs;
-    char *g = hfx_spirv_glsl(&fx, &p, HFX_STAGE_FRAGMENT);
-    CHECK_CONTAINS(g, "layout(location = 0) uniform bool on;\n");
-    CHECK(g && !strstr(g, "#define"));
-    free(g);
-    /* A parameter or a local of that name after it: no macro either; `return on` is a use. */
-    char fs2[] = "#version 330 core\nuniform bool on;\nbool f(bool on) { return on; }\nvoid main() { }\n";
-    p.code[HFX_STAGE_FRAGMENT][HFX_TARGET_GLSL330].data = fs2;
-    g = hfx_spirv_glsl(&fx, &p, HFX_STAGE_FRAGMENT);
-    CHECK(g && !strstr(g, "#define"));
-    free(g);
-    char fs3[] = "#version 330 core\nuniform bool on;\nbool f() { if (on) return on; else return !on; }\nvoid main() { }\n";
-    p.code[HFX_STAGE_FRAGMENT][HFX_TARGET_GLSL330].data = fs3;
-    g = hfx_spirv_glsl(&fx, &p, HFX_STAGE_FRAGMENT);
-    CHECK_CONTAINS(g, "uniform int on;\n#define on (on != 0)\n");
-    free(g);
+static hfxc_result *compile_source(const char *src, unsigned targets);
+
+/* A bool uniform named like a struct field or a parameter is read converted all the same (the
+ * text rewrite once kept it bool there: a #define would have broken the field and the parameter). */
+static void bool_named_like_a_field(void) {
+    const char *srcs[2] = {
+        "struct S { bool on; };\nbool on;\n"
+        "float4 PS() : COLOR { S x; x.on = on; return x.on ? 1 : 0; }\n",
+        "bool on;\nbool f(bool on) { return on; }\n"
+        "float4 PS() : COLOR { return f(!on) || on ? 1 : 0; }\n",
+    };
+    for (int i = 0; i < 2; i++) {
+        char src[512];
+        snprintf(src, sizeof src, "%s%s", srcs[i], "technique t { pass p { PixelShader = compile ps_3_0 PS(); } }\n");
+        hfxc_result *r = compile_source(src, SPIRV);
+        const hfx_fx_effect *fx = hfxc_result_effect(r);
+        CHECK(fx != NULL);
+        if (fx) {
+            const hfx_fx_code *c = &fx->programs[0].code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV];
+            check_module(c, HFX_STAGE_FRAGMENT, "bool named like a field");
+            size_t n;
+            const uint32_t *w = words_of(c, &n);
+            int32_t loc;
+            CHECK_INT(hfx_spirv_bool_uniform(w, n, NULL, 0), 0);
+            CHECK_INT(hfx_spirv_find(w, n, "on", &loc, NULL), 1);
+            CHECK_INT(loc, i == 0 ? 0 : -1); /* the second: OpName "on" is f's parameter first */
+        }
+        hfxc_result_free(r);
+    }
 }
 
 static hfxc_result *compile_source(const char *src, unsigned targets) {
@@ -464,12 +437,12 @@ static void bad_inputs(void) {
     CHECK(hfx_spirv_begin());
     char *log = NULL;
     CHECK_INT(hfx_spirv_program(&fx, &p, &log), -1); /* no GLSL at all */
-    CHECK_CONTAINS(log, "no GLSL 330");
+    CHECK_CONTAINS(log, "no GLSL");
     free(log);
-    char bad[] = "#version 330 core\nvoid main() { undeclared_thing = 1.0; }\n";
-    char good_vs[] = "#version 330 core\nout vec4 hfx_v_X;\nvoid main() { gl_Position = vec4(0.0); hfx_v_X = vec4(1.0); }\n";
-    p.code[HFX_STAGE_VERTEX][HFX_TARGET_GLSL330].data = good_vs;
-    p.code[HFX_STAGE_FRAGMENT][HFX_TARGET_GLSL330].data = bad;
+    /* the printer's text is malloc'ed: failures free it */
+    p.code[HFX_STAGE_VERTEX][HFX_TARGET_SPIRV].data =
+        strdup("#version 450 core\nout vec4 hfx_v_X;\nvoid main() { gl_Position = vec4(0.0); hfx_v_X = vec4(1.0); }\n");
+    p.code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV].data = strdup("#version 450 core\nvoid main() { undeclared_thing = 1.0; }\n");
     log = NULL;
     CHECK_INT(hfx_spirv_program(&fx, &p, &log), -1);
     CHECK_CONTAINS(log, "undeclared_thing");
@@ -477,9 +450,10 @@ static void bad_inputs(void) {
     CHECK(p.code[HFX_STAGE_VERTEX][HFX_TARGET_SPIRV].data == NULL);
     CHECK(p.code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV].data == NULL);
     free(log);
+    p.code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV].data = strdup("#version 450 core\nvoid main() { undeclared_thing = 1.0; }\n");
     CHECK_INT(hfx_spirv_program(&fx, &p, NULL), -1); /* no log wanted */
-    char empty[] = "";
-    p.code[HFX_STAGE_FRAGMENT][HFX_TARGET_GLSL330].data = empty;
+    CHECK(p.code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV].data == NULL);
+    p.code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV].data = strdup("");
     CHECK_INT(hfx_spirv_program(&fx, &p, NULL), -1);
     hfx_spirv_end();
 
@@ -497,8 +471,8 @@ static void bad_inputs(void) {
 
 int main(void) {
     if (!hfx_spirv_available()) test_skip("built without glslang: no SPIR-V target");
-    RUN(glsl_rewrite);
-    RUN(bool_field_keeps_bool);
+    RUN(printer_spirv_mode);
+    RUN(bool_named_like_a_field);
     RUN(bad_inputs);
     RUN(bool_uniforms);
     test_require_seeds();

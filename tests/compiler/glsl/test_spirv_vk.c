@@ -1,7 +1,7 @@
 /* The Vulkan SPIR-V target (HFX_TARGET_SPIRV_VK): every good seed compiles for it, each module is
- * valid for Vulkan 1.0 (spirv-tools, when present), and the rewritten GLSL has the layout the
- * runtime relies on: one std140 block at set 0 binding 0 shared by both stages, samplers from
- * binding 1 in the program's order, explicit varying locations, no GL depth remap. */
+ * valid for Vulkan 1.0 (spirv-tools, when present), and the modules have the layout the runtime
+ * relies on: one std140 block shared by both stages, samplers from binding 1 in the program's
+ * order, explicit varying locations (tests/runtime/vk draw with Vulkan's depth, no GL remap). */
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -70,34 +70,57 @@ static const char *SRC =
     "  for (int i = 0; i < Count; i++) c.rgb += Lights[i]; return c; }\n"
     "technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }\n";
 
-static void rewritten_glsl_has_the_vulkan_layout(void) {
+enum { OP_NAME = 5, OP_MEMBER_NAME = 6 };
+
+/* The member names of the struct type OpName'd `type` in a module, ", "-separated into out. */
+static void member_names(const hfx_fx_code *c, const char *type, char *out, size_t size) {
+    const uint32_t *w = (const uint32_t *)(const void *)c->data;
+    size_t n = c->size / 4, used = 0;
+    uint32_t id = 0;
+    out[0] = 0;
+    for (size_t i = 5; i < n && (w[i] >> 16);) {
+        uint32_t len = w[i] >> 16, op = w[i] & 0xffffu;
+        if (i + len > n) break;
+        if (op == OP_NAME && len >= 3 && strcmp((const char *)&w[i + 2], type) == 0) id = w[i + 1];
+        if (op == OP_MEMBER_NAME && len >= 4 && id && w[i + 1] == id && used + 1 < size)
+            used += (size_t)snprintf(out + used, size - used, "%s%s", used ? ", " : "", (const char *)&w[i + 3]);
+        i += len;
+    }
+}
+
+/* The printer's Vulkan mode, read back from the modules: one block of both stages' loose
+ * uniforms, the sampler at binding 1, the varyings at matching locations. */
+static void modules_have_the_vulkan_layout(void) {
     hfxc_options o = {0};
-    o.targets = 1u << HFX_TARGET_GLSL330;
+    o.targets = 1u << HFX_TARGET_SPIRV_VK;
     o.flags = HFXC_PACK_UNIFORMS;
     hfxc_result *r = hfxc_compile_memory(SRC, strlen(SRC), "vk.fx", &o);
     const hfx_fx_effect *fx = hfxc_result_effect(r);
     CHECK(fx != NULL);
     if (fx) {
-        char *vs = hfx_spirv_vk_glsl(fx, &fx->programs[0], HFX_STAGE_VERTEX);
-        char *ps = hfx_spirv_vk_glsl(fx, &fx->programs[0], HFX_STAGE_FRAGMENT);
-        CHECK_CONTAINS(vs, "#version 450 core");
-        CHECK_CONTAINS(vs, "layout(std140, set = 0, binding = 0) uniform hfx_block");
-        CHECK_CONTAINS(ps, "layout(std140, set = 0, binding = 0) uniform hfx_block");
-        CHECK_CONTAINS(ps, "layout(set = 0, binding = 1) uniform sampler2D");
-        CHECK_CONTAINS(vs, "layout(location = 0) out vec4 hfx_v_TEXCOORD0;");
-        CHECK_CONTAINS(ps, "layout(location = 0) in vec4 hfx_v_TEXCOORD0;");
-        CHECK(vs && !strstr(vs, "gl_Position.z = gl_Position.z * 2.0"));
-        /* both stages declare the same block: the pixel stage's Count and Lights are in the vertex one too */
-        const char *b1 = vs ? strstr(vs, "uniform hfx_block") : NULL, *b2 = ps ? strstr(ps, "uniform hfx_block") : NULL;
-        CHECK(b1 && b2 && strncmp(b1, b2, (size_t)(strchr(b1, '}') - b1)) == 0);
-        free(vs);
-        free(ps);
+        const hfx_fx_code *vs = &fx->programs[0].code[HFX_STAGE_VERTEX][HFX_TARGET_SPIRV_VK];
+        const hfx_fx_code *ps = &fx->programs[0].code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV_VK];
+        const uint32_t *vw = (const uint32_t *)(const void *)vs->data, *pw = (const uint32_t *)(const void *)ps->data;
+        int32_t loc, binding;
+        CHECK_INT(hfx_spirv_find(pw, ps->size / 4, "S", &loc, &binding), 1);
+        CHECK_INT(binding, 1);
+        CHECK_INT(hfx_spirv_find(vw, vs->size / 4, "hfx_v_TEXCOORD0", &loc, NULL), 1);
+        CHECK_INT(loc, 0);
+        CHECK_INT(hfx_spirv_find(pw, ps->size / 4, "hfx_v_TEXCOORD0", &loc, NULL), 1);
+        CHECK_INT(loc, 0);
+        /* both stages declare the same block: the pixel stage's Count and Lights are in the vertex
+         * one too; WVP and Tint are packed (hfx_c), Count and Lights are not (an int, a dynamic index) */
+        char vm[256], pm[256];
+        member_names(vs, "hfx_block", vm, sizeof vm);
+        member_names(ps, "hfx_block", pm, sizeof pm);
+        CHECK_STR(vm, "hfx_c, hfx_pos_fixup, Count, Lights");
+        CHECK_STR(pm, vm);
     }
     hfxc_result_free(r);
 }
 
 int main(void) {
-    RUN(rewritten_glsl_has_the_vulkan_layout);
+    RUN(modules_have_the_vulkan_layout);
     test_require_seeds();
     RUN(every_seed_compiles_for_vulkan);
     return test_summary();
