@@ -96,7 +96,7 @@ static const char *value_of(const char *arg, const char *name, int argc, char **
 }
 
 typedef enum {
-    OPT_OUTPUT, OPT_DEFINE, OPT_INCLUDE, OPT_PROFILE, OPT_ENTRY, OPT_TARGET, OPT_EMIT, OPT_JOBS, OPT_DEPFILE, OPT_DEP_TARGET
+    OPT_OUTPUT, OPT_DEFINE, OPT_INCLUDE, OPT_PROFILE, OPT_ENTRY, OPT_TARGET, OPT_EMIT, OPT_JOBS, OPT_DEPFILE, OPT_DEP_TARGET, OPT_LISTING
 } opt_kind;
 
 static const struct {
@@ -109,6 +109,7 @@ static const struct {
     {"-o", OPT_OUTPUT}, {"-D", OPT_DEFINE}, {"-I", OPT_INCLUDE}, {"-T", OPT_PROFILE}, {"-E", OPT_ENTRY},
     {"-j", OPT_JOBS}, {"-Fo", OPT_OUTPUT},
     {"/Fo", OPT_OUTPUT}, {"/D", OPT_DEFINE}, {"/I", OPT_INCLUDE}, {"/T", OPT_PROFILE}, {"/E", OPT_ENTRY},
+    {"/Fc", OPT_LISTING}, {"-Fc", OPT_LISTING},
 };
 
 static int set_valued(cli_options *o, opt_kind kind, const char *v) {
@@ -118,6 +119,7 @@ static int set_valued(cli_options *o, opt_kind kind, const char *v) {
     case OPT_INCLUDE: if (push(&o->include_dirs, &o->include_dir_count, v)) return EXIT_USAGE; break;
     case OPT_PROFILE: o->profile = v; break;
     case OPT_ENTRY: o->entry = v; break;
+    case OPT_LISTING: o->listing = v; break;
     case OPT_TARGET: return add_targets(o, v);
     case OPT_EMIT: o->emit_glsl = v; break;
     case OPT_DEPFILE: o->depfile = true, o->depfile_path = v; break;
@@ -144,6 +146,7 @@ static int flag(cli_options *o, const char *a, bool *handled) {
     else if (!strcmp(a, "--no-self-check")) o->no_self_check = true;
     else if (!strcmp(a, "--no-preshaders")) o->no_preshaders = true;
     else if (!strcmp(a, "--no-derived-varyings")) o->no_derived_varyings = true;
+    else if (!strcmp(a, "--via-d3d9")) o->via_d3d9 = true;
     else if (!strcmp(a, "--pack-uniforms")) o->pack_uniforms = true; /* the default; kept for scripts */
     else if (!strcmp(a, "--separate-uniforms")) o->pack_uniforms = false;
     else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) o->quiet = true;

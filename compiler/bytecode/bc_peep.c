@@ -1,0 +1,155 @@
+/* bc_peep.c: after instruction selection, a copy `mov X, rT` whose temporary dies there is
+ * folded into the instructions that computed rT: they write X themselves (fxc's `dp4 oPos.x, v0,
+ * c0` where a plain walk of the tree computes into a temporary and moves it). */
+#include "bytecode/bc_int.h"
+
+static bool reads(const d3d9_inst *in, unsigned type, unsigned num) {
+    for (unsigned i = 0; i < in->src_count; i++) {
+        const d3d9_src *s = &in->src[i];
+        if (s->type == type && s->num == num) return true;
+        if (s->relative && s->rel_type == type && s->rel_num == num) return true;
+    }
+    if (in->op == D3D9_TEXKILL && in->dst.type == type && in->dst.num == num) return true;
+    return false;
+}
+
+static bool writes(const d3d9_inst *in, unsigned type, unsigned num) {
+    return in->has_dst && in->op != D3D9_TEXKILL && in->dst.type == type && in->dst.num == num;
+}
+
+/* Instructions whose destination must stay a temporary (or has a fixed mask). */
+static bool movable_writer(const bc_gen *g, const d3d9_inst *in, unsigned to_type) {
+    switch (in->op) {
+    case D3D9_SINCOS: case D3D9_NRM: case D3D9_CRS: case D3D9_LIT: case D3D9_MOVA: case D3D9_TEXKILL:
+    case D3D9_TEX: case D3D9_TEXLDL: case D3D9_TEXLDD: case D3D9_DSX: case D3D9_DSY:
+        return to_type == D3D9_REG_TEMP && in->op != D3D9_MOVA && in->op != D3D9_TEXKILL && in->op != D3D9_SINCOS &&
+               !(g->stage == D3D9_PS && g->model < D3D9_SM(3, 0) && (in->op == D3D9_TEX)) ;
+    default: return in->has_dst && !in->dst.relative && !in->predicated;
+    }
+}
+
+/* The temporary's components in mask are not read after instruction at (before being rewritten). */
+static bool dead_after(const bc_gen *g, uint32_t at, unsigned num, unsigned mask) {
+    for (uint32_t i = at + 1; i < g->inst_count; i++) {
+        const d3d9_inst *in = &g->insts[i];
+        if (reads(in, D3D9_REG_TEMP, num)) return false;
+        if (writes(in, D3D9_REG_TEMP, num)) {
+            mask &= ~(unsigned)in->dst.mask;
+            if (!mask) return true;
+        }
+        if (in->op == D3D9_IF || in->op == D3D9_LOOP || in->op == D3D9_REP) return false;
+    }
+    return true;
+}
+
+/* A plain copy of a temporary; *moved: the one component it moves elsewhere (-1: none). */
+static bool plain_copy(const d3d9_inst *m, int *from) {
+    const d3d9_src *s = &m->src[0];
+    *from = -1;
+    if (m->op != D3D9_MOV || s->type != D3D9_REG_TEMP || s->mod || s->relative || m->dst.mods || m->predicated) return false;
+    bool identity = true;
+    for (unsigned c = 0; c < 4; c++)
+        if ((m->dst.mask >> c & 1) && (s->swizzle >> (2 * c) & 3) != c) identity = false;
+    if (identity) return true;
+    unsigned d = 0;
+    while (d < 4 && !(m->dst.mask >> d & 1)) d++;
+    if (m->dst.mask != 1u << d) return false;
+    *from = s->swizzle >> (2 * d) & 3;
+    return true;
+}
+
+/* Writer w of component `from` writes component `to` instead: a replicated result (dp4, rcp...)
+ * just changes its mask; a componentwise one reads its sources' component for `to` too. */
+static void move_component(d3d9_inst *w, unsigned from, unsigned to) {
+    const d3d9_op_info *info = d3d9_op_find(w->op);
+    bool replicated = w->op == D3D9_DP3 || w->op == D3D9_DP4 || w->op == D3D9_DP2ADD || (info->flags & D3D9_OPF_SCALAR);
+    if (!replicated)
+        for (unsigned i = 0; i < w->src_count; i++) {
+            unsigned c = w->src[i].swizzle >> (2 * from) & 3;
+            w->src[i].swizzle = (uint8_t)(c * 0x55u);
+        }
+    w->dst.mask = (uint8_t)(1u << to);
+}
+
+static bool try_sink(bc_gen *g, uint32_t at) {
+    d3d9_inst *m = &g->insts[at];
+    int from;
+    if (!plain_copy(m, &from) || m->dst.relative) return false;
+    unsigned to = m->dst.type, T = m->src[0].num, mask = from >= 0 ? 1u << from : m->dst.mask;
+    if (g->stage == D3D9_PS && g->model < D3D9_SM(3, 0) && to != D3D9_REG_TEMP) return false;
+    if (to == D3D9_REG_TEMP && m->dst.num == T) return false;
+    if (!dead_after(g, at, T, mask)) return false;
+    unsigned target_mask = m->dst.mask;
+    uint32_t writers[64], n = 0;
+    unsigned remaining = mask;
+    for (uint32_t i = at; i-- > 0 && remaining;) {
+        d3d9_inst *in = &g->insts[i];
+        if (in->op == D3D9_ENDIF || in->op == D3D9_ENDLOOP || in->op == D3D9_ENDREP || in->op == D3D9_ELSE) return false;
+        bool w = writes(in, D3D9_REG_TEMP, T);
+        if (reads(in, D3D9_REG_TEMP, T) && !(w && n == 0 && false)) return false;
+        /* the target must be left alone while the writers run */
+        if ((writes(in, to, m->dst.num) && (in->dst.mask & target_mask)) || reads(in, to, m->dst.num)) return false;
+        if (!w) continue;
+        if ((in->dst.mask & ~mask) || !movable_writer(g, in, to) || n == 64) return false;
+        if (in->dst.mask & remaining) writers[n++] = i;
+        else return false; /* a dead write of components a later writer replaces: leave it */
+        remaining &= ~(unsigned)in->dst.mask;
+    }
+    if (remaining || !n || (from >= 0 && n != 1)) return false;
+    if (from >= 0) {
+        const d3d9_op_info *info = d3d9_op_find(g->insts[writers[0]].op);
+        if (!info || (info->flags & (D3D9_OPF_TEX | D3D9_OPF_MATRIX)) || g->insts[writers[0]].op == D3D9_DP2ADD) return false;
+        move_component(&g->insts[writers[0]], (unsigned)from, __builtin_ctz(target_mask));
+    }
+    for (uint32_t k = 0; k < n; k++) {
+        g->insts[writers[k]].dst.type = (uint8_t)to;
+        g->insts[writers[k]].dst.num = m->dst.num;
+    }
+    memmove(m, m + 1, (g->inst_count - at - 1) * sizeof *m);
+    g->inst_count--;
+    return true;
+}
+
+void bc_sink(bc_gen *g) {
+    for (uint32_t i = 0; i < g->inst_count;)
+        if (!try_sink(g, i)) i++;
+}
+
+/* Temporaries renumbered by their spans (first to last mention; the code has no loops): sinking
+ * leaves some unused, and the allocator's numbers are not the fewest. Returns how many remain. */
+uint32_t bc_renumber(bc_gen *g) {
+    int32_t first[BC_MAX_TEMPS], last[BC_MAX_TEMPS];
+    for (unsigned r = 0; r < BC_MAX_TEMPS; r++) first[r] = last[r] = -1;
+    for (uint32_t i = 0; i < g->inst_count; i++) {
+        const d3d9_inst *in = &g->insts[i];
+        for (unsigned r = 0; r < BC_MAX_TEMPS; r++)
+            if (reads(in, D3D9_REG_TEMP, r) || writes(in, D3D9_REG_TEMP, r)) {
+                if (first[r] < 0) first[r] = (int32_t)i;
+                last[r] = (int32_t)i;
+            }
+    }
+    int map[BC_MAX_TEMPS];
+    int32_t busy_until[BC_MAX_TEMPS];
+    uint32_t count = 0;
+    bool done[BC_MAX_TEMPS] = {false};
+    for (unsigned k = 0; k < BC_MAX_TEMPS; k++) { map[k] = -1; busy_until[k] = -1; }
+    for (;;) { /* by first mention */
+        int pick = -1;
+        for (unsigned r = 0; r < BC_MAX_TEMPS; r++)
+            if (first[r] >= 0 && !done[r] && (pick < 0 || first[r] < first[pick])) pick = (int)r;
+        if (pick < 0) break;
+        done[pick] = true;
+        unsigned n = 0;
+        while (n < count && busy_until[n] >= first[pick]) n++;
+        if (n == count) count++;
+        map[pick] = (int)n;
+        busy_until[n] = last[pick];
+    }
+    for (uint32_t i = 0; i < g->inst_count; i++) {
+        d3d9_inst *in = &g->insts[i];
+        if (in->has_dst && in->dst.type == D3D9_REG_TEMP && map[in->dst.num] >= 0) in->dst.num = (uint16_t)map[in->dst.num];
+        for (unsigned s = 0; s < in->src_count; s++)
+            if (in->src[s].type == D3D9_REG_TEMP && map[in->src[s].num] >= 0) in->src[s].num = (uint16_t)map[in->src[s].num];
+    }
+    return count;
+}
