@@ -123,7 +123,9 @@ bc_val bc_per_comp(bc_gen *g, uint16_t op, bc_val a, const bc_val *b); /* op on 
 
 /* --- bc_peep.c --- */
 void bc_sink(bc_gen *g);                                 /* copies folded into the instructions they copy */
-uint32_t bc_renumber(bc_gen *g);                         /* temporaries renumbered by span; how many */
+uint32_t bc_renumber(bc_gen *g);
+void bc_dead_code(bc_gen *g);                            /* instructions whose results nothing reads */
+void bc_prune_constants(bc_gen *g);                      /* parameters and defs nothing reads */                         /* temporaries renumbered by span; how many */
 
 /* --- bc_intrin.c --- */
 bc_obj bc_intrinsic(bc_gen *g, const ir_expr *e);

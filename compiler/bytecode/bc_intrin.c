@@ -12,6 +12,7 @@ static bc_obj one(bc_gen *g, bc_val v) {
 }
 
 static bc_val keep(bc_val v) { v.own = false; return v; }
+static unsigned width_of(const hfx_type *t) { return t->kind == TY_SCALAR ? 1 : t->cols; }
 static unsigned nmax(bc_val a, bc_val b) { return a.n > b.n ? a.n : b.n; }
 
 bc_val bc_dot(bc_gen *g, bc_val a, bc_val b) {
@@ -397,6 +398,19 @@ static bc_obj sincos_intrin(bc_gen *g, const ir_expr *e) {
     return one(g, bc_constf(g, 0));
 }
 
+/* lerp(a, b, t) = a + t (b - a): two mads when b is a product (fxc's form; lrp takes two slots). */
+static bc_obj lerp(bc_gen *g, const ir_expr *e) {
+    const ir_expr *b = e->a[1];
+    bc_val a = bc_expr1(g, e->a[0]), d;
+    unsigned n = width_of(e->type);
+    if (b->kind == IE_BINARY && b->op == OP_MUL && b->type->kind != TY_MATRIX) {
+        bc_val x = bc_expr1(g, b->a[0]), y = bc_expr1(g, b->a[1]);
+        d = bc_op3(g, D3D9_MAD, n, x, y, bc_neg(keep(a)));
+    } else d = bc_op2(g, D3D9_ADD, n, bc_expr1(g, b), bc_neg(keep(a)));
+    bc_val t = bc_expr1(g, e->a[2]);
+    return one(g, bc_op3(g, D3D9_MAD, n, t, d, a));
+}
+
 typedef struct bc_intrin_row { int id; bc_intrin_fn fn; uint8_t ps_first; } bc_intrin_row;
 
 /* The column: intrinsic -> the function writing it (ps_first: the pixel model it needs). */
@@ -418,6 +432,7 @@ bc_obj bc_intrinsic(bc_gen *g, const ir_expr *e) {
     if (info && info->sig == SIG_TEX) return tex(g, e);
     switch (e->intrin) {
     case HFX_INTR_MUL: return mul(g, e);
+    case HFX_INTR_LERP: return lerp(g, e);
     case HFX_INTR_CLIP: return clip(g, e);
     case HFX_INTR_TRANSPOSE: return transpose(g, e);
     case HFX_INTR_SINCOS: return sincos_intrin(g, e);

@@ -86,9 +86,12 @@ static bool try_sink(bc_gen *g, uint32_t at) {
         d3d9_inst *in = &g->insts[i];
         if (in->op == D3D9_ENDIF || in->op == D3D9_ENDLOOP || in->op == D3D9_ENDREP || in->op == D3D9_ELSE) return false;
         bool w = writes(in, D3D9_REG_TEMP, T);
-        if (reads(in, D3D9_REG_TEMP, T) && !(w && n == 0 && false)) return false;
-        /* the target must be left alone while the writers run */
-        if ((writes(in, to, m->dst.num) && (in->dst.mask & target_mask)) || reads(in, to, m->dst.num)) return false;
+        if (reads(in, D3D9_REG_TEMP, T)) return false;
+        /* the target must be left alone while the writers run (the first writer may read it:
+         * it reads before it writes) */
+        bool completes = w && !(remaining & ~(unsigned)in->dst.mask);
+        if ((writes(in, to, m->dst.num) && !w && (in->dst.mask & target_mask)) || (reads(in, to, m->dst.num) && !completes))
+            return false;
         if (!w) continue;
         if ((in->dst.mask & ~mask) || !movable_writer(g, in, to) || n == 64) return false;
         if (in->dst.mask & remaining) writers[n++] = i;
@@ -152,4 +155,64 @@ uint32_t bc_renumber(bc_gen *g) {
             if (in->src[s].type == D3D9_REG_TEMP && map[in->src[s].num] >= 0) in->src[s].num = (uint16_t)map[in->src[s].num];
     }
     return count;
+}
+
+/* The source components an instruction reads (componentwise: those its mask writes). */
+static unsigned read_comps(const d3d9_inst *in, const d3d9_src *s) {
+    unsigned mask = 0;
+    const d3d9_op_info *info = d3d9_op_find(in->op);
+    bool componentwise = in->has_dst && info && !(info->flags & (D3D9_OPF_TEX | D3D9_OPF_SCALAR | D3D9_OPF_MATRIX)) &&
+                         in->op != D3D9_DP3 && in->op != D3D9_DP4 && in->op != D3D9_DP2ADD && in->op != D3D9_NRM &&
+                         in->op != D3D9_CRS && in->op != D3D9_SINCOS && in->op != D3D9_LIT && in->op != D3D9_TEXKILL;
+    for (unsigned c = 0; c < 4; c++)
+        if (!componentwise || (in->dst.mask >> c & 1)) mask |= 1u << (s->swizzle >> (2 * c) & 3);
+    return mask;
+}
+
+/* Instructions whose temporaries nothing reads afterwards are dropped (a variant's unused
+ * outputs, a select's unread side); the code has no loops, so one walk back suffices. */
+void bc_dead_code(bc_gen *g) {
+    unsigned live[BC_MAX_TEMPS] = {0};
+    uint32_t n = g->inst_count;
+    bool *drop = HFX_NEW_ARRAY(g->c->arena, bool, n ? n : 1);
+    for (uint32_t i = n; i-- > 0;) {
+        d3d9_inst *in = &g->insts[i];
+        bool temp = in->has_dst && in->op != D3D9_TEXKILL && in->dst.type == D3D9_REG_TEMP && in->dst.num < BC_MAX_TEMPS;
+        if (temp && !(live[in->dst.num] & in->dst.mask) && !(d3d9_op_find(in->op)->flags & D3D9_OPF_FLOW)) {
+            drop[i] = true;
+            continue;
+        }
+        if (temp && !in->predicated) live[in->dst.num] &= ~(unsigned)in->dst.mask;
+        for (unsigned k = 0; k < in->src_count; k++)
+            if (in->src[k].type == D3D9_REG_TEMP && in->src[k].num < BC_MAX_TEMPS) live[in->src[k].num] |= read_comps(in, &in->src[k]);
+        if (in->op == D3D9_TEXKILL && in->dst.type == D3D9_REG_TEMP && in->dst.num < BC_MAX_TEMPS) live[in->dst.num] |= 0xf;
+    }
+    uint32_t k = 0;
+    for (uint32_t i = 0; i < n; i++) if (!drop[i]) g->insts[k++] = g->insts[i];
+    g->inst_count = k;
+}
+
+/* Parameters and def registers the remaining code never reads leave the table. */
+void bc_prune_constants(bc_gen *g) {
+    bool read[BC_MAX_CONSTS] = {false}, relative = false;
+    for (uint32_t i = 0; i < g->inst_count; i++)
+        for (unsigned s = 0; s < g->insts[i].src_count; s++) {
+            const d3d9_src *x = &g->insts[i].src[s];
+            if (x->type == D3D9_REG_CONST && x->num < BC_MAX_CONSTS) read[x->num] = true;
+            relative |= x->type == D3D9_REG_CONST && x->relative;
+            if (x->type == D3D9_REG_SAMPLER && x->num < BC_MAX_CONSTS) read[x->num] |= false;
+        }
+    if (relative) return; /* c[a0.x + n] may read any of them */
+    uint32_t k = 0;
+    for (uint32_t i = 0; i < g->ctab_count; i++) {
+        const bc_ctab *c = &g->ctab[i];
+        bool used = c->set != D3D9_RS_FLOAT4;
+        for (unsigned r = c->reg; r < (unsigned)c->reg + c->count && r < BC_MAX_CONSTS && !used; r++) used = read[r];
+        if (used) g->ctab[k++] = *c;
+    }
+    g->ctab_count = k;
+    k = 0;
+    for (uint32_t i = 0; i < g->def_count; i++)
+        if (g->defs[i].num < BC_MAX_CONSTS && read[g->defs[i].num]) g->defs[k++] = g->defs[i];
+    g->def_count = k;
 }

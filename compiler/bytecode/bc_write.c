@@ -113,7 +113,10 @@ const uint32_t *bc_write(ir_ctx *c, const ir_shader *sh, const char *profile, ui
     bc_bind_globals(&g);
     if (!g.failed) gen_entry(&g);
     if (g.failed) return NULL;
+    bc_dead_code(&g);
     bc_sink(&g);
+    bc_dead_code(&g);
+    bc_prune_constants(&g);
     uint32_t temps = bc_renumber(&g);
     if (temps > bc_temp_limit(&g)) {
         hfx_error(c->diags, at, X_BC_TEMPS, "this shader needs %u temporary registers; %s has %u", temps, m->name,
