@@ -98,6 +98,12 @@ d3d9_inst *bc_emit(bc_gen *g, uint16_t op, const bc_val *dst, unsigned mask, con
     bool scalar = info && (info->flags & D3D9_OPF_SCALAR);
     bool dot = op == D3D9_DP3 || op == D3D9_DP4 || op == D3D9_DP2ADD || op == D3D9_TEX || op == D3D9_TEXLDL ||
                op == D3D9_TEXLDD || op == D3D9_NRM || op == D3D9_CRS || op == D3D9_TEXKILL;
+    for (unsigned i = 0; i < n && i < 4; i++)
+        if (src[i].type == BC_REG_NONE) {
+            bc_fail(g, g->loc, 4502, "invalid input semantic for %s: a value read here has no input register in the model",
+                    g->profile);
+            return in;
+        }
     for (unsigned i = 0; i < n && i < 4; i++) {
         bool rep = scalar || (op == D3D9_DP2ADD && i == 2);
         in->src[i] = src_of(&src[i], dot && !rep ? 0xf : mask, rep);

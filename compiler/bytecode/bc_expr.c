@@ -600,6 +600,7 @@ static bc_obj assign(bc_gen *g, const ir_expr *e) {
         const ir_expr *rhs = e->a[1];
         if (rhs->kind == IE_INTRIN && rhs->intrin == HFX_INTR_SATURATE) { sat = true; rhs = rhs->a[0]; }
         bc_obj src = bc_expr(g, rhs);
+        lval_of(g, lhs, &l); /* again: the right side may have added bindings (and moved them) */
         if (!src.cols) {
             assign_slots(g, &l, src, sat);
             return bc_expr(g, lhs);

@@ -125,8 +125,8 @@ static bc_val input_reg(bc_gen *g, const ir_leaf *l) {
         if (vface) v.sw[1] = v.sw[2] = v.sw[3] = 0;
         d.dst = (d3d9_dst){.type = D3D9_REG_MISC, .num = v.num, .mask = (uint8_t)(vpos ? 3 : 0xf)};
     } else if (g->stage == D3D9_PS && g->model < D3D9_SM(3, 0)) {
-        if (usage != 5 && usage != 10) {
-            bc_fail(g, l->loc, 4502, "invalid ps_2_0 input semantic '%s'", l->semantic);
+        if (usage != 5 && usage != 10) { /* fxc drops such an input unless it is read */
+            v.type = BC_REG_NONE;
             return v;
         }
         v = bc_reg(usage == 5 ? D3D9_REG_ADDR : D3D9_REG_INPUT, (uint16_t)index, n);
@@ -361,7 +361,7 @@ static bc_obj copy_obj(bc_gen *g, bc_obj o) {
 }
 
 /* The written variables' bindings that exist now (declared outside the if). */
-static uint32_t written(bc_gen *g, const ir_stmt *s, bc_binding ***out) {
+static uint32_t written(bc_gen *g, const ir_stmt *s, uint32_t **out) {
     ir_var_set w = {0};
     ir_note_writes(g->c, (ir_stmt *)s, &w);
     if (w.unknown || w.calls) {
@@ -369,11 +369,11 @@ static uint32_t written(bc_gen *g, const ir_stmt *s, bc_binding ***out) {
         for (uint32_t i = 0; i < g->bind_count; i++)
             if (g->binds[i].var->kind == IRV_PRIVATE) ir_var_set_add(g->c, &w, g->binds[i].var);
     }
-    bc_binding **b = HFX_NEW_ARRAY(g->c->arena, bc_binding *, w.count ? w.count : 1);
+    uint32_t *b = HFX_NEW_ARRAY(g->c->arena, uint32_t, w.count ? w.count : 1);
     uint32_t n = 0;
     for (uint32_t i = 0; i < w.count; i++) {
         bc_binding *x = bc_bind(g, w.vars[i]);
-        if (x && x->obj.count) b[n++] = x;
+        if (x && x->obj.count) b[n++] = (uint32_t)(x - g->binds); /* indexes: the array may move */
         else if (x && x->is_const) {
             bc_fail(g, s->loc, X_BC_LOOP, "unable to unroll loop: its counter changes under a condition");
             return 0;
@@ -383,7 +383,9 @@ static uint32_t written(bc_gen *g, const ir_stmt *s, bc_binding ***out) {
     return n;
 }
 
+/* The current condition and c (c is not consumed: the if still needs it). */
 static bc_val and_cond(bc_gen *g, bc_val c) {
+    c.own = false;
     if (!g->cond.n) return c;
     bc_val outer = g->cond;
     outer.own = false;
@@ -399,45 +401,48 @@ static void gen_if(bc_gen *g, const ir_stmt *s, const ir_stmt *rest, uint32_t re
         else gen_body(g, s->else_s);
         return;
     }
-    bc_binding **w;
-    uint32_t n = written(g, s, &w);
+    uint32_t *wi;
+    uint32_t n = written(g, s, &wi);
+#define w(i) (&g->binds[wi[i]])
     bc_obj *saved = HFX_NEW_ARRAY(g->c->arena, bc_obj, n ? n : 1), *then_v = HFX_NEW_ARRAY(g->c->arena, bc_obj, n ? n : 1);
     bc_val c = bc_own(g, bc_expr1(g, s->expr));
     bc_val outer = g->cond;
-    for (uint32_t i = 0; i < n; i++) saved[i] = copy_obj(g, w[i]->obj);
+    for (uint32_t i = 0; i < n; i++) saved[i] = copy_obj(g, w(i)->obj);
     g->cond = and_cond(g, c);
     bc_val cur = g->cond;
     gen_body(g, s->then_s);
     uint64_t *then_owned = HFX_NEW_ARRAY(g->c->arena, uint64_t, n ? n : 1);
     for (uint32_t i = 0; i < n; i++) {
-        then_v[i] = w[i]->obj;
-        then_owned[i] = w[i]->owned;
-        w[i]->obj = saved[i];
-        w[i]->owned = 0;
+        then_v[i] = w(i)->obj;
+        then_owned[i] = w(i)->owned;
+        w(i)->obj = saved[i];
+        w(i)->owned = 0;
         for (uint32_t k = 0; k < saved[i].count && k < 64; k++)
-            if (saved[i].slot[k].type == D3D9_REG_TEMP) w[i]->owned |= 1ull << k;
+            if (saved[i].slot[k].type == D3D9_REG_TEMP) w(i)->owned |= 1ull << k;
     }
-    bc_val nc = bc_not(g, c);
+    bc_val kc = c;
+    kc.own = false;
+    bc_val nc = bc_not(g, kc);
     g->cond = outer.n ? and_cond(g, nc) : nc;
     if (rest) gen_block_from(g, rest, rest_from);
     else gen_body(g, s->else_s);
     if (g->cond.num != nc.num || g->cond.type != nc.type) { bc_val x = g->cond; x.own = true; bc_release(g, x); }
     nc.own = true;
     bc_release(g, nc);
-    if (cur.num != c.num) { cur.own = true; bc_release(g, cur); }
+    if (cur.num != c.num || cur.type != c.type) { cur.own = true; bc_release(g, cur); }
     g->cond = outer;
     for (uint32_t i = 0; i < n && !g->failed; i++) {
-        bc_obj o = w[i]->obj;
+        bc_obj o = w(i)->obj;
         for (uint32_t j = 0; j < o.count; j++) {
             bc_val t = then_v[i].slot[j], e = o.slot[j];
             t.own = e.own = false;
             bc_val x = c;
             x.own = false;
             bc_val sel = bc_select(g, x, t, e);
-            if (!(w[i]->owned >> j & 1) || o.slot[j].type != D3D9_REG_TEMP) { /* a view: the select's temporary is the value */
+            if (!(w(i)->owned >> j & 1) || o.slot[j].type != D3D9_REG_TEMP) { /* a view: the select's temporary is the value */
                 o.slot[j] = sel;
                 o.slot[j].own = false;
-                w[i]->owned |= 1ull << j;
+                w(i)->owned |= 1ull << j;
             } else bc_store(g, o.slot[j], sel, false);
             t.own = j < 64 && (then_owned[i] >> j & 1);
             bc_release(g, t);
@@ -445,6 +450,7 @@ static void gen_if(bc_gen *g, const ir_stmt *s, const ir_stmt *rest, uint32_t re
     }
     bc_release(g, c);
 }
+#undef w
 
 /* A step of an unrolled loop's counter (i++, i += k, i = i + k); false when it is not one. */
 static bool const_step(bc_gen *g, const ir_expr *e) {

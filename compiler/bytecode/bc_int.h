@@ -11,6 +11,7 @@
 #include "bytecode/bytecode.h"
 #include "d3d9/d3d9.h"
 
+enum { BC_REG_NONE = 0xff }; /* an input the model has no register for: an error when read */
 enum { BC_MAX_TEMPS = 32, BC_MAX_CONSTS = 256, BC_MAX_VARS = 4096 };
 /* fxc's codes where it has one (X3511 loops it cannot unroll, X4505 temporaries, X5608 / X5609
  * instruction slots); X5006 what the writer does not handle, X5610 constant registers (hfx's own). */
