@@ -66,9 +66,11 @@ static d3d9_src src_of(const bc_val *v, unsigned mask, bool replicate) {
     if (v->rel) { s.rel_type = D3D9_REG_ADDR; s.rel_comp = 0; }
     uint8_t sw[4];
     unsigned k = 0;
+    bool identity = true;
+    for (unsigned i = 0; i < v->n; i++) identity &= v->sw[i] == i;
     for (unsigned c = 0; c < 4; c++) {
         unsigned i = replicate || v->n == 1 ? 0 : k < v->n ? k : v->n - 1u;
-        sw[c] = v->sw[i];
+        sw[c] = mask == 0xf && identity && k >= v->n && v->n > 1 ? (uint8_t)c : v->sw[i]; /* dp3 v0 reads v0.xyzw */
         if (mask & (1u << c)) k++;
     }
     /* components the mask skips: the replicated one (.x), else their own (.xyzw), as fxc's

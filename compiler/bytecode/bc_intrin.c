@@ -277,7 +277,7 @@ static bc_obj clip(bc_gen *g, const ir_expr *e) {
     }
     bc_emit(g, D3D9_TEXKILL, &k, 0xf, NULL, 0);
     bc_release(g, k);
-    return one(g, bc_constf(g, 0));
+    return one(g, bc_reg(BC_REG_NONE, 0, 1)); /* void */
 }
 
 /* --- mul --- */
@@ -395,7 +395,7 @@ static bc_obj sincos_intrin(bc_gen *g, const ir_expr *e) {
     bc_obj so = bc_expr(g, e->a[1]), co = bc_expr(g, e->a[2]);
     bc_store(g, so.slot[0], s, false);
     bc_store(g, co.slot[0], c, false);
-    return one(g, bc_constf(g, 0));
+    return one(g, bc_reg(BC_REG_NONE, 0, 1)); /* void */
 }
 
 /* lerp(a, b, t) = a + t (b - a): two mads when b is a product (fxc's form; lrp takes two slots). */

@@ -143,7 +143,7 @@ uint32_t bc_renumber(bc_gen *g) {
         if (pick < 0) break;
         done[pick] = true;
         unsigned n = 0;
-        while (n < count && busy_until[n] >= first[pick]) n++;
+        while (n < count && busy_until[n] > first[pick]) n++; /* read at i, written at i: one register */
         if (n == count) count++;
         map[pick] = (int)n;
         busy_until[n] = last[pick];
