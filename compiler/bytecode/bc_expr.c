@@ -221,7 +221,7 @@ static bc_val divide(bc_gen *g, bc_val a, bc_val b, const hfx_type *t) {
     return is_float(t) ? q : trunc_val(g, q);
 }
 
-static bc_val fmod_val(bc_gen *g, bc_val a, bc_val b) {
+bc_val bc_fmod(bc_gen *g, bc_val a, bc_val b) {
     /* fxc: q = a / b; r = frc(|q|) * sign(q) * b */
     bc_val bs = b;
     bs.own = false;
@@ -252,7 +252,7 @@ static bc_val binary_vals(bc_gen *g, hfx_op op, bc_val a, bc_val b, const hfx_ty
     case OP_SUB: return bc_op2(g, D3D9_ADD, n, a, bc_neg(b));
     case OP_MUL: return bc_op2(g, D3D9_MUL, n, a, b);
     case OP_DIV: return divide(g, a, b, t);
-    case OP_MOD: return fmod_val(g, a, b);
+    case OP_MOD: return bc_fmod(g, a, b);
     case OP_AND: return bc_op2(g, D3D9_MUL, n, a, b);
     case OP_OR: return bc_op2(g, D3D9_MAX, n, a, b);
     case OP_LT: case OP_GT: case OP_LE: case OP_GE: case OP_EQ: case OP_NE: return compare(g, op, a, b);
@@ -470,6 +470,19 @@ static bc_obj convert(bc_gen *g, const ir_expr *e) {
         }
         return o;
     }
+    if ((to->kind == TY_STRUCT || to->kind == TY_ARRAY) && from->kind == TY_SCALAR) { /* (VSOutput)0: every slot */
+        bc_val v = bc_expr1(g, e->a[0]);
+        if (v.own) v = bc_own(g, v);
+        bc_obj o = {HFX_NEW_ARRAY(g->c->arena, bc_val, bc_slots(to, false) ? bc_slots(to, false) : 1), bc_slots(to, false), false};
+        for (uint32_t k = 0; k < o.count; k++) {
+            o.slot[k] = v;
+            o.slot[k].own = false;
+            for (unsigned c = 1; c < 4; c++) o.slot[k].sw[c] = v.sw[0];
+            o.slot[k].n = (uint8_t)bc_slot_width(to, false, k);
+        }
+        if (v.own && o.count) o.slot[0].own = true; /* freed once, by whoever takes the first slot */
+        return o;
+    }
     if (to->kind == TY_STRUCT || to->kind == TY_ARRAY || to->kind == TY_MATRIX || from->kind == TY_MATRIX) {
         if (hfx_type_equal(to, from)) return bc_expr(g, e->a[0]);
         bc_fail(g, e->loc, X_BC_UNSUPPORTED, "the bytecode writer does not convert between these types yet");
@@ -511,6 +524,12 @@ static bool lval_of(bc_gen *g, const ir_expr *e, lval *l) {
     case IE_INDEX: {
         const hfx_type *t = e->a[0]->type;
         if (!bc_try_const(g, e->a[1], &k) || k < 0 || !lval_of(g, e->a[0], l) || l->n) return false;
+        if (t->kind == TY_VECTOR) { /* v[k]: v.x, v.y... */
+            if (k >= t->cols || l->count != 1) return false;
+            l->comps[0] = (uint8_t)k;
+            l->n = 1;
+            return true;
+        }
         if (t->kind == TY_ARRAY) {
             uint32_t per = bc_slots(t->elem, false);
             if (k >= t->array_len) return false;

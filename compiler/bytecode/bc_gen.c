@@ -23,16 +23,16 @@ uint32_t bc_slots(const hfx_type *t, bool cols) {
 }
 
 /* Components of slot k of type t. */
-static unsigned slot_width(const hfx_type *t, bool cols, uint32_t k) {
+unsigned bc_slot_width(const hfx_type *t, bool cols, uint32_t k) {
     switch (t->kind) {
     case TY_SCALAR: case TY_SAMPLER: return 1;
     case TY_VECTOR: return t->cols;
     case TY_MATRIX: return cols ? t->rows : t->cols;
-    case TY_ARRAY: return slot_width(t->elem, cols, k % bc_slots(t->elem, cols));
+    case TY_ARRAY: return bc_slot_width(t->elem, cols, k % bc_slots(t->elem, cols));
     case TY_STRUCT:
         for (uint32_t i = 0; i < t->st->field_count; i++) {
             uint32_t n = bc_slots(t->st->fields[i].type, cols);
-            if (k < n) return slot_width(t->st->fields[i].type, cols, k);
+            if (k < n) return bc_slot_width(t->st->fields[i].type, cols, k);
             k -= n;
         }
         return 4;
@@ -49,7 +49,7 @@ bc_obj bc_alloc_obj(bc_gen *g, const hfx_type *t) {
     bc_obj o = new_obj(g, bc_slots(t, false));
     for (uint32_t k = 0; k < o.count; k++) {
         int r = bc_temp(g);
-        o.slot[k] = bc_reg(D3D9_REG_TEMP, (uint16_t)(r < 0 ? 0 : r), slot_width(t, false, k));
+        o.slot[k] = bc_reg(D3D9_REG_TEMP, (uint16_t)(r < 0 ? 0 : r), bc_slot_width(t, false, k));
         o.slot[k].own = r >= 0;
     }
     return o;
@@ -189,7 +189,7 @@ static int leaf_slot(const ir_leaf *l, const hfx_type *t) {
 /* The registers of the entry's parameter p (or of its return value, p NULL). */
 static bc_obj interface_obj(bc_gen *g, const ir_leaf *l, int n, const ir_var *p, const hfx_type *t, bool out) {
     bc_obj o = new_obj(g, bc_slots(t, false));
-    for (uint32_t k = 0; k < o.count; k++) o.slot[k] = bc_reg(D3D9_REG_TEMP, 0, slot_width(t, false, k));
+    for (uint32_t k = 0; k < o.count; k++) o.slot[k] = bc_reg(D3D9_REG_TEMP, 0, bc_slot_width(t, false, k));
     for (int i = 0; i < n && !g->failed; i++) {
         if (l[i].root != p) continue;
         int k = leaf_slot(&l[i], t);
@@ -246,7 +246,7 @@ void bc_bind_globals(bc_gen *g) {
             }
             bc_obj o = new_obj(g, n);
             o.cols = cols;
-            for (uint32_t k = 0; k < n; k++) o.slot[k] = bc_reg(D3D9_REG_CONST, (uint16_t)(first + (int)k), slot_width(v->type, cols, k));
+            for (uint32_t k = 0; k < n; k++) o.slot[k] = bc_reg(D3D9_REG_CONST, (uint16_t)(first + (int)k), bc_slot_width(v->type, cols, k));
             add_bind(g, v, o);
             if (HFX_ARENA_GROW(g->c->arena, g->ctab, g->ctab_count, g->ctab_cap, 8))
                 g->ctab[g->ctab_count++] = (bc_ctab){v->name, v->type, D3D9_RS_FLOAT4, (uint16_t)first, (uint16_t)n, cols};
@@ -336,7 +336,7 @@ static void gen_decl(bc_gen *g, const ir_stmt *s) {
      * takes a temporary of its own when written */
     bc_obj o = new_obj(g, bc_slots(v->type, false));
     for (uint32_t k = 0; k < o.count; k++) {
-        unsigned n = slot_width(v->type, false, k);
+        unsigned n = bc_slot_width(v->type, false, k);
         o.slot[k] = bc_constf(g, 0);
         o.slot[k].n = (uint8_t)n;
         for (unsigned c = 1; c < 4; c++) o.slot[k].sw[c] = o.slot[k].sw[0];

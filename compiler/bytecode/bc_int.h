@@ -96,6 +96,7 @@ const uint32_t *bc_encode(bc_gen *g, uint32_t *count);
 /* --- bc_gen.c --- */
 bc_binding *bc_bind(bc_gen *g, const ir_var *v);           /* the variable's storage (made on first use), or NULL */
 uint32_t bc_slots(const hfx_type *t, bool cols);
+unsigned bc_slot_width(const hfx_type *t, bool cols, uint32_t k); /* components of slot k */
 bc_obj bc_alloc_obj(bc_gen *g, const hfx_type *t);         /* temporaries for a value of type t (rows) */
 void bc_assign(bc_gen *g, bc_obj dst, bc_obj src, const hfx_type *t, bool sat);
 void bc_call(bc_gen *g, const ir_expr *e, bc_obj *out);
@@ -132,5 +133,6 @@ void bc_prune_constants(bc_gen *g);                      /* parameters and defs 
 bc_obj bc_intrinsic(bc_gen *g, const ir_expr *e);
 bc_val bc_dot(bc_gen *g, bc_val a, bc_val b);
 bc_val bc_floor(bc_gen *g, bc_val x);
+bc_val bc_fmod(bc_gen *g, bc_val a, bc_val b);            /* fxc's: frc(|a / b|) with a / b's sign, times b */
 
 #endif

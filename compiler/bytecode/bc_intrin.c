@@ -183,6 +183,7 @@ static bc_val sincos_val(bc_gen *g, bc_val x, int which) {
     d.own = r >= 0;
     return d;
 }
+static bc_val i_fmod(bc_gen *g, const ir_expr *e, bc_val *a) { (void)e; return bc_fmod(g, a[0], a[1]); }
 static bc_val i_sin(bc_gen *g, const ir_expr *e, bc_val *a) { (void)e; return sincos_val(g, a[0], 1); }
 static bc_val i_cos(bc_gen *g, const ir_expr *e, bc_val *a) { (void)e; return sincos_val(g, a[0], 0); }
 static bc_val i_radians(bc_gen *g, const ir_expr *e, bc_val *a) {
@@ -424,7 +425,7 @@ static const bc_intrin_row rows[] = {
     {HFX_INTR_REFLECT, i_reflect, 0}, {HFX_INTR_CROSS, i_cross, 0}, {HFX_INTR_STEP, i_step, 0},
     {HFX_INTR_SMOOTHSTEP, i_smoothstep, 0}, {HFX_INTR_SIN, i_sin, 0}, {HFX_INTR_COS, i_cos, 0},
     {HFX_INTR_RADIANS, i_radians, 0}, {HFX_INTR_DEGREES, i_radians, 0}, {HFX_INTR_DDX, i_ddx, D3D9_SM(2, 1)},
-    {HFX_INTR_DDY, i_ddx, D3D9_SM(2, 1)}, {HFX_INTR_ANY, i_any, 0}, {HFX_INTR_SIGN, i_sign, 0},
+    {HFX_INTR_DDY, i_ddx, D3D9_SM(2, 1)}, {HFX_INTR_FMOD, i_fmod, 0}, {HFX_INTR_ANY, i_any, 0}, {HFX_INTR_SIGN, i_sign, 0},
 };
 
 bc_obj bc_intrinsic(bc_gen *g, const ir_expr *e) {
