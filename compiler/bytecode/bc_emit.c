@@ -17,7 +17,7 @@ void bc_fail(bc_gen *g, hfx_loc loc, unsigned code, const char *fmt, ...) {
 
 unsigned bc_temp_limit(const bc_gen *g) {
     if (g->model >= D3D9_SM(3, 0)) return 32;
-    if (g->model == D3D9_SM(2, 1)) return g->stage == D3D9_VS ? 13 : 32; /* vs_2_a: 13; ps_2_a / 2_b: 22 / 32 */
+    if (g->model == D3D9_SM(2, 1)) return g->stage == D3D9_VS ? 13 : strcmp(g->profile, "ps_2_a") == 0 ? 22 : 32;
     return 12;
 }
 
