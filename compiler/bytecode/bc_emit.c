@@ -115,7 +115,47 @@ d3d9_inst *bc_emit(bc_gen *g, uint16_t op, const bc_val *dst, unsigned mask, con
     return in;
 }
 
+bool bc_is_zero(const bc_gen *g, const bc_val *v) {
+    if (v->type != D3D9_REG_CONST || v->rel) return false;
+    for (uint32_t d = 0; d < g->def_count; d++)
+        if (g->defs[d].num == v->num) {
+            for (unsigned i = 0; i < v->n; i++) if (g->defs[d].v[v->sw[i]] != 0) return false;
+            return true;
+        }
+    return false;
+}
+
+static bc_val widened(bc_val v, unsigned n) {
+    if (v.n == 1) for (unsigned c = 1; c < 4; c++) v.sw[c] = v.sw[0];
+    v.n = (uint8_t)n;
+    return v;
+}
+
+/* x * 0, dot(x, 0), x + 0, 0 * y + z: no instruction (fxc folds them as well). */
+static bool folded(bc_gen *g, uint16_t op, unsigned n, const bc_val *src, unsigned count, bc_val *out) {
+    int keep = -1;
+    bool zero = false;
+    switch (op) {
+    case D3D9_MUL: case D3D9_DP3: case D3D9_DP4:
+        zero = bc_is_zero(g, &src[0]) || bc_is_zero(g, &src[1]);
+        break;
+    case D3D9_DP2ADD: case D3D9_MAD:
+        if (bc_is_zero(g, &src[0]) || bc_is_zero(g, &src[1])) keep = 2;
+        break;
+    case D3D9_ADD:
+        keep = bc_is_zero(g, &src[0]) ? 1 : bc_is_zero(g, &src[1]) ? 0 : -1;
+        break;
+    default: break;
+    }
+    if (!zero && keep < 0) return false;
+    for (unsigned i = 0; i < count; i++) if ((int)i != keep) bc_release(g, src[i]);
+    *out = zero ? widened(bc_constf(g, 0), n) : widened(src[keep], n);
+    return true;
+}
+
 bc_val bc_op(bc_gen *g, uint16_t op, unsigned n, const bc_val *src, unsigned count) {
+    bc_val f;
+    if (folded(g, op, n, src, count, &f)) return f;
     int r = bc_temp(g);
     bc_val d = bc_reg(D3D9_REG_TEMP, (uint16_t)(r < 0 ? 0 : r), n);
     d.own = r >= 0;

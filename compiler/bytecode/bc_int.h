@@ -88,6 +88,7 @@ bc_val bc_op2(bc_gen *g, uint16_t op, unsigned n, bc_val a, bc_val b);
 bc_val bc_op3(bc_gen *g, uint16_t op, unsigned n, bc_val a, bc_val b, bc_val c);
 bc_val bc_const(bc_gen *g, const float *v, unsigned n);    /* a def register's components */
 bc_val bc_constf(bc_gen *g, float v);
+bool bc_is_zero(const bc_gen *g, const bc_val *v);        /* a def register's zeros */
 /* Writes value v into the components of target t (t.sw: the register component of each). */
 void bc_store(bc_gen *g, bc_val t, bc_val v, bool sat);
 bool bc_reserve_consts(bc_gen *g, uint16_t first, uint16_t count);

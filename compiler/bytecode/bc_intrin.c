@@ -87,7 +87,7 @@ static bc_val i_saturate(bc_gen *g, const ir_expr *e, bc_val *a) {
         return v;
     }
     bc_val r = bc_op1(g, D3D9_MOV, v.n, v);
-    g->insts[g->inst_count - 1].dst.mods |= D3D9_DMOD_SAT;
+    if (g->inst_count) g->insts[g->inst_count - 1].dst.mods |= D3D9_DMOD_SAT;
     return r;
 }
 static bc_val i_normalize(bc_gen *g, const ir_expr *e, bc_val *a) {
@@ -144,7 +144,7 @@ static bc_val i_smoothstep(bc_gen *g, const ir_expr *e, bc_val *a) { /* t = satu
     bc_val rw = bc_per_comp(g, D3D9_RCP, w, NULL);
     bc_val d = bc_op2(g, D3D9_ADD, n, a[2], bc_neg(a[0]));
     bc_val t = bc_op2(g, D3D9_MUL, n, d, rw);
-    g->insts[g->inst_count - 1].dst.mods |= D3D9_DMOD_SAT;
+    if (t.own && g->inst_count && g->insts[g->inst_count - 1].dst.num == t.num) g->insts[g->inst_count - 1].dst.mods |= D3D9_DMOD_SAT;
     bc_val k = bc_op3(g, D3D9_MAD, n, keep(t), bc_constf(g, -2), bc_constf(g, 3));
     bc_val t2 = bc_op2(g, D3D9_MUL, n, keep(t), t);
     return bc_op2(g, D3D9_MUL, n, t2, k);

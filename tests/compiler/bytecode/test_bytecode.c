@@ -108,13 +108,12 @@ static void ps_3_0_reflect_pow_select(void) {
             "    mad r2.xyz, r0, -r3.x, -c0\n"      /* i - 2 dot(N, i) N */
             "    dp3_sat r3.x, r2, v1\n"
             "    pow r2.x, r3.x, c1.x\n"
-            "    add r3.x, c2.x, -r1.x\n"           /* d > 0 is 0 - d < 0: */
-            "    cmp r0.x, r3.x, c2.x, c2.y\n"      /* (0 - d >= 0) ? 0 : 1 */
-            "    cmp r0.x, -r0.x, c2.x, r2.x\n"     /* the select: (-c >= 0) ? 0 : s */
-            "    mov r0.y, r1.x\n"
-            "    mov r0.zw, c2.xyxy\n"
-            "    mov oC0, r0\n"
-            "\n// approximately 17 instruction slots used (0 texture, 17 arithmetic)\n");
+            "    cmp r3.x, -r1.x, c2.x, c2.y\n"     /* d > 0 is 0 - d < 0 (0 - d folded to -d): (-d >= 0) ? 0 : 1 */
+            "    cmp r3.x, -r3.x, c2.x, r2.x\n"     /* the select: (-c >= 0) ? 0 : s */
+            "    mov r3.y, r1.x\n"
+            "    mov r3.zw, c2.xyxy\n"
+            "    mov oC0, r3\n"
+            "\n// approximately 16 instruction slots used (0 texture, 16 arithmetic)\n");
 }
 
 static void refused(const char *src, const char *profile, const char *message) {
