@@ -21,9 +21,13 @@ unsigned bc_temp_limit(const bc_gen *g) {
     return 12;
 }
 
+/* Round robin: a register freed long ago rather than just now, so that copies can still be
+ * sunk into their writers (bc_peep.c); bc_renumber gives the final, fewest numbers. */
 int bc_temp(bc_gen *g) {
-    for (unsigned r = 0; r < BC_MAX_TEMPS; r++) {
+    for (unsigned k = 0; k < BC_MAX_TEMPS; k++) {
+        unsigned r = (g->next_temp + k) % BC_MAX_TEMPS;
         if (g->temps_used & (1u << r)) continue;
+        g->next_temp = r + 1;
 
         g->temps_used |= 1u << r;
         if (r + 1 > g->temps_peak) g->temps_peak = r + 1;
@@ -114,6 +118,8 @@ d3d9_inst *bc_emit(bc_gen *g, uint16_t op, const bc_val *dst, unsigned mask, con
     g->last_fresh = -1;
     return in;
 }
+
+bool bc_can_sat(const bc_gen *g) { return g->stage == D3D9_PS || g->model >= D3D9_SM(3, 0); }
 
 bool bc_is_zero(const bc_gen *g, const bc_val *v) {
     if (v->type != D3D9_REG_CONST || v->rel) return false;

@@ -617,7 +617,7 @@ static bc_obj assign(bc_gen *g, const ir_expr *e) {
     lval l;
     if (e->op == OP_NONE && lval_of(g, lhs, &l) && (lhs->type->kind != TY_MATRIX || !bc_expr_is_cols(g, e->a[1]))) {
         const ir_expr *rhs = e->a[1];
-        if (rhs->kind == IE_INTRIN && rhs->intrin == HFX_INTR_SATURATE) { sat = true; rhs = rhs->a[0]; }
+        if (rhs->kind == IE_INTRIN && rhs->intrin == HFX_INTR_SATURATE && bc_can_sat(g)) { sat = true; rhs = rhs->a[0]; }
         bc_obj src = bc_expr(g, rhs);
         lval_of(g, lhs, &l); /* again: the right side may have added bindings (and moved them) */
         if (!src.cols) {
@@ -634,7 +634,7 @@ static bc_obj assign(bc_gen *g, const ir_expr *e) {
         for (uint32_t k = 0; k < l.count; k++) own_slot(g, l.b, l.first + k, true);
     bc_obj dst = bc_expr(g, lhs);
     const ir_expr *rhs = e->a[1];
-    if (e->op == OP_NONE && rhs->kind == IE_INTRIN && rhs->intrin == HFX_INTR_SATURATE) { sat = true; rhs = rhs->a[0]; }
+    if (e->op == OP_NONE && rhs->kind == IE_INTRIN && rhs->intrin == HFX_INTR_SATURATE && bc_can_sat(g)) { sat = true; rhs = rhs->a[0]; }
     bc_obj src;
     if (e->op != OP_NONE && e->type->kind == TY_MATRIX) { /* by rows of the variable */
         bc_obj r = bc_expr(g, rhs);

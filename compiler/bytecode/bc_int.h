@@ -55,6 +55,7 @@ typedef struct bc_gen {
     d3d9_inst *insts; uint32_t inst_count, inst_cap;
     uint32_t temps_used;      /* bitmask of live r registers */
     uint32_t temps_peak;
+    unsigned next_temp;       /* where bc_temp looks first */
     uint8_t cused[BC_MAX_CONSTS];  /* c registers taken by parameters or defs */
     uint32_t max_consts;
     d3d9_inst *dcls; uint32_t dcl_count, dcl_cap; /* dcl instructions, written before the code */
@@ -88,6 +89,7 @@ bc_val bc_op2(bc_gen *g, uint16_t op, unsigned n, bc_val a, bc_val b);
 bc_val bc_op3(bc_gen *g, uint16_t op, unsigned n, bc_val a, bc_val b, bc_val c);
 bc_val bc_const(bc_gen *g, const float *v, unsigned n);    /* a def register's components */
 bc_val bc_constf(bc_gen *g, float v);
+bool bc_can_sat(const bc_gen *g);                         /* the _sat modifier: pixel shaders and vs_3_0 */
 bool bc_is_zero(const bc_gen *g, const bc_val *v);        /* a def register's zeros */
 /* Writes value v into the components of target t (t.sw: the register component of each). */
 void bc_store(bc_gen *g, bc_val t, bc_val v, bool sat);

@@ -81,6 +81,10 @@ static bc_val i_pow(bc_gen *g, const ir_expr *e, bc_val *a) {
 static bc_val i_saturate(bc_gen *g, const ir_expr *e, bc_val *a) {
     (void)e;
     bc_val v = a[0];
+    if (!bc_can_sat(g)) { /* vs_2_x has no _sat: max then min, as fxc writes it */
+        bc_val m = bc_op2(g, D3D9_MAX, v.n, v, bc_constf(g, 0));
+        return bc_op2(g, D3D9_MIN, m.n, m, bc_constf(g, 1));
+    }
     if (v.own && g->last_fresh == (int)g->inst_count - 1 && g->last_fresh >= 0 &&
         g->insts[g->last_fresh].dst.num == v.num && g->insts[g->last_fresh].dst.type == D3D9_REG_TEMP) {
         g->insts[g->last_fresh].dst.mods |= D3D9_DMOD_SAT;
@@ -137,6 +141,7 @@ static bc_val i_step(bc_gen *g, const ir_expr *e, bc_val *a) { /* x >= a */
     bc_val d = bc_op2(g, D3D9_ADD, n, a[1], bc_neg(a[0]));
     return bc_op3(g, D3D9_CMP, n, d, bc_constf(g, 1), bc_constf(g, 0));
 }
+static bc_val i_saturate(bc_gen *g, const ir_expr *e, bc_val *a);
 static bc_val i_smoothstep(bc_gen *g, const ir_expr *e, bc_val *a) { /* t = saturate((x - a) / (b - a)); t * t * (3 - 2 t) */
     (void)e;
     unsigned n = nmax(a[0], a[1]) > a[2].n ? nmax(a[0], a[1]) : a[2].n;
@@ -144,7 +149,8 @@ static bc_val i_smoothstep(bc_gen *g, const ir_expr *e, bc_val *a) { /* t = satu
     bc_val rw = bc_per_comp(g, D3D9_RCP, w, NULL);
     bc_val d = bc_op2(g, D3D9_ADD, n, a[2], bc_neg(a[0]));
     bc_val t = bc_op2(g, D3D9_MUL, n, d, rw);
-    if (t.own && g->inst_count && g->insts[g->inst_count - 1].dst.num == t.num) g->insts[g->inst_count - 1].dst.mods |= D3D9_DMOD_SAT;
+    if (!bc_can_sat(g)) t = i_saturate(g, e, &t);
+    else if (t.own && g->inst_count && g->insts[g->inst_count - 1].dst.num == t.num) g->insts[g->inst_count - 1].dst.mods |= D3D9_DMOD_SAT;
     bc_val k = bc_op3(g, D3D9_MAD, n, keep(t), bc_constf(g, -2), bc_constf(g, 3));
     bc_val t2 = bc_op2(g, D3D9_MUL, n, keep(t), t);
     return bc_op2(g, D3D9_MUL, n, t2, k);

@@ -118,41 +118,70 @@ void bc_sink(bc_gen *g) {
         if (!try_sink(g, i)) i++;
 }
 
-/* Temporaries renumbered by their spans (first to last mention; the code has no loops): sinking
- * leaves some unused, and the allocator's numbers are not the fewest. Returns how many remain. */
+static unsigned read_comps(const d3d9_inst *in, const d3d9_src *s);
+
+/* Temporaries renumbered by the values they hold: a register's value ends where none of its
+ * components is read again (backward liveness; the code has no loops), the next write starts
+ * another; values are then given the fewest registers, first come first served. */
 uint32_t bc_renumber(bc_gen *g) {
-    int32_t first[BC_MAX_TEMPS], last[BC_MAX_TEMPS];
-    for (unsigned r = 0; r < BC_MAX_TEMPS; r++) first[r] = last[r] = -1;
-    for (uint32_t i = 0; i < g->inst_count; i++) {
+    uint32_t n = g->inst_count;
+    uint8_t (*live_after)[BC_MAX_TEMPS] = (uint8_t (*)[BC_MAX_TEMPS])hfx_arena_alloc_raw(g->c->arena, (size_t)(n ? n : 1) * BC_MAX_TEMPS);
+    unsigned live[BC_MAX_TEMPS] = {0};
+    for (uint32_t i = n; i-- > 0;) {
         const d3d9_inst *in = &g->insts[i];
-        for (unsigned r = 0; r < BC_MAX_TEMPS; r++)
-            if (reads(in, D3D9_REG_TEMP, r) || writes(in, D3D9_REG_TEMP, r)) {
-                if (first[r] < 0) first[r] = (int32_t)i;
-                last[r] = (int32_t)i;
-            }
+        for (unsigned r = 0; r < BC_MAX_TEMPS; r++) live_after[i][r] = (uint8_t)live[r];
+        if (writes(in, D3D9_REG_TEMP, in->dst.num) && in->dst.type == D3D9_REG_TEMP && in->dst.num < BC_MAX_TEMPS && !in->predicated)
+            live[in->dst.num] &= ~(unsigned)in->dst.mask;
+        for (unsigned k = 0; k < in->src_count; k++)
+            if (in->src[k].type == D3D9_REG_TEMP && in->src[k].num < BC_MAX_TEMPS) live[in->src[k].num] |= read_comps(in, &in->src[k]);
+        if (in->op == D3D9_TEXKILL && in->dst.type == D3D9_REG_TEMP && in->dst.num < BC_MAX_TEMPS) live[in->dst.num] |= 0xf;
     }
-    int map[BC_MAX_TEMPS];
+    enum { MAX_SEGS = 4096 };
+    int32_t open[BC_MAX_TEMPS];
+    for (unsigned r = 0; r < BC_MAX_TEMPS; r++) open[r] = -1;
+    int32_t *seg_start = HFX_NEW_ARRAY(g->c->arena, int32_t, MAX_SEGS), *seg_end = HFX_NEW_ARRAY(g->c->arena, int32_t, MAX_SEGS);
+    int32_t *dst_seg = HFX_NEW_ARRAY(g->c->arena, int32_t, n ? n : 1), *src_seg = HFX_NEW_ARRAY(g->c->arena, int32_t, (n ? n : 1) * 4);
+    uint32_t segs = 0;
+    for (uint32_t i = 0; i < n; i++) {
+        const d3d9_inst *in = &g->insts[i];
+        dst_seg[i] = -1;
+        for (unsigned k = 0; k < 4; k++) src_seg[i * 4 + k] = -1;
+        for (unsigned r = 0; r < BC_MAX_TEMPS; r++) {
+            bool dst = in->has_dst && in->dst.type == D3D9_REG_TEMP && in->dst.num == r;
+            bool src = false;
+            for (unsigned k = 0; k < in->src_count; k++) src |= in->src[k].type == D3D9_REG_TEMP && in->src[k].num == r;
+            if (!dst && !src) continue;
+            if (open[r] < 0) {
+                if (segs == MAX_SEGS) return BC_MAX_TEMPS + 1;
+                open[r] = (int32_t)segs;
+                seg_start[segs] = (int32_t)i;
+                segs++;
+            }
+            seg_end[open[r]] = (int32_t)i;
+            if (dst) dst_seg[i] = open[r];
+            for (unsigned k = 0; k < in->src_count; k++)
+                if (in->src[k].type == D3D9_REG_TEMP && in->src[k].num == r) src_seg[i * 4 + k] = open[r];
+            if (!live_after[i][r]) open[r] = -1;
+        }
+    }
+    int32_t *color = HFX_NEW_ARRAY(g->c->arena, int32_t, segs ? segs : 1);
     int32_t busy_until[BC_MAX_TEMPS];
     uint32_t count = 0;
-    bool done[BC_MAX_TEMPS] = {false};
-    for (unsigned k = 0; k < BC_MAX_TEMPS; k++) { map[k] = -1; busy_until[k] = -1; }
-    for (;;) { /* by first mention */
-        int pick = -1;
-        for (unsigned r = 0; r < BC_MAX_TEMPS; r++)
-            if (first[r] >= 0 && !done[r] && (pick < 0 || first[r] < first[pick])) pick = (int)r;
-        if (pick < 0) break;
-        done[pick] = true;
-        unsigned n = 0;
-        while (n < count && busy_until[n] > first[pick]) n++; /* read at i, written at i: one register */
-        if (n == count) count++;
-        map[pick] = (int)n;
-        busy_until[n] = last[pick];
+    for (uint32_t s = 0; s < segs; s++) { /* segments are numbered by start */
+        unsigned c = 0;
+        while (c < count && busy_until[c] > seg_start[s]) c++; /* read at i, written at i: one register */
+        if (c == count) {
+            if (count == BC_MAX_TEMPS) return BC_MAX_TEMPS + 1;
+            count++;
+        }
+        color[s] = (int32_t)c;
+        busy_until[c] = seg_end[s];
     }
-    for (uint32_t i = 0; i < g->inst_count; i++) {
+    for (uint32_t i = 0; i < n; i++) {
         d3d9_inst *in = &g->insts[i];
-        if (in->has_dst && in->dst.type == D3D9_REG_TEMP && map[in->dst.num] >= 0) in->dst.num = (uint16_t)map[in->dst.num];
-        for (unsigned s = 0; s < in->src_count; s++)
-            if (in->src[s].type == D3D9_REG_TEMP && map[in->src[s].num] >= 0) in->src[s].num = (uint16_t)map[in->src[s].num];
+        if (dst_seg[i] >= 0) in->dst.num = (uint16_t)color[dst_seg[i]];
+        for (unsigned k = 0; k < in->src_count; k++)
+            if (src_seg[i * 4 + k] >= 0) in->src[k].num = (uint16_t)color[src_seg[i * 4 + k]];
     }
     return count;
 }

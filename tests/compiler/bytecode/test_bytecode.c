@@ -80,10 +80,10 @@ static void ps_2_0_clip_and_saturate(void) {
             "    dcl_2d s0\n"
             "    texld r0, t0, s0\n"
             "    add r1.x, r0.w, -c1.y\n"   /* t.a - 0.5 */
-            "    mov r2, r1.x\n"            /* texkill tests x, y and z of a register */
-            "    texkill r2\n"
-            "    mad_sat r1, r0, v0, c0\n"
-            "    mov oC0, r1\n"
+            "    mov r1, r1.x\n"            /* texkill tests x, y and z of a register */
+            "    texkill r1\n"
+            "    mad_sat r0, r0, v0, c0\n"  /* reads t, then writes its register */
+            "    mov oC0, r0\n"
             "\n// approximately 6 instruction slots used (2 texture, 4 arithmetic)\n");
 }
 
@@ -104,16 +104,15 @@ static void ps_3_0_reflect_pow_select(void) {
             "    nrm r0.xyz, v0\n"
             "    dp3 r1.x, r0, c0\n"                /* d */
             "    dp3 r2.x, r0, -c0\n"               /* reflect(i = -L, N): dot(N, i) */
-            "    add r3.x, r2.x, r2.x\n"            /* 2 dot(N, i) */
-            "    mad r2.xyz, r0, -r3.x, -c0\n"      /* i - 2 dot(N, i) N */
-            "    dp3_sat r3.x, r2, v1\n"
-            "    pow r2.x, r3.x, c1.x\n"
-            "    cmp r3.x, -r1.x, c2.x, c2.y\n"     /* d > 0 is 0 - d < 0 (0 - d folded to -d): (-d >= 0) ? 0 : 1 */
-            "    cmp r3.x, -r3.x, c2.x, r2.x\n"     /* the select: (-c >= 0) ? 0 : s */
-            "    mov r3.y, r1.x\n"
-            "    mov r3.zw, c2.xyxy\n"
-            "    mov oC0, r3\n"
-            "\n// approximately 16 instruction slots used (0 texture, 16 arithmetic)\n");
+            "    add r2.x, r2.x, r2.x\n"            /* 2 dot(N, i) */
+            "    mad r0.xyz, r0, -r2.x, -c0\n"      /* i - 2 dot(N, i) N, over N (read first) */
+            "    dp3_sat r0.x, r0, v1\n"
+            "    pow r0.x, r0.x, c1.x\n"
+            "    cmp r2.x, -r1.x, c2.x, c2.y\n"     /* d > 0 is 0 - d < 0 (0 - d folded to -d): (-d >= 0) ? 0 : 1 */
+            "    cmp oC0.x, -r2.x, c2.x, r0.x\n"    /* the select: (-c >= 0) ? 0 : s */
+            "    mov oC0.y, r1.x\n"
+            "    mov oC0.zw, c2.xyxy\n"
+            "\n// approximately 15 instruction slots used (0 texture, 15 arithmetic)\n");
 }
 
 static void refused(const char *src, const char *profile, const char *message) {
