@@ -49,7 +49,7 @@ bool bc_try_const(bc_gen *g, const ir_expr *e, double *out) {
     }
     case IE_CONVERT:
         if (e->type->kind != TY_SCALAR || !bc_try_const(g, e->a[0], &a)) return false;
-        *out = e->type->base == B_BOOL ? a != 0 : e->type->base == B_INT || e->type->base == B_UINT ? (double)(int64_t)a : a;
+        *out = e->type->base == B_BOOL ? a != 0 : e->type->base == B_INT || e->type->base == B_UINT ? (double)hfx_ev_int(a) : a;
         return true;
     case IE_UNARY:
         if (!bc_try_const(g, e->a[0], &a)) return false;
@@ -66,7 +66,7 @@ bool bc_try_const(bc_gen *g, const ir_expr *e, double *out) {
         case OP_DIV:
             if (b == 0) return false;
             *out = a / b;
-            if (e->type->base == B_INT || e->type->base == B_UINT) *out = (double)(int64_t)*out;
+            if (e->type->base == B_INT || e->type->base == B_UINT) *out = (double)hfx_ev_int(*out);
             break;
         case OP_LT: *out = a < b; break;
         case OP_GT: *out = a > b; break;
@@ -351,14 +351,14 @@ static bc_obj index_of(bc_gen *g, const ir_expr *e) {
     if (t->kind == TY_ARRAY) {
         uint32_t per = bc_slots(t->elem, o.cols);
         if (!bc_try_const(g, e->a[1], &k)) return relative(g, o, e->a[1], per);
-        uint32_t i = k < 0 || k >= t->array_len ? 0 : (uint32_t)k;
+        uint32_t i = k < 0 || k >= t->array_len ? 0 : hfx_ev_uint(k);
         return sub(g, o, i * per, per);
     }
     if (!bc_try_const(g, e->a[1], &k)) {
         bc_fail(g, e->loc, X_BC_UNSUPPORTED, "the bytecode writer does not index a vector or matrix by a computed index yet");
         return o;
     }
-    unsigned i = k < 0 ? 0 : (unsigned)k;
+    unsigned i = k < 0 ? 0 : hfx_ev_uint(k);
     if (t->kind == TY_MATRIX && !o.cols) return sub(g, o, i < o.count ? i : 0, 1);
     if (t->kind == TY_MATRIX) return one(g, bc_matrix_row(g, o, t, i < t->rows ? i : 0));
     bc_val v = o.slot[0];
@@ -526,19 +526,19 @@ static bool lval_of(bc_gen *g, const ir_expr *e, lval *l) {
         if (!bc_try_const(g, e->a[1], &k) || k < 0 || !lval_of(g, e->a[0], l) || l->n) return false;
         if (t->kind == TY_VECTOR) { /* v[k]: v.x, v.y... */
             if (k >= t->cols || l->count != 1) return false;
-            l->comps[0] = (uint8_t)k;
+            l->comps[0] = (uint8_t)hfx_ev_uint(k);
             l->n = 1;
             return true;
         }
         if (t->kind == TY_ARRAY) {
             uint32_t per = bc_slots(t->elem, false);
             if (k >= t->array_len) return false;
-            l->first += (uint32_t)k * per;
+            l->first += hfx_ev_uint(k) * per;
             l->count = per;
             return true;
         }
         if (t->kind != TY_MATRIX || k >= t->rows) return false;
-        l->first += (uint32_t)k;
+        l->first += hfx_ev_uint(k);
         l->count = 1;
         return true;
     }
