@@ -11,6 +11,7 @@ void hfx_fx_program_clear(hfx_fx_program *p) {
     if (!p) return;
     for (int s = 0; s < HFX_STAGE_COUNT; s++)
         for (int t = 0; t < HFX_TARGET_COUNT; t++) free(p->code[s][t].data);
+    for (int s = 0; s < HFX_STAGE_COUNT; s++) free(p->d3d9[s].data);
     for (uint32_t a = 0; a < p->attribute_count; a++) {
         free(p->attributes[a].semantic);
         free(p->attributes[a].glsl_name);
@@ -33,6 +34,7 @@ void hfx_fx_effect_free(hfx_fx_effect *fx) {
         free(fx->params[i].glsl_name);
         free(fx->params[i].string);
         free(fx->params[i].file);
+        free(fx->params[i].d3d9.data);
     }
     free(fx->params);
     free(fx->values);

@@ -33,6 +33,11 @@ typedef struct hfx_fx_annotation {
     char *string;          /* for strings */
 } hfx_fx_annotation;
 
+typedef struct hfx_fx_code {
+    char *data;             /* GLSL text (NUL-terminated), SPIR-V words or Direct3D 9 bytecode */
+    size_t size;            /* bytes, without the NUL */
+} hfx_fx_code;
+
 enum { /* hfx_fx_param.flags */
     HFX_FX_PARAM_SHARED = 1u << 0,
     HFX_FX_PARAM_ROW_MAJOR = 1u << 1,
@@ -56,6 +61,8 @@ typedef struct hfx_fx_param {
     char *string;          /* a string parameter's initial value (`string s = "..."`); NULL otherwise */
     char *file;            /* top level: the file that declares it, as the #include named it; NULL when unknown */
     uint32_t line, col;    /* ... and where (the name); 0 when unknown (a .hfxo from before they were kept) */
+    hfx_fx_code d3d9;      /* a vertexshader / pixelshader leaf: its Direct3D 9 bytecode as an fx_2_0
+                            * binary carried it (what hfx's fx_2_0 writer writes back); size 0 when unknown */
 } hfx_fx_param;
 
 /* How a state's value is given. */
@@ -77,6 +84,8 @@ typedef struct hfx_fx_state {
     float f[4];
     uint32_t ref;          /* param index for PARAM, program index for PROGRAM, first word for EXPR */
     uint32_t line, col;    /* where the state was written, for load-time reports */
+    uint32_t source;       /* VertexShader / PixelShader: 1 + the shader parameter the value names (the array an
+                            * EXPR picks from, `= <vs>`); 0 when the shader is given inline (fx_2_0's writer) */
 } hfx_fx_state;
 
 typedef enum { HFX_FX_DIM_2D, HFX_FX_DIM_1D, HFX_FX_DIM_3D, HFX_FX_DIM_CUBE } hfx_fx_dim;
@@ -86,6 +95,8 @@ typedef struct hfx_fx_sampler {
     uint32_t texture_param; /* from `Texture = <t>`; HFX_NONE if the sampler names no texture */
     hfx_fx_dim dim;         /* what the shaders sample it as */
     uint32_t first_state, state_count; /* the sampler_state block, less Texture */
+    uint32_t texture_slot;  /* how many of those states came before Texture (an fx_2_0 binary's order, which
+                             * its writer keeps; 0 otherwise) */
 } hfx_fx_sampler;
 
 typedef struct hfx_fx_attribute {
@@ -125,11 +136,6 @@ typedef struct hfx_fx_uniform_use {
     uint32_t flags;         /* HFX_FX_USE_SWITCH */
 } hfx_fx_uniform_use;
 
-typedef struct hfx_fx_code {
-    char *data;             /* GLSL text (NUL-terminated) or SPIR-V words */
-    size_t size;            /* bytes, without the NUL */
-} hfx_fx_code;
-
 enum { HFX_STAGE_VERTEX, HFX_STAGE_FRAGMENT, HFX_STAGE_COUNT };
 
 enum { /* hfx_fx_program.flags */
@@ -156,6 +162,10 @@ typedef struct hfx_fx_program {
     uint32_t reg_count;     /* vec4 registers of hfx_c (0: nothing packed) */
     hfx_fx_preshader *preshaders; uint32_t preshader_count; /* registers after the parameters' */
     uint32_t *pre_code; uint32_t pre_words;
+    /* The pass's shaders as Direct3D 9 bytecode (vs_* / ps_* tokens; size 0: none or not made): an
+     * fx_2_0 binary's own, or the D3D9 back end's for a compiled source. fx_2_0's writer writes
+     * them; the .hfxo does not carry them. */
+    hfx_fx_code d3d9[HFX_STAGE_COUNT];
 } hfx_fx_program;
 
 typedef struct hfx_fx_pass {

@@ -174,13 +174,20 @@ bool hfx_ev_fit(const hfx_ev_value *x, hfx_ev_base b, unsigned n, hfx_ev_value *
 
 /* ---- intrinsics ---- */
 
+/* A row's place is its number in files: moving or inserting a row would change what stored
+ * programs call. */
+#define HFX_EV_FUNC(name, number, args) \
+    _Static_assert(HFX_EV_FN_##name == (number), "eval_funcs.def: " #name " must keep its stored number");
+#include "eval_funcs.def"
+#undef HFX_EV_FUNC
+
 static const struct {
     const char *name;
     int args;
 } funcs[HFX_EV_FN_COUNT] = {
-#define HFX_EV_FN_ROW_(name, args) {#name, args},
-    HFX_EV_FUNCS(HFX_EV_FN_ROW_)
-#undef HFX_EV_FN_ROW_
+#define HFX_EV_FUNC(name, number, args) [HFX_EV_FN_##name] = {#name, args},
+#include "eval_funcs.def"
+#undef HFX_EV_FUNC
 };
 
 int hfx_ev_fn_args(hfx_ev_fn fn) { return fn >= 0 && fn < HFX_EV_FN_COUNT ? funcs[fn].args : 0; }

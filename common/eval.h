@@ -32,18 +32,12 @@ typedef enum {
     HFX_EV_OP_COUNT
 } hfx_ev_op;
 
-/* Intrinsics the evaluator computes: X(name, arguments). Componentwise unless noted in eval.c. */
-#define HFX_EV_FUNCS(X) \
-    X(ABS, 1) X(ACOS, 1) X(ASIN, 1) X(ATAN, 1) X(ATAN2, 2) X(CEIL, 1) X(CLAMP, 3) X(COS, 1) X(COSH, 1) \
-    X(CROSS, 2) X(DEGREES, 1) X(DISTANCE, 2) X(DOT, 2) X(EXP, 1) X(EXP2, 1) X(FLOOR, 1) X(FMOD, 2) \
-    X(FRAC, 1) X(LENGTH, 1) X(LERP, 3) X(LOG, 1) X(LOG10, 1) X(LOG2, 1) X(MAX, 2) X(MIN, 2) \
-    X(NORMALIZE, 1) X(POW, 2) X(RADIANS, 1) X(ROUND, 1) X(RSQRT, 1) X(SATURATE, 1) X(SIGN, 1) X(SIN, 1) \
-    X(SINH, 1) X(SMOOTHSTEP, 3) X(SQRT, 1) X(STEP, 2) X(TAN, 1) X(TANH, 1) X(TRUNC, 1) X(ALL, 1) X(ANY, 1)
-
+/* The intrinsics the evaluator computes: common/eval_funcs.def, in the order of the numbers
+ * stored in files (eval.c asserts each row's number is its place). */
 typedef enum {
-#define HFX_EV_FN_ENUM_(name, args) HFX_EV_FN_##name,
-    HFX_EV_FUNCS(HFX_EV_FN_ENUM_)
-#undef HFX_EV_FN_ENUM_
+#define HFX_EV_FUNC(name, number, args) HFX_EV_FN_##name,
+#include "eval_funcs.def"
+#undef HFX_EV_FUNC
     HFX_EV_FN_COUNT,
     HFX_EV_FN_NONE = -1 /* an intrinsic the evaluator leaves to the GPU */
 } hfx_ev_fn;

@@ -231,7 +231,7 @@ static bc_obj tex(bc_gen *g, const ir_expr *e) {
         bc_fail(g, e->loc, X_BC_UNSUPPORTED, "the bytecode writer samples named samplers only");
         return one(g, bc_constf(g, 0));
     }
-    int form = e->n == 4 ? TEXF_GRAD : info->form;
+    int form = e->n == 4 ? TEXF_GRAD : (int)info->tex_form;
     if (g->stage == D3D9_VS && form != TEXF_LOD) {
         bc_fail(g, e->loc, 3004, "vertex shaders sample with tex*Dlod only");
         return one(g, bc_constf(g, 0));

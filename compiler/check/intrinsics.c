@@ -8,7 +8,7 @@
 #include "check/conv.h"
 
 static const hfx_intrinsic_info table[HFX_INTR_COUNT] = {
-#define HFX_INTRINSIC(id, name, mn, mx, sig, dim, form, glsl, how, ev) {name, mn, mx, sig, dim, form, ev},
+#define HFX_INTRINSIC(id, name, mn, mx, sig, dim, texf, lower, ev, glsl_emit, glsl_fn) {name, mn, mx, sig, dim, texf, lower, ev},
 #include "check/intrinsics.def"
 #undef HFX_INTRINSIC
 };
@@ -107,7 +107,7 @@ static unsigned tex_coord_size(hfx_dim dim) {
 static bool rule_tex(const rule *r, hfx_intrinsic_match *m) {
     const hfx_type *s = r->args[0];
     hfx_dim dim = r->info->dim;
-    int form = r->info->form;
+    hfx_tex_form form = r->info->tex_form;
     if (s->kind != TY_SAMPLER || (s->dim != DIM_GENERIC && s->dim != dim)) return false;
     if (r->n == 3) return false;
     m->params[0] = hfx_type_object(r->t, TY_SAMPLER, dim);
@@ -243,11 +243,14 @@ static bool rule_out2(const rule *r, hfx_intrinsic_match *m) {
     return true;
 }
 
+/* asfloat / asint / asuint: the bits of T as the element type the rule names. */
 static bool rule_reinterpret(const rule *r, hfx_intrinsic_match *m) {
     const hfx_type *T = r->T;
     if (T->base == B_BOOL || T->base == B_DOUBLE) return false;
+    hfx_sig sig = r->info->sig;
+    hfx_base to = sig == SIG_AS_FLOAT ? B_FLOAT : sig == SIG_AS_INT ? B_INT : B_UINT;
     m->params[0] = hfx_base_is_float(T->base) ? hfx_type_with_base(r->t, T, B_FLOAT) : T;
-    m->ret = hfx_type_with_base(r->t, T, (hfx_base)r->info->form);
+    m->ret = hfx_type_with_base(r->t, T, to);
     return true;
 }
 
@@ -266,7 +269,8 @@ static const struct {
     [SIG_LIT] = {rule_lit, true},              [SIG_SINCOS] = {rule_sincos, false},
     [SIG_DST] = {rule_dst, true},
     [SIG_OUT2] = {rule_out2, false},           [SIG_D3DCOLOR] = {rule_d3dcolor, true},
-    [SIG_NOISE] = {rule_to_scalar, false},     [SIG_REINTERPRET] = {rule_reinterpret, false},
+    [SIG_NOISE] = {rule_to_scalar, false},     [SIG_AS_FLOAT] = {rule_reinterpret, false},
+    [SIG_AS_INT] = {rule_reinterpret, false},  [SIG_AS_UINT] = {rule_reinterpret, false},
     [SIG_TEX] = {rule_tex, true},
 };
 

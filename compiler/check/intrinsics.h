@@ -1,6 +1,7 @@
 /* intrinsics.h: the HLSL intrinsic functions (SM2/SM3 set plus asfloat/asint/asuint), listed
  * once in intrinsics.def: ids (the IR's too), names, argument counts, the rule that matches
- * argument types.
+ * argument types, the texture read, the back-end-neutral IR rewrite and the evaluator function.
+ * The back ends' columns are read by the back ends themselves (glsl/glsl_intrin.c).
  *
  * Matching (intrinsics.c) follows fxc: the arguments of "same type" intrinsics combine like a
  * componentwise binary operator (scalars splat, longer vectors truncate with X3206), integer
@@ -37,15 +38,25 @@ typedef enum {
     SIG_OUT2,        /* T f(T, out T): modf, frexp */
     SIG_D3DCOLOR,    /* int4 D3DCOLORtoUBYTE4(float4) */
     SIG_NOISE,       /* float noise(floatN) */
-    SIG_REINTERPRET, /* asfloat / asint / asuint: same shape, new element type */
+    SIG_AS_FLOAT,    /* asfloat: same shape, float */
+    SIG_AS_INT,      /* asint: same shape, int */
+    SIG_AS_UINT,     /* asuint: same shape, uint */
     SIG_TEX          /* float4 texND[mode](samplerND, coords...) */
 } hfx_sig;
 
-/* Texture sampling forms (SIG_TEX). */
+/* Texture sampling forms (SIG_TEX rows; d3d9_ir_ops.c indexes by this order). */
 typedef enum { TEXF_PLAIN, TEXF_BIAS, TEXF_LOD, TEXF_PROJ, TEXF_GRAD } hfx_tex_form;
 
+/* The IR rewrite an intrinsic gets before any back end sees it (ir/lower/intrinsics.c): the
+ * forms no target expresses directly, whatever the target. */
 typedef enum {
-#define HFX_INTRINSIC(id, name, mn, mx, sig, dim, form, glsl, how, ev) HFX_INTR_##id,
+    LOWER_NONE, /* the call stays as it is */
+    LOWER_ROWS, /* componentwise: on a matrix, one call per row (targets have vector forms only) */
+    LOWER_MUL   /* mul: a vector times a truncated matrix becomes a padded vector times the whole */
+} hfx_intr_lower;
+
+typedef enum {
+#define HFX_INTRINSIC(id, name, mn, mx, sig, dim, texf, lower, ev, glsl_emit, glsl_fn) HFX_INTR_##id,
 #include "check/intrinsics.def"
 #undef HFX_INTRINSIC
     HFX_INTR_COUNT
@@ -55,9 +66,10 @@ typedef struct hfx_intrinsic_info {
     const char *name;
     uint8_t min_args, max_args;
     hfx_sig sig;
-    hfx_dim dim;         /* SIG_TEX */
-    int form;            /* SIG_TEX: hfx_tex_form; SIG_REINTERPRET: the hfx_base produced */
-    hfx_ev_fn fold;      /* how common/eval computes it on constants; HFX_EV_FN_NONE: left to the GPU */
+    hfx_dim dim;           /* the texture read's dimension; DIM_GENERIC: no texture read */
+    hfx_tex_form tex_form; /* the texture read's form (SIG_TEX rows) */
+    hfx_intr_lower lower;  /* the back-end-neutral IR rewrite */
+    hfx_ev_fn fold;        /* how common/eval computes it on constants; HFX_EV_FN_NONE: left to the GPU */
 } hfx_intrinsic_info;
 
 /* Resolved parameter and return types of one call. */

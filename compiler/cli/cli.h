@@ -19,7 +19,6 @@ typedef struct cli_options {
     const char *emit_glsl;   /* --emit-glsl DIR */
     const char *entry;       /* /E */
     const char *profile;     /* /T */
-    const char *listing;     /* /Fc: fxc's assembly listing of a /T vs_* | ps_* shader */
     unsigned targets;        /* bits (1 << hfx_target); 0 = the library's default */
     bool disassemble;        /* --disassemble, /dumpbin: listings of fxc's binaries */
     bool reflect, annotations, ast, werror, quiet, no_warnings, pack_uniforms, no_self_check, no_preshaders, no_derived_varyings;
@@ -29,7 +28,16 @@ typedef struct cli_options {
     bool depfile_phony;      /* -MP: an empty rule per include, so deleting one does not break make */
     const char *depfile_path;/* -MF / --depfile: its name (one input); default <output minus extension>.d */
     const char *dep_target;  /* -MT: the rule's target; default the output path */
+    /* fxc's outputs (fxc_out.c): /Fo writes fxc's fx_2_0, -o hfx's .hfxo, --format says which */
+    int format;              /* CLI_FORMAT_* */
+    bool format_given;       /* --format said it: /Fo or -o no longer choose */
+    const char *header;      /* /Fh: a C header holding the effect's bytes */
+    const char *header_name; /* /Vn: its array's name (default g_<input's stem>) */
+    const char *listing;     /* /Fc: the effect's listing (fx2_list.c's) */
+    int matrix_packing;      /* /Zpr: 1 (row_major), /Zpc: -1 (column_major, fxc's default), 0 unsaid */
 } cli_options;
+
+enum { CLI_FORMAT_HFXO, CLI_FORMAT_FXC };
 
 /* What compiling one input left behind, for main to print in input order. */
 typedef struct cli_job {
@@ -51,6 +59,8 @@ char *cli_output_path(const cli_options *o, const char *input);
 bool cli_write_depfile(const cli_options *o, const char *input, const hfxc_result *r, char **error);
 /* The rule text: `target: dep...`, Make's escapes, one dependency a line; phony: `dep:` rules. malloc'ed. */
 char *cli_depfile_text(const char *target, const char *const *deps, size_t count, bool phony);
+/* fxc_out.c: /Fo in fxc's format, /Fh, /Fc for a compiled effect (job->ok false on failure). */
+void cli_write_fxc(const cli_options *o, cli_job *job, const hfx_fx_effect *fx);
 const char *cli_target_name(int target);
 int cli_target_from_name(const char *name); /* -1 when unknown */
 

@@ -52,7 +52,10 @@ char *cli_output_path(const cli_options *o, const char *input) {
     bool folder = o->input_count > 1 || (n && o->output[n - 1] == '/') || is_dir(o->output);
     if (!folder) return strdup(o->output);
     char *s = stem(input);
-    char *path = s ? fmt(o->output[n - 1] == '/' ? "%s%s.hfxo" : "%s/%s.hfxo", o->output, s) : NULL;
+    const char *ext = o->format == CLI_FORMAT_FXC ? "fxo" : "hfxo";
+    char *named = s ? fmt("%s.%s", s, ext) : NULL;
+    char *path = named ? fmt(o->output[n - 1] == '/' ? "%s%s" : "%s/%s", o->output, named) : NULL;
+    free(named);
     free(s);
     return path;
 }
@@ -86,6 +89,8 @@ static void write_shader(const cli_options *o, cli_job *job, const void *code, s
 }
 
 static void write_hfxo(const cli_options *o, cli_job *job, const hfx_fx_effect *fx) {
+    cli_write_fxc(o, job, fx); /* /Fo (fxc's format), /Fh, /Fc */
+    if (o->format == CLI_FORMAT_FXC) return;
     char *path = cli_output_path(o, job->input);
     if (!path) return;
     void *data = NULL;

@@ -1,5 +1,5 @@
-/* main.c: hfxc, the command line. Takes fxc's spelling (/T fx_2_0 /Fo out.hfxo /D N=V /I dir
- * /E main /nologo) and the GNU one (-o, -D, -I, --target, --emit-glsl, --reflect...). Exit 0 on
+/* main.c: hfxc, the command line. Takes fxc's spelling (/T fx_2_0 /Fo out.fxo /Fh /Vn /Fc /D N=V
+ * /I dir /E main /nologo: fxc's outputs, in fxc_out.c) and the GNU one (-o, -D, -I, --target, --emit-glsl, --reflect...). Exit 0 on
  * success, 1 when a file fails to compile, 2 on bad usage (one line on stderr saying why). */
 #include <errno.h>
 #include <malloc.h>
@@ -15,7 +15,12 @@ static const char usage_text[] =
     "usage: hfxc [options] file.fx...\n"
     "Compiles Direct3D 9 effect files (.fx) to .hfxo (GLSL programs + effect data).\n"
     "\n"
-    "  -o, /Fo PATH          output file (one input) or folder (several inputs, or PATH ending in /)\n"
+    "  -o PATH               the .hfxo to write (one input), or a folder (several, or PATH ending in /)\n"
+    "  /Fo PATH              fxc's fx_2_0 effect to write (FNA, MojoShader, D3DX load it), or a folder\n"
+    "  --format hfxo|fxc     the format of -o or /Fo, whichever is given\n"
+    "  /Fh FILE, /Vn NAME    a C header of the fx_2_0 bytes: const BYTE NAME[] (default g_<input>)\n"
+    "  /Fc FILE              the listing of the fx_2_0 written\n"
+    "  /Zpr, /Zpc            matrices without row_major / column_major are row- / column-major in it\n"
     "  -D, /D NAME[=VALUE]   define a macro\n"
     "  -I, /I DIR            add an include folder\n"
     "  /T PROFILE            fx_2_0 (default), or vs_3_0, ps_2_0... with /E\n"
@@ -44,7 +49,7 @@ static const char usage_text[] =
     "  -MP                   add an empty rule per include, so deleting one does not break make\n"
     "  -j, --jobs N          compile N files at a time (default: one per core)\n"
     "  --quiet               no progress line and no summary\n"
-    "  /nologo               accepted for fxc compatibility\n"
+    "  /nologo, /Od, /O0-/O3, /Gec, /Zi  accepted for fxc compatibility; change nothing\n"
     "  --help, /?            this text\n"
     "  --version             the version\n";
 
@@ -96,7 +101,8 @@ static const char *value_of(const char *arg, const char *name, int argc, char **
 }
 
 typedef enum {
-    OPT_OUTPUT, OPT_DEFINE, OPT_INCLUDE, OPT_PROFILE, OPT_ENTRY, OPT_TARGET, OPT_EMIT, OPT_JOBS, OPT_DEPFILE, OPT_DEP_TARGET, OPT_LISTING
+    OPT_OUTPUT, OPT_DEFINE, OPT_INCLUDE, OPT_PROFILE, OPT_ENTRY, OPT_TARGET, OPT_EMIT, OPT_JOBS, OPT_DEPFILE, OPT_DEP_TARGET,
+    OPT_FXC_OUTPUT, OPT_FORMAT, OPT_HEADER, OPT_HEADER_NAME, OPT_LISTING
 } opt_kind;
 
 static const struct {
@@ -107,19 +113,40 @@ static const struct {
     {"--define", OPT_DEFINE}, {"--include", OPT_INCLUDE}, {"--depfile", OPT_DEPFILE},
     {"-MF", OPT_DEPFILE}, {"-MT", OPT_DEP_TARGET},
     {"-o", OPT_OUTPUT}, {"-D", OPT_DEFINE}, {"-I", OPT_INCLUDE}, {"-T", OPT_PROFILE}, {"-E", OPT_ENTRY},
-    {"-j", OPT_JOBS}, {"-Fo", OPT_OUTPUT},
-    {"/Fo", OPT_OUTPUT}, {"/D", OPT_DEFINE}, {"/I", OPT_INCLUDE}, {"/T", OPT_PROFILE}, {"/E", OPT_ENTRY},
-    {"/Fc", OPT_LISTING}, {"-Fc", OPT_LISTING},
+    {"-j", OPT_JOBS}, {"-Fo", OPT_FXC_OUTPUT}, {"--format", OPT_FORMAT}, {"/Fh", OPT_HEADER}, {"-Fh", OPT_HEADER},
+    {"/Vn", OPT_HEADER_NAME}, {"-Vn", OPT_HEADER_NAME}, {"/Fc", OPT_LISTING}, {"-Fc", OPT_LISTING},
+    {"/Fo", OPT_FXC_OUTPUT}, {"/D", OPT_DEFINE}, {"/I", OPT_INCLUDE}, {"/T", OPT_PROFILE}, {"/E", OPT_ENTRY},
 };
+
+/* fxc's outputs: /Fo writes fxc's fx_2_0 (-o hfx's .hfxo), /Fh a C header, /Vn its array, /Fc
+ * the listing, --format hfxo|fxc the format of whichever output option is given. */
+static int set_fxc_option(cli_options *o, opt_kind kind, const char *v) {
+    switch (kind) {
+    case OPT_FXC_OUTPUT:
+        o->output = v;
+        if (!o->format_given) o->format = CLI_FORMAT_FXC;
+        break;
+    case OPT_FORMAT:
+        if (strcmp(v, "hfxo") && strcmp(v, "fxc")) return usage_error("unknown format '%s' (hfxo or fxc)", v);
+        o->format = strcmp(v, "fxc") ? CLI_FORMAT_HFXO : CLI_FORMAT_FXC;
+        o->format_given = true;
+        break;
+    case OPT_HEADER: o->header = v; break;
+    case OPT_HEADER_NAME: o->header_name = v; break;
+    default: o->listing = v; break;
+    }
+    return EXIT_OK;
+}
 
 static int set_valued(cli_options *o, opt_kind kind, const char *v) {
     switch (kind) {
     case OPT_OUTPUT: o->output = v; break;
+    case OPT_FXC_OUTPUT: case OPT_FORMAT: case OPT_HEADER: case OPT_HEADER_NAME: case OPT_LISTING:
+        return set_fxc_option(o, kind, v);
     case OPT_DEFINE: if (push(&o->defines, &o->define_count, v)) return EXIT_USAGE; break;
     case OPT_INCLUDE: if (push(&o->include_dirs, &o->include_dir_count, v)) return EXIT_USAGE; break;
     case OPT_PROFILE: o->profile = v; break;
     case OPT_ENTRY: o->entry = v; break;
-    case OPT_LISTING: o->listing = v; break;
     case OPT_TARGET: return add_targets(o, v);
     case OPT_EMIT: o->emit_glsl = v; break;
     case OPT_DEPFILE: o->depfile = true, o->depfile_path = v; break;
@@ -153,6 +180,8 @@ static int flag(cli_options *o, const char *a, bool *handled) {
     else if (!strcmp(a, "-MD") || !strcmp(a, "-MMD")) o->depfile = true; /* no system headers to leave out */
     else if (!strcmp(a, "-MP")) o->depfile_phony = true;
     else if (!strcmp(a, "/nologo") || !strcmp(a, "-nologo")) {
+    } else if (!strcmp(a, "/Zpr") || !strcmp(a, "-Zpr") || !strcmp(a, "/Zpc") || !strcmp(a, "-Zpc")) {
+        o->matrix_packing = a[3] == 'r' ? 1 : -1;
     } else if (!strcmp(a, "/Zi") || !strcmp(a, "/Od") || !strcmp(a, "/Gec") || !strcmp(a, "/Gfp") ||
                (a[0] == '/' && a[1] == 'O' && a[2] >= '0' && a[2] <= '3' && !a[3])) {
         /* fxc's debug and optimisation switches change nothing here. */

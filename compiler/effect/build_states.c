@@ -269,6 +269,7 @@ bool hfx_build_samplers(hfx_builder *b) {
 typedef struct shader_select {
     const hfx_expr *array;    /* its initializer list */
     const hfx_expr *index;
+    uint32_t param;           /* the array parameter (HFX_NONE: not one), for fx_2_0's writer */
 } shader_select;
 
 /* Follows a shader state's value to its `compile` expression: through shader variables and
@@ -302,6 +303,7 @@ static int shader_compile(hfx_builder *b, const hfx_expr *v, const hfx_expr **ou
         if (!constant && init && init->kind == EX_INIT_LIST && init->arg_count && sel) {
             sel->array = init; /* chosen at Apply: the pass gets a variant per reachable index */
             sel->index = v->args[1];
+            sel->param = hfx_build_param_of(b, arr);
             return 2;
         }
         if (!init || init->kind != EX_INIT_LIST || i < 0 || i >= init->arg_count) {
@@ -425,6 +427,7 @@ static void pass_state(hfx_builder *b, const hfx_state_assign *sa, pass_shaders 
         int found = shader_compile(b, sa->value, &c, sel, 0);
         if (found == 2 && hfx_build_selector(b, sel->index, sel->array->arg_count, &st.ref, &st.count)) {
             st.kind = HFX_FX_VALUE_EXPR;
+            st.source = sel->param != HFX_NONE ? sel->param + 1 : 0;
             sh->sel_state[vertex ? 0 : 1] = b->fx->state_count;
             sh->any = true;
             add_state(b, &st);

@@ -313,7 +313,7 @@ static uint32_t read_sampler(fx2_reader *r, uint32_t param, uint32_t off) {
     uint32_t s = fx->sampler_count++;
     static const hfx_fx_dim dims[] = {HFX_FX_DIM_2D, HFX_FX_DIM_1D, HFX_FX_DIM_2D, HFX_FX_DIM_3D, HFX_FX_DIM_CUBE};
     fx->samplers[s] = (hfx_fx_sampler){param, HFX_NONE, dims[fx->params[param].type - HFX_TYPE_SAMPLER],
-                                       fx->state_count, 0};
+                                       fx->state_count, 0, 0};
     fx->params[param].sampler = s;
     r->param_raw_first[param] = r->raw_count;
     off += 4;
@@ -330,6 +330,7 @@ static uint32_t read_sampler(fx2_reader *r, uint32_t param, uint32_t off) {
             break;
         }
         if (raw->op == OP_TEXTURE) { /* the sampler's texture: the sampler's own field, not a state */
+            fx->samplers[s].texture_slot = fx->samplers[s].state_count;
             hfx_fx_state dummy;
             hfx_fx2_state_value(r, raw, &dummy);
             continue;

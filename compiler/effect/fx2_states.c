@@ -237,6 +237,7 @@ static void selector(fx2_reader *r, fx2_raw *raw, hfx_fx_state *st) {
     fx2_blob code = {raw->blob.data + skip, raw->blob.size - skip, raw->blob.at + skip};
     raw->object = p; /* the array, for the passes' programs */
     expression(r, raw, st, &code, 1, HFX_EV_INT);
+    st->source = p + 1;
 }
 
 static void resolve(fx2_reader *r, fx2_raw *raw) {
@@ -263,6 +264,7 @@ static void resolve(fx2_reader *r, fx2_raw *raw) {
         }
         if (is_shader_op(raw->op)) { /* `VertexShader = <vs>`: the parameter's bytecode */
             raw->object = r->param_object[p];
+            st->source = p + 1;
             return;
         }
         const hfx_fx_param *q = &fx->params[p];
@@ -352,6 +354,32 @@ static d3d9_shader *decode_shader(fx2_reader *r, const fx2_blob *b) {
 
 static void clear_pending(void *p) { hfx_fx_program_clear(p); }
 
+/* A copy of a shader's bytecode in the effect (malloc'ed): what fx_2_0's writer writes back. */
+static bool keep_bytecode(fx2_reader *r, hfx_fx_code *c, const fx2_blob *b) {
+    if (!b->size) return true;
+    if (!(c->data = malloc(b->size))) {
+        hfx_error(r->diags, (hfx_loc){r->file, 0, 0}, X_MEMORY_LIMIT, "out of memory reading the effect");
+        r->oom = true;
+        return false;
+    }
+    memcpy(c->data, b->data, b->size);
+    c->size = b->size;
+    return true;
+}
+
+/* The bytecode of every shader parameter (and array element) with some. */
+static void shader_params(fx2_reader *r) {
+    hfx_fx_effect *fx = r->fx;
+    for (uint32_t i = 0; i < fx->param_count && !r->failed; i++) {
+        hfx_fx_param *p = &fx->params[i];
+        uint32_t id = r->param_object[i];
+        if ((p->type != HFX_TYPE_VERTEXSHADER && p->type != HFX_TYPE_PIXELSHADER) || p->child_count || id >= r->object_count ||
+            !r->objects[id].has_data)
+            continue;
+        if (!keep_bytecode(r, &p->d3d9, &r->objects[id].blob)) r->failed = true;
+    }
+}
+
 /* The one place shader bytecode becomes a program: compiler/d3d9 reads and translates each
  * stage, the code generator builds the pass's program as for a compiled effect. A pair made
  * before is shared. */
@@ -395,6 +423,13 @@ static uint32_t shader_program(fx2_reader *r, const fx2_blob *vs, const fx2_blob
         r->keys = keys;
     }
     r->keys[fx->program_count] = (fx2_program_key){vs ? vs->data : NULL, ps ? ps->data : NULL, flat};
+    const fx2_blob *blobs[HFX_STAGE_COUNT] = {vs, ps};
+    for (int s = 0; s < HFX_STAGE_COUNT; s++) /* the bytecode itself, for the fx_2_0 writer */
+        if (blobs[s] && !keep_bytecode(r, &pending->d3d9[s], blobs[s])) {
+            hfx_fx_program_clear(pending);
+            r->failed = true;
+            return HFX_NONE;
+        }
     fx->programs[fx->program_count] = *pending;
     return fx->program_count++;
 }
@@ -544,6 +579,7 @@ static void pass_program(fx2_reader *r, uint32_t pass) {
 bool hfx_fx2_finish(fx2_reader *r) {
     for (uint32_t i = 0; i < r->raw_count && !r->failed; i++) resolve(r, &r->raws[i]);
     if (r->flags & HFX_FX2_DECODE_ONLY) return !r->failed;
+    shader_params(r);
     for (uint32_t p = 0; p < r->fx->pass_count && !r->failed; p++) pass_program(r, p);
     if (!r->failed && !r->diags->errors) self_check(r);
     r->fx->targets = present_targets(r->fx, r->targets);

@@ -3,7 +3,10 @@
  * log, sqrt and rsqrt take |x| as D3D9's log and rsq do, log(0) is -FLT_MAX and rsqrt(0) FLT_MAX,
  * frac is x - floor(x) (fract), fmod truncates (x - y * trunc(x / y), not GLSL mod), round is
  * floor(x + 0.5) as fxc's ps_2/3 code computes it, ddy is -dFdy (D3D's screen y goes down),
- * tex2Dlod/bias take the level from .w. */
+ * tex2Dlod/bias take the level from .w.
+ * This is the GLSL back end's column of check/intrinsics.def: every row names its emitter here
+ * (emit_<how>) and, for the emitters that call one, the GLSL function; the IR has already done
+ * the back-end-neutral rewrites (ir/lower/intrinsics.c). */
 #include <string.h>
 
 #include "glsl/glsl_int.h"
@@ -127,7 +130,7 @@ static void coord_part(gp *p, const ir_expr *t, unsigned n) {
 }
 
 /* The GLSL sampling function of a dimension and form (GLSL 110: texture2D... and no gradients). */
-static const char *tex_function(gp *p, hfx_dim dim, int form) {
+static const char *tex_function(gp *p, hfx_dim dim, hfx_tex_form form) {
     bool cube = dim == DIM_CUBE;
     if (p->legacy) {
         const char *d = cube ? "Cube" : dim == DIM_3D ? "3D" : "2D";
@@ -185,11 +188,11 @@ static void tex_proj_args(gp *p, const ir_expr *t, hfx_dim dim) {
 }
 
 /* Every tex* intrinsic: its dimension and form come from its row of intrinsics.def. */
-static void lower_tex(gp *p, const ir_expr *e, int max) {
+static void emit_tex(gp *p, const ir_expr *e, int max) {
     (void)max;
     const hfx_intrinsic_info *info = hfx_intrinsic_info_of((int)e->intrin);
     hfx_dim dim = info->dim;
-    int form = info->form == TEXF_PLAIN && e->n == 4 ? TEXF_GRAD : info->form;
+    hfx_tex_form form = info->tex_form == TEXF_PLAIN && e->n == 4 ? TEXF_GRAD : info->tex_form;
     if (e->n < 2) { glsl_error(p, e->loc, "texture sampling needs coordinates"); return; }
     if (p->legacy && form == TEXF_LOD && p->stage == IR_PIXEL) { /* 110 has texture2DLod in vertex shaders only */
         glsl_error(p, e->loc, "tex*Dlod in a pixel shader needs GLSL 330 or ES 300");
@@ -253,40 +256,43 @@ static bool legacy_intrinsic(gp *p, const ir_expr *e) {
     return true;
 }
 
-typedef void lower_fn(gp *p, const ir_expr *e, int max);
+/* An emitter: prints the call e as GLSL (max: the loosest precedence the context allows). */
+typedef void emit_fn(gp *p, const ir_expr *e, int max);
 
+/* The row's GLSL function: only the emitters that call it on the arguments as they are (call,
+ * legacy, numeric, matrix, all_any, trunc, modf) read it; the others write their own text. */
 static const char *glsl_name_of(ir_intrin i);
 
 /* The GLSL function of the row, with the same arguments. */
-static void lower_call(gp *p, const ir_expr *e, int max) {
+static void emit_call(gp *p, const ir_expr *e, int max) {
     (void)max;
     args(p, glsl_name_of(e->intrin), e->a, e->n);
 }
 
 /* The GLSL function, or in GLSL 110 a helper with the same meaning where 110 lacks it. */
-static void lower_legacy(gp *p, const ir_expr *e, int max) {
-    if (!(p->legacy && legacy_intrinsic(p, e))) lower_call(p, e, max);
+static void emit_legacy(gp *p, const ir_expr *e, int max) {
+    if (!(p->legacy && legacy_intrinsic(p, e))) emit_call(p, e, max);
 }
 
-static void lower_modf(gp *p, const ir_expr *e, int max) {
+static void emit_modf(gp *p, const ir_expr *e, int max) {
     (void)max;
-    if (!(p->legacy && legacy_intrinsic(p, e))) args_out2(p, "modf", e->a);
+    if (!(p->legacy && legacy_intrinsic(p, e))) args_out2(p, glsl_name_of(e->intrin), e->a);
 }
 
 /* determinant / transpose: a 1x1 "matrix" is its one value. */
-static void lower_matrix(gp *p, const ir_expr *e, int max) {
+static void emit_matrix(gp *p, const ir_expr *e, int max) {
     if (p->legacy && legacy_intrinsic(p, e)) return;
     if (!glsl_is_matrix(e->a[0]->type)) glsl_expr(p, e->a[0], max);
-    else lower_call(p, e, max);
+    else emit_call(p, e, max);
 }
 
 /* GLSL 110 has abs, sign, min, max and clamp for floats only: integer forms go through
  * float, exact for every value a 110 shader's ints (at least 16 bits) can hold. */
-static void lower_numeric(gp *p, const ir_expr *e, int max) {
+static void emit_numeric(gp *p, const ir_expr *e, int max) {
     const hfx_type *t = e->type;
     bool vector_like = t->kind != TY_MATRIX || t->rows == 1 || t->cols == 1;
     if (!p->legacy || (t->base != B_INT && t->base != B_UINT) || !vector_like) {
-        lower_call(p, e, max);
+        emit_call(p, e, max);
         return;
     }
     unsigned n = ncomp(t);
@@ -301,8 +307,8 @@ static void lower_numeric(gp *p, const ir_expr *e, int max) {
 }
 
 /* GLSL 110 has no trunc: sign(x) * floor(abs(x)). */
-static void lower_trunc(gp *p, const ir_expr *e, int max) {
-    if (!p->legacy) { lower_call(p, e, max); return; }
+static void emit_trunc(gp *p, const ir_expr *e, int max) {
+    if (!p->legacy) { emit_call(p, e, max); return; }
     sb_put(p->out, "(sign(");
     glsl_expr(p, e->a[0], PREC_ASSIGN);
     sb_put(p->out, ") * floor(abs(");
@@ -368,7 +374,7 @@ static void power_by_helper(gp *p, const ir_expr *x, int n) {
 
 /* pow(x, y) is exp(y * log(x)) with D3D9's log: |x|, and pow(0, 0) = 1, pow(0, y > 0) = 0;
  * fxc's products where it expands a constant exponent. */
-static void lower_pow(gp *p, const ir_expr *e, int max) {
+static void emit_pow(gp *p, const ir_expr *e, int max) {
     (void)max;
     int n;
     if (is_float(e->type->base) && hfx_type_equal(e->a[0]->type, e->type) &&
@@ -384,7 +390,7 @@ static void lower_pow(gp *p, const ir_expr *e, int max) {
 }
 
 /* log2, log (x ln 2) and log10 (x log10(2)) as fxc builds them on the log instruction. */
-static void lower_log(gp *p, const ir_expr *e, int max) {
+static void emit_log(gp *p, const ir_expr *e, int max) {
     const char *scale = e->intrin == HFX_INTR_LOG ? " * 0.693147181" : e->intrin == HFX_INTR_LOG10 ? " * 0.301029996" : "";
     if (*scale) wrap_open(p, PREC_MUL, max);
     d3d_log2(p, e->a[0]);
@@ -393,26 +399,26 @@ static void lower_log(gp *p, const ir_expr *e, int max) {
 }
 
 /* D3D9's rsq: 1 / sqrt(|x|), FLT_MAX at 0; sqrt is compiled as rcp(rsq(x)), so it takes |x| too. */
-static void lower_rsqrt(gp *p, const ir_expr *e, int max) {
+static void emit_rsqrt(gp *p, const ir_expr *e, int max) {
     (void)max;
     sb_put(p->out, "min(inversesqrt(abs(");
     glsl_expr(p, e->a[0], PREC_ASSIGN);
     sb_put(p->out, ")), 3.40282347e+38)");
 }
 
-static void lower_sqrt(gp *p, const ir_expr *e, int max) {
+static void emit_sqrt(gp *p, const ir_expr *e, int max) {
     (void)max;
     sb_put(p->out, "sqrt(abs(");
     glsl_expr(p, e->a[0], PREC_ASSIGN);
     sb_put(p->out, "))");
 }
 
-static void lower_all_any(gp *p, const ir_expr *e, int max) {
+static void emit_all_any(gp *p, const ir_expr *e, int max) {
     (void)max;
     all_any(p, e, glsl_name_of(e->intrin));
 }
 
-static void lower_saturate(gp *p, const ir_expr *e, int max) {
+static void emit_saturate(gp *p, const ir_expr *e, int max) {
     (void)max;
     const char *z = is_float(e->type->base) ? "0.0" : "0", *o = is_float(e->type->base) ? "1.0" : "1";
     sb_put(p->out, "clamp(");
@@ -421,7 +427,7 @@ static void lower_saturate(gp *p, const ir_expr *e, int max) {
 }
 
 /* D3D's screen y grows downwards, GL's window y upwards (unless flipped). */
-static void lower_ddy(gp *p, const ir_expr *e, int max) {
+static void emit_ddy(gp *p, const ir_expr *e, int max) {
     p->uses_fixup = true;
     wrap_open(p, PREC_MUL, max);
     args(p, "dFdy", e->a, 1);
@@ -430,7 +436,7 @@ static void lower_ddy(gp *p, const ir_expr *e, int max) {
 }
 
 /* floor(x + 0.5), as fxc's ps_2/3 code computes round. */
-static void lower_round(gp *p, const ir_expr *e, int max) {
+static void emit_round(gp *p, const ir_expr *e, int max) {
     (void)max;
     sb_put(p->out, "floor(");
     glsl_expr(p, e->a[0], PREC_ADD);
@@ -438,14 +444,14 @@ static void lower_round(gp *p, const ir_expr *e, int max) {
 }
 
 /* HLSL's fmod truncates (GLSL's mod floors). */
-static void lower_fmod(gp *p, const ir_expr *e, int max) {
+static void emit_fmod(gp *p, const ir_expr *e, int max) {
     (void)max;
     helper_typed(p, "fmod", e->type, p->legacy ? "$T hfx_fmod($T x, $T y) { $T q = x / y; return x - y * sign(q) * floor(abs(q)); }\n"
                                                  : "$T hfx_fmod($T x, $T y) { return x - y * trunc(x / y); }\n");
     args(p, "hfx_fmod", e->a, 2);
 }
 
-static void lower_lit(gp *p, const ir_expr *e, int max) {
+static void emit_lit(gp *p, const ir_expr *e, int max) {
     (void)max;
     helper_lit(p);
     args(p, "hfx_lit", e->a, 3);
@@ -485,34 +491,34 @@ static const char *const atan2_text[2] = {
     "    return r * (1.0 - 2.0 * $T(lessThan(lo, -lo)) * $T(greaterThanEqual(hi, -hi)));\n}\n"};
 #undef HFX_ATAN_POLY
 
-static void lower_acos(gp *p, const ir_expr *e, int max) {
+static void emit_acos(gp *p, const ir_expr *e, int max) {
     (void)max;
     helper_typed(p, "acos", e->type, acos_text[ncomp(e->type) > 1]);
     args(p, "hfx_acos", e->a, 1);
 }
 
 /* asin(x) = pi/2 - acos(x), as fxc computes it. */
-static void lower_asin(gp *p, const ir_expr *e, int max) {
+static void emit_asin(gp *p, const ir_expr *e, int max) {
     (void)max;
     helper_typed(p, "acos", e->type, acos_text[ncomp(e->type) > 1]);
     helper_typed(p, "asin", e->type, "$T hfx_asin($T x) { return 1.57079637 - hfx_acos(x); }\n");
     args(p, "hfx_asin", e->a, 1);
 }
 
-static void lower_atan(gp *p, const ir_expr *e, int max) {
+static void emit_atan(gp *p, const ir_expr *e, int max) {
     (void)max;
     helper_typed(p, "atan", e->type, atan_text[ncomp(e->type) > 1]);
     args(p, "hfx_atan", e->a, 1);
 }
 
-static void lower_atan2(gp *p, const ir_expr *e, int max) {
+static void emit_atan2(gp *p, const ir_expr *e, int max) {
     (void)max;
     helper_typed(p, "atan2", e->type, atan2_text[ncomp(e->type) > 1]);
     args(p, "hfx_atan2", e->a, 2);
 }
 
 /* mad(a, b, c) = a * b + c (GLSL 330 has no fma; the driver fuses it when it can). */
-static void lower_mad(gp *p, const ir_expr *e, int max) {
+static void emit_mad(gp *p, const ir_expr *e, int max) {
     wrap_open(p, PREC_ADD, max);
     glsl_expr(p, e->a[0], PREC_MUL);
     sb_put(p->out, " * ");
@@ -523,13 +529,13 @@ static void lower_mad(gp *p, const ir_expr *e, int max) {
 }
 
 /* dst: the distance vector of D3D's dst instruction, (1, a.y * b.y, a.z, b.w). */
-static void lower_dst(gp *p, const ir_expr *e, int max) {
+static void emit_dst(gp *p, const ir_expr *e, int max) {
     (void)max;
     helper_typed(p, "dst", e->type, "$T hfx_dst($T a, $T b) { return $T(1.0, a.y * b.y, a.z, b.w); }\n");
     args(p, "hfx_dst", e->a, 2);
 }
 
-static void lower_sincos(gp *p, const ir_expr *e, int max) {
+static void emit_sincos(gp *p, const ir_expr *e, int max) {
     (void)max;
     const hfx_type *t = e->a[0]->type;
     if (glsl_is_matrix(t)) /* GLSL's sin takes no matrix: column by column (HLSL rows) */
@@ -546,13 +552,13 @@ static void lower_sincos(gp *p, const ir_expr *e, int max) {
     sb_put(p->out, ")");
 }
 
-static void lower_clip(gp *p, const ir_expr *e, int max) {
+static void emit_clip(gp *p, const ir_expr *e, int max) {
     (void)max;
     helper_clip(p, e->a[0]->type);
     args(p, "hfx_clip", e->a, 1);
 }
 
-static void lower_d3dcolor(gp *p, const ir_expr *e, int max) {
+static void emit_d3dcolor(gp *p, const ir_expr *e, int max) {
     (void)max;
     sb_put(p->out, "ivec4(");
     glsl_expr(p, e->a[0], PREC_POSTFIX);
@@ -560,7 +566,7 @@ static void lower_d3dcolor(gp *p, const ir_expr *e, int max) {
 }
 
 /* GLSL's dot is float only: integer vectors go through float and back. */
-static void lower_dot(gp *p, const ir_expr *e, int max) {
+static void emit_dot(gp *p, const ir_expr *e, int max) {
     (void)max;
     if (!is_float(e->type->base)) sb_printf(p->out, "%s(", ty(p, e->type));
     sb_put(p->out, "dot(");
@@ -570,9 +576,9 @@ static void lower_dot(gp *p, const ir_expr *e, int max) {
     sb_put(p->out, is_float(e->type->base) ? ")" : "))");
 }
 
-static void lower_mul(gp *p, const ir_expr *e, int max) { print_mul(p, e, max); }
+static void emit_mul(gp *p, const ir_expr *e, int max) { print_mul(p, e, max); }
 
-static void lower_ldexp(gp *p, const ir_expr *e, int max) {
+static void emit_ldexp(gp *p, const ir_expr *e, int max) {
     wrap_open(p, PREC_MUL, max);
     glsl_expr(p, e->a[0], PREC_MUL);
     sb_put(p->out, " * ");
@@ -580,7 +586,7 @@ static void lower_ldexp(gp *p, const ir_expr *e, int max) {
     wrap_close(p, PREC_MUL, max);
 }
 
-static void lower_isfinite(gp *p, const ir_expr *e, int max) {
+static void emit_isfinite(gp *p, const ir_expr *e, int max) {
     (void)max;
     if (ncomp(e->a[0]->type) != 1 && !p->legacy) { /* a component is NaN, infinite, or neither */
         args(p, "equal(isnan", e->a, 1);
@@ -601,7 +607,7 @@ static void lower_isfinite(gp *p, const ir_expr *e, int max) {
     args(p, "hfx_isfinite", e->a, 1);
 }
 
-static void lower_frexp(gp *p, const ir_expr *e, int max) {
+static void emit_frexp(gp *p, const ir_expr *e, int max) {
     (void)max;
     if (ncomp(e->a[0]->type) != 1 && !p->legacy) { /* per component; 0 has exponent 0 and mantissa 0 */
         helper_typed(p, "frexp", e->type,
@@ -618,7 +624,7 @@ static void lower_frexp(gp *p, const ir_expr *e, int max) {
 }
 
 /* asfloat / asint / asuint: GLSL's bit casts; a same-type call is a constructor. */
-static void lower_reinterpret(gp *p, const ir_expr *e, int max) {
+static void emit_reinterpret(gp *p, const ir_expr *e, int max) {
     (void)max;
     hfx_base from = e->a[0]->type->base, to = e->type->base;
     const char *fn = NULL;
@@ -631,23 +637,24 @@ static void lower_reinterpret(gp *p, const ir_expr *e, int max) {
     args(p, fn, e->a, 1);
 }
 
-static void lower_unsupported(gp *p, const ir_expr *e, int max) {
+static void emit_unsupported(gp *p, const ir_expr *e, int max) {
     (void)max;
     glsl_error(p, e->loc, hfx_arena_printf(p->c->arena, "'%s': intrinsic is not supported", hfx_intrinsic_name((int)e->intrin)));
 }
 
-static const struct lowering {
-    const char *glsl;
-    lower_fn *lower;
-} lowerings[HFX_INTR_COUNT] = {
-#define HFX_INTRINSIC(id, name, mn, mx, sig, dim, form, glsl, how, ev) [HFX_INTR_##id] = {glsl, lower_##how},
+/* The GLSL columns of check/intrinsics.def: each row's emitter and GLSL function. */
+static const struct glsl_row {
+    emit_fn *emit;
+    const char *fn;
+} rows[HFX_INTR_COUNT] = {
+#define HFX_INTRINSIC(id, name, mn, mx, sig, dim, texf, lower, ev, glsl_emit, glsl_fn) [HFX_INTR_##id] = {emit_##glsl_emit, glsl_fn},
 #include "check/intrinsics.def"
 #undef HFX_INTRINSIC
 };
 
-static const char *glsl_name_of(ir_intrin i) { return lowerings[i].glsl; }
+static const char *glsl_name_of(ir_intrin i) { return rows[i].fn; }
 
 void glsl_intrinsic(gp *p, const ir_expr *e, int max) {
     if ((unsigned)e->intrin >= HFX_INTR_COUNT) { glsl_error(p, e->loc, "unknown intrinsic"); return; }
-    lowerings[e->intrin].lower(p, e, max);
+    rows[e->intrin].emit(p, e, max);
 }

@@ -30,27 +30,27 @@ static hfx_fx_effect *sample_effect(void) {
     hfx_fx_param *p = fx->params;
     /* 0: float4x4 world : World */
     p[0] = (hfx_fx_param){dup("world"), dup("World"), dup("world"), HFX_CLASS_MATRIX, HFX_TYPE_FLOAT, 4, 4, 0,
-                          HFX_NONE, HFX_NONE, 0, 0, 16, HFX_NONE, 0, HFX_NONE, 0, NULL, dup("sample.fx"), 3, 7};
+                          HFX_NONE, HFX_NONE, 0, 0, 16, HFX_NONE, 0, HFX_NONE, 0, NULL, dup("sample.fx"), 3, 7, {0}};
     /* 1: float4 color <UIName, UIMin> = {0.05, 0.05, 0.05, 1} */
     p[1] = (hfx_fx_param){dup("color"), NULL, dup("color"), HFX_CLASS_VECTOR, HFX_TYPE_FLOAT, 1, 4, 0,
-                          HFX_NONE, HFX_NONE, 0, 16, 4, 0, 2, HFX_NONE, 0, NULL, NULL, 0, 0};
+                          HFX_NONE, HFX_NONE, 0, 16, 4, 0, 2, HFX_NONE, 0, NULL, NULL, 0, 0, {0}};
     /* 2: struct { float3 d; int on; } lights[2] */
     p[2] = (hfx_fx_param){dup("lights"), NULL, dup("lights"), HFX_CLASS_STRUCT, HFX_TYPE_VOID, 0, 0, 2,
-                          HFX_NONE, 5, 2, 20, 8, HFX_NONE, 0, HFX_NONE, HFX_FX_PARAM_SHARED, NULL, NULL, 0, 0};
+                          HFX_NONE, 5, 2, 20, 8, HFX_NONE, 0, HFX_NONE, HFX_FX_PARAM_SHARED, NULL, NULL, 0, 0, {0}};
     /* 3: texture2D tex; 4: sampler s; */
     p[3] = (hfx_fx_param){dup("tex"), NULL, NULL, HFX_CLASS_OBJECT, HFX_TYPE_TEXTURE2D, 0, 0, 0,
-                          HFX_NONE, HFX_NONE, 0, 28, 0, HFX_NONE, 0, HFX_NONE, 0, NULL, NULL, 0, 0};
+                          HFX_NONE, HFX_NONE, 0, 28, 0, HFX_NONE, 0, HFX_NONE, 0, NULL, NULL, 0, 0, {0}};
     p[4] = (hfx_fx_param){dup("s"), NULL, dup("s"), HFX_CLASS_OBJECT, HFX_TYPE_SAMPLER, 0, 0, 0,
-                          HFX_NONE, HFX_NONE, 0, 28, 0, HFX_NONE, 0, 0, 0, NULL, NULL, 0, 0};
+                          HFX_NONE, HFX_NONE, 0, 28, 0, HFX_NONE, 0, 0, 0, NULL, NULL, 0, 0, {0}};
     /* 5, 6: the elements; 7, 8: the members of element 0 */
     p[5] = (hfx_fx_param){dup("lights"), NULL, NULL, HFX_CLASS_STRUCT, HFX_TYPE_VOID, 0, 0, 0,
-                          2, 7, 2, 20, 4, HFX_NONE, 0, HFX_NONE, 0, NULL, NULL, 0, 0};
+                          2, 7, 2, 20, 4, HFX_NONE, 0, HFX_NONE, 0, NULL, NULL, 0, 0, {0}};
     p[6] = (hfx_fx_param){dup("lights"), NULL, NULL, HFX_CLASS_STRUCT, HFX_TYPE_VOID, 0, 0, 0,
-                          2, HFX_NONE, 0, 24, 4, HFX_NONE, 0, HFX_NONE, 0, dup("not really a string param"), NULL, 0, 0};
+                          2, HFX_NONE, 0, 24, 4, HFX_NONE, 0, HFX_NONE, 0, dup("not really a string param"), NULL, 0, 0, {0}};
     p[7] = (hfx_fx_param){dup("d"), dup("DIR"), dup("d"), HFX_CLASS_VECTOR, HFX_TYPE_FLOAT, 1, 3, 0,
-                          5, HFX_NONE, 0, 20, 3, HFX_NONE, 0, HFX_NONE, 0, NULL, NULL, 0, 0};
+                          5, HFX_NONE, 0, 20, 3, HFX_NONE, 0, HFX_NONE, 0, NULL, NULL, 0, 0, {0}};
     p[8] = (hfx_fx_param){dup("on"), NULL, dup("on"), HFX_CLASS_SCALAR, HFX_TYPE_INT, 1, 1, 0,
-                          5, HFX_NONE, 0, 23, 1, HFX_NONE, 0, HFX_NONE, 0, NULL, NULL, 0, 0};
+                          5, HFX_NONE, 0, 23, 1, HFX_NONE, 0, HFX_NONE, 0, NULL, NULL, 0, 0, {0}};
     fx->value_words = 28;
     fx->values = calloc(28, sizeof *fx->values);
     for (int i = 0; i < 16; i++) fx->values[i] = f2u(i % 5 == 0 ? 1.0f : 0.0f);
@@ -72,14 +72,14 @@ static hfx_fx_effect *sample_effect(void) {
 
     fx->state_count = 4;
     fx->states = calloc(4, sizeof *fx->states);
-    fx->states[0] = (hfx_fx_state){5, 0, HFX_FX_VALUE_INT, 0, 3, {0}, 0, 12, 5};
-    fx->states[1] = (hfx_fx_state){7, 1, HFX_FX_VALUE_FLOAT, 4, 0, {0.25f, -1.5f, 2.0f, 1.0f}, 0, 13, 9};
-    fx->states[2] = (hfx_fx_state){9, 0, HFX_FX_VALUE_PARAM, 0, 0, {0}, 3, 14, 1};
-    fx->states[3] = (hfx_fx_state){11, 0, HFX_FX_VALUE_PROGRAM, 0, 0, {0}, 0, 15, 1};
+    fx->states[0] = (hfx_fx_state){5, 0, HFX_FX_VALUE_INT, 0, 3, {0}, 0, 12, 5, 0};
+    fx->states[1] = (hfx_fx_state){7, 1, HFX_FX_VALUE_FLOAT, 4, 0, {0.25f, -1.5f, 2.0f, 1.0f}, 0, 13, 9, 0};
+    fx->states[2] = (hfx_fx_state){9, 0, HFX_FX_VALUE_PARAM, 0, 0, {0}, 3, 14, 1, 0};
+    fx->states[3] = (hfx_fx_state){11, 0, HFX_FX_VALUE_PROGRAM, 0, 0, {0}, 0, 15, 1, 0};
 
     fx->sampler_count = 1;
     fx->samplers = calloc(1, sizeof *fx->samplers);
-    fx->samplers[0] = (hfx_fx_sampler){4, 3, HFX_FX_DIM_CUBE, 0, 1};
+    fx->samplers[0] = (hfx_fx_sampler){4, 3, HFX_FX_DIM_CUBE, 0, 1, 0};
 
     fx->program_count = 1;
     fx->programs = calloc(1, sizeof *fx->programs);
@@ -512,7 +512,7 @@ static hfx_fx_effect *effect_with_expression(uint32_t *state) {
     hfx_fx_effect *fx = sample_effect();
     *state = fx->state_count;
     fx->states = realloc(fx->states, (fx->state_count + 1) * sizeof *fx->states);
-    fx->states[fx->state_count++] = (hfx_fx_state){HFX_ST_ALPHAREF, 0, HFX_FX_VALUE_EXPR, 5, 0, {0}, 0, 3, 7};
+    fx->states[fx->state_count++] = (hfx_fx_state){HFX_ST_ALPHAREF, 0, HFX_FX_VALUE_EXPR, 5, 0, {0}, 0, 3, 7, 0};
     const uint32_t code[5] = {hfx_evc_word(HFX_EVC_PARAM, HFX_EV_FLOAT, 1), 16, hfx_evc_word(HFX_EVC_CONST, HFX_EV_FLOAT, 1),
                               f2u(255.0f), hfx_evc_word(HFX_EVC_BINARY, HFX_EV_MUL, 0)};
     fx->expr_words = 5;

@@ -129,7 +129,7 @@ static void both_spellings_on_every_seed(void) {
         char a[1024], b[1024];
         snprintf(a, sizeof a, "%s/fxc_%s.hfxo", tmp, good[i]);
         snprintf(b, sizeof b, "%s/gnu_%s.hfxo", tmp, good[i]);
-        EXPECT_STATUS(0, "/T fx_2_0 /Fo '%s' /nologo '%s'", a, seed);
+        EXPECT_STATUS(0, "/T fx_2_0 --format hfxo /Fo '%s' /nologo '%s'", a, seed);
         run_result r = run_expecting(0, "-o '%s' '%s'", b, seed);
         CHECK_STR(r.out, "");
         run_free(&r);
@@ -256,18 +256,17 @@ static void emit_glsl_shows_preshaders(void) {
 
 static void one_entry_point(void) {
     char *seed = test_seed_path("ambient.fx");
-    /* fxc's /T ps_3_0 /E: the shader's bytecode, version token ps_3_0 first, END last (issue 32) */
-    char out[1024];
-    snprintf(out, sizeof out, "%s/entry.pso", tmp);
-    EXPECT_STATUS(0, "/T ps_3_0 /E mainPS /Fo '%s' '%s'", out, seed);
-    size_t size = 0;
-    unsigned char *code = (unsigned char *)test_read_file(out, &size);
-    CHECK(code != NULL && size >= 8 && size % 4 == 0);
-    if (code && size >= 8) {
-        CHECK_INT(code[0] | code[1] << 8 | code[2] << 16 | (uint32_t)code[3] << 24, 0xffff0300u);
-        CHECK_INT(code[size - 4] | code[size - 3] << 8 | code[size - 2] << 16 | (uint32_t)code[size - 1] << 24, 0x0000ffffu);
+    hfx_fx_effect *fx = compile_to("/T ps_3_0 /E mainPS -o", "entry.hfxo", seed);
+    if (fx) {
+        CHECK_INT(fx->top_param_count, 4);
+        CHECK_INT(fx->technique_count, 1);
+        CHECK_STR(fx->techniques[0].name, "mainPS");
+        CHECK_INT(fx->pass_count, 1);
+        CHECK_STR(fx->passes[0].name, "p0");
+        CHECK_INT(fx->program_count, 1);
+        CHECK(fx->programs[0].code[HFX_STAGE_FRAGMENT][HFX_TARGET_GLSL330].data != NULL);
     }
-    free(code);
+    hfx_fx_effect_free(fx);
     run_result r = run_expecting(1, "-T vs_3_0 -E nope '%s'", seed);
     char expected[2048];
     snprintf(expected, sizeof expected, "%s(1,1): error X3501: 'nope': entrypoint not found\n", seed);
@@ -324,7 +323,7 @@ static void defines_and_include_dirs(void) {
     write_text(path, "#include \"common.fxh\"\nfloat4 c = float4(COLOR_R, 0, 0, 1);\n");
     snprintf(out, sizeof out, "%s/defs.hfxo", tmp);
     static const char *const spellings[] = {"-I '%s' -D COLOR_R=0.5 -DEXTRA=2 -o '%s' '%s'",
-                                            "/I '%s' /D COLOR_R=0.5 /D EXTRA=2 /Fo '%s' '%s'"};
+                                            "/I '%s' /D COLOR_R=0.5 /D EXTRA=2 --format hfxo /Fo '%s' '%s'"};
     for (int k = 0; k < 2; k++) {
         remove(out);
         run_result r = run_expecting(0, spellings[k], dir, out, path);
@@ -545,6 +544,48 @@ static void reflect_json_interface(void) {
 }
 #endif
 
+/* fxc's outputs: /Fo writes fx_2_0 (its bytes: tests/compiler/effect/test_fx2_write.c's tiny
+ * effect, worked out by hand), /Fh a C header of them named by /Vn, /Fc the listing; -o keeps
+ * writing .hfxo; an effect with shaders waits for the D3D9 back end, with a message saying so. */
+static void fxc_outputs(void) {
+    char src[1024], fxo[1024], h[1024], lst[1024];
+    snprintf(src, sizeof src, "%s/tiny.fx", tmp);
+    write_text(src, "float Ref = 0.5;\ntechnique T { pass P { CullMode = None; } }\n");
+    snprintf(fxo, sizeof fxo, "%s/tiny.fxo", tmp);
+    snprintf(h, sizeof h, "%s/tiny.h", tmp);
+    snprintf(lst, sizeof lst, "%s/tiny.lst", tmp);
+    run_result r = run_expecting(0, "/T fx_2_0 /nologo /Fo '%s' /Fh '%s' /Vn g_tiny /Fc '%s' '%s'", fxo, h, lst, src);
+    CHECK_STR(r.err, "");
+    run_free(&r);
+    size_t size = 0;
+    char *bin = test_read_file(fxo, &size), *header = test_read_file(h, NULL), *listing = test_read_file(lst, NULL);
+    CHECK_INT(size, 45 * 4);
+    CHECK(bin && (uint8_t)bin[0] == 0x01 && (uint8_t)bin[1] == 0x09 && (uint8_t)bin[2] == 0xff && (uint8_t)bin[3] == 0xfe);
+    static const char head[] = "#if 0\n//\n// FX Version: fx_2_0\n";
+    CHECK(header && strncmp(header, head, sizeof head - 1) == 0);
+    CHECK_CONTAINS(header, "#endif\n\nconst BYTE g_tiny[] =\n{\n      1,   9, 255, 254,  92,   0,   0,   0,\n");
+    CHECK_CONTAINS(header, ",\n      0,   0,   0,   0\n};\n"); /* 180 bytes: the last line holds 4 (no resources) */
+    CHECK(listing != NULL);
+    if (listing) CHECK_CONTAINS(listing, "float Ref = 0.5;\n");
+    if (listing) CHECK_CONTAINS(listing, "    pass P\n    {\n        CullMode = None;\n    }\n");
+    if (listing && header) CHECK(strstr(header, listing) != NULL);
+    free(bin), free(header), free(listing);
+    /* the same file read back by hfxc: the fxc binary is an input like any */
+    hfx_fx_effect *fx = compile_to("-o", "back.hfxo", fxo);
+    if (fx) {
+        CHECK_INT(fx->top_param_count, 1);
+        CHECK_INT(fx->states[fx->passes[0].first_state].i, 1);
+    }
+    hfx_fx_effect_free(fx);
+    /* shaders: the D3D9 back end's business, said plainly */
+    char *seed = test_seed_path("ambient.fx");
+    if (!seed) return;
+    r = run_expecting(1, "/T fx_2_0 /Fo '%s' '%s'", fxo, seed);
+    CHECK_CONTAINS(r.err, "error X9011: vertex shader: no Direct3D 9 bytecode for this shader");
+    run_free(&r);
+    free(seed);
+}
+
 int main(void) {
     test_require_seeds();
     const char *build = getenv("HFX_BUILD_DIR");
@@ -559,6 +600,7 @@ int main(void) {
     RUN(emit_glsl_writes_each_stage);
     RUN(emit_glsl_shows_preshaders);
     RUN(one_entry_point);
+    RUN(fxc_outputs);
     RUN(defines_and_include_dirs);
     RUN(ast_werror_and_targets);
 #ifdef HFX_HAVE_CJSON

@@ -1,11 +1,19 @@
-/* intrinsics.c: rewrites intrinsic calls into forms every GLSL target expresses directly.
- * mul(float3, float4x4) reaches the IR as mul(v, (float3x4)M); since
+/* intrinsics.c: rewrites intrinsic calls into forms every target expresses directly, by the
+ * IR column of check/intrinsics.def (LOWER_*), the same for every back end.
+ * LOWER_MUL: mul(float3, float4x4) reaches the IR as mul(v, (float3x4)M); since
  * mul(v, M3x4) = mul(float4(v, 0), M4x4).xyzw, the truncated matrix becomes a padded vector,
  * which needs no non-square matrix type (GLSL 110 has none) and no matrix copy.
- * Componentwise intrinsics of matrices (abs(M), lerp(M, N, t), saturate(M)...), which GLSL
- * has only for vectors, become a matrix built row by row; so do bool matrices (M <= d). The rest of the intrinsics map one
- * to one in glsl_intrin.c. */
+ * LOWER_ROWS: componentwise intrinsics of matrices (abs(M), lerp(M, N, t), saturate(M)...),
+ * which GLSL and D3D9 bytecode have only for vectors, become a matrix built row by row; so do
+ * bool matrices (M <= d), whatever the operator. The rest of the intrinsics reach each back
+ * end's emitter as they are (glsl_intrin.c for GLSL). */
 #include "ir/ir.h"
+
+/* The IR rewrite of the row of an intrinsic call. */
+static hfx_intr_lower lowering_of(const ir_expr *e) {
+    const hfx_intrinsic_info *info = e->kind == IE_INTRIN ? hfx_intrinsic_info_of((int)e->intrin) : NULL;
+    return info ? info->lower : LOWER_NONE;
+}
 
 static bool truncated_matrix(const ir_expr *e) {
     if (e->kind != IE_CONVERT || e->type->kind != TY_MATRIX) return false;
@@ -37,19 +45,19 @@ static ir_expr *first(ir_ctx *c, ir_expr *v, const hfx_type *ty) {
 
 static void lower_mul(ir_ctx *c, ir_expr **slot, void *data) {
     ir_expr *e = *slot;
-    if (e->kind != IE_INTRIN || e->intrin != HFX_INTR_MUL || e->n != 2 || e->type->kind != TY_VECTOR) return;
+    if (lowering_of(e) != LOWER_MUL || e->n != 2 || e->type->kind != TY_VECTOR) return;
     ir_expr *a = e->a[0], *b = e->a[1];
     if (a->type->kind == TY_VECTOR && truncated_matrix(b) && a->type->cols == b->type->rows) {
         const hfx_type *m = b->a[0]->type;
         ir_expr *r = ir_new_expr(c, IE_INTRIN, hfx_type_vector(c->types, e->type->base, m->cols), e->loc, 2);
-        r->intrin = HFX_INTR_MUL;
+        r->intrin = e->intrin;
         r->a[0] = pad(c, a, m->rows);
         r->a[1] = b->a[0];
         *slot = first(c, r, e->type);
     } else if (b->type->kind == TY_VECTOR && truncated_matrix(a) && b->type->cols == a->type->cols) {
         const hfx_type *m = a->a[0]->type;
         ir_expr *r = ir_new_expr(c, IE_INTRIN, hfx_type_vector(c->types, e->type->base, m->rows), e->loc, 2);
-        r->intrin = HFX_INTR_MUL;
+        r->intrin = e->intrin;
         r->a[0] = a->a[0];
         r->a[1] = pad(c, b, m->cols);
         *slot = first(c, r, e->type);
@@ -57,9 +65,7 @@ static void lower_mul(ir_ctx *c, ir_expr **slot, void *data) {
 }
 
 static bool componentwise_on_matrix(const ir_expr *e) {
-    if (e->kind != IE_INTRIN || e->type->kind != TY_MATRIX || e->type->rows < 2 || e->type->cols < 2) return false;
-    hfx_sig sig = hfx_intrinsic_info_of((int)e->intrin)->sig;
-    if (sig != SIG_SAME && sig != SIG_SAME_FLOAT) return false;
+    if (lowering_of(e) != LOWER_ROWS || e->type->kind != TY_MATRIX || e->type->rows < 2 || e->type->cols < 2) return false;
     for (uint32_t i = 0; i < e->n; i++)
         if (!hfx_type_equal(e->a[i]->type, e->type) || ir_has_side_effects(e->a[i])) return false;
     return true;
@@ -182,7 +188,7 @@ static void find_needs(ir_ctx *c, ir_expr **slot, void *data) {
     const ir_expr *e = *slot;
     needs *n = data;
     if (!e->type) return;
-    if (e->kind == IE_INTRIN && e->intrin == HFX_INTR_MUL && e->n == 2 && e->type->kind == TY_VECTOR)
+    if (lowering_of(e) == LOWER_MUL && e->n == 2 && e->type->kind == TY_VECTOR)
         n->mul |= truncated_matrix(e->a[0]) || truncated_matrix(e->a[1]);
     if (e->kind == IE_INTRIN && e->type->kind == TY_MATRIX) n->componentwise = true;
     if (is_bool_matrix(e)) n->bool_matrix = true;

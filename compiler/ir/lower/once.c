@@ -133,7 +133,7 @@ static void coordinate_once(once *o, ir_expr **slot) {
     ir_expr *e = *slot;
     const hfx_intrinsic_info *info = hfx_intrinsic_info_of((int)e->intrin);
     if (!info || info->sig != SIG_TEX || e->n != 2) return;
-    if (info->form != TEXF_LOD && info->form != TEXF_BIAS && info->form != TEXF_PROJ) return;
+    if (info->tex_form != TEXF_LOD && info->tex_form != TEXF_BIAS && info->tex_form != TEXF_PROJ) return;
     if (!o->fn) return;
     ir_expr *set;
     e->a[1] = read_once(o, e->a[1], &set);
