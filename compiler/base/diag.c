@@ -10,6 +10,7 @@ void hfx_diags_init(hfx_diags *d, hfx_arena *arena, unsigned flags) {
     memset(d, 0, sizeof *d);
     d->arena = arena;
     d->flags = flags;
+    d->dump_text.arena = arena; /* the dumps live as long as the messages */
 }
 
 uint32_t hfx_diags_add_file(hfx_diags *d, const char *name, const char *path, const char *text, uint32_t size) {

@@ -7,6 +7,7 @@
 #include <stdint.h>
 
 #include "base/arena.h"
+#include "base/sbuf.h"
 #include "hfx/hfxc.h"
 
 typedef struct hfx_loc {
@@ -28,6 +29,10 @@ typedef struct hfx_diags {
     hfxc_diag *items; uint32_t count, cap;
     uint32_t errors, warnings;
     unsigned flags;   /* hfxc_options.flags: HFXC_WERROR, HFXC_NO_WARNINGS here; HFXC_PACK_UNIFORMS for the builder */
+    /* hfxc_options.dump_ir, carried like flags to ir/lower/passes.c: the pass after which
+     * each stage's IR is dumped ("all": every pass; NULL: none), and the dumps (in the arena). */
+    const char *dump_ir;
+    sbuf dump_text;
 } hfx_diags;
 
 /* Common fxc error numbers. */

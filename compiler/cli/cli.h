@@ -35,6 +35,8 @@ typedef struct cli_options {
     const char *header_name; /* /Vn: its array's name (default g_<input's stem>) */
     const char *listing;     /* /Fc: the effect's listing (fx2_list.c's) */
     int matrix_packing;      /* /Zpr: 1 (row_major), /Zpc: -1 (column_major, fxc's default), 0 unsaid */
+    const char *dump_ir;     /* --dump-ir[=PASS]: a pass's name or "all" (hfxc_options.dump_ir) */
+    const char *dump_ir_file;/* --dump-ir-file: where the dumps go (default stderr) */
 } cli_options;
 
 enum { CLI_FORMAT_HFXO, CLI_FORMAT_FXC };
@@ -44,6 +46,7 @@ typedef struct cli_job {
     const char *input;
     char *diagnostics;       /* fxc-style lines, malloc'ed */
     char *ast;               /* --ast dump, malloc'ed */
+    char *ir_dump;           /* --dump-ir text, malloc'ed */
     char *error;             /* an output that could not be written, malloc'ed */
     hfx_fx_effect *effect;   /* kept for --reflect / --annotations */
     bool ok;

@@ -222,6 +222,7 @@ static void compile_one(const cli_options *o, cli_job *job, hfxc_session *sessio
     opt.entry = o->entry;
     opt.profile = o->profile;
     opt.session = session;
+    opt.dump_ir = o->dump_ir;
     opt.flags = (o->werror ? HFXC_WERROR : 0) | (o->no_warnings ? HFXC_NO_WARNINGS : 0) | (o->ast ? HFXC_PARSE_ONLY : 0) |
                 (o->pack_uniforms ? HFXC_PACK_UNIFORMS : 0) | (o->no_self_check ? HFXC_NO_SELF_CHECK : 0) |
                 (o->no_preshaders ? HFXC_NO_PRESHADERS : 0) |
@@ -233,6 +234,7 @@ static void compile_one(const cli_options *o, cli_job *job, hfxc_session *sessio
     }
     job->diagnostics = hfxc_diagnostics_text(r);
     job->ok = hfxc_result_ok(r) != 0;
+    if (o->dump_ir) job->ir_dump = hfxc_result_ir_dump(r);
     if (o->ast) {
         job->ast = hfxc_result_ast_dump(r);
     } else if (job->ok) {

@@ -30,6 +30,10 @@ static const char usage_text[] =
     "  --reflect             print the effect and its compiled interface as JSON\n"
     "  --annotations         print parameters, annotations, techniques and states as JSON\n"
     "  --ast                 print the syntax tree and stop\n"
+    "  --dump-ir[=PASS]      print each shader's IR after PASS (default: after every pass) on\n"
+    "                        stderr, each dump headed `// after PASS: file(line,col)`\n"
+    "  --dump-ir-file FILE   write those dumps to FILE instead (alone: after every pass)\n"
+    "  --list-passes         print the compiler's passes in the order they run, and stop\n"
     "  --disassemble, /dumpbin  print the listing of effects fxc compiled (fx_2_0 .fxo / .fxb,\n"
     "                        uncompressed XNA .xnb): parameters, techniques, states, shaders\n"
     "  --separate-uniforms   one GLSL uniform per parameter; by default float parameters\n"
@@ -102,7 +106,8 @@ static const char *value_of(const char *arg, const char *name, int argc, char **
 
 typedef enum {
     OPT_OUTPUT, OPT_DEFINE, OPT_INCLUDE, OPT_PROFILE, OPT_ENTRY, OPT_TARGET, OPT_EMIT, OPT_JOBS, OPT_DEPFILE, OPT_DEP_TARGET,
-    OPT_FXC_OUTPUT, OPT_FORMAT, OPT_HEADER, OPT_HEADER_NAME, OPT_LISTING
+    OPT_FXC_OUTPUT, OPT_FORMAT, OPT_HEADER, OPT_HEADER_NAME, OPT_LISTING,
+    OPT_DUMP_FILE
 } opt_kind;
 
 static const struct {
@@ -111,7 +116,7 @@ static const struct {
 } valued[] = {
     {"--output", OPT_OUTPUT}, {"--target", OPT_TARGET}, {"--emit-glsl", OPT_EMIT}, {"--jobs", OPT_JOBS},
     {"--define", OPT_DEFINE}, {"--include", OPT_INCLUDE}, {"--depfile", OPT_DEPFILE},
-    {"-MF", OPT_DEPFILE}, {"-MT", OPT_DEP_TARGET},
+    {"-MF", OPT_DEPFILE}, {"-MT", OPT_DEP_TARGET}, {"--dump-ir-file", OPT_DUMP_FILE},
     {"-o", OPT_OUTPUT}, {"-D", OPT_DEFINE}, {"-I", OPT_INCLUDE}, {"-T", OPT_PROFILE}, {"-E", OPT_ENTRY},
     {"-j", OPT_JOBS}, {"-Fo", OPT_FXC_OUTPUT}, {"--format", OPT_FORMAT}, {"/Fh", OPT_HEADER}, {"-Fh", OPT_HEADER},
     {"/Vn", OPT_HEADER_NAME}, {"-Vn", OPT_HEADER_NAME}, {"/Fc", OPT_LISTING}, {"-Fc", OPT_LISTING},
@@ -151,6 +156,7 @@ static int set_valued(cli_options *o, opt_kind kind, const char *v) {
     case OPT_EMIT: o->emit_glsl = v; break;
     case OPT_DEPFILE: o->depfile = true, o->depfile_path = v; break;
     case OPT_DEP_TARGET: o->dep_target = v; break;
+    case OPT_DUMP_FILE: o->dump_ir_file = v; break;
     case OPT_JOBS: {
         char *end;
         long n = strtol(v, &end, 10);
@@ -162,8 +168,26 @@ static int set_valued(cli_options *o, opt_kind kind, const char *v) {
     return EXIT_OK;
 }
 
+/* --list-passes: the pass table, one `name  why` a line. */
+static void list_passes(void) {
+    const char *why, *name;
+    for (size_t i = 0; (name = hfxc_pass_name(i, &why)) != NULL; i++) printf("%-12s %s\n", name, why);
+}
+
+/* --dump-ir (after every pass) or --dump-ir=PASS, PASS one of the table's names. */
+static int dump_ir(cli_options *o, const char *a) {
+    const char *want = a[9] == '=' ? a + 10 : "all", *name;
+    for (size_t i = 0; strcmp(want, "all") != 0; i++) {
+        if (!(name = hfxc_pass_name(i, NULL))) return usage_error("unknown pass '%s' (hfxc --list-passes)", want);
+        if (!strcmp(name, want)) break;
+    }
+    o->dump_ir = want;
+    return EXIT_OK;
+}
+
 static int flag(cli_options *o, const char *a, bool *handled) {
     *handled = true;
+    if (!strncmp(a, "--dump-ir", 9) && (!a[9] || a[9] == '=')) return dump_ir(o, a);
     if (!strcmp(a, "--reflect")) o->reflect = true;
     else if (!strcmp(a, "--annotations")) o->annotations = true;
     else if (!strcmp(a, "--ast")) o->ast = true;
@@ -209,8 +233,13 @@ static int parse_args(int argc, char **argv, cli_options *o) {
             printf("%s\n", hfxc_version());
             return EXIT_OK;
         }
+        if (!strcmp(a, "--list-passes")) {
+            list_passes();
+            return EXIT_OK;
+        }
         bool handled;
-        flag(o, a, &handled);
+        int rc = flag(o, a, &handled);
+        if (rc != EXIT_OK) return rc;
         if (handled) continue;
         for (size_t k = 0; k < sizeof valued / sizeof *valued && !handled; k++) {
             bool missing = false;
@@ -218,7 +247,7 @@ static int parse_args(int argc, char **argv, cli_options *o) {
             if (missing) return usage_error("option '%s' needs a value", a);
             if (!v) continue;
             handled = true;
-            int rc = set_valued(o, valued[k].kind, v);
+            rc = set_valued(o, valued[k].kind, v);
             if (rc != EXIT_OK) return rc;
         }
         if (!handled) return usage_error(a[0] == '/' ? "no such file or option '%s'" : "unknown option '%s'", a);
@@ -250,9 +279,10 @@ static int check_inputs(const cli_options *o) {
     return EXIT_OK;
 }
 
-static void print_results(const cli_options *o, cli_job *jobs, size_t n, size_t *failed) {
+static void print_results(const cli_options *o, cli_job *jobs, size_t n, size_t *failed, FILE *dumps) {
     *failed = 0;
     for (size_t i = 0; i < n; i++) {
+        if (jobs[i].ir_dump) fputs(jobs[i].ir_dump, dumps);
         if (jobs[i].diagnostics && jobs[i].diagnostics[0]) fputs(jobs[i].diagnostics, stderr);
         if (jobs[i].error) fprintf(stderr, "hfxc: error: %s\n", jobs[i].error);
         if (jobs[i].ast) fputs(jobs[i].ast, stdout);
@@ -314,6 +344,7 @@ int main(int argc, char **argv) {
     memset(&o, 0, sizeof o);
     o.pack_uniforms = true; /* what the runtime does when it compiles a .fx itself */
     int rc = parse_args(argc, argv, &o);
+    if (o.dump_ir_file && !o.dump_ir) o.dump_ir = "all"; /* a file for the dumps asks for them */
     if (rc < 0) rc = check_inputs(&o);
     else goto done;
     if (rc != EXIT_OK) goto done;
@@ -329,9 +360,13 @@ int main(int argc, char **argv) {
     for (size_t i = 0; i < o.input_count; i++) jobs[i].input = o.inputs[i];
     cli_run_jobs(&o, jobs, o.input_count, !o.quiet && o.input_count > 1 && isatty(STDERR_FILENO));
     size_t failed;
-    print_results(&o, jobs, o.input_count, &failed);
-    rc = failed ? EXIT_COMPILE : EXIT_OK;
+    FILE *dumps = o.dump_ir_file ? fopen(o.dump_ir_file, "w") : stderr;
+    if (!dumps) fprintf(stderr, "hfxc: error: cannot write '%s': %s\n", o.dump_ir_file, strerror(errno));
+    print_results(&o, jobs, o.input_count, &failed, dumps ? dumps : stderr);
+    rc = failed || !dumps ? EXIT_COMPILE : EXIT_OK;
+    if (dumps && dumps != stderr && fclose(dumps) != 0) rc = EXIT_COMPILE;
     for (size_t i = 0; i < o.input_count; i++) {
+        free(jobs[i].ir_dump);
         free(jobs[i].diagnostics);
         free(jobs[i].ast);
         free(jobs[i].error);

@@ -681,7 +681,7 @@ static ir_shader *finish(d3d9_tx *t) {
     f->name = f->glsl = src->name;
     f->ret = src->ret;
     f->src = src;
-    f->is_entry = f->reached = true;
+    f->is_entry = true;
     f->params = t->params;
     f->param_count = t->param_count;
     t->depth = 0;

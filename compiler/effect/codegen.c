@@ -106,8 +106,9 @@ static hfx_fx_attribute *assign_locations(hfx_arena *a, const strset *sems) {
 static ir_shader *build_stage(hfx_codegen *cg, const hfx_expr *e, ir_stage st) {
     uint32_t errors = cg->c.diags->errors;
     ir_shader *sh = ir_build(&cg->c, e, st);
-    if (!sh || cg->c.diags->errors > errors || ir_lower(&cg->c, sh) != 0) return NULL;
-    if (cg->pack && !(cg->c.diags->flags & HFXC_NO_PRESHADERS)) ir_pass_preshade(&cg->c, sh);
+    bool preshade = cg->pack && !(cg->c.diags->flags & HFXC_NO_PRESHADERS);
+    unsigned opts = (cg->pack ? IR_LOWER_PACKED : 0) | (preshade ? IR_LOWER_PRESHADE : 0);
+    if (!sh || cg->c.diags->errors > errors || ir_lower(&cg->c, sh, opts) != 0) return NULL;
     return sh;
 }
 
@@ -389,8 +390,13 @@ static char *print_stage(hfx_codegen *cg, const ir_shader *sh, int s, const glsl
  * for an out-of-memory error. */
 static int program_of(hfx_codegen *cg, ir_shader *sh[2], bool flat_colors, hfx_loc loc, hfx_fx_program *out) {
     glsl_iface io = {0};
-    if (!(cg->c.diags->flags & HFXC_NO_DERIVED_VARYINGS))
-        io.derived_count = ir_pass_varyings(&cg->c, &sh[0], &sh[1], cg->pack, &io.derived);
+    ir_program p = {sh[0], sh[1], (cg->pack ? IR_LOWER_PACKED : 0) |
+                    (cg->c.diags->flags & HFXC_NO_DERIVED_VARYINGS ? 0 : IR_LOWER_DERIVE), NULL, 0};
+    ir_lower_program(&cg->c, &p);
+    sh[0] = p.vs;
+    sh[1] = p.ps;
+    io.derived = p.derived;
+    io.derived_count = p.derived_count;
     if (build_interface(cg, sh[0], sh[1], flat_colors, &io) != 0) return -1;
     if (copy_attributes(&io, out) != 0 || record_uses(cg, sh, out) != 0) goto oom;
     qsort(out->uniforms, out->uniform_count, sizeof *out->uniforms, cmp_uniform);
@@ -434,7 +440,8 @@ static bool bytecode_stage(hfx_codegen *cg, const d3d9_shader *s, ir_shader **sh
     if (!s) return true;
     uint32_t errors = cg->c.diags->errors;
     ir_shader *x = d3d9_to_ir(&cg->c, s, cg->pack);
-    if (!x || cg->c.diags->errors > errors || ir_lower(&cg->c, x) != 0) return false;
+    /* fxc made its preshaders already (d3d9_ir.c reads them): no preshade rows */
+    if (!x || cg->c.diags->errors > errors || ir_lower(&cg->c, x, cg->pack ? IR_LOWER_PACKED : 0) != 0) return false;
     return (*sh = x) != NULL;
 }
 

@@ -14,6 +14,7 @@
 #include "effect/fx2.h"
 #include "check/check.h"
 #include "effect.h"
+#include "ir/ir.h"
 #include "pp/token_cache.h"
 
 struct hfxc_result {
@@ -151,6 +152,7 @@ static hfxc_result *compile(const char *name, const char *text, size_t size, con
     hfx_arena_init(&r->arena);
     r->arena.limit = HFXC_MEMORY_FLOOR; /* the preprocessor adds HFXC_MEMORY_PER_BYTE per byte it reads */
     hfx_diags_init(&r->diags, &r->arena, opt ? opt->flags : 0);
+    r->diags.dump_ir = opt ? opt->dump_ir : NULL;
     jmp_buf escape;
     r->arena.escape = &escape;
     if (setjmp(escape) == 0) {
@@ -223,6 +225,16 @@ const char *hfxc_dependency_at(const hfxc_result *r, size_t i) {
 
 char *hfxc_result_ast_dump(const hfxc_result *r) {
     return r && r->ast ? hfx_ast_dump(r->ast) : strdup("");
+}
+
+char *hfxc_result_ir_dump(const hfxc_result *r) {
+    const sbuf *b = r ? &r->diags.dump_text : NULL;
+    return strdup(b && b->d ? b->d : "");
+}
+
+const char *hfxc_pass_name(size_t i, const char **why) {
+    if (why) *why = i < ir_pass_count() ? ir_pass_why((uint32_t)i) : NULL;
+    return i < ir_pass_count() ? ir_pass_name((uint32_t)i) : NULL;
 }
 
 char *hfxc_disassemble(const void *data, size_t size, const char *name, char **diagnostics) {

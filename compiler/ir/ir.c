@@ -620,7 +620,8 @@ static const hfx_func *find_entry(ir_ctx *c, const hfx_expr *compile) {
     return best;
 }
 
-/* Binds the entry's uniform parameters to the compile arguments (or their defaults). */
+/* Binds the entry's uniform parameters to the compile arguments (or their defaults): sh->args,
+ * which specialise puts in. */
 static bool bind_uniform_params(builder *b, const hfx_expr *compile, ir_func *entry) {
     uint32_t next = 0;
     for (uint32_t i = 0; i < entry->param_count; i++) {
@@ -640,7 +641,7 @@ static bool bind_uniform_params(builder *b, const hfx_expr *compile, ir_func *en
             cv->a[0] = val;
             val = cv;
         }
-        v->bound = val;
+        if (!ir_var_map_put(b->c, &b->sh->args, v, val)) return false;
     }
     return true;
 }

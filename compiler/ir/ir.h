@@ -4,9 +4,7 @@
  * resolved to ir_var / ir_func, intrinsics to ir_intrin, implicit conversions are IE_CONVERT.
  * Everything lives in the compilation's arena.
  *
- * Pass order (lower/passes.c, ir_lower): specialise -> arrays -> intrinsics -> lvalues -> fold
- * -> calls -> dce -> once -> flatten -> distances -> globals -> licm -> ranges -> uses -> check; codegen then runs
- * preshade on each stage and varyings on each program's pair.
+ * The passes over it, and their order, are one table: lower/passes.c.
  * glsl.c prints the result; a preshader or SPIR-V back end would read the same tree. */
 #ifndef HFX_IR_H
 #define HFX_IR_H
@@ -22,6 +20,7 @@ typedef struct ir_expr ir_expr;
 typedef struct ir_stmt ir_stmt;
 typedef struct ir_func ir_func;
 typedef struct ir_var ir_var;
+typedef struct ir_ctx ir_ctx;
 
 typedef enum { IR_VERTEX, IR_PIXEL } ir_stage;
 
@@ -33,6 +32,9 @@ typedef enum {
     IRV_SAMPLER   /* sampler parameter */
 } ir_var_kind;
 
+/* A variable: what it is, and the results of passes that later phases read (each says who
+ * writes and who reads it). A pass's own scratch about variables lives in the pass (an
+ * ir_var_map), not here. */
 struct ir_var {
     ir_var_kind kind;
     const char *name;        /* HLSL spelling */
@@ -42,21 +44,26 @@ struct ir_var {
     uint32_t param;          /* UNIFORM / SAMPLER: top-level fx param index; else HFX_NONE */
     const hfx_decl *decl;    /* where it came from (NULL for temporaries) */
     ir_expr *init;           /* PRIVATE statics: initialiser run at main's start */
+    /* The copy-on-write of a written uniform: globals.c writes both; preshade, varyings, fold,
+     * the GLSL printer and codegen read them. */
     ir_var *copy_of;         /* PRIVATE copy of this uniform */
     ir_var *priv;            /* UNIFORM written somewhere: its private copy */
-    hfx_dim dim;             /* SAMPLER: dimension as sampled */
-    bool written, used;      /* set by lower/uses.c */
-    bool hoisted;            /* for-init variable used after its loop: declared before it */
-    ir_expr *konst;          /* const variable whose initialiser folded to a constant (fold.c) */
-    ir_expr *bound;          /* the value every read takes (ir_put_bound): an entry PARAM's compile
-                              * argument (specialise), a callee copy's constant argument (calls),
-                              * a negated copy's parameter value (preshade) */
-    /* A preshader (lower/preshade.c): the uniform-only expression this private global holds,
-     * its eval_code program and readable HLSL; main reads it from hfx_c registers. */
+    hfx_dim dim;             /* SAMPLER: dimension as sampled; uses.c writes it, the GLSL printer reads it */
+    bool hoisted;            /* for-init variable used after its loop (HLSL scoping): ir.c writes it; forward,
+                              * licm and the GLSL printer (which declares it before the loop) read it */
+    /* A preshader (preshade.c writes it, or d3d9_ir.c for fxc's): the uniform-only expression
+     * this private global holds, its eval_code program and readable HLSL. codegen copies the
+     * code into the effect; the GLSL printer reads the value from hfx_c registers. */
     const ir_expr *pre;
     const uint32_t *pre_code; uint32_t pre_words;
     const char *pre_text;
 };
+
+/* A pass's facts about variables, keyed by the variable (var_map.c): zero-initialise; lives in
+ * the arena, so nothing to free. */
+typedef struct ir_var_map { const ir_var **keys; void **vals; uint32_t count, cap; } ir_var_map;
+bool ir_var_map_put(ir_ctx *c, ir_var_map *m, const ir_var *v, void *val); /* false: out of memory */
+void *ir_var_map_get(const ir_var_map *m, const ir_var *v);                /* NULL when absent */
 
 typedef enum {
     IE_CONST,     /* cval[] holds type's components (row-major), by base: b/i/f */
@@ -127,7 +134,7 @@ struct ir_func {
     ir_var **params; uint32_t param_count;
     ir_stmt *body;
     const hfx_func *src;
-    bool is_entry, reached;
+    bool is_entry;
 };
 
 /* One stage of one pass, specialised. */
@@ -138,6 +145,8 @@ typedef struct ir_shader {
     ir_var **globals; uint32_t global_count, global_cap; /* uniforms, samplers, privates used */
     ir_var **pres; uint32_t pre_count, pre_cap;          /* preshaders (lower/preshade.c) */
     const hfx_expr *compile;     /* the EX_COMPILE it came from */
+    ir_var_map args;             /* the entry's uniform parameters' compile arguments: ir_build
+                                  * writes them, specialise puts them in and drops the parameters */
     bool uses_discard;
 } ir_shader;
 
@@ -151,8 +160,26 @@ typedef struct ir_ctx {
 
 /* Builds the IR of `compile entry(args)` for one stage; NULL (with a located error) on failure. */
 ir_shader *ir_build(ir_ctx *c, const hfx_expr *compile, ir_stage stage);
-/* Runs the lowering passes in order (lower/passes.c); returns 0 or -1 with errors. */
-int ir_lower(ir_ctx *c, ir_shader *sh);
+/* ir_lower's options: what the caller's compile asks beyond the passes every stage runs. */
+enum {
+    IR_LOWER_PACKED = 1u << 0,   /* parameters share hfx_c's registers (registers are counted) */
+    IR_LOWER_PRESHADE = 1u << 1, /* packed, preshaders on, from HLSL: the preshade rows run */
+    IR_LOWER_DERIVE = 1u << 2    /* a program's derived varyings (lower/varyings.c) */
+};
+/* Runs a stage's rows of the pass table in order (lower/passes.c); 0, or -1 with errors. */
+int ir_lower(ir_ctx *c, ir_shader *sh, unsigned opts);
+/* A program's two lowered stages (either may be NULL), for the program's rows. */
+typedef struct ir_program {
+    ir_shader *vs, *ps;      /* may become copies (varyings): stages are shared between programs */
+    unsigned opts;           /* IR_LOWER_* */
+    const char **derived; uint32_t derived_count; /* the vertex outputs the pixel stage derives */
+} ir_program;
+void ir_lower_program(ir_ctx *c, ir_program *p);
+/* The pass table's rows, for hfxc --dump-ir and the docs' test: name and one line of why. */
+uint32_t ir_pass_count(void);
+const char *ir_pass_name(uint32_t i); /* NULL past the end */
+const char *ir_pass_why(uint32_t i);
+const char *ir_pass_runs(uint32_t i); /* when it runs: "every stage", "HLSL stages, parameters packed, preshaders on"... */
 
 /* Passes (one file each in lower/). */
 void ir_pass_specialise(ir_ctx *c, ir_shader *sh);
@@ -171,10 +198,10 @@ void ir_pass_ranges(ir_ctx *c, ir_shader *sh);     /* array reads a loop counter
 void ir_pass_registers(ir_ctx *c, ir_shader *sh); /* register(cN) reservations of what the stage reads: X4500, X4509 */
 int ir_pass_check(ir_ctx *c, ir_shader *sh);   /* target limits: reports what GLSL cannot express */
 void ir_pass_uses(ir_ctx *c, ir_shader *sh);
-void ir_pass_preshade(ir_ctx *c, ir_shader *sh);    /* uniform-only work to preshaders (codegen, when packing) */
-void ir_pass_forward(ir_ctx *c, ir_shader *sh);     /* single-use locals forward, mul chains regrouped (preshade's first step) */
-void ir_pass_sums(ir_ctx *c, ir_shader *sh);        /* a loop's sum of parameter-only terms, added once before it (preshade's) */
-void ir_pass_factors(ir_ctx *c, ir_shader *sh);     /* vector products: parameters, then scalars, then vectors (preshade's) */
+void ir_pass_preshade(ir_ctx *c, ir_shader *sh);    /* uniform-only work to preshaders (when packing) */
+void ir_pass_forward(ir_ctx *c, ir_shader *sh);     /* single-use locals forward, mul chains regrouped (readies preshade) */
+void ir_pass_sums(ir_ctx *c, ir_shader *sh);        /* a loop's sum of parameter-only terms, added once before it (readies preshade) */
+void ir_pass_factors(ir_ctx *c, ir_shader *sh);     /* vector products: parameters, then scalars, then vectors (readies preshade) */
 /* Registers a stage may take for parameters and preshaders together (preshade.c): two stages
  * then always fit a program's 256. */
 enum { IR_STAGE_REGS = 128 };
@@ -213,8 +240,8 @@ void ir_var_set_add(ir_ctx *c, ir_var_set *s, const ir_var *v); /* NULL: unknown
 bool ir_var_set_has(const ir_var_set *s, const ir_var *v);
 /* Statement `at` out of block b. */
 void ir_remove_stmt(ir_stmt *b, uint32_t at);
-/* Every read in s of a variable with a bound value becomes a copy of that value. */
-void ir_put_bound(ir_ctx *c, ir_stmt *s);
+/* Every read in s of a variable of `values` (an ir_expr each) becomes a copy of its value. */
+void ir_put_values(ir_ctx *c, ir_stmt *s, const ir_var_map *values);
 /* The n statements s into block b before its statement `at` (false: out of memory). */
 bool ir_insert_stmts(ir_ctx *c, ir_stmt *b, uint32_t at, ir_stmt *const *s, uint32_t n);
 /* Reads and writes of one variable in a statement (walk.c): a compound assignment's target

@@ -120,6 +120,12 @@ char *ir_dump_shader(const ir_shader *sh) {
         put_type(&b, v->type);
         sb_printf(&b, " %s\n", v->glsl);
     }
+    for (uint32_t i = 0; i < sh->pre_count; i++) { /* what the CPU computes for it, in HLSL */
+        const ir_var *v = sh->pres[i];
+        sb_put(&b, "preshader ");
+        put_type(&b, v->type);
+        sb_printf(&b, " %s = %s\n", v->glsl, v->pre_text ? v->pre_text : "?");
+    }
     for (uint32_t i = 0; i < sh->func_count; i++) put_func(&b, sh->funcs[i]);
     return b.d;
 }

@@ -56,6 +56,8 @@ typedef struct hfxc_options {
     const char *entry;               /* with a shader profile: compile one entry point, like fxc /E */
     const char *profile;             /* "fx_2_0" (default), or "vs_3_0", "ps_2_0"... for /T */
     hfxc_session *session;           /* NULL, or shared by compiles one after another */
+    const char *dump_ir;             /* a pass's name (hfxc_pass_name), or "all": the IR of every stage
+                                      * after it, for hfxc_result_ir_dump; NULL: none */
 } hfxc_options;
 
 hfxc_session *hfxc_session_new(void);                                           /* NULL when out of memory */
@@ -74,6 +76,12 @@ struct hfx_fx_effect *hfxc_result_take_effect(hfxc_result *r);   /* caller owns 
  * words as fxc writes them, *size bytes, living as long as r); NULL otherwise. */
 const void *hfxc_result_bytecode(const hfxc_result *r, size_t *size);
 char *hfxc_result_ast_dump(const hfxc_result *r);                /* readable AST; free() it */
+/* With hfxc_options.dump_ir: each stage's IR after that pass, in the order the passes ran, each
+ * dump opened by `// after PASS: file(line,col)` (where its compile is); free() it. */
+char *hfxc_result_ir_dump(const hfxc_result *r);
+/* The compiler's passes in the order they run (i from 0; NULL past the last); *why (may be
+ * NULL) gets one line on what the pass does. */
+const char *hfxc_pass_name(size_t i, const char **why);
 /* The files the compile read: the root (unless compiled from memory), then every #include'd file
  * in the order first opened, each once, by the path it was opened with (an include folder or the
  * including file's folder joined to the name, with the case found on disk). Also after errors:

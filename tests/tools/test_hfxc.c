@@ -175,6 +175,10 @@ static const run_case BAD_USAGE[] = {
      "hfxc: error: unknown target 'glsl999' (glsl330, glsles300, glsl110, spirv) (hfxc --help for usage)\n"},
     {"", 2, 0, SAYS_EXACTLY, "hfxc: error: no input file (hfxc --help for usage)\n"},
     {"'%s' -o", 2, 0, SAYS_EXACTLY, "hfxc: error: option '-o' needs a value (hfxc --help for usage)\n"},
+    {"--dump-ir=bogus '%s'", 2, 0, SAYS_EXACTLY,
+     "hfxc: error: unknown pass 'bogus' (hfxc --list-passes) (hfxc --help for usage)\n"},
+    {"--list-passes", 0, 1, SAYS_AMONG_OTHERS, "specialise   compile arguments replace the entry's uniform parameters\n"},
+    {"--list-passes", 0, 1, SAYS_AMONG_OTHERS, "\npreshade     parameter-only work to preshaders"},
     {"--help", 0, 1, SAYS_AMONG_OTHERS, "usage: hfxc"},
     {"--version", 0, 1, SAYS_AMONG_OTHERS, "hfxc "},
 };
@@ -322,6 +326,44 @@ static void write_text(const char *path, const char *text) {
     if (!f) return;
     fputs(text, f);
     fclose(f);
+}
+
+/* --dump-ir=preshade: the vertex stage's IR after the preshade pass on stderr (the pixel
+ * stage's too), headed with the compile's place, which is where it names the entry (line 2,
+ * column 54); the same text in the --dump-ir-file file, and stderr then has none of it. The
+ * dump's lines are tests/compiler/ir/test_passes.c's, checked there by hand. */
+static void dump_ir_after_a_pass(void) {
+    char path[1024], dump[1024];
+    snprintf(path, sizeof path, "%s/dump.fx", tmp);
+    snprintf(dump, sizeof dump, "%s/dump.txt", tmp);
+    write_text(path,
+        "float4x4 World, ViewProj; float4 VS(float4 p : POSITION0) : POSITION0 { return mul(p, mul(World, ViewProj)); }\n"
+        "technique T { pass P { VertexShader = compile vs_3_0 VS(); } }\n");
+    static const char want[] =
+        "dump.fx(2,54)\n"
+        "shader vertex VS\n"
+        "global uniform float4x4 World\n"
+        "global uniform float4x4 ViewProj\n"
+        "preshader float4x4 hfx_pre0 = mul(World, ViewProj)\n"
+        "function VS : float4\n"
+        "  param float4 p\n"
+        "  block\n"
+        "    return (mul (param p) (private hfx_pre0))\n";
+    run_result r = run_expecting(0, "--dump-ir=preshade -o /dev/null '%s'", path);
+    CHECK_CONTAINS(r.err, "// after preshade: ");
+    CHECK_CONTAINS(r.err, want);
+    CHECK(strstr(r.err, "// after fold: ") == NULL);
+    run_free(&r);
+    r = run_expecting(0, "--dump-ir=preshade --dump-ir-file '%s' -o /dev/null '%s'", dump, path);
+    CHECK_STR(r.err, "");
+    char *text = test_read_file(dump, NULL);
+    CHECK_CONTAINS(text, want);
+    free(text);
+    run_free(&r);
+    r = run_expecting(0, "--dump-ir -o /dev/null '%s'", path); /* every pass: fold's among them */
+    CHECK_CONTAINS(r.err, "// after fold: ");
+    CHECK_CONTAINS(r.err, "// after uses-again: ");
+    run_free(&r);
 }
 
 /* -D / /D / -DNAME=V and -I / /I reach the preprocessor in both spellings. */
@@ -615,6 +657,7 @@ int main(void) {
     RUN(fxc_outputs);
     RUN(defines_and_include_dirs);
     RUN(ast_werror_and_targets);
+    RUN(dump_ir_after_a_pass);
 #ifdef HFX_HAVE_CJSON
     RUN(annotations_json_ambient);
     RUN(annotations_json_spot_specular);

@@ -180,7 +180,7 @@ static void directx_sdk_and_engine_names(void) {
     float proj[16], want[16];
     hv_mat4_mul(want, camera_view, scene.projection);
     expect(fx, "mWorldViewProj", want, 16);
-    hv_mat4_perspective_fov_rh(proj, 60.0f * HV_PI / 180.0f, 1.0f, 0.1f, 100.0f);
+    hv_mat4_perspective_fov_rh(proj, 60.0f * HV_PI / 180.0f, 1.0f, 0.1f, 20.0f); /* far: 4 x the light's distance */
     hv_mat4_mul(want, light_view, proj);
     expect(fx, "g_mLightViewProj", want, 16);
     expect_how(fx, how, "g_mLightViewProj", "name: the light's matrix");
@@ -220,7 +220,7 @@ static void palettes_weights_and_defaults(void) {
 }
 
 /* Names the table lacks, by their ending: a light's colour, a colour (white; fog and emission
- * stay black), a density, a texture's size, a far plane. A viewport size and no matrix: the
+ * stay black), a density, a texture's size, the far plane. A viewport size and no matrix: the
  * effect draws in pixels (DigitalRise's post-processing). */
 static void endings_and_pixel_effects(void) {
     hfx_effect *fx = load("float3 SunLight;\nfloat4 InstanceColor;\nfloat4 FogColor;\nfloat Density;\n"
@@ -232,7 +232,7 @@ static void endings_and_pixel_effects(void) {
     expect(fx, "FogColor", (const float[4]){0, 0, 0, 0}, 4);
     expect(fx, "Density", (const float[1]){1}, 1);
     expect(fx, "ReflectionTextureSize", (const float[2]){256, 256}, 2);
-    expect(fx, "CameraFar", (const float[1]){100}, 1);
+    expect(fx, "CameraFar", (const float[1]){12}, 1); /* the scene's far plane: 4 x the eye's distance */
     expect(fx, "ViewportSize", (const float[2]){128, 128}, 2);
     CHECK_INT(hv_effect_wants_pixels(fx), 1);
     hfx_effect_destroy(fx);

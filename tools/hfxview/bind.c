@@ -10,14 +10,21 @@
 
 #define PI HV_PI
 
+float hv_scene_far(hv_vec3 eye, hv_vec3 at) {
+    float d = hv_vec3_length(hv_vec3_sub(eye, at));
+    return d > 0.25f ? 4.0f * d : 1.0f;
+}
+
 void hv_scene_from_options(hv_scene *s, const hv_options *o) {
     memset(s, 0, sizeof *s);
     hv_mat4_rotation_y(s->world, o->yaw_degrees * PI / 180.0f);
     hv_mat4_look_at_rh(s->view, o->eye, o->at, o->up);
     s->width = o->width;
     s->height = o->height;
-    hv_mat4_perspective_fov_rh(s->projection, o->fov_degrees * PI / 180.0f, (float)o->width / (float)o->height, 0.1f,
-                               100.0f);
+    s->znear = 0.1f;
+    s->zfar = hv_scene_far(o->eye, o->at);
+    hv_mat4_perspective_fov_rh(s->projection, o->fov_degrees * PI / 180.0f, (float)o->width / (float)o->height,
+                               s->znear, s->zfar);
     s->eye = o->eye;
     s->at = o->at;
     s->light_position = o->light_position;
@@ -48,7 +55,7 @@ static void matrix_stem(char *out, size_t cap, const char *name) {
     while (*name == '_') name++;
     if (!strncmp(name, "g_", 2)) name += 2;
     if (!strncmp(name, "m_", 2)) name += 2;
-    if (!strncmp(name, "mat", 3) && isupper((unsigned char)name[3])) name += 3;
+    if (!strncasecmp(name, "mat", 3) && isupper((unsigned char)name[3])) name += 3; /* matView, MatView */
     else if (!strncmp(name, "fx", 2) && isupper((unsigned char)name[2])) name += 2;
     else if ((name[0] == 'm' || name[0] == 'x') && isupper((unsigned char)name[1])) name++;
     hv_lower_copy(out, cap, name);
@@ -87,7 +94,8 @@ static void base_matrix(const hv_scene *s, int kind, float out[16]) {
     }
 }
 
-int hv_scene_matrix(const hv_scene *s, const char *name, int is_semantic, float out[16]) {
+/* The kind (M_*) and form (F_*) a name or semantic asks for; 0 when it names no scene matrix. */
+static int matrix_kind(const char *name, int is_semantic, int *kind, int *form) {
     char stem[128];
     if (is_semantic) hv_lower_copy(stem, sizeof stem, name);
     else matrix_stem(stem, sizeof stem, name);
@@ -96,14 +104,30 @@ int hv_scene_matrix(const hv_scene *s, const char *name, int is_semantic, float 
         if (strncmp(stem, matrix_bases[b].stem, n)) continue;
         for (size_t f = 0; f < sizeof matrix_forms / sizeof matrix_forms[0]; f++) {
             if (strcmp(stem + n, matrix_forms[f].text)) continue;
-            int form = matrix_forms[f].form;
-            base_matrix(s, matrix_bases[b].kind, out);
-            if (form == F_INVERSE || form == F_INVERSE_TRANSPOSE) hv_mat4_invert(out, out);
-            if (form == F_TRANSPOSE || form == F_INVERSE_TRANSPOSE) hv_mat4_transpose(out, out);
+            *kind = matrix_bases[b].kind;
+            *form = matrix_forms[f].form;
             return 1;
         }
     }
     return 0;
+}
+
+int hv_scene_matrix(const hv_scene *s, const char *name, int is_semantic, float out[16]) {
+    int kind, form;
+    if (!matrix_kind(name, is_semantic, &kind, &form)) return 0;
+    base_matrix(s, kind, out);
+    if (form == F_INVERSE || form == F_INVERSE_TRANSPOSE) hv_mat4_invert(out, out);
+    if (form == F_TRANSPOSE || form == F_INVERSE_TRANSPOSE) hv_mat4_transpose(out, out);
+    return 1;
+}
+
+/* The kind of scene matrix parameter p is, by semantic then name; -1 for none. */
+static int param_matrix_kind(hfx_param *p) {
+    int kind, form;
+    const char *sem = hfx_param_semantic(p);
+    if (hfx_param_get_class(p) != HFX_CLASS_MATRIX || hfx_param_elements(p)) return -1;
+    if (sem && *sem && matrix_kind(sem, 1, &kind, &form)) return kind;
+    return matrix_kind(hfx_param_name(p), 0, &kind, &form) ? kind : -1;
 }
 
 /* ---- values already there ---------------------------------------------------------------- */
@@ -168,7 +192,8 @@ void hv_light_scene(const hv_scene *s, hv_scene *light) {
     hv_vec3 d = hv_vec3_normalize(hv_vec3_sub(s->at, s->light_position));
     hv_vec3 up = fabsf(d.y) > 0.99f ? hv_vec3_make(0, 0, 1) : hv_vec3_make(0, 1, 0);
     hv_mat4_look_at_rh(light->view, s->light_position, s->at, up);
-    hv_mat4_perspective_fov_rh(light->projection, 60.0f * PI / 180.0f, 1.0f, 0.1f, 100.0f);
+    light->zfar = hv_scene_far(s->light_position, s->at);
+    hv_mat4_perspective_fov_rh(light->projection, 60.0f * PI / 180.0f, 1.0f, light->znear, light->zfar);
     light->eye = s->light_position;
 }
 
@@ -192,14 +217,47 @@ static int is_pixel_transform(const hfx_param *p) {
            (!strcmp(stem, "matrixtransform") || !strcmp(stem, "spritetransform") || !strcmp(stem, "transformmatrix"));
 }
 
-/* DigitalRise's post-processing: a viewport size (by name or VIEWPORTSIZE) and no matrix at
- * all, so the vertex shader maps pixels to clip space itself. */
+/* The size in pixels of what is drawn into: SAS's ViewportPixelSize, DigitalRise's
+ * VIEWPORTSIZE, ViewportSize and TargetSize (its filters read SourceSize, the same picture),
+ * and engines' ScreenSize, ScreenResolution, RenderTargetSize; a two-component Viewport
+ * (UltimaXNA's half-pixel offset). A lower-case name. */
+static int is_viewport_size(const char *lower, const hfx_param *p) {
+    static const char *const names[] = {"viewportpixelsize", "viewportsize", "targetsize", "sourcesize", "screensize",
+                                        "screenresolution", "resolution", "rendertargetsize"};
+    for (size_t i = 0; i < sizeof names / sizeof *names; i++)
+        if (!strcmp(lower, names[i])) return 1;
+    return !strcmp(lower, "viewport") && hfx_param_rows(p) * hfx_param_columns(p) == 2;
+}
+
+/* DigitalRise's post-processing: a viewport or target size (by name or VIEWPORTSIZE) and no
+ * matrix but a projection (read to rebuild depth), so the vertex shader maps pixels itself. */
 static int is_viewport_size_param(hfx_param *p) {
     char low[64];
     const char *sem = hfx_param_semantic(p);
     hv_lower_copy(low, sizeof low, hfx_param_name(p));
-    return !strcmp(low, "viewportsize") || !strcmp(low, "viewportpixelsize") ||
+    /* Not ScreenResolution and its kin: XNA's post-processing samples read them in pixel
+     * shaders drawn by SpriteBatch's own vertex shader, so their passes take clip space. */
+    return !strcmp(low, "viewportsize") || !strcmp(low, "viewportpixelsize") || !strcmp(low, "targetsize") ||
            (sem && (!strcasecmp(sem, "ViewportSize") || !strcasecmp(sem, "ViewportPixelSize")));
+}
+
+/* What the whole effect says about its matrices. iex: it declares IEX's TransMatrix (see
+ * iex_matrix). pixel_projection: it has a projection and no matrix that carries a view (View,
+ * WorldView, ViewProjection, WorldViewProjection, by name or semantic), so its projection
+ * cannot look at a mesh from a camera: it maps pixels, as UltimaXNA's isometric world's
+ * ProjectionMatrix (an orthographic projection over the window) and SpriteBatch's do. */
+typedef struct { int iex, pixel_projection; } effect_facts;
+
+static effect_facts facts_of(hfx_effect *fx) {
+    effect_facts f = {hfx_effect_param(fx, "TransMatrix") != NULL, 0};
+    int projection = 0, view = 0;
+    for (size_t i = 0; i < hfx_effect_param_count(fx); i++) {
+        int kind = param_matrix_kind(hfx_effect_param_at(fx, i));
+        projection |= kind == M_PROJ;
+        view |= kind == M_VIEW || kind == M_WORLDVIEW || kind == M_VIEWPROJ || kind == M_WVP;
+    }
+    f.pixel_projection = !f.iex && projection && !view;
+    return f;
 }
 
 int hv_effect_wants_pixels(hfx_effect *fx) {
@@ -208,17 +266,12 @@ int hv_effect_wants_pixels(hfx_effect *fx) {
         hfx_param *p = hfx_effect_param_at(fx, i);
         if (is_pixel_transform(p)) return 1;
         viewport |= is_viewport_size_param(p);
-        matrices |= hfx_param_get_class(p) == HFX_CLASS_MATRIX;
+        matrices |= hfx_param_get_class(p) == HFX_CLASS_MATRIX && param_matrix_kind(p) != M_PROJ; /* a projection alone places nothing */
     }
-    return viewport && !matrices;
+    return (viewport && !matrices) || facts_of(fx).pixel_projection;
 }
 
 /* ---- the whole effect -------------------------------------------------------------------- */
-
-/* SAS's ViewportPixelSize; DigitalRise's VIEWPORTSIZE semantic and ViewportSize name. */
-static int is_viewport_size(const char *lower) {
-    return !strcmp(lower, "viewportpixelsize") || !strcmp(lower, "viewportsize");
-}
 
 /* "LightViewProj", "gLightWVP", "ShadowViewProjection": the light's matrices. */
 static int light_matrix(const hv_scene *s, const char *name, float m[16]) {
@@ -231,11 +284,32 @@ static int light_matrix(const hv_scene *s, const char *name, float m[16]) {
     return hv_scene_matrix(&light, rest, 1, m);
 }
 
+/* IEX, the Japanese teaching engine (its effects write "float4x4 TransMatrix; // world" and
+ * "float4x4 Projection; // World * View * Projection"), names the world TransMatrix and sets
+ * the whole transform into Projection, keeping the plain one as matProjection: an effect
+ * that declares TransMatrix follows it. */
+static int iex_matrix(const hv_scene *s, const char *name, int iex, float m[16]) {
+    hv_scene light;
+    if (!iex) return 0;
+    if (!strcmp(name, "TransMatrix")) return hv_scene_matrix(s, "World", 1, m);
+    if (!strcmp(name, "Projection")) return hv_scene_matrix(s, "WorldViewProjection", 1, m);
+    if (!strcmp(name, "ShadowProjection")) { /* the light's View * Projection (the shader multiplies TransMatrix first) */
+        hv_light_scene(s, &light);
+        return hv_scene_matrix(&light, "ViewProjection", 1, m);
+    }
+    return 0;
+}
+
 /* Matrices: by semantic, then name, SpriteBatch's, the light's; any other one, and every
  * matrix array, the identity when the effect left it at zero. */
-static const char *bind_matrix(hfx_param *p, const hv_scene *s, int view_only, int *set) {
+static const char *bind_matrix(hfx_param *p, const hv_scene *s, int view_only, const effect_facts *f, int *set) {
     float m[16];
     const char *sem = hfx_param_semantic(p), *name = hfx_param_name(p);
+    if (f->pixel_projection && param_matrix_kind(p) == M_PROJ) {
+        pixel_projection(s, m);
+        return *set = hv_set_matrix_param(p, m), "name: a projection with no view: pixels, as SpriteBatch's";
+    }
+    if (iex_matrix(s, name, f->iex, m)) return *set = hv_set_matrix_param(p, m), "name: IEX's matrices (TransMatrix the world, Projection the whole transform)";
     if (hfx_param_elements(p)) {
         if (view_only) return NULL;
         *set = hv_set_identity_palette(p);
@@ -254,7 +328,7 @@ static const char *bind_matrix(hfx_param *p, const hv_scene *s, int view_only, i
     return "identity (no convention names it)";
 }
 
-static const char *bind_one(hfx_param *p, const hv_scene *s, int view_only, int *set) {
+static const char *bind_one(hfx_param *p, const hv_scene *s, int view_only, const effect_facts *f, int *set) {
     const char *sem = hfx_param_semantic(p), *how;
     char low[64];
     *set = 0;
@@ -263,9 +337,9 @@ static const char *bind_one(hfx_param *p, const hv_scene *s, int view_only, int 
         return "SAS semantic";
     if ((how = hv_bind_by_annotation(p, s, view_only, set))) return how;
     hfx_param_class k = hfx_param_get_class(p);
-    if (k == HFX_CLASS_MATRIX && hfx_param_get_type(p) == HFX_TYPE_FLOAT) return bind_matrix(p, s, view_only, set);
+    if (k == HFX_CLASS_MATRIX && hfx_param_get_type(p) == HFX_TYPE_FLOAT) return bind_matrix(p, s, view_only, f, set);
     hv_lower_copy(low, sizeof low, hfx_param_name(p));
-    if ((k == HFX_CLASS_SCALAR || k == HFX_CLASS_VECTOR) && is_viewport_size(low)) {
+    if ((k == HFX_CLASS_SCALAR || k == HFX_CLASS_VECTOR) && is_viewport_size(low, p)) {
         float wh[2] = {(float)s->width, (float)s->height};
         return *set = hv_set_vector(p, wh, 2, 0), "name: the viewport size";
     }
@@ -290,8 +364,9 @@ static int bind_semantics(hfx_effect *fx, const hv_scene *s) {
 static int bind_all(hfx_effect *fx, const hv_scene *s, int view_only, const char **how, size_t count) {
     bind_semantics(fx, s);
     int n = 0, set;
+    effect_facts f = facts_of(fx);
     for (size_t i = 0; i < hfx_effect_param_count(fx); i++) {
-        const char *h = bind_one(hfx_effect_param_at(fx, i), s, view_only, &set);
+        const char *h = bind_one(hfx_effect_param_at(fx, i), s, view_only, &f, &set);
         n += h != NULL;
         if (i < count) how[i] = h;
     }

@@ -23,6 +23,7 @@
 
 typedef struct hv_scene {
     float world[16], view[16], projection[16];
+    float znear, zfar;                       /* the projection's planes (hv_scene_far) */
     hv_vec3 eye, at;
     hv_vec3 light_position, light_direction; /* direction: where the light travels */
     float light_color[3];
@@ -32,6 +33,12 @@ typedef struct hv_scene {
 } hv_scene;
 
 enum { HV_HEADLESS_TIME_SECONDS = 1 };       /* time parameters in pictures: reproducible */
+
+/* The far plane fits the scene, as a model viewer fits its clipping planes to what it shows:
+ * 4 times the eye's distance from what it looks at (the unit-sphere mesh seen from 3 units
+ * sits in the first third of the range), so depth an effect writes normalised by the far plane
+ * (shadow maps, G-buffers: depth / CameraFar) spans a visible part of 0..1. Near is 0.1. */
+float hv_scene_far(hv_vec3 eye, hv_vec3 at);
 
 void hv_scene_from_options(hv_scene *s, const hv_options *o);
 

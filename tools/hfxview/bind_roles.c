@@ -13,6 +13,7 @@ void hv_name_stem(char *out, size_t cap, const char *name) {
     if ((name[0] == 'g' || name[0] == 'm') && name[1] == '_') name += 2; /* g_LightDir, m_Color */
     else if (name[0] == 'g' && isupper((unsigned char)name[1])) name++; /* FX Composer's gLamp0Color */
     if (!strncmp(name, "mat", 3) && isupper((unsigned char)name[3])) name += 3, material = 1; /* g_matDiffuse */
+    else if (!strncmp(name, "vec", 3) && isupper((unsigned char)name[3])) name += 3; /* vecLightDir, vecEye */
     else if (!strncmp(name, "fx", 2) && isupper((unsigned char)name[2])) name += 2;
     else if (strchr("fvcbimnx", name[0]) && name[0] && isupper((unsigned char)name[1])) name++; /* g_fTime, g_vLightDir */
     size_t n = 0;
@@ -24,14 +25,18 @@ void hv_name_stem(char *out, size_t cap, const char *name) {
 
 typedef enum {
     R_NONE, R_CAMERA, R_LIGHT_DIR, R_LIGHT_POS, R_LIGHT_COLOR, R_TARGET, R_WHITE, R_GREY, R_SCALAR, R_LIGHT_COUNT,
-    R_RADIUS, R_TIME, R_ELAPSED, R_WEIGHTS, R_VIEWPORT_SCALE
+    R_RADIUS, R_TIME, R_ELAPSED, R_WEIGHTS, R_VIEWPORT_SCALE, R_NEAR, R_FAR,
+    R_CAMERA_FORWARD, R_CAMERA_UP, R_WORLD_UP, R_FOG_START, R_FOG_END, R_FIRST_CHANNEL
 } role;
 
 static const char *const role_phrases[] = {
     NULL, "name: the camera position", "name: light direction", "name: light position", "name: light colour",
     "name: spot target", "name: white (a material or light colour)", "name: grey ambient", "name: a sensible scalar",
     "name: light count", "name: light radius", "name: the clock (seconds)", "name: the frame time",
-    "name: equal weights summing to 1", "name: the particles' viewport scale",
+    "name: equal weights summing to 1", "name: the particles' viewport scale", "name: the camera's near plane",
+    "name: the camera's far plane", "name: the camera's forward direction", "name: the camera's up direction",
+    "name: the world's up direction (0, 1, 0)", "name: fog start beyond the far plane (no fog)",
+    "name: fog end beyond the far plane (no fog)", "name: the first channel (1, 0, 0, 0)",
 };
 
 /* Stems (lower case, no digits, no underscores; see hv_name_stem) as the XNA stock effects and
@@ -41,6 +46,12 @@ static const struct { const char *stem; role r; float v; } roles[] = {
     {"eyepos", R_CAMERA, 0}, {"eyeposition", R_CAMERA, 0}, {"viewpos", R_CAMERA, 0}, {"viewposition", R_CAMERA, 0},
     {"posicioncamara", R_CAMERA, 0}, {"camaraposicion", R_CAMERA, 0}, {"eye", R_CAMERA, 0}, {"cameraeye", R_CAMERA, 0},
     {"eyepositionworld", R_CAMERA, 0}, {"camerapositionworld", R_CAMERA, 0}, {"worldcameraposition", R_CAMERA, 0},
+    {"cameraforward", R_CAMERA_FORWARD, 0}, {"camforward", R_CAMERA_FORWARD, 0}, {"viewforward", R_CAMERA_FORWARD, 0},
+    {"cameradirection", R_CAMERA_FORWARD, 0}, {"camdir", R_CAMERA_FORWARD, 0}, {"cameradir", R_CAMERA_FORWARD, 0},
+    {"viewdirection", R_CAMERA_FORWARD, 0}, {"viewdir", R_CAMERA_FORWARD, 0}, {"lookdirection", R_CAMERA_FORWARD, 0},
+    {"camup", R_CAMERA_UP, 0}, {"cameraup", R_CAMERA_UP, 0}, {"viewup", R_CAMERA_UP, 0}, {"cameraupvector", R_CAMERA_UP, 0},
+    {"allowedrotdir", R_WORLD_UP, 0}, {"worldup", R_WORLD_UP, 0}, {"upvector", R_WORLD_UP, 0}, {"up", R_WORLD_UP, 0},
+    {"fogstart", R_FOG_START, 0}, {"fognear", R_FOG_START, 0}, {"fogend", R_FOG_END, 0}, {"fogfar", R_FOG_END, 0},
     {"lightdirection", R_LIGHT_DIR, 0}, {"lightdir", R_LIGHT_DIR, 0}, {"direccionluz", R_LIGHT_DIR, 0},
     {"lampdir", R_LIGHT_DIR, 0}, {"dirlight", R_LIGHT_DIR, 0}, {"dirlightdirection", R_LIGHT_DIR, 0},
     {"dirlightdir", R_LIGHT_DIR, 0}, {"sundir", R_LIGHT_DIR, 0}, {"sundirection", R_LIGHT_DIR, 0},
@@ -77,6 +88,16 @@ static const struct { const char *stem; role r; float v; } roles[] = {
     {"startsize", R_SCALAR, 0.5f}, {"endsize", R_SCALAR, 0.5f}, {"minsize", R_SCALAR, 0.5f}, {"maxsize", R_SCALAR, 0.5f},
     {"size", R_SCALAR, 0.5f}, {"particlesize", R_SCALAR, 0.5f}, {"billboardsize", R_SCALAR, 0.5f},
     {"duration", R_SCALAR, 2}, {"endvelocity", R_SCALAR, 1}, {"viewportscale", R_VIEWPORT_SCALE, 0},
+    {"lightpower", R_SCALAR, 1}, {"ambientpower", R_SCALAR, 0.2f}, {"texelwidth", R_SCALAR, 1.0f / 256},
+    {"texelheight", R_SCALAR, 1.0f / 256}, {"texelsize", R_SCALAR, 1.0f / 256},
+    {"conedirection", R_LIGHT_DIR, 0}, {"coneangle", R_SCALAR, 0.5f}, {"conedecay", R_SCALAR, 2}, /* spot cones */
+    {"scale", R_SCALAR, 1}, {"scalefactor", R_SCALAR, 1}, /* a multiplier: zero would erase what it scales */
+    {"shadowmaskchannel", R_FIRST_CHANNEL, 0}, /* DigitalRise: which channel of the shadow mask to read */
+    {"iterations", R_SCALAR, 32}, {"numberofsamples", R_SCALAR, 16}, {"numsamples", R_SCALAR, 16}, /* loop counts */
+    {"samplecount", R_SCALAR, 16}, {"stepsize", R_SCALAR, 1.0f / 32},
+    {"wavelength", R_SCALAR, 1}, {"wavelengths", R_SCALAR, 1}, /* divisors: waves of one unit */
+    {"waveheight", R_SCALAR, 0.05f}, {"waveheights", R_SCALAR, 0.05f},
+    {"scenenodetype", R_SCALAR, 1}, /* DigitalRise: 1 a static object (G-buffer depth positive), the one mesh */
     {"activelights", R_LIGHT_COUNT, 0}, {"numlights", R_LIGHT_COUNT, 0}, {"lightcount", R_LIGHT_COUNT, 0},
     {"numberoflights", R_LIGHT_COUNT, 0}, {"lightradius", R_RADIUS, 0},
     {"time", R_TIME, 0}, {"currenttime", R_TIME, 0}, {"totaltime", R_TIME, 0}, {"gametime", R_TIME, 0},
@@ -88,14 +109,17 @@ static const struct { const char *stem; role r; float v; } roles[] = {
 /* c1 and c3 (the seed tutorials' attenuation constants) would lose their digits as stems. */
 static const struct { const char *name; float v; } exact_scalars[] = {{"c1", 1}, {"c3", 0.01f}};
 
-/* Endings that say what a name the table lacks is: "SunLight" and "SkyLight" are light
+/* Endings that say what a name the table lacks is: DigitalRise's PointLightDiffuse and
+ * SpotlightDirection a light's, AmbientLightUp the world's up; "SunLight" and "SkyLight" are light
  * colours, "InstanceColor" a colour (white; emission, fog and borders stay black), "Density"
  * and "BumpStrength" weights of 1, "ReflectionTextureSize" a texture's size. */
 static const struct { const char *ending; role r; float v; } endings[] = {
+    {"lightdiffuse", R_LIGHT_COLOR, 0}, {"lightspecular", R_WHITE, 0}, {"lightdirection", R_LIGHT_DIR, 0},
+    {"lightposition", R_LIGHT_POS, 0}, {"lightrange", R_SCALAR, 20}, {"up", R_WORLD_UP, 0},
     {"light", R_LIGHT_COLOR, 0}, {"color", R_WHITE, 0}, {"colour", R_WHITE, 0}, {"intensity", R_SCALAR, 1},
     {"strength", R_SCALAR, 1}, {"amount", R_SCALAR, 1}, {"density", R_SCALAR, 1}, {"texturesize", R_SCALAR, 256},
-    {"mapsize", R_SCALAR, 256}, {"far", R_SCALAR, 100}, {"farplane", R_SCALAR, 100}, {"farclip", R_SCALAR, 100},
-    {"near", R_SCALAR, 0.1f}, {"nearplane", R_SCALAR, 0.1f}, {"nearclip", R_SCALAR, 0.1f},
+    {"mapsize", R_SCALAR, 256}, {"far", R_FAR, 0}, {"farplane", R_FAR, 0}, {"farclip", R_FAR, 0},
+    {"near", R_NEAR, 0}, {"nearplane", R_NEAR, 0}, {"nearclip", R_NEAR, 0},
 };
 
 static int ends_in(const char *s, const char *ending) {
@@ -165,6 +189,11 @@ static int is_light_role(role r) {
     return r == R_LIGHT_DIR || r == R_LIGHT_POS || r == R_LIGHT_COLOR || r == R_TARGET;
 }
 
+/* What follows the camera and the clock every frame, whatever the effect or the user set. */
+static int follows_view(role r) {
+    return r == R_CAMERA || r == R_TIME || r == R_ELAPSED || r == R_CAMERA_FORWARD || r == R_CAMERA_UP;
+}
+
 static int set_xyz(hfx_param *p, hv_vec3 a, float w) {
     float v[4] = {a.x, a.y, a.z, w};
     return hv_set_vector(p, v, 4, w);
@@ -172,7 +201,7 @@ static int set_xyz(hfx_param *p, hv_vec3 a, float w) {
 
 static int bind_role(hfx_param *p, role r, float v, const hv_scene *s) {
     float vec[4] = {0, 0, 0, 1};
-    int forced = r == R_CAMERA || r == R_TIME || r == R_ELAPSED || (s->light_given && is_light_role(r));
+    int forced = follows_view(r) || (s->light_given && is_light_role(r));
     if (r == R_NONE || (!forced && !hv_param_is_zero(p))) return 0;
     if (hfx_param_elements(p)) return bind_array(p, r, s);
     switch (r) {
@@ -189,6 +218,14 @@ static int bind_role(hfx_param *p, role r, float v, const hv_scene *s) {
     case R_SCALAR: return hv_set_scalar_default(p, v);
     case R_LIGHT_COUNT: return hv_set_scalar_default(p, ARRAY_LIGHTS);
     case R_RADIUS: return hv_set_scalar_default(p, 5.0f);
+    case R_CAMERA_FORWARD: return set_xyz(p, hv_vec3_normalize(hv_vec3_sub(s->at, s->eye)), 0);
+    case R_CAMERA_UP: return set_xyz(p, hv_vec3_make(s->view[1], s->view[5], s->view[9]), 0); /* the view's y axis */
+    case R_WORLD_UP: return set_xyz(p, hv_vec3_make(0, 1, 0), 0);
+    case R_FIRST_CHANNEL: vec[0] = 1, vec[3] = 0; return hv_set_vector(p, vec, 4, 0);
+    case R_FOG_START: return hv_set_scalar_default(p, s->zfar);
+    case R_FOG_END: return hv_set_scalar_default(p, 2.0f * s->zfar);
+    case R_NEAR: return hv_set_scalar_default(p, s->znear);
+    case R_FAR: return hv_set_scalar_default(p, s->zfar);
     case R_TIME: return hv_set_vector(p, &s->time, 1, s->time) || hfx_param_set_int(p, (int)s->time) == HFX_OK;
     case R_ELAPSED: return hv_set_vector(p, &s->elapsed_time, 1, s->elapsed_time);
     case R_VIEWPORT_SCALE: vec[0] = 0.5f * (float)s->height / (float)s->width, vec[1] = -0.5f; return hv_set_vector(p, vec, 2, 0);
@@ -275,7 +312,7 @@ const char *hv_bind_by_name(hfx_param *p, const hv_scene *s, int view_only, int 
     const char *sem = hfx_param_semantic(p);
     if (r == R_NONE && sem && *sem) r = role_of(sem, &v); /* FX Composer's DIFFUSE, SPECULARPOWER... */
     if (r == R_NONE) return NULL;
-    if (view_only && r != R_CAMERA && r != R_TIME && r != R_ELAPSED) return NULL;
+    if (view_only && !follows_view(r)) return NULL;
     *set = bind_role(p, r, v, s);
     return role_phrases[r];
 }

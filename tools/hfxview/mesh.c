@@ -276,6 +276,7 @@ int hv_mesh_screen(hv_mesh *m, int width, int height) {
 
 const hv_vertex_constant hv_vertex_constants[] = {
     {"COLOR0", {1, 1, 1, 1}}, {"COLOR1", {0, 0, 0, 0}}, {"BLENDWEIGHT0", {1, 0, 0, 0}},
+    {"BLENDWEIGHT1", {0, 1, 0, 0}}, {"BLENDWEIGHT2", {0, 0, 1, 0}}, {"BLENDWEIGHT3", {0, 0, 0, 1}},
     {"BLENDINDICES0", {0, 0, 0, 0}}, {"PSIZE0", {1, 0, 0, 0}},
 };
 const size_t hv_vertex_constant_count = sizeof hv_vertex_constants / sizeof hv_vertex_constants[0];

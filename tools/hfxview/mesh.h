@@ -26,7 +26,10 @@ typedef struct hv_mesh {
 
 /* The inputs a mesh never has, and the constant each drawing path (GL, --vulkan, the web page)
  * gives them, the same everywhere: a white COLOR0 (an untextured, unlit model looks as its
- * material), no COLOR1, a full weight on the first bone; TEXCOORD1..7 reuse TEXCOORD0, as a
+ * material), no COLOR1, a full weight on the first bone; BLENDWEIGHT0..3 are the rows of the
+ * identity, so a per-instance world matrix read from them (XNA's instancing sample's
+ * `float4x4 instanceTransform : BLENDWEIGHT`, DigitalRise's three world columns) places the
+ * one instance where the mesh is; TEXCOORD1..7 reuse TEXCOORD0, as a
  * single-UV model would. Any other input the mesh lacks reads the runtime's (0, 0, 0, 1),
  * what Direct3D 9 gives an element the vertex declaration lacks (docs/runtime.md). */
 typedef struct hv_vertex_constant { const char *semantic; float v[4]; } hv_vertex_constant;

@@ -102,20 +102,20 @@ static ir_var *copy_var(ir_ctx *c, var_map *m, ir_var *v) {
     ir_var *n = HFX_NEW(c->arena, ir_var);
     if (!n) return v;
     *n = *v;
-    n->konst = NULL;
     map_add(c, m, v, n);
     return n;
 }
 
-typedef struct remap { const var_map *map; } remap;
+/* The copy's variables for the original's, and the constant arguments its bound parameters take. */
+typedef struct remap { const var_map *map; ir_var_map bound; } remap;
 
 static void remap_var(ir_ctx *c, ir_expr **slot, void *data) {
-    (void)c;
     ir_expr *e = *slot;
     const remap *r = data;
     if (e->kind == IE_VAR) {
         ir_var *v = mapped(r->map, e->var);
-        if (v->bound) *slot = ir_clone_expr(c, v->bound);
+        const ir_expr *value = ir_var_map_get(&r->bound, v);
+        if (value) *slot = ir_clone_expr(c, value);
         else e->var = v;
     }
 }
@@ -142,6 +142,7 @@ static ir_stmt *copy_stmt(ir_ctx *c, var_map *m, const ir_stmt *s) {
 static ir_func *copy_func(ir_ctx *c, specialiser *sp, ir_func *f, const ir_expr *call, const bool *bind) {
     ir_func *n = HFX_NEW(c->arena, ir_func);
     var_map m = {0};
+    remap r = {&m, {0}};
     if (!n) return NULL;
     *n = *f;
     n->glsl = hfx_arena_printf(c->arena, "%s_hfx%u", f->glsl, sp->copy_count + 1);
@@ -149,11 +150,10 @@ static ir_func *copy_func(ir_ctx *c, specialiser *sp, ir_func *f, const ir_expr 
     n->param_count = 0;
     for (uint32_t i = 0; i < f->param_count; i++) {
         ir_var *p = copy_var(c, &m, f->params[i]);
-        p->bound = bind[i] ? call->a[i] : NULL;
         if (!bind[i]) n->params[n->param_count++] = p;
+        else if (!ir_var_map_put(c, &r.bound, p, call->a[i])) return NULL;
     }
     n->body = copy_stmt(c, &m, f->body);
-    remap r = {&m};
     ir_walk_stmt_exprs(c, n->body, remap_var, &r);
     return n;
 }

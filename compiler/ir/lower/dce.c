@@ -55,25 +55,27 @@ static ir_stmt *simplify(ir_ctx *c, ir_stmt *s, bool in_switch) {
     }
 }
 
-typedef struct reach { ir_func **stack; uint32_t count; } reach;
+/* The functions the entry reaches: reached[i] for sh->funcs[i]; those not walked yet on the stack. */
+typedef struct reach { const ir_shader *sh; bool *reached; ir_func **stack; uint32_t count; } reach;
+
+static void mark(reach *r, ir_func *f) {
+    uint32_t i = 0;
+    while (i < r->sh->func_count && r->sh->funcs[i] != f) i++;
+    if (i == r->sh->func_count || r->reached[i]) return;
+    r->reached[i] = true;
+    r->stack[r->count++] = f;
+}
 
 static void mark_call(ir_ctx *c, ir_expr **slot, void *data) {
-    ir_expr *e = *slot;
-    if (e->kind == IE_CALL && !e->fn->reached) {
-        reach *r = data;
-        e->fn->reached = true;
-        r->stack[r->count++] = e->fn;
-    }
+    (void)c;
+    if ((*slot)->kind == IE_CALL) mark(data, (*slot)->fn);
 }
 
 void ir_pass_dce(ir_ctx *c, ir_shader *sh) {
-    for (uint32_t i = 0; i < sh->func_count; i++) {
-        simplify_block(c, sh->funcs[i]->body, false);
-        sh->funcs[i]->reached = false;
-    }
-    reach r = { HFX_NEW_ARRAY(c->arena, ir_func *, sh->func_count + 1), 0 };
-    sh->entry->reached = true;
-    r.stack[r.count++] = sh->entry;
+    for (uint32_t i = 0; i < sh->func_count; i++) simplify_block(c, sh->funcs[i]->body, false);
+    reach r = {sh, HFX_NEW_ARRAY(c->arena, bool, sh->func_count + 1), HFX_NEW_ARRAY(c->arena, ir_func *, sh->func_count + 1), 0};
+    mark(&r, sh->entry);
+    if (!r.count) r.stack[r.count++] = sh->entry; /* not in the list: walked all the same */
     while (r.count) {
         ir_func *f = r.stack[--r.count];
         ir_walk_stmt_exprs(c, f->body, mark_call, &r);
@@ -82,6 +84,6 @@ void ir_pass_dce(ir_ctx *c, ir_shader *sh) {
         ir_walk_expr(c, &sh->globals[i]->init, mark_call, &r);
     uint32_t kept = 0;
     for (uint32_t i = 0; i < sh->func_count; i++)
-        if (sh->funcs[i]->reached) sh->funcs[kept++] = sh->funcs[i];
+        if (r.reached[i]) sh->funcs[kept++] = sh->funcs[i];
     sh->func_count = kept;
 }

@@ -5,8 +5,8 @@
  * their product (`ks * pow(..) * Specular * d` reads `pow(..) * d * hfx_pre0`, with hfx_pre0 =
  * ks * Specular); then the other scalars; then the other vectors, in their order. A product is
  * rewritten only when that costs fewer component multiplications. The rounding is a reordered
- * product's, as fxc's (without /Gis). Run by ir_pass_preshade, so --no-preshaders keeps the
- * order as written. */
+ * product's, as fxc's (without /Gis). Its row in the pass table (passes.c) runs only with
+ * preshaders on, so --no-preshaders keeps the order as written. */
 #include "ir/ir.h"
 
 enum { MAX_FACTORS = 16 };

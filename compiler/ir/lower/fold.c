@@ -118,32 +118,37 @@ static bool is_const_var(const ir_var *v) {
            (v->kind == IRV_LOCAL || (v->kind == IRV_PRIVATE && !v->copy_of));
 }
 
-/* `const` locals and `static const` globals whose initialiser folded: their value. */
-/* Marks the constant locals declared in s; true when there is one. */
-static bool find_const_locals(ir_stmt *s) {
+/* The values of `const` locals and `static const` globals whose initialiser folded (this
+ * pass's own table: calls runs the pass again on its copies, whose locals are new). */
+typedef struct consts { ir_var_map values; } consts;
+
+/* Adds the constant locals declared in s; true when there is one. */
+static bool find_const_locals(ir_ctx *c, consts *k, ir_stmt *s) {
     if (!s) return false;
     bool found = false;
-    if (s->kind == IS_DECL && ir_is_const(s->expr) && is_const_var(s->var)) s->var->konst = s->expr, found = true;
-    found |= find_const_locals(s->init);
-    for (uint32_t i = 0; i < s->count; i++) found |= find_const_locals(s->body[i]);
-    found |= find_const_locals(s->then_s);
-    found |= find_const_locals(s->else_s);
+    if (s->kind == IS_DECL && ir_is_const(s->expr) && is_const_var(s->var))
+        found = ir_var_map_put(c, &k->values, s->var, s->expr);
+    found |= find_const_locals(c, k, s->init);
+    for (uint32_t i = 0; i < s->count; i++) found |= find_const_locals(c, k, s->body[i]);
+    found |= find_const_locals(c, k, s->then_s);
+    found |= find_const_locals(c, k, s->else_s);
     return found;
 }
 
 static void propagate(ir_ctx *c, ir_expr **slot, void *data) {
     ir_expr *e = *slot;
-    if (e->kind == IE_VAR && e->var->konst) *slot = ir_clone_expr(c, e->var->konst);
-    else fold_one(c, slot, data);
+    const ir_expr *value = e->kind == IE_VAR ? ir_var_map_get(&((consts *)data)->values, e->var) : NULL;
+    if (value) *slot = ir_clone_expr(c, value);
+    else fold_one(c, slot, NULL);
 }
 
 void ir_pass_fold(ir_ctx *c, ir_shader *sh) {
     bool const_globals = false;
+    consts k = {{0}};
     for (uint32_t i = 0; i < sh->global_count; i++) {
         ir_var *g = sh->globals[i];
         ir_walk_expr(c, &g->init, fold_one, NULL);
-        if (ir_is_const(g->init) && is_const_var(g)) g->konst = g->init;
-        const_globals |= g->konst != NULL;
+        if (ir_is_const(g->init) && is_const_var(g)) const_globals |= ir_var_map_put(c, &k.values, g, g->init);
     }
     /* constants flow into their uses (so `static const bool on = false; if (on)` dies), and
      * what they make constant folds in the same walk. Without a constant to propagate the walk
@@ -151,7 +156,7 @@ void ir_pass_fold(ir_ctx *c, ir_shader *sh) {
      * first, so each node it kept had its final operands when it was tried). */
     for (uint32_t i = 0; i < sh->func_count; i++) {
         ir_walk_stmt_exprs(c, sh->funcs[i]->body, fold_one, NULL);
-        if (find_const_locals(sh->funcs[i]->body) || const_globals)
-            ir_walk_stmt_exprs(c, sh->funcs[i]->body, propagate, NULL);
+        if (find_const_locals(c, &k, sh->funcs[i]->body) || const_globals)
+            ir_walk_stmt_exprs(c, sh->funcs[i]->body, propagate, &k);
     }
 }

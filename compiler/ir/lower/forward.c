@@ -12,7 +12,8 @@
  *   component (`float4(p, 1)`) of values the function never changes: mul(y, mul(A, B)). The
  *   driver then skips the constant component's products (a position's w = 1), as the
  *   hand-written `mvp * vec4(p, 1.0)` does, and mul(A, B) is a preshader.
- * Run by ir_pass_preshade only, so --no-preshaders leaves the shaders as written. */
+ * Its row in the pass table (passes.c) runs only with preshaders on, so --no-preshaders leaves
+ * the shaders as written. */
 #include "ir/ir.h"
 
 /* ---- forward substitution ---- */

@@ -10,9 +10,7 @@ typedef struct writes { bool copies; } writes;
 
 static void mark_written(ir_ctx *c, writes *w, const ir_expr *lv) {
     ir_var *v = ir_lvalue_root(lv);
-    if (!v) return;
-    v->written = true;
-    if (v->kind != IRV_UNIFORM) return;
+    if (!v || v->kind != IRV_UNIFORM) return;
     w->copies = true;
     if (v->priv) return;
     ir_var *p = HFX_NEW(c->arena, ir_var);

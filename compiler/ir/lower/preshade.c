@@ -4,11 +4,12 @@
  * uniform-only subexpression that computes something (an operator, an intrinsic, a select, a
  * varying index) becomes a private global, hfx_preN, which main reads from registers of hfx_c
  * (codegen gives them after the program's parameters); its eval_code program (ir/pre_code.c)
- * goes into the compiled effect. Equal expressions share one global. Runs in codegen when
- * parameters are packed, after ir_lower, and ends with the uses pass again (parameters read
- * only by preshaders leave the GLSL). It starts by reordering what fxc's optimiser reorders, so
- * more work reads parameters alone: a loop's invariant sum terms (sums.c), locals forwarded and
- * matrix chains regrouped (forward.c), scalar and parameter factors first (factors.c). */
+ * goes into the compiled effect. Equal expressions share one global. Its row in the pass table
+ * (passes.c) runs when parameters are packed and preshaders are on, after the rows that reorder
+ * what fxc's optimiser reorders, so more work reads parameters alone: a loop's invariant sum
+ * terms (sums.c), locals forwarded and matrix chains regrouped (forward.c), scalar and
+ * parameter factors first (factors.c); the uses pass runs again after it when it made a
+ * preshader (parameters read only by preshaders leave the GLSL). */
 #include <string.h>
 
 #include "ir/ir.h"
@@ -168,11 +169,10 @@ static int leading_assignment(pre *p, ir_stmt *block, uint32_t i, assigned *done
     ir_expr *value = ir_clone_expr(p->c, e->a[1]);
     ir_walk_expr(p->c, &value, read_uniforms, done);
     bool hoistable = visit(p, &value, 0) == HOIST;
-    if (hoistable && only_negated(p, copy, block->body[i])) {
+    ir_var_map values = {0}; /* the copy's reads take the value */
+    if (hoistable && only_negated(p, copy, block->body[i]) && ir_var_map_put(p->c, &values, copy, value)) {
         ir_remove_stmt(block, i);
-        copy->bound = value;
-        for (uint32_t f = 0; f < p->sh->func_count; f++) ir_put_bound(p->c, p->sh->funcs[f]->body);
-        copy->bound = NULL;
+        for (uint32_t f = 0; f < p->sh->func_count; f++) ir_put_values(p->c, p->sh->funcs[f]->body, &values);
         return DROPPED;
     }
     if (hoistable && hoist(p, &value)) e->a[1] = value;
@@ -226,12 +226,8 @@ uint32_t ir_stage_regs(const ir_ctx *c, const ir_shader *sh) {
 
 void ir_pass_preshade(ir_ctx *c, ir_shader *sh) {
     pre p = {c, sh, ir_stage_regs(c, sh)};
-    ir_pass_sums(c, sh);
-    ir_pass_forward(c, sh);
-    ir_pass_factors(c, sh);
     entry_assignments(&p);
     for (uint32_t i = 0; i < sh->func_count; i++) ir_walk_stmt_roots(c, sh->funcs[i]->body, root, &p);
     for (uint32_t i = 0; i < sh->global_count; i++)
         if (sh->globals[i]->kind == IRV_PRIVATE && sh->globals[i]->init) root(c, &sh->globals[i]->init, &p);
-    if (sh->pre_count) ir_pass_uses(c, sh);
 }

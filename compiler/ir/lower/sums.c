@@ -8,8 +8,8 @@
  * right before the loop) to one statement before the loop:
  *     acc += (t1 + ...) * (float)(N > C ? N - C : 0);
  * which the preshade pass then takes whole, leaving one addition per pixel. The result is the
- * same sum added in another order (float rounding aside). Run by ir_pass_preshade, so
- * --no-preshaders keeps the loop as written. */
+ * same sum added in another order (float rounding aside). Its row in the pass table (passes.c)
+ * runs only with preshaders on, so --no-preshaders keeps the loop as written. */
 #include "ir/ir.h"
 
 enum { MAX_TERMS = 16 };

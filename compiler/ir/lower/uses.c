@@ -7,6 +7,7 @@
 typedef struct uses {
     ir_shader *sh;
     ir_var **list; uint32_t count, cap;
+    ir_var_map listed;       /* the variables in list */
     ir_func **seen; uint32_t seen_count;
 } uses;
 
@@ -14,8 +15,7 @@ static void walk_func(ir_ctx *c, uses *u, ir_func *f);
 static void visit(ir_ctx *c, ir_expr **slot, void *data);
 
 static void add(ir_ctx *c, uses *u, ir_var *v) {
-    if (v->used) return;
-    v->used = true;
+    if (ir_var_map_get(&u->listed, v) || !ir_var_map_put(c, &u->listed, v, v)) return;
     if (v->copy_of) add(c, u, v->copy_of);
     if (v->init) ir_walk_expr(c, &v->init, visit, u);
     if (!HFX_ARENA_GROW(c->arena, u->list, u->count, u->cap, 16)) return;
@@ -57,8 +57,7 @@ static void walk_func(ir_ctx *c, uses *u, ir_func *f) {
 }
 
 void ir_pass_uses(ir_ctx *c, ir_shader *sh) {
-    uses u = { sh, NULL, 0, 0, HFX_NEW_ARRAY(c->arena, ir_func *, sh->func_count + 1), 0 };
-    for (uint32_t i = 0; i < sh->global_count; i++) sh->globals[i]->used = false;
+    uses u = { sh, NULL, 0, 0, {0}, HFX_NEW_ARRAY(c->arena, ir_func *, sh->func_count + 1), 0 };
     walk_func(c, &u, sh->entry);
     sh->globals = u.list;
     sh->global_count = sh->global_cap = u.count;

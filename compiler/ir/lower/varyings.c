@@ -277,7 +277,6 @@ static ir_var *pixel_var(pair *p, const ir_var *v) {
     ir_var *n = HFX_NEW(p->c->arena, ir_var);
     if (!n || !HFX_ARENA_GROW(p->c->arena, p->added, p->added_count, p->added_cap, 4)) return NULL;
     *n = *v;
-    n->used = n->written = false;
     n->priv = n->copy_of = NULL;
     return p->added[p->added_count++] = n;
 }

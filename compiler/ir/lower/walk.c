@@ -139,12 +139,14 @@ void ir_remove_stmt(ir_stmt *b, uint32_t at) {
     b->count--;
 }
 
-static void put_bound(ir_ctx *c, ir_expr **slot, void *data) {
-    (void)data;
-    if ((*slot)->kind == IE_VAR && (*slot)->var->bound) *slot = ir_clone_expr(c, (*slot)->var->bound);
+static void put_value(ir_ctx *c, ir_expr **slot, void *data) {
+    const ir_expr *value = (*slot)->kind == IE_VAR ? ir_var_map_get(data, (*slot)->var) : NULL;
+    if (value) *slot = ir_clone_expr(c, value);
 }
 
-void ir_put_bound(ir_ctx *c, ir_stmt *s) { ir_walk_stmt_exprs(c, s, put_bound, NULL); }
+void ir_put_values(ir_ctx *c, ir_stmt *s, const ir_var_map *values) {
+    if (values->count) ir_walk_stmt_exprs(c, s, put_value, (void *)values);
+}
 
 bool ir_insert_stmts(ir_ctx *c, ir_stmt *b, uint32_t at, ir_stmt *const *s, uint32_t n) {
     ir_stmt **body = HFX_NEW_ARRAY(c->arena, ir_stmt *, b->count + n);

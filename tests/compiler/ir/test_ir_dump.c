@@ -49,7 +49,7 @@ static char *lowered(const char *src, const char *entry, int nargs, const bool *
         }
         ir_ctx c = { &f.arena, &f.diags, f.types, f.ast, NULL };
         ir_shader *sh = ir_build(&c, compile, pixel ? IR_PIXEL : IR_VERTEX);
-        if (sh && ir_lower(&c, sh) == 0) out = ir_dump_shader(sh);
+        if (sh && ir_lower(&c, sh, 0) == 0) out = ir_dump_shader(sh);
     }
     if (!out) {
         char *d = hfx_diags_format(&f.diags, 0);

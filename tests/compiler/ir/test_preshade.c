@@ -1,8 +1,10 @@
 /* test_preshade.c: after the preshade pass, no shader of the seeds (and of fx/) keeps work a
- * preshader could take. The test walks the IR of every pass's stages and looks, on its own, for
- * a subexpression a preshader computes (ir_pre_node at every node), that computes (an
- * operator, an intrinsic...), reads a parameter and gives a float value; there must be none.
- * The GLSL names what each preshader register holds, in HLSL. */
+ * preshader could take. The test walks the IR of every pass's stages and looks for a
+ * subexpression that is float all through, reads a parameter, computes (an operator or an
+ * intrinsic) and is built only of what the test itself, not pre_code.c, knows a preshader
+ * computes: a short list written here from D3D9's preshader instructions. There must be none,
+ * and without the preshade rows there must be some (so the oracle can fail). Small effects
+ * count their preshaders by hand. The GLSL names what each preshader register holds, in HLSL. */
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
@@ -24,39 +26,70 @@ typedef struct scan {
 
 enum { CAN = 1, WORK = 2, READS = 4 };
 
-static unsigned flags_of(const ir_ctx *c, const ir_expr *e) {
-    unsigned all = CAN, more = (ir_pre_work(e) ? WORK : 0) | (e->kind == IE_VAR ? READS : 0);
+static bool floating(const hfx_type *t) {
+    return hfx_type_is_numeric(t) && (t->base == B_FLOAT || t->base == B_HALF) && hfx_type_components(t) <= 16;
+}
+
+/* Intrinsics D3D9's preshaders compute (fxc's preshader listings use them), by HLSL name. */
+static bool cpu_intrinsic(int id) {
+    static const char *const names[] = {"abs", "cos", "sin", "dot", "normalize", "length", "mul", "sqrt",
+                                        "rsqrt", "max", "min", "saturate", "exp", "log", "frac", "cross"};
+    const char *n = hfx_intrinsic_name(id);
+    for (size_t i = 0; n && i < sizeof names / sizeof *names; i++)
+        if (!strcmp(n, names[i])) return true;
+    return false;
+}
+
+/* A node of float type that a preshader computes from its operands: a constant, a parameter
+ * (a uniform the shader does not write: a written one reads its private copy), arithmetic,
+ * one of the intrinsics above, or a move (swizzle, constructor, conversion between floats). */
+static bool cpu_node(const ir_expr *e) {
+    if (!floating(e->type)) return false;
+    switch (e->kind) {
+    case IE_CONST: return true;
+    case IE_VAR: return e->var->kind == IRV_UNIFORM && e->var->param != HFX_NONE;
+    case IE_UNARY: return e->op == OP_NEG;
+    case IE_BINARY: return e->op == OP_ADD || e->op == OP_SUB || e->op == OP_MUL || e->op == OP_DIV;
+    case IE_INTRIN: return cpu_intrinsic((int)e->intrin);
+    case IE_SWIZZLE: case IE_CONSTRUCT: return true;
+    case IE_CONVERT: return floating(e->a[0]->type);
+    default: return false;
+    }
+}
+
+static unsigned flags_of(const ir_expr *e) {
+    bool work = e->kind == IE_UNARY || e->kind == IE_BINARY || e->kind == IE_INTRIN;
+    unsigned all = CAN, more = (work ? WORK : 0) | (e->kind == IE_VAR ? READS : 0);
     for (uint32_t i = 0; i < e->n; i++) {
-        unsigned f = flags_of(c, e->a[i]);
+        unsigned f = flags_of(e->a[i]);
         all &= f;
         more |= f & (WORK | READS);
     }
-    return all && ir_pre_node(c, e) ? CAN | more : 0;
+    return all && cpu_node(e) ? CAN | more : 0;
 }
 
 static void look(ir_ctx *c, ir_expr **slot, void *data) {
     scan *s = data;
     const ir_expr *e = *slot;
-    bool floating = hfx_type_is_numeric(e->type) && (e->type->base == B_FLOAT || e->type->base == B_HALF);
-    if (floating && flags_of(c, e) == (CAN | WORK | READS)) {
-        fprintf(stderr, "  %s: left in the shader: %s\n", s->where, ir_pre_text(c, e));
+    if (flags_of(e) == (CAN | WORK | READS)) {
+        if (s->where) fprintf(stderr, "  %s: left in the shader: %s\n", s->where, ir_pre_text(c, e));
         s->left++;
     }
 }
 
-/* The IR of one compile expression, lowered and preshaded, scanned. */
+/* The IR of one compile expression, lowered (preshaded unless told not to: where NULL), scanned. */
 static unsigned stage_left(ir_ctx *c, const hfx_expr *compile, ir_stage st, const char *where, uint32_t *pres) {
     ir_shader *sh = ir_build(c, compile, st);
-    if (!sh || ir_lower(c, sh) != 0) return 1;
-    ir_pass_preshade(c, sh);
+    if (!sh || ir_lower(c, sh, IR_LOWER_PACKED | (where ? IR_LOWER_PRESHADE : 0)) != 0) return 1;
     *pres += sh->pre_count;
     scan s = {c, 0, where};
     for (uint32_t i = 0; i < sh->func_count; i++) ir_walk_stmt_exprs(c, sh->funcs[i]->body, look, &s);
     return s.left;
 }
 
-/* Every pass's shaders of the effect in path; *pres counts the preshaders made. */
-static unsigned effect_left(const char *path, uint32_t *pres) {
+/* Every pass's shaders of the effect in path; *pres counts the preshaders made. preshade false:
+ * without the preshade rows (nothing printed). */
+static unsigned effect_left(const char *path, uint32_t *pres, bool preshade) {
     size_t size = 0;
     char *src = test_read_file(path, &size);
     if (!src) return 1;
@@ -80,7 +113,7 @@ static unsigned effect_left(const char *path, uint32_t *pres) {
                 const hfx_state_assign *a = &t->passes[p].states[k];
                 bool vs = strcasecmp(a->name, "VertexShader") == 0, ps = strcasecmp(a->name, "PixelShader") == 0;
                 if ((vs || ps) && a->value && a->value->kind == EX_COMPILE)
-                    left += stage_left(&c, a->value, vs ? IR_VERTEX : IR_PIXEL, path, pres);
+                    left += stage_left(&c, a->value, vs ? IR_VERTEX : IR_PIXEL, preshade ? path : NULL, pres);
             }
     }
     if (!fx) left++, fprintf(stderr, "  %s did not compile\n", path);
@@ -102,7 +135,7 @@ static void seeds_keep_nothing(void) {
     for (size_t i = 0; i < sizeof seeds / sizeof *seeds; i++) {
         char *path = test_seed_path(seeds[i]);
         uint32_t pres = 0;
-        CHECK_INT(effect_left(path, &pres), 0);
+        CHECK_INT(effect_left(path, &pres, true), 0);
         bool none = strcmp(seeds[i], "fxcomposer_empty.fx") == 0;
         if (none != (pres == 0)) fprintf(stderr, "  %s: %u preshaders\n", seeds[i], (unsigned)pres);
         CHECK(none == (pres == 0));
@@ -117,8 +150,22 @@ static void project_effects_keep_nothing(void) {
         char path[512];
         snprintf(path, sizeof path, "%s/fx/%s", HFX_SOURCE_DIR, mine[i]);
         uint32_t pres = 0;
-        CHECK_INT(effect_left(path, &pres), 0);
+        CHECK_INT(effect_left(path, &pres, true), 0);
     }
+}
+
+/* The oracle sees the work when the preshade rows do not run: spot_specular.fx's five
+ * preshaders' worth (the_glsl_says_what_a_register_holds), and at least one per seed that has
+ * a preshader. */
+static void the_oracle_finds_work_left_unpreshaded(void) {
+    char *path = test_seed_path("spot_specular.fx");
+    uint32_t pres = 0;
+    CHECK(effect_left(path, &pres, false) >= 5);
+    CHECK_INT(pres, 0);
+    free(path);
+    path = test_seed_path("point.fx");
+    CHECK(effect_left(path, &pres, false) >= 1);
+    free(path);
 }
 
 /* The first program's GLSL 330 of an effect compiled with packed parameters (preshaders on):
@@ -351,6 +398,50 @@ static void positions_from_their_source(void) {
     hfxc_result_free(r);
 }
 
+/* Preshaders counted by hand, a line each: the maximal parameter-only subexpression that
+ * computes becomes one, equal ones share it, a parameter read as it is (or only converted) is
+ * none, and work that reads a varying stays.
+ *   A * k                 1: (A * (float4)k), k splat by a conversion (one product: factors.c
+ *                            reorders only when that saves multiplications)
+ *   A                     0: a move
+ *   tex2D(S, uv) * k      0: k alone computes nothing
+ *   cos(k) * uv.x         1: cos(k)
+ *   A + B + uv.x          1: (A + B), the left operand of the second +
+ *   uv.x + A + B          0: (uv.x + A) + B reads the varying at every step (no reassociation)
+ *   mul(M, A)             1: mul(M, A)
+ *   cos(k) * 2            1: the whole product, with the splat to float4 that `r +=` adds (a
+ *                            move: maximal takes it in); 2 folded to a float, printed %g
+ *   cos(k) * uv.y         0 more: the cos(k) of line 4, shared
+ * five in all. */
+static void hand_counted_preshaders(void) {
+    static const char src[] =
+        "float4 A, B; float k; float4x4 M; sampler S;\n"
+        "float4 PS(float2 uv : TEXCOORD0) : COLOR0 { float4 r = 0;\n"
+        "  r += A * k;\n"
+        "  r += A;\n"
+        "  r += tex2D(S, uv) * k;\n"
+        "  r += cos(k) * uv.x;\n"
+        "  r += A + B + uv.x;\n"
+        "  r += uv.x + A + B;\n"
+        "  r += mul(M, A);\n"
+        "  r += cos(k) * 2;\n"
+        "  r += cos(k) * uv.y;\n"
+        "  return r; }\n"
+        "technique T { pass P { PixelShader = compile ps_3_0 PS(); } }\n";
+    hfxc_result *r;
+    const hfx_fx_program *p = first_program(&r, NULL, src, "counted.fx");
+    if (p) {
+        const char *ps = glsl_of(p, HFX_STAGE_FRAGMENT);
+        CHECK_INT(p->preshader_count, 5);
+        CHECK_CONTAINS(ps, " = (A * (float4)k), computed on the CPU (a preshader)\n");
+        CHECK_CONTAINS(ps, " = cos(k), computed on the CPU (a preshader)\n");
+        CHECK_CONTAINS(ps, " = (A + B), computed on the CPU (a preshader)\n");
+        CHECK_CONTAINS(ps, " = mul(M, A), computed on the CPU (a preshader)\n");
+        CHECK_CONTAINS(ps, " = (float4)(cos(k) * 2), computed on the CPU (a preshader)\n");
+    }
+    hfxc_result_free(r);
+}
+
 /* The register file, pixel stage first: the parameters it reads as they are (in parameter
  * order), its preshaders, the parameters it copies, then the vertex stage's parameters and
  * preshaders. Gain, read by both stages, counts as the pixel stage's; World and ViewProj are read
@@ -406,7 +497,9 @@ int main(void) {
     RUN(pixel_registers_come_first);
     RUN(products_take_scalars_first);
     RUN(sums_add_invariant_terms_once);
+    RUN(hand_counted_preshaders);
     test_seeds_or_finish();
+    RUN(the_oracle_finds_work_left_unpreshaded);
     RUN(seed_pixel_shaders_read_register_0);
     RUN(seeds_keep_nothing);
     RUN(the_glsl_says_what_a_register_holds);
