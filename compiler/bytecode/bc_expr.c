@@ -44,7 +44,6 @@ bool bc_try_const(bc_gen *g, const ir_expr *e, double *out) {
     case IE_VAR: {
         bc_binding *x = bc_bind(g, e->var);
         if (x && x->is_const) { *out = x->konst; return true; }
-        if (e->var->konst && e->var->konst != e) return bc_try_const(g, e->var->konst, out);
         return false;
     }
     case IE_CONVERT:

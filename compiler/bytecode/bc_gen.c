@@ -575,7 +575,7 @@ void bc_call(bc_gen *g, const ir_expr *e, bc_obj *out) {
         if (is_out) outs[i] = bc_expr(g, e->a[i]);  /* an l-value: its registers */
         if (is_out && !(p->mods & MOD_IN)) { add_bind(g, p, bc_alloc_obj(g, p->type)); continue; }
         bc_obj a = is_out ? outs[i] : bc_expr(g, e->a[i]);
-        if (!p->written && !is_out) { /* read only: the argument's registers serve */
+        if (!bc_writes_param(g, f, p) && !is_out) { /* read only: the argument's registers serve */
             uint64_t owned = 0;
             for (uint32_t k = 0; k < a.count && k < 64; k++) if (a.slot[k].own) owned |= 1ull << k;
             bc_binding *b = add_bind(g, p, a);
@@ -621,3 +621,9 @@ void bc_bind_entry(bc_gen *g, const ir_var *p, bc_obj o, bool owned) {
 }
 
 void bc_gen_body(bc_gen *g, const ir_stmt *body) { gen_body(g, body); }
+
+bool bc_writes_param(bc_gen *g, const ir_func *f, const ir_var *p) {
+    ir_var_set w = {0};
+    if (f->body) ir_note_writes(g->c, f->body, &w);
+    return w.unknown || ir_var_set_has(&w, p);
+}

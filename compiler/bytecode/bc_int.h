@@ -110,6 +110,7 @@ bc_obj bc_obj_outputs(bc_gen *g, const ir_leaf *l, int n, const ir_var *p, const
 void bc_bind_entry(bc_gen *g, const ir_var *p, bc_obj o, bool owned);
 bool bc_straight_return(const ir_stmt *body);             /* the body returns only at its end */
 void bc_gen_body(bc_gen *g, const ir_stmt *body);
+bool bc_writes_param(bc_gen *g, const ir_func *f, const ir_var *p); /* f's body writes its parameter p */
 
 /* --- bc_expr.c --- */
 bc_obj bc_expr(bc_gen *g, const ir_expr *e);

@@ -42,12 +42,13 @@ static void gen_entry(bc_gen *g) {
         bc_obj o = {0};
         if (is_in) o = bc_obj_inputs(g, in, nin, p, p->type);
         if (is_out) outs[i] = bc_obj_outputs(g, out, nout, p, p->type);
-        if (is_out || p->written) { /* inputs are read only, outputs write only: a copy the body uses */
+        bool written = bc_writes_param(g, f, p);
+        if (is_out || written) { /* inputs are read only, outputs write only: a copy the body uses */
             bc_obj c = bc_alloc_obj(g, p->type);
             if (is_in) bc_assign(g, c, o, p->type, false);
             o = c;
         }
-        bc_bind_entry(g, p, o, is_out || p->written);
+        bc_bind_entry(g, p, o, is_out || written);
     }
     bc_obj ret = {0}, regs = {0};
     if (f->ret && f->ret->kind != TY_VOID) {

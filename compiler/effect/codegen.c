@@ -461,7 +461,7 @@ const uint32_t *hfx_codegen_bytecode(hfx_codegen *cg, const hfx_expr *compile, b
     if (!compile || compile->kind != EX_COMPILE) return NULL;
     uint32_t errors = cg->c.diags->errors;
     ir_shader *sh = ir_build(&cg->c, compile, pixel ? IR_PIXEL : IR_VERTEX); /* lowered without preshaders */
-    if (!sh || cg->c.diags->errors > errors || ir_lower(&cg->c, sh) != 0) return NULL;
+    if (!sh || cg->c.diags->errors > errors || ir_lower(&cg->c, sh, 0) != 0) return NULL;
     return bc_write(&cg->c, sh, compile->profile, count);
 }
 
