@@ -22,6 +22,7 @@ typedef struct cli_options {
     unsigned targets;        /* bits (1 << hfx_target); 0 = the library's default */
     bool disassemble;        /* --disassemble, /dumpbin: listings of fxc's binaries */
     bool reflect, annotations, ast, werror, quiet, no_warnings, pack_uniforms, no_self_check, no_preshaders, no_derived_varyings;
+    bool via_d3d9;           /* --via-d3d9 (tests): programs through the D3D9 bytecode back end and back */
     int jobs;                /* 0 = one per core */
     bool depfile;            /* -MD: write a Make / Ninja depfile per input */
     bool depfile_phony;      /* -MP: an empty rule per include, so deleting one does not break make */

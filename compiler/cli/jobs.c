@@ -75,6 +75,19 @@ static bool write_file(const char *path, const void *data, size_t size, char **e
     return ok;
 }
 
+/* /Fo: the raw token stream; /Fc: fxc's listing of it. */
+static void write_shader(const cli_options *o, cli_job *job, const void *code, size_t size) {
+    char *path = o->output ? strdup(o->output) : NULL;
+    if (path && !write_file(path, code, size, &job->error)) job->ok = false;
+    free(path);
+    if (!o->listing) return;
+    char *diags = NULL, *text = hfxc_disassemble(code, size, job->input, &diags);
+    if (!text || !write_file(o->listing, text, strlen(text), &job->error)) job->ok = false;
+    if (!text && !job->error) job->error = fmt("cannot list the shader of '%s'%s", job->input, "");
+    free(text);
+    free(diags);
+}
+
 static void write_hfxo(const cli_options *o, cli_job *job, const hfx_fx_effect *fx) {
     cli_write_fxc(o, job, fx); /* /Fo (fxc's format), /Fh, /Fc */
     if (o->format == CLI_FORMAT_FXC) return;
@@ -213,7 +226,7 @@ static void compile_one(const cli_options *o, cli_job *job, hfxc_session *sessio
     opt.flags = (o->werror ? HFXC_WERROR : 0) | (o->no_warnings ? HFXC_NO_WARNINGS : 0) | (o->ast ? HFXC_PARSE_ONLY : 0) |
                 (o->pack_uniforms ? HFXC_PACK_UNIFORMS : 0) | (o->no_self_check ? HFXC_NO_SELF_CHECK : 0) |
                 (o->no_preshaders ? HFXC_NO_PRESHADERS : 0) |
-                (o->no_derived_varyings ? HFXC_NO_DERIVED_VARYINGS : 0);
+                (o->no_derived_varyings ? HFXC_NO_DERIVED_VARYINGS : 0) | (o->via_d3d9 ? HFXC_VIA_D3D9 : 0);
     hfxc_result *r = hfxc_compile_file(job->input, &opt);
     if (!r) {
         job->error = fmt("out of memory compiling '%s'%s", job->input, "");
@@ -231,7 +244,10 @@ static void compile_one(const cli_options *o, cli_job *job, hfxc_session *sessio
             job->error = fmt("'%s': the compiler produced no effect%s", job->input, "");
         } else {
             warn_missing_targets(o, job, job->effect);
-            write_hfxo(o, job, job->effect);
+            size_t size = 0;
+            const void *code = hfxc_result_bytecode(r, &size);
+            if (code && o->format == CLI_FORMAT_FXC) write_shader(o, job, code, size); /* fxc /T vs_* | ps_* /Fo: the shader, as fxc writes it */
+            else write_hfxo(o, job, job->effect);
             emit_glsl(o, job, job->effect);
             if (job->ok && o->depfile && !cli_write_depfile(o, job->input, r, &job->error)) job->ok = false;
         }

@@ -197,6 +197,7 @@ static int flag(cli_options *o, const char *a, bool *handled) {
     else if (!strcmp(a, "--no-self-check")) o->no_self_check = true;
     else if (!strcmp(a, "--no-preshaders")) o->no_preshaders = true;
     else if (!strcmp(a, "--no-derived-varyings")) o->no_derived_varyings = true;
+    else if (!strcmp(a, "--via-d3d9")) o->via_d3d9 = true;
     else if (!strcmp(a, "--pack-uniforms")) o->pack_uniforms = true; /* the default; kept for scripts */
     else if (!strcmp(a, "--separate-uniforms")) o->pack_uniforms = false;
     else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) o->quiet = true;

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bytecode/bytecode.h"
 #include "glsl/glsl.h"
 
 /* A stage built and lowered once: programs share it (BasicEffect's 32 programs use 20 vertex
@@ -431,7 +432,10 @@ oom:
     return -1;
 }
 
+static int via_bytecode(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps, bool flat_colors, hfx_fx_program *out);
+
 int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps, bool flat_colors, hfx_fx_program *out) {
+    if (cg->c.diags->flags & HFXC_VIA_D3D9) return via_bytecode(cg, vs, ps, flat_colors, out);
     memset(out, 0, sizeof *out);
     ir_shader *sh[2];
     bool vs_ok = stage(cg, vs, IR_VERTEX, &sh[0]), ps_ok = stage(cg, ps, IR_PIXEL, &sh[1]);
@@ -459,4 +463,52 @@ int hfx_codegen_d3d9_program(hfx_codegen *cg, const d3d9_shader *vs, const d3d9_
     const d3d9_shader *at = vs ? vs : ps;
     hfx_loc loc = at ? (hfx_loc){at->file_index, 0, at->base} : (hfx_loc){0, 1, 1};
     return program_of(cg, sh, flat_colors, loc, out);
+}
+
+const uint32_t *hfx_codegen_bytecode(hfx_codegen *cg, const hfx_expr *compile, bool pixel, uint32_t *count) {
+    *count = 0;
+    if (!compile || compile->kind != EX_COMPILE) return NULL;
+    uint32_t errors = cg->c.diags->errors;
+    ir_shader *sh = ir_build(&cg->c, compile, pixel ? IR_PIXEL : IR_VERTEX); /* lowered without preshaders */
+    if (!sh || cg->c.diags->errors > errors || ir_lower(&cg->c, sh, 0) != 0) return NULL;
+    return bc_write(&cg->c, sh, compile->profile, count);
+}
+
+const uint32_t *hfx_codegen_entry_bytecode(hfx_arena *arena, hfx_diags *diags, hfx_types *types, hfx_ast *ast,
+                                           hfx_fx_effect *fx, const char *entry, const char *profile, uint32_t *count) {
+    hfx_decl *fn = NULL;
+    for (uint32_t i = 0; ast && i < ast->decl_count; i++) {
+        hfx_decl *d = ast->decls[i];
+        if (d->kind == DECL_FUNC && d->func && d->name && strcmp(d->name, entry) == 0 && (!fn || d->func->body)) fn = d;
+    }
+    hfx_codegen *cg = fn ? hfx_codegen_new(arena, diags, types, ast, fx, 0, false, NULL, NULL) : NULL;
+    hfx_expr *c = cg ? HFX_NEW(arena, hfx_expr) : NULL;
+    if (!c) return NULL;
+    c->kind = EX_COMPILE;
+    c->loc = fn->loc;
+    c->name = entry;
+    c->profile = profile;
+    c->intrinsic = -1;
+    c->fn = fn->func->definition ? fn->func->definition : fn->func;
+    return hfx_codegen_bytecode(cg, c, profile[0] == 'p' || profile[0] == 'P', count);
+}
+
+/* HFXC_VIA_D3D9: each stage written as bytecode for its profile, decoded and translated back
+ * (hfx_codegen_d3d9_program), so every drawing test can run through the bytecode back end. */
+static const d3d9_shader *bytecode_of(hfx_codegen *cg, const hfx_expr *e, bool pixel, bool *ok) {
+    if (!e || e->kind == EX_NULL) return NULL;
+    uint32_t n = 0;
+    const uint32_t *w = hfx_codegen_bytecode(cg, e, pixel, &n);
+    if (!w) { *ok = false; return NULL; }
+    d3d9_input in = {w, n * 4, hfx_diags_add_file(cg->c.diags, pixel ? "ps.bytecode" : "vs.bytecode", NULL, "", 0), 0};
+    const d3d9_shader *s = d3d9_decode(cg->c.arena, cg->c.diags, &in);
+    *ok &= s != NULL;
+    return s;
+}
+
+static int via_bytecode(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps, bool flat_colors, hfx_fx_program *out) {
+    memset(out, 0, sizeof *out);
+    bool ok = true;
+    const d3d9_shader *v = bytecode_of(cg, vs, false, &ok), *p = bytecode_of(cg, ps, true, &ok);
+    return ok ? hfx_codegen_d3d9_program(cg, v, p, flat_colors, out) : -1;
 }

@@ -36,4 +36,12 @@ int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps,
 int hfx_codegen_d3d9_program(hfx_codegen *cg, const d3d9_shader *vs, const d3d9_shader *ps, bool flat_colors,
                              hfx_fx_program *out);
 
+/* D3D9 bytecode (compiler/bytecode) of one shader of a pass, for h32b's fx_2_0 writer and fxc's
+ * /T vs_* | ps_*: `compile` is the stage's EX_COMPILE (its profile names the model); *count words,
+ * in the codegen's arena. NULL with located errors. */
+const uint32_t *hfx_codegen_bytecode(hfx_codegen *cg, const hfx_expr *compile, bool pixel, uint32_t *count);
+/* fxc /T profile /E entry: the entry's bytecode; fx holds the parameters (hfx_build_entry_effect). */
+const uint32_t *hfx_codegen_entry_bytecode(hfx_arena *arena, hfx_diags *diags, hfx_types *types, hfx_ast *ast,
+                                           hfx_fx_effect *fx, const char *entry, const char *profile, uint32_t *count);
+
 #endif

@@ -10,6 +10,7 @@
 
 #include "parse/ast.h"
 #include "effect/build.h"
+#include "effect/codegen.h"
 #include "effect/fx2.h"
 #include "check/check.h"
 #include "effect.h"
@@ -24,6 +25,8 @@ struct hfxc_result {
     bool oom;         /* an allocation failed: never ok, even if the message could not be stored */
     const char **deps;     /* hfxc_dependency_at: unique paths, in the order first read */
     size_t dep_count;
+    const uint32_t *bytecode; /* fxc /T vs_* | ps_*: the shader's tokens (arena) */
+    uint32_t bytecode_words;
 };
 
 struct hfxc_session {
@@ -71,8 +74,14 @@ static void run_phases(hfxc_result *r, const char *name, const char *text, size_
     if (r->diags.errors) return;
     if (!hfx_check(&r->arena, &r->diags, types, r->ast) || r->diags.errors) return;
     if (opt && opt->entry)  /* fxc /E: one entry point, one profile */
+    {
         r->effect = hfx_build_entry_effect(&r->arena, &r->diags, types, r->ast, name, default_targets(opt),
                                            opt->entry, opt->profile);
+        bool shader = opt->profile && (opt->profile[0] == 'v' || opt->profile[0] == 'p') && opt->profile[1] == 's';
+        if (r->effect && shader && !r->diags.errors)
+            r->bytecode = hfx_codegen_entry_bytecode(&r->arena, &r->diags, types, r->ast, r->effect, opt->entry,
+                                                     opt->profile, &r->bytecode_words);
+    }
     else
         r->effect = hfx_build_effect(&r->arena, &r->diags, types, r->ast, name, default_targets(opt));
 }
@@ -196,6 +205,11 @@ char *hfxc_diagnostics_text(const hfxc_result *r) {
 
 const struct hfx_fx_effect *hfxc_result_effect(const hfxc_result *r) { return r ? r->effect : NULL; }
 
+const void *hfxc_result_bytecode(const hfxc_result *r, size_t *size) {
+    *size = r && r->bytecode ? (size_t)r->bytecode_words * 4 : 0;
+    return r ? r->bytecode : NULL;
+}
+
 struct hfx_fx_effect *hfxc_result_take_effect(hfxc_result *r) {
     if (!r) return NULL;
     hfx_fx_effect *fx = r->effect;
@@ -235,7 +249,11 @@ char *hfxc_disassemble(const void *data, size_t size, const char *name, char **d
     r->arena.escape = &escape;
     if (setjmp(escape) == 0) {
         hfx_arena_escape_on(&r->arena);
-        listing = hfx_fx2_listing(&r->arena, &r->diags, name ? name : "memory", data, size);
+        if (d3d9_is_shader(data, size)) { /* a raw shader (.vso / .pso, fxc /T vs_* | ps_*) */
+            sbuf out = {.arena = &r->arena};
+            d3d9_input in = {data, (uint32_t)size, hfx_diags_add_file(&r->diags, name ? name : "memory", NULL, "", 0), 0};
+            listing = d3d9_disassemble_blob(&r->arena, &r->diags, &in, &out) == 0 && !out.oom ? out.d : NULL;
+        } else listing = hfx_fx2_listing(&r->arena, &r->diags, name ? name : "memory", data, size);
         hfx_arena_escape_off(&r->arena);
     } else {
         r->arena.escape_depth = 0;

@@ -36,7 +36,8 @@ enum { /* hfxc_options.flags */
     HFXC_NO_SELF_CHECK = 1u << 5, /* skip glslang's check of every emitted shader (faster; a bug of hfx reaches the driver) */
     HFXC_TEST_BREAK_GLSL = 1u << 6, /* for hfx's own tests: the code generator spoils every shader, so the self-check must fail */
     HFXC_NO_PRESHADERS = 1u << 7, /* keep parameter-only work in the shaders (preshaders need HFXC_PACK_UNIFORMS) */
-    HFXC_NO_DERIVED_VARYINGS = 1u << 8 /* interpolate every vertex output, even one the pixel shader could compute from another */
+    HFXC_NO_DERIVED_VARYINGS = 1u << 8, /* interpolate every vertex output, even one the pixel shader could compute from another */
+    HFXC_VIA_D3D9 = 1u << 9     /* for tests: every program goes source -> D3D9 bytecode (each pass's profile) -> hfx's reader -> GLSL */
 };
 
 /* Limits on untrusted input. A source file (the root or an #include) of more than
@@ -71,6 +72,9 @@ const hfxc_diag *hfxc_diag_at(const hfxc_result *r, size_t i);
 char *hfxc_diagnostics_text(const hfxc_result *r);               /* all messages, one a line; free() it */
 const struct hfx_fx_effect *hfxc_result_effect(const hfxc_result *r); /* NULL when compilation failed */
 struct hfx_fx_effect *hfxc_result_take_effect(hfxc_result *r);   /* caller owns it now */
+/* With a vs_* / ps_* profile and an entry (fxc /T /E): the shader's D3D9 bytecode (little-endian
+ * words as fxc writes them, *size bytes, living as long as r); NULL otherwise. */
+const void *hfxc_result_bytecode(const hfxc_result *r, size_t *size);
 char *hfxc_result_ast_dump(const hfxc_result *r);                /* readable AST; free() it */
 /* With hfxc_options.dump_ir: each stage's IR after that pass, in the order the passes ran, each
  * dump opened by `// after PASS: file(line,col)` (where its compile is); free() it. */

@@ -1,6 +1,6 @@
 # Include arrows only run down the pipeline: a file of phase N includes headers of phases <= N.
 # Run as `cmake -DCOMPILER_DIR=... -P layers.cmake`; fails with every arrow that runs back up.
-set(order base pp parse check ir d3d9 glsl effect cli)
+set(order base pp parse check ir d3d9 bytecode glsl effect cli)
 file(GLOB_RECURSE files RELATIVE ${COMPILER_DIR} ${COMPILER_DIR}/*.c ${COMPILER_DIR}/*.h
   ${COMPILER_DIR}/*.y ${COMPILER_DIR}/*.re ${COMPILER_DIR}/*.def)
 set(bad "")

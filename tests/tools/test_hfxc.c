@@ -271,6 +271,18 @@ static void one_entry_point(void) {
         CHECK(fx->programs[0].code[HFX_STAGE_FRAGMENT][HFX_TARGET_GLSL330].data != NULL);
     }
     hfx_fx_effect_free(fx);
+    /* fxc's /T ps_3_0 /E /Fo: the shader's bytecode, version token ps_3_0 first, END last (issue 32) */
+    char out[1024];
+    snprintf(out, sizeof out, "%s/entry.pso", tmp);
+    EXPECT_STATUS(0, "/T ps_3_0 /E mainPS /Fo '%s' '%s'", out, seed);
+    size_t size = 0;
+    unsigned char *code = (unsigned char *)test_read_file(out, &size);
+    CHECK(code != NULL && size >= 8 && size % 4 == 0);
+    if (code && size >= 8) {
+        CHECK_INT(code[0] | code[1] << 8 | code[2] << 16 | (uint32_t)code[3] << 24, 0xffff0300u);
+        CHECK_INT(code[size - 4] | code[size - 3] << 8 | code[size - 2] << 16 | (uint32_t)code[size - 1] << 24, 0x0000ffffu);
+    }
+    free(code);
     run_result r = run_expecting(1, "-T vs_3_0 -E nope '%s'", seed);
     char expected[2048];
     snprintf(expected, sizeof expected, "%s(1,1): error X3501: 'nope': entrypoint not found\n", seed);

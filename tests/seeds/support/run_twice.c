@@ -1,9 +1,11 @@
 /* run_twice.c: see run_twice.h. */
 #include "run_twice.h"
 
+#include <stdbool.h>
+
 #include "files.h"
 
-int seed_run_twice(seed_scene **scene, void (*run_all)(void)) {
+static int run(seed_scene **scene, void (*run_all)(void), bool bytecode) {
     test_require_seeds();
     *scene = seed_scene_create(128, 128);
     if (!*scene) {
@@ -14,8 +16,16 @@ int seed_run_twice(seed_scene **scene, void (*run_all)(void)) {
     printf("== the same, loading the effects from .hfxo bytes (hfxc, then hfx_effect_load_memory)\n");
     seed_use_hfxo(*scene, 1);
     run_all();
+    if (bytecode) {
+        printf("== the same, each effect compiled through the D3D9 bytecode back end and read back\n");
+        seed_use_hfxo(*scene, 2);
+        run_all();
+    }
     seed_report(*scene);
     seed_scene_destroy(*scene);
     *scene = NULL;
     return 0;
 }
+
+int seed_run_twice(seed_scene **scene, void (*run_all)(void)) { return run(scene, run_all, false); }
+int seed_run_thrice(seed_scene **scene, void (*run_all)(void)) { return run(scene, run_all, true); }

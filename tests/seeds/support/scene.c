@@ -199,7 +199,8 @@ static hfx_effect *load_via_hfxo(seed_scene *s, const char *seed_file, const cha
     hfx_load_options opt;
     memset(&opt, 0, sizeof opt);
     opt.target = s->target;
-    hfxc_result *r = hfxc_compile_file(path, s->target == HFX_TARGET_GLSL330 ? NULL : &co);
+    if (s->via_hfxo == 2) co.flags |= HFXC_VIA_D3D9 | HFXC_PACK_UNIFORMS; /* source -> D3D9 bytecode -> reader -> GLSL */
+    hfxc_result *r = hfxc_compile_file(path, s->target == HFX_TARGET_GLSL330 && s->via_hfxo != 2 ? NULL : &co);
     const struct hfx_fx_effect *compiled = r ? hfxc_result_effect(r) : NULL;
     void *data = NULL;
     size_t size = 0;
@@ -485,7 +486,7 @@ rgba seed_pixel(seed_scene *s, int x, int y) {
 
 static void record(seed_scene *s, const char *name, double diff) {
     char file[64];
-    snprintf(file, sizeof file, "%s%s", name, s->via_hfxo ? " via .hfxo" : "");
+    snprintf(file, sizeof file, "%s%s", name, s->via_hfxo == 2 ? " via D3D9 bytecode" : s->via_hfxo ? " via .hfxo" : "");
     seed_file_report *r = NULL;
     for (int i = 0; i < s->file_count; i++)
         if (strcmp(s->files[i].file, file) == 0) r = &s->files[i];

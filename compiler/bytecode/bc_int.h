@@ -1,0 +1,142 @@
+/* bc_int.h: what the files of compiler/bytecode/ share. bc_emit.c: instructions as records,
+ * registers, constants, the CTAB and the token stream; bc_gen.c: the entry's interface,
+ * variables and statements (flattened, unrolled); bc_expr.c: expressions; bc_intrin.c: the
+ * intrinsics, one table. */
+#ifndef HFX_BC_INT_H
+#define HFX_BC_INT_H
+
+#include <stdarg.h>
+#include <string.h>
+
+#include "bytecode/bytecode.h"
+#include "d3d9/d3d9.h"
+
+enum { BC_REG_NONE = 0xff }; /* an input the model has no register for: an error when read */
+enum { BC_MAX_TEMPS = 32, BC_MAX_CONSTS = 256, BC_MAX_VARS = 4096 };
+/* fxc's codes where it has one (X3511 loops it cannot unroll, X4505 temporaries, X5608 / X5609
+ * instruction slots); X5006 what the writer does not handle, X5610 constant registers (hfx's own). */
+enum { X_BC_UNSUPPORTED = 5006, X_BC_TEMPS = 4505, X_BC_CONSTS = 5610, X_BC_LOOP = 3511 };
+
+/* One operand of up to four components: register, the register component each value component
+ * reads, a source modifier; `own` when it is a temporary the reader frees. */
+typedef struct bc_val {
+    uint8_t type, n, mod;
+    uint16_t num;
+    uint8_t sw[4];
+    bool own;
+    bool rel;                 /* c[a0.x + num] */
+} bc_val;
+
+/* A value of any type: slots of up to four components (matrices one per row, or one per column
+ * when `cols`; arrays and structs flattened in order). */
+typedef struct bc_obj {
+    bc_val *slot;
+    uint32_t count;
+    bool cols;
+} bc_obj;
+
+/* A variable's registers; `owned`: the slots whose temporaries its scope's end frees (an inlined
+ * callee's parameter may borrow its argument's registers). */
+typedef struct bc_binding { const ir_var *var; bc_obj obj; uint64_t owned; double konst; bool is_const; } bc_binding;
+
+/* A CTAB constant: a parameter (or sampler) the shader reads, its register set and registers. */
+typedef struct bc_ctab { const char *name; const hfx_type *type; uint8_t set; uint16_t reg, count; bool cols; } bc_ctab;
+
+typedef struct bc_def { float v[4]; uint8_t used; uint16_t num; } bc_def;
+
+typedef struct bc_gen {
+    ir_ctx *c;
+    const ir_shader *sh;
+    d3d9_stage stage;
+    uint8_t model;            /* D3D9_SM */
+    const char *profile;
+    bool ps2;                 /* ps_2_x: t and v inputs */
+    hfx_loc loc;
+    d3d9_inst *insts; uint32_t inst_count, inst_cap;
+    uint32_t temps_used;      /* bitmask of live r registers */
+    uint32_t temps_peak;
+    unsigned next_temp;       /* where bc_temp looks first */
+    uint8_t cused[BC_MAX_CONSTS];  /* c registers taken by parameters or defs */
+    uint32_t max_consts;
+    d3d9_inst *dcls; uint32_t dcl_count, dcl_cap; /* dcl instructions, written before the code */
+    bool broke;               /* a break ended the loop being unrolled */
+    bc_def *defs; uint32_t def_count, def_cap;
+    bc_ctab *ctab; uint32_t ctab_count, ctab_cap;
+    bc_binding *binds; uint32_t bind_count, bind_cap;
+    bc_obj *ret;              /* the current function's return value's registers */
+    bc_obj *capture;          /* or: a straight callee's returned value, taken as it is */
+    uint32_t capture_mark;    /* the callee's first binding */
+    bc_val cond;              /* flattening: the condition the current code runs under (n == 0: always) */
+    int last_fresh;           /* instruction that wrote a fresh temporary whole, or -1 */
+    uint32_t inputs, outputs, samplers;
+    uint32_t depth;           /* inlined calls, against recursion */
+    bool failed;
+} bc_gen;
+
+/* --- bc_emit.c --- */
+void bc_fail(bc_gen *g, hfx_loc loc, unsigned code, const char *fmt, ...) __attribute__((format(printf, 4, 5)));
+unsigned bc_temp_limit(const bc_gen *g);                  /* the model's r registers */
+int bc_temp(bc_gen *g);                                    /* a free r register, or -1 (error reported) */
+void bc_release(bc_gen *g, bc_val v);                      /* frees v's temporary when it owns one */
+void bc_release_obj(bc_gen *g, bc_obj o);
+bc_val bc_reg(uint8_t type, uint16_t num, unsigned n);     /* .xyzw-like identity read of n components */
+bc_val bc_scalar_of(bc_val v, unsigned i);                 /* component i replicated */
+bc_val bc_neg(bc_val v);
+d3d9_inst *bc_emit(bc_gen *g, uint16_t op, const bc_val *dst, unsigned mask, const bc_val *src, unsigned n);
+bc_val bc_op(bc_gen *g, uint16_t op, unsigned n, const bc_val *src, unsigned count); /* fresh temp = op(src) */
+bc_val bc_op1(bc_gen *g, uint16_t op, unsigned n, bc_val a);
+bc_val bc_op2(bc_gen *g, uint16_t op, unsigned n, bc_val a, bc_val b);
+bc_val bc_op3(bc_gen *g, uint16_t op, unsigned n, bc_val a, bc_val b, bc_val c);
+bc_val bc_const(bc_gen *g, const float *v, unsigned n);    /* a def register's components */
+bc_val bc_constf(bc_gen *g, float v);
+bool bc_can_sat(const bc_gen *g);                         /* the _sat modifier: pixel shaders and vs_3_0 */
+bool bc_is_zero(const bc_gen *g, const bc_val *v);        /* a def register's zeros */
+/* Writes value v into the components of target t (t.sw: the register component of each). */
+void bc_store(bc_gen *g, bc_val t, bc_val v, bool sat);
+bool bc_reserve_consts(bc_gen *g, uint16_t first, uint16_t count);
+const uint32_t *bc_encode(bc_gen *g, uint32_t *count);
+
+/* --- bc_gen.c --- */
+bc_binding *bc_bind(bc_gen *g, const ir_var *v);           /* the variable's storage (made on first use), or NULL */
+uint32_t bc_slots(const hfx_type *t, bool cols);
+unsigned bc_slot_width(const hfx_type *t, bool cols, uint32_t k); /* components of slot k */
+bc_obj bc_alloc_obj(bc_gen *g, const hfx_type *t);         /* temporaries for a value of type t (rows) */
+void bc_assign(bc_gen *g, bc_obj dst, bc_obj src, const hfx_type *t, bool sat);
+void bc_call(bc_gen *g, const ir_expr *e, bc_obj *out);
+void bc_bind_globals(bc_gen *g);                          /* parameters' c registers, samplers' s, the CTAB */
+void bc_init_privates(bc_gen *g);                         /* static globals, initialised at the start */
+bc_obj bc_obj_inputs(bc_gen *g, const ir_leaf *l, int n, const ir_var *p, const hfx_type *t);  /* p's input registers (dcl'd) */
+bc_obj bc_obj_outputs(bc_gen *g, const ir_leaf *l, int n, const ir_var *p, const hfx_type *t); /* p's (NULL: the return's) outputs */
+void bc_bind_entry(bc_gen *g, const ir_var *p, bc_obj o, bool owned);
+bool bc_straight_return(const ir_stmt *body);             /* the body returns only at its end */
+void bc_gen_body(bc_gen *g, const ir_stmt *body);
+bool bc_writes_param(bc_gen *g, const ir_func *f, const ir_var *p); /* f's body writes its parameter p */
+
+/* --- bc_expr.c --- */
+bc_obj bc_expr(bc_gen *g, const ir_expr *e);
+bool bc_immutable(const bc_gen *g, const bc_val *v);     /* c / v / t registers nothing writes */
+/* lhs = src; owned: the slots of src whose temporaries it may take (the rest are copied or viewed). */
+void bc_assign_expr(bc_gen *g, const ir_expr *lhs, bc_obj src, uint64_t owned);
+void bc_init_binding(bc_gen *g, bc_binding *b, bc_obj src); /* a new variable's value: views, adopted temporaries or copies */
+bc_val bc_expr1(bc_gen *g, const ir_expr *e);              /* a scalar or vector */
+bc_val bc_own(bc_gen *g, bc_val v);                        /* v in a temporary of its own */
+bc_val bc_matrix_elem(bc_obj m, unsigned row, unsigned col);
+bc_val bc_matrix_row(bc_gen *g, bc_obj m, const hfx_type *t, unsigned row);
+bc_val bc_not(bc_gen *g, bc_val a);
+bc_val bc_select(bc_gen *g, bc_val c, bc_val a, bc_val b);  /* c (0 / 1) ? a : b */
+bool bc_try_const(bc_gen *g, const ir_expr *e, double *out);
+bc_val bc_per_comp(bc_gen *g, uint16_t op, bc_val a, const bc_val *b); /* op on each component (rcp, rsq, exp, log, pow) */
+
+/* --- bc_peep.c --- */
+void bc_sink(bc_gen *g);                                 /* copies folded into the instructions they copy */
+uint32_t bc_renumber(bc_gen *g);
+void bc_dead_code(bc_gen *g);                            /* instructions whose results nothing reads */
+void bc_prune_constants(bc_gen *g);                      /* parameters and defs nothing reads */                         /* temporaries renumbered by span; how many */
+
+/* --- bc_intrin.c --- */
+bc_obj bc_intrinsic(bc_gen *g, const ir_expr *e);
+bc_val bc_dot(bc_gen *g, bc_val a, bc_val b);
+bc_val bc_floor(bc_gen *g, bc_val x);
+bc_val bc_fmod(bc_gen *g, bc_val a, bc_val b);            /* fxc's: frc(|a / b|) with a / b's sign, times b */
+
+#endif
