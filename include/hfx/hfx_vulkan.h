@@ -70,32 +70,32 @@ typedef struct hfx_vertex_element {
 
 /* Device: the application's Vulkan objects (not owned); NULL with a message in *error when the
  * device lacks what hfx needs. error may be NULL; else free the message with hfx_free. */
-hfx_device *hfx_device_create_vulkan(const hfx_vulkan_desc *desc, char **error);
+HFX_API hfx_device *hfx_device_create_vulkan(const hfx_vulkan_desc *desc, char **error);
 /* Starts a frame: its slot of the uniform ring and descriptor pools is reused. */
-int hfx_device_begin_frame_vk(hfx_device *dev);
-int hfx_device_end_frame_vk(hfx_device *dev);       /* the frame's Applies are all recorded */
+HFX_API int hfx_device_begin_frame_vk(hfx_device *dev);
+HFX_API int hfx_device_end_frame_vk(hfx_device *dev);       /* the frame's Applies are all recorded */
 /* Pipelines made so far (each (program, render states, vertex layout, target) once). */
-size_t hfx_device_pipelines_created_vk(const hfx_device *dev);
+HFX_API size_t hfx_device_pipelines_created_vk(const hfx_device *dev);
 /* Uniform slices written to the ring and descriptor sets written so far: an Apply with nothing
  * changed adds to neither. */
-void hfx_device_writes_vk(const hfx_device *dev, size_t *uniform_slices, size_t *descriptor_sets);
+HFX_API void hfx_device_writes_vk(const hfx_device *dev, size_t *uniform_slices, size_t *descriptor_sets);
 
 /* D3D9's SetRenderState for what the application draws with (XNA's BlendState,
  * DepthStencilState, RasterizerState): "CullMode", "AlphaBlendEnable"... by their effect-file
  * names, values as D3D9 numbers them. Passes set theirs over these, and they stay set after the
  * pass, as in D3D9. Reset puts back D3D9's defaults. */
-int hfx_device_set_render_state_vk(hfx_device *dev, const char *state, int value);
-int hfx_device_reset_render_states_vk(hfx_device *dev);
+HFX_API int hfx_device_set_render_state_vk(hfx_device *dev, const char *state, int value);
+HFX_API int hfx_device_reset_render_states_vk(hfx_device *dev);
 
 /* A vertex layout described once; pipelines are cached by it. Semantics are copied. */
-hfx_vertex_layout *hfx_vertex_layout_create(hfx_device *dev, const hfx_vertex_element *elements, size_t count);
-void hfx_vertex_layout_destroy(hfx_vertex_layout *layout);         /* after the effects that drew with it */
+HFX_API hfx_vertex_layout *hfx_vertex_layout_create(hfx_device *dev, const hfx_vertex_element *elements, size_t count);
+HFX_API void hfx_vertex_layout_destroy(hfx_vertex_layout *layout);         /* after the effects that drew with it */
 
 /* A texture or sampler parameter samples this view, in this layout, from now on. */
-int hfx_param_set_texture_vk(hfx_param *p, VkImageView view, VkImageLayout layout);
+HFX_API int hfx_param_set_texture_vk(hfx_param *p, VkImageView view, VkImageLayout layout);
 /* Binds what the pass needs for the next draw into cmd (inside a render pass compatible with
  * target): the pipeline, the descriptor set, the uniforms' slice, viewport and scissor. */
-int hfx_pass_apply_vk(hfx_pass *p, VkCommandBuffer cmd, const hfx_vk_target *target);
+HFX_API int hfx_pass_apply_vk(hfx_pass *p, VkCommandBuffer cmd, const hfx_vk_target *target);
 
 #ifdef __cplusplus
 }

@@ -6,6 +6,8 @@
 
 #include <stddef.h>
 
+#include "hfx/hfx_export.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -60,39 +62,39 @@ typedef struct hfxc_options {
                                       * after it, for hfxc_result_ir_dump; NULL: none */
 } hfxc_options;
 
-hfxc_session *hfxc_session_new(void);                                           /* NULL when out of memory */
-void hfxc_session_free(hfxc_session *s);
+HFX_API hfxc_session *hfxc_session_new(void);                                           /* NULL when out of memory */
+HFX_API void hfxc_session_free(hfxc_session *s);
 
-hfxc_result *hfxc_compile_file(const char *path, const hfxc_options *opt);      /* opt may be NULL */
-hfxc_result *hfxc_compile_memory(const char *src, size_t size, const char *name, const hfxc_options *opt);
-void hfxc_result_free(hfxc_result *r);
-int hfxc_result_ok(const hfxc_result *r);                        /* 1 when there is no error */
-size_t hfxc_diag_count(const hfxc_result *r);
-const hfxc_diag *hfxc_diag_at(const hfxc_result *r, size_t i);
-char *hfxc_diagnostics_text(const hfxc_result *r);               /* all messages, one a line; free() it */
-const struct hfx_fx_effect *hfxc_result_effect(const hfxc_result *r); /* NULL when compilation failed */
-struct hfx_fx_effect *hfxc_result_take_effect(hfxc_result *r);   /* caller owns it now */
+HFX_API hfxc_result *hfxc_compile_file(const char *path, const hfxc_options *opt);      /* opt may be NULL */
+HFX_API hfxc_result *hfxc_compile_memory(const char *src, size_t size, const char *name, const hfxc_options *opt);
+HFX_API void hfxc_result_free(hfxc_result *r);
+HFX_API int hfxc_result_ok(const hfxc_result *r);                        /* 1 when there is no error */
+HFX_API size_t hfxc_diag_count(const hfxc_result *r);
+HFX_API const hfxc_diag *hfxc_diag_at(const hfxc_result *r, size_t i);
+HFX_API char *hfxc_diagnostics_text(const hfxc_result *r);               /* all messages, one a line; free() it */
+HFX_API const struct hfx_fx_effect *hfxc_result_effect(const hfxc_result *r); /* NULL when compilation failed */
+HFX_API struct hfx_fx_effect *hfxc_result_take_effect(hfxc_result *r);   /* caller owns it now */
 /* With a vs_* / ps_* profile and an entry (fxc /T /E): the shader's D3D9 bytecode (little-endian
  * words as fxc writes them, *size bytes, living as long as r); NULL otherwise. */
-const void *hfxc_result_bytecode(const hfxc_result *r, size_t *size);
-char *hfxc_result_ast_dump(const hfxc_result *r);                /* readable AST; free() it */
+HFX_API const void *hfxc_result_bytecode(const hfxc_result *r, size_t *size);
+HFX_API char *hfxc_result_ast_dump(const hfxc_result *r);                /* readable AST; free() it */
 /* With hfxc_options.dump_ir: each stage's IR after that pass, in the order the passes ran, each
  * dump opened by `// after PASS: file(line,col)` (where its compile is); free() it. */
-char *hfxc_result_ir_dump(const hfxc_result *r);
+HFX_API char *hfxc_result_ir_dump(const hfxc_result *r);
 /* The compiler's passes in the order they run (i from 0; NULL past the last); *why (may be
  * NULL) gets one line on what the pass does. */
-const char *hfxc_pass_name(size_t i, const char **why);
+HFX_API const char *hfxc_pass_name(size_t i, const char **why);
 /* The files the compile read: the root (unless compiled from memory), then every #include'd file
  * in the order first opened, each once, by the path it was opened with (an include folder or the
  * including file's folder joined to the name, with the case found on disk). Also after errors:
  * what was read up to them. Strings live as long as the result. */
-size_t hfxc_dependency_count(const hfxc_result *r);
-const char *hfxc_dependency_at(const hfxc_result *r, size_t i);
+HFX_API size_t hfxc_dependency_count(const hfxc_result *r);
+HFX_API const char *hfxc_dependency_at(const hfxc_result *r, size_t i);
 /* `hfxc --disassemble` (fxc's /dumpbin): the listing of an effect fxc compiled (fx_2_0, or an
  * uncompressed XNA .xnb holding one): parameters, techniques, passes, states, each shader's
  * assembly. NULL when it does not decode; *diagnostics (may be NULL; free() it) says why. */
-char *hfxc_disassemble(const void *data, size_t size, const char *name, char **diagnostics);
-const char *hfxc_version(void);
+HFX_API char *hfxc_disassemble(const void *data, size_t size, const char *name, char **diagnostics);
+HFX_API const char *hfxc_version(void);
 
 #ifdef __cplusplus
 }
