@@ -19,7 +19,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     hfx_diags diags;
     hfx_diags_init(&diags, &arena, HFXC_NO_SELF_CHECK); /* speed; fuzz_diff is the harness that runs glslang */
     d3d9_input in = {data, (uint32_t)size, hfx_diags_add_file(&diags, "fuzz.vso", NULL, "", 0), 16};
-    d3d9_shader *s = d3d9_decode(&arena, &diags, &in);
+    d3d9_shader *s = hfx_d3d9_decode(&arena, &diags, &in);
     fuzz_require(s ? diags.errors == 0 : diags.errors > 0, "decode's result and its errors disagree");
     for (uint32_t i = 0; i < diags.count; i++)
         fuzz_require(diags.items[i].line == 0 && diags.items[i].col >= 16 && diags.items[i].col <= 16 + size,
@@ -27,11 +27,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     if (s) {
         sbuf b = {0};
         b.arena = &arena;
-        d3d9_disassemble(s, &b);
+        hfx_d3d9_disassemble(s, &b);
         fuzz_require(b.oom || (b.d && b.len > 0), "an empty listing");
         ir_ctx c = {&arena, &diags, hfx_types_new(&arena), NULL, NULL};
         uint32_t before = diags.errors;
-        struct ir_shader *sh = d3d9_to_ir(&c, s, true);
+        struct ir_shader *sh = hfx_d3d9_to_ir(&c, s, true);
         fuzz_require(sh ? diags.errors == before : diags.errors > before, "to_ir's result and its errors disagree");
         /* the whole program path: lowering, interface, registers, GLSL for every target */
         hfx_fx_effect fx = {0};

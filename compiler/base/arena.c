@@ -107,13 +107,13 @@ char *hfx_arena_strndup(hfx_arena *a, const char *s, size_t n) {
 
 char *hfx_arena_strdup(hfx_arena *a, const char *s) { return hfx_arena_strndup(a, s, strlen(s)); }
 
-/* Formatted by sb_vprintf into the arena itself (vsnprintf measured and wrote twice, and was
+/* Formatted by hfx_sb_vprintf into the arena itself (vsnprintf measured and wrote twice, and was
  * most of the cost; no malloc, so an escaping allocation failure loses nothing). */
 char *hfx_arena_printf(hfx_arena *a, const char *fmt, ...) {
     sbuf b = {.arena = a};
     va_list ap;
     va_start(ap, fmt);
-    sb_vprintf(&b, fmt, ap);
+    hfx_sb_vprintf(&b, fmt, ap);
     va_end(ap);
     if (b.oom) return NULL;
     return b.d ? b.d : hfx_arena_strdup(a, "");

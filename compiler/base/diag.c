@@ -77,7 +77,7 @@ static const char *line_start(const hfx_source *s, uint32_t line, size_t *len) {
 
 char *hfx_diags_format(const hfx_diags *d, int caret) {
     sbuf b = {0};
-    sb_putn(&b, "", 0);
+    hfx_sb_putn(&b, "", 0);
     for (uint32_t i = 0; i < d->count; i++) {
         const hfxc_diag *g = &d->items[i];
         static const char *const kinds[] = {"error", "warning", "note"};
@@ -88,21 +88,21 @@ char *hfx_diags_format(const hfx_diags *d, int caret) {
         else
             n = snprintf(head, sizeof head, "%s(%u,%u): %s X%04u: %s\n", g->file, g->line, g->col,
                          kinds[g->severity], g->code, g->message);
-        sb_putn(&b, head, n < (int)sizeof head ? (size_t)n : sizeof head - 1);
+        hfx_sb_putn(&b, head, n < (int)sizeof head ? (size_t)n : sizeof head - 1);
         if (!caret || !g->line) continue;
         for (uint32_t f = 0; f < d->file_count; f++) {
             if (strcmp(d->files[f].name, g->file) != 0) continue;
             size_t ln;
             const char *src = line_start(&d->files[f], g->line, &ln);
             if (!src) break;
-            sb_putn(&b, "  ", 2);
-            sb_putn(&b, src, ln);
-            sb_putn(&b, "\n  ", 3);
+            hfx_sb_putn(&b, "  ", 2);
+            hfx_sb_putn(&b, src, ln);
+            hfx_sb_putn(&b, "\n  ", 3);
             for (unsigned c = 1; c < g->col && c <= ln; c++)
-                sb_putn(&b, src[c - 1] == '\t' ? "\t" : " ", 1);
-            sb_putn(&b, "^\n", 2);
+                hfx_sb_putn(&b, src[c - 1] == '\t' ? "\t" : " ", 1);
+            hfx_sb_putn(&b, "^\n", 2);
             break;
         }
     }
-    return sb_take(&b);
+    return hfx_sb_take(&b);
 }

@@ -30,14 +30,14 @@ static bool reserve(sbuf *b, size_t n) {
     return true;
 }
 
-void sb_putn(sbuf *b, const char *s, size_t n) {
+void hfx_sb_putn(sbuf *b, const char *s, size_t n) {
     if (!reserve(b, n)) return;
     memcpy(b->d + b->len, s, n);
     b->len += n;
     b->d[b->len] = 0;
 }
 
-void sb_put(sbuf *b, const char *s) { sb_putn(b, s, strlen(s)); }
+void hfx_sb_put(sbuf *b, const char *s) { hfx_sb_putn(b, s, strlen(s)); }
 
 /* One conversion of a format: %[flags][width][.precision][length]conv. */
 typedef struct fmt_spec {
@@ -83,7 +83,7 @@ static void put_unsigned(sbuf *b, unsigned long long v, bool negative) {
     char *e = buf + sizeof buf, *p = e;
     do *--p = (char)('0' + v % 10); while ((v /= 10) != 0);
     if (negative) *--p = '-';
-    sb_putn(b, p, (size_t)(e - p));
+    hfx_sb_putn(b, p, (size_t)(e - p));
 }
 
 static long long signed_arg(int length, va_list *ap) {
@@ -110,15 +110,15 @@ static unsigned long long unsigned_arg(int length, va_list *ap) {
  * third of a whole compile when the GLSL printer went through it. */
 static bool put_plain(sbuf *b, const fmt_spec *s, va_list *ap) {
     switch (s->conv) {
-    case 's': { const char *str = va_arg(*ap, const char *); sb_put(b, str ? str : "(null)"); return true; }
+    case 's': { const char *str = va_arg(*ap, const char *); hfx_sb_put(b, str ? str : "(null)"); return true; }
     case 'd': case 'i': {
         long long v = signed_arg(s->length, ap);
         put_unsigned(b, v < 0 ? 0ull - (unsigned long long)v : (unsigned long long)v, v < 0);
         return true;
     }
     case 'u': put_unsigned(b, unsigned_arg(s->length, ap), false); return true;
-    case 'c': { char c = (char)va_arg(*ap, int); sb_putn(b, &c, 1); return true; }
-    case '%': sb_putn(b, "%", 1); return true;
+    case 'c': { char c = (char)va_arg(*ap, int); hfx_sb_putn(b, &c, 1); return true; }
+    case '%': hfx_sb_putn(b, "%", 1); return true;
     default: return false;
     }
 }
@@ -136,7 +136,7 @@ static bool put_plain(sbuf *b, const fmt_spec *s, va_list *ap) {
         char small_[256]; \
         int n_ = HFX_FMT_ONE(small_, sizeof small_, s, spec, star, arg); \
         if (n_ < 0) break; \
-        if ((size_t)n_ < sizeof small_) { sb_putn(b, small_, (size_t)n_); break; } \
+        if ((size_t)n_ < sizeof small_) { hfx_sb_putn(b, small_, (size_t)n_); break; } \
         if (!reserve(b, (size_t)n_)) break; \
         HFX_FMT_ONE((b)->d + (b)->len, (size_t)n_ + 1, s, spec, star, arg); \
         (b)->len += (size_t)n_; \
@@ -166,7 +166,7 @@ static void put_other(sbuf *b, const fmt_spec *s, va_list *ap) {
     for (int i = 0; i < s->stars && i < 2; i++) star[i] = va_arg(*ap, int);
     if (s->conv == 's' && s->star_precision_only) {
         const char *str = va_arg(*ap, const char *);
-        sb_putn(b, str, strnlen(str, star[0] < 0 ? SIZE_MAX : (size_t)star[0]));
+        hfx_sb_putn(b, str, strnlen(str, star[0] < 0 ? SIZE_MAX : (size_t)star[0]));
     } else if (s->conv && strchr("eEfFgGaA", s->conv)) {
         if (s->length == 'q') { long double v = va_arg(*ap, long double); HFX_FMT_PUT(b, s, spec, star, v); }
         else { double v = va_arg(*ap, double); HFX_FMT_PUT(b, s, spec, star, v); }
@@ -176,17 +176,17 @@ static void put_other(sbuf *b, const fmt_spec *s, va_list *ap) {
         const void *v = va_arg(*ap, const void *);
         HFX_FMT_PUT(b, s, spec, star, v);
     } else {
-        sb_putn(b, s->start, s->len); /* not a conversion: as written */
+        hfx_sb_putn(b, s->start, s->len); /* not a conversion: as written */
     }
 }
 
-void sb_vprintf(sbuf *b, const char *fmt, va_list ap) {
+void hfx_sb_vprintf(sbuf *b, const char *fmt, va_list ap) {
     va_list args;
     va_copy(args, ap);
     for (const char *p = fmt; *p;) {
         const char *pct = p;
         while (*pct && *pct != '%') pct++; /* formats are short: cheaper than strchr's set-up */
-        if (pct > p) sb_putn(b, p, (size_t)(pct - p));
+        if (pct > p) hfx_sb_putn(b, p, (size_t)(pct - p));
         if (!*pct) break;
         fmt_spec s = parse_spec(pct);
         if (!s.plain || !put_plain(b, &s, &args)) put_other(b, &s, &args);
@@ -195,22 +195,22 @@ void sb_vprintf(sbuf *b, const char *fmt, va_list ap) {
     va_end(args);
 }
 
-void sb_printf(sbuf *b, const char *fmt, ...) {
+void hfx_sb_printf(sbuf *b, const char *fmt, ...) {
     va_list ap;
     va_start(ap, fmt);
-    sb_vprintf(b, fmt, ap);
+    hfx_sb_vprintf(b, fmt, ap);
     va_end(ap);
 }
 
-char *sb_take(sbuf *b) {
+char *hfx_sb_take(sbuf *b) {
     if (b->oom) {
-        sb_free(b);
+        hfx_sb_free(b);
         b->d = NULL;
     }
     if (b->arena && b->d) return strdup(b->d);
     return b->d;
 }
 
-void sb_free(sbuf *b) {
+void hfx_sb_free(sbuf *b) {
     if (!b->arena) free(b->d);
 }

@@ -11,11 +11,11 @@
 struct hfx_arena;
 typedef struct sbuf { char *d; size_t len, cap; bool oom; struct hfx_arena *arena; } sbuf;
 
-void sb_put(sbuf *b, const char *s);                    /* appends a string */
-void sb_putn(sbuf *b, const char *s, size_t n);         /* appends n bytes of s */
-void sb_printf(sbuf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3))); /* appends formatted text */
-void sb_vprintf(sbuf *b, const char *fmt, va_list ap);     /* appends formatted text */
-char *sb_take(sbuf *b); /* the text, the caller's to free (a malloc'ed copy for an arena buffer); NULL after a failed allocation */
-void sb_free(sbuf *b);  /* frees the text unless it lives in an arena */
+void hfx_sb_put(sbuf *b, const char *s);                    /* appends a string */
+void hfx_sb_putn(sbuf *b, const char *s, size_t n);         /* appends n bytes of s */
+void hfx_sb_printf(sbuf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3))); /* appends formatted text */
+void hfx_sb_vprintf(sbuf *b, const char *fmt, va_list ap);     /* appends formatted text */
+char *hfx_sb_take(sbuf *b); /* the text, the caller's to free (a malloc'ed copy for an arena buffer); NULL after a failed allocation */
+void hfx_sb_free(sbuf *b);  /* frees the text unless it lives in an arena */
 
 #endif

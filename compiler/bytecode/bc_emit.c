@@ -1,11 +1,11 @@
-/* bc_emit.c: instructions as d3d9_inst records (so a later step may still retarget one),
+/* hfx_bc_emit.c: instructions as d3d9_inst records (so a later step may still retarget one),
  * temporaries, `def` constants, the CTAB comment and the token stream (Microsoft's "Shader Code
  * Format": instruction, destination and source parameter tokens, comments, END). */
 #include <stdio.h>
 
 #include "bytecode/bc_int.h"
 
-void bc_fail(bc_gen *g, hfx_loc loc, unsigned code, const char *fmt, ...) {
+void hfx_bc_fail(bc_gen *g, hfx_loc loc, unsigned code, const char *fmt, ...) {
     char msg[256];
     va_list ap;
     va_start(ap, fmt);
@@ -15,15 +15,15 @@ void bc_fail(bc_gen *g, hfx_loc loc, unsigned code, const char *fmt, ...) {
     g->failed = true;
 }
 
-unsigned bc_temp_limit(const bc_gen *g) {
+unsigned hfx_bc_temp_limit(const bc_gen *g) {
     if (g->model >= D3D9_SM(3, 0)) return 32;
     if (g->model == D3D9_SM(2, 1)) return g->stage == D3D9_VS ? 13 : strcmp(g->profile, "ps_2_a") == 0 ? 22 : 32;
     return 12;
 }
 
 /* Round robin: a register freed long ago rather than just now, so that copies can still be
- * sunk into their writers (bc_peep.c); bc_renumber gives the final, fewest numbers. */
-int bc_temp(bc_gen *g) {
+ * sunk into their writers (bc_peep.c); hfx_bc_renumber gives the final, fewest numbers. */
+int hfx_bc_temp(bc_gen *g) {
     for (unsigned k = 0; k < BC_MAX_TEMPS; k++) {
         unsigned r = (g->next_temp + k) % BC_MAX_TEMPS;
         if (g->temps_used & (1u << r)) continue;
@@ -33,24 +33,24 @@ int bc_temp(bc_gen *g) {
         if (r + 1 > g->temps_peak) g->temps_peak = r + 1;
         return (int)r;
     }
-    bc_fail(g, g->loc, X_BC_TEMPS, "this shader needs more than %u temporary registers at once", BC_MAX_TEMPS);
+    hfx_bc_fail(g, g->loc, X_BC_TEMPS, "this shader needs more than %u temporary registers at once", BC_MAX_TEMPS);
     return -1;
 }
 
-void bc_release(bc_gen *g, bc_val v) {
+void hfx_bc_release(bc_gen *g, bc_val v) {
     if (v.own && v.type == D3D9_REG_TEMP && v.num < BC_MAX_TEMPS) g->temps_used &= ~(1u << v.num);
 }
 
-void bc_release_obj(bc_gen *g, bc_obj o) {
-    for (uint32_t i = 0; i < o.count; i++) bc_release(g, o.slot[i]);
+void hfx_bc_release_obj(bc_gen *g, bc_obj o) {
+    for (uint32_t i = 0; i < o.count; i++) hfx_bc_release(g, o.slot[i]);
 }
 
-bc_val bc_reg(uint8_t type, uint16_t num, unsigned n) {
+bc_val hfx_bc_reg(uint8_t type, uint16_t num, unsigned n) {
     bc_val v = {.type = type, .num = num, .n = (uint8_t)n, .sw = {0, 1, 2, 3}};
     return v;
 }
 
-bc_val bc_scalar_of(bc_val v, unsigned i) {
+bc_val hfx_bc_scalar_of(bc_val v, unsigned i) {
     bc_val s = v;
     s.n = 1;
     s.sw[0] = v.sw[i < v.n ? i : 0];
@@ -58,7 +58,7 @@ bc_val bc_scalar_of(bc_val v, unsigned i) {
     return s;
 }
 
-bc_val bc_neg(bc_val v) {
+bc_val hfx_bc_neg(bc_val v) {
     static const uint8_t flip[] = {[D3D9_SMOD_NONE] = D3D9_SMOD_NEG, [D3D9_SMOD_NEG] = D3D9_SMOD_NONE,
                                    [D3D9_SMOD_ABS] = D3D9_SMOD_ABSNEG, [D3D9_SMOD_ABSNEG] = D3D9_SMOD_ABS};
     v.mod = flip[v.mod];
@@ -93,9 +93,9 @@ static bool grow(bc_gen *g) {
     return HFX_ARENA_GROW(g->c->arena, g->insts, g->inst_count, g->inst_cap, 64);
 }
 
-d3d9_inst *bc_emit(bc_gen *g, uint16_t op, const bc_val *dst, unsigned mask, const bc_val *src, unsigned n) {
+d3d9_inst *hfx_bc_emit(bc_gen *g, uint16_t op, const bc_val *dst, unsigned mask, const bc_val *src, unsigned n) {
     if (g->failed || !grow(g)) return NULL;
-    const d3d9_op_info *info = d3d9_op_find(op);
+    const d3d9_op_info *info = hfx_d3d9_op_find(op);
     d3d9_inst *in = &g->insts[g->inst_count++];
     memset(in, 0, sizeof *in);
     in->op = op;
@@ -106,7 +106,7 @@ d3d9_inst *bc_emit(bc_gen *g, uint16_t op, const bc_val *dst, unsigned mask, con
                op == D3D9_TEXLDD || op == D3D9_NRM || op == D3D9_CRS || op == D3D9_TEXKILL;
     for (unsigned i = 0; i < n && i < 4; i++)
         if (src[i].type == BC_REG_NONE) {
-            bc_fail(g, g->loc, 4502, "invalid input semantic for %s: a value read here has no input register in the model",
+            hfx_bc_fail(g, g->loc, 4502, "invalid input semantic for %s: a value read here has no input register in the model",
                     g->profile);
             return in;
         }
@@ -119,9 +119,9 @@ d3d9_inst *bc_emit(bc_gen *g, uint16_t op, const bc_val *dst, unsigned mask, con
     return in;
 }
 
-bool bc_can_sat(const bc_gen *g) { return g->stage == D3D9_PS || g->model >= D3D9_SM(3, 0); }
+bool hfx_bc_can_sat(const bc_gen *g) { return g->stage == D3D9_PS || g->model >= D3D9_SM(3, 0); }
 
-bool bc_is_zero(const bc_gen *g, const bc_val *v) {
+bool hfx_bc_is_zero(const bc_gen *g, const bc_val *v) {
     if (v->type != D3D9_REG_CONST || v->rel) return false;
     for (uint32_t d = 0; d < g->def_count; d++)
         if (g->defs[d].num == v->num) {
@@ -143,42 +143,42 @@ static bool folded(bc_gen *g, uint16_t op, unsigned n, const bc_val *src, unsign
     bool zero = false;
     switch (op) {
     case D3D9_MUL: case D3D9_DP3: case D3D9_DP4:
-        zero = bc_is_zero(g, &src[0]) || bc_is_zero(g, &src[1]);
+        zero = hfx_bc_is_zero(g, &src[0]) || hfx_bc_is_zero(g, &src[1]);
         break;
     case D3D9_DP2ADD: case D3D9_MAD:
-        if (bc_is_zero(g, &src[0]) || bc_is_zero(g, &src[1])) keep = 2;
+        if (hfx_bc_is_zero(g, &src[0]) || hfx_bc_is_zero(g, &src[1])) keep = 2;
         break;
     case D3D9_ADD:
-        keep = bc_is_zero(g, &src[0]) ? 1 : bc_is_zero(g, &src[1]) ? 0 : -1;
+        keep = hfx_bc_is_zero(g, &src[0]) ? 1 : hfx_bc_is_zero(g, &src[1]) ? 0 : -1;
         break;
     default: break;
     }
     if (!zero && keep < 0) return false;
-    for (unsigned i = 0; i < count; i++) if ((int)i != keep) bc_release(g, src[i]);
-    *out = zero ? widened(bc_constf(g, 0), n) : widened(src[keep], n);
+    for (unsigned i = 0; i < count; i++) if ((int)i != keep) hfx_bc_release(g, src[i]);
+    *out = zero ? widened(hfx_bc_constf(g, 0), n) : widened(src[keep], n);
     return true;
 }
 
-bc_val bc_op(bc_gen *g, uint16_t op, unsigned n, const bc_val *src, unsigned count) {
+bc_val hfx_bc_op(bc_gen *g, uint16_t op, unsigned n, const bc_val *src, unsigned count) {
     bc_val f;
     if (folded(g, op, n, src, count, &f)) return f;
-    int r = bc_temp(g);
-    bc_val d = bc_reg(D3D9_REG_TEMP, (uint16_t)(r < 0 ? 0 : r), n);
+    int r = hfx_bc_temp(g);
+    bc_val d = hfx_bc_reg(D3D9_REG_TEMP, (uint16_t)(r < 0 ? 0 : r), n);
     d.own = r >= 0;
-    bc_emit(g, op, &d, (1u << n) - 1, src, count);
-    for (unsigned i = 0; i < count; i++) bc_release(g, src[i]);
+    hfx_bc_emit(g, op, &d, (1u << n) - 1, src, count);
+    for (unsigned i = 0; i < count; i++) hfx_bc_release(g, src[i]);
     g->last_fresh = g->failed ? -1 : (int)g->inst_count - 1;
     return d;
 }
 
-bc_val bc_op1(bc_gen *g, uint16_t op, unsigned n, bc_val a) { return bc_op(g, op, n, &a, 1); }
-bc_val bc_op2(bc_gen *g, uint16_t op, unsigned n, bc_val a, bc_val b) {
+bc_val hfx_bc_op1(bc_gen *g, uint16_t op, unsigned n, bc_val a) { return hfx_bc_op(g, op, n, &a, 1); }
+bc_val hfx_bc_op2(bc_gen *g, uint16_t op, unsigned n, bc_val a, bc_val b) {
     bc_val s[2] = {a, b};
-    return bc_op(g, op, n, s, 2);
+    return hfx_bc_op(g, op, n, s, 2);
 }
-bc_val bc_op3(bc_gen *g, uint16_t op, unsigned n, bc_val a, bc_val b, bc_val c) {
+bc_val hfx_bc_op3(bc_gen *g, uint16_t op, unsigned n, bc_val a, bc_val b, bc_val c) {
     bc_val s[3] = {a, b, c};
-    return bc_op(g, op, n, s, 3);
+    return hfx_bc_op(g, op, n, s, 3);
 }
 
 static int free_const(bc_gen *g) {
@@ -187,7 +187,7 @@ static int free_const(bc_gen *g) {
     return -1;
 }
 
-bool bc_reserve_consts(bc_gen *g, uint16_t first, uint16_t count) {
+bool hfx_bc_reserve_consts(bc_gen *g, uint16_t first, uint16_t count) {
     if ((uint32_t)first + count > g->max_consts) return false;
     for (unsigned r = first; r < (unsigned)first + count; r++) g->cused[r] = 1;
     return true;
@@ -196,7 +196,7 @@ bool bc_reserve_consts(bc_gen *g, uint16_t first, uint16_t count) {
 static bc_def *new_def(bc_gen *g) {
     int r = free_const(g);
     if (r < 0) {
-        bc_fail(g, g->loc, X_BC_CONSTS, "%s has no constant register left for a literal (it has %u)", g->profile,
+        hfx_bc_fail(g, g->loc, X_BC_CONSTS, "%s has no constant register left for a literal (it has %u)", g->profile,
                 g->max_consts);
         return NULL;
     }
@@ -212,9 +212,9 @@ static bool same_float(float a, float b) { return memcmp(&a, &b, sizeof a) == 0;
 
 /* A literal's components: taken from the def registers when one holds them all, else a new
  * register (scalars share registers, four to a register, as fxc packs them). */
-bc_val bc_const(bc_gen *g, const float *v, unsigned n) {
+bc_val hfx_bc_const(bc_gen *g, const float *v, unsigned n) {
     for (uint32_t d = 0; d < g->def_count; d++) {
-        bc_val r = bc_reg(D3D9_REG_CONST, g->defs[d].num, n);
+        bc_val r = hfx_bc_reg(D3D9_REG_CONST, g->defs[d].num, n);
         unsigned k = 0;
         for (; k < n; k++) {
             unsigned c = 0;
@@ -233,8 +233,8 @@ bc_val bc_const(bc_gen *g, const float *v, unsigned n) {
         fresh += !have;
     }
     if (!d || d->used + fresh > 4) d = new_def(g);
-    if (!d) return bc_reg(D3D9_REG_CONST, 0, n);
-    bc_val r = bc_reg(D3D9_REG_CONST, d->num, n);
+    if (!d) return hfx_bc_reg(D3D9_REG_CONST, 0, n);
+    bc_val r = hfx_bc_reg(D3D9_REG_CONST, d->num, n);
     for (unsigned k = 0; k < n; k++) {
         unsigned c = 0;
         while (c < d->used && !same_float(d->v[c], v[k])) c++;
@@ -244,7 +244,7 @@ bc_val bc_const(bc_gen *g, const float *v, unsigned n) {
     return r;
 }
 
-bc_val bc_constf(bc_gen *g, float v) { return bc_const(g, &v, 1); }
+bc_val hfx_bc_constf(bc_gen *g, float v) { return hfx_bc_const(g, &v, 1); }
 
 /* The last instruction wrote v's fresh temporary whole: it may write t instead (no mov). */
 static bool retarget(bc_gen *g, bc_val t, bc_val v, bool sat) {
@@ -257,7 +257,7 @@ static bool retarget(bc_gen *g, bc_val t, bc_val v, bool sat) {
     }
     for (unsigned i = 0; i < v.n; i++) if (v.sw[i] != i) return false;
     if (in->dst.mask != (1u << v.n) - 1) return false;
-    const d3d9_op_info *info = d3d9_op_find(in->op);
+    const d3d9_op_info *info = hfx_d3d9_op_find(in->op);
     bool dot = in->op == D3D9_DP3 || in->op == D3D9_DP4 || in->op == D3D9_DP2ADD || (info->flags & D3D9_OPF_SCALAR) ||
                (info->flags & D3D9_OPF_TEX) || in->op == D3D9_NRM || in->op == D3D9_CRS;
     unsigned mask = 0;
@@ -281,12 +281,12 @@ static bool retarget(bc_gen *g, bc_val t, bc_val v, bool sat) {
     in->dst.num = t.num;
     in->dst.mask = (uint8_t)mask;
     if (sat) in->dst.mods |= D3D9_DMOD_SAT;
-    bc_release(g, v);
+    hfx_bc_release(g, v);
     g->last_fresh = -1;
     return true;
 }
 
-void bc_store(bc_gen *g, bc_val t, bc_val v, bool sat) {
+void hfx_bc_store(bc_gen *g, bc_val t, bc_val v, bool sat) {
     if (g->failed) return;
     if (retarget(g, t, v, sat)) return;
     unsigned mask = 0;
@@ -305,9 +305,9 @@ void bc_store(bc_gen *g, bc_val t, bc_val v, bool sat) {
     for (unsigned c = 0; c < 4; c++) src.sw[c] = packed[c < k ? c : k - 1];
     src.n = (uint8_t)k;
     bc_val dst = t;
-    d3d9_inst *in = bc_emit(g, D3D9_MOV, &dst, mask, &src, 1);
+    d3d9_inst *in = hfx_bc_emit(g, D3D9_MOV, &dst, mask, &src, 1);
     if (in && sat) in->dst.mods |= D3D9_DMOD_SAT;
-    bc_release(g, v);
+    hfx_bc_release(g, v);
 }
 
 /* --- tokens --- */
@@ -414,7 +414,7 @@ static void put_ctab(bc_gen *g, words *o, uint32_t version) {
         put(o, (uint32_t)b.b[i] | (uint32_t)b.b[i + 1] << 8 | (uint32_t)b.b[i + 2] << 16 | (uint32_t)b.b[i + 3] << 24);
 }
 
-const uint32_t *bc_encode(bc_gen *g, uint32_t *count) {
+const uint32_t *hfx_bc_encode(bc_gen *g, uint32_t *count) {
     words o = {NULL, 0, 0, g->c->arena};
     unsigned major = g->model >> 4, minor = g->model & 15;
     uint32_t version = (g->stage == D3D9_VS ? 0xfffe0000u : 0xffff0000u) | major << 8 | minor;

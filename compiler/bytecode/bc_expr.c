@@ -1,4 +1,4 @@
-/* bc_expr.c: expressions to registers. A variable's value is its registers (no code); arithmetic
+/* hfx_bc_expr.c: expressions to registers. A variable's value is its registers (no code); arithmetic
  * takes fresh temporaries (an add of a product is one mad); bools are 0.0 / 1.0 and comparisons
  * are slt / sge (vertex) or cmp (pixel) as fxc writes them; selects are cmp (pixel) or lrp (vertex).
  * Matrices live in registers by row, or by column for column_major parameters: a product picks
@@ -27,14 +27,14 @@ static unsigned width(const hfx_type *t) {
     return t->kind == TY_SCALAR ? 1 : t->kind == TY_VECTOR ? t->cols : 4;
 }
 
-bc_val bc_own(bc_gen *g, bc_val v) {
+bc_val hfx_bc_own(bc_gen *g, bc_val v) {
     if (v.own) return v;
-    return bc_op1(g, D3D9_MOV, v.n, v);
+    return hfx_bc_op1(g, D3D9_MOV, v.n, v);
 }
 
 /* --- constants --- */
 
-bool bc_try_const(bc_gen *g, const ir_expr *e, double *out) {
+bool hfx_bc_try_const(bc_gen *g, const ir_expr *e, double *out) {
     double a, b;
     switch (e->kind) {
     case IE_CONST:
@@ -42,22 +42,22 @@ bool bc_try_const(bc_gen *g, const ir_expr *e, double *out) {
         *out = e->cval[0];
         return true;
     case IE_VAR: {
-        bc_binding *x = bc_bind(g, e->var);
+        bc_binding *x = hfx_bc_bind(g, e->var);
         if (x && x->is_const) { *out = x->konst; return true; }
         return false;
     }
     case IE_CONVERT:
-        if (e->type->kind != TY_SCALAR || !bc_try_const(g, e->a[0], &a)) return false;
+        if (e->type->kind != TY_SCALAR || !hfx_bc_try_const(g, e->a[0], &a)) return false;
         *out = e->type->base == B_BOOL ? a != 0 : e->type->base == B_INT || e->type->base == B_UINT ? (double)hfx_ev_int(a) : a;
         return true;
     case IE_UNARY:
-        if (!bc_try_const(g, e->a[0], &a)) return false;
+        if (!hfx_bc_try_const(g, e->a[0], &a)) return false;
         if (e->op == OP_NEG) *out = -a;
         else if (e->op == OP_NOT) *out = a == 0;
         else return false;
         return true;
     case IE_BINARY:
-        if (e->type->kind != TY_SCALAR || !bc_try_const(g, e->a[0], &a) || !bc_try_const(g, e->a[1], &b)) return false;
+        if (e->type->kind != TY_SCALAR || !hfx_bc_try_const(g, e->a[0], &a) || !hfx_bc_try_const(g, e->a[1], &b)) return false;
         switch (e->op) {
         case OP_ADD: *out = a + b; break;
         case OP_SUB: *out = a - b; break;
@@ -87,59 +87,59 @@ static bc_obj constant(bc_gen *g, const ir_expr *e) {
     if (t->kind == TY_SCALAR || t->kind == TY_VECTOR) {
         float v[4];
         for (unsigned i = 0; i < width(t); i++) v[i] = (float)e->cval[i];
-        return one(g, bc_const(g, v, width(t)));
+        return one(g, hfx_bc_const(g, v, width(t)));
     }
     if (t->kind == TY_MATRIX) {
         bc_obj o = {HFX_NEW_ARRAY(g->c->arena, bc_val, t->rows), t->rows, false};
         for (unsigned r = 0; r < t->rows; r++) {
             float v[4];
             for (unsigned c = 0; c < t->cols; c++) v[c] = (float)e->cval[r * t->cols + c];
-            o.slot[r] = bc_const(g, v, t->cols);
+            o.slot[r] = hfx_bc_const(g, v, t->cols);
         }
         return o;
     }
-    bc_fail(g, e->loc, X_BC_UNSUPPORTED, "the bytecode writer does not handle a constant of this type yet");
-    return one(g, bc_constf(g, 0));
+    hfx_bc_fail(g, e->loc, X_BC_UNSUPPORTED, "the bytecode writer does not handle a constant of this type yet");
+    return one(g, hfx_bc_constf(g, 0));
 }
 
 /* --- matrices --- */
 
-bc_val bc_matrix_elem(bc_obj m, unsigned row, unsigned col) {
+bc_val hfx_bc_matrix_elem(bc_obj m, unsigned row, unsigned col) {
     bc_val s = m.cols ? m.slot[col < m.count ? col : 0] : m.slot[row < m.count ? row : 0];
-    return bc_scalar_of(s, m.cols ? row : col);
+    return hfx_bc_scalar_of(s, m.cols ? row : col);
 }
 
 static bc_val gather(bc_gen *g, const bc_val *parts, unsigned n) {
-    int r = bc_temp(g);
-    bc_val d = bc_reg(D3D9_REG_TEMP, (uint16_t)(r < 0 ? 0 : r), n);
+    int r = hfx_bc_temp(g);
+    bc_val d = hfx_bc_reg(D3D9_REG_TEMP, (uint16_t)(r < 0 ? 0 : r), n);
     for (unsigned i = 0; i < n; i++) {
         unsigned j = i;
         bc_val src = parts[i];
         /* neighbours from the same register go in one mov */
         while (j + 1 < n && parts[j + 1].type == src.type && parts[j + 1].num == src.num && parts[j + 1].mod == src.mod &&
                parts[j + 1].rel == src.rel && j + 1 - i < 4) j++;
-        bc_val t = bc_reg(D3D9_REG_TEMP, d.num, j - i + 1), s = src;
+        bc_val t = hfx_bc_reg(D3D9_REG_TEMP, d.num, j - i + 1), s = src;
         s.n = (uint8_t)(j - i + 1);
         s.own = false;
         for (unsigned k = i; k <= j; k++) { t.sw[k - i] = (uint8_t)k; s.sw[k - i] = parts[k].sw[0]; }
-        bc_store(g, t, s, false);
+        hfx_bc_store(g, t, s, false);
         i = j;
     }
     d.own = r >= 0;
     return d;
 }
 
-bc_val bc_matrix_row(bc_gen *g, bc_obj m, const hfx_type *t, unsigned row) {
+bc_val hfx_bc_matrix_row(bc_gen *g, bc_obj m, const hfx_type *t, unsigned row) {
     if (!m.cols) return m.slot[row < m.count ? row : 0];
     bc_val parts[4];
-    for (unsigned c = 0; c < t->cols; c++) parts[c] = bc_matrix_elem(m, row, c);
+    for (unsigned c = 0; c < t->cols; c++) parts[c] = hfx_bc_matrix_elem(m, row, c);
     return gather(g, parts, t->cols);
 }
 
 /* --- comparisons and selects --- */
 
-static bc_val one_c(bc_gen *g) { return bc_constf(g, 1); }
-static bc_val zero_c(bc_gen *g) { return bc_constf(g, 0); }
+static bc_val one_c(bc_gen *g) { return hfx_bc_constf(g, 1); }
+static bc_val zero_c(bc_gen *g) { return hfx_bc_constf(g, 0); }
 
 static bool is_zero_const(bc_gen *g, const bc_val *v) {
     if (v->type != D3D9_REG_CONST || v->rel) return false;
@@ -151,44 +151,44 @@ static bool is_zero_const(bc_gen *g, const bc_val *v) {
     return false;
 }
 
-bc_val bc_not(bc_gen *g, bc_val a) { return bc_op2(g, D3D9_ADD, a.n, bc_neg(a), one_c(g)); }
+bc_val hfx_bc_not(bc_gen *g, bc_val a) { return hfx_bc_op2(g, D3D9_ADD, a.n, hfx_bc_neg(a), one_c(g)); }
 
-bc_val bc_select(bc_gen *g, bc_val c, bc_val a, bc_val b) {
+bc_val hfx_bc_select(bc_gen *g, bc_val c, bc_val a, bc_val b) {
     unsigned n = a.n > b.n ? a.n : b.n;
-    if (g->stage == D3D9_PS) return bc_op3(g, D3D9_CMP, n, bc_neg(c), b, a);
-    return bc_op3(g, D3D9_LRP, n, c, a, b);
+    if (g->stage == D3D9_PS) return hfx_bc_op3(g, D3D9_CMP, n, hfx_bc_neg(c), b, a);
+    return hfx_bc_op3(g, D3D9_LRP, n, c, a, b);
 }
 
 static bc_val compare(bc_gen *g, hfx_op op, bc_val a, bc_val b) {
     unsigned n = a.n > b.n ? a.n : b.n;
     if (op == OP_EQ || op == OP_NE) {
-        bc_val d = is_zero_const(g, &b) ? a : bc_op2(g, D3D9_ADD, n, a, bc_neg(b));
+        bc_val d = is_zero_const(g, &b) ? a : hfx_bc_op2(g, D3D9_ADD, n, a, hfx_bc_neg(b));
         bc_val dd = d;
         dd.own = false;
-        bc_val sq = bc_op2(g, D3D9_MUL, n, d, dd);
+        bc_val sq = hfx_bc_op2(g, D3D9_MUL, n, d, dd);
         bc_val s2 = sq;
         s2.own = false;
-        if (g->stage == D3D9_VS) return bc_op2(g, op == OP_EQ ? D3D9_SGE : D3D9_SLT, n, bc_neg(sq), s2);
-        return bc_op3(g, D3D9_CMP, n, bc_neg(sq), op == OP_EQ ? one_c(g) : zero_c(g), op == OP_EQ ? zero_c(g) : one_c(g));
+        if (g->stage == D3D9_VS) return hfx_bc_op2(g, op == OP_EQ ? D3D9_SGE : D3D9_SLT, n, hfx_bc_neg(sq), s2);
+        return hfx_bc_op3(g, D3D9_CMP, n, hfx_bc_neg(sq), op == OP_EQ ? one_c(g) : zero_c(g), op == OP_EQ ? zero_c(g) : one_c(g));
     }
     if (op == OP_GT || op == OP_LE) { bc_val t = a; a = b; b = t; op = op == OP_GT ? OP_LT : OP_GE; }
-    if (g->stage == D3D9_VS) return bc_op2(g, op == OP_LT ? D3D9_SLT : D3D9_SGE, n, a, b);
-    bc_val d = is_zero_const(g, &b) ? a : bc_op2(g, D3D9_ADD, n, a, bc_neg(b));
-    return bc_op3(g, D3D9_CMP, n, d, op == OP_GE ? one_c(g) : zero_c(g), op == OP_GE ? zero_c(g) : one_c(g));
+    if (g->stage == D3D9_VS) return hfx_bc_op2(g, op == OP_LT ? D3D9_SLT : D3D9_SGE, n, a, b);
+    bc_val d = is_zero_const(g, &b) ? a : hfx_bc_op2(g, D3D9_ADD, n, a, hfx_bc_neg(b));
+    return hfx_bc_op3(g, D3D9_CMP, n, d, op == OP_GE ? one_c(g) : zero_c(g), op == OP_GE ? zero_c(g) : one_c(g));
 }
 
 /* --- arithmetic --- */
 
 /* Per component: rcp, rsq, exp, log take one component each. */
-bc_val bc_per_comp(bc_gen *g, uint16_t op, bc_val a, const bc_val *b) {
-    int r = bc_temp(g);
-    bc_val d = bc_reg(D3D9_REG_TEMP, (uint16_t)(r < 0 ? 0 : r), a.n);
+bc_val hfx_bc_per_comp(bc_gen *g, uint16_t op, bc_val a, const bc_val *b) {
+    int r = hfx_bc_temp(g);
+    bc_val d = hfx_bc_reg(D3D9_REG_TEMP, (uint16_t)(r < 0 ? 0 : r), a.n);
     for (unsigned i = 0; i < a.n; i++) {
-        bc_val s[2] = {bc_scalar_of(a, i), b ? bc_scalar_of(*b, i) : bc_scalar_of(a, i)};
-        bc_emit(g, op, &d, 1u << i, s, b ? 2 : 1);
+        bc_val s[2] = {hfx_bc_scalar_of(a, i), b ? hfx_bc_scalar_of(*b, i) : hfx_bc_scalar_of(a, i)};
+        hfx_bc_emit(g, op, &d, 1u << i, s, b ? 2 : 1);
     }
-    bc_release(g, a);
-    if (b) bc_release(g, *b);
+    hfx_bc_release(g, a);
+    if (b) hfx_bc_release(g, *b);
     d.own = r >= 0;
     if (a.n == 1) g->last_fresh = g->failed ? -1 : (int)g->inst_count - 1;
     return d;
@@ -197,47 +197,47 @@ bc_val bc_per_comp(bc_gen *g, uint16_t op, bc_val a, const bc_val *b) {
 static bc_val trunc_val(bc_gen *g, bc_val x) {
     bc_val xs = x;
     xs.own = false;
-    bc_val fl = bc_floor(g, xs);                       /* floor(x) */
-    bc_val nx = bc_neg(xs);
-    bc_val f2 = bc_op1(g, D3D9_FRC, x.n, nx);           /* frc(-x) */
-    bc_val ce = bc_op2(g, D3D9_ADD, x.n, xs, f2);       /* ceil(x) */
+    bc_val fl = hfx_bc_floor(g, xs);                       /* floor(x) */
+    bc_val nx = hfx_bc_neg(xs);
+    bc_val f2 = hfx_bc_op1(g, D3D9_FRC, x.n, nx);           /* frc(-x) */
+    bc_val ce = hfx_bc_op2(g, D3D9_ADD, x.n, xs, f2);       /* ceil(x) */
     bc_val r;
-    if (g->stage == D3D9_PS) r = bc_op3(g, D3D9_CMP, x.n, xs, fl, ce);
+    if (g->stage == D3D9_PS) r = hfx_bc_op3(g, D3D9_CMP, x.n, xs, fl, ce);
     else {
-        bc_val ge = bc_op2(g, D3D9_SGE, x.n, xs, zero_c(g));
-        r = bc_op3(g, D3D9_LRP, x.n, ge, fl, ce);
+        bc_val ge = hfx_bc_op2(g, D3D9_SGE, x.n, xs, zero_c(g));
+        r = hfx_bc_op3(g, D3D9_LRP, x.n, ge, fl, ce);
     }
-    bc_release(g, x);
+    hfx_bc_release(g, x);
     return r;
 }
 
 static bool is_float(const hfx_type *t) { return t->base == B_FLOAT || t->base == B_HALF || t->base == B_DOUBLE || t->base == B_MIN16FLOAT; }
 
 static bc_val divide(bc_gen *g, bc_val a, bc_val b, const hfx_type *t) {
-    bc_val rb = bc_per_comp(g, D3D9_RCP, b, NULL);
+    bc_val rb = hfx_bc_per_comp(g, D3D9_RCP, b, NULL);
     if (rb.n < a.n && rb.n == 1) { /* replicated */ }
-    bc_val q = bc_op2(g, D3D9_MUL, a.n > rb.n ? a.n : rb.n, a, rb);
+    bc_val q = hfx_bc_op2(g, D3D9_MUL, a.n > rb.n ? a.n : rb.n, a, rb);
     return is_float(t) ? q : trunc_val(g, q);
 }
 
-bc_val bc_fmod(bc_gen *g, bc_val a, bc_val b) {
+bc_val hfx_bc_fmod(bc_gen *g, bc_val a, bc_val b) {
     /* fxc: q = a / b; r = frc(|q|) * sign(q) * b */
     bc_val bs = b;
     bs.own = false;
     unsigned n = a.n > b.n ? a.n : b.n;
-    bc_val rb = bc_per_comp(g, D3D9_RCP, bs, NULL);
-    bc_val q = bc_op2(g, D3D9_MUL, n, a, rb);
+    bc_val rb = hfx_bc_per_comp(g, D3D9_RCP, bs, NULL);
+    bc_val q = hfx_bc_op2(g, D3D9_MUL, n, a, rb);
     bc_val qs = q;
     qs.own = false;
-    bc_val aq = bc_op1(g, D3D9_ABS, n, qs);
-    bc_val f = bc_op1(g, D3D9_FRC, n, aq);
+    bc_val aq = hfx_bc_op1(g, D3D9_ABS, n, qs);
+    bc_val f = hfx_bc_op1(g, D3D9_FRC, n, aq);
     bc_val fs = f;
     fs.own = false;
-    bc_val s = g->stage == D3D9_PS ? bc_op3(g, D3D9_CMP, n, qs, fs, bc_neg(fs))
-                                   : bc_op3(g, D3D9_LRP, n, bc_op2(g, D3D9_SGE, n, qs, zero_c(g)), fs, bc_neg(fs));
-    bc_release(g, f);
-    bc_release(g, q);
-    return bc_op2(g, D3D9_MUL, n, s, b);
+    bc_val s = g->stage == D3D9_PS ? hfx_bc_op3(g, D3D9_CMP, n, qs, fs, hfx_bc_neg(fs))
+                                   : hfx_bc_op3(g, D3D9_LRP, n, hfx_bc_op2(g, D3D9_SGE, n, qs, zero_c(g)), fs, hfx_bc_neg(fs));
+    hfx_bc_release(g, f);
+    hfx_bc_release(g, q);
+    return hfx_bc_op2(g, D3D9_MUL, n, s, b);
 }
 
 static bool is_mul(const ir_expr *e) {
@@ -247,16 +247,16 @@ static bool is_mul(const ir_expr *e) {
 static bc_val binary_vals(bc_gen *g, hfx_op op, bc_val a, bc_val b, const hfx_type *t) {
     unsigned n = a.n > b.n ? a.n : b.n;
     switch (op) {
-    case OP_ADD: return bc_op2(g, D3D9_ADD, n, a, b);
-    case OP_SUB: return bc_op2(g, D3D9_ADD, n, a, bc_neg(b));
-    case OP_MUL: return bc_op2(g, D3D9_MUL, n, a, b);
+    case OP_ADD: return hfx_bc_op2(g, D3D9_ADD, n, a, b);
+    case OP_SUB: return hfx_bc_op2(g, D3D9_ADD, n, a, hfx_bc_neg(b));
+    case OP_MUL: return hfx_bc_op2(g, D3D9_MUL, n, a, b);
     case OP_DIV: return divide(g, a, b, t);
-    case OP_MOD: return bc_fmod(g, a, b);
-    case OP_AND: return bc_op2(g, D3D9_MUL, n, a, b);
-    case OP_OR: return bc_op2(g, D3D9_MAX, n, a, b);
+    case OP_MOD: return hfx_bc_fmod(g, a, b);
+    case OP_AND: return hfx_bc_op2(g, D3D9_MUL, n, a, b);
+    case OP_OR: return hfx_bc_op2(g, D3D9_MAX, n, a, b);
     case OP_LT: case OP_GT: case OP_LE: case OP_GE: case OP_EQ: case OP_NE: return compare(g, op, a, b);
     default:
-        bc_fail(g, g->loc, X_BC_UNSUPPORTED, "integer bit operations have no D3D9 instruction (SM2 / SM3 compute on floats)");
+        hfx_bc_fail(g, g->loc, X_BC_UNSUPPORTED, "integer bit operations have no D3D9 instruction (SM2 / SM3 compute on floats)");
         return a;
     }
 }
@@ -267,10 +267,10 @@ static bool fused(bc_gen *g, const ir_expr *e, bc_val *out) {
     int m = is_mul(e->a[0]) ? 0 : is_mul(e->a[1]) ? 1 : -1;
     if (m < 0) return false;
     const ir_expr *p = e->a[m], *q = e->a[1 - m];
-    bc_val x = bc_expr1(g, p->a[0]), y = bc_expr1(g, p->a[1]), z = bc_expr1(g, q);
-    if (e->op == OP_SUB) { if (m == 0) z = bc_neg(z); else x = bc_neg(x); }
+    bc_val x = hfx_bc_expr1(g, p->a[0]), y = hfx_bc_expr1(g, p->a[1]), z = hfx_bc_expr1(g, q);
+    if (e->op == OP_SUB) { if (m == 0) z = hfx_bc_neg(z); else x = hfx_bc_neg(x); }
     unsigned n = width(e->type);
-    *out = bc_op3(g, D3D9_MAD, n, x, y, z);
+    *out = hfx_bc_op3(g, D3D9_MAD, n, x, y, z);
     return true;
 }
 
@@ -281,18 +281,18 @@ static bc_obj binary(bc_gen *g, const ir_expr *e) {
         int splat = e->a[1]->kind == IE_CONVERT && e->a[1]->a[0]->type->kind == TY_SCALAR ? 1
                   : e->a[0]->kind == IE_CONVERT && e->a[0]->a[0]->type->kind == TY_SCALAR ? 0 : -1;
         if (splat >= 0) { /* matrix op scalar: each register of the matrix, in its own layout */
-            bc_obj m = bc_expr(g, e->a[1 - splat]);
-            bc_val s = bc_expr1(g, e->a[splat]->a[0]);
+            bc_obj m = hfx_bc_expr(g, e->a[1 - splat]);
+            bc_val s = hfx_bc_expr1(g, e->a[splat]->a[0]);
             bc_obj o = {HFX_NEW_ARRAY(g->c->arena, bc_val, m.count), m.count, m.cols};
             for (uint32_t k = 0; k < m.count; k++) {
                 bc_val x = m.slot[k], y = s;
                 y.own = false;
                 o.slot[k] = splat ? binary_vals(g, e->op, x, y, e->type) : binary_vals(g, e->op, y, x, e->type);
             }
-            bc_release(g, s);
+            hfx_bc_release(g, s);
             return o;
         }
-        bc_obj a = bc_expr(g, e->a[0]), b = bc_expr(g, e->a[1]);
+        bc_obj a = hfx_bc_expr(g, e->a[0]), b = hfx_bc_expr(g, e->a[1]);
         if (a.cols == b.cols) {
             bc_obj o = {HFX_NEW_ARRAY(g->c->arena, bc_val, a.count), a.count, a.cols};
             for (uint32_t k = 0; k < a.count; k++) o.slot[k] = binary_vals(g, e->op, a.slot[k], b.slot[k], e->type);
@@ -300,12 +300,12 @@ static bc_obj binary(bc_gen *g, const ir_expr *e) {
         }
         bc_obj o = {HFX_NEW_ARRAY(g->c->arena, bc_val, e->type->rows), e->type->rows, false};
         for (unsigned k = 0; k < e->type->rows; k++) {
-            bc_val x = bc_matrix_row(g, a, e->type, k), y = bc_matrix_row(g, b, e->type, k);
+            bc_val x = hfx_bc_matrix_row(g, a, e->type, k), y = hfx_bc_matrix_row(g, b, e->type, k);
             o.slot[k] = binary_vals(g, e->op, x, y, e->type);
         }
         return o;
     }
-    bc_val a = bc_expr1(g, e->a[0]), b = bc_expr1(g, e->a[1]);
+    bc_val a = hfx_bc_expr1(g, e->a[0]), b = hfx_bc_expr1(g, e->a[1]);
     return one(g, binary_vals(g, e->op, a, b, e->a[0]->type));
 }
 
@@ -314,30 +314,30 @@ static bc_obj binary(bc_gen *g, const ir_expr *e) {
 static bc_obj sub(bc_gen *g, bc_obj o, uint32_t first, uint32_t n) {
     bc_obj r = {o.slot + first, n, o.cols};
     for (uint32_t k = 0; k < o.count; k++)
-        if (k < first || k >= first + n) bc_release(g, o.slot[k]);
+        if (k < first || k >= first + n) hfx_bc_release(g, o.slot[k]);
     (void)g;
     return r;
 }
 
 static bc_obj field(bc_gen *g, const ir_expr *e) {
-    bc_obj o = bc_expr(g, e->a[0]);
+    bc_obj o = hfx_bc_expr(g, e->a[0]);
     const hfx_type *t = e->a[0]->type;
     uint32_t first = 0;
-    for (uint32_t i = 0; i < e->field && i < t->st->field_count; i++) first += bc_slots(t->st->fields[i].type, o.cols);
-    return sub(g, o, first, bc_slots(t->st->fields[e->field].type, o.cols));
+    for (uint32_t i = 0; i < e->field && i < t->st->field_count; i++) first += hfx_bc_slots(t->st->fields[i].type, o.cols);
+    return sub(g, o, first, hfx_bc_slots(t->st->fields[e->field].type, o.cols));
 }
 
 /* c[a0.x + n]: the vertex shader's relative read of a parameter array. */
 static bc_obj relative(bc_gen *g, bc_obj o, const ir_expr *idx, uint32_t per) {
     if (g->stage != D3D9_VS || !o.count || o.slot[0].type != D3D9_REG_CONST) {
-        bc_fail(g, idx->loc, X_BC_UNSUPPORTED, "the bytecode writer indexes arrays by a computed index only in vertex shaders' parameters");
+        hfx_bc_fail(g, idx->loc, X_BC_UNSUPPORTED, "the bytecode writer indexes arrays by a computed index only in vertex shaders' parameters");
         return o;
     }
-    bc_val i = bc_expr1(g, idx);
-    if (per != 1) i = bc_op2(g, D3D9_MUL, 1, i, bc_constf(g, (float)per));
-    bc_val a0 = bc_reg(D3D9_REG_ADDR, 0, 1);
-    bc_emit(g, D3D9_MOVA, &a0, 1, &i, 1);
-    bc_release(g, i);
+    bc_val i = hfx_bc_expr1(g, idx);
+    if (per != 1) i = hfx_bc_op2(g, D3D9_MUL, 1, i, hfx_bc_constf(g, (float)per));
+    bc_val a0 = hfx_bc_reg(D3D9_REG_ADDR, 0, 1);
+    hfx_bc_emit(g, D3D9_MOVA, &a0, 1, &i, 1);
+    hfx_bc_release(g, i);
     bc_obj r = {HFX_NEW_ARRAY(g->c->arena, bc_val, per), per, o.cols};
     for (uint32_t k = 0; k < per; k++) { r.slot[k] = o.slot[k]; r.slot[k].rel = true; r.slot[k].own = false; }
     return r;
@@ -345,21 +345,21 @@ static bc_obj relative(bc_gen *g, bc_obj o, const ir_expr *idx, uint32_t per) {
 
 static bc_obj index_of(bc_gen *g, const ir_expr *e) {
     const hfx_type *t = e->a[0]->type;
-    bc_obj o = bc_expr(g, e->a[0]);
+    bc_obj o = hfx_bc_expr(g, e->a[0]);
     double k;
     if (t->kind == TY_ARRAY) {
-        uint32_t per = bc_slots(t->elem, o.cols);
-        if (!bc_try_const(g, e->a[1], &k)) return relative(g, o, e->a[1], per);
+        uint32_t per = hfx_bc_slots(t->elem, o.cols);
+        if (!hfx_bc_try_const(g, e->a[1], &k)) return relative(g, o, e->a[1], per);
         uint32_t i = k < 0 || k >= t->array_len ? 0 : hfx_ev_uint(k);
         return sub(g, o, i * per, per);
     }
-    if (!bc_try_const(g, e->a[1], &k)) {
-        bc_fail(g, e->loc, X_BC_UNSUPPORTED, "the bytecode writer does not index a vector or matrix by a computed index yet");
+    if (!hfx_bc_try_const(g, e->a[1], &k)) {
+        hfx_bc_fail(g, e->loc, X_BC_UNSUPPORTED, "the bytecode writer does not index a vector or matrix by a computed index yet");
         return o;
     }
     unsigned i = k < 0 ? 0 : hfx_ev_uint(k);
     if (t->kind == TY_MATRIX && !o.cols) return sub(g, o, i < o.count ? i : 0, 1);
-    if (t->kind == TY_MATRIX) return one(g, bc_matrix_row(g, o, t, i < t->rows ? i : 0));
+    if (t->kind == TY_MATRIX) return one(g, hfx_bc_matrix_row(g, o, t, i < t->rows ? i : 0));
     bc_val v = o.slot[0];
     v.n = 1;
     v.sw[0] = o.slot[0].sw[i < o.slot[0].n ? i : 0];
@@ -368,11 +368,11 @@ static bc_obj index_of(bc_gen *g, const ir_expr *e) {
 
 static bc_obj swizzle(bc_gen *g, const ir_expr *e) {
     const hfx_type *t = e->a[0]->type;
-    bc_obj o = bc_expr(g, e->a[0]);
+    bc_obj o = hfx_bc_expr(g, e->a[0]);
     if (t->kind == TY_MATRIX) {
         bc_val parts[4] = {{0}};
         for (unsigned i = 0; i < e->comp_count && i < 4; i++)
-            parts[i] = bc_matrix_elem(o, e->comps[i] / t->cols, e->comps[i] % t->cols);
+            parts[i] = hfx_bc_matrix_elem(o, e->comps[i] / t->cols, e->comps[i] % t->cols);
         bool same = true;
         for (unsigned i = 1; i < e->comp_count; i++) same &= parts[i].num == parts[0].num && parts[i].type == parts[0].type;
         if (same) {
@@ -399,12 +399,12 @@ static bc_obj construct(bc_gen *g, const ir_expr *e) {
     bool all_const = true;
     bc_val *vals = HFX_NEW_ARRAY(g->c->arena, bc_val, e->n ? e->n : 1);
     if (t->kind == TY_STRUCT || t->kind == TY_ARRAY) {
-        bc_fail(g, e->loc, X_BC_UNSUPPORTED, "the bytecode writer does not construct structs or arrays yet");
+        hfx_bc_fail(g, e->loc, X_BC_UNSUPPORTED, "the bytecode writer does not construct structs or arrays yet");
         return one(g, zero_c(g));
     }
     for (uint32_t i = 0; i < e->n; i++) {
         double k;
-        all_const &= e->a[i]->kind == IE_CONST || (e->a[i]->type->kind == TY_SCALAR && bc_try_const(g, e->a[i], &k));
+        all_const &= e->a[i]->kind == IE_CONST || (e->a[i]->type->kind == TY_SCALAR && hfx_bc_try_const(g, e->a[i], &k));
     }
     if (all_const && total <= 16) {
         float v[16];
@@ -412,11 +412,11 @@ static bc_obj construct(bc_gen *g, const ir_expr *e) {
             double k = 0;
             if (e->a[i]->kind == IE_CONST)
                 for (unsigned c = 0; c < hfx_type_components(e->a[i]->type) && n < 16; c++) v[n++] = (float)e->a[i]->cval[c];
-            else if (bc_try_const(g, e->a[i], &k) && n < 16) v[n++] = (float)k;
+            else if (hfx_bc_try_const(g, e->a[i], &k) && n < 16) v[n++] = (float)k;
         }
-        if (t->kind != TY_MATRIX) return one(g, bc_const(g, v, total));
+        if (t->kind != TY_MATRIX) return one(g, hfx_bc_const(g, v, total));
         bc_obj o = {HFX_NEW_ARRAY(g->c->arena, bc_val, t->rows), t->rows, false};
-        for (unsigned r = 0; r < t->rows; r++) o.slot[r] = bc_const(g, v + r * t->cols, t->cols);
+        for (unsigned r = 0; r < t->rows; r++) o.slot[r] = hfx_bc_const(g, v + r * t->cols, t->cols);
         return o;
     }
     if (t->kind == TY_MATRIX && e->n == t->rows) { /* one vector per row: the rows as they are */
@@ -424,20 +424,20 @@ static bc_obj construct(bc_gen *g, const ir_expr *e) {
         for (uint32_t i = 0; i < e->n; i++) rows &= e->a[i]->type->kind == TY_VECTOR && e->a[i]->type->cols == t->cols;
         if (rows) {
             bc_obj o = {HFX_NEW_ARRAY(g->c->arena, bc_val, t->rows), t->rows, false};
-            for (uint32_t i = 0; i < e->n; i++) o.slot[i] = bc_expr1(g, e->a[i]);
+            for (uint32_t i = 0; i < e->n; i++) o.slot[i] = hfx_bc_expr1(g, e->a[i]);
             return o;
         }
     }
     for (uint32_t i = 0; i < e->n; i++) {
         const hfx_type *at = e->a[i]->type;
         if (at->kind == TY_MATRIX) {
-            bc_obj m = bc_expr(g, e->a[i]);
+            bc_obj m = hfx_bc_expr(g, e->a[i]);
             for (unsigned r = 0; r < at->rows; r++)
-                for (unsigned c = 0; c < at->cols && n < 16; c++) parts[n++] = bc_matrix_elem(m, r, c);
+                for (unsigned c = 0; c < at->cols && n < 16; c++) parts[n++] = hfx_bc_matrix_elem(m, r, c);
             continue;
         }
-        vals[i] = bc_expr1(g, e->a[i]);
-        for (unsigned c = 0; c < vals[i].n && n < 16; c++) parts[n++] = bc_scalar_of(vals[i], c);
+        vals[i] = hfx_bc_expr1(g, e->a[i]);
+        for (unsigned c = 0; c < vals[i].n && n < 16; c++) parts[n++] = hfx_bc_scalar_of(vals[i], c);
     }
     if (e->n == 1 && vals[0].n == total && t->kind != TY_MATRIX) return one(g, vals[0]);
     bc_obj o;
@@ -445,21 +445,21 @@ static bc_obj construct(bc_gen *g, const ir_expr *e) {
         o = (bc_obj){HFX_NEW_ARRAY(g->c->arena, bc_val, t->rows), t->rows, false};
         for (unsigned r = 0; r < t->rows; r++) o.slot[r] = gather(g, parts + r * t->cols, t->cols);
     } else o = one(g, gather(g, parts, total));
-    for (uint32_t i = 0; i < e->n; i++) if (e->a[i]->type->kind != TY_MATRIX) bc_release(g, vals[i]);
+    for (uint32_t i = 0; i < e->n; i++) if (e->a[i]->type->kind != TY_MATRIX) hfx_bc_release(g, vals[i]);
     return o;
 }
 
 static bc_obj convert(bc_gen *g, const ir_expr *e) {
     const hfx_type *to = e->type, *from = e->a[0]->type;
     if (to->kind == TY_MATRIX && from->kind == TY_MATRIX) {
-        bc_obj m = bc_expr(g, e->a[0]);
+        bc_obj m = hfx_bc_expr(g, e->a[0]);
         bc_obj o = {m.slot, m.cols ? to->cols : to->rows, m.cols};
         o.slot = HFX_NEW_ARRAY(g->c->arena, bc_val, o.count);
         for (uint32_t k = 0; k < o.count; k++) { o.slot[k] = m.slot[k]; o.slot[k].n = (uint8_t)(m.cols ? to->rows : to->cols); }
         return o;
     }
     if (to->kind == TY_MATRIX && from->kind == TY_SCALAR) { /* a splat: every row the scalar */
-        bc_val v = bc_expr1(g, e->a[0]);
+        bc_val v = hfx_bc_expr1(g, e->a[0]);
         bc_obj o = {HFX_NEW_ARRAY(g->c->arena, bc_val, to->rows), to->rows, false};
         for (unsigned r = 0; r < to->rows; r++) {
             o.slot[r] = v;
@@ -470,24 +470,24 @@ static bc_obj convert(bc_gen *g, const ir_expr *e) {
         return o;
     }
     if ((to->kind == TY_STRUCT || to->kind == TY_ARRAY) && from->kind == TY_SCALAR) { /* (VSOutput)0: every slot */
-        bc_val v = bc_expr1(g, e->a[0]);
-        if (v.own) v = bc_own(g, v);
-        bc_obj o = {HFX_NEW_ARRAY(g->c->arena, bc_val, bc_slots(to, false) ? bc_slots(to, false) : 1), bc_slots(to, false), false};
+        bc_val v = hfx_bc_expr1(g, e->a[0]);
+        if (v.own) v = hfx_bc_own(g, v);
+        bc_obj o = {HFX_NEW_ARRAY(g->c->arena, bc_val, hfx_bc_slots(to, false) ? hfx_bc_slots(to, false) : 1), hfx_bc_slots(to, false), false};
         for (uint32_t k = 0; k < o.count; k++) {
             o.slot[k] = v;
             o.slot[k].own = false;
             for (unsigned c = 1; c < 4; c++) o.slot[k].sw[c] = v.sw[0];
-            o.slot[k].n = (uint8_t)bc_slot_width(to, false, k);
+            o.slot[k].n = (uint8_t)hfx_bc_slot_width(to, false, k);
         }
         if (v.own && o.count) o.slot[0].own = true; /* freed once, by whoever takes the first slot */
         return o;
     }
     if (to->kind == TY_STRUCT || to->kind == TY_ARRAY || to->kind == TY_MATRIX || from->kind == TY_MATRIX) {
-        if (hfx_type_equal(to, from)) return bc_expr(g, e->a[0]);
-        bc_fail(g, e->loc, X_BC_UNSUPPORTED, "the bytecode writer does not convert between these types yet");
+        if (hfx_type_equal(to, from)) return hfx_bc_expr(g, e->a[0]);
+        hfx_bc_fail(g, e->loc, X_BC_UNSUPPORTED, "the bytecode writer does not convert between these types yet");
         return one(g, zero_c(g));
     }
-    bc_val v = bc_expr1(g, e->a[0]);
+    bc_val v = hfx_bc_expr1(g, e->a[0]);
     unsigned n = width(to);
     if (v.n == 1 && n > 1) { for (unsigned i = 1; i < 4; i++) v.sw[i] = v.sw[0]; }
     v.n = (uint8_t)n;
@@ -507,7 +507,7 @@ static bool lval_of(bc_gen *g, const ir_expr *e, lval *l) {
     double k;
     switch (e->kind) {
     case IE_VAR:
-        l->b = bc_bind(g, e->var);
+        l->b = hfx_bc_bind(g, e->var);
         if (!l->b || l->b->is_const || l->b->obj.cols || l->b->var->kind == IRV_UNIFORM) return false;
         l->first = 0;
         l->count = l->b->obj.count;
@@ -516,13 +516,13 @@ static bool lval_of(bc_gen *g, const ir_expr *e, lval *l) {
     case IE_FIELD: {
         if (!lval_of(g, e->a[0], l) || l->n) return false;
         const hfx_type *t = e->a[0]->type;
-        for (uint32_t i = 0; i < e->field; i++) l->first += bc_slots(t->st->fields[i].type, false);
-        l->count = bc_slots(t->st->fields[e->field].type, false);
+        for (uint32_t i = 0; i < e->field; i++) l->first += hfx_bc_slots(t->st->fields[i].type, false);
+        l->count = hfx_bc_slots(t->st->fields[e->field].type, false);
         return true;
     }
     case IE_INDEX: {
         const hfx_type *t = e->a[0]->type;
-        if (!bc_try_const(g, e->a[1], &k) || k < 0 || !lval_of(g, e->a[0], l) || l->n) return false;
+        if (!hfx_bc_try_const(g, e->a[1], &k) || k < 0 || !lval_of(g, e->a[0], l) || l->n) return false;
         if (t->kind == TY_VECTOR) { /* v[k]: v.x, v.y... */
             if (k >= t->cols || l->count != 1) return false;
             l->comps[0] = (uint8_t)hfx_ev_uint(k);
@@ -530,7 +530,7 @@ static bool lval_of(bc_gen *g, const ir_expr *e, lval *l) {
             return true;
         }
         if (t->kind == TY_ARRAY) {
-            uint32_t per = bc_slots(t->elem, false);
+            uint32_t per = hfx_bc_slots(t->elem, false);
             if (k >= t->array_len) return false;
             l->first += hfx_ev_uint(k) * per;
             l->count = per;
@@ -551,7 +551,7 @@ static bool lval_of(bc_gen *g, const ir_expr *e, lval *l) {
 }
 
 /* Registers nothing writes while the shader runs: a slot may simply name them. */
-bool bc_immutable(const bc_gen *g, const bc_val *v) {
+bool hfx_bc_immutable(const bc_gen *g, const bc_val *v) {
     if (v->rel) return false;
     if (v->type == D3D9_REG_CONST || v->type == D3D9_REG_MISC) return true;
     return (v->type == D3D9_REG_INPUT || (v->type == D3D9_REG_ADDR && g->stage == D3D9_PS)) && !v->mod;
@@ -563,9 +563,9 @@ static void own_slot(bc_gen *g, bc_binding *b, uint32_t k, bool keep) {
     if (v->type == D3D9_REG_TEMP && (b->owned >> k & 1)) return;
     bc_val old = *v;
     old.own = false;
-    int r = bc_temp(g);
-    bc_val t = bc_reg(D3D9_REG_TEMP, (uint16_t)(r < 0 ? 0 : r), old.n);
-    if (keep) bc_store(g, t, old, false);
+    int r = hfx_bc_temp(g);
+    bc_val t = hfx_bc_reg(D3D9_REG_TEMP, (uint16_t)(r < 0 ? 0 : r), old.n);
+    if (keep) hfx_bc_store(g, t, old, false);
     *v = t;
     b->owned |= 1ull << k;
 }
@@ -579,10 +579,10 @@ static bool assign_slots(bc_gen *g, const lval *l, bc_obj src, bool sat) {
         bc_val v = src.slot[k], *dst = &b->obj.slot[at];
         bool whole = !l->n || l->n == dst->n;
         for (unsigned i = 0; whole && l->n && i < l->n; i++) whole = l->comps[i] == i;
-        if (whole && !sat && v.n == dst->n && (bc_immutable(g, &v) || (v.own && v.type == D3D9_REG_TEMP && !v.mod && injective_val(&v)))) {
+        if (whole && !sat && v.n == dst->n && (hfx_bc_immutable(g, &v) || (v.own && v.type == D3D9_REG_TEMP && !v.mod && injective_val(&v)))) {
             bc_val old = *dst;
             old.own = (b->owned >> at & 1) && old.type == D3D9_REG_TEMP;
-            bc_release(g, old);
+            hfx_bc_release(g, old);
             *dst = v;
             dst->own = false;
             if (v.own) b->owned |= 1ull << at;
@@ -595,7 +595,7 @@ static bool assign_slots(bc_gen *g, const lval *l, bc_obj src, bool sat) {
             t.n = l->n;
             for (unsigned i = 0; i < l->n; i++) t.sw[i] = dst->sw[l->comps[i]];
         }
-        bc_store(g, t, v, sat);
+        hfx_bc_store(g, t, v, sat);
     }
     return true;
 }
@@ -603,9 +603,9 @@ static bool assign_slots(bc_gen *g, const lval *l, bc_obj src, bool sat) {
 static bc_obj assign(bc_gen *g, const ir_expr *e) {
     const ir_expr *lhs = e->a[0];
     if (lhs->kind == IE_VAR) {
-        bc_binding *b = bc_bind(g, lhs->var);
+        bc_binding *b = hfx_bc_bind(g, lhs->var);
         if (b && b->is_const) { /* a counter written with a computed value: give it a register */
-            bc_val r = bc_own(g, bc_constf(g, (float)b->konst));
+            bc_val r = hfx_bc_own(g, hfx_bc_constf(g, (float)b->konst));
             b->is_const = false;
             b->obj = one(g, r);
             b->obj.slot[0].own = false;
@@ -616,68 +616,68 @@ static bc_obj assign(bc_gen *g, const ir_expr *e) {
     lval l;
     if (e->op == OP_NONE && lval_of(g, lhs, &l) && (lhs->type->kind != TY_MATRIX || !bc_expr_is_cols(g, e->a[1]))) {
         const ir_expr *rhs = e->a[1];
-        if (rhs->kind == IE_INTRIN && rhs->intrin == HFX_INTR_SATURATE && bc_can_sat(g)) { sat = true; rhs = rhs->a[0]; }
-        bc_obj src = bc_expr(g, rhs);
+        if (rhs->kind == IE_INTRIN && rhs->intrin == HFX_INTR_SATURATE && hfx_bc_can_sat(g)) { sat = true; rhs = rhs->a[0]; }
+        bc_obj src = hfx_bc_expr(g, rhs);
         lval_of(g, lhs, &l); /* again: the right side may have added bindings (and moved them) */
         if (!src.cols) {
             assign_slots(g, &l, src, sat);
-            return bc_expr(g, lhs);
+            return hfx_bc_expr(g, lhs);
         }
-        bc_obj dst = bc_expr(g, lhs);
+        bc_obj dst = hfx_bc_expr(g, lhs);
         for (uint32_t k = 0; k < l.count; k++) own_slot(g, l.b, l.first + k, true);
-        dst = bc_expr(g, lhs);
-        bc_assign(g, dst, src, e->type, sat);
+        dst = hfx_bc_expr(g, lhs);
+        hfx_bc_assign(g, dst, src, e->type, sat);
         return dst;
     }
     if (lval_of(g, lhs, &l)) /* a compound assignment or a matrix: writable temporaries first */
         for (uint32_t k = 0; k < l.count; k++) own_slot(g, l.b, l.first + k, true);
-    bc_obj dst = bc_expr(g, lhs);
+    bc_obj dst = hfx_bc_expr(g, lhs);
     const ir_expr *rhs = e->a[1];
-    if (e->op == OP_NONE && rhs->kind == IE_INTRIN && rhs->intrin == HFX_INTR_SATURATE && bc_can_sat(g)) { sat = true; rhs = rhs->a[0]; }
+    if (e->op == OP_NONE && rhs->kind == IE_INTRIN && rhs->intrin == HFX_INTR_SATURATE && hfx_bc_can_sat(g)) { sat = true; rhs = rhs->a[0]; }
     bc_obj src;
     if (e->op != OP_NONE && e->type->kind == TY_MATRIX) { /* by rows of the variable */
-        bc_obj r = bc_expr(g, rhs);
+        bc_obj r = hfx_bc_expr(g, rhs);
         src = (bc_obj){HFX_NEW_ARRAY(g->c->arena, bc_val, dst.count), dst.count, false};
         for (uint32_t k = 0; k < dst.count; k++) {
             bc_val cur = dst.slot[k];
             cur.own = false;
-            src.slot[k] = binary_vals(g, e->op, cur, bc_matrix_row(g, r, e->type, k), e->type);
+            src.slot[k] = binary_vals(g, e->op, cur, hfx_bc_matrix_row(g, r, e->type, k), e->type);
         }
-        bc_release_obj(g, r);
+        hfx_bc_release_obj(g, r);
     } else if (e->op != OP_NONE) {
         bc_val cur = dst.slot[0];
         cur.own = false;
         if (e->op == OP_ADD && is_mul(rhs)) {
-            bc_val x = bc_expr1(g, rhs->a[0]), y = bc_expr1(g, rhs->a[1]);
-            src = one(g, bc_op3(g, D3D9_MAD, width(e->type), x, y, cur));
-        } else src = one(g, binary_vals(g, e->op, cur, bc_expr1(g, rhs), e->type));
-    } else src = bc_expr(g, rhs);
-    bc_assign(g, dst, src, e->type, sat);
+            bc_val x = hfx_bc_expr1(g, rhs->a[0]), y = hfx_bc_expr1(g, rhs->a[1]);
+            src = one(g, hfx_bc_op3(g, D3D9_MAD, width(e->type), x, y, cur));
+        } else src = one(g, binary_vals(g, e->op, cur, hfx_bc_expr1(g, rhs), e->type));
+    } else src = hfx_bc_expr(g, rhs);
+    hfx_bc_assign(g, dst, src, e->type, sat);
     return dst;
 }
 
 static bc_obj incdec(bc_gen *g, const ir_expr *e) {
-    bc_obj dst = bc_expr(g, e->a[0]);
+    bc_obj dst = hfx_bc_expr(g, e->a[0]);
     bc_val cur = dst.slot[0];
     cur.own = false;
     bool post = e->op == OP_POSTINC || e->op == OP_POSTDEC;
-    bc_val old = post ? bc_own(g, cur) : cur;
-    bc_val nv = bc_op2(g, D3D9_ADD, cur.n, cur, bc_constf(g, e->op == OP_PREINC || e->op == OP_POSTINC ? 1.0f : -1.0f));
-    bc_store(g, dst.slot[0], nv, false);
+    bc_val old = post ? hfx_bc_own(g, cur) : cur;
+    bc_val nv = hfx_bc_op2(g, D3D9_ADD, cur.n, cur, hfx_bc_constf(g, e->op == OP_PREINC || e->op == OP_POSTINC ? 1.0f : -1.0f));
+    hfx_bc_store(g, dst.slot[0], nv, false);
     return one(g, post ? old : dst.slot[0]);
 }
 
 /* --- the dispatcher --- */
 
-bc_obj bc_expr(bc_gen *g, const ir_expr *e) {
-    if (g->failed) return one(g, bc_reg(D3D9_REG_CONST, 0, 4));
+bc_obj hfx_bc_expr(bc_gen *g, const ir_expr *e) {
+    if (g->failed) return one(g, hfx_bc_reg(D3D9_REG_CONST, 0, 4));
     switch (e->kind) {
     case IE_CONST: return constant(g, e);
     case IE_VAR: {
-        bc_binding *b = bc_bind(g, e->var);
-        if (b && b->is_const) return one(g, bc_constf(g, (float)b->konst));
+        bc_binding *b = hfx_bc_bind(g, e->var);
+        if (b && b->is_const) return one(g, hfx_bc_constf(g, (float)b->konst));
         if (!b) {
-            bc_fail(g, e->loc, X_BC_UNSUPPORTED, "the bytecode writer has no register for '%s'", e->var->name);
+            hfx_bc_fail(g, e->loc, X_BC_UNSUPPORTED, "the bytecode writer has no register for '%s'", e->var->name);
             return one(g, zero_c(g));
         }
         bc_obj o = b->obj;
@@ -688,72 +688,72 @@ bc_obj bc_expr(bc_gen *g, const ir_expr *e) {
     }
     case IE_UNARY:
         if (e->op == OP_NEG) {
-            bc_obj o = bc_expr(g, e->a[0]);
-            for (uint32_t k = 0; k < o.count; k++) o.slot[k] = bc_neg(o.slot[k]);
+            bc_obj o = hfx_bc_expr(g, e->a[0]);
+            for (uint32_t k = 0; k < o.count; k++) o.slot[k] = hfx_bc_neg(o.slot[k]);
             return o;
         }
-        if (e->op == OP_NOT) return one(g, bc_not(g, bc_expr1(g, e->a[0])));
-        if (e->op == OP_POS) return bc_expr(g, e->a[0]);
+        if (e->op == OP_NOT) return one(g, hfx_bc_not(g, hfx_bc_expr1(g, e->a[0])));
+        if (e->op == OP_POS) return hfx_bc_expr(g, e->a[0]);
         if (e->op == OP_BITNOT) break;
         return incdec(g, e);
     case IE_BINARY: return binary(g, e);
     case IE_SELECT: {
-        bc_val c = bc_expr1(g, e->a[0]);
-        bc_obj a = bc_expr(g, e->a[1]), b = bc_expr(g, e->a[2]);
+        bc_val c = hfx_bc_expr1(g, e->a[0]);
+        bc_obj a = hfx_bc_expr(g, e->a[1]), b = hfx_bc_expr(g, e->a[2]);
         bc_obj o = {HFX_NEW_ARRAY(g->c->arena, bc_val, a.count ? a.count : 1), a.count, false};
         for (uint32_t k = 0; k < a.count; k++) {
             bc_val ck = c;
             ck.own = false;
-            bc_val x = e->type->kind == TY_MATRIX ? bc_matrix_row(g, a, e->type, k) : a.slot[k];
-            bc_val y = e->type->kind == TY_MATRIX ? bc_matrix_row(g, b, e->type, k) : b.slot[k];
-            o.slot[k] = bc_select(g, ck, x, y);
+            bc_val x = e->type->kind == TY_MATRIX ? hfx_bc_matrix_row(g, a, e->type, k) : a.slot[k];
+            bc_val y = e->type->kind == TY_MATRIX ? hfx_bc_matrix_row(g, b, e->type, k) : b.slot[k];
+            o.slot[k] = hfx_bc_select(g, ck, x, y);
         }
-        bc_release(g, c);
+        hfx_bc_release(g, c);
         return o;
     }
     case IE_ASSIGN: return assign(g, e);
     case IE_COMMA: {
-        for (uint32_t i = 0; i + 1 < e->n; i++) bc_release_obj(g, bc_expr(g, e->a[i]));
-        return bc_expr(g, e->a[e->n - 1]);
+        for (uint32_t i = 0; i + 1 < e->n; i++) hfx_bc_release_obj(g, hfx_bc_expr(g, e->a[i]));
+        return hfx_bc_expr(g, e->a[e->n - 1]);
     }
     case IE_CALL: {
         bc_obj o = {0};
-        bc_call(g, e, &o);
+        hfx_bc_call(g, e, &o);
         if (!o.count) o = one(g, zero_c(g));
         return o;
     }
-    case IE_INTRIN: return bc_intrinsic(g, e);
+    case IE_INTRIN: return hfx_bc_intrinsic(g, e);
     case IE_CONSTRUCT: return construct(g, e);
     case IE_CONVERT: return convert(g, e);
     case IE_SWIZZLE: return swizzle(g, e);
     case IE_INDEX: return index_of(g, e);
     case IE_FIELD: return field(g, e);
     }
-    bc_fail(g, e->loc, X_BC_UNSUPPORTED, "the bytecode writer does not handle this expression yet");
+    hfx_bc_fail(g, e->loc, X_BC_UNSUPPORTED, "the bytecode writer does not handle this expression yet");
     return one(g, zero_c(g));
 }
 
-bc_val bc_expr1(bc_gen *g, const ir_expr *e) {
-    bc_obj o = bc_expr(g, e);
+bc_val hfx_bc_expr1(bc_gen *g, const ir_expr *e) {
+    bc_obj o = hfx_bc_expr(g, e);
     if (o.count != 1) {
-        bc_fail(g, e->loc, X_BC_UNSUPPORTED, "the bytecode writer expected a scalar or vector here");
+        hfx_bc_fail(g, e->loc, X_BC_UNSUPPORTED, "the bytecode writer expected a scalar or vector here");
         return zero_c(g);
     }
     return o.slot[0];
 }
 
-void bc_init_binding(bc_gen *g, bc_binding *b, bc_obj src) {
+void hfx_bc_init_binding(bc_gen *g, bc_binding *b, bc_obj src) {
     lval l = {b, 0, b->obj.count, {0}, 0};
     if (!src.cols) { assign_slots(g, &l, src, false); return; }
     for (uint32_t k = 0; k < b->obj.count; k++) own_slot(g, b, k, false);
-    bc_assign(g, b->obj, src, b->var->type, false);
+    hfx_bc_assign(g, b->obj, src, b->var->type, false);
 }
 
-void bc_assign_expr(bc_gen *g, const ir_expr *lhs, bc_obj src, uint64_t owned) {
+void hfx_bc_assign_expr(bc_gen *g, const ir_expr *lhs, bc_obj src, uint64_t owned) {
     lval l;
     for (uint32_t k = 0; k < src.count && k < 64; k++) src.slot[k].own = (owned >> k & 1) != 0;
     if (lval_of(g, lhs, &l) && !src.cols) { assign_slots(g, &l, src, false); return; }
     if (lval_of(g, lhs, &l))
         for (uint32_t k = 0; k < l.count; k++) own_slot(g, l.b, l.first + k, true);
-    bc_assign(g, bc_expr(g, lhs), src, lhs->type, false);
+    hfx_bc_assign(g, hfx_bc_expr(g, lhs), src, lhs->type, false);
 }

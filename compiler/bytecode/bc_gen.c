@@ -8,14 +8,14 @@
 
 #include "bytecode/bc_int.h"
 
-uint32_t bc_slots(const hfx_type *t, bool cols) {
+uint32_t hfx_bc_slots(const hfx_type *t, bool cols) {
     switch (t->kind) {
     case TY_SCALAR: case TY_VECTOR: case TY_SAMPLER: return 1;
     case TY_MATRIX: return cols ? t->cols : t->rows;
-    case TY_ARRAY: return t->array_len * bc_slots(t->elem, cols);
+    case TY_ARRAY: return t->array_len * hfx_bc_slots(t->elem, cols);
     case TY_STRUCT: {
         uint32_t n = 0;
-        for (uint32_t i = 0; i < t->st->field_count; i++) n += bc_slots(t->st->fields[i].type, cols);
+        for (uint32_t i = 0; i < t->st->field_count; i++) n += hfx_bc_slots(t->st->fields[i].type, cols);
         return n;
     }
     default: return 0;
@@ -23,16 +23,16 @@ uint32_t bc_slots(const hfx_type *t, bool cols) {
 }
 
 /* Components of slot k of type t. */
-unsigned bc_slot_width(const hfx_type *t, bool cols, uint32_t k) {
+unsigned hfx_bc_slot_width(const hfx_type *t, bool cols, uint32_t k) {
     switch (t->kind) {
     case TY_SCALAR: case TY_SAMPLER: return 1;
     case TY_VECTOR: return t->cols;
     case TY_MATRIX: return cols ? t->rows : t->cols;
-    case TY_ARRAY: return bc_slot_width(t->elem, cols, k % bc_slots(t->elem, cols));
+    case TY_ARRAY: return hfx_bc_slot_width(t->elem, cols, k % hfx_bc_slots(t->elem, cols));
     case TY_STRUCT:
         for (uint32_t i = 0; i < t->st->field_count; i++) {
-            uint32_t n = bc_slots(t->st->fields[i].type, cols);
-            if (k < n) return bc_slot_width(t->st->fields[i].type, cols, k);
+            uint32_t n = hfx_bc_slots(t->st->fields[i].type, cols);
+            if (k < n) return hfx_bc_slot_width(t->st->fields[i].type, cols, k);
             k -= n;
         }
         return 4;
@@ -45,35 +45,35 @@ static bc_obj new_obj(bc_gen *g, uint32_t n) {
     return o;
 }
 
-bc_obj bc_alloc_obj(bc_gen *g, const hfx_type *t) {
-    bc_obj o = new_obj(g, bc_slots(t, false));
+bc_obj hfx_bc_alloc_obj(bc_gen *g, const hfx_type *t) {
+    bc_obj o = new_obj(g, hfx_bc_slots(t, false));
     for (uint32_t k = 0; k < o.count; k++) {
-        int r = bc_temp(g);
-        o.slot[k] = bc_reg(D3D9_REG_TEMP, (uint16_t)(r < 0 ? 0 : r), bc_slot_width(t, false, k));
+        int r = hfx_bc_temp(g);
+        o.slot[k] = hfx_bc_reg(D3D9_REG_TEMP, (uint16_t)(r < 0 ? 0 : r), hfx_bc_slot_width(t, false, k));
         o.slot[k].own = r >= 0;
     }
     return o;
 }
 
 /* Matrices are copied element by element when the layouts differ. */
-void bc_assign(bc_gen *g, bc_obj dst, bc_obj src, const hfx_type *t, bool sat) {
+void hfx_bc_assign(bc_gen *g, bc_obj dst, bc_obj src, const hfx_type *t, bool sat) {
     if (t->kind == TY_MATRIX && dst.cols != src.cols) {
         unsigned outer = dst.cols ? t->cols : t->rows, inner = dst.cols ? t->rows : t->cols;
         for (unsigned k = 0; k < outer && k < dst.count; k++)
             for (unsigned j = 0; j < inner; j++) {
-                bc_val e = dst.cols ? bc_matrix_elem(src, j, k) : bc_matrix_elem(src, k, j);
-                bc_store(g, bc_scalar_of(dst.slot[k], j), e, sat);
+                bc_val e = dst.cols ? hfx_bc_matrix_elem(src, j, k) : hfx_bc_matrix_elem(src, k, j);
+                hfx_bc_store(g, hfx_bc_scalar_of(dst.slot[k], j), e, sat);
             }
-        bc_release_obj(g, src);
+        hfx_bc_release_obj(g, src);
         return;
     }
     for (uint32_t k = 0; k < dst.count && k < src.count; k++) {
         bc_val s = src.slot[k];
-        bc_store(g, dst.slot[k], s, sat);
+        hfx_bc_store(g, dst.slot[k], s, sat);
     }
 }
 
-bc_binding *bc_bind(bc_gen *g, const ir_var *v) {
+bc_binding *hfx_bc_bind(bc_gen *g, const ir_var *v) {
     for (uint32_t i = g->bind_count; i-- > 0;)
         if (g->binds[i].var == v) return &g->binds[i];
     return NULL;
@@ -114,14 +114,14 @@ static bc_val input_reg(bc_gen *g, const ir_leaf *l) {
     unsigned index, n = hfx_type_components(l->type);
     int usage = semantic_usage(l->semantic, &index);
     d3d9_inst d = {.op = D3D9_DCL, .has_dst = true};
-    bc_val v = bc_reg(D3D9_REG_INPUT, 0, n);
+    bc_val v = hfx_bc_reg(D3D9_REG_INPUT, 0, n);
     bool vpos = strcmp(l->semantic, "VPOS0") == 0, vface = strcmp(l->semantic, "VFACE0") == 0;
     if (g->stage == D3D9_PS && (vpos || vface)) {
         if (g->model < D3D9_SM(3, 0)) {
-            bc_fail(g, l->loc, 4001, "%s is not available in %s: it needs ps_3_0", vpos ? "VPOS" : "VFACE", g->profile);
+            hfx_bc_fail(g, l->loc, 4001, "%s is not available in %s: it needs ps_3_0", vpos ? "VPOS" : "VFACE", g->profile);
             return v;
         }
-        v = bc_reg(D3D9_REG_MISC, vpos ? 0 : 1, n);
+        v = hfx_bc_reg(D3D9_REG_MISC, vpos ? 0 : 1, n);
         if (vface) v.sw[1] = v.sw[2] = v.sw[3] = 0;
         d.dst = (d3d9_dst){.type = D3D9_REG_MISC, .num = v.num, .mask = (uint8_t)(vpos ? 3 : 0xf)};
     } else if (g->stage == D3D9_PS && g->model < D3D9_SM(3, 0)) {
@@ -129,11 +129,11 @@ static bc_val input_reg(bc_gen *g, const ir_leaf *l) {
             v.type = BC_REG_NONE;
             return v;
         }
-        v = bc_reg(usage == 5 ? D3D9_REG_ADDR : D3D9_REG_INPUT, (uint16_t)index, n);
+        v = hfx_bc_reg(usage == 5 ? D3D9_REG_ADDR : D3D9_REG_INPUT, (uint16_t)index, n);
         d.dst = (d3d9_dst){.type = v.type, .num = v.num, .mask = (uint8_t)comps_mask(l->type)};
     } else {
         if (usage < 0) {
-            bc_fail(g, l->loc, 4502, "invalid input semantic '%s'", l->semantic);
+            hfx_bc_fail(g, l->loc, 4502, "invalid input semantic '%s'", l->semantic);
             return v;
         }
         v.num = (uint16_t)g->inputs++;
@@ -149,15 +149,15 @@ static bc_val input_reg(bc_gen *g, const ir_leaf *l) {
 static bc_val output_reg(bc_gen *g, const ir_leaf *l) {
     unsigned index, n = hfx_type_components(l->type);
     int usage = semantic_usage(l->semantic, &index);
-    bc_val v = bc_reg(D3D9_REG_OUTPUT, 0, n);
+    bc_val v = hfx_bc_reg(D3D9_REG_OUTPUT, 0, n);
     if (g->stage == D3D9_PS) {
-        if (usage == 10 && index < 4) return bc_reg(D3D9_REG_COLOROUT, (uint16_t)index, n);
-        if (usage == 12 && index == 0) return bc_reg(D3D9_REG_DEPTHOUT, 0, n);
-        bc_fail(g, l->loc, 4503, "invalid output semantic '%s' for a pixel shader", l->semantic);
+        if (usage == 10 && index < 4) return hfx_bc_reg(D3D9_REG_COLOROUT, (uint16_t)index, n);
+        if (usage == 12 && index == 0) return hfx_bc_reg(D3D9_REG_DEPTHOUT, 0, n);
+        hfx_bc_fail(g, l->loc, 4503, "invalid output semantic '%s' for a pixel shader", l->semantic);
         return v;
     }
     if (g->model >= D3D9_SM(3, 0)) {
-        if (usage < 0) { bc_fail(g, l->loc, 4503, "invalid output semantic '%s'", l->semantic); return v; }
+        if (usage < 0) { hfx_bc_fail(g, l->loc, 4503, "invalid output semantic '%s'", l->semantic); return v; }
         v.num = (uint16_t)g->outputs++;
         d3d9_inst d = {.op = D3D9_DCL, .has_dst = true, .usage = (uint8_t)usage, .usage_index = (uint8_t)index};
         d.dst = (d3d9_dst){.type = D3D9_REG_OUTPUT, .num = v.num,
@@ -165,12 +165,12 @@ static bc_val output_reg(bc_gen *g, const ir_leaf *l) {
         add_dcl(g, d);
         return v;
     }
-    if (usage == 0 && index == 0) return bc_reg(D3D9_REG_RASTOUT, 0, n);
-    if (usage == 11) return bc_reg(D3D9_REG_RASTOUT, 1, n);
-    if (usage == 4) return bc_reg(D3D9_REG_RASTOUT, 2, n);
-    if (usage == 10 && index < 2) return bc_reg(D3D9_REG_ATTROUT, (uint16_t)index, n);
-    if (usage == 5 && index < 8) return bc_reg(D3D9_REG_OUTPUT, (uint16_t)index, n);
-    bc_fail(g, l->loc, 4503, "invalid output semantic '%s' for %s", l->semantic, g->profile);
+    if (usage == 0 && index == 0) return hfx_bc_reg(D3D9_REG_RASTOUT, 0, n);
+    if (usage == 11) return hfx_bc_reg(D3D9_REG_RASTOUT, 1, n);
+    if (usage == 4) return hfx_bc_reg(D3D9_REG_RASTOUT, 2, n);
+    if (usage == 10 && index < 2) return hfx_bc_reg(D3D9_REG_ATTROUT, (uint16_t)index, n);
+    if (usage == 5 && index < 8) return hfx_bc_reg(D3D9_REG_OUTPUT, (uint16_t)index, n);
+    hfx_bc_fail(g, l->loc, 4503, "invalid output semantic '%s' for %s", l->semantic, g->profile);
     return v;
 }
 
@@ -180,7 +180,7 @@ static int leaf_slot(const ir_leaf *l, const hfx_type *t) {
     uint32_t k = 0;
     for (uint32_t d = 0; d < l->depth; d++) {
         if (t->kind != TY_STRUCT || l->fields[d] >= t->st->field_count) return -1;
-        for (uint32_t i = 0; i < l->fields[d]; i++) k += bc_slots(t->st->fields[i].type, false);
+        for (uint32_t i = 0; i < l->fields[d]; i++) k += hfx_bc_slots(t->st->fields[i].type, false);
         t = t->st->fields[l->fields[d]].type;
     }
     return t->kind == TY_SCALAR || t->kind == TY_VECTOR ? (int)k : -1;
@@ -188,13 +188,13 @@ static int leaf_slot(const ir_leaf *l, const hfx_type *t) {
 
 /* The registers of the entry's parameter p (or of its return value, p NULL). */
 static bc_obj interface_obj(bc_gen *g, const ir_leaf *l, int n, const ir_var *p, const hfx_type *t, bool out) {
-    bc_obj o = new_obj(g, bc_slots(t, false));
-    for (uint32_t k = 0; k < o.count; k++) o.slot[k] = bc_reg(D3D9_REG_TEMP, 0, bc_slot_width(t, false, k));
+    bc_obj o = new_obj(g, hfx_bc_slots(t, false));
+    for (uint32_t k = 0; k < o.count; k++) o.slot[k] = hfx_bc_reg(D3D9_REG_TEMP, 0, hfx_bc_slot_width(t, false, k));
     for (int i = 0; i < n && !g->failed; i++) {
         if (l[i].root != p) continue;
         int k = leaf_slot(&l[i], t);
         if (k < 0 || (uint32_t)k >= o.count) {
-            bc_fail(g, l[i].loc, X_BC_UNSUPPORTED, "the bytecode writer does not handle '%s' here yet (a matrix or array with a semantic)", l[i].semantic);
+            hfx_bc_fail(g, l[i].loc, X_BC_UNSUPPORTED, "the bytecode writer does not handle '%s' here yet (a matrix or array with a semantic)", l[i].semantic);
             break;
         }
         o.slot[k] = out ? output_reg(g, &l[i]) : input_reg(g, &l[i]);
@@ -202,23 +202,23 @@ static bc_obj interface_obj(bc_gen *g, const ir_leaf *l, int n, const ir_var *p,
     return o;
 }
 
-bool bc_straight_return(const ir_stmt *body) {
+bool hfx_bc_straight_return(const ir_stmt *body) {
     if (!body || body->kind != IS_BLOCK) return false;
     for (uint32_t i = 0; i < body->count; i++) {
         const ir_stmt *s = body->body[i];
         if (s->kind == IS_RETURN) return i + 1 == body->count;
-        if (ir_has_jumps(s)) return false;
+        if (hfx_ir_has_jumps(s)) return false;
     }
     return true;
 }
 
 /* Parameters, samplers and private globals, in the order the stage lists them. */
-void bc_bind_globals(bc_gen *g) {
+void hfx_bc_bind_globals(bc_gen *g) {
     for (uint32_t i = 0; i < g->sh->global_count && !g->failed; i++) {
         const ir_var *v = g->sh->globals[i];
         if (v->kind == IRV_SAMPLER) {
             bc_obj o = new_obj(g, 1);
-            o.slot[0] = bc_reg(D3D9_REG_SAMPLER, (uint16_t)g->samplers++, 4);
+            o.slot[0] = hfx_bc_reg(D3D9_REG_SAMPLER, (uint16_t)g->samplers++, 4);
             d3d9_inst d = {.op = D3D9_DCL, .has_dst = true};
             d.sampler_type = v->dim == DIM_CUBE ? 3 : v->dim == DIM_3D ? 4 : 2;
             d.dst = (d3d9_dst){.type = D3D9_REG_SAMPLER, .num = o.slot[0].num, .mask = 0xf};
@@ -228,7 +228,7 @@ void bc_bind_globals(bc_gen *g) {
                 g->ctab[g->ctab_count++] = (bc_ctab){v->name, v->type, D3D9_RS_SAMPLER, o.slot[0].num, 1, false};
         } else if (v->kind == IRV_UNIFORM) {
             bool cols = !(v->mods & MOD_ROW_MAJOR) && !(v->decl && (v->decl->mods & MOD_ROW_MAJOR));
-            uint32_t n = bc_slots(v->type, cols);
+            uint32_t n = hfx_bc_slots(v->type, cols);
             int first = -1;
             const char *reg = v->decl ? v->decl->reg : NULL;
             if (reg && (reg[0] == 'c' || reg[0] == 'C')) first = atoi(reg + 1);
@@ -239,14 +239,14 @@ void bc_bind_globals(bc_gen *g) {
                     while (k < n && !g->cused[r + k]) k++;
                     if (k == n) first = (int)r;
                 }
-            if (first < 0 || !bc_reserve_consts(g, (uint16_t)first, (uint16_t)n)) {
-                bc_fail(g, v->decl ? v->decl->loc : g->loc, X_BC_CONSTS,
+            if (first < 0 || !hfx_bc_reserve_consts(g, (uint16_t)first, (uint16_t)n)) {
+                hfx_bc_fail(g, v->decl ? v->decl->loc : g->loc, X_BC_CONSTS,
                         "'%s' does not fit in the %u constant registers of %s", v->name, g->max_consts, g->profile);
                 return;
             }
             bc_obj o = new_obj(g, n);
             o.cols = cols;
-            for (uint32_t k = 0; k < n; k++) o.slot[k] = bc_reg(D3D9_REG_CONST, (uint16_t)(first + (int)k), bc_slot_width(v->type, cols, k));
+            for (uint32_t k = 0; k < n; k++) o.slot[k] = hfx_bc_reg(D3D9_REG_CONST, (uint16_t)(first + (int)k), hfx_bc_slot_width(v->type, cols, k));
             add_bind(g, v, o);
             if (HFX_ARENA_GROW(g->c->arena, g->ctab, g->ctab_count, g->ctab_cap, 8))
                 g->ctab[g->ctab_count++] = (bc_ctab){v->name, v->type, D3D9_RS_FLOAT4, (uint16_t)first, (uint16_t)n, cols};
@@ -254,16 +254,16 @@ void bc_bind_globals(bc_gen *g) {
     }
 }
 
-void bc_init_privates(bc_gen *g) {
+void hfx_bc_init_privates(bc_gen *g) {
     for (uint32_t i = 0; i < g->sh->global_count && !g->failed; i++) {
         const ir_var *v = g->sh->globals[i];
         if (v->kind != IRV_PRIVATE) continue;
-        bc_binding *b = add_bind(g, v, bc_alloc_obj(g, v->type));
+        bc_binding *b = add_bind(g, v, hfx_bc_alloc_obj(g, v->type));
         if (!b) return;
-        if (v->init) bc_assign(g, b->obj, bc_expr(g, v->init), v->type, false);
+        if (v->init) hfx_bc_assign(g, b->obj, hfx_bc_expr(g, v->init), v->type, false);
         else if (v->copy_of) {
-            bc_binding *u = bc_bind(g, v->copy_of);
-            if (u) bc_assign(g, b->obj, u->obj, v->type, false);
+            bc_binding *u = hfx_bc_bind(g, v->copy_of);
+            if (u) hfx_bc_assign(g, b->obj, u->obj, v->type, false);
         }
     }
 }
@@ -289,7 +289,7 @@ static void end_scope(bc_gen *g, uint32_t mark) {
             for (uint32_t k = 0; k < b->obj.count; k++) {
                 bc_val v = b->obj.slot[k];
                 v.own = k >= 64 || (b->owned >> k & 1);
-                if (v.type == D3D9_REG_TEMP) bc_release(g, v);
+                if (v.type == D3D9_REG_TEMP) hfx_bc_release(g, v);
             }
         } else g->binds[n++] = *b;
     }
@@ -327,24 +327,24 @@ static void gen_decl(bc_gen *g, const ir_stmt *s) {
     const ir_var *v = s->var;
     double k;
     if (s->expr && v->type->kind == TY_SCALAR && (v->type->base == B_INT || v->type->base == B_UINT) &&
-        bc_try_const(g, s->expr, &k)) { /* a counter the unroller may step */
+        hfx_bc_try_const(g, s->expr, &k)) { /* a counter the unroller may step */
         bc_binding *b = add_bind(g, v, new_obj(g, 0));
         if (b) { b->is_const = true; b->konst = k; }
         return;
     }
     /* every slot starts as zero (a view of a def register, as the GLSL path zeroes it) and
      * takes a temporary of its own when written */
-    bc_obj o = new_obj(g, bc_slots(v->type, false));
+    bc_obj o = new_obj(g, hfx_bc_slots(v->type, false));
     for (uint32_t k = 0; k < o.count; k++) {
-        unsigned n = bc_slot_width(v->type, false, k);
-        o.slot[k] = bc_constf(g, 0);
+        unsigned n = hfx_bc_slot_width(v->type, false, k);
+        o.slot[k] = hfx_bc_constf(g, 0);
         o.slot[k].n = (uint8_t)n;
         for (unsigned c = 1; c < 4; c++) o.slot[k].sw[c] = o.slot[k].sw[0];
     }
     bc_binding *b = add_bind(g, v, o);
     if (!b) return;
     b->owned = 0;
-    if (s->expr) bc_init_binding(g, b, bc_expr(g, s->expr));
+    if (s->expr) hfx_bc_init_binding(g, b, hfx_bc_expr(g, s->expr));
 }
 
 /* A binding's registers copied into fresh temporaries. */
@@ -354,7 +354,7 @@ static bc_obj copy_obj(bc_gen *g, bc_obj o) {
     for (uint32_t k = 0; k < o.count; k++) {
         bc_val t = o.slot[k];
         t.own = false;
-        c.slot[k] = bc_immutable(g, &t) ? t : bc_op1(g, D3D9_MOV, t.n, t);
+        c.slot[k] = hfx_bc_immutable(g, &t) ? t : hfx_bc_op1(g, D3D9_MOV, t.n, t);
         c.slot[k].own = false;
     }
     return c;
@@ -363,19 +363,19 @@ static bc_obj copy_obj(bc_gen *g, bc_obj o) {
 /* The written variables' bindings that exist now (declared outside the if). */
 static uint32_t written(bc_gen *g, const ir_stmt *s, uint32_t **out) {
     ir_var_set w = {0};
-    ir_note_writes(g->c, (ir_stmt *)s, &w);
+    hfx_ir_note_writes(g->c, (ir_stmt *)s, &w);
     if (w.unknown || w.calls) {
         /* calls may write private globals: take every binding of one */
         for (uint32_t i = 0; i < g->bind_count; i++)
-            if (g->binds[i].var->kind == IRV_PRIVATE) ir_var_set_add(g->c, &w, g->binds[i].var);
+            if (g->binds[i].var->kind == IRV_PRIVATE) hfx_ir_var_set_add(g->c, &w, g->binds[i].var);
     }
     uint32_t *b = HFX_NEW_ARRAY(g->c->arena, uint32_t, w.count ? w.count : 1);
     uint32_t n = 0;
     for (uint32_t i = 0; i < w.count; i++) {
-        bc_binding *x = bc_bind(g, w.vars[i]);
+        bc_binding *x = hfx_bc_bind(g, w.vars[i]);
         if (x && x->obj.count) b[n++] = (uint32_t)(x - g->binds); /* indexes: the array may move */
         else if (x && x->is_const) {
-            bc_fail(g, s->loc, X_BC_LOOP, "unable to unroll loop: its counter changes under a condition");
+            hfx_bc_fail(g, s->loc, X_BC_LOOP, "unable to unroll loop: its counter changes under a condition");
             return 0;
         }
     }
@@ -389,13 +389,13 @@ static bc_val and_cond(bc_gen *g, bc_val c) {
     if (!g->cond.n) return c;
     bc_val outer = g->cond;
     outer.own = false;
-    return bc_op2(g, D3D9_MUL, 1, outer, c);
+    return hfx_bc_op2(g, D3D9_MUL, 1, outer, c);
 }
 
 /* Both sides run; afterwards each variable they write holds cond ? then-value : else-value. */
 static void gen_if(bc_gen *g, const ir_stmt *s, const ir_stmt *rest, uint32_t rest_from) {
     double k;
-    if (bc_try_const(g, s->expr, &k)) {
+    if (hfx_bc_try_const(g, s->expr, &k)) {
         if (k != 0) gen_body(g, s->then_s);
         else if (rest) gen_block_from(g, rest, rest_from);
         else gen_body(g, s->else_s);
@@ -405,7 +405,7 @@ static void gen_if(bc_gen *g, const ir_stmt *s, const ir_stmt *rest, uint32_t re
     uint32_t n = written(g, s, &wi);
 #define w(i) (&g->binds[wi[i]])
     bc_obj *saved = HFX_NEW_ARRAY(g->c->arena, bc_obj, n ? n : 1), *then_v = HFX_NEW_ARRAY(g->c->arena, bc_obj, n ? n : 1);
-    bc_val c = bc_own(g, bc_expr1(g, s->expr));
+    bc_val c = hfx_bc_own(g, hfx_bc_expr1(g, s->expr));
     bc_val outer = g->cond;
     for (uint32_t i = 0; i < n; i++) saved[i] = copy_obj(g, w(i)->obj);
     g->cond = and_cond(g, c);
@@ -422,14 +422,14 @@ static void gen_if(bc_gen *g, const ir_stmt *s, const ir_stmt *rest, uint32_t re
     }
     bc_val kc = c;
     kc.own = false;
-    bc_val nc = bc_not(g, kc);
+    bc_val nc = hfx_bc_not(g, kc);
     g->cond = outer.n ? and_cond(g, nc) : nc;
     if (rest) gen_block_from(g, rest, rest_from);
     else gen_body(g, s->else_s);
-    if (g->cond.num != nc.num || g->cond.type != nc.type) { bc_val x = g->cond; x.own = true; bc_release(g, x); }
+    if (g->cond.num != nc.num || g->cond.type != nc.type) { bc_val x = g->cond; x.own = true; hfx_bc_release(g, x); }
     nc.own = true;
-    bc_release(g, nc);
-    if (cur.num != c.num || cur.type != c.type) { cur.own = true; bc_release(g, cur); }
+    hfx_bc_release(g, nc);
+    if (cur.num != c.num || cur.type != c.type) { cur.own = true; hfx_bc_release(g, cur); }
     g->cond = outer;
     for (uint32_t i = 0; i < n && !g->failed; i++) {
         bc_obj o = w(i)->obj;
@@ -438,17 +438,17 @@ static void gen_if(bc_gen *g, const ir_stmt *s, const ir_stmt *rest, uint32_t re
             t.own = e.own = false;
             bc_val x = c;
             x.own = false;
-            bc_val sel = bc_select(g, x, t, e);
+            bc_val sel = hfx_bc_select(g, x, t, e);
             if (!(w(i)->owned >> j & 1) || o.slot[j].type != D3D9_REG_TEMP) { /* a view: the select's temporary is the value */
                 o.slot[j] = sel;
                 o.slot[j].own = false;
                 w(i)->owned |= 1ull << j;
-            } else bc_store(g, o.slot[j], sel, false);
+            } else hfx_bc_store(g, o.slot[j], sel, false);
             t.own = j < 64 && (then_owned[i] >> j & 1);
-            bc_release(g, t);
+            hfx_bc_release(g, t);
         }
     }
-    bc_release(g, c);
+    hfx_bc_release(g, c);
 }
 #undef w
 
@@ -460,14 +460,14 @@ static bool const_step(bc_gen *g, const ir_expr *e) {
         return true;
     }
     const ir_expr *t = e->n ? e->a[0] : NULL;
-    bc_binding *b = t && t->kind == IE_VAR ? bc_bind(g, t->var) : NULL;
+    bc_binding *b = t && t->kind == IE_VAR ? hfx_bc_bind(g, t->var) : NULL;
     if (!b || !b->is_const) return false;
     double v;
     if (e->kind == IE_UNARY) {
         b->konst += e->op == OP_PREINC || e->op == OP_POSTINC ? 1 : e->op == OP_PREDEC || e->op == OP_POSTDEC ? -1 : 0;
         return e->op != OP_NEG && e->op != OP_NOT && e->op != OP_BITNOT;
     }
-    if (e->kind != IE_ASSIGN || !bc_try_const(g, e->a[1], &v)) return false;
+    if (e->kind != IE_ASSIGN || !hfx_bc_try_const(g, e->a[1], &v)) return false;
     switch (e->op) {
     case OP_NONE: b->konst = v; break;
     case OP_ADD: b->konst += v; break;
@@ -485,21 +485,21 @@ static void gen_loop(bc_gen *g, const ir_stmt *s) {
     if (s->init) gen_stmt(g, s->init);
     for (unsigned it = 0; !g->failed; it++) {
         double k = 1;
-        if ((s->kind != IS_DO || it) && s->expr && !bc_try_const(g, s->expr, &k)) {
-            bc_fail(g, s->loc, X_BC_LOOP, "unable to unroll loop, loop does not appear to terminate in a timely "
+        if ((s->kind != IS_DO || it) && s->expr && !hfx_bc_try_const(g, s->expr, &k)) {
+            hfx_bc_fail(g, s->loc, X_BC_LOOP, "unable to unroll loop, loop does not appear to terminate in a timely "
                                           "manner (the bytecode writer unrolls every loop)");
             break;
         }
         if (!k) break;
         if (it >= MAX_UNROLL || (s->max_iterations && it >= s->max_iterations)) {
             if (it >= MAX_UNROLL)
-                bc_fail(g, s->loc, X_BC_LOOP, "unable to unroll loop, loop does not appear to terminate in a timely manner (%u or more iterations)", MAX_UNROLL);
+                hfx_bc_fail(g, s->loc, X_BC_LOOP, "unable to unroll loop, loop does not appear to terminate in a timely manner (%u or more iterations)", MAX_UNROLL);
             break;
         }
         gen_body(g, s->then_s);
         if (g->broke) { g->broke = false; break; }
         if (s->step && !const_step(g, s->step)) {
-            bc_fail(g, s->loc, X_BC_LOOP, "unable to unroll loop: its step is not a constant change of its counter");
+            hfx_bc_fail(g, s->loc, X_BC_LOOP, "unable to unroll loop: its step is not a constant change of its counter");
             break;
         }
     }
@@ -507,18 +507,18 @@ static void gen_loop(bc_gen *g, const ir_stmt *s) {
 }
 
 static void gen_discard(bc_gen *g) {
-    if (g->stage != D3D9_PS) { bc_fail(g, g->loc, X_BC_UNSUPPORTED, "discard in a vertex shader"); return; }
+    if (g->stage != D3D9_PS) { hfx_bc_fail(g, g->loc, X_BC_UNSUPPORTED, "discard in a vertex shader"); return; }
     bc_val c = g->cond;
     c.own = false;
-    bc_val k = c.n ? bc_op1(g, D3D9_MOV, 4, bc_neg(c)) : bc_op1(g, D3D9_MOV, 4, bc_constf(g, -1));
-    bc_emit(g, D3D9_TEXKILL, &k, 0xf, NULL, 0);
-    bc_release(g, k);
+    bc_val k = c.n ? hfx_bc_op1(g, D3D9_MOV, 4, hfx_bc_neg(c)) : hfx_bc_op1(g, D3D9_MOV, 4, hfx_bc_constf(g, -1));
+    hfx_bc_emit(g, D3D9_TEXKILL, &k, 0xf, NULL, 0);
+    hfx_bc_release(g, k);
 }
 
 /* A straight callee's value leaves as it is: temporaries of its locals are taken from their
  * bindings (so its scope's end keeps them), other registers are read where they are. */
 static void capture_return(bc_gen *g, const ir_expr *e) {
-    bc_obj o = bc_expr(g, e);
+    bc_obj o = hfx_bc_expr(g, e);
     for (uint32_t k = 0; k < o.count; k++) {
         bc_val *v = &o.slot[k];
         if (v->own || v->type != D3D9_REG_TEMP) continue;
@@ -544,51 +544,51 @@ static void gen_stmt(bc_gen *g, const ir_stmt *s) {
     case IS_DECL: gen_decl(g, s); break;
     case IS_EXPR: {
         if (const_step(g, s->expr)) break; /* the counter's own changes */
-        bc_release_obj(g, bc_expr(g, s->expr));
+        hfx_bc_release_obj(g, hfx_bc_expr(g, s->expr));
         break;
     }
     case IS_IF: gen_if(g, s, NULL, 0); break;
     case IS_FOR: case IS_WHILE: case IS_DO: gen_loop(g, s); break;
     case IS_RETURN:
         if (s->expr && g->capture) capture_return(g, s->expr);
-        else if (s->expr && g->ret) bc_assign(g, *g->ret, bc_expr(g, s->expr), s->expr->type, false);
+        else if (s->expr && g->ret) hfx_bc_assign(g, *g->ret, hfx_bc_expr(g, s->expr), s->expr->type, false);
         break;
     case IS_DISCARD: gen_discard(g); break;
     case IS_BREAK:
-        if (g->cond.n) bc_fail(g, s->loc, X_BC_LOOP, "unable to unroll loop: it breaks under a condition the compiler cannot fold");
+        if (g->cond.n) hfx_bc_fail(g, s->loc, X_BC_LOOP, "unable to unroll loop: it breaks under a condition the compiler cannot fold");
         g->broke = true;
         break;
     default:
-        bc_fail(g, s->loc, X_BC_UNSUPPORTED, "the bytecode writer does not handle this statement yet");
+        hfx_bc_fail(g, s->loc, X_BC_UNSUPPORTED, "the bytecode writer does not handle this statement yet");
     }
 }
 
 /* An inlined call: parameters bound to the arguments (or to copies, when the callee writes them). */
-void bc_call(bc_gen *g, const ir_expr *e, bc_obj *out) {
+void hfx_bc_call(bc_gen *g, const ir_expr *e, bc_obj *out) {
     const ir_func *f = e->fn;
-    if (g->depth > 32) { bc_fail(g, e->loc, X_BC_UNSUPPORTED, "calls nest too deep"); return; }
+    if (g->depth > 32) { hfx_bc_fail(g, e->loc, X_BC_UNSUPPORTED, "calls nest too deep"); return; }
     uint32_t mark = g->bind_count;
     bc_obj *outs = HFX_NEW_ARRAY(g->c->arena, bc_obj, f->param_count ? f->param_count : 1);
     for (uint32_t i = 0; i < f->param_count && i < e->n && !g->failed; i++) {
         const ir_var *p = f->params[i];
         bool is_out = (p->mods & MOD_OUT) != 0;
-        if (is_out) outs[i] = bc_expr(g, e->a[i]);  /* an l-value: its registers */
-        if (is_out && !(p->mods & MOD_IN)) { add_bind(g, p, bc_alloc_obj(g, p->type)); continue; }
-        bc_obj a = is_out ? outs[i] : bc_expr(g, e->a[i]);
-        if (!bc_writes_param(g, f, p) && !is_out) { /* read only: the argument's registers serve */
+        if (is_out) outs[i] = hfx_bc_expr(g, e->a[i]);  /* an l-value: its registers */
+        if (is_out && !(p->mods & MOD_IN)) { add_bind(g, p, hfx_bc_alloc_obj(g, p->type)); continue; }
+        bc_obj a = is_out ? outs[i] : hfx_bc_expr(g, e->a[i]);
+        if (!hfx_bc_writes_param(g, f, p) && !is_out) { /* read only: the argument's registers serve */
             uint64_t owned = 0;
             for (uint32_t k = 0; k < a.count && k < 64; k++) if (a.slot[k].own) owned |= 1ull << k;
             bc_binding *b = add_bind(g, p, a);
             if (b) b->owned = owned;
             continue;
         }
-        bc_binding *b = add_bind(g, p, bc_alloc_obj(g, p->type));
-        if (b) bc_assign(g, b->obj, a, p->type, false);
+        bc_binding *b = add_bind(g, p, hfx_bc_alloc_obj(g, p->type));
+        if (b) hfx_bc_assign(g, b->obj, a, p->type, false);
     }
     bc_obj *saved_ret = g->ret, *saved_capture = g->capture, ret = {0};
     uint32_t saved_mark = g->capture_mark;
-    bool has_value = f->ret && f->ret->kind != TY_VOID, straight = has_value && bc_straight_return(f->body);
-    if (has_value && !straight) ret = bc_alloc_obj(g, f->ret);
+    bool has_value = f->ret && f->ret->kind != TY_VOID, straight = has_value && hfx_bc_straight_return(f->body);
+    if (has_value && !straight) ret = hfx_bc_alloc_obj(g, f->ret);
     g->ret = straight ? NULL : &ret;
     g->capture = straight ? &ret : NULL;
     g->capture_mark = g->bind_count;
@@ -601,29 +601,29 @@ void bc_call(bc_gen *g, const ir_expr *e, bc_obj *out) {
     for (uint32_t i = 0; i < f->param_count && i < e->n && !g->failed; i++) {
         const ir_var *p = f->params[i];
         if (!(p->mods & MOD_OUT)) continue;
-        bc_binding *b = bc_bind(g, p);
+        bc_binding *b = hfx_bc_bind(g, p);
         if (!b) continue;
         uint64_t owned = b->owned;
         b->owned = 0; /* its temporaries go to the argument */
-        bc_assign_expr(g, e->a[i], b->obj, owned);
+        hfx_bc_assign_expr(g, e->a[i], b->obj, owned);
     }
     end_scope(g, mark);
     if (!straight) for (uint32_t k = 0; k < ret.count; k++) ret.slot[k].own = true;
     *out = ret;
 }
 
-bc_obj bc_obj_inputs(bc_gen *g, const ir_leaf *l, int n, const ir_var *p, const hfx_type *t) { return interface_obj(g, l, n, p, t, false); }
-bc_obj bc_obj_outputs(bc_gen *g, const ir_leaf *l, int n, const ir_var *p, const hfx_type *t) { return interface_obj(g, l, n, p, t, true); }
+bc_obj hfx_bc_obj_inputs(bc_gen *g, const ir_leaf *l, int n, const ir_var *p, const hfx_type *t) { return interface_obj(g, l, n, p, t, false); }
+bc_obj hfx_bc_obj_outputs(bc_gen *g, const ir_leaf *l, int n, const ir_var *p, const hfx_type *t) { return interface_obj(g, l, n, p, t, true); }
 
-void bc_bind_entry(bc_gen *g, const ir_var *p, bc_obj o, bool owned) {
+void hfx_bc_bind_entry(bc_gen *g, const ir_var *p, bc_obj o, bool owned) {
     bc_binding *b = add_bind(g, p, o);
     if (b) b->owned = owned ? ~0ull : 0;
 }
 
-void bc_gen_body(bc_gen *g, const ir_stmt *body) { gen_body(g, body); }
+void hfx_bc_gen_body(bc_gen *g, const ir_stmt *body) { gen_body(g, body); }
 
-bool bc_writes_param(bc_gen *g, const ir_func *f, const ir_var *p) {
+bool hfx_bc_writes_param(bc_gen *g, const ir_func *f, const ir_var *p) {
     ir_var_set w = {0};
-    if (f->body) ir_note_writes(g->c, f->body, &w);
-    return w.unknown || ir_var_set_has(&w, p);
+    if (f->body) hfx_ir_note_writes(g->c, f->body, &w);
+    return w.unknown || hfx_ir_var_set_has(&w, p);
 }

@@ -1,6 +1,6 @@
-/* bc_int.h: what the files of compiler/bytecode/ share. bc_emit.c: instructions as records,
+/* bc_int.h: what the files of compiler/bytecode/ share. hfx_bc_emit.c: instructions as records,
  * registers, constants, the CTAB and the token stream; bc_gen.c: the entry's interface,
- * variables and statements (flattened, unrolled); bc_expr.c: expressions; bc_intrin.c: the
+ * variables and statements (flattened, unrolled); hfx_bc_expr.c: expressions; bc_intrin.c: the
  * intrinsics, one table. */
 #ifndef HFX_BC_INT_H
 #define HFX_BC_INT_H
@@ -55,7 +55,7 @@ typedef struct bc_gen {
     d3d9_inst *insts; uint32_t inst_count, inst_cap;
     uint32_t temps_used;      /* bitmask of live r registers */
     uint32_t temps_peak;
-    unsigned next_temp;       /* where bc_temp looks first */
+    unsigned next_temp;       /* where hfx_bc_temp looks first */
     uint8_t cused[BC_MAX_CONSTS];  /* c registers taken by parameters or defs */
     uint32_t max_consts;
     d3d9_inst *dcls; uint32_t dcl_count, dcl_cap; /* dcl instructions, written before the code */
@@ -73,70 +73,70 @@ typedef struct bc_gen {
     bool failed;
 } bc_gen;
 
-/* --- bc_emit.c --- */
-void bc_fail(bc_gen *g, hfx_loc loc, unsigned code, const char *fmt, ...) __attribute__((format(printf, 4, 5)));
-unsigned bc_temp_limit(const bc_gen *g);                  /* the model's r registers */
-int bc_temp(bc_gen *g);                                    /* a free r register, or -1 (error reported) */
-void bc_release(bc_gen *g, bc_val v);                      /* frees v's temporary when it owns one */
-void bc_release_obj(bc_gen *g, bc_obj o);
-bc_val bc_reg(uint8_t type, uint16_t num, unsigned n);     /* .xyzw-like identity read of n components */
-bc_val bc_scalar_of(bc_val v, unsigned i);                 /* component i replicated */
-bc_val bc_neg(bc_val v);
-d3d9_inst *bc_emit(bc_gen *g, uint16_t op, const bc_val *dst, unsigned mask, const bc_val *src, unsigned n);
-bc_val bc_op(bc_gen *g, uint16_t op, unsigned n, const bc_val *src, unsigned count); /* fresh temp = op(src) */
-bc_val bc_op1(bc_gen *g, uint16_t op, unsigned n, bc_val a);
-bc_val bc_op2(bc_gen *g, uint16_t op, unsigned n, bc_val a, bc_val b);
-bc_val bc_op3(bc_gen *g, uint16_t op, unsigned n, bc_val a, bc_val b, bc_val c);
-bc_val bc_const(bc_gen *g, const float *v, unsigned n);    /* a def register's components */
-bc_val bc_constf(bc_gen *g, float v);
-bool bc_can_sat(const bc_gen *g);                         /* the _sat modifier: pixel shaders and vs_3_0 */
-bool bc_is_zero(const bc_gen *g, const bc_val *v);        /* a def register's zeros */
+/* --- hfx_bc_emit.c --- */
+void hfx_bc_fail(bc_gen *g, hfx_loc loc, unsigned code, const char *fmt, ...) __attribute__((format(printf, 4, 5)));
+unsigned hfx_bc_temp_limit(const bc_gen *g);                  /* the model's r registers */
+int hfx_bc_temp(bc_gen *g);                                    /* a free r register, or -1 (error reported) */
+void hfx_bc_release(bc_gen *g, bc_val v);                      /* frees v's temporary when it owns one */
+void hfx_bc_release_obj(bc_gen *g, bc_obj o);
+bc_val hfx_bc_reg(uint8_t type, uint16_t num, unsigned n);     /* .xyzw-like identity read of n components */
+bc_val hfx_bc_scalar_of(bc_val v, unsigned i);                 /* component i replicated */
+bc_val hfx_bc_neg(bc_val v);
+d3d9_inst *hfx_bc_emit(bc_gen *g, uint16_t op, const bc_val *dst, unsigned mask, const bc_val *src, unsigned n);
+bc_val hfx_bc_op(bc_gen *g, uint16_t op, unsigned n, const bc_val *src, unsigned count); /* fresh temp = op(src) */
+bc_val hfx_bc_op1(bc_gen *g, uint16_t op, unsigned n, bc_val a);
+bc_val hfx_bc_op2(bc_gen *g, uint16_t op, unsigned n, bc_val a, bc_val b);
+bc_val hfx_bc_op3(bc_gen *g, uint16_t op, unsigned n, bc_val a, bc_val b, bc_val c);
+bc_val hfx_bc_const(bc_gen *g, const float *v, unsigned n);    /* a def register's components */
+bc_val hfx_bc_constf(bc_gen *g, float v);
+bool hfx_bc_can_sat(const bc_gen *g);                         /* the _sat modifier: pixel shaders and vs_3_0 */
+bool hfx_bc_is_zero(const bc_gen *g, const bc_val *v);        /* a def register's zeros */
 /* Writes value v into the components of target t (t.sw: the register component of each). */
-void bc_store(bc_gen *g, bc_val t, bc_val v, bool sat);
-bool bc_reserve_consts(bc_gen *g, uint16_t first, uint16_t count);
-const uint32_t *bc_encode(bc_gen *g, uint32_t *count);
+void hfx_bc_store(bc_gen *g, bc_val t, bc_val v, bool sat);
+bool hfx_bc_reserve_consts(bc_gen *g, uint16_t first, uint16_t count);
+const uint32_t *hfx_bc_encode(bc_gen *g, uint32_t *count);
 
 /* --- bc_gen.c --- */
-bc_binding *bc_bind(bc_gen *g, const ir_var *v);           /* the variable's storage (made on first use), or NULL */
-uint32_t bc_slots(const hfx_type *t, bool cols);
-unsigned bc_slot_width(const hfx_type *t, bool cols, uint32_t k); /* components of slot k */
-bc_obj bc_alloc_obj(bc_gen *g, const hfx_type *t);         /* temporaries for a value of type t (rows) */
-void bc_assign(bc_gen *g, bc_obj dst, bc_obj src, const hfx_type *t, bool sat);
-void bc_call(bc_gen *g, const ir_expr *e, bc_obj *out);
-void bc_bind_globals(bc_gen *g);                          /* parameters' c registers, samplers' s, the CTAB */
-void bc_init_privates(bc_gen *g);                         /* static globals, initialised at the start */
-bc_obj bc_obj_inputs(bc_gen *g, const ir_leaf *l, int n, const ir_var *p, const hfx_type *t);  /* p's input registers (dcl'd) */
-bc_obj bc_obj_outputs(bc_gen *g, const ir_leaf *l, int n, const ir_var *p, const hfx_type *t); /* p's (NULL: the return's) outputs */
-void bc_bind_entry(bc_gen *g, const ir_var *p, bc_obj o, bool owned);
-bool bc_straight_return(const ir_stmt *body);             /* the body returns only at its end */
-void bc_gen_body(bc_gen *g, const ir_stmt *body);
-bool bc_writes_param(bc_gen *g, const ir_func *f, const ir_var *p); /* f's body writes its parameter p */
+bc_binding *hfx_bc_bind(bc_gen *g, const ir_var *v);           /* the variable's storage (made on first use), or NULL */
+uint32_t hfx_bc_slots(const hfx_type *t, bool cols);
+unsigned hfx_bc_slot_width(const hfx_type *t, bool cols, uint32_t k); /* components of slot k */
+bc_obj hfx_bc_alloc_obj(bc_gen *g, const hfx_type *t);         /* temporaries for a value of type t (rows) */
+void hfx_bc_assign(bc_gen *g, bc_obj dst, bc_obj src, const hfx_type *t, bool sat);
+void hfx_bc_call(bc_gen *g, const ir_expr *e, bc_obj *out);
+void hfx_bc_bind_globals(bc_gen *g);                          /* parameters' c registers, samplers' s, the CTAB */
+void hfx_bc_init_privates(bc_gen *g);                         /* static globals, initialised at the start */
+bc_obj hfx_bc_obj_inputs(bc_gen *g, const ir_leaf *l, int n, const ir_var *p, const hfx_type *t);  /* p's input registers (dcl'd) */
+bc_obj hfx_bc_obj_outputs(bc_gen *g, const ir_leaf *l, int n, const ir_var *p, const hfx_type *t); /* p's (NULL: the return's) outputs */
+void hfx_bc_bind_entry(bc_gen *g, const ir_var *p, bc_obj o, bool owned);
+bool hfx_bc_straight_return(const ir_stmt *body);             /* the body returns only at its end */
+void hfx_bc_gen_body(bc_gen *g, const ir_stmt *body);
+bool hfx_bc_writes_param(bc_gen *g, const ir_func *f, const ir_var *p); /* f's body writes its parameter p */
 
-/* --- bc_expr.c --- */
-bc_obj bc_expr(bc_gen *g, const ir_expr *e);
-bool bc_immutable(const bc_gen *g, const bc_val *v);     /* c / v / t registers nothing writes */
+/* --- hfx_bc_expr.c --- */
+bc_obj hfx_bc_expr(bc_gen *g, const ir_expr *e);
+bool hfx_bc_immutable(const bc_gen *g, const bc_val *v);     /* c / v / t registers nothing writes */
 /* lhs = src; owned: the slots of src whose temporaries it may take (the rest are copied or viewed). */
-void bc_assign_expr(bc_gen *g, const ir_expr *lhs, bc_obj src, uint64_t owned);
-void bc_init_binding(bc_gen *g, bc_binding *b, bc_obj src); /* a new variable's value: views, adopted temporaries or copies */
-bc_val bc_expr1(bc_gen *g, const ir_expr *e);              /* a scalar or vector */
-bc_val bc_own(bc_gen *g, bc_val v);                        /* v in a temporary of its own */
-bc_val bc_matrix_elem(bc_obj m, unsigned row, unsigned col);
-bc_val bc_matrix_row(bc_gen *g, bc_obj m, const hfx_type *t, unsigned row);
-bc_val bc_not(bc_gen *g, bc_val a);
-bc_val bc_select(bc_gen *g, bc_val c, bc_val a, bc_val b);  /* c (0 / 1) ? a : b */
-bool bc_try_const(bc_gen *g, const ir_expr *e, double *out);
-bc_val bc_per_comp(bc_gen *g, uint16_t op, bc_val a, const bc_val *b); /* op on each component (rcp, rsq, exp, log, pow) */
+void hfx_bc_assign_expr(bc_gen *g, const ir_expr *lhs, bc_obj src, uint64_t owned);
+void hfx_bc_init_binding(bc_gen *g, bc_binding *b, bc_obj src); /* a new variable's value: views, adopted temporaries or copies */
+bc_val hfx_bc_expr1(bc_gen *g, const ir_expr *e);              /* a scalar or vector */
+bc_val hfx_bc_own(bc_gen *g, bc_val v);                        /* v in a temporary of its own */
+bc_val hfx_bc_matrix_elem(bc_obj m, unsigned row, unsigned col);
+bc_val hfx_bc_matrix_row(bc_gen *g, bc_obj m, const hfx_type *t, unsigned row);
+bc_val hfx_bc_not(bc_gen *g, bc_val a);
+bc_val hfx_bc_select(bc_gen *g, bc_val c, bc_val a, bc_val b);  /* c (0 / 1) ? a : b */
+bool hfx_bc_try_const(bc_gen *g, const ir_expr *e, double *out);
+bc_val hfx_bc_per_comp(bc_gen *g, uint16_t op, bc_val a, const bc_val *b); /* op on each component (rcp, rsq, exp, log, pow) */
 
 /* --- bc_peep.c --- */
-void bc_sink(bc_gen *g);                                 /* copies folded into the instructions they copy */
-uint32_t bc_renumber(bc_gen *g);
-void bc_dead_code(bc_gen *g);                            /* instructions whose results nothing reads */
-void bc_prune_constants(bc_gen *g);                      /* parameters and defs nothing reads */                         /* temporaries renumbered by span; how many */
+void hfx_bc_sink(bc_gen *g);                                 /* copies folded into the instructions they copy */
+uint32_t hfx_bc_renumber(bc_gen *g);
+void hfx_bc_dead_code(bc_gen *g);                            /* instructions whose results nothing reads */
+void hfx_bc_prune_constants(bc_gen *g);                      /* parameters and defs nothing reads */                         /* temporaries renumbered by span; how many */
 
 /* --- bc_intrin.c --- */
-bc_obj bc_intrinsic(bc_gen *g, const ir_expr *e);
-bc_val bc_dot(bc_gen *g, bc_val a, bc_val b);
-bc_val bc_floor(bc_gen *g, bc_val x);
-bc_val bc_fmod(bc_gen *g, bc_val a, bc_val b);            /* fxc's: frc(|a / b|) with a / b's sign, times b */
+bc_obj hfx_bc_intrinsic(bc_gen *g, const ir_expr *e);
+bc_val hfx_bc_dot(bc_gen *g, bc_val a, bc_val b);
+bc_val hfx_bc_floor(bc_gen *g, bc_val x);
+bc_val hfx_bc_fmod(bc_gen *g, bc_val a, bc_val b);            /* fxc's: frc(|a / b|) with a / b's sign, times b */
 
 #endif

@@ -61,7 +61,7 @@ static bool plain_copy(const d3d9_inst *m, int *from) {
 /* Writer w of component `from` writes component `to` instead: a replicated result (dp4, rcp...)
  * just changes its mask; a componentwise one reads its sources' component for `to` too. */
 static void move_component(d3d9_inst *w, unsigned from, unsigned to) {
-    const d3d9_op_info *info = d3d9_op_find(w->op);
+    const d3d9_op_info *info = hfx_d3d9_op_find(w->op);
     bool replicated = w->op == D3D9_DP3 || w->op == D3D9_DP4 || w->op == D3D9_DP2ADD || (info->flags & D3D9_OPF_SCALAR);
     if (!replicated)
         for (unsigned i = 0; i < w->src_count; i++) {
@@ -100,7 +100,7 @@ static bool try_sink(bc_gen *g, uint32_t at) {
     }
     if (remaining || !n || (from >= 0 && n != 1)) return false;
     if (from >= 0) {
-        const d3d9_op_info *info = d3d9_op_find(g->insts[writers[0]].op);
+        const d3d9_op_info *info = hfx_d3d9_op_find(g->insts[writers[0]].op);
         if (!info || (info->flags & (D3D9_OPF_TEX | D3D9_OPF_MATRIX)) || g->insts[writers[0]].op == D3D9_DP2ADD) return false;
         move_component(&g->insts[writers[0]], (unsigned)from, __builtin_ctz(target_mask));
     }
@@ -113,7 +113,7 @@ static bool try_sink(bc_gen *g, uint32_t at) {
     return true;
 }
 
-void bc_sink(bc_gen *g) {
+void hfx_bc_sink(bc_gen *g) {
     for (uint32_t i = 0; i < g->inst_count;)
         if (!try_sink(g, i)) i++;
 }
@@ -123,7 +123,7 @@ static unsigned read_comps(const d3d9_inst *in, const d3d9_src *s);
 /* Temporaries renumbered by the values they hold: a register's value ends where none of its
  * components is read again (backward liveness; the code has no loops), the next write starts
  * another; values are then given the fewest registers, first come first served. */
-uint32_t bc_renumber(bc_gen *g) {
+uint32_t hfx_bc_renumber(bc_gen *g) {
     uint32_t n = g->inst_count;
     uint8_t (*live_after)[BC_MAX_TEMPS] = (uint8_t (*)[BC_MAX_TEMPS])hfx_arena_alloc_raw(g->c->arena, (size_t)(n ? n : 1) * BC_MAX_TEMPS);
     unsigned live[BC_MAX_TEMPS] = {0};
@@ -189,7 +189,7 @@ uint32_t bc_renumber(bc_gen *g) {
 /* The source components an instruction reads (componentwise: those its mask writes). */
 static unsigned read_comps(const d3d9_inst *in, const d3d9_src *s) {
     unsigned mask = 0;
-    const d3d9_op_info *info = d3d9_op_find(in->op);
+    const d3d9_op_info *info = hfx_d3d9_op_find(in->op);
     bool componentwise = in->has_dst && info && !(info->flags & (D3D9_OPF_TEX | D3D9_OPF_SCALAR | D3D9_OPF_MATRIX)) &&
                          in->op != D3D9_DP3 && in->op != D3D9_DP4 && in->op != D3D9_DP2ADD && in->op != D3D9_NRM &&
                          in->op != D3D9_CRS && in->op != D3D9_SINCOS && in->op != D3D9_LIT && in->op != D3D9_TEXKILL;
@@ -200,14 +200,14 @@ static unsigned read_comps(const d3d9_inst *in, const d3d9_src *s) {
 
 /* Instructions whose temporaries nothing reads afterwards are dropped (a variant's unused
  * outputs, a select's unread side); the code has no loops, so one walk back suffices. */
-void bc_dead_code(bc_gen *g) {
+void hfx_bc_dead_code(bc_gen *g) {
     unsigned live[BC_MAX_TEMPS] = {0};
     uint32_t n = g->inst_count;
     bool *drop = HFX_NEW_ARRAY(g->c->arena, bool, n ? n : 1);
     for (uint32_t i = n; i-- > 0;) {
         d3d9_inst *in = &g->insts[i];
         bool temp = in->has_dst && in->op != D3D9_TEXKILL && in->dst.type == D3D9_REG_TEMP && in->dst.num < BC_MAX_TEMPS;
-        if (temp && !(live[in->dst.num] & in->dst.mask) && !(d3d9_op_find(in->op)->flags & D3D9_OPF_FLOW)) {
+        if (temp && !(live[in->dst.num] & in->dst.mask) && !(hfx_d3d9_op_find(in->op)->flags & D3D9_OPF_FLOW)) {
             drop[i] = true;
             continue;
         }
@@ -222,7 +222,7 @@ void bc_dead_code(bc_gen *g) {
 }
 
 /* Parameters and def registers the remaining code never reads leave the table. */
-void bc_prune_constants(bc_gen *g) {
+void hfx_bc_prune_constants(bc_gen *g) {
     bool read[BC_MAX_CONSTS] = {false}, relative = false;
     for (uint32_t i = 0; i < g->inst_count; i++)
         for (unsigned s = 0; s < g->insts[i].src_count; s++) {

@@ -1,4 +1,4 @@
-/* bc_write.c: one stage to bytecode: the model from the profile, the entry's interface,
+/* hfx_bc_write.c: one stage to bytecode: the model from the profile, the entry's interface,
  * parameters and samplers, the body, then the encoded shader decoded again by compiler/d3d9
  * (a malformed stream is hfx's bug: an internal error at the entry) and held to fxc's limits
  * for the model (instruction slots, temporaries, constants). */
@@ -25,7 +25,7 @@ static const bc_model *find_model(bc_gen *g, const char *profile, hfx_loc loc) {
                     vs1 ? "vs_2_0" : "ps_2_0");
         return &models[vs1 ? 0 : 3];
     }
-    bc_fail(g, loc, 3506, "the bytecode writer has no model '%s' (vs_2_0, vs_2_a, vs_3_0, ps_2_0, ps_2_a, ps_2_b, ps_3_0)",
+    hfx_bc_fail(g, loc, 3506, "the bytecode writer has no model '%s' (vs_2_0, vs_2_a, vs_3_0, ps_2_0, ps_2_a, ps_2_b, ps_3_0)",
             profile);
     return NULL;
 }
@@ -33,35 +33,35 @@ static const bc_model *find_model(bc_gen *g, const char *profile, hfx_loc loc) {
 static void gen_entry(bc_gen *g) {
     const ir_func *f = g->sh->entry;
     ir_leaf *in = NULL, *out = NULL;
-    int nin = ir_entry_leaves(g->c, f, false, &in), nout = ir_entry_leaves(g->c, f, true, &out);
+    int nin = hfx_ir_entry_leaves(g->c, f, false, &in), nout = hfx_ir_entry_leaves(g->c, f, true, &out);
     if (nin < 0 || nout < 0) { g->failed = true; return; }
     bc_obj *outs = HFX_NEW_ARRAY(g->c->arena, bc_obj, f->param_count ? f->param_count : 1);
     for (uint32_t i = 0; i < f->param_count && !g->failed; i++) {
         const ir_var *p = f->params[i];
         bool is_out = (p->mods & MOD_OUT) != 0, is_in = !is_out || (p->mods & MOD_IN);
         bc_obj o = {0};
-        if (is_in) o = bc_obj_inputs(g, in, nin, p, p->type);
-        if (is_out) outs[i] = bc_obj_outputs(g, out, nout, p, p->type);
-        bool written = bc_writes_param(g, f, p);
+        if (is_in) o = hfx_bc_obj_inputs(g, in, nin, p, p->type);
+        if (is_out) outs[i] = hfx_bc_obj_outputs(g, out, nout, p, p->type);
+        bool written = hfx_bc_writes_param(g, f, p);
         if (is_out || written) { /* inputs are read only, outputs write only: a copy the body uses */
-            bc_obj c = bc_alloc_obj(g, p->type);
-            if (is_in) bc_assign(g, c, o, p->type, false);
+            bc_obj c = hfx_bc_alloc_obj(g, p->type);
+            if (is_in) hfx_bc_assign(g, c, o, p->type, false);
             o = c;
         }
-        bc_bind_entry(g, p, o, is_out || written);
+        hfx_bc_bind_entry(g, p, o, is_out || written);
     }
     bc_obj ret = {0}, regs = {0};
     if (f->ret && f->ret->kind != TY_VOID) {
-        regs = bc_obj_outputs(g, out, nout, NULL, f->ret);
-        ret = bc_straight_return(f->body) ? regs : bc_alloc_obj(g, f->ret);
+        regs = hfx_bc_obj_outputs(g, out, nout, NULL, f->ret);
+        ret = hfx_bc_straight_return(f->body) ? regs : hfx_bc_alloc_obj(g, f->ret);
     }
     g->ret = &ret;
-    bc_init_privates(g);
-    bc_gen_body(g, f->body);
-    if (ret.count && ret.slot != regs.slot) bc_assign(g, regs, ret, f->ret, false);
+    hfx_bc_init_privates(g);
+    hfx_bc_gen_body(g, f->body);
+    if (ret.count && ret.slot != regs.slot) hfx_bc_assign(g, regs, ret, f->ret, false);
     for (uint32_t i = 0; i < f->param_count && !g->failed; i++) {
-        bc_binding *b = (f->params[i]->mods & MOD_OUT) ? bc_bind(g, f->params[i]) : NULL;
-        if (b) bc_assign(g, outs[i], b->obj, f->params[i]->type, false);
+        bc_binding *b = (f->params[i]->mods & MOD_OUT) ? hfx_bc_bind(g, f->params[i]) : NULL;
+        if (b) hfx_bc_assign(g, outs[i], b->obj, f->params[i]->type, false);
     }
 }
 
@@ -70,14 +70,14 @@ static bool verify(bc_gen *g, const bc_model *m, const uint32_t *w, uint32_t n, 
     hfx_diags d;
     hfx_diags_init(&d, g->c->arena, 0);
     d3d9_input input = {w, n * 4, hfx_diags_add_file(&d, "bytecode", NULL, "", 0), 0};
-    d3d9_shader *s = d3d9_decode(g->c->arena, &d, &input);
+    d3d9_shader *s = hfx_d3d9_decode(g->c->arena, &d, &input);
     if (!s) {
         hfx_error(g->c->diags, at, 5999, "internal error: the bytecode written for %s does not validate: %s", m->name,
                   d.count ? d.items[0].message : "?");
         return false;
     }
     uint32_t arith, tex;
-    d3d9_count_slots(s, &arith, &tex);
+    hfx_d3d9_count_slots(s, &arith, &tex);
     if (m->tex) {
         if (arith > m->arith)
             hfx_error(g->c->diags, at, 5608, "Compiled shader code uses too many arithmetic instruction slots (%u). Max. allowed by the target (%s) is %u.", arith, m->name, m->arith);
@@ -92,7 +92,7 @@ static bool verify(bc_gen *g, const bc_model *m, const uint32_t *w, uint32_t n, 
     return true;
 }
 
-const uint32_t *bc_write(ir_ctx *c, const ir_shader *sh, const char *profile, uint32_t *count) {
+const uint32_t *hfx_bc_write(ir_ctx *c, const ir_shader *sh, const char *profile, uint32_t *count) {
     bc_gen g;
     memset(&g, 0, sizeof g);
     g.c = c;
@@ -104,26 +104,26 @@ const uint32_t *bc_write(ir_ctx *c, const ir_shader *sh, const char *profile, ui
     const bc_model *m = find_model(&g, profile ? profile : "vs_3_0", at);
     if (!m) return NULL;
     if ((m->stage == D3D9_VS) != (sh->stage == IR_VERTEX)) {
-        bc_fail(&g, at, 3506, "'%s' is not a %s profile", m->name, sh->stage == IR_VERTEX ? "vertex" : "pixel");
+        hfx_bc_fail(&g, at, 3506, "'%s' is not a %s profile", m->name, sh->stage == IR_VERTEX ? "vertex" : "pixel");
         return NULL;
     }
     g.stage = m->stage;
     g.model = m->model;
     g.profile = m->name;
     g.max_consts = m->consts;
-    bc_bind_globals(&g);
+    hfx_bc_bind_globals(&g);
     if (!g.failed) gen_entry(&g);
     if (g.failed) return NULL;
-    bc_dead_code(&g);
-    bc_sink(&g);
-    bc_dead_code(&g);
-    bc_prune_constants(&g);
-    uint32_t temps = bc_renumber(&g);
-    if (temps > bc_temp_limit(&g)) {
+    hfx_bc_dead_code(&g);
+    hfx_bc_sink(&g);
+    hfx_bc_dead_code(&g);
+    hfx_bc_prune_constants(&g);
+    uint32_t temps = hfx_bc_renumber(&g);
+    if (temps > hfx_bc_temp_limit(&g)) {
         hfx_error(c->diags, at, X_BC_TEMPS, "this shader needs %u temporary registers; %s has %u", temps, m->name,
-                  bc_temp_limit(&g));
+                  hfx_bc_temp_limit(&g));
         return NULL;
     }
-    const uint32_t *w = bc_encode(&g, count);
+    const uint32_t *w = hfx_bc_encode(&g, count);
     return verify(&g, m, w, *count, at) ? w : NULL;
 }

@@ -16,9 +16,9 @@ static uint32_t hash_name(const char *s) {
     return h % CHECK_BUCKETS;
 }
 
-void ck_scope_push(check_ctx *c) { c->depth++; }
+void hfx_ck_scope_push(check_ctx *c) { c->depth++; }
 
-void ck_scope_pop(check_ctx *c) {
+void hfx_ck_scope_pop(check_ctx *c) {
     while (c->entry_count && c->entries[c->entry_count - 1].depth == c->depth) {
         check_entry *e = &c->entries[--c->entry_count];
         c->buckets[hash_name(e->name)] = e->next;
@@ -26,13 +26,13 @@ void ck_scope_pop(check_ctx *c) {
     c->depth--;
 }
 
-hfx_decl *ck_lookup(check_ctx *c, const char *name) {
+hfx_decl *hfx_ck_lookup(check_ctx *c, const char *name) {
     for (int32_t i = c->buckets[hash_name(name)]; i >= 0; i = c->entries[i].next)
         if (strcmp(c->entries[i].name, name) == 0) return c->entries[i].decl;
     return NULL;
 }
 
-uint32_t ck_lookup_funcs(check_ctx *c, const char *name, hfx_decl **out, uint32_t max) {
+uint32_t hfx_ck_lookup_funcs(check_ctx *c, const char *name, hfx_decl **out, uint32_t max) {
     uint32_t n = 0;
     for (int32_t i = c->buckets[hash_name(name)]; i >= 0; i = c->entries[i].next) {
         check_entry *e = &c->entries[i];
@@ -83,7 +83,7 @@ static bool merge_function(check_ctx *c, hfx_decl *d) {
     return false;
 }
 
-void ck_scope_add(check_ctx *c, hfx_decl *d) {
+void hfx_ck_scope_add(check_ctx *c, hfx_decl *d) {
     if (!d->name) return;
     if (d->kind == DECL_FUNC && merge_function(c, d)) return;
     for (int32_t i = c->buckets[hash_name(d->name)]; i >= 0; i = c->entries[i].next) {
@@ -96,11 +96,11 @@ void ck_scope_add(check_ctx *c, hfx_decl *d) {
     push_entry(c, d);
 }
 
-void ck_scope_leak(check_ctx *c, hfx_decl *d) {
+void hfx_ck_scope_leak(check_ctx *c, hfx_decl *d) {
     if (d->name) push_entry(c, d);
 }
 
-bool ck_declared_here(check_ctx *c, const char *name) {
+bool hfx_ck_declared_here(check_ctx *c, const char *name) {
     for (int32_t i = c->buckets[hash_name(name)]; i >= 0; i = c->entries[i].next)
         if (c->entries[i].depth == c->depth && strcmp(c->entries[i].name, name) == 0) return true;
     return false;
@@ -119,22 +119,22 @@ static bool fold_op(hfx_op op, int64_t a, const int64_t *b, int64_t *out) {
     return true;
 }
 
-bool ck_fold_int(check_ctx *c, hfx_expr *e, int64_t *out) {
+bool hfx_ck_fold_int(check_ctx *c, hfx_expr *e, int64_t *out) {
     int64_t a, b;
     if (!e) return false;
     switch (e->kind) {
     case EX_INT: case EX_BOOL: *out = hfx_ev_int(hfx_ev_normalise(HFX_EV_INT, (double)e->ival)); return true;
     case EX_FLOAT: *out = hfx_ev_int(e->fval); return true;
     case EX_IDENT: {
-        hfx_decl *d = e->sym ? e->sym : ck_lookup(c, e->name);
+        hfx_decl *d = e->sym ? e->sym : hfx_ck_lookup(c, e->name);
         if (!d || d->kind != DECL_VAR || !(d->mods & MOD_CONST) || !d->init) return false;
-        if (d->init->kind == EX_INIT_LIST) return d->init->arg_count == 1 && ck_fold_int(c, d->init->args[0], out);
-        return ck_fold_int(c, d->init, out);
+        if (d->init->kind == EX_INIT_LIST) return d->init->arg_count == 1 && hfx_ck_fold_int(c, d->init->args[0], out);
+        return hfx_ck_fold_int(c, d->init, out);
     }
     case EX_CAST: case EX_CONSTRUCT:
-        return e->arg_count == 1 && ck_fold_int(c, e->args[0], out);
-    case EX_UNARY: return ck_fold_int(c, e->args[0], &a) && fold_op(e->op, a, NULL, out);
-    case EX_BINARY: return ck_fold_int(c, e->args[0], &a) && ck_fold_int(c, e->args[1], &b) && fold_op(e->op, a, &b, out);
+        return e->arg_count == 1 && hfx_ck_fold_int(c, e->args[0], out);
+    case EX_UNARY: return hfx_ck_fold_int(c, e->args[0], &a) && fold_op(e->op, a, NULL, out);
+    case EX_BINARY: return hfx_ck_fold_int(c, e->args[0], &a) && hfx_ck_fold_int(c, e->args[1], &b) && fold_op(e->op, a, &b, out);
     default: return false;
     }
 }
@@ -142,7 +142,7 @@ bool ck_fold_int(check_ctx *c, hfx_expr *e, int64_t *out) {
 /* The first name in e that nothing declares (fxc reports it, X3004, rather than X3058). */
 static const hfx_expr *undeclared_in(check_ctx *c, const hfx_expr *e, int depth) {
     if (!e || depth > 64) return NULL;
-    if (e->kind == EX_IDENT) return e->sym || !e->name || ck_lookup(c, e->name) ? NULL : e;
+    if (e->kind == EX_IDENT) return e->sym || !e->name || hfx_ck_lookup(c, e->name) ? NULL : e;
     for (uint32_t i = 0; i < e->arg_count; i++) {
         const hfx_expr *u = undeclared_in(c, e->args[i], depth + 1);
         if (u) return u;
@@ -150,22 +150,22 @@ static const hfx_expr *undeclared_in(check_ctx *c, const hfx_expr *e, int depth)
     return NULL;
 }
 
-const hfx_type *ck_resolve_type(check_ctx *c, const hfx_type *ty, hfx_loc loc) {
+const hfx_type *hfx_ck_resolve_type(check_ctx *c, const hfx_type *ty, hfx_loc loc) {
     if (!ty || ty->kind != TY_ARRAY) return ty;
-    const hfx_type *elem = ck_resolve_type(c, ty->elem, loc);
+    const hfx_type *elem = hfx_ck_resolve_type(c, ty->elem, loc);
     if (!ty->array_len_expr) return elem == ty->elem ? ty : hfx_type_array(c->types, elem, ty->array_len);
     int64_t n = 0;
     hfx_expr *len = ty->array_len_expr;
-    if (!ck_fold_int(c, len, &n) || n <= 0 || n > 65536) {
+    if (!hfx_ck_fold_int(c, len, &n) || n <= 0 || n > 65536) {
         const hfx_expr *u = undeclared_in(c, len, 0);
         if (u) hfx_error(c->diags, u->loc, X_UNDECLARED, "undeclared identifier '%s'", u->name);
-        else hfx_error(c->diags, ck_start(len), X_ARRAY_DIM, "array dimensions must be literal scalar expressions");
+        else hfx_error(c->diags, hfx_ck_start(len), X_ARRAY_DIM, "array dimensions must be literal scalar expressions");
         n = 1;
     }
     return hfx_type_array(c->types, elem, (uint32_t)n);
 }
 
-void ck_annotations(check_ctx *c, hfx_annotation_ast *a, uint32_t n) {
+void hfx_ck_annotations(check_ctx *c, hfx_annotation_ast *a, uint32_t n) {
     for (uint32_t i = 0; i < n; i++) {
         if (!a[i].value || !a[i].type) continue;
         hfx_decl tmp;
@@ -175,7 +175,7 @@ void ck_annotations(check_ctx *c, hfx_annotation_ast *a, uint32_t n) {
         tmp.type = a[i].type;
         tmp.init = a[i].value;
         tmp.loc = a[i].loc;
-        ck_init(c, &tmp);
+        hfx_ck_init(c, &tmp);
         a[i].value = tmp.init;
     }
 }
@@ -184,7 +184,7 @@ void ck_annotations(check_ctx *c, hfx_annotation_ast *a, uint32_t n) {
 
 static hfx_func *defined(hfx_func *f) { return f && f->definition ? f->definition : f; }
 
-void ck_record_call(check_ctx *c, hfx_func *to, hfx_loc loc, bool compile) {
+void hfx_ck_record_call(check_ctx *c, hfx_func *to, hfx_loc loc, bool compile) {
     if (!HFX_ARENA_GROW(c->arena, c->edges, c->edge_count, c->edge_cap, 64)) { c->oom = true; return; }
     c->edges[c->edge_count++] = (check_edge){c->func ? c->func->func : NULL, to, loc, compile};
 }
@@ -296,7 +296,7 @@ static void check_struct(check_ctx *c, hfx_decl *d) {
     hfx_struct *st = d->type && d->type->kind == TY_STRUCT ? d->type->st : NULL;
     if (!st) return;
     for (uint32_t i = 0; i < st->field_count; i++) {
-        st->fields[i].type = ck_resolve_type(c, st->fields[i].type, st->fields[i].loc);
+        st->fields[i].type = hfx_ck_resolve_type(c, st->fields[i].type, st->fields[i].loc);
         for (uint32_t j = 0; j < i; j++)
             if (st->fields[i].name && st->fields[j].name && strcmp(st->fields[i].name, st->fields[j].name) == 0)
                 hfx_error(c->diags, st->fields[i].loc, X_REDEFINITION, "redefinition of '%s'", st->fields[i].name);
@@ -306,30 +306,30 @@ static void check_struct(check_ctx *c, hfx_decl *d) {
 static void check_global_var(check_ctx *c, hfx_decl *d) {
     d->is_global = true;
     d->index = c->global_count++;
-    d->type = ck_resolve_type(c, d->type, d->loc);
-    ck_annotations(c, d->annotations, d->annotation_count);
-    if (d->init) ck_init(c, d);
-    ck_scope_add(c, d);
+    d->type = hfx_ck_resolve_type(c, d->type, d->loc);
+    hfx_ck_annotations(c, d->annotations, d->annotation_count);
+    if (d->init) hfx_ck_init(c, d);
+    hfx_ck_scope_add(c, d);
 }
 
 static void check_pass(check_ctx *c, hfx_pass_ast *p) {
-    ck_annotations(c, p->annotations, p->annotation_count);
-    for (uint32_t i = 0; i < p->state_count; i++) ck_state_value(c, &p->states[i]);
+    hfx_ck_annotations(c, p->annotations, p->annotation_count);
+    for (uint32_t i = 0; i < p->state_count; i++) hfx_ck_state_value(c, &p->states[i]);
 }
 
 static void check_technique(check_ctx *c, hfx_decl *d) {
     hfx_technique_ast *t = d->technique;
     if (!t) return;
-    ck_annotations(c, t->annotations, t->annotation_count);
+    hfx_ck_annotations(c, t->annotations, t->annotation_count);
     for (uint32_t i = 0; i < t->pass_count; i++) check_pass(c, &t->passes[i]);
 }
 
 static void check_decl(check_ctx *c, hfx_decl *d) {
     switch (d->kind) {
     case DECL_VAR: check_global_var(c, d); break;
-    case DECL_FUNC: ck_function(c, d); break;
+    case DECL_FUNC: hfx_ck_function(c, d); break;
     case DECL_STRUCT: check_struct(c, d); break;
-    case DECL_TYPEDEF: d->type = ck_resolve_type(c, d->type, d->loc); break;
+    case DECL_TYPEDEF: d->type = hfx_ck_resolve_type(c, d->type, d->loc); break;
     case DECL_TECHNIQUE: check_technique(c, d); break;
     case DECL_PARAM: break;
     }

@@ -34,7 +34,7 @@ static bool contradict(const hfx_attribute *x, const hfx_attribute *y) {
            (named(x, "branch") && named(y, "flatten")) || (named(x, "flatten") && named(y, "branch"));
 }
 
-void ck_attributes(check_ctx *c, const hfx_stmt *s) {
+void hfx_ck_attributes(check_ctx *c, const hfx_stmt *s) {
     for (uint32_t i = 0; i < s->attr_count; i++) {
         const hfx_attribute *a = &s->attrs[i];
         bool ok;

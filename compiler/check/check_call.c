@@ -16,7 +16,7 @@ static const hfx_type *set_type(hfx_expr *e, const hfx_type *t) {
 static bool check_args(check_ctx *c, hfx_expr *e) {
     bool ok = true;
     for (uint32_t i = 0; i < e->arg_count; i++)
-        if (ck_is_err(c, ck_expr(c, e->args[i]))) ok = false;
+        if (hfx_ck_is_err(c, hfx_ck_expr(c, e->args[i]))) ok = false;
     return ok;
 }
 
@@ -75,8 +75,8 @@ static int pick_overload(hfx_decl **cands, uint32_t n, const hfx_expr *e, hfx_de
 
 static void convert_args(check_ctx *c, hfx_expr *e, const hfx_type *const *params, const bool *outs, bool warn) {
     for (uint32_t i = 0; i < e->arg_count; i++) {
-        if (outs[i]) ck_lvalue(c, e->args[i]);
-        else e->args[i] = ck_convert_arg(c, e->args[i], params[i], warn, e);
+        if (outs[i]) hfx_ck_lvalue(c, e->args[i]);
+        else e->args[i] = hfx_ck_convert_arg(c, e->args[i], params[i], warn, e);
     }
 }
 
@@ -89,7 +89,7 @@ static void append_defaults(check_ctx *c, hfx_expr *e, const hfx_func *f) {
     for (uint32_t i = 0; i < f->param_count; i++) {
         if (i < e->arg_count) { args[i] = e->args[i]; continue; }
         hfx_expr *init = f->params[i]->init;
-        args[i] = ck_is_err(c, ck_expr(c, init)) ? init : ck_convert_arg(c, init, f->params[i]->type, true, e);
+        args[i] = hfx_ck_is_err(c, hfx_ck_expr(c, init)) ? init : hfx_ck_convert_arg(c, init, f->params[i]->type, true, e);
     }
     e->args = args;
     e->arg_count = f->param_count;
@@ -104,7 +104,7 @@ static const hfx_type *call_user(check_ctx *c, hfx_expr *e, hfx_decl *fd) {
         outs[i] = is_out(f->params[i]);
     }
     e->fn = f;
-    ck_record_call(c, f, e->loc, false);
+    hfx_ck_record_call(c, f, e->loc, false);
     convert_args(c, e, params, outs, true);
     append_defaults(c, e, f);
     return set_type(e, f->ret);
@@ -150,7 +150,7 @@ static const hfx_type *state_call(check_ctx *c, hfx_expr *e) {
         e->name = entry->name;
         e->args = entry->args;
         e->arg_count = entry->arg_count;
-        return ck_compile(c, e);
+        return hfx_ck_compile(c, e);
     }
     size_t n = strlen(e->name);
     if (strncmp(e->name, "Set", 3) == 0 && n > 8 && strcmp(e->name + n - 5, "State") == 0)
@@ -159,13 +159,13 @@ static const hfx_type *state_call(check_ctx *c, hfx_expr *e) {
     return set_type(e, e->arg_count ? e->args[0]->type : hfx_type_void(c->types));
 }
 
-const hfx_type *ck_call(check_ctx *c, hfx_expr *e) {
+const hfx_type *hfx_ck_call(check_ctx *c, hfx_expr *e) {
     if (!e->name) return set_type(e, c->err);
-    if (c->in_state && !ck_lookup_funcs(c, e->name, (hfx_decl *[1]){0}, 1) && hfx_intrinsic_find(e->name) < 0)
+    if (c->in_state && !hfx_ck_lookup_funcs(c, e->name, (hfx_decl *[1]){0}, 1) && hfx_intrinsic_find(e->name) < 0)
         return state_call(c, e);
     bool args_ok = check_args(c, e);
     hfx_decl *cands[MAX_OVERLOADS];
-    uint32_t n = ck_lookup_funcs(c, e->name, cands, MAX_OVERLOADS);
+    uint32_t n = hfx_ck_lookup_funcs(c, e->name, cands, MAX_OVERLOADS);
     int id = hfx_intrinsic_find(e->name);
     if (!n && id < 0) {
         hfx_error(c->diags, e->loc, X_UNDECLARED, "undeclared identifier '%s'", e->name);
@@ -192,8 +192,8 @@ const hfx_type *ck_call(check_ctx *c, hfx_expr *e) {
 
 /* ---- constructors ---- */
 
-const hfx_type *ck_construct(check_ctx *c, hfx_expr *e) {
-    const hfx_type *t = ck_resolve_type(c, e->cast_type, e->loc);
+const hfx_type *hfx_ck_construct(check_ctx *c, hfx_expr *e) {
+    const hfx_type *t = hfx_ck_resolve_type(c, e->cast_type, e->loc);
     e->cast_type = t;
     if (!check_args(c, e)) return set_type(e, c->err);
     if (!hfx_type_is_numeric(t)) {
@@ -204,8 +204,8 @@ const hfx_type *ck_construct(check_ctx *c, hfx_expr *e) {
     for (uint32_t i = 0; i < e->arg_count; i++) {
         const hfx_type *at = e->args[i]->type;
         if (!hfx_type_is_numeric(at)) {
-            hfx_error(c->diags, ck_start(e->args[i]), X_TYPE_MISMATCH, "cannot implicitly convert from '%s' to '%s'",
-                      ck_type_name(c, at), ck_type_name(c, t));
+            hfx_error(c->diags, hfx_ck_start(e->args[i]), X_TYPE_MISMATCH, "cannot implicitly convert from '%s' to '%s'",
+                      hfx_ck_type_name(c, at), hfx_ck_type_name(c, t));
             return set_type(e, c->err);
         }
         total += hfx_type_components(at);
@@ -215,7 +215,7 @@ const hfx_type *ck_construct(check_ctx *c, hfx_expr *e) {
         return set_type(e, c->err);
     }
     for (uint32_t i = 0; i < e->arg_count; i++)
-        e->args[i] = ck_implicit_cast(c, e->args[i], hfx_type_with_base(c->types, e->args[i]->type, t->base));
+        e->args[i] = hfx_ck_implicit_cast(c, e->args[i], hfx_type_with_base(c->types, e->args[i]->type, t->base));
     return set_type(e, t);
 }
 
@@ -249,7 +249,7 @@ static bool known_profile(const char *p) {
     return false;
 }
 
-const hfx_type *ck_compile(check_ctx *c, hfx_expr *e) {
+const hfx_type *hfx_ck_compile(check_ctx *c, hfx_expr *e) {
     bool saved = c->in_state;
     c->in_state = false; /* the arguments are expressions, not state values */
     bool args_ok = check_args(c, e);
@@ -262,7 +262,7 @@ const hfx_type *ck_compile(check_ctx *c, hfx_expr *e) {
         return set_type(e, c->err);
     }
     hfx_decl *cands[MAX_OVERLOADS];
-    uint32_t n = ck_lookup_funcs(c, e->name ? e->name : "", cands, MAX_OVERLOADS);
+    uint32_t n = hfx_ck_lookup_funcs(c, e->name ? e->name : "", cands, MAX_OVERLOADS);
     if (!n) {
         hfx_error(c->diags, e->loc, X_UNDECLARED, "undeclared identifier '%s'", e->name ? e->name : "");
         return set_type(e, c->err);
@@ -277,11 +277,11 @@ const hfx_type *ck_compile(check_ctx *c, hfx_expr *e) {
     }
     hfx_func *f = best->func;
     e->fn = f->definition ? f->definition : f;
-    ck_record_call(c, f, e->loc, true);
+    hfx_ck_record_call(c, f, e->loc, true);
     uint32_t k = 0;
     for (uint32_t i = 0; i < f->param_count; i++)
         if (f->params[i]->mods & MOD_UNIFORM) {
-            e->args[k] = ck_convert_arg(c, e->args[k], f->params[i]->type, true, e);
+            e->args[k] = hfx_ck_convert_arg(c, e->args[k], f->params[i]->type, true, e);
             k++;
         }
     return set_type(e, t);
@@ -392,7 +392,7 @@ static bool flatten_list(check_ctx *c, expr_list *out, hfx_expr *list) {
             ok &= flatten_list(c, out, item);
             continue;
         }
-        if (ck_is_err(c, ck_expr(c, item))) { ok = false; continue; }
+        if (hfx_ck_is_err(c, hfx_ck_expr(c, item))) { ok = false; continue; }
         split_value(c, out, item);
     }
     return ok;
@@ -419,19 +419,19 @@ static void init_list(check_ctx *c, hfx_decl *d) {
     target_leaves(c, &leaves, t);
     if (leaves.count != items.count) {
         hfx_error(c->diags, list->loc, X_TYPE_MISMATCH, "'%s': cannot implicitly convert from '%s' to '%s'", d->name,
-                  count_name(c, items.count), ck_type_name(c, t));
+                  count_name(c, items.count), hfx_ck_type_name(c, t));
         list->type = c->err;
         return;
     }
-    for (uint32_t i = 0; i < items.count; i++) items.items[i] = ck_convert(c, items.items[i], leaves.types[i], false);
+    for (uint32_t i = 0; i < items.count; i++) items.items[i] = hfx_ck_convert(c, items.items[i], leaves.types[i], false);
     list->args = items.items;
     list->arg_count = items.count;
     list->type = t;
 }
 
-void ck_init(check_ctx *c, hfx_decl *d) {
+void hfx_ck_init(check_ctx *c, hfx_decl *d) {
     hfx_expr *init = d->init;
-    if (!init || ck_is_err(c, d->type)) return;
+    if (!init || hfx_ck_is_err(c, d->type)) return;
     if (init->kind == EX_INIT_LIST) {
         init_list(c, d);
         return;
@@ -441,23 +441,23 @@ void ck_init(check_ctx *c, hfx_decl *d) {
         init->type = c->err;
         return;
     }
-    const hfx_type *t = ck_expr(c, init);
-    if (ck_is_err(c, t)) return;
+    const hfx_type *t = hfx_ck_expr(c, init);
+    if (hfx_ck_is_err(c, t)) return;
     if (init->kind == EX_SAMPLER_STATE) {
         if (d->type->kind != TY_SAMPLER)
-            hfx_error(c->diags, ck_start(init), X_TYPE_MISMATCH, "cannot implicitly convert from 'sampler' to '%s'",
-                      ck_type_name(c, d->type));
+            hfx_error(c->diags, hfx_ck_start(init), X_TYPE_MISMATCH, "cannot implicitly convert from 'sampler' to '%s'",
+                      hfx_ck_type_name(c, d->type));
         return;
     }
-    d->init = ck_convert(c, init, d->type, true);
+    d->init = hfx_ck_convert(c, init, d->type, true);
 }
 
 /* ---- state values ---- */
 
-void ck_state_value(check_ctx *c, hfx_state_assign *s) {
+void hfx_ck_state_value(check_ctx *c, hfx_state_assign *s) {
     bool saved = c->in_state;
     c->in_state = true;
-    if (s->index) ck_expr(c, s->index);
-    if (s->value) ck_expr(c, s->value);
+    if (s->index) hfx_ck_expr(c, s->index);
+    if (s->value) hfx_ck_expr(c, s->value);
     c->in_state = saved;
 }

@@ -63,51 +63,51 @@ typedef struct check_ctx {
 } check_ctx;
 
 /* check_attrs.c: a statement's attributes (X3524, X3084; X3554 warnings) */
-void ck_attributes(check_ctx *c, const hfx_stmt *s);
+void hfx_ck_attributes(check_ctx *c, const hfx_stmt *s);
 
 /* check.c: the call graph */
-void ck_record_call(check_ctx *c, hfx_func *to, hfx_loc loc, bool compile);
+void hfx_ck_record_call(check_ctx *c, hfx_func *to, hfx_loc loc, bool compile);
 
 /* check.c: scopes */
-void ck_scope_push(check_ctx *c);
-void ck_scope_pop(check_ctx *c);
-void ck_scope_add(check_ctx *c, hfx_decl *d);                 /* reports X3003 in the same scope */
-hfx_decl *ck_lookup(check_ctx *c, const char *name);          /* innermost; NULL when absent */
-bool ck_declared_here(check_ctx *c, const char *name);        /* in the innermost scope */
+void hfx_ck_scope_push(check_ctx *c);
+void hfx_ck_scope_pop(check_ctx *c);
+void hfx_ck_scope_add(check_ctx *c, hfx_decl *d);                 /* reports X3003 in the same scope */
+hfx_decl *hfx_ck_lookup(check_ctx *c, const char *name);          /* innermost; NULL when absent */
+bool hfx_ck_declared_here(check_ctx *c, const char *name);        /* in the innermost scope */
 /* Makes d visible in the current scope without the redefinition check: a for-init variable
  * stays visible after its loop, as in fxc (codegen hoists it). */
-void ck_scope_leak(check_ctx *c, hfx_decl *d);
+void hfx_ck_scope_leak(check_ctx *c, hfx_decl *d);
 /* Every function overload named `name`, in declaration order; returns the count (up to max). */
-uint32_t ck_lookup_funcs(check_ctx *c, const char *name, hfx_decl **out, uint32_t max);
+uint32_t hfx_ck_lookup_funcs(check_ctx *c, const char *name, hfx_decl **out, uint32_t max);
 /* A declaration's type with array sizes folded (`float a[N]`); reports X3058. */
-const hfx_type *ck_resolve_type(check_ctx *c, const hfx_type *ty, hfx_loc loc);
-bool ck_fold_int(check_ctx *c, hfx_expr *e, int64_t *out);    /* constant integer expressions */
-void ck_annotations(check_ctx *c, hfx_annotation_ast *a, uint32_t n);
+const hfx_type *hfx_ck_resolve_type(check_ctx *c, const hfx_type *ty, hfx_loc loc);
+bool hfx_ck_fold_int(check_ctx *c, hfx_expr *e, int64_t *out);    /* constant integer expressions */
+void hfx_ck_annotations(check_ctx *c, hfx_annotation_ast *a, uint32_t n);
 
 /* check_expr.c */
-bool ck_is_err(const check_ctx *c, const hfx_type *t);
-const char *ck_type_name(check_ctx *c, const hfx_type *t);
-hfx_loc ck_start(const hfx_expr *e);                          /* leftmost token of an expression */
-const hfx_type *ck_expr(check_ctx *c, hfx_expr *e);           /* sets and returns e->type */
+bool hfx_ck_is_err(const check_ctx *c, const hfx_type *t);
+const char *hfx_ck_type_name(check_ctx *c, const hfx_type *t);
+hfx_loc hfx_ck_start(const hfx_expr *e);                          /* leftmost token of an expression */
+const hfx_type *hfx_ck_expr(check_ctx *c, hfx_expr *e);           /* sets and returns e->type */
 /* e converted to `to` (an implicit EX_CAST, or e itself). Reports X3017 when impossible (then
  * returns e typed as the error type), X3206 at the expression's start when it truncates and
  * `warn` is set. */
-hfx_expr *ck_convert(check_ctx *c, hfx_expr *e, const hfx_type *to, bool warn);
+hfx_expr *hfx_ck_convert(check_ctx *c, hfx_expr *e, const hfx_type *to, bool warn);
 /* The same for an argument of `call` (EX_CALL / EX_COMPILE): X3206 names the function and
  * points at the call, as fxc does. */
-hfx_expr *ck_convert_arg(check_ctx *c, hfx_expr *e, const hfx_type *to, bool warn, const hfx_expr *call);
-hfx_expr *ck_implicit_cast(check_ctx *c, hfx_expr *e, const hfx_type *to);
-void ck_cond(check_ctx *c, hfx_expr **pe, const char *what);  /* a bool scalar condition */
-bool ck_lvalue(check_ctx *c, hfx_expr *e);                    /* reports X3025; marks globals assigned */
+hfx_expr *hfx_ck_convert_arg(check_ctx *c, hfx_expr *e, const hfx_type *to, bool warn, const hfx_expr *call);
+hfx_expr *hfx_ck_implicit_cast(check_ctx *c, hfx_expr *e, const hfx_type *to);
+void hfx_ck_cond(check_ctx *c, hfx_expr **pe, const char *what);  /* a bool scalar condition */
+bool hfx_ck_lvalue(check_ctx *c, hfx_expr *e);                    /* reports X3025; marks globals assigned */
 
 /* check_call.c */
-const hfx_type *ck_call(check_ctx *c, hfx_expr *e);
-const hfx_type *ck_construct(check_ctx *c, hfx_expr *e);
-const hfx_type *ck_compile(check_ctx *c, hfx_expr *e);
-void ck_init(check_ctx *c, hfx_decl *d);                      /* a variable's initializer */
-void ck_state_value(check_ctx *c, hfx_state_assign *s);
+const hfx_type *hfx_ck_call(check_ctx *c, hfx_expr *e);
+const hfx_type *hfx_ck_construct(check_ctx *c, hfx_expr *e);
+const hfx_type *hfx_ck_compile(check_ctx *c, hfx_expr *e);
+void hfx_ck_init(check_ctx *c, hfx_decl *d);                      /* a variable's initializer */
+void hfx_ck_state_value(check_ctx *c, hfx_state_assign *s);
 
 /* check_stmt.c */
-void ck_function(check_ctx *c, hfx_decl *d);
+void hfx_ck_function(check_ctx *c, hfx_decl *d);
 
 #endif

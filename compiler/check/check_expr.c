@@ -5,11 +5,11 @@
 
 #include "check/check_ctx.h"
 
-bool ck_is_err(const check_ctx *c, const hfx_type *t) { return !t || t == c->err; }
+bool hfx_ck_is_err(const check_ctx *c, const hfx_type *t) { return !t || t == c->err; }
 
-const char *ck_type_name(check_ctx *c, const hfx_type *t) { return hfx_type_name(c->arena, t); }
+const char *hfx_ck_type_name(check_ctx *c, const hfx_type *t) { return hfx_type_name(c->arena, t); }
 
-hfx_loc ck_start(const hfx_expr *e) {
+hfx_loc hfx_ck_start(const hfx_expr *e) {
     while (e) {
         switch (e->kind) {
         case EX_BINARY: case EX_ASSIGN: case EX_TERNARY: case EX_COMMA: case EX_INDEX: case EX_MEMBER:
@@ -36,8 +36,8 @@ static const hfx_type *set_type(hfx_expr *e, const hfx_type *t) {
 
 static const hfx_type *fail(check_ctx *c, hfx_expr *e) { return set_type(e, c->err); }
 
-hfx_expr *ck_implicit_cast(check_ctx *c, hfx_expr *e, const hfx_type *to) {
-    if (!e || hfx_type_equal(e->type, to) || ck_is_err(c, e->type)) return e;
+hfx_expr *hfx_ck_implicit_cast(check_ctx *c, hfx_expr *e, const hfx_type *to) {
+    if (!e || hfx_type_equal(e->type, to) || hfx_ck_is_err(c, e->type)) return e;
     /* objects pass as they are: a generic `sampler` feeds tex2D's sampler2D */
     if (e->type->kind == to->kind && (to->kind == TY_SAMPLER || to->kind == TY_TEXTURE)) return e;
     hfx_expr *cast = HFX_NEW(c->arena, hfx_expr);
@@ -55,12 +55,12 @@ hfx_expr *ck_implicit_cast(check_ctx *c, hfx_expr *e, const hfx_type *to) {
     return cast;
 }
 
-hfx_expr *ck_convert_arg(check_ctx *c, hfx_expr *e, const hfx_type *to, bool warn, const hfx_expr *call) {
-    if (!e || ck_is_err(c, e->type) || ck_is_err(c, to)) return e;
+hfx_expr *hfx_ck_convert_arg(check_ctx *c, hfx_expr *e, const hfx_type *to, bool warn, const hfx_expr *call) {
+    if (!e || hfx_ck_is_err(c, e->type) || hfx_ck_is_err(c, to)) return e;
     hfx_conv conv = hfx_conv_classify(e->type, to, false);
     if (!conv.ok) {
-        hfx_error(c->diags, ck_start(e), X_TYPE_MISMATCH, "cannot implicitly convert from '%s' to '%s'",
-                  ck_type_name(c, e->type), ck_type_name(c, to));
+        hfx_error(c->diags, hfx_ck_start(e), X_TYPE_MISMATCH, "cannot implicitly convert from '%s' to '%s'",
+                  hfx_ck_type_name(c, e->type), hfx_ck_type_name(c, to));
         e->type = c->err;
         return e;
     }
@@ -70,24 +70,24 @@ hfx_expr *ck_convert_arg(check_ctx *c, hfx_expr *e, const hfx_type *to, bool war
             hfx_warning(c->diags, call->loc, X_IMPLICIT_TRUNCATION, "'%s': implicit truncation of vector type",
                         call->name ? call->name : "");
         else
-            hfx_warning(c->diags, ck_start(e), X_IMPLICIT_TRUNCATION, "implicit truncation of vector type");
+            hfx_warning(c->diags, hfx_ck_start(e), X_IMPLICIT_TRUNCATION, "implicit truncation of vector type");
     }
-    return ck_implicit_cast(c, e, to);
+    return hfx_ck_implicit_cast(c, e, to);
 }
 
-hfx_expr *ck_convert(check_ctx *c, hfx_expr *e, const hfx_type *to, bool warn) {
-    return ck_convert_arg(c, e, to, warn, NULL);
+hfx_expr *hfx_ck_convert(check_ctx *c, hfx_expr *e, const hfx_type *to, bool warn) {
+    return hfx_ck_convert_arg(c, e, to, warn, NULL);
 }
 
-void ck_cond(check_ctx *c, hfx_expr **pe, const char *what) {
-    const hfx_type *t = ck_expr(c, *pe);
-    if (ck_is_err(c, t)) return;
+void hfx_ck_cond(check_ctx *c, hfx_expr **pe, const char *what) {
+    const hfx_type *t = hfx_ck_expr(c, *pe);
+    if (hfx_ck_is_err(c, t)) return;
     if (!hfx_type_is_scalarlike(t)) {
-        hfx_error(c->diags, ck_start(*pe), X_NO_IF_SCALAR, "%s statement conditional expressions must evaluate to a scalar", what);
+        hfx_error(c->diags, hfx_ck_start(*pe), X_NO_IF_SCALAR, "%s statement conditional expressions must evaluate to a scalar", what);
         (*pe)->type = c->err;
         return;
     }
-    *pe = ck_convert(c, *pe, hfx_type_scalar(c->types, B_BOOL), false);
+    *pe = hfx_ck_convert(c, *pe, hfx_type_scalar(c->types, B_BOOL), false);
 }
 
 /* ---- l-values ---- */
@@ -99,7 +99,7 @@ static bool swizzle_repeats(const hfx_expr *e) {
     return false;
 }
 
-bool ck_lvalue(check_ctx *c, hfx_expr *e) {
+bool hfx_ck_lvalue(check_ctx *c, hfx_expr *e) {
     hfx_expr *root = e;
     bool ok = true;
     while (root) {
@@ -112,11 +112,11 @@ bool ck_lvalue(check_ctx *c, hfx_expr *e) {
             break;
         }
     }
-    if (ck_is_err(c, e->type)) return false;
+    if (hfx_ck_is_err(c, e->type)) return false;
     if (!root || root->kind != EX_IDENT || !root->sym) ok = false;
     else if (root->sym->mods & MOD_CONST) ok = false;
     if (!ok) {
-        hfx_error(c->diags, ck_start(e), X_NOT_LVALUE, "l-value specifies const object");
+        hfx_error(c->diags, hfx_ck_start(e), X_NOT_LVALUE, "l-value specifies const object");
         return false;
     }
     if (root->sym->is_global) root->sym->assigned = true;
@@ -126,7 +126,7 @@ bool ck_lvalue(check_ctx *c, hfx_expr *e) {
 /* ---- names ---- */
 
 static const hfx_type *check_ident(check_ctx *c, hfx_expr *e) {
-    hfx_decl *d = ck_lookup(c, e->name);
+    hfx_decl *d = hfx_ck_lookup(c, e->name);
     if (d && (d->kind == DECL_VAR || d->kind == DECL_PARAM)) {
         e->sym = d;
         return set_type(e, d->type);
@@ -137,7 +137,7 @@ static const hfx_type *check_ident(check_ctx *c, hfx_expr *e) {
 }
 
 static const hfx_type *check_state_ref(check_ctx *c, hfx_expr *e) {
-    hfx_decl *d = ck_lookup(c, e->name);
+    hfx_decl *d = hfx_ck_lookup(c, e->name);
     if (!d || (d->kind != DECL_VAR && d->kind != DECL_PARAM)) {
         hfx_error(c->diags, e->loc, X_UNDECLARED, "undeclared identifier '%s'", e->name);
         return fail(c, e);
@@ -159,7 +159,7 @@ static bool state_operand(const check_ctx *c, const hfx_type *t) {
 
 static bool require_numeric(check_ctx *c, hfx_expr *operand) {
     if (hfx_type_is_numeric(operand->type)) return true;
-    hfx_error(c->diags, ck_start(operand), X_SCALAR_EXPECTED, "scalar, vector, or matrix expected");
+    hfx_error(c->diags, hfx_ck_start(operand), X_SCALAR_EXPECTED, "scalar, vector, or matrix expected");
     return false;
 }
 
@@ -177,7 +177,7 @@ static const hfx_type *binary_operand_type(check_ctx *c, hfx_expr *e, hfx_op op,
     if (op == OP_AND || op == OP_OR) base = B_BOOL;
     else if (is_bitwise(op)) {
         if (hfx_base_is_float(base)) {
-            hfx_error(c->diags, ck_start(e), X_INT_REQUIRED, "int or unsigned int type required");
+            hfx_error(c->diags, hfx_ck_start(e), X_INT_REQUIRED, "int or unsigned int type required");
             return NULL;
         }
         if (base == B_BOOL) base = B_INT;
@@ -187,30 +187,30 @@ static const hfx_type *binary_operand_type(check_ctx *c, hfx_expr *e, hfx_op op,
     bool trunc = false;
     const hfx_type *t = hfx_common_shape(c->types, a->type, b->type, base, &trunc);
     if (!t) {
-        hfx_error(c->diags, ck_start(e), X_TYPE_MISMATCH_OP, "type mismatch");
+        hfx_error(c->diags, hfx_ck_start(e), X_TYPE_MISMATCH_OP, "type mismatch");
         return NULL;
     }
-    if (trunc) hfx_warning(c->diags, ck_start(e), X_IMPLICIT_TRUNCATION, "implicit truncation of vector type");
+    if (trunc) hfx_warning(c->diags, hfx_ck_start(e), X_IMPLICIT_TRUNCATION, "implicit truncation of vector type");
     if (signed_unsigned_mix(a, b) && op != OP_SHL && op != OP_SHR && op != OP_AND && op != OP_OR)
-        hfx_warning(c->diags, ck_start(e), X_SIGNED_UNSIGNED, "signed/unsigned mismatch, unsigned assumed");
+        hfx_warning(c->diags, hfx_ck_start(e), X_SIGNED_UNSIGNED, "signed/unsigned mismatch, unsigned assumed");
     return t;
 }
 
 static const hfx_type *check_binary(check_ctx *c, hfx_expr *e) {
-    const hfx_type *ta = ck_expr(c, e->args[0]), *tb = ck_expr(c, e->args[1]);
-    if (ck_is_err(c, ta) || ck_is_err(c, tb)) return fail(c, e);
+    const hfx_type *ta = hfx_ck_expr(c, e->args[0]), *tb = hfx_ck_expr(c, e->args[1]);
+    if (hfx_ck_is_err(c, ta) || hfx_ck_is_err(c, tb)) return fail(c, e);
     if (state_operand(c, ta) || state_operand(c, tb)) return set_type(e, hfx_type_void(c->types));
     const hfx_type *t = binary_operand_type(c, e, e->op, e->args[0], e->args[1]);
     if (!t) return fail(c, e);
-    e->args[0] = ck_implicit_cast(c, e->args[0], t);
-    e->args[1] = ck_implicit_cast(c, e->args[1], t);
+    e->args[0] = hfx_ck_implicit_cast(c, e->args[0], t);
+    e->args[1] = hfx_ck_implicit_cast(c, e->args[1], t);
     if (is_compare(e->op)) return set_type(e, hfx_type_with_base(c->types, t, B_BOOL));
     return set_type(e, t);
 }
 
 static const hfx_type *check_unary(check_ctx *c, hfx_expr *e) {
-    const hfx_type *t = ck_expr(c, e->args[0]);
-    if (ck_is_err(c, t)) return fail(c, e);
+    const hfx_type *t = hfx_ck_expr(c, e->args[0]);
+    if (hfx_ck_is_err(c, t)) return fail(c, e);
     if (state_operand(c, t)) return set_type(e, t);
     if (!require_numeric(c, e->args[0])) return fail(c, e);
     switch (e->op) {
@@ -219,7 +219,7 @@ static const hfx_type *check_unary(check_ctx *c, hfx_expr *e) {
         break;
     case OP_BITNOT:
         if (hfx_base_is_float(t->base)) {
-            hfx_error(c->diags, ck_start(e), X_INT_REQUIRED, "int or unsigned int type required");
+            hfx_error(c->diags, hfx_ck_start(e), X_INT_REQUIRED, "int or unsigned int type required");
             return fail(c, e);
         }
         if (t->base == B_BOOL) t = hfx_type_with_base(c->types, t, B_INT);
@@ -228,10 +228,10 @@ static const hfx_type *check_unary(check_ctx *c, hfx_expr *e) {
         if (t->base == B_BOOL) t = hfx_type_with_base(c->types, t, B_INT);
         break;
     default: /* ++ and -- */
-        if (!ck_lvalue(c, e->args[0])) return fail(c, e);
+        if (!hfx_ck_lvalue(c, e->args[0])) return fail(c, e);
         return set_type(e, t);
     }
-    e->args[0] = ck_implicit_cast(c, e->args[0], t);
+    e->args[0] = hfx_ck_implicit_cast(c, e->args[0], t);
     return set_type(e, t);
 }
 
@@ -241,38 +241,38 @@ static bool constructor_lvalue(check_ctx *c, hfx_expr *e) {
     bool ok = e->type && e->type->kind == TY_VECTOR;
     for (uint32_t i = 0; ok && i < e->arg_count; i++) {
         const hfx_type *t = e->args[i]->type;
-        ok = t && (t->kind == TY_VECTOR || t->kind == TY_SCALAR) && ck_lvalue(c, e->args[i]);
+        ok = t && (t->kind == TY_VECTOR || t->kind == TY_SCALAR) && hfx_ck_lvalue(c, e->args[i]);
     }
     if (!ok && e->type && e->type->kind != TY_VECTOR)
-        hfx_error(c->diags, ck_start(e), X_NOT_LVALUE, "l-value specifies const object");
+        hfx_error(c->diags, hfx_ck_start(e), X_NOT_LVALUE, "l-value specifies const object");
     return ok;
 }
 
 static const hfx_type *check_assign(check_ctx *c, hfx_expr *e) {
-    const hfx_type *lt = ck_expr(c, e->args[0]), *rt = ck_expr(c, e->args[1]);
-    if (ck_is_err(c, lt)) return fail(c, e);
+    const hfx_type *lt = hfx_ck_expr(c, e->args[0]), *rt = hfx_ck_expr(c, e->args[1]);
+    if (hfx_ck_is_err(c, lt)) return fail(c, e);
     bool lv = e->args[0]->kind == EX_CONSTRUCT && e->op == OP_NONE ? constructor_lvalue(c, e->args[0])
-                                                                    : ck_lvalue(c, e->args[0]);
-    if (ck_is_err(c, rt)) return fail(c, e);
+                                                                    : hfx_ck_lvalue(c, e->args[0]);
+    if (hfx_ck_is_err(c, rt)) return fail(c, e);
     if (e->op != OP_NONE) {
         if (!binary_operand_type(c, e, e->op, e->args[0], e->args[1])) return fail(c, e);
-        e->args[1] = ck_convert(c, e->args[1], lt, false);
+        e->args[1] = hfx_ck_convert(c, e->args[1], lt, false);
     } else {
-        e->args[1] = ck_convert(c, e->args[1], lt, true);
+        e->args[1] = hfx_ck_convert(c, e->args[1], lt, true);
     }
-    if (!lv || ck_is_err(c, e->args[1]->type)) return fail(c, e);
+    if (!lv || hfx_ck_is_err(c, e->args[1]->type)) return fail(c, e);
     return set_type(e, lt);
 }
 
 static const hfx_type *check_ternary(check_ctx *c, hfx_expr *e) {
-    const hfx_type *tc = ck_expr(c, e->args[0]);
-    const hfx_type *ta = ck_expr(c, e->args[1]), *tb = ck_expr(c, e->args[2]);
-    if (ck_is_err(c, tc) || ck_is_err(c, ta) || ck_is_err(c, tb)) return fail(c, e);
+    const hfx_type *tc = hfx_ck_expr(c, e->args[0]);
+    const hfx_type *ta = hfx_ck_expr(c, e->args[1]), *tb = hfx_ck_expr(c, e->args[2]);
+    if (hfx_ck_is_err(c, tc) || hfx_ck_is_err(c, ta) || hfx_ck_is_err(c, tb)) return fail(c, e);
     if (!require_numeric(c, e->args[0])) return fail(c, e);
     const hfx_type *t;
     if (!hfx_type_is_numeric(ta) || !hfx_type_is_numeric(tb)) {
         if (!hfx_type_equal(ta, tb)) {
-            hfx_error(c->diags, ck_start(e), X_TYPE_MISMATCH_OP, "type mismatch");
+            hfx_error(c->diags, hfx_ck_start(e), X_TYPE_MISMATCH_OP, "type mismatch");
             return fail(c, e);
         }
         t = ta;
@@ -281,16 +281,16 @@ static const hfx_type *check_ternary(check_ctx *c, hfx_expr *e) {
         t = hfx_common_shape(c->types, ta, tb, hfx_base_common(ta->base, tb->base), &trunc);
         if (t && !hfx_type_is_scalarlike(tc)) t = hfx_common_shape(c->types, t, tc, t->base, &trunc2);
         if (!t) {
-            hfx_error(c->diags, ck_start(e), X_TYPE_MISMATCH_OP, "type mismatch");
+            hfx_error(c->diags, hfx_ck_start(e), X_TYPE_MISMATCH_OP, "type mismatch");
             return fail(c, e);
         }
-        if (trunc || trunc2) hfx_warning(c->diags, ck_start(e), X_IMPLICIT_TRUNCATION, "implicit truncation of vector type");
+        if (trunc || trunc2) hfx_warning(c->diags, hfx_ck_start(e), X_IMPLICIT_TRUNCATION, "implicit truncation of vector type");
     }
     const hfx_type *ct = hfx_type_is_scalarlike(tc) || !hfx_type_is_numeric(t) ? hfx_type_scalar(c->types, B_BOOL)
                                                                               : hfx_type_with_base(c->types, t, B_BOOL);
-    e->args[0] = ck_implicit_cast(c, e->args[0], ct);
-    e->args[1] = ck_implicit_cast(c, e->args[1], t);
-    e->args[2] = ck_implicit_cast(c, e->args[2], t);
+    e->args[0] = hfx_ck_implicit_cast(c, e->args[0], ct);
+    e->args[1] = hfx_ck_implicit_cast(c, e->args[1], t);
+    e->args[2] = hfx_ck_implicit_cast(c, e->args[2], t);
     return set_type(e, t);
 }
 
@@ -351,8 +351,8 @@ static bool matrix_swizzle(hfx_expr *e, const char *name, unsigned rows, unsigne
 }
 
 static const hfx_type *check_member(check_ctx *c, hfx_expr *e) {
-    const hfx_type *t = ck_expr(c, e->args[0]);
-    if (ck_is_err(c, t)) return fail(c, e);
+    const hfx_type *t = hfx_ck_expr(c, e->args[0]);
+    if (hfx_ck_is_err(c, t)) return fail(c, e);
     if (t->kind == TY_STRUCT) {
         for (uint32_t i = 0; i < t->st->field_count; i++)
             if (t->st->fields[i].name && strcmp(t->st->fields[i].name, e->name) == 0) {
@@ -369,34 +369,34 @@ static const hfx_type *check_member(check_ctx *c, hfx_expr *e) {
                                                   : hfx_type_vector(c->types, t->base, e->comp_count));
         }
     }
-    hfx_error(c->diags, ck_start(e), X_INVALID_SUBSCRIPT, "invalid subscript '%s'", e->name);
+    hfx_error(c->diags, hfx_ck_start(e), X_INVALID_SUBSCRIPT, "invalid subscript '%s'", e->name);
     return fail(c, e);
 }
 
 static const hfx_type *check_index(check_ctx *c, hfx_expr *e) {
-    const hfx_type *t = ck_expr(c, e->args[0]), *it = ck_expr(c, e->args[1]);
-    if (ck_is_err(c, t) || ck_is_err(c, it)) return fail(c, e);
+    const hfx_type *t = hfx_ck_expr(c, e->args[0]), *it = hfx_ck_expr(c, e->args[1]);
+    if (hfx_ck_is_err(c, t) || hfx_ck_is_err(c, it)) return fail(c, e);
     const hfx_type *result = NULL;
     uint32_t bound = 0;
     if (t->kind == TY_ARRAY) result = t->elem, bound = t->array_len;
     else if (t->kind == TY_VECTOR) result = hfx_type_scalar(c->types, t->base), bound = t->cols;
     else if (t->kind == TY_MATRIX) result = hfx_type_vector(c->types, t->base, t->cols), bound = t->rows;
     if (!result) {
-        hfx_error(c->diags, ck_start(e), X_NOT_INDEXABLE,
+        hfx_error(c->diags, hfx_ck_start(e), X_NOT_INDEXABLE,
                   "array, matrix, vector, or indexable object type expected in index expression");
         return fail(c, e);
     }
     if (c->in_state && state_operand(c, it)) return set_type(e, result);
     if (!hfx_type_is_scalarlike(it)) {
-        hfx_error(c->diags, ck_start(e->args[1]), X_SCALAR_EXPECTED, "scalar, vector, or matrix expected");
+        hfx_error(c->diags, hfx_ck_start(e->args[1]), X_SCALAR_EXPECTED, "scalar, vector, or matrix expected");
         return fail(c, e);
     }
     int64_t k;
-    if (ck_fold_int(c, e->args[1], &k) && bound && (k < 0 || k >= (int64_t)bound)) {
-        hfx_error(c->diags, ck_start(e->args[1]), X_INDEX_RANGE, "array index out of bounds");
+    if (hfx_ck_fold_int(c, e->args[1], &k) && bound && (k < 0 || k >= (int64_t)bound)) {
+        hfx_error(c->diags, hfx_ck_start(e->args[1]), X_INDEX_RANGE, "array index out of bounds");
         return fail(c, e);
     }
-    e->args[1] = ck_implicit_cast(c, e->args[1], hfx_type_scalar(c->types, it->base == B_UINT ? B_UINT : B_INT));
+    e->args[1] = hfx_ck_implicit_cast(c, e->args[1], hfx_type_scalar(c->types, it->base == B_UINT ? B_UINT : B_INT));
     return set_type(e, result);
 }
 
@@ -421,31 +421,31 @@ static bool restructure(const hfx_type *from, const hfx_type *to) {
 }
 
 static const hfx_type *check_cast(check_ctx *c, hfx_expr *e) {
-    const hfx_type *from = ck_expr(c, e->args[0]), *to = ck_resolve_type(c, e->cast_type, e->loc);
-    if (ck_is_err(c, from)) return fail(c, e);
+    const hfx_type *from = hfx_ck_expr(c, e->args[0]), *to = hfx_ck_resolve_type(c, e->cast_type, e->loc);
+    if (hfx_ck_is_err(c, from)) return fail(c, e);
     e->cast_type = to;
     /* (VS_OUTPUT)0 and (float4[2])0: a scalar fills every component of a struct or array */
     bool fill = (to->kind == TY_STRUCT || to->kind == TY_ARRAY) && hfx_type_is_scalarlike(from);
     if (!fill && !restructure(from, to) && !hfx_conv_classify(from, to, true).ok) {
-        hfx_error(c->diags, ck_start(e), X_TYPE_MISMATCH, "cannot convert from '%s' to '%s'",
-                  ck_type_name(c, from), ck_type_name(c, to));
+        hfx_error(c->diags, hfx_ck_start(e), X_TYPE_MISMATCH, "cannot convert from '%s' to '%s'",
+                  hfx_ck_type_name(c, from), hfx_ck_type_name(c, to));
         return fail(c, e);
     }
     return set_type(e, to);
 }
 
 static const hfx_type *check_comma(check_ctx *c, hfx_expr *e) {
-    const hfx_type *a = ck_expr(c, e->args[0]), *b = ck_expr(c, e->args[1]);
-    if (ck_is_err(c, a) || ck_is_err(c, b)) return fail(c, e);
+    const hfx_type *a = hfx_ck_expr(c, e->args[0]), *b = hfx_ck_expr(c, e->args[1]);
+    if (hfx_ck_is_err(c, a) || hfx_ck_is_err(c, b)) return fail(c, e);
     return set_type(e, b);
 }
 
 static const hfx_type *check_sampler_state(check_ctx *c, hfx_expr *e) {
-    for (uint32_t i = 0; i < e->state_count; i++) ck_state_value(c, &e->states[i]);
+    for (uint32_t i = 0; i < e->state_count; i++) hfx_ck_state_value(c, &e->states[i]);
     return set_type(e, hfx_type_object(c->types, TY_SAMPLER, DIM_GENERIC));
 }
 
-const hfx_type *ck_expr(check_ctx *c, hfx_expr *e) {
+const hfx_type *hfx_ck_expr(check_ctx *c, hfx_expr *e) {
     if (!e) return c->err;
     if (e->type) return e->type; /* shared subtrees (split initializers) are checked once */
     e->intrinsic = -1;
@@ -461,17 +461,17 @@ const hfx_type *ck_expr(check_ctx *c, hfx_expr *e) {
     case EX_ASSIGN: return check_assign(c, e);
     case EX_TERNARY: return check_ternary(c, e);
     case EX_COMMA: return check_comma(c, e);
-    case EX_CALL: return ck_call(c, e);
-    case EX_CONSTRUCT: return ck_construct(c, e);
+    case EX_CALL: return hfx_ck_call(c, e);
+    case EX_CONSTRUCT: return hfx_ck_construct(c, e);
     case EX_CAST: return check_cast(c, e);
     case EX_MEMBER: return check_member(c, e);
     case EX_INDEX: return check_index(c, e);
-    case EX_COMPILE: return ck_compile(c, e);
+    case EX_COMPILE: return hfx_ck_compile(c, e);
     case EX_SAMPLER_STATE: return check_sampler_state(c, e);
     case EX_NULL: case EX_ASM: return set_type(e, hfx_type_void(c->types));
     case EX_METHOD:
-        for (uint32_t i = 0; i < e->arg_count; i++) ck_expr(c, e->args[i]);
-        hfx_error(c->diags, ck_start(e), X_UNSUPPORTED, "'%s': object methods are not supported in fx_2_0 effects", e->name);
+        for (uint32_t i = 0; i < e->arg_count; i++) hfx_ck_expr(c, e->args[i]);
+        hfx_error(c->diags, hfx_ck_start(e), X_UNSUPPORTED, "'%s': object methods are not supported in fx_2_0 effects", e->name);
         return fail(c, e);
     case EX_INIT_LIST:
         hfx_error(c->diags, e->loc, X_SYNTAX, "syntax error: unexpected token '{'");

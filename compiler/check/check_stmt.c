@@ -5,13 +5,13 @@
 static void check_stmt(check_ctx *c, hfx_stmt *s);
 
 static void check_local(check_ctx *c, hfx_decl *d) {
-    d->type = ck_resolve_type(c, d->type, d->loc);
+    d->type = hfx_ck_resolve_type(c, d->type, d->loc);
     if (d->type && d->type->kind == TY_VOID) {
         hfx_error(c->diags, d->loc, 3038, "'%s': variables cannot be declared 'void'", d->name);
         d->type = c->err;
     }
-    if (d->init) ck_init(c, d);
-    ck_scope_add(c, d);
+    if (d->init) hfx_ck_init(c, d);
+    hfx_ck_scope_add(c, d);
 }
 
 static void check_block_items(check_ctx *c, hfx_stmt **body, uint32_t n) {
@@ -21,9 +21,9 @@ static void check_block_items(check_ctx *c, hfx_stmt **body, uint32_t n) {
 /* A sub-statement gets its own scope: `if (a) float x = 1;` declares nothing outside. */
 static void check_scoped(check_ctx *c, hfx_stmt *s) {
     if (!s) return;
-    ck_scope_push(c);
+    hfx_ck_scope_push(c);
     check_stmt(c, s);
-    ck_scope_pop(c);
+    hfx_ck_scope_pop(c);
 }
 
 static void check_loop_body(check_ctx *c, hfx_stmt *body) {
@@ -37,14 +37,14 @@ static void check_return(check_ctx *c, hfx_stmt *s) {
     if (!f) return;
     bool is_void = f->ret->kind == TY_VOID;
     if (s->expr) {
-        const hfx_type *t = ck_expr(c, s->expr);
-        if (ck_is_err(c, t)) return;
+        const hfx_type *t = hfx_ck_expr(c, s->expr);
+        if (hfx_ck_is_err(c, t)) return;
         if (is_void) {
             if (t->kind != TY_VOID)
                 hfx_error(c->diags, s->loc, X_VOID_RETURN, "'%s': void functions cannot return a value", f->name);
             return;
         }
-        s->expr = ck_convert(c, s->expr, f->ret, true);
+        s->expr = hfx_ck_convert(c, s->expr, f->ret, true);
     } else if (!is_void) {
         hfx_error(c->diags, s->loc, X_MISSING_RETURN, "'%s': function must return a value", f->name);
     }
@@ -80,30 +80,30 @@ static void check_fallthrough(check_ctx *c, const hfx_stmt *s) {
 }
 
 static void check_switch(check_ctx *c, hfx_stmt *s) {
-    const hfx_type *t = ck_expr(c, s->expr);
-    if (!ck_is_err(c, t)) {
+    const hfx_type *t = hfx_ck_expr(c, s->expr);
+    if (!hfx_ck_is_err(c, t)) {
         if (!hfx_type_is_scalarlike(t)) {
-            hfx_error(c->diags, ck_start(s->expr), X_NO_IF_SCALAR,
+            hfx_error(c->diags, hfx_ck_start(s->expr), X_NO_IF_SCALAR,
                       "switch statement conditional expressions must evaluate to a scalar");
         } else {
-            s->expr = ck_convert(c, s->expr, hfx_type_scalar(c->types, t->base == B_UINT ? B_UINT : B_INT), false);
+            s->expr = hfx_ck_convert(c, s->expr, hfx_type_scalar(c->types, t->base == B_UINT ? B_UINT : B_INT), false);
         }
     }
     c->switches++;
-    ck_scope_push(c);
+    hfx_ck_scope_push(c);
     check_block_items(c, s->body, s->body_count);
-    ck_scope_pop(c);
+    hfx_ck_scope_pop(c);
     c->switches--;
     check_fallthrough(c, s);
 }
 
 static void check_case(check_ctx *c, hfx_stmt *s) {
     int64_t v;
-    if (!s->expr || ck_is_err(c, ck_expr(c, s->expr))) return;
-    if (!ck_fold_int(c, s->expr, &v))
-        hfx_error(c->diags, ck_start(s->expr), 3020, "case expressions must be literal scalar expressions");
+    if (!s->expr || hfx_ck_is_err(c, hfx_ck_expr(c, s->expr))) return;
+    if (!hfx_ck_fold_int(c, s->expr, &v))
+        hfx_error(c->diags, hfx_ck_start(s->expr), 3020, "case expressions must be literal scalar expressions");
     else
-        s->expr = ck_convert(c, s->expr, hfx_type_scalar(c->types, B_INT), false);
+        s->expr = hfx_ck_convert(c, s->expr, hfx_type_scalar(c->types, B_INT), false);
 }
 
 /* fxc's loop scoping: `for (int i...)` declares i in the enclosing scope too, so i is usable
@@ -112,36 +112,36 @@ static void check_for(check_ctx *c, hfx_stmt *s) {
     hfx_stmt *init = s->init;
     bool decl = init && init->kind == ST_DECL;
     for (uint32_t i = 0; decl && i < init->decl_count; i++)
-        if (init->decls[i]->name && ck_declared_here(c, init->decls[i]->name))
+        if (init->decls[i]->name && hfx_ck_declared_here(c, init->decls[i]->name))
             hfx_warning(c->diags, init->decls[i]->loc, X_LOOP_VAR_CONFLICT,
                         "loop control variable conflicts with a previous declaration in the outer scope; "
                         "most recent declaration will be used");
-    ck_scope_push(c);
+    hfx_ck_scope_push(c);
     check_stmt(c, init);
-    if (s->expr) ck_cond(c, &s->expr, "for");
-    if (s->step) ck_expr(c, s->step);
+    if (s->expr) hfx_ck_cond(c, &s->expr, "for");
+    if (s->step) hfx_ck_expr(c, s->step);
     check_loop_body(c, s->then_stmt);
-    ck_scope_pop(c);
-    for (uint32_t i = 0; decl && i < init->decl_count; i++) ck_scope_leak(c, init->decls[i]);
+    hfx_ck_scope_pop(c);
+    for (uint32_t i = 0; decl && i < init->decl_count; i++) hfx_ck_scope_leak(c, init->decls[i]);
 }
 
 static void check_stmt(check_ctx *c, hfx_stmt *s) {
     if (!s) return;
-    if (s->attr_count) ck_attributes(c, s);
+    if (s->attr_count) hfx_ck_attributes(c, s);
     switch (s->kind) {
     case ST_BLOCK:
-        ck_scope_push(c);
+        hfx_ck_scope_push(c);
         check_block_items(c, s->body, s->body_count);
-        ck_scope_pop(c);
+        hfx_ck_scope_pop(c);
         break;
     case ST_DECL:
         for (uint32_t i = 0; i < s->decl_count; i++) check_local(c, s->decls[i]);
         break;
     case ST_EXPR:
-        if (s->expr) ck_expr(c, s->expr);
+        if (s->expr) hfx_ck_expr(c, s->expr);
         break;
     case ST_IF:
-        ck_cond(c, &s->expr, "if");
+        hfx_ck_cond(c, &s->expr, "if");
         check_scoped(c, s->then_stmt);
         check_scoped(c, s->else_stmt);
         break;
@@ -149,12 +149,12 @@ static void check_stmt(check_ctx *c, hfx_stmt *s) {
         check_for(c, s);
         break;
     case ST_WHILE:
-        ck_cond(c, &s->expr, "while");
+        hfx_ck_cond(c, &s->expr, "while");
         check_loop_body(c, s->then_stmt);
         break;
     case ST_DO:
         check_loop_body(c, s->then_stmt);
-        ck_cond(c, &s->expr, "do");
+        hfx_ck_cond(c, &s->expr, "do");
         break;
     case ST_SWITCH:
         check_switch(c, s);
@@ -234,25 +234,25 @@ static void check_params(check_ctx *c, hfx_func *f) {
     for (uint32_t i = 0; i < f->param_count; i++) {
         hfx_decl *p = f->params[i];
         p->index = i;
-        p->type = ck_resolve_type(c, p->type, p->loc);
-        if (p->init) ck_init(c, p);
+        p->type = hfx_ck_resolve_type(c, p->type, p->loc);
+        if (p->init) hfx_ck_init(c, p);
     }
 }
 
-void ck_function(check_ctx *c, hfx_decl *d) {
+void hfx_ck_function(check_ctx *c, hfx_decl *d) {
     hfx_func *f = d->func;
     if (!f) return;
-    f->ret = ck_resolve_type(c, f->ret, f->loc);
+    f->ret = hfx_ck_resolve_type(c, f->ret, f->loc);
     check_params(c, f);
     if (f->body && !f->definition) f->definition = f;
-    ck_scope_add(c, d); /* before the body: a recursive call finds it (and codegen rejects it) */
+    hfx_ck_scope_add(c, d); /* before the body: a recursive call finds it (and codegen rejects it) */
     if (!f->body) return;
     c->func = d;
-    ck_scope_push(c);
-    for (uint32_t i = 0; i < f->param_count; i++) ck_scope_add(c, f->params[i]);
+    hfx_ck_scope_push(c);
+    for (uint32_t i = 0; i < f->param_count; i++) hfx_ck_scope_add(c, f->params[i]);
     if (f->body->kind == ST_BLOCK) check_block_items(c, f->body->body, f->body->body_count);
     else check_stmt(c, f->body);
-    ck_scope_pop(c);
+    hfx_ck_scope_pop(c);
     if (f->ret->kind != TY_VOID && !always_returns(f->body)) {
         /* fxc decides after `compile ps_3_0 PS(1)` has fixed the uniform parameters */
         if (has_uniform_param(f)) f->returns_per_pass = true;

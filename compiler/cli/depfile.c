@@ -13,27 +13,27 @@
  * '$' is doubled. */
 static void put_escaped(sbuf *b, const char *path) {
     for (const char *p = path; *p; p++) {
-        if (*p == ' ' || *p == '#') sb_put(b, "\\");
-        if (*p == '$') sb_put(b, "$");
-        sb_putn(b, p, 1);
+        if (*p == ' ' || *p == '#') hfx_sb_put(b, "\\");
+        if (*p == '$') hfx_sb_put(b, "$");
+        hfx_sb_putn(b, p, 1);
     }
 }
 
 char *cli_depfile_text(const char *target, const char *const *deps, size_t count, bool phony) {
     sbuf b = {0};
     put_escaped(&b, target);
-    sb_put(&b, ":");
+    hfx_sb_put(&b, ":");
     for (size_t i = 0; i < count; i++) {
-        sb_put(&b, i ? " \\\n " : " ");
+        hfx_sb_put(&b, i ? " \\\n " : " ");
         put_escaped(&b, deps[i]);
     }
-    sb_put(&b, "\n");
+    hfx_sb_put(&b, "\n");
     for (size_t i = 1; phony && i < count; i++) { /* gcc -MP: every dependency but the root */
-        sb_put(&b, "\n");
+        hfx_sb_put(&b, "\n");
         put_escaped(&b, deps[i]);
-        sb_put(&b, ":\n");
+        hfx_sb_put(&b, ":\n");
     }
-    return sb_take(&b);
+    return hfx_sb_take(&b);
 }
 
 /* "dir/x.fx" -> "dir/x" + ext (the last dot of the last component goes). */

@@ -13,13 +13,13 @@ static const d3d9_op_info ops[] = {
 #include "d3d9/d3d9_ops.def"
 };
 
-const d3d9_op_info *d3d9_op_find(uint32_t opcode) {
+const d3d9_op_info *hfx_d3d9_op_find(uint32_t opcode) {
     for (size_t i = 0; i < sizeof ops / sizeof ops[0]; i++)
         if (ops[i].token == opcode) return &ops[i];
     return NULL;
 }
 
-const char *d3d9_model_name(d3d9_stage stage, uint8_t model) {
+const char *hfx_d3d9_model_name(d3d9_stage stage, uint8_t model) {
     static const char *const vs[] = {"vs_1_1", "vs_2_0", "vs_2_x", "vs_3_0"};
     static const char *const ps[] = {"ps_1_1", "ps_1_2", "ps_1_3", "ps_1_4", "ps_2_0", "ps_2_x", "ps_3_0"};
     switch (model) {
@@ -34,11 +34,11 @@ const char *d3d9_model_name(d3d9_stage stage, uint8_t model) {
     }
 }
 
-uint32_t d3d9_word(const d3d9_reader *r, uint32_t i) {
+uint32_t hfx_d3d9_word(const d3d9_reader *r, uint32_t i) {
     return hfx_le32(r->bytes + (size_t)i * 4);
 }
 
-void d3d9_fail(d3d9_reader *r, uint32_t word, unsigned code, const char *fmt, ...) {
+void hfx_d3d9_fail(d3d9_reader *r, uint32_t word, unsigned code, const char *fmt, ...) {
     char msg[256];
     va_list ap;
     va_start(ap, fmt);
@@ -60,7 +60,7 @@ static bool op_allowed(const d3d9_op_info *op, d3d9_stage st, uint8_t m) {
 }
 
 /* Operand counts for this model: texture instructions and sincos changed shape across models. */
-void d3d9_operand_counts(const d3d9_op_info *op, uint8_t model, unsigned *dst, unsigned *src) {
+void hfx_d3d9_operand_counts(const d3d9_op_info *op, uint8_t model, unsigned *dst, unsigned *src) {
     *dst = op->dst;
     *src = op->src;
     if (op->token == D3D9_TEX) *src = model < D3D9_SM(1, 4) ? 0 : model == D3D9_SM(1, 4) ? 1 : 2;
@@ -80,14 +80,14 @@ static d3d9_inst *new_inst(d3d9_reader *r) {
 static void read_comment(d3d9_reader *r, uint32_t i, uint32_t n) {
     d3d9_shader *s = r->sh;
     uint32_t *w = HFX_NEW_ARRAY(r->arena, uint32_t, n ? n : 1);
-    for (uint32_t k = 0; k < n; k++) w[k] = d3d9_word(r, i + 1 + k);
+    for (uint32_t k = 0; k < n; k++) w[k] = hfx_d3d9_word(r, i + 1 + k);
     HFX_ARENA_GROW(r->arena, s->comments, s->comment_count, r->comment_cap, 4);
     d3d9_comment *c = &s->comments[s->comment_count++];
     c->fourcc = n ? w[0] : 0;
     c->words = w;
     c->word_count = n;
     c->offset = i * 4;
-    if (c->fourcc == D3D9_FOURCC_CTAB && !s->constants) d3d9_read_ctab(r, c, i);
+    if (c->fourcc == D3D9_FOURCC_CTAB && !s->constants) hfx_d3d9_read_ctab(r, c, i);
 }
 
 /* Flow-control nesting: ifs, loops and reps must close in order; else only inside an if. */
@@ -102,12 +102,12 @@ static void track_flow(d3d9_reader *r, const d3d9_op_info *op, uint32_t at) {
                   : t == D3D9_ENDREP ? D3D9_REP : 0;
     if (!want) {
         if ((t == D3D9_BREAK || t == D3D9_BREAKC || t == D3D9_BREAKP) && !r->loops)
-            d3d9_fail(r, at, X_D3D9_FLOW, "%s outside a loop or rep", op->name);
+            hfx_d3d9_fail(r, at, X_D3D9_FLOW, "%s outside a loop or rep", op->name);
         return;
     }
     uint16_t top = r->depth && r->depth <= D3D9_MAX_DEPTH ? r->stack[r->depth - 1] : 0;
     if (!r->depth || top != want) {
-        d3d9_fail(r, at, X_D3D9_FLOW, "%s without a matching %s", op->name,
+        hfx_d3d9_fail(r, at, X_D3D9_FLOW, "%s without a matching %s", op->name,
                   want == D3D9_IF ? "if" : want == D3D9_LOOP ? "loop" : "rep");
         return;
     }
@@ -127,36 +127,36 @@ static uint32_t inst_length(d3d9_reader *r, uint32_t i, uint32_t tok, const d3d9
     if (op->token == D3D9_DEF) return 5;
     /* ps_1_x / vs_1_1: no length field; operands are the following tokens with bit 31 set. */
     uint32_t n = 0;
-    while (i + 1 + n < r->words && (d3d9_word(r, i + 1 + n) & 0x80000000u)) n++;
+    while (i + 1 + n < r->words && (hfx_d3d9_word(r, i + 1 + n) & 0x80000000u)) n++;
     return n;
 }
 
 /* One instruction at word i; returns the index of the next token, or UINT32_MAX to stop. */
 static uint32_t read_inst(d3d9_reader *r, uint32_t i) {
-    uint32_t tok = d3d9_word(r, i);
+    uint32_t tok = hfx_d3d9_word(r, i);
     uint32_t opcode = tok & 0xffff;
-    const d3d9_op_info *op = d3d9_op_find(opcode);
+    const d3d9_op_info *op = hfx_d3d9_op_find(opcode);
     uint32_t len = inst_length(r, i, tok, op);
     if (len == UINT32_MAX) {
-        d3d9_fail(r, i, X_D3D9_OPCODE, "unknown opcode 0x%04x", opcode);
+        hfx_d3d9_fail(r, i, X_D3D9_OPCODE, "unknown opcode 0x%04x", opcode);
         return UINT32_MAX;
     }
     if ((uint64_t)i + 1 + len > r->words) {
-        d3d9_fail(r, i, X_D3D9_TRUNCATED, "instruction runs past the end of the shader (%u words, %u left)",
+        hfx_d3d9_fail(r, i, X_D3D9_TRUNCATED, "instruction runs past the end of the shader (%u words, %u left)",
                   len, r->words - i - 1);
         return UINT32_MAX;
     }
     if (!op) {
-        d3d9_fail(r, i, X_D3D9_OPCODE, "unknown opcode 0x%04x", opcode);
+        hfx_d3d9_fail(r, i, X_D3D9_OPCODE, "unknown opcode 0x%04x", opcode);
         return i + 1 + len;
     }
     if (!op_allowed(op, r->sh->stage, r->sh->model)) {
-        d3d9_fail(r, i, X_D3D9_OPCODE, "%s is not allowed in %s", op->name,
-                  d3d9_model_name(r->sh->stage, r->sh->model));
+        hfx_d3d9_fail(r, i, X_D3D9_OPCODE, "%s is not allowed in %s", op->name,
+                  hfx_d3d9_model_name(r->sh->stage, r->sh->model));
         return i + 1 + len;
     }
     if (tok & 0x80000000u) {
-        d3d9_fail(r, i, X_D3D9_OPCODE, "instruction token with bit 31 set");
+        hfx_d3d9_fail(r, i, X_D3D9_OPCODE, "instruction token with bit 31 set");
         return i + 1 + len;
     }
     d3d9_inst *in = new_inst(r);
@@ -165,7 +165,7 @@ static uint32_t read_inst(d3d9_reader *r, uint32_t i) {
     in->coissue = (tok >> 30) & 1;
     in->predicated = (tok >> 28) & 1;
     in->offset = i * 4;
-    d3d9_read_operands(r, in, op, i, len);
+    hfx_d3d9_read_operands(r, in, op, i, len);
     track_flow(r, op, i);
     count_loops(r);
     return i + 1 + len;
@@ -173,29 +173,29 @@ static uint32_t read_inst(d3d9_reader *r, uint32_t i) {
 
 static bool read_version(d3d9_reader *r) {
     if (r->words < 1) {
-        d3d9_fail(r, 0, X_D3D9_TRUNCATED, "shader shorter than its version token (%u bytes)", r->in->size);
+        hfx_d3d9_fail(r, 0, X_D3D9_TRUNCATED, "shader shorter than its version token (%u bytes)", r->in->size);
         return false;
     }
-    uint32_t v = d3d9_word(r, 0);
+    uint32_t v = hfx_d3d9_word(r, 0);
     d3d9_shader *s = r->sh;
     s->version = v;
     uint32_t kind = v >> 16;
     unsigned major = (v >> 8) & 0xff, minor = v & 0xff;
     if (kind != 0xfffe && kind != 0xffff) {
-        d3d9_fail(r, 0, X_D3D9_VERSION, "not a D3D9 shader: version token 0x%08x", v);
+        hfx_d3d9_fail(r, 0, X_D3D9_VERSION, "not a D3D9 shader: version token 0x%08x", v);
         return false;
     }
     s->stage = kind == 0xfffe ? D3D9_VS : D3D9_PS;
     s->model = major < 16 && minor < 16 ? (uint8_t)D3D9_SM(major, minor) : 0;
     if (!model_known(s->stage, s->model)) {
-        d3d9_fail(r, 0, X_D3D9_VERSION, "unsupported shader model %s_%u_%u", s->stage == D3D9_VS ? "vs" : "ps",
+        hfx_d3d9_fail(r, 0, X_D3D9_VERSION, "unsupported shader model %s_%u_%u", s->stage == D3D9_VS ? "vs" : "ps",
                   major, minor);
         return false;
     }
     return true;
 }
 
-d3d9_shader *d3d9_decode(hfx_arena *arena, hfx_diags *diags, const d3d9_input *in) {
+d3d9_shader *hfx_d3d9_decode(hfx_arena *arena, hfx_diags *diags, const d3d9_input *in) {
     d3d9_reader r = {0};
     r.arena = arena;
     r.diags = diags;
@@ -211,12 +211,12 @@ d3d9_shader *d3d9_decode(hfx_arena *arena, hfx_diags *diags, const d3d9_input *i
     uint32_t i = 1;
     bool ended = false;
     while (i < r.words) {
-        uint32_t tok = d3d9_word(&r, i);
+        uint32_t tok = hfx_d3d9_word(&r, i);
         if (tok == 0x0000ffffu) { ended = true; break; }
         if ((tok & 0xffff) == D3D9_COMMENT) {
             uint32_t n = (tok >> 16) & 0x7fff;
             if ((uint64_t)i + 1 + n > r.words) {
-                d3d9_fail(&r, i, X_D3D9_TRUNCATED, "comment of %u words runs past the end of the shader", n);
+                hfx_d3d9_fail(&r, i, X_D3D9_TRUNCATED, "comment of %u words runs past the end of the shader", n);
                 return NULL;
             }
             read_comment(&r, i, n);
@@ -226,13 +226,13 @@ d3d9_shader *d3d9_decode(hfx_arena *arena, hfx_diags *diags, const d3d9_input *i
         i = read_inst(&r, i);
         if (i == UINT32_MAX) return NULL;
     }
-    if (!ended) d3d9_fail(&r, r.words, X_D3D9_TRUNCATED, "no END token");
-    else if (r.depth) d3d9_fail(&r, i, X_D3D9_FLOW, "%u flow-control block%s not closed at END", r.depth,
+    if (!ended) hfx_d3d9_fail(&r, r.words, X_D3D9_TRUNCATED, "no END token");
+    else if (r.depth) hfx_d3d9_fail(&r, i, X_D3D9_FLOW, "%u flow-control block%s not closed at END", r.depth,
                                 r.depth == 1 ? "" : "s");
     return diags->errors == errors ? r.sh : NULL;
 }
 
-bool d3d9_is_shader(const void *data, size_t size) {
+bool hfx_d3d9_is_shader(const void *data, size_t size) {
     if (size < 8) return false;
     const unsigned char *p = data;
     uint32_t kind = (uint32_t)p[2] | (uint32_t)p[3] << 8;
@@ -240,9 +240,9 @@ bool d3d9_is_shader(const void *data, size_t size) {
     return p[1] < 16 && p[0] < 16 && model_known(kind == 0xfffe ? D3D9_VS : D3D9_PS, (uint8_t)D3D9_SM(p[1], p[0]));
 }
 
-int d3d9_disassemble_blob(hfx_arena *arena, hfx_diags *diags, const d3d9_input *in, sbuf *out) {
-    d3d9_shader *s = d3d9_decode(arena, diags, in);
+int hfx_d3d9_disassemble_blob(hfx_arena *arena, hfx_diags *diags, const d3d9_input *in, sbuf *out) {
+    d3d9_shader *s = hfx_d3d9_decode(arena, diags, in);
     if (!s) return -1;
-    d3d9_disassemble(s, out);
+    hfx_d3d9_disassemble(s, out);
     return 0;
 }

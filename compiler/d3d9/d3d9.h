@@ -56,7 +56,7 @@ typedef enum d3d9_opcode {
 typedef struct d3d9_op_info {
     const char *name;
     uint16_t token;
-    uint8_t dst, src;               /* operand counts (SM2+ forms; see d3d9_operand_counts) */
+    uint8_t dst, src;               /* operand counts (SM2+ forms; see hfx_d3d9_operand_counts) */
     uint8_t slots;                  /* instruction slots fxc counts */
     uint8_t vs_first, vs_last;      /* D3D9_SM; 0: never in a vertex shader */
     uint8_t ps_first, ps_last;      /* D3D9_SM; 0: never in a pixel shader */
@@ -64,7 +64,7 @@ typedef struct d3d9_op_info {
 } d3d9_op_info;
 
 /* The table row of an opcode token; NULL for an unknown opcode. */
-const d3d9_op_info *d3d9_op_find(uint32_t opcode);
+const d3d9_op_info *hfx_d3d9_op_find(uint32_t opcode);
 
 typedef enum d3d9_stage { D3D9_VS, D3D9_PS } d3d9_stage;
 
@@ -194,26 +194,26 @@ typedef struct d3d9_input {
  * the model, operand counts, register types and numbers for the model and stage, lengths inside
  * the buffer, flow-control nesting), comments (CTAB parsed), END present. Returns the shader, or
  * NULL with every error found reported in diags (located as above). Never reads past `size`. */
-d3d9_shader *d3d9_decode(hfx_arena *arena, hfx_diags *diags, const d3d9_input *in);
+d3d9_shader *hfx_d3d9_decode(hfx_arena *arena, hfx_diags *diags, const d3d9_input *in);
 
 /* Appends fxc's assembly listing of s to out: the CTAB header (`// Parameters:`,
  * `// Registers:`), the model line, one line per instruction as fxc prints it, and
  * `// approximately N instruction slots used` (with fxc's texture / arithmetic split for ps). */
-void d3d9_disassemble(const d3d9_shader *s, sbuf *out);
+void hfx_d3d9_disassemble(const d3d9_shader *s, sbuf *out);
 
 /* For `hfxc --disassemble X.vso` (a raw shader blob): decodes the file's bytes and appends the
  * listing; returns 0, or -1 with located errors in diags. */
-int d3d9_disassemble_blob(hfx_arena *arena, hfx_diags *diags, const d3d9_input *in, sbuf *out);
+int hfx_d3d9_disassemble_blob(hfx_arena *arena, hfx_diags *diags, const d3d9_input *in, sbuf *out);
 
 /* Whether `size` bytes start with a vs / ps version token hfx reads (vs_1_1..3_0, ps_1_1..3_0):
  * how `hfxc --disassemble` tells a raw shader blob (.vso, .pso, fxc /T ps_2_0) from an effect. */
-bool d3d9_is_shader(const void *data, size_t size);
+bool hfx_d3d9_is_shader(const void *data, size_t size);
 
 /* Instruction slots fxc counts for s (its listing's "approximately N"): arithmetic and texture. */
-void d3d9_count_slots(const d3d9_shader *s, uint32_t *arith, uint32_t *tex);
+void hfx_d3d9_count_slots(const d3d9_shader *s, uint32_t *arith, uint32_t *tex);
 
 /* The model's name: "vs_2_0", "ps_2_x", "ps_1_4"... (static text). */
-const char *d3d9_model_name(d3d9_stage stage, uint8_t model);
+const char *hfx_d3d9_model_name(d3d9_stage stage, uint8_t model);
 
 /* The translator to hfx's IR (d3d9_ir.c): one stage, with D3D9's register semantics (c registers
  * read from the effect's packed hfx_c array at the CTAB's register, r as vec4 locals, v / t / o
@@ -222,6 +222,6 @@ const char *d3d9_model_name(d3d9_stage stage, uint8_t model);
  * Returns NULL with located errors (X5006 for what it does not translate). */
 struct ir_ctx;
 struct ir_shader;
-struct ir_shader *d3d9_to_ir(struct ir_ctx *c, const d3d9_shader *s, bool packed);
+struct ir_shader *hfx_d3d9_to_ir(struct ir_ctx *c, const d3d9_shader *s, bool packed);
 
 #endif

@@ -19,7 +19,7 @@ static const char *str(ctab *t, uint32_t off, const char *what) {
     if (!off) return NULL;
     for (uint32_t k = off; k < t->size; k++)
         if (!t->p[k]) return hfx_arena_strndup(t->r->arena, (const char *)t->p + off, k - off);
-    d3d9_fail(t->r, t->at, X_D3D9_CTAB, "constant table: %s string at %u runs out of the table", what, off);
+    hfx_d3d9_fail(t->r, t->at, X_D3D9_CTAB, "constant table: %s string at %u runs out of the table", what, off);
     return NULL;
 }
 
@@ -48,24 +48,24 @@ static bool read_constant(ctab *t, uint32_t off, d3d9_constant *k) {
     return true;
 }
 
-void d3d9_read_ctab(d3d9_reader *r, const d3d9_comment *c, uint32_t at) {
+void hfx_d3d9_read_ctab(d3d9_reader *r, const d3d9_comment *c, uint32_t at) {
     ctab t = {r, r->bytes + (size_t)at * 4 + 8, (c->word_count - 1) * 4, at};
     d3d9_shader *s = r->sh;
     if (!fits(&t, 0, 28) || u32(&t, 0) < 28) {
-        d3d9_fail(r, at, X_D3D9_CTAB, "constant table shorter than its header");
+        hfx_d3d9_fail(r, at, X_D3D9_CTAB, "constant table shorter than its header");
         return;
     }
     s->creator = str(&t, u32(&t, 4), "creator");
     uint32_t count = u32(&t, 12), infos = u32(&t, 16);
     s->target = str(&t, u32(&t, 24), "target");
     if (count > t.size / 20 || !fits(&t, infos, count * 20)) {
-        d3d9_fail(r, at, X_D3D9_CTAB, "constant table: %u constants do not fit in the table", count);
+        hfx_d3d9_fail(r, at, X_D3D9_CTAB, "constant table: %u constants do not fit in the table", count);
         return;
     }
     d3d9_constant *k = HFX_NEW_ARRAY(r->arena, d3d9_constant, count ? count : 1);
     for (uint32_t i = 0; i < count; i++) {
         if (!read_constant(&t, infos + i * 20, &k[i])) {
-            d3d9_fail(r, at, X_D3D9_CTAB, "constant table: constant %u points outside the table", i);
+            hfx_d3d9_fail(r, at, X_D3D9_CTAB, "constant table: constant %u points outside the table", i);
             return;
         }
     }

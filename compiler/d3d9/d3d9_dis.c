@@ -14,53 +14,53 @@ static void put_float(sbuf *b, float f) {
     char t[40];
     snprintf(t, sizeof t, "%.9g", (double)f);
     char *e = strchr(t, 'e');
-    if (e && strlen(e) == 4) sb_printf(b, "%.*s%c0%s", (int)(e - t + 1), t, e[1], e + 2);
-    else sb_put(b, t);
+    if (e && strlen(e) == 4) hfx_sb_printf(b, "%.*s%c0%s", (int)(e - t + 1), t, e[1], e + 2);
+    else hfx_sb_put(b, t);
 }
 
 static void put_reg(sbuf *b, const d3d9_shader *s, unsigned type, unsigned num) {
     bool vs = s->stage == D3D9_VS;
     switch (type) {
-    case D3D9_REG_TEMP: sb_printf(b, "r%u", num); break;
-    case D3D9_REG_INPUT: sb_printf(b, "v%u", num); break;
-    case D3D9_REG_CONST: sb_printf(b, "c%u", num); break;
-    case D3D9_REG_ADDR: sb_printf(b, vs ? "a%u" : "t%u", num); break;
-    case D3D9_REG_RASTOUT: sb_put(b, num == 0 ? "oPos" : num == 1 ? "oFog" : "oPts"); break;
-    case D3D9_REG_ATTROUT: sb_printf(b, "oD%u", num); break;
-    case D3D9_REG_OUTPUT: sb_printf(b, s->model >= D3D9_SM(3, 0) ? "o%u" : "oT%u", num); break;
-    case D3D9_REG_CONSTINT: sb_printf(b, "i%u", num); break;
-    case D3D9_REG_COLOROUT: sb_printf(b, "oC%u", num); break;
-    case D3D9_REG_DEPTHOUT: sb_put(b, "oDepth"); break;
-    case D3D9_REG_SAMPLER: sb_printf(b, "s%u", num); break;
-    case D3D9_REG_CONSTBOOL: sb_printf(b, "b%u", num); break;
-    case D3D9_REG_LOOP: sb_put(b, "aL"); break;
-    case D3D9_REG_MISC: sb_put(b, num == 0 ? "vPos" : "vFace"); break;
-    case D3D9_REG_LABEL: sb_printf(b, "l%u", num); break;
-    case D3D9_REG_PREDICATE: sb_printf(b, "p%u", num); break;
-    default: sb_printf(b, "?%u", num); break;
+    case D3D9_REG_TEMP: hfx_sb_printf(b, "r%u", num); break;
+    case D3D9_REG_INPUT: hfx_sb_printf(b, "v%u", num); break;
+    case D3D9_REG_CONST: hfx_sb_printf(b, "c%u", num); break;
+    case D3D9_REG_ADDR: hfx_sb_printf(b, vs ? "a%u" : "t%u", num); break;
+    case D3D9_REG_RASTOUT: hfx_sb_put(b, num == 0 ? "oPos" : num == 1 ? "oFog" : "oPts"); break;
+    case D3D9_REG_ATTROUT: hfx_sb_printf(b, "oD%u", num); break;
+    case D3D9_REG_OUTPUT: hfx_sb_printf(b, s->model >= D3D9_SM(3, 0) ? "o%u" : "oT%u", num); break;
+    case D3D9_REG_CONSTINT: hfx_sb_printf(b, "i%u", num); break;
+    case D3D9_REG_COLOROUT: hfx_sb_printf(b, "oC%u", num); break;
+    case D3D9_REG_DEPTHOUT: hfx_sb_put(b, "oDepth"); break;
+    case D3D9_REG_SAMPLER: hfx_sb_printf(b, "s%u", num); break;
+    case D3D9_REG_CONSTBOOL: hfx_sb_printf(b, "b%u", num); break;
+    case D3D9_REG_LOOP: hfx_sb_put(b, "aL"); break;
+    case D3D9_REG_MISC: hfx_sb_put(b, num == 0 ? "vPos" : "vFace"); break;
+    case D3D9_REG_LABEL: hfx_sb_printf(b, "l%u", num); break;
+    case D3D9_REG_PREDICATE: hfx_sb_printf(b, "p%u", num); break;
+    default: hfx_sb_printf(b, "?%u", num); break;
     }
 }
 
 static void put_relative(sbuf *b, const d3d9_shader *s, unsigned type, unsigned num, unsigned comp) {
-    sb_put(b, "[");
+    hfx_sb_put(b, "[");
     put_reg(b, s, type, num);
-    if (type != D3D9_REG_LOOP) sb_printf(b, ".%c", comps[comp & 3]);
-    sb_put(b, "]");
+    if (type != D3D9_REG_LOOP) hfx_sb_printf(b, ".%c", comps[comp & 3]);
+    hfx_sb_put(b, "]");
 }
 
 static void put_mask(sbuf *b, unsigned mask) {
     if (mask == 0xf || !mask) return;
-    sb_put(b, ".");
+    hfx_sb_put(b, ".");
     for (unsigned k = 0; k < 4; k++)
-        if (mask & (1u << k)) sb_printf(b, "%c", comps[k]);
+        if (mask & (1u << k)) hfx_sb_printf(b, "%c", comps[k]);
 }
 
 /* Identity: nothing; one component four times: that letter; otherwise all four. */
 static void put_swizzle(sbuf *b, unsigned sw) {
     if (sw == 0xe4) return;
     unsigned c0 = sw & 3;
-    if (sw == c0 * 0x55) { sb_printf(b, ".%c", comps[c0]); return; }
-    sb_printf(b, ".%c%c%c%c", comps[sw & 3], comps[(sw >> 2) & 3], comps[(sw >> 4) & 3], comps[(sw >> 6) & 3]);
+    if (sw == c0 * 0x55) { hfx_sb_printf(b, ".%c", comps[c0]); return; }
+    hfx_sb_printf(b, ".%c%c%c%c", comps[sw & 3], comps[(sw >> 2) & 3], comps[(sw >> 4) & 3], comps[(sw >> 6) & 3]);
 }
 
 static void put_src(sbuf *b, const d3d9_shader *s, const d3d9_src *x) {
@@ -69,12 +69,12 @@ static void put_src(sbuf *b, const d3d9_shader *s, const d3d9_src *x) {
     unsigned m = x->mod;
     if (m == D3D9_SMOD_NEG || m == D3D9_SMOD_BIASNEG || m == D3D9_SMOD_SIGNNEG || m == D3D9_SMOD_X2NEG ||
         m == D3D9_SMOD_ABSNEG)
-        sb_put(b, "-");
-    else if (m == D3D9_SMOD_COMP) sb_put(b, "1 - ");
-    else if (m == D3D9_SMOD_NOT) sb_put(b, "!");
+        hfx_sb_put(b, "-");
+    else if (m == D3D9_SMOD_COMP) hfx_sb_put(b, "1 - ");
+    else if (m == D3D9_SMOD_NOT) hfx_sb_put(b, "!");
     put_reg(b, s, x->type, x->num);
     if (x->relative) put_relative(b, s, x->rel_type, x->rel_num, x->rel_comp);
-    if (m <= D3D9_SMOD_NOT) sb_put(b, suffix[m]);
+    if (m <= D3D9_SMOD_NOT) hfx_sb_put(b, suffix[m]);
     /* b, s, l and aL have no components: fxc prints no swizzle whatever the token holds. */
     if (x->type != D3D9_REG_CONSTBOOL && x->type != D3D9_REG_SAMPLER && x->type != D3D9_REG_LABEL &&
         x->type != D3D9_REG_LOOP)
@@ -90,10 +90,10 @@ static void put_dst(sbuf *b, const d3d9_shader *s, const d3d9_dst *d) {
 static void put_dst_mods(sbuf *b, const d3d9_dst *d) {
     static const char *const shifts[] = {"", "_x2", "_x4", "_x8", "", "", "", "", "", "", "", "", "",
                                          "_d8", "_d4", "_d2"};
-    sb_put(b, shifts[d->shift & 0xf]);
-    if (d->mods & D3D9_DMOD_SAT) sb_put(b, "_sat");
-    if (d->mods & D3D9_DMOD_PP) sb_put(b, "_pp");
-    if (d->mods & D3D9_DMOD_CENTROID) sb_put(b, "_centroid");
+    hfx_sb_put(b, shifts[d->shift & 0xf]);
+    if (d->mods & D3D9_DMOD_SAT) hfx_sb_put(b, "_sat");
+    if (d->mods & D3D9_DMOD_PP) hfx_sb_put(b, "_pp");
+    if (d->mods & D3D9_DMOD_CENTROID) hfx_sb_put(b, "_centroid");
 }
 
 static void put_dcl(sbuf *b, const d3d9_shader *s, const d3d9_inst *in) {
@@ -101,25 +101,25 @@ static void put_dcl(sbuf *b, const d3d9_shader *s, const d3d9_inst *in) {
                                         "texcoord", "tangent", "binormal", "tessfactor", "positiont",
                                         "color", "fog", "depth", "sample"};
     static const char *const tex[] = {"", "_1d", "_2d", "_cube", "_volume"};
-    sb_put(b, "dcl");
+    hfx_sb_put(b, "dcl");
     const d3d9_dst *d = &in->dst;
-    if (d->type == D3D9_REG_SAMPLER) sb_put(b, tex[in->sampler_type <= 4 ? in->sampler_type : 0]);
+    if (d->type == D3D9_REG_SAMPLER) hfx_sb_put(b, tex[in->sampler_type <= 4 ? in->sampler_type : 0]);
     else if (d->type != D3D9_REG_MISC && (s->stage == D3D9_VS || s->model >= D3D9_SM(3, 0))) {
-        sb_printf(b, "_%s", usage[in->usage < 14 ? in->usage : 0]);
-        if (in->usage_index) sb_printf(b, "%u", in->usage_index);
+        hfx_sb_printf(b, "_%s", usage[in->usage < 14 ? in->usage : 0]);
+        if (in->usage_index) hfx_sb_printf(b, "%u", in->usage_index);
     }
     put_dst_mods(b, d);
-    sb_put(b, " ");
+    hfx_sb_put(b, " ");
     put_dst(b, s, d);
 }
 
 static void put_def(sbuf *b, const d3d9_shader *s, const d3d9_inst *in) {
-    sb_printf(b, "%s ", d3d9_op_find(in->op)->name);
+    hfx_sb_printf(b, "%s ", hfx_d3d9_op_find(in->op)->name);
     put_dst(b, s, &in->dst);
-    if (in->op == D3D9_DEFB) { sb_put(b, in->value.u[0] ? ", true" : ", false"); return; }
+    if (in->op == D3D9_DEFB) { hfx_sb_put(b, in->value.u[0] ? ", true" : ", false"); return; }
     for (unsigned k = 0; k < 4; k++) {
-        sb_put(b, ", ");
-        if (in->op == D3D9_DEFI) sb_printf(b, "%d", (int)in->value.i[k]);
+        hfx_sb_put(b, ", ");
+        if (in->op == D3D9_DEFI) hfx_sb_printf(b, "%d", (int)in->value.i[k]);
         else put_float(b, in->value.f[k]);
     }
 }
@@ -127,28 +127,28 @@ static void put_def(sbuf *b, const d3d9_shader *s, const d3d9_inst *in) {
 /* The mnemonic with its control and destination modifiers: texldp, if_lt, mul_sat_pp. */
 static void put_name(sbuf *b, const d3d9_shader *s, const d3d9_inst *in, const d3d9_op_info *op) {
     static const char *const cmp[] = {"", "_gt", "_eq", "_ge", "_lt", "_ne", "_le", ""};
-    if (in->op == D3D9_TEX) sb_put(b, s->model < D3D9_SM(1, 4) ? "tex" : in->control == 1 ? "texldp"
+    if (in->op == D3D9_TEX) hfx_sb_put(b, s->model < D3D9_SM(1, 4) ? "tex" : in->control == 1 ? "texldp"
                                    : in->control == 2 ? "texldb" : "texld");
-    else if (in->op == D3D9_TEXCOORD) sb_put(b, s->model == D3D9_SM(1, 4) ? "texcrd" : "texcoord");
-    else sb_put(b, op->name);
-    if (op->flags & D3D9_OPF_COMPARE) sb_put(b, cmp[in->control & 7]);
+    else if (in->op == D3D9_TEXCOORD) hfx_sb_put(b, s->model == D3D9_SM(1, 4) ? "texcrd" : "texcoord");
+    else hfx_sb_put(b, op->name);
+    if (op->flags & D3D9_OPF_COMPARE) hfx_sb_put(b, cmp[in->control & 7]);
     if (in->has_dst) put_dst_mods(b, &in->dst);
 }
 
 static void put_inst(sbuf *b, const d3d9_shader *s, const d3d9_inst *in) {
-    const d3d9_op_info *op = d3d9_op_find(in->op);
+    const d3d9_op_info *op = hfx_d3d9_op_find(in->op);
     if (in->op == D3D9_DCL) { put_dcl(b, s, in); return; }
     if (op->flags & (D3D9_OPF_DEF4 | D3D9_OPF_DEF1)) { put_def(b, s, in); return; }
-    if (in->coissue) sb_put(b, "+");
+    if (in->coissue) hfx_sb_put(b, "+");
     if (in->predicated) {
-        sb_put(b, "(");
+        hfx_sb_put(b, "(");
         put_src(b, s, &in->pred);
-        sb_put(b, ") ");
+        hfx_sb_put(b, ") ");
     }
     put_name(b, s, in, op);
     const char *sep = " ";
-    if (in->has_dst) { sb_put(b, sep); put_dst(b, s, &in->dst); sep = ", "; }
-    for (unsigned k = 0; k < in->src_count; k++) { sb_put(b, sep); put_src(b, s, &in->src[k]); sep = ", "; }
+    if (in->has_dst) { hfx_sb_put(b, sep); put_dst(b, s, &in->dst); sep = ", "; }
+    for (unsigned k = 0; k < in->src_count; k++) { hfx_sb_put(b, sep); put_src(b, s, &in->src[k]); sep = ", "; }
 }
 
 static int by_name(const void *x, const void *y) {
@@ -159,14 +159,14 @@ static int by_name(const void *x, const void *y) {
 static void put_type(sbuf *b, const d3d9_constant *k) {
     static const char *const objects[] = {"sampler", "sampler1D", "sampler2D", "sampler3D", "samplerCUBE"};
     const char *base = k->type == 1 ? "bool" : k->type == 2 ? "int" : "float";
-    if (k->cls == 4) sb_put(b, k->type >= 10 && k->type <= 14 ? objects[k->type - 10] : "texture");
-    else if (k->cls == 5) sb_put(b, "struct");
-    else if (k->cls == 0) sb_put(b, base);
-    else if (k->cls == 1) sb_printf(b, "%s%u", base, k->cols);
-    else sb_printf(b, "%s%s%ux%u", k->cls == 2 ? "row_major " : "", base, k->rows, k->cols);
-    sb_printf(b, " %s", k->name);
-    if (k->elements > 1) sb_printf(b, "[%u]", k->elements);
-    sb_put(b, ";\n");
+    if (k->cls == 4) hfx_sb_put(b, k->type >= 10 && k->type <= 14 ? objects[k->type - 10] : "texture");
+    else if (k->cls == 5) hfx_sb_put(b, "struct");
+    else if (k->cls == 0) hfx_sb_put(b, base);
+    else if (k->cls == 1) hfx_sb_printf(b, "%s%u", base, k->cols);
+    else hfx_sb_printf(b, "%s%s%ux%u", k->cls == 2 ? "row_major " : "", base, k->rows, k->cols);
+    hfx_sb_printf(b, " %s", k->name);
+    if (k->elements > 1) hfx_sb_printf(b, "[%u]", k->elements);
+    hfx_sb_put(b, ";\n");
 }
 
 static void put_registers(sbuf *b, const d3d9_shader *s) {
@@ -174,63 +174,63 @@ static void put_registers(sbuf *b, const d3d9_shader *s) {
     size_t w = 12;
     for (uint32_t i = 0; i < s->constant_count; i++)
         if (strlen(s->constants[i].name) > w) w = strlen(s->constants[i].name);
-    sb_printf(b, "// Registers:\n//\n//   %-*s Reg   Size\n//   ", (int)w, "Name");
-    for (size_t i = 0; i < w; i++) sb_put(b, "-");
-    sb_put(b, " ----- ----\n");
+    hfx_sb_printf(b, "// Registers:\n//\n//   %-*s Reg   Size\n//   ", (int)w, "Name");
+    for (size_t i = 0; i < w; i++) hfx_sb_put(b, "-");
+    hfx_sb_put(b, " ----- ----\n");
     for (uint32_t i = 0; i < s->constant_count; i++) {
         const d3d9_constant *k = &s->constants[i];
         char reg[16];
         snprintf(reg, sizeof reg, "%c%u", sets[k->regset & 3], k->reg);
-        sb_printf(b, "//   %-*s %-5s %4u\n", (int)w, k->name, reg, k->count);
+        hfx_sb_printf(b, "//   %-*s %-5s %4u\n", (int)w, k->name, reg, k->count);
     }
-    sb_put(b, "//\n");
+    hfx_sb_put(b, "//\n");
 }
 
 static void put_header(sbuf *b, const d3d9_shader *s) {
     if (!s->creator && !s->constants) return;
-    sb_printf(b, "//\n// Generated by %s\n//\n", s->creator ? s->creator : "");
+    hfx_sb_printf(b, "//\n// Generated by %s\n//\n", s->creator ? s->creator : "");
     if (s->constant_count) {
         const d3d9_constant **sorted = malloc(sizeof *sorted * s->constant_count);
         if (!sorted) { b->oom = true; return; }
         for (uint32_t i = 0; i < s->constant_count; i++) sorted[i] = &s->constants[i];
         qsort(sorted, s->constant_count, sizeof *sorted, by_name);
-        sb_put(b, "// Parameters:\n//\n");
-        for (uint32_t i = 0; i < s->constant_count; i++) { sb_put(b, "//   "); put_type(b, sorted[i]); }
+        hfx_sb_put(b, "// Parameters:\n//\n");
+        for (uint32_t i = 0; i < s->constant_count; i++) { hfx_sb_put(b, "//   "); put_type(b, sorted[i]); }
         free(sorted);
-        sb_put(b, "//\n//\n");
+        hfx_sb_put(b, "//\n//\n");
         put_registers(b, s);
     }
-    sb_put(b, "\n");
+    hfx_sb_put(b, "\n");
 }
 
-void d3d9_count_slots(const d3d9_shader *s, uint32_t *arith, uint32_t *tex) {
+void hfx_d3d9_count_slots(const d3d9_shader *s, uint32_t *arith, uint32_t *tex) {
     *arith = *tex = 0;
     for (uint32_t i = 0; i < s->inst_count; i++) {
-        const d3d9_op_info *op = d3d9_op_find(s->insts[i].op);
+        const d3d9_op_info *op = hfx_d3d9_op_find(s->insts[i].op);
         if (!op || (op->flags & D3D9_OPF_DECL)) continue;
         if (op->flags & D3D9_OPF_TEX) *tex += op->slots;
         else *arith += op->slots;
     }
 }
 
-void d3d9_disassemble(const d3d9_shader *s, sbuf *b) {
+void hfx_d3d9_disassemble(const d3d9_shader *s, sbuf *b) {
     put_header(b, s);
-    sb_printf(b, "    %s\n", d3d9_model_name(s->stage, s->model));
+    hfx_sb_printf(b, "    %s\n", hfx_d3d9_model_name(s->stage, s->model));
     unsigned depth = 0;
     for (uint32_t i = 0; i < s->inst_count; i++) {
         const d3d9_inst *in = &s->insts[i];
-        const d3d9_op_info *op = d3d9_op_find(in->op);
+        const d3d9_op_info *op = hfx_d3d9_op_find(in->op);
         bool out = (op->flags & D3D9_OPF_CLOSE) || in->op == D3D9_ELSE;
         if (out && depth) depth--;
-        sb_printf(b, "    %*s", (int)depth * 2, "");
+        hfx_sb_printf(b, "    %*s", (int)depth * 2, "");
         put_inst(b, s, in);
-        sb_put(b, "\n");
+        hfx_sb_put(b, "\n");
         if ((op->flags & D3D9_OPF_OPEN) || in->op == D3D9_ELSE) depth++;
     }
     uint32_t arith, tex;
-    d3d9_count_slots(s, &arith, &tex);
+    hfx_d3d9_count_slots(s, &arith, &tex);
     uint32_t n = arith + tex;
-    sb_printf(b, "\n// approximately %u instruction slot%s used", n, n == 1 ? "" : "s");
-    if (s->stage == D3D9_PS) sb_printf(b, " (%u texture, %u arithmetic)", tex, arith);
-    sb_put(b, "\n");
+    hfx_sb_printf(b, "\n// approximately %u instruction slot%s used", n, n == 1 ? "" : "s");
+    if (s->stage == D3D9_PS) hfx_sb_printf(b, " (%u texture, %u arithmetic)", tex, arith);
+    hfx_sb_put(b, "\n");
 }

@@ -25,17 +25,17 @@ typedef struct d3d9_reader {
 } d3d9_reader;
 
 /* --- d3d9.c --- */
-uint32_t d3d9_word(const d3d9_reader *r, uint32_t i);             /* little-endian word i of the blob */
-void d3d9_fail(d3d9_reader *r, uint32_t word, unsigned code, const char *fmt, ...)
+uint32_t hfx_d3d9_word(const d3d9_reader *r, uint32_t i);             /* little-endian word i of the blob */
+void hfx_d3d9_fail(d3d9_reader *r, uint32_t word, unsigned code, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));                      /* a located error at word `word` */
-void d3d9_operand_counts(const d3d9_op_info *op, uint8_t model, unsigned *dst, unsigned *src);
+void hfx_d3d9_operand_counts(const d3d9_op_info *op, uint8_t model, unsigned *dst, unsigned *src);
 
 /* --- d3d9_operands.c --- */
 /* Reads the operands of the instruction at word i (len words follow it) into in, checking counts
  * and register types for the model. */
-void d3d9_read_operands(d3d9_reader *r, d3d9_inst *in, const d3d9_op_info *op, uint32_t i, uint32_t len);
+void hfx_d3d9_read_operands(d3d9_reader *r, d3d9_inst *in, const d3d9_op_info *op, uint32_t i, uint32_t len);
 
 /* --- d3d9_ctab.c --- */
-void d3d9_read_ctab(d3d9_reader *r, const d3d9_comment *c, uint32_t at);
+void hfx_d3d9_read_ctab(d3d9_reader *r, const d3d9_comment *c, uint32_t at);
 
 #endif

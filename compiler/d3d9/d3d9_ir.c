@@ -15,7 +15,7 @@
 
 #include <stdio.h>
 
-void d3d9_tx_fail(d3d9_tx *t, const char *fmt, ...) {
+void hfx_d3d9_tx_fail(d3d9_tx *t, const char *fmt, ...) {
     char msg[256];
     va_list ap;
     va_start(ap, fmt);
@@ -25,15 +25,15 @@ void d3d9_tx_fail(d3d9_tx *t, const char *fmt, ...) {
     t->failed = true;
 }
 
-ir_expr *d3d9_tx_var(d3d9_tx *t, ir_var *v) {
-    ir_expr *e = ir_new_expr(t->c, IE_VAR, v->type, t->loc, 0);
+ir_expr *hfx_d3d9_tx_var(d3d9_tx *t, ir_var *v) {
+    ir_expr *e = hfx_ir_new_expr(t->c, IE_VAR, v->type, t->loc, 0);
     e->var = v;
     return e;
 }
 
-ir_expr *d3d9_tx_swizzle(d3d9_tx *t, ir_expr *x, const uint8_t *comps, unsigned n) {
+ir_expr *hfx_d3d9_tx_swizzle(d3d9_tx *t, ir_expr *x, const uint8_t *comps, unsigned n) {
     hfx_base b = x->type->base;
-    ir_expr *e = ir_new_expr(t->c, IE_SWIZZLE, n == 1 ? hfx_type_scalar(t->c->types, b)
+    ir_expr *e = hfx_ir_new_expr(t->c, IE_SWIZZLE, n == 1 ? hfx_type_scalar(t->c->types, b)
                                                       : hfx_type_vector(t->c->types, b, n), t->loc, 1);
     e->a[0] = x;
     memcpy(e->comps, comps, n);
@@ -41,32 +41,32 @@ ir_expr *d3d9_tx_swizzle(d3d9_tx *t, ir_expr *x, const uint8_t *comps, unsigned 
     return e;
 }
 
-ir_expr *d3d9_tx_const4(d3d9_tx *t, const float v[4]) {
-    ir_expr *e = ir_new_expr(t->c, IE_CONST, t->f4, t->loc, 0);
+ir_expr *hfx_d3d9_tx_const4(d3d9_tx *t, const float v[4]) {
+    ir_expr *e = hfx_ir_new_expr(t->c, IE_CONST, t->f4, t->loc, 0);
     for (int k = 0; k < 4; k++) e->cval[k] = v[k];
     return e;
 }
 
-ir_expr *d3d9_tx_float4(d3d9_tx *t, ir_expr *x) {
+ir_expr *hfx_d3d9_tx_float4(d3d9_tx *t, ir_expr *x) {
     unsigned n = hfx_type_components(x->type);
     if (n == 4 && x->type->kind == TY_VECTOR) return x;
-    if (n == 1) return ir_new_convert(t->c, t->f4, x);
-    ir_expr *e = ir_new_expr(t->c, IE_CONSTRUCT, t->f4, t->loc, 1 + (4 - n));
+    if (n == 1) return hfx_ir_new_convert(t->c, t->f4, x);
+    ir_expr *e = hfx_ir_new_expr(t->c, IE_CONSTRUCT, t->f4, t->loc, 1 + (4 - n));
     e->a[0] = x;
-    for (unsigned k = n; k < 4; k++) e->a[1 + k - n] = ir_const_scalar(t->c, t->f1, 0, t->loc);
+    for (unsigned k = n; k < 4; k++) e->a[1 + k - n] = hfx_ir_const_scalar(t->c, t->f1, 0, t->loc);
     return e;
 }
 
-void d3d9_tx_add(d3d9_tx *t, uint32_t block, ir_stmt *s) {
+void hfx_d3d9_tx_add(d3d9_tx *t, uint32_t block, ir_stmt *s) {
     ir_stmt *b = t->blocks[block].s;
     if (!HFX_ARENA_GROW(t->c->arena, b->body, b->count, t->blocks[block].cap, 16)) return;
     b->body[b->count++] = s;
 }
 
-void d3d9_tx_emit(d3d9_tx *t, ir_expr *e) {
-    ir_stmt *s = ir_new_stmt(t->c, IS_EXPR, t->loc);
+void hfx_d3d9_tx_emit(d3d9_tx *t, ir_expr *e) {
+    ir_stmt *s = hfx_ir_new_stmt(t->c, IS_EXPR, t->loc);
     s->expr = e;
-    d3d9_tx_add(t, t->depth, s);
+    hfx_d3d9_tx_add(t, t->depth, s);
 }
 
 static hfx_decl *fake_decl(d3d9_tx *t, hfx_decl_kind k, const char *name, const hfx_type *ty, uint32_t mods,
@@ -90,14 +90,14 @@ static ir_var *new_local(d3d9_tx *t, const char *name, const hfx_type *ty) {
     v->glsl = name;
     v->type = ty;
     v->param = HFX_NONE;
-    ir_stmt *s = ir_new_stmt(t->c, IS_DECL, t->loc);
+    ir_stmt *s = hfx_ir_new_stmt(t->c, IS_DECL, t->loc);
     s->var = v;
-    s->expr = ty->kind == TY_ARRAY ? NULL : ir_const_scalar(t->c, ty, 0, t->loc);
-    d3d9_tx_add(t, 0, s);
+    s->expr = ty->kind == TY_ARRAY ? NULL : hfx_ir_const_scalar(t->c, ty, 0, t->loc);
+    hfx_d3d9_tx_add(t, 0, s);
     return v;
 }
 
-ir_var *d3d9_tx_local(d3d9_tx *t, const char *name, const hfx_type *ty) { return new_local(t, name, ty); }
+ir_var *hfx_d3d9_tx_local(d3d9_tx *t, const char *name, const hfx_type *ty) { return new_local(t, name, ty); }
 
 static ir_var *new_param(d3d9_tx *t, const char *name, const hfx_type *ty, bool out, const char *semantic) {
     ir_var *v = HFX_NEW(t->c->arena, ir_var);
@@ -110,13 +110,13 @@ static ir_var *new_param(d3d9_tx *t, const char *name, const hfx_type *ty, bool 
     v->param = HFX_NONE;
     if (HFX_ARENA_GROW(t->c->arena, t->params, t->param_count, t->param_cap, 8)) t->params[t->param_count++] = v;
     if (out) { /* D3D9 leaves unwritten output components undefined; hfx makes them zero */
-        ir_expr *e = ir_new_expr(t->c, IE_ASSIGN, ty, t->loc, 2);
+        ir_expr *e = hfx_ir_new_expr(t->c, IE_ASSIGN, ty, t->loc, 2);
         e->op = OP_NONE;
-        e->a[0] = d3d9_tx_var(t, v);
-        e->a[1] = ir_const_scalar(t->c, ty, 0, t->loc);
-        ir_stmt *s = ir_new_stmt(t->c, IS_EXPR, t->loc);
+        e->a[0] = hfx_d3d9_tx_var(t, v);
+        e->a[1] = hfx_ir_const_scalar(t->c, ty, 0, t->loc);
+        ir_stmt *s = hfx_ir_new_stmt(t->c, IS_EXPR, t->loc);
         s->expr = e;
-        d3d9_tx_add(t, 0, s);
+        hfx_d3d9_tx_add(t, 0, s);
     }
     return v;
 }
@@ -150,7 +150,7 @@ static ir_var *input(d3d9_tx *t, unsigned type, unsigned num) {
         sem = hfx_arena_printf(t->c->arena, "%s%u", slot == 1 ? "TEXCOORD" : "COLOR", num);
     } else {
         const d3d9_inst *d = find_dcl(s, type, num);
-        if (!d) { d3d9_tx_fail(t, "v%u is read but never declared", num); return NULL; }
+        if (!d) { hfx_d3d9_tx_fail(t, "v%u is read but never declared", num); return NULL; }
         sem = usage_semantic(t, d->usage, d->usage_index);
     }
     return t->inputs[slot][num] = new_param(t, hfx_arena_printf(t->c->arena, "hfx_in_%s", sem), ty, false, sem);
@@ -170,7 +170,7 @@ static ir_var *output(d3d9_tx *t, unsigned type, unsigned num) {
     case 2:
         if (t->s->model >= D3D9_SM(3, 0)) {
             const d3d9_inst *d = find_dcl(t->s, type, num);
-            if (!d) { d3d9_tx_fail(t, "o%u is written but never declared", num); return NULL; }
+            if (!d) { hfx_d3d9_tx_fail(t, "o%u is written but never declared", num); return NULL; }
             sem = usage_semantic(t, d->usage, d->usage_index);
             if (d->usage == 4 || d->usage == 11) ty = t->f1; /* psize, fog */
         } else sem = hfx_arena_printf(t->c->arena, "TEXCOORD%u", num);
@@ -199,7 +199,7 @@ static ir_var *constant_var(d3d9_tx *t, uint32_t i, ir_var_kind kind, const hfx_
     for (uint32_t j = 0; fx && j < fx->top_param_count && j < fx->param_count; j++)
         if (fx->params[j].name && strcmp(fx->params[j].name, k->name) == 0) { p = j; break; }
     if (p == HFX_NONE || !fx->params[p].glsl_name) {
-        d3d9_tx_fail(t, "constant '%s' names no parameter of the effect", k->name);
+        hfx_d3d9_tx_fail(t, "constant '%s' names no parameter of the effect", k->name);
         return NULL;
     }
     /* fxc lists a parameter once per register set it uses (an int in c for arithmetic and in i
@@ -208,7 +208,7 @@ static ir_var *constant_var(d3d9_tx *t, uint32_t i, ir_var_kind kind, const hfx_
         ir_var *o = t->consts[j];
         if (!o || o->param != p) continue;
         if (o->kind == kind && hfx_type_equal(o->type, ty)) return t->consts[i] = o;
-        d3d9_tx_fail(t, "constant '%s' is read as two different types", k->name);
+        hfx_d3d9_tx_fail(t, "constant '%s' is read as two different types", k->name);
         return NULL;
     }
     ir_var *v = HFX_NEW(t->c->arena, ir_var);
@@ -241,9 +241,9 @@ static const hfx_type *constant_type(d3d9_tx *t, const d3d9_constant *k) {
 static ir_expr *register_value(d3d9_tx *t, ir_expr *x) {
     if (x->type->base != B_FLOAT) {
         unsigned n = hfx_type_components(x->type);
-        x = ir_new_convert(t->c, n == 1 ? t->f1 : hfx_type_vector(t->c->types, B_FLOAT, n), x);
+        x = hfx_ir_new_convert(t->c, n == 1 ? t->f1 : hfx_type_vector(t->c->types, B_FLOAT, n), x);
     }
-    return d3d9_tx_float4(t, x);
+    return hfx_d3d9_tx_float4(t, x);
 }
 
 /* Register `num` of the float constant i: column j of a column-major matrix, row j of a row-major
@@ -251,18 +251,18 @@ static ir_expr *register_value(d3d9_tx *t, ir_expr *x) {
 static ir_expr *constant_register(d3d9_tx *t, uint32_t i, unsigned num) {
     const d3d9_constant *k = &t->s->constants[i];
     const hfx_type *el = constant_type(t, k);
-    if (!el) { d3d9_tx_fail(t, "constant '%s' of this type is not supported yet", k->name); return NULL; }
+    if (!el) { hfx_d3d9_tx_fail(t, "constant '%s' of this type is not supported yet", k->name); return NULL; }
     unsigned per = k->cls == 3 ? el->cols : k->cls == 2 ? el->rows : 1, elems = k->elements > 1 ? k->elements : 1;
     const hfx_type *ty = elems > 1 ? hfx_type_array(t->c->types, el, elems) : el;
     ir_var *v = constant_var(t, i, IRV_UNIFORM, ty);
     if (!v) return NULL;
     unsigned off = num - k->reg, e = off / per, j = off % per;
-    ir_expr *x = d3d9_tx_var(t, v);
+    ir_expr *x = hfx_d3d9_tx_var(t, v);
     if (elems > 1) {
-        if (e >= elems) return d3d9_tx_const4(t, (const float[4]){0, 0, 0, 0});
-        ir_expr *ix = ir_new_expr(t->c, IE_INDEX, el, t->loc, 2);
+        if (e >= elems) return hfx_d3d9_tx_const4(t, (const float[4]){0, 0, 0, 0});
+        ir_expr *ix = hfx_ir_new_expr(t->c, IE_INDEX, el, t->loc, 2);
         ix->a[0] = x;
-        ix->a[1] = ir_const_scalar(t->c, t->i1, e, t->loc);
+        ix->a[1] = hfx_ir_const_scalar(t->c, t->i1, e, t->loc);
         ix->range = IR_RANGE_IN_BOUNDS;
         x = ix;
     }
@@ -270,7 +270,7 @@ static ir_expr *constant_register(d3d9_tx *t, uint32_t i, unsigned num) {
         uint8_t comps[4];
         unsigned n = k->cls == 3 ? el->rows : el->cols;
         for (unsigned q = 0; q < n; q++) comps[q] = (uint8_t)(k->cls == 3 ? q * el->cols + j : j * el->cols + q);
-        x = d3d9_tx_swizzle(t, x, comps, n);
+        x = hfx_d3d9_tx_swizzle(t, x, comps, n);
     }
     return register_value(t, x);
 }
@@ -280,7 +280,7 @@ static ir_expr *preshader_register(d3d9_tx *t, uint32_t i, unsigned num) {
     const d3d9_preshader_out *o = &t->s->pres[i];
     if (!t->pres[i]) {
         if (!t->pack) {
-            d3d9_tx_fail(t, "preshaders need packed registers (HFXC_PACK_UNIFORMS)");
+            hfx_d3d9_tx_fail(t, "preshaders need packed registers (HFXC_PACK_UNIFORMS)");
             return NULL;
         }
         ir_var *v = HFX_NEW(t->c->arena, ir_var);
@@ -288,7 +288,7 @@ static ir_expr *preshader_register(d3d9_tx *t, uint32_t i, unsigned num) {
         v->name = v->glsl = hfx_arena_printf(t->c->arena, "hfx_pre_c%u", o->reg);
         v->type = o->count == 1 ? t->f4 : hfx_type_matrix(t->c->types, B_FLOAT, o->count, 4);
         v->param = HFX_NONE;
-        v->pre = d3d9_tx_const4(t, (const float[4]){0, 0, 0, 0}); /* marks it a preshader; never evaluated here */
+        v->pre = hfx_d3d9_tx_const4(t, (const float[4]){0, 0, 0, 0}); /* marks it a preshader; never evaluated here */
         v->pre_code = o->code;
         v->pre_words = o->words;
         v->pre_text = o->text ? o->text : hfx_arena_printf(t->c->arena, "c%u", o->reg);
@@ -296,25 +296,25 @@ static ir_expr *preshader_register(d3d9_tx *t, uint32_t i, unsigned num) {
         t->sh->pres[t->sh->pre_count++] = v;
         t->pres[i] = v;
     }
-    ir_expr *x = d3d9_tx_var(t, t->pres[i]);
+    ir_expr *x = hfx_d3d9_tx_var(t, t->pres[i]);
     if (o->count == 1) return x;
     unsigned row = num - o->reg;
     const uint8_t comps[4] = {(uint8_t)(row * 4), (uint8_t)(row * 4 + 1), (uint8_t)(row * 4 + 2), (uint8_t)(row * 4 + 3)};
-    return d3d9_tx_swizzle(t, x, comps, 4);
+    return hfx_d3d9_tx_swizzle(t, x, comps, 4);
 }
 
 /* A c register as float4: its def, a preshader's output, the parameter covering it, or zero. */
 static ir_expr *const_register(d3d9_tx *t, unsigned num) {
     for (uint32_t i = 0; i < t->s->inst_count; i++) {
         const d3d9_inst *in = &t->s->insts[i];
-        if (in->op == D3D9_DEF && in->dst.num == num) return d3d9_tx_const4(t, in->value.f);
+        if (in->op == D3D9_DEF && in->dst.num == num) return hfx_d3d9_tx_const4(t, in->value.f);
     }
     for (uint32_t i = 0; i < t->s->pre_count; i++)
         if (num >= t->s->pres[i].reg && num < t->s->pres[i].reg + t->s->pres[i].count && t->s->pres[i].count <= 4)
             return preshader_register(t, i, num);
     int k = constant_at(t->s, D3D9_RS_FLOAT4, num);
     if (k >= 0) return constant_register(t, (uint32_t)k, num);
-    return d3d9_tx_const4(t, (const float[4]){0, 0, 0, 0});
+    return hfx_d3d9_tx_const4(t, (const float[4]){0, 0, 0, 0});
 }
 
 /* The register file for relative reads: every c register up to the highest one declared or
@@ -328,27 +328,27 @@ static ir_var *register_file(d3d9_tx *t) {
     for (uint32_t i = 0; i < t->s->inst_count; i++)
         if (t->s->insts[i].op == D3D9_DEF && t->s->insts[i].dst.num + 1u > n) n = t->s->insts[i].dst.num + 1u;
     if (!n) n = 1;
-    if (n > HFX_FX_MAX_REGS) { d3d9_tx_fail(t, "relative addressing over %u registers", n); return NULL; }
+    if (n > HFX_FX_MAX_REGS) { hfx_d3d9_tx_fail(t, "relative addressing over %u registers", n); return NULL; }
     t->regfile = new_local(t, "hfx_c_file", hfx_type_array(t->c->types, t->f4, n));
     t->regfile_size = n;
     for (unsigned r = 0; r < n && !t->failed; r++) {
-        ir_expr *ix = ir_new_expr(t->c, IE_INDEX, t->f4, t->loc, 2);
-        ix->a[0] = d3d9_tx_var(t, t->regfile);
-        ix->a[1] = ir_const_scalar(t->c, t->i1, r, t->loc);
+        ir_expr *ix = hfx_ir_new_expr(t->c, IE_INDEX, t->f4, t->loc, 2);
+        ix->a[0] = hfx_d3d9_tx_var(t, t->regfile);
+        ix->a[1] = hfx_ir_const_scalar(t->c, t->i1, r, t->loc);
         ix->range = IR_RANGE_IN_BOUNDS;
-        ir_expr *as = ir_new_expr(t->c, IE_ASSIGN, t->f4, t->loc, 2);
+        ir_expr *as = hfx_ir_new_expr(t->c, IE_ASSIGN, t->f4, t->loc, 2);
         as->op = OP_NONE;
         as->a[0] = ix;
         as->a[1] = const_register(t, r);
-        ir_stmt *s = ir_new_stmt(t->c, IS_EXPR, t->loc);
+        ir_stmt *s = hfx_ir_new_stmt(t->c, IS_EXPR, t->loc);
         s->expr = as;
-        d3d9_tx_add(t, 0, s);
+        hfx_d3d9_tx_add(t, 0, s);
     }
     return t->regfile;
 }
 
 static ir_expr *int_op(d3d9_tx *t, hfx_op op, ir_expr *a, int k) {
-    return ir_new_binary(t->c, op, t->i1, a, ir_const_scalar(t->c, t->i1, k, t->loc));
+    return hfx_ir_new_binary(t->c, op, t->i1, a, hfx_ir_const_scalar(t->c, t->i1, k, t->loc));
 }
 
 /* A relative read inside an array constant (fxc's indexing of `float4x3 Bones[72]`): the
@@ -356,33 +356,33 @@ static ir_expr *int_op(d3d9_tx *t, hfx_op op, ir_expr *a, int k) {
 static ir_expr *array_register(d3d9_tx *t, uint32_t i, ir_expr *idx) {
     const d3d9_constant *k = &t->s->constants[i];
     const hfx_type *el = constant_type(t, k);
-    if (!el) { d3d9_tx_fail(t, "constant '%s' of this type is not supported yet", k->name); return NULL; }
+    if (!el) { hfx_d3d9_tx_fail(t, "constant '%s' of this type is not supported yet", k->name); return NULL; }
     unsigned per = k->cls == 3 ? el->cols : k->cls == 2 ? el->rows : 1;
     ir_var *v = constant_var(t, i, IRV_UNIFORM, hfx_type_array(t->c->types, el, k->elements));
     if (!v) return NULL;
     ir_expr *off = int_op(t, OP_SUB, idx, k->reg);
-    ir_expr *e = ir_new_expr(t->c, IE_INDEX, el, t->loc, 2);
-    e->a[0] = d3d9_tx_var(t, v);
+    ir_expr *e = hfx_ir_new_expr(t->c, IE_INDEX, el, t->loc, 2);
+    e->a[0] = hfx_d3d9_tx_var(t, v);
     e->a[1] = per > 1 ? int_op(t, OP_DIV, off, (int)per) : off;
     e->range = IR_RANGE_ANY;
     if (k->cls != 2 && k->cls != 3) return register_value(t, e);
-    ir_expr *j = int_op(t, OP_MOD, ir_clone_expr(t->c, off), (int)per);
+    ir_expr *j = int_op(t, OP_MOD, hfx_ir_clone_expr(t->c, off), (int)per);
     if (k->cls == 2) { /* row j */
-        ir_expr *row = ir_new_expr(t->c, IE_INDEX, hfx_type_vector(t->c->types, el->base, el->cols), t->loc, 2);
+        ir_expr *row = hfx_ir_new_expr(t->c, IE_INDEX, hfx_type_vector(t->c->types, el->base, el->cols), t->loc, 2);
         row->a[0] = e;
         row->a[1] = j;
         row->range = IR_RANGE_IN_BOUNDS;
         return register_value(t, row);
     }
-    ir_expr *col = ir_new_expr(t->c, IE_CONSTRUCT, hfx_type_vector(t->c->types, el->base, el->rows), t->loc, el->rows);
+    ir_expr *col = hfx_ir_new_expr(t->c, IE_CONSTRUCT, hfx_type_vector(t->c->types, el->base, el->rows), t->loc, el->rows);
     for (unsigned q = 0; q < el->rows; q++) { /* column j: element q of each row */
-        ir_expr *row = ir_new_expr(t->c, IE_INDEX, hfx_type_vector(t->c->types, el->base, el->cols), t->loc, 2);
-        row->a[0] = q ? ir_clone_expr(t->c, e) : e;
-        row->a[1] = ir_const_scalar(t->c, t->i1, q, t->loc);
+        ir_expr *row = hfx_ir_new_expr(t->c, IE_INDEX, hfx_type_vector(t->c->types, el->base, el->cols), t->loc, 2);
+        row->a[0] = q ? hfx_ir_clone_expr(t->c, e) : e;
+        row->a[1] = hfx_ir_const_scalar(t->c, t->i1, q, t->loc);
         row->range = IR_RANGE_IN_BOUNDS;
-        ir_expr *c = ir_new_expr(t->c, IE_INDEX, hfx_type_scalar(t->c->types, el->base), t->loc, 2);
+        ir_expr *c = hfx_ir_new_expr(t->c, IE_INDEX, hfx_type_scalar(t->c->types, el->base), t->loc, 2);
         c->a[0] = row;
-        c->a[1] = q ? ir_clone_expr(t->c, j) : j;
+        c->a[1] = q ? hfx_ir_clone_expr(t->c, j) : j;
         c->range = IR_RANGE_IN_BOUNDS;
         col->a[q] = c;
     }
@@ -392,24 +392,24 @@ static ir_expr *array_register(d3d9_tx *t, uint32_t i, ir_expr *idx) {
 /* c[a0.x + n] or c[aL + n]. */
 static ir_expr *relative_const(d3d9_tx *t, const d3d9_src *x) {
     ir_var *base = x->rel_type == D3D9_REG_ADDR ? t->a0 : t->aL;
-    if (!base) { d3d9_tx_fail(t, "relative addressing through a register never written"); return NULL; }
-    ir_expr *idx = x->rel_type == D3D9_REG_ADDR ? d3d9_tx_swizzle(t, d3d9_tx_var(t, base), &x->rel_comp, 1)
-                                                : d3d9_tx_var(t, base);
-    if (x->num) idx = ir_new_binary(t->c, OP_ADD, t->i1, idx, ir_const_scalar(t->c, t->i1, x->num, t->loc));
+    if (!base) { hfx_d3d9_tx_fail(t, "relative addressing through a register never written"); return NULL; }
+    ir_expr *idx = x->rel_type == D3D9_REG_ADDR ? hfx_d3d9_tx_swizzle(t, hfx_d3d9_tx_var(t, base), &x->rel_comp, 1)
+                                                : hfx_d3d9_tx_var(t, base);
+    if (x->num) idx = hfx_ir_new_binary(t->c, OP_ADD, t->i1, idx, hfx_ir_const_scalar(t->c, t->i1, x->num, t->loc));
     int k = constant_at(t->s, D3D9_RS_FLOAT4, x->num);
     if (k >= 0 && t->s->constants[k].elements > 1) return array_register(t, (uint32_t)k, idx);
     ir_var *file = register_file(t);
     if (!file) return NULL;
-    ir_expr *ix = ir_new_expr(t->c, IE_INDEX, t->f4, t->loc, 2);
-    ix->a[0] = d3d9_tx_var(t, file);
+    ir_expr *ix = hfx_ir_new_expr(t->c, IE_INDEX, t->f4, t->loc, 2);
+    ix->a[0] = hfx_d3d9_tx_var(t, file);
     ix->a[1] = idx;
     ix->range = IR_RANGE_ANY;
     return ix;
 }
 
-bool d3d9_tx_ps1(const d3d9_tx *t) { return t->s->stage == D3D9_PS && t->s->model < D3D9_SM(2, 0); }
+bool hfx_d3d9_tx_ps1(const d3d9_tx *t) { return t->s->stage == D3D9_PS && t->s->model < D3D9_SM(2, 0); }
 
-ir_var *d3d9_tx_texcoord(d3d9_tx *t, unsigned n) { return input(t, D3D9_REG_ADDR, n); }
+ir_var *hfx_d3d9_tx_texcoord(d3d9_tx *t, unsigned n) { return input(t, D3D9_REG_ADDR, n); }
 
 /* ps_1_1..1_3's t registers: what tex / texcoord put there. */
 static ir_var *texture_register(d3d9_tx *t, unsigned num) {
@@ -418,7 +418,7 @@ static ir_var *texture_register(d3d9_tx *t, unsigned num) {
     return t->texregs[num];
 }
 
-ir_expr *d3d9_tx_reg(d3d9_tx *t, unsigned type, unsigned num) {
+ir_expr *hfx_d3d9_tx_reg(d3d9_tx *t, unsigned type, unsigned num) {
     ir_var *v = NULL;
     switch (type) {
     case D3D9_REG_TEMP:
@@ -427,24 +427,24 @@ ir_expr *d3d9_tx_reg(d3d9_tx *t, unsigned type, unsigned num) {
         v = t->temps[num];
         break;
     case D3D9_REG_CONST:
-        if (d3d9_tx_ps1(t)) { /* ps_1_x constants are clamped to [-1, 1] when read */
+        if (hfx_d3d9_tx_ps1(t)) { /* ps_1_x constants are clamped to [-1, 1] when read */
             ir_expr *x = const_register(t, num);
             if (!x || x->kind == IE_CONST) {
                 for (int q = 0; x && q < 4; q++) x->cval[q] = x->cval[q] < -1 ? -1 : x->cval[q] > 1 ? 1 : x->cval[q];
                 return x;
             }
-            ir_expr *c = ir_new_expr(t->c, IE_INTRIN, t->f4, t->loc, 3);
+            ir_expr *c = hfx_ir_new_expr(t->c, IE_INTRIN, t->f4, t->loc, 3);
             c->intrin = HFX_INTR_CLAMP;
             c->a[0] = x;
-            c->a[1] = ir_const_scalar(t->c, t->f4, -1, t->loc);
-            c->a[2] = ir_const_scalar(t->c, t->f4, 1, t->loc);
+            c->a[1] = hfx_ir_const_scalar(t->c, t->f4, -1, t->loc);
+            c->a[2] = hfx_ir_const_scalar(t->c, t->f4, 1, t->loc);
             return c;
         }
         return const_register(t, num);
     case D3D9_REG_PREDICATE:
         if (!t->p0) t->p0 = new_local(t, "hfx_p0", t->b4);
-        return d3d9_tx_var(t, t->p0);
-    case D3D9_REG_CONSTBOOL: { ir_expr *b = d3d9_tx_bool(t, num); return b ? ir_new_convert(t->c, t->b4, b) : NULL; }
+        return hfx_d3d9_tx_var(t, t->p0);
+    case D3D9_REG_CONSTBOOL: { ir_expr *b = hfx_d3d9_tx_bool(t, num); return b ? hfx_ir_new_convert(t->c, t->b4, b) : NULL; }
     case D3D9_REG_INPUT: case D3D9_REG_MISC: v = input(t, type, num); break;
     case D3D9_REG_RASTOUT: case D3D9_REG_ATTROUT: case D3D9_REG_OUTPUT: case D3D9_REG_COLOROUT: case D3D9_REG_DEPTHOUT:
         v = output(t, type, num); /* the old value, for a predicated write */
@@ -452,36 +452,36 @@ ir_expr *d3d9_tx_reg(d3d9_tx *t, unsigned type, unsigned num) {
     case D3D9_REG_ADDR:
         if (t->s->stage == D3D9_PS && t->s->model < D3D9_SM(1, 4)) { v = texture_register(t, num); break; }
         if (t->s->stage == D3D9_PS) { v = input(t, type, num); break; }
-        d3d9_tx_fail(t, "a0 read as a value");
+        hfx_d3d9_tx_fail(t, "a0 read as a value");
         return NULL;
     default:
-        d3d9_tx_fail(t, "reading register type %u is not supported yet", type);
+        hfx_d3d9_tx_fail(t, "reading register type %u is not supported yet", type);
         return NULL;
     }
     if (!v) return NULL;
-    return d3d9_tx_float4(t, d3d9_tx_var(t, v));
+    return hfx_d3d9_tx_float4(t, hfx_d3d9_tx_var(t, v));
 }
 
 /* Source modifiers of SM2+ (ps_1_x's are refused with the model). */
 static ir_expr *modify(d3d9_tx *t, ir_expr *x, unsigned mod) {
     if (x->type->base == B_BOOL) {
         if (mod == D3D9_SMOD_NOT) {
-            ir_expr *n = ir_new_expr(t->c, IE_UNARY, x->type, t->loc, 1);
+            ir_expr *n = hfx_ir_new_expr(t->c, IE_UNARY, x->type, t->loc, 1);
             n->op = OP_NOT;
             n->a[0] = x;
             return n;
         }
-        if (mod != D3D9_SMOD_NONE) { d3d9_tx_fail(t, "source modifier %u on a bool is not supported", mod); return NULL; }
+        if (mod != D3D9_SMOD_NONE) { hfx_d3d9_tx_fail(t, "source modifier %u on a bool is not supported", mod); return NULL; }
         return x;
     }
     if (mod == D3D9_SMOD_ABS || mod == D3D9_SMOD_ABSNEG) {
-        ir_expr *a = ir_new_expr(t->c, IE_INTRIN, t->f4, t->loc, 1);
+        ir_expr *a = hfx_ir_new_expr(t->c, IE_INTRIN, t->f4, t->loc, 1);
         a->intrin = HFX_INTR_ABS;
         a->a[0] = x;
         x = a;
     }
     if (mod == D3D9_SMOD_NEG || mod == D3D9_SMOD_ABSNEG) {
-        ir_expr *n = ir_new_expr(t->c, IE_UNARY, t->f4, t->loc, 1);
+        ir_expr *n = hfx_ir_new_expr(t->c, IE_UNARY, t->f4, t->loc, 1);
         n->op = OP_NEG;
         n->a[0] = x;
         x = n;
@@ -497,23 +497,23 @@ static ir_expr *modify(d3d9_tx *t, ir_expr *x, unsigned mod) {
     case D3D9_SMOD_COMP: mul = -1; add = 1; break;
     case D3D9_SMOD_X2: mul = 2; break;
     case D3D9_SMOD_X2NEG: mul = -2; break;
-    default: d3d9_tx_fail(t, "source modifier %u is not supported here", mod); return NULL;
+    default: hfx_d3d9_tx_fail(t, "source modifier %u is not supported here", mod); return NULL;
     }
-    if (mul != 1) x = ir_new_binary(t->c, OP_MUL, t->f4, x, ir_const_scalar(t->c, t->f4, mul, t->loc));
-    if (add != 0) x = ir_new_binary(t->c, OP_ADD, t->f4, x, ir_const_scalar(t->c, t->f4, add, t->loc));
+    if (mul != 1) x = hfx_ir_new_binary(t->c, OP_MUL, t->f4, x, hfx_ir_const_scalar(t->c, t->f4, mul, t->loc));
+    if (add != 0) x = hfx_ir_new_binary(t->c, OP_ADD, t->f4, x, hfx_ir_const_scalar(t->c, t->f4, add, t->loc));
     return x;
 }
 
-ir_expr *d3d9_tx_read(d3d9_tx *t, const d3d9_src *x) {
+ir_expr *hfx_d3d9_tx_read(d3d9_tx *t, const d3d9_src *x) {
     ir_expr *r = NULL;
     if (x->relative) {
-        if (x->type != D3D9_REG_CONST) { d3d9_tx_fail(t, "relative addressing of register type %u is not supported yet", x->type); return NULL; }
+        if (x->type != D3D9_REG_CONST) { hfx_d3d9_tx_fail(t, "relative addressing of register type %u is not supported yet", x->type); return NULL; }
         r = relative_const(t, x);
-    } else r = d3d9_tx_reg(t, x->type, x->num);
+    } else r = hfx_d3d9_tx_reg(t, x->type, x->num);
     if (!r) return NULL;
     if (x->swizzle != 0xe4) {
         uint8_t comps[4] = {x->swizzle & 3, (x->swizzle >> 2) & 3, (x->swizzle >> 4) & 3, (x->swizzle >> 6) & 3};
-        r = d3d9_tx_swizzle(t, r, comps, 4);
+        r = hfx_d3d9_tx_swizzle(t, r, comps, 4);
     }
     return modify(t, r, x->mod);
 }
@@ -525,51 +525,51 @@ static const d3d9_inst *find_def(const d3d9_shader *s, unsigned op, unsigned num
     return NULL;
 }
 
-ir_expr *d3d9_tx_bool(d3d9_tx *t, unsigned num) {
+ir_expr *hfx_d3d9_tx_bool(d3d9_tx *t, unsigned num) {
     const hfx_type *b1 = hfx_type_scalar(t->c->types, B_BOOL);
     const d3d9_inst *d = find_def(t->s, D3D9_DEFB, num);
-    if (d) return ir_const_scalar(t->c, b1, d->value.u[0] != 0, t->loc);
+    if (d) return hfx_ir_const_scalar(t->c, b1, d->value.u[0] != 0, t->loc);
     int k = constant_at(t->s, D3D9_RS_BOOL, num);
-    if (k < 0) return ir_const_scalar(t->c, b1, 0, t->loc);
+    if (k < 0) return hfx_ir_const_scalar(t->c, b1, 0, t->loc);
     const d3d9_constant *c = &t->s->constants[k];
-    if (c->count > 1 || c->elements > 1 || c->cls != 0) { d3d9_tx_fail(t, "bool constant '%s' of this shape is not supported yet", c->name); return NULL; }
+    if (c->count > 1 || c->elements > 1 || c->cls != 0) { hfx_d3d9_tx_fail(t, "bool constant '%s' of this shape is not supported yet", c->name); return NULL; }
     ir_var *v = constant_var(t, (uint32_t)k, IRV_UNIFORM, b1);
-    return v ? d3d9_tx_var(t, v) : NULL;
+    return v ? hfx_d3d9_tx_var(t, v) : NULL;
 }
 
-ir_expr *d3d9_tx_int4(d3d9_tx *t, unsigned num) {
+ir_expr *hfx_d3d9_tx_int4(d3d9_tx *t, unsigned num) {
     const d3d9_inst *d = find_def(t->s, D3D9_DEFI, num);
     if (d) {
-        ir_expr *e = ir_new_expr(t->c, IE_CONST, t->i4, t->loc, 0);
+        ir_expr *e = hfx_ir_new_expr(t->c, IE_CONST, t->i4, t->loc, 0);
         for (int q = 0; q < 4; q++) e->cval[q] = d->value.i[q];
         return e;
     }
     int k = constant_at(t->s, D3D9_RS_INT4, num);
-    if (k < 0) return ir_const_scalar(t->c, t->i4, 0, t->loc);
+    if (k < 0) return hfx_ir_const_scalar(t->c, t->i4, 0, t->loc);
     const d3d9_constant *c = &t->s->constants[k];
-    if (c->count > 1 || c->elements > 1 || c->cls > 1 || c->cols > 4) { d3d9_tx_fail(t, "int constant '%s' of this shape is not supported yet", c->name); return NULL; }
+    if (c->count > 1 || c->elements > 1 || c->cls > 1 || c->cols > 4) { hfx_d3d9_tx_fail(t, "int constant '%s' of this shape is not supported yet", c->name); return NULL; }
     const hfx_type *ty = c->cls == 0 ? t->i1 : hfx_type_vector(t->c->types, B_INT, c->cols ? c->cols : 1);
     ir_var *v = constant_var(t, (uint32_t)k, IRV_UNIFORM, ty);
     if (!v) return NULL;
     unsigned n = hfx_type_components(ty);
-    if (n == 4) return d3d9_tx_var(t, v);
-    ir_expr *e = ir_new_expr(t->c, IE_CONSTRUCT, t->i4, t->loc, 1 + 4 - n);
-    e->a[0] = d3d9_tx_var(t, v);
-    for (unsigned q = n; q < 4; q++) e->a[1 + q - n] = ir_const_scalar(t->c, t->i1, 0, t->loc);
+    if (n == 4) return hfx_d3d9_tx_var(t, v);
+    ir_expr *e = hfx_ir_new_expr(t->c, IE_CONSTRUCT, t->i4, t->loc, 1 + 4 - n);
+    e->a[0] = hfx_d3d9_tx_var(t, v);
+    for (unsigned q = n; q < 4; q++) e->a[1 + q - n] = hfx_ir_const_scalar(t->c, t->i1, 0, t->loc);
     return e;
 }
 
-ir_var *d3d9_tx_sampler(d3d9_tx *t, unsigned num) {
+ir_var *hfx_d3d9_tx_sampler(d3d9_tx *t, unsigned num) {
     if (num >= 16) return NULL;
     if (t->samplers[num]) return t->samplers[num];
     int k = constant_at(t->s, D3D9_RS_SAMPLER, num);
     const d3d9_inst *d = find_dcl(t->s, D3D9_REG_SAMPLER, num);
-    if (k < 0) { d3d9_tx_fail(t, "s%u is sampled but no constant names it", num); return NULL; }
+    if (k < 0) { hfx_d3d9_tx_fail(t, "s%u is sampled but no constant names it", num); return NULL; }
     unsigned st = d ? d->sampler_type : t->s->constants[k].type == 14 ? 3 : t->s->constants[k].type == 13 ? 4
                 : t->s->constants[k].type == 11 ? 1 : 2; /* ps_1_x declares no samplers: the CTAB's type */
     hfx_dim dim = st == 2 ? DIM_2D : st == 3 ? DIM_CUBE : st == 4 ? DIM_3D : DIM_1D;
     if (t->s->constants[k].count > 1 || t->s->constants[k].elements > 1) {
-        d3d9_tx_fail(t, "sampler arrays are not supported yet");
+        hfx_d3d9_tx_fail(t, "sampler arrays are not supported yet");
         return NULL;
     }
     ir_var *v = constant_var(t, (uint32_t)k, IRV_SAMPLER, hfx_type_object(t->c->types, TY_SAMPLER, dim));
@@ -580,7 +580,7 @@ ir_var *d3d9_tx_sampler(d3d9_tx *t, unsigned num) {
 /* An output or temporary as an l-value, or NULL. */
 static ir_var *dst_var(d3d9_tx *t, const d3d9_dst *d) {
     switch (d->type) {
-    case D3D9_REG_TEMP: d3d9_tx_reg(t, D3D9_REG_TEMP, d->num); return d->num < 32 ? t->temps[d->num] : NULL;
+    case D3D9_REG_TEMP: hfx_d3d9_tx_reg(t, D3D9_REG_TEMP, d->num); return d->num < 32 ? t->temps[d->num] : NULL;
     case D3D9_REG_RASTOUT: case D3D9_REG_ATTROUT: case D3D9_REG_OUTPUT: case D3D9_REG_COLOROUT: case D3D9_REG_DEPTHOUT:
         return output(t, d->type, d->num);
     case D3D9_REG_PREDICATE:
@@ -592,36 +592,36 @@ static ir_var *dst_var(d3d9_tx *t, const d3d9_dst *d) {
             return t->a0;
         }
         if (t->s->model < D3D9_SM(1, 4)) return texture_register(t, d->num);
-        d3d9_tx_fail(t, "writing t registers (ps_1_x) is not supported yet");
+        hfx_d3d9_tx_fail(t, "writing t registers (ps_1_x) is not supported yet");
         return NULL;
     default:
-        d3d9_tx_fail(t, "writing register type %u is not supported yet", d->type);
+        hfx_d3d9_tx_fail(t, "writing register type %u is not supported yet", d->type);
         return NULL;
     }
 }
 
-void d3d9_tx_write(d3d9_tx *t, const d3d9_dst *d, ir_expr *value) {
+void hfx_d3d9_tx_write(d3d9_tx *t, const d3d9_dst *d, ir_expr *value) {
     if (!value || t->failed) return;
-    if (d->relative) { d3d9_tx_fail(t, "relative destinations are not supported yet"); return; }
+    if (d->relative) { hfx_d3d9_tx_fail(t, "relative destinations are not supported yet"); return; }
     ir_var *v = dst_var(t, d);
     if (!v) return;
     if (d->shift && value->type->base == B_FLOAT) { /* ps_1_x: _x2 _x4 _x8 _d2 _d4 _d8 */
         float k = d->shift > 0 ? (float)(1 << d->shift) : 1.0f / (float)(1 << -d->shift);
-        value = ir_new_binary(t->c, OP_MUL, value->type, value, ir_const_scalar(t->c, value->type, k, t->loc));
+        value = hfx_ir_new_binary(t->c, OP_MUL, value->type, value, hfx_ir_const_scalar(t->c, value->type, k, t->loc));
     }
     if (d->mods & D3D9_DMOD_SAT) {
-        ir_expr *s = ir_new_expr(t->c, IE_INTRIN, value->type, t->loc, 1);
+        ir_expr *s = hfx_ir_new_expr(t->c, IE_INTRIN, value->type, t->loc, 1);
         s->intrin = HFX_INTR_SATURATE;
         s->a[0] = value;
         value = s;
-    } else if (d3d9_tx_ps1(t) && value->type->base == B_FLOAT) {
+    } else if (hfx_d3d9_tx_ps1(t) && value->type->base == B_FLOAT) {
         /* ps_1_x registers hold [-1, 1] (ps_1_4: [-8, 8], D3D's minimum MaxPixelShaderValue) */
         float r = t->s->model == D3D9_SM(1, 4) ? 8.0f : 1.0f;
-        ir_expr *c = ir_new_expr(t->c, IE_INTRIN, value->type, t->loc, 3);
+        ir_expr *c = hfx_ir_new_expr(t->c, IE_INTRIN, value->type, t->loc, 3);
         c->intrin = HFX_INTR_CLAMP;
         c->a[0] = value;
-        c->a[1] = ir_const_scalar(t->c, value->type, -r, t->loc);
-        c->a[2] = ir_const_scalar(t->c, value->type, r, t->loc);
+        c->a[1] = hfx_ir_const_scalar(t->c, value->type, -r, t->loc);
+        c->a[2] = hfx_ir_const_scalar(t->c, value->type, r, t->loc);
         value = c;
     }
     uint8_t comps[4];
@@ -629,23 +629,23 @@ void d3d9_tx_write(d3d9_tx *t, const d3d9_dst *d, ir_expr *value) {
     for (unsigned k = 0; k < 4; k++)
         if (d->mask & (1u << k) && k < width) comps[n++] = (uint8_t)k;
     if (!n) return;
-    ir_expr *lhs = d3d9_tx_var(t, v), *rhs = value;
-    if (v->type->base != value->type->base) rhs = ir_new_convert(t->c, hfx_type_vector(t->c->types, v->type->base, 4), rhs);
-    if (width == 1) rhs = d3d9_tx_swizzle(t, rhs, comps, 1);
+    ir_expr *lhs = hfx_d3d9_tx_var(t, v), *rhs = value;
+    if (v->type->base != value->type->base) rhs = hfx_ir_new_convert(t->c, hfx_type_vector(t->c->types, v->type->base, 4), rhs);
+    if (width == 1) rhs = hfx_d3d9_tx_swizzle(t, rhs, comps, 1);
     else if (n < 4) {
-        lhs = d3d9_tx_swizzle(t, lhs, comps, n);
-        rhs = d3d9_tx_swizzle(t, rhs, comps, n);
+        lhs = hfx_d3d9_tx_swizzle(t, lhs, comps, n);
+        rhs = hfx_d3d9_tx_swizzle(t, rhs, comps, n);
     }
-    ir_expr *as = ir_new_expr(t->c, IE_ASSIGN, lhs->type, t->loc, 2);
+    ir_expr *as = hfx_ir_new_expr(t->c, IE_ASSIGN, lhs->type, t->loc, 2);
     as->op = OP_NONE;
     as->a[0] = lhs;
     as->a[1] = rhs;
-    d3d9_tx_emit(t, as);
+    hfx_d3d9_tx_emit(t, as);
 }
 
 static bool model_supported(d3d9_tx *t) {
     if (t->s->model >= D3D9_SM(2, 0) || t->s->stage == D3D9_PS || t->s->model == D3D9_SM(1, 1)) return true;
-    d3d9_tx_fail(t, "%s bytecode to GLSL is not supported yet", d3d9_model_name(t->s->stage, t->s->model));
+    hfx_d3d9_tx_fail(t, "%s bytecode to GLSL is not supported yet", hfx_d3d9_model_name(t->s->stage, t->s->model));
     return false;
 }
 
@@ -663,9 +663,9 @@ static void setup(d3d9_tx *t, ir_ctx *c, const d3d9_shader *s) {
     t->loc = (hfx_loc){s->file_index, 0, s->base};
     t->consts = HFX_NEW_ARRAY(c->arena, ir_var *, s->constant_count ? s->constant_count : 1);
     t->pres = HFX_NEW_ARRAY(c->arena, ir_var *, s->pre_count ? s->pre_count : 1);
-    t->prologue = ir_new_stmt(c, IS_BLOCK, t->loc);
+    t->prologue = hfx_ir_new_stmt(c, IS_BLOCK, t->loc);
     t->blocks[0].s = t->prologue;
-    t->blocks[1].s = ir_new_stmt(c, IS_BLOCK, t->loc);
+    t->blocks[1].s = hfx_ir_new_stmt(c, IS_BLOCK, t->loc);
     t->depth = 1;
 }
 
@@ -686,11 +686,11 @@ static ir_shader *finish(d3d9_tx *t) {
     f->param_count = t->param_count;
     t->depth = 0;
     ir_stmt *body = t->blocks[1].s;
-    d3d9_tx_add(t, 0, body);
+    hfx_d3d9_tx_add(t, 0, body);
     f->body = t->prologue;
     hfx_expr *compile = HFX_NEW(c->arena, hfx_expr);
     compile->kind = EX_COMPILE;
-    compile->profile = d3d9_model_name(s->stage, s->model);
+    compile->profile = hfx_d3d9_model_name(s->stage, s->model);
     compile->name = src->name;
     compile->intrinsic = -1;
     compile->loc = src->loc;
@@ -704,7 +704,7 @@ static ir_shader *finish(d3d9_tx *t) {
     return sh;
 }
 
-struct ir_shader *d3d9_to_ir(struct ir_ctx *c, const d3d9_shader *s, bool packed) {
+struct ir_shader *hfx_d3d9_to_ir(struct ir_ctx *c, const d3d9_shader *s, bool packed) {
     d3d9_tx t;
     memset(&t, 0, sizeof t);
     setup(&t, c, s);
@@ -713,13 +713,13 @@ struct ir_shader *d3d9_to_ir(struct ir_ctx *c, const d3d9_shader *s, bool packed
     if (!model_supported(&t)) return NULL;
     for (uint32_t i = 0; i < s->inst_count && !t.failed; i++) {
         t.loc = (hfx_loc){s->file_index, 0, s->base + s->insts[i].offset};
-        d3d9_tx_inst(&t, &s->insts[i]);
+        hfx_d3d9_tx_inst(&t, &s->insts[i]);
     }
     if (t.failed) return NULL;
-    if (t.depth != 1) { d3d9_tx_fail(&t, "flow control does not close"); return NULL; }
-    if (d3d9_tx_ps1(&t)) { /* ps_1_x has no oC0: the pixel is r0 at the end */
+    if (t.depth != 1) { hfx_d3d9_tx_fail(&t, "flow control does not close"); return NULL; }
+    if (hfx_d3d9_tx_ps1(&t)) { /* ps_1_x has no oC0: the pixel is r0 at the end */
         d3d9_dst oc = {D3D9_REG_COLOROUT, 0xf, 0, 0, false, 0, 0, 0, 0};
-        d3d9_tx_write(&t, &oc, d3d9_tx_reg(&t, D3D9_REG_TEMP, 0));
+        hfx_d3d9_tx_write(&t, &oc, hfx_d3d9_tx_reg(&t, D3D9_REG_TEMP, 0));
         if (t.failed) return NULL;
     }
     t.loc = (hfx_loc){s->file_index, 0, s->base};

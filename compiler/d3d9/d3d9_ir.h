@@ -32,28 +32,28 @@ typedef struct d3d9_tx {
 } d3d9_tx;
 
 /* --- d3d9_ir.c --- */
-void d3d9_tx_fail(d3d9_tx *t, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-ir_expr *d3d9_tx_var(d3d9_tx *t, ir_var *v);                      /* a read (or l-value) of v */
-ir_expr *d3d9_tx_swizzle(d3d9_tx *t, ir_expr *x, const uint8_t *comps, unsigned n);
-ir_expr *d3d9_tx_float4(d3d9_tx *t, ir_expr *x);                  /* x padded (or splat, for a scalar) to float4 */
-ir_expr *d3d9_tx_const4(d3d9_tx *t, const float v[4]);
-ir_expr *d3d9_tx_read(d3d9_tx *t, const d3d9_src *x);            /* a source register, swizzled and modified */
-ir_expr *d3d9_tx_reg(d3d9_tx *t, unsigned type, unsigned num);   /* a register as float4, no swizzle */
-ir_var *d3d9_tx_sampler(d3d9_tx *t, unsigned num);
-ir_expr *d3d9_tx_bool(d3d9_tx *t, unsigned num);                 /* b register: defb or its parameter */
-ir_expr *d3d9_tx_int4(d3d9_tx *t, unsigned num);                 /* i register: defi or its parameter */
-ir_var *d3d9_tx_local(d3d9_tx *t, const char *name, const hfx_type *ty); /* a zeroed local of the entry */
-ir_var *d3d9_tx_texcoord(d3d9_tx *t, unsigned n);                /* the TEXCOORDn input parameter */
-bool d3d9_tx_ps1(const d3d9_tx *t);                              /* ps_1_1 .. ps_1_4 */
-void d3d9_tx_write(d3d9_tx *t, const d3d9_dst *d, ir_expr *value); /* dst.mask = value.mask, with _sat */
-void d3d9_tx_add(d3d9_tx *t, uint32_t block, ir_stmt *s);        /* appends s to blocks[block] */
-void d3d9_tx_emit(d3d9_tx *t, ir_expr *e);                        /* e as a statement of the current block */
+void hfx_d3d9_tx_fail(d3d9_tx *t, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+ir_expr *hfx_d3d9_tx_var(d3d9_tx *t, ir_var *v);                      /* a read (or l-value) of v */
+ir_expr *hfx_d3d9_tx_swizzle(d3d9_tx *t, ir_expr *x, const uint8_t *comps, unsigned n);
+ir_expr *hfx_d3d9_tx_float4(d3d9_tx *t, ir_expr *x);                  /* x padded (or splat, for a scalar) to float4 */
+ir_expr *hfx_d3d9_tx_const4(d3d9_tx *t, const float v[4]);
+ir_expr *hfx_d3d9_tx_read(d3d9_tx *t, const d3d9_src *x);            /* a source register, swizzled and modified */
+ir_expr *hfx_d3d9_tx_reg(d3d9_tx *t, unsigned type, unsigned num);   /* a register as float4, no swizzle */
+ir_var *hfx_d3d9_tx_sampler(d3d9_tx *t, unsigned num);
+ir_expr *hfx_d3d9_tx_bool(d3d9_tx *t, unsigned num);                 /* b register: defb or its parameter */
+ir_expr *hfx_d3d9_tx_int4(d3d9_tx *t, unsigned num);                 /* i register: defi or its parameter */
+ir_var *hfx_d3d9_tx_local(d3d9_tx *t, const char *name, const hfx_type *ty); /* a zeroed local of the entry */
+ir_var *hfx_d3d9_tx_texcoord(d3d9_tx *t, unsigned n);                /* the TEXCOORDn input parameter */
+bool hfx_d3d9_tx_ps1(const d3d9_tx *t);                              /* ps_1_1 .. ps_1_4 */
+void hfx_d3d9_tx_write(d3d9_tx *t, const d3d9_dst *d, ir_expr *value); /* dst.mask = value.mask, with _sat */
+void hfx_d3d9_tx_add(d3d9_tx *t, uint32_t block, ir_stmt *s);        /* appends s to blocks[block] */
+void hfx_d3d9_tx_emit(d3d9_tx *t, ir_expr *e);                        /* e as a statement of the current block */
 
 /* --- d3d9_ir_ops.c --- */
-void d3d9_tx_inst(d3d9_tx *t, const d3d9_inst *in);
+void hfx_d3d9_tx_inst(d3d9_tx *t, const d3d9_inst *in);
 
 /* --- d3d9_ir_flow.c --- */
-bool d3d9_tx_flow(d3d9_tx *t, const d3d9_inst *in);             /* if / else / loops / break: translated, true */
-ir_expr *d3d9_tx_predicate(d3d9_tx *t, const d3d9_inst *in, ir_expr *value); /* (p0) value: select with the old dst */
+bool hfx_d3d9_tx_flow(d3d9_tx *t, const d3d9_inst *in);             /* if / else / loops / break: translated, true */
+ir_expr *hfx_d3d9_tx_predicate(d3d9_tx *t, const d3d9_inst *in, ir_expr *value); /* (p0) value: select with the old dst */
 
 #endif

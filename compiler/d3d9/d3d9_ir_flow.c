@@ -12,35 +12,35 @@ static hfx_op compare_op(unsigned control) {
 /* a.x op b.x, for if_cmp and break_cmp (their sources carry replicate swizzles). */
 static ir_expr *scalar_compare(d3d9_tx *t, const d3d9_inst *in) {
     hfx_op op = compare_op(in->control);
-    ir_expr *a = d3d9_tx_read(t, &in->src[0]), *b = d3d9_tx_read(t, &in->src[1]);
+    ir_expr *a = hfx_d3d9_tx_read(t, &in->src[0]), *b = hfx_d3d9_tx_read(t, &in->src[1]);
     if (!a || !b) return NULL;
-    if (op == OP_NONE) { d3d9_tx_fail(t, "comparison %u is not one of D3D9's", in->control); return NULL; }
+    if (op == OP_NONE) { hfx_d3d9_tx_fail(t, "comparison %u is not one of D3D9's", in->control); return NULL; }
     static const uint8_t x = 0;
-    return ir_new_binary(t->c, op, hfx_type_scalar(t->c->types, B_BOOL), d3d9_tx_swizzle(t, a, &x, 1),
-                         d3d9_tx_swizzle(t, b, &x, 1));
+    return hfx_ir_new_binary(t->c, op, hfx_type_scalar(t->c->types, B_BOOL), hfx_d3d9_tx_swizzle(t, a, &x, 1),
+                         hfx_d3d9_tx_swizzle(t, b, &x, 1));
 }
 
 /* The condition of `if`: a b register or a predicate component. */
 static ir_expr *bool_source(d3d9_tx *t, const d3d9_src *s) {
     if (s->type == D3D9_REG_CONSTBOOL) {
-        ir_expr *b = d3d9_tx_bool(t, s->num);
+        ir_expr *b = hfx_d3d9_tx_bool(t, s->num);
         if (b && s->mod == D3D9_SMOD_NOT) {
-            ir_expr *n = ir_new_expr(t->c, IE_UNARY, b->type, t->loc, 1);
+            ir_expr *n = hfx_ir_new_expr(t->c, IE_UNARY, b->type, t->loc, 1);
             n->op = OP_NOT;
             n->a[0] = b;
             b = n;
         }
         return b;
     }
-    if (s->type != D3D9_REG_PREDICATE) { d3d9_tx_fail(t, "a condition in register type %u is not supported", s->type); return NULL; }
-    ir_expr *p = d3d9_tx_read(t, s);
+    if (s->type != D3D9_REG_PREDICATE) { hfx_d3d9_tx_fail(t, "a condition in register type %u is not supported", s->type); return NULL; }
+    ir_expr *p = hfx_d3d9_tx_read(t, s);
     static const uint8_t x = 0;
-    return p ? d3d9_tx_swizzle(t, p, &x, 1) : NULL;
+    return p ? hfx_d3d9_tx_swizzle(t, p, &x, 1) : NULL;
 }
 
 static bool push(d3d9_tx *t, ir_stmt *s, ir_stmt *block) {
-    if (t->depth + 1 >= D3D9_MAX_DEPTH + 2) { d3d9_tx_fail(t, "flow control nests too deeply"); return false; }
-    d3d9_tx_add(t, t->depth, s);
+    if (t->depth + 1 >= D3D9_MAX_DEPTH + 2) { hfx_d3d9_tx_fail(t, "flow control nests too deeply"); return false; }
+    hfx_d3d9_tx_add(t, t->depth, s);
     t->depth++;
     t->blocks[t->depth].s = block;
     t->blocks[t->depth].cap = 0;
@@ -50,16 +50,16 @@ static bool push(d3d9_tx *t, ir_stmt *s, ir_stmt *block) {
 
 static void open_if(d3d9_tx *t, ir_expr *cond) {
     if (!cond) return;
-    ir_stmt *s = ir_new_stmt(t->c, IS_IF, t->loc);
+    ir_stmt *s = hfx_ir_new_stmt(t->c, IS_IF, t->loc);
     s->expr = cond;
-    s->then_s = ir_new_stmt(t->c, IS_BLOCK, t->loc);
+    s->then_s = hfx_ir_new_stmt(t->c, IS_BLOCK, t->loc);
     push(t, s, s->then_s);
 }
 
 /* for (int k = 0; k < count.x; k++) { [aL = count.y + k * count.z;] ... } */
 static void open_loop(d3d9_tx *t, const d3d9_src *counter, bool with_aL) {
-    if (counter->type != D3D9_REG_CONSTINT) { d3d9_tx_fail(t, "a loop counted by register type %u", counter->type); return; }
-    ir_expr *i4 = d3d9_tx_int4(t, counter->num);
+    if (counter->type != D3D9_REG_CONSTINT) { hfx_d3d9_tx_fail(t, "a loop counted by register type %u", counter->type); return; }
+    ir_expr *i4 = hfx_d3d9_tx_int4(t, counter->num);
     if (!i4) return;
     ir_var *k = HFX_NEW(t->c->arena, ir_var);
     k->kind = IRV_LOCAL;
@@ -72,52 +72,52 @@ static void open_loop(d3d9_tx *t, const d3d9_src *counter, bool with_aL) {
     d->name = k->name;
     d->type = t->i1;
     k->decl = d;
-    ir_stmt *s = ir_new_stmt(t->c, IS_FOR, t->loc);
-    s->init = ir_new_stmt(t->c, IS_DECL, t->loc);
+    ir_stmt *s = hfx_ir_new_stmt(t->c, IS_FOR, t->loc);
+    s->init = hfx_ir_new_stmt(t->c, IS_DECL, t->loc);
     s->init->var = k;
-    s->init->expr = ir_const_scalar(t->c, t->i1, 0, t->loc);
+    s->init->expr = hfx_ir_const_scalar(t->c, t->i1, 0, t->loc);
     static const uint8_t cx = 0, cy = 1, cz = 2;
-    s->expr = ir_new_binary(t->c, OP_LT, hfx_type_scalar(t->c->types, B_BOOL), d3d9_tx_var(t, k),
-                            d3d9_tx_swizzle(t, i4, &cx, 1));
-    ir_expr *step = ir_new_expr(t->c, IE_ASSIGN, t->i1, t->loc, 2);
+    s->expr = hfx_ir_new_binary(t->c, OP_LT, hfx_type_scalar(t->c->types, B_BOOL), hfx_d3d9_tx_var(t, k),
+                            hfx_d3d9_tx_swizzle(t, i4, &cx, 1));
+    ir_expr *step = hfx_ir_new_expr(t->c, IE_ASSIGN, t->i1, t->loc, 2);
     step->op = OP_NONE;
-    step->a[0] = d3d9_tx_var(t, k);
-    step->a[1] = ir_new_binary(t->c, OP_ADD, t->i1, d3d9_tx_var(t, k), ir_const_scalar(t->c, t->i1, 1, t->loc));
+    step->a[0] = hfx_d3d9_tx_var(t, k);
+    step->a[1] = hfx_ir_new_binary(t->c, OP_ADD, t->i1, hfx_d3d9_tx_var(t, k), hfx_ir_const_scalar(t->c, t->i1, 1, t->loc));
     s->step = step;
-    s->then_s = ir_new_stmt(t->c, IS_BLOCK, t->loc);
+    s->then_s = hfx_ir_new_stmt(t->c, IS_BLOCK, t->loc);
     if (!push(t, s, s->then_s) || !with_aL) return;
-    if (!t->aL) t->aL = d3d9_tx_local(t, "hfx_aL", t->i1);
-    ir_expr *as = ir_new_expr(t->c, IE_ASSIGN, t->i1, t->loc, 2);
+    if (!t->aL) t->aL = hfx_d3d9_tx_local(t, "hfx_aL", t->i1);
+    ir_expr *as = hfx_ir_new_expr(t->c, IE_ASSIGN, t->i1, t->loc, 2);
     as->op = OP_NONE;
-    as->a[0] = d3d9_tx_var(t, t->aL);
-    as->a[1] = ir_new_binary(t->c, OP_ADD, t->i1, d3d9_tx_swizzle(t, ir_clone_expr(t->c, i4), &cy, 1),
-                             ir_new_binary(t->c, OP_MUL, t->i1, d3d9_tx_var(t, k),
-                                           d3d9_tx_swizzle(t, ir_clone_expr(t->c, i4), &cz, 1)));
-    d3d9_tx_emit(t, as);
+    as->a[0] = hfx_d3d9_tx_var(t, t->aL);
+    as->a[1] = hfx_ir_new_binary(t->c, OP_ADD, t->i1, hfx_d3d9_tx_swizzle(t, hfx_ir_clone_expr(t->c, i4), &cy, 1),
+                             hfx_ir_new_binary(t->c, OP_MUL, t->i1, hfx_d3d9_tx_var(t, k),
+                                           hfx_d3d9_tx_swizzle(t, hfx_ir_clone_expr(t->c, i4), &cz, 1)));
+    hfx_d3d9_tx_emit(t, as);
 }
 
 static void add_break(d3d9_tx *t, ir_expr *cond) {
-    ir_stmt *b = ir_new_stmt(t->c, IS_BREAK, t->loc);
-    if (!cond) { d3d9_tx_add(t, t->depth, b); return; }
-    ir_stmt *s = ir_new_stmt(t->c, IS_IF, t->loc);
+    ir_stmt *b = hfx_ir_new_stmt(t->c, IS_BREAK, t->loc);
+    if (!cond) { hfx_d3d9_tx_add(t, t->depth, b); return; }
+    ir_stmt *s = hfx_ir_new_stmt(t->c, IS_IF, t->loc);
     s->expr = cond;
     s->then_s = b;
-    d3d9_tx_add(t, t->depth, s);
+    hfx_d3d9_tx_add(t, t->depth, s);
 }
 
 static void close_block(d3d9_tx *t, ir_stmt_kind want, const char *what) {
-    if (t->depth <= 1 || t->open[t->depth]->kind != want) { d3d9_tx_fail(t, "%s closes nothing", what); return; }
+    if (t->depth <= 1 || t->open[t->depth]->kind != want) { hfx_d3d9_tx_fail(t, "%s closes nothing", what); return; }
     t->depth--;
 }
 
-bool d3d9_tx_flow(d3d9_tx *t, const d3d9_inst *in) {
+bool hfx_d3d9_tx_flow(d3d9_tx *t, const d3d9_inst *in) {
     switch (in->op) {
     case D3D9_IF: open_if(t, bool_source(t, &in->src[0])); return true;
     case D3D9_IFC: open_if(t, scalar_compare(t, in)); return true;
     case D3D9_ELSE: {
         ir_stmt *s = t->depth > 1 ? t->open[t->depth] : NULL;
-        if (!s || s->kind != IS_IF || s->else_s) { d3d9_tx_fail(t, "else without an if"); return true; }
-        s->else_s = ir_new_stmt(t->c, IS_BLOCK, t->loc);
+        if (!s || s->kind != IS_IF || s->else_s) { hfx_d3d9_tx_fail(t, "else without an if"); return true; }
+        s->else_s = hfx_ir_new_stmt(t->c, IS_BLOCK, t->loc);
         t->blocks[t->depth].s = s->else_s;
         t->blocks[t->depth].cap = 0;
         return true;
@@ -135,15 +135,15 @@ bool d3d9_tx_flow(d3d9_tx *t, const d3d9_inst *in) {
 }
 
 /* (p0.swz) op dst, ...: where the predicate is false the destination keeps its value. */
-ir_expr *d3d9_tx_predicate(d3d9_tx *t, const d3d9_inst *in, ir_expr *value) {
+ir_expr *hfx_d3d9_tx_predicate(d3d9_tx *t, const d3d9_inst *in, ir_expr *value) {
     d3d9_src p = in->pred;
     bool negate = p.mod == D3D9_SMOD_NOT;
     p.mod = D3D9_SMOD_NONE;
-    ir_expr *cond = d3d9_tx_read(t, &p);
-    ir_expr *old = d3d9_tx_reg(t, in->dst.type, in->dst.num);
+    ir_expr *cond = hfx_d3d9_tx_read(t, &p);
+    ir_expr *old = hfx_d3d9_tx_reg(t, in->dst.type, in->dst.num);
     if (!cond || !old || !value) return NULL;
-    if (value->type->base != B_FLOAT) { d3d9_tx_fail(t, "a predicated write of this register is not supported yet"); return NULL; }
-    ir_expr *e = ir_new_expr(t->c, IE_SELECT, t->f4, t->loc, 3);
+    if (value->type->base != B_FLOAT) { hfx_d3d9_tx_fail(t, "a predicated write of this register is not supported yet"); return NULL; }
+    ir_expr *e = hfx_ir_new_expr(t->c, IE_SELECT, t->f4, t->loc, 3);
     e->a[0] = cond;
     e->a[1] = negate ? old : value;
     e->a[2] = negate ? value : old;

@@ -45,10 +45,10 @@ static const char *const type_names[] = {
 static void check_reg(d3d9_reader *r, uint32_t at, unsigned type, unsigned num, bool dst) {
     unsigned lim = reg_limit(r->sh->stage, r->sh->model, type, dst);
     const char *name = type < 20 ? type_names[type] : "?";
-    const char *model = d3d9_model_name(r->sh->stage, r->sh->model);
-    if (!lim) d3d9_fail(r, at, X_D3D9_OPERAND, "register type %u (%s) cannot be %s in %s", type, name,
+    const char *model = hfx_d3d9_model_name(r->sh->stage, r->sh->model);
+    if (!lim) hfx_d3d9_fail(r, at, X_D3D9_OPERAND, "register type %u (%s) cannot be %s in %s", type, name,
                         dst ? "written" : "read", model);
-    else if (num >= lim) d3d9_fail(r, at, X_D3D9_OPERAND, "register %s%u out of range in %s (%u)", name, num, model, lim);
+    else if (num >= lim) hfx_d3d9_fail(r, at, X_D3D9_OPERAND, "register %s%u out of range in %s (%u)", name, num, model, lim);
 }
 
 /* Declarations name a register of their own kind: v, t, s, o, vPos / vFace. */
@@ -61,15 +61,15 @@ static void check_decl_reg(d3d9_reader *r, uint32_t at, unsigned type, unsigned 
     else if (type == D3D9_REG_SAMPLER) lim = reg_limit(st, m, type, false);
     else if (type == D3D9_REG_ADDR) lim = st == D3D9_PS && m < D3D9_SM(3, 0) ? 8 : 0;
     else if (type == D3D9_REG_MISC) lim = reg_limit(st, m, type, false);
-    if (!lim) d3d9_fail(r, at, X_D3D9_OPERAND, "dcl of register type %u in %s", type, d3d9_model_name(st, m));
-    else if (num >= lim) d3d9_fail(r, at, X_D3D9_OPERAND, "dcl of register %u out of range (%u)", num, lim);
+    if (!lim) hfx_d3d9_fail(r, at, X_D3D9_OPERAND, "dcl of register type %u in %s", type, hfx_d3d9_model_name(st, m));
+    else if (num >= lim) hfx_d3d9_fail(r, at, X_D3D9_OPERAND, "dcl of register %u out of range (%u)", num, lim);
 }
 
 typedef struct cursor { d3d9_reader *r; uint32_t at, end; bool short_; } cursor;
 
 static bool next(cursor *c, uint32_t *t) {
     if (c->at >= c->end) { c->short_ = true; return false; }
-    *t = d3d9_word(c->r, c->at++);
+    *t = hfx_d3d9_word(c->r, c->at++);
     return true;
 }
 
@@ -83,14 +83,14 @@ static void read_relative(cursor *c, uint8_t *type, uint16_t *num, uint8_t *comp
     *num = t & 0x7ff;
     *comp = (t >> 16) & 3;
     if (*type != D3D9_REG_ADDR && *type != D3D9_REG_LOOP)
-        d3d9_fail(r, at, X_D3D9_OPERAND, "relative addressing through register type %u (a0 or aL expected)", *type);
+        hfx_d3d9_fail(r, at, X_D3D9_OPERAND, "relative addressing through register type %u (a0 or aL expected)", *type);
     else check_reg(r, at, *type, *num, false);
 }
 
 static void read_dst(cursor *c, d3d9_dst *d, bool check) {
     uint32_t t, at = c->at;
     if (!next(c, &t)) return;
-    if (!(t & 0x80000000u)) d3d9_fail(c->r, at, X_D3D9_OPERAND, "parameter token with bit 31 clear");
+    if (!(t & 0x80000000u)) hfx_d3d9_fail(c->r, at, X_D3D9_OPERAND, "parameter token with bit 31 clear");
     d->type = (uint8_t)reg_type(t);
     d->num = t & 0x7ff;
     d->relative = (t >> 13) & 1;
@@ -105,14 +105,14 @@ static void read_dst(cursor *c, d3d9_dst *d, bool check) {
 static void read_src(cursor *c, d3d9_src *s) {
     uint32_t t, at = c->at;
     if (!next(c, &t)) return;
-    if (!(t & 0x80000000u)) d3d9_fail(c->r, at, X_D3D9_OPERAND, "parameter token with bit 31 clear");
+    if (!(t & 0x80000000u)) hfx_d3d9_fail(c->r, at, X_D3D9_OPERAND, "parameter token with bit 31 clear");
     s->type = (uint8_t)reg_type(t);
     s->num = t & 0x7ff;
     s->relative = (t >> 13) & 1;
     s->swizzle = (t >> 16) & 0xff;
     s->mod = (t >> 24) & 0xf;
     fold_const(&s->type, &s->num);
-    if (s->mod > D3D9_SMOD_NOT) d3d9_fail(c->r, at, X_D3D9_OPERAND, "unknown source modifier %u", s->mod);
+    if (s->mod > D3D9_SMOD_NOT) hfx_d3d9_fail(c->r, at, X_D3D9_OPERAND, "unknown source modifier %u", s->mod);
     if (s->relative) read_relative(c, &s->rel_type, &s->rel_num, &s->rel_comp);
     check_reg(c->r, at, s->type, s->num, false);
 }
@@ -128,11 +128,11 @@ static void read_dcl(cursor *c, d3d9_inst *in) {
     if (in->dst.type == D3D9_REG_SAMPLER) {
         in->sampler_type = (t >> 27) & 0xf;
         if (in->sampler_type < 1 || in->sampler_type > 4)
-            d3d9_fail(c->r, at - 1, X_D3D9_OPERAND, "dcl of a sampler of unknown type %u", in->sampler_type);
+            hfx_d3d9_fail(c->r, at - 1, X_D3D9_OPERAND, "dcl of a sampler of unknown type %u", in->sampler_type);
     } else {
         in->usage = t & 0x1f;
         in->usage_index = (t >> 16) & 0xf;
-        if (in->usage > 13) d3d9_fail(c->r, at - 1, X_D3D9_OPERAND, "dcl with unknown usage %u", in->usage);
+        if (in->usage > 13) hfx_d3d9_fail(c->r, at - 1, X_D3D9_OPERAND, "dcl with unknown usage %u", in->usage);
     }
     check_decl_reg(c->r, at, in->dst.type, in->dst.num);
 }
@@ -145,15 +145,15 @@ static void read_def(cursor *c, d3d9_inst *in, const d3d9_op_info *op) {
     unsigned want = op->token == D3D9_DEF ? D3D9_REG_CONST : op->token == D3D9_DEFI ? D3D9_REG_CONSTINT
                                                                                      : D3D9_REG_CONSTBOOL;
     if (!c->short_ && in->dst.type != want)
-        d3d9_fail(c->r, at, X_D3D9_OPERAND, "%s of register type %u", op->name, in->dst.type);
+        hfx_d3d9_fail(c->r, at, X_D3D9_OPERAND, "%s of register type %u", op->name, in->dst.type);
     unsigned n = op->flags & D3D9_OPF_DEF4 ? 4 : 1;
     for (unsigned k = 0; k < n; k++) next(c, &in->value.u[k]);
 }
 
-void d3d9_read_operands(d3d9_reader *r, d3d9_inst *in, const d3d9_op_info *op, uint32_t i, uint32_t len) {
+void hfx_d3d9_read_operands(d3d9_reader *r, d3d9_inst *in, const d3d9_op_info *op, uint32_t i, uint32_t len) {
     cursor c = {r, i + 1, i + 1 + len, false};
     unsigned ndst, nsrc;
-    d3d9_operand_counts(op, r->sh->model, &ndst, &nsrc);
+    hfx_d3d9_operand_counts(op, r->sh->model, &ndst, &nsrc);
     if (op->token == D3D9_DCL) read_dcl(&c, in);
     else if (op->flags & (D3D9_OPF_DEF4 | D3D9_OPF_DEF1)) read_def(&c, in, op);
     else {
@@ -163,7 +163,7 @@ void d3d9_read_operands(d3d9_reader *r, d3d9_inst *in, const d3d9_op_info *op, u
     }
     unsigned want = op->token == D3D9_DCL ? 2 : (op->flags & D3D9_OPF_DEF4) ? 5 : (op->flags & D3D9_OPF_DEF1) ? 2
                   : ndst + nsrc + in->predicated;
-    if (c.short_) d3d9_fail(r, i, X_D3D9_OPERAND, "%s needs %u operand tokens, has %u", op->name, want, len);
-    else if (c.at != c.end) d3d9_fail(r, i, X_D3D9_OPERAND, "%s has %u operand tokens, expected %u", op->name,
+    if (c.short_) hfx_d3d9_fail(r, i, X_D3D9_OPERAND, "%s needs %u operand tokens, has %u", op->name, want, len);
+    else if (c.at != c.end) hfx_d3d9_fail(r, i, X_D3D9_OPERAND, "%s has %u operand tokens, expected %u", op->name,
                                       len, c.at - i - 1);
 }

@@ -1,7 +1,7 @@
 /* build_code.c: a state value that reads parameters (`AlphaRef = (Ref * 255);`,
  * `CullMode = (Cull ? 2 : 1);`, `FillMode = (Modes[Index]);`) as a common/eval_code program in
  * fx->exprs, which the runtime runs at Apply with the compiler's arithmetic. The value is built
- * as IR (ir_build_value), folded as fxc folds it (ir_fold_value) and written by ir/pre_code.c,
+ * as IR (hfx_ir_build_value), folded as fxc folds it (hfx_ir_fold_value) and written by ir/pre_code.c,
  * the one writer of evaluator programs (preshaders are written by it too), so a state value and
  * a preshader of the same expression are the same program. Anything else is not compiled. */
 #include <string.h>
@@ -31,10 +31,10 @@ static bool compile(hfx_builder *b, const hfx_expr *e, const hfx_state_info *nam
                     uint32_t *words) {
     ir_ctx c = {b->arena, b->diags, b->types, b->ast, b->fx};
     ir_value_src src = {names, param_of, b};
-    ir_expr *v = ir_build_value(&c, e, &src);
+    ir_expr *v = hfx_ir_build_value(&c, e, &src);
     if (!v) return false;
-    ir_fold_value(&c, &v);
-    uint32_t n = 0, *code = ir_value_code(&c, v, clamp, &n);
+    hfx_ir_fold_value(&c, &v);
+    uint32_t n = 0, *code = hfx_ir_value_code(&c, v, clamp, &n);
     return code && append(b, code, n, first, words);
 }
 

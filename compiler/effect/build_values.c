@@ -29,7 +29,7 @@ static bool components(hfx_builder *b, const ir_expr *e, hfx_cvec *out) {
             if (!components(b, e->a[i], out)) return false;
         return true;
     }
-    if (!ir_is_const(e) || !hfx_type_is_numeric(e->type)) return false;
+    if (!hfx_ir_is_const(e) || !hfx_type_is_numeric(e->type)) return false;
     out->integral = out->integral && is_integral_base(e->type->base);
     for (unsigned i = 0; i < hfx_type_components(e->type); i++)
         if (!push(b, out, e->cval[i])) return false;
@@ -43,9 +43,9 @@ bool hfx_build_eval(hfx_builder *b, const hfx_expr *e, hfx_cvec *out, const hfx_
     out->integral = true;
     ir_ctx c = {b->arena, b->diags, b->types, b->ast, b->fx};
     ir_value_src src = {names, NULL, NULL};
-    ir_expr *v = e ? ir_build_value(&c, e, &src) : NULL;
+    ir_expr *v = e ? hfx_ir_build_value(&c, e, &src) : NULL;
     if (!v) return false;
-    ir_fold_value(&c, &v);
+    hfx_ir_fold_value(&c, &v);
     return components(b, v, out) && out->n > 0;
 }
 

@@ -105,10 +105,10 @@ static hfx_fx_attribute *assign_locations(hfx_arena *a, const strset *sems) {
 
 static ir_shader *build_stage(hfx_codegen *cg, const hfx_expr *e, ir_stage st) {
     uint32_t errors = cg->c.diags->errors;
-    ir_shader *sh = ir_build(&cg->c, e, st);
+    ir_shader *sh = hfx_ir_build(&cg->c, e, st);
     bool preshade = cg->pack && !(cg->c.diags->flags & HFXC_NO_PRESHADERS);
     unsigned opts = (cg->pack ? IR_LOWER_PACKED : 0) | (preshade ? IR_LOWER_PRESHADE : 0);
-    if (!sh || cg->c.diags->errors > errors || ir_lower(&cg->c, sh, opts) != 0) return NULL;
+    if (!sh || cg->c.diags->errors > errors || hfx_ir_lower(&cg->c, sh, opts) != 0) return NULL;
     return sh;
 }
 
@@ -295,7 +295,7 @@ static void mark_switches(const hfx_fx_effect *fx, ir_shader *const sh[2], hfx_f
 static void drop_derived(strset *s, const glsl_iface *io) {
     uint32_t n = 0;
     for (uint32_t i = 0; i < s->count; i++)
-        if (!glsl_iface_derived(io, s->items[i])) s->items[n++] = s->items[i];
+        if (!hfx_glsl_iface_derived(io, s->items[i])) s->items[n++] = s->items[i];
     s->count = n;
 }
 
@@ -306,7 +306,7 @@ static int build_interface(hfx_codegen *cg, ir_shader *vs, ir_shader *ps, bool f
     ir_leaf *l;
     int n;
     if (ps) {
-        if ((n = ir_entry_leaves(&cg->c, ps->entry, false, &l)) < 0) return -1;
+        if ((n = hfx_ir_entry_leaves(&cg->c, ps->entry, false, &l)) < 0) return -1;
         for (int i = 0; i < n; i++) {
             if (!is_varying(l[i].semantic, true)) continue;
             set_add(a, &vary, l[i].semantic);
@@ -314,14 +314,14 @@ static int build_interface(hfx_codegen *cg, ir_shader *vs, ir_shader *ps, bool f
         }
     }
     if (vs) {
-        if ((n = ir_entry_leaves(&cg->c, vs->entry, true, &l)) < 0) return -1;
+        if ((n = hfx_ir_entry_leaves(&cg->c, vs->entry, true, &l)) < 0) return -1;
         for (int i = 0; i < n; i++)
             if (is_varying(l[i].semantic, false)) {
                 set_add(a, &vary, l[i].semantic);
                 set_add(a, &writes, l[i].semantic);
                 if (l[i].flat) set_add(a, &flat, l[i].semantic); /* either stage's nointerpolation makes it flat */
             }
-        if ((n = ir_entry_leaves(&cg->c, vs->entry, false, &l)) < 0) return -1;
+        if ((n = hfx_ir_entry_leaves(&cg->c, vs->entry, false, &l)) < 0) return -1;
         for (int i = 0; i < n; i++) set_add(a, &attrs, l[i].semantic);
     } else { /* fixed-function stand-in: position plus whatever the pixel shader reads */
         set_add(a, &attrs, "POSITION0");
@@ -362,7 +362,7 @@ static int copy_attributes(const glsl_iface *io, hfx_fx_program *out) {
 static bool writes_color0(hfx_codegen *cg, const ir_shader *ps) {
     if (!ps) return true;
     ir_leaf *l;
-    int n = ir_entry_leaves(&cg->c, ps->entry, true, &l);
+    int n = hfx_ir_entry_leaves(&cg->c, ps->entry, true, &l);
     for (int i = 0; i < n; i++)
         if (strcmp(l[i].semantic, "COLOR0") == 0) return true;
     return false;
@@ -382,8 +382,8 @@ static char *spoil(char *text) {
 static char *print_stage(hfx_codegen *cg, const ir_shader *sh, int s, const glsl_iface *io, hfx_target t,
                          const hfx_fx_program *out) {
     const char *twin = t == HFX_TARGET_GLSLES300 ? out->code[s][HFX_TARGET_GLSL330].data : NULL;
-    char *text = twin && !(cg->c.diags->flags & HFXC_TEST_BREAK_GLSL) ? glsl_retarget(twin, HFX_TARGET_GLSL330, t) : NULL;
-    return text ? text : glsl_print(&cg->c, sh, s == 0 ? IR_VERTEX : IR_PIXEL, io, t);
+    char *text = twin && !(cg->c.diags->flags & HFXC_TEST_BREAK_GLSL) ? hfx_glsl_retarget(twin, HFX_TARGET_GLSL330, t) : NULL;
+    return text ? text : hfx_glsl_print(&cg->c, sh, s == 0 ? IR_VERTEX : IR_PIXEL, io, t);
 }
 
 /* The program of two lowered stages (either may be NULL: the fixed-function stand-in); `loc`
@@ -392,7 +392,7 @@ static int program_of(hfx_codegen *cg, ir_shader *sh[2], bool flat_colors, hfx_l
     glsl_iface io = {0};
     ir_program p = {sh[0], sh[1], (cg->pack ? IR_LOWER_PACKED : 0) |
                     (cg->c.diags->flags & HFXC_NO_DERIVED_VARYINGS ? 0 : IR_LOWER_DERIVE), NULL, 0};
-    ir_lower_program(&cg->c, &p);
+    hfx_ir_lower_program(&cg->c, &p);
     sh[0] = p.vs;
     sh[1] = p.ps;
     io.derived = p.derived;
@@ -448,9 +448,9 @@ static bool bytecode_stage(hfx_codegen *cg, const d3d9_shader *s, ir_shader **sh
     *sh = NULL;
     if (!s) return true;
     uint32_t errors = cg->c.diags->errors;
-    ir_shader *x = d3d9_to_ir(&cg->c, s, cg->pack);
+    ir_shader *x = hfx_d3d9_to_ir(&cg->c, s, cg->pack);
     /* fxc made its preshaders already (d3d9_ir.c reads them): no preshade rows */
-    if (!x || cg->c.diags->errors > errors || ir_lower(&cg->c, x, cg->pack ? IR_LOWER_PACKED : 0) != 0) return false;
+    if (!x || cg->c.diags->errors > errors || hfx_ir_lower(&cg->c, x, cg->pack ? IR_LOWER_PACKED : 0) != 0) return false;
     return (*sh = x) != NULL;
 }
 
@@ -469,9 +469,9 @@ const uint32_t *hfx_codegen_bytecode(hfx_codegen *cg, const hfx_expr *compile, b
     *count = 0;
     if (!compile || compile->kind != EX_COMPILE) return NULL;
     uint32_t errors = cg->c.diags->errors;
-    ir_shader *sh = ir_build(&cg->c, compile, pixel ? IR_PIXEL : IR_VERTEX); /* lowered without preshaders */
-    if (!sh || cg->c.diags->errors > errors || ir_lower(&cg->c, sh, 0) != 0) return NULL;
-    return bc_write(&cg->c, sh, compile->profile, count);
+    ir_shader *sh = hfx_ir_build(&cg->c, compile, pixel ? IR_PIXEL : IR_VERTEX); /* lowered without preshaders */
+    if (!sh || cg->c.diags->errors > errors || hfx_ir_lower(&cg->c, sh, 0) != 0) return NULL;
+    return hfx_bc_write(&cg->c, sh, compile->profile, count);
 }
 
 const uint32_t *hfx_codegen_entry_bytecode(hfx_arena *arena, hfx_diags *diags, hfx_types *types, hfx_ast *ast,
@@ -501,7 +501,7 @@ static const d3d9_shader *bytecode_of(hfx_codegen *cg, const hfx_expr *e, bool p
     const uint32_t *w = hfx_codegen_bytecode(cg, e, pixel, &n);
     if (!w) { *ok = false; return NULL; }
     d3d9_input in = {w, n * 4, hfx_diags_add_file(cg->c.diags, pixel ? "ps.bytecode" : "vs.bytecode", NULL, "", 0), 0};
-    const d3d9_shader *s = d3d9_decode(cg->c.arena, cg->c.diags, &in);
+    const d3d9_shader *s = hfx_d3d9_decode(cg->c.arena, cg->c.diags, &in);
     *ok &= s != NULL;
     return s;
 }

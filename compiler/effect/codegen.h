@@ -26,8 +26,8 @@ void hfx_codegen_set_alpha_test(hfx_codegen *cg, bool on);
  * Fills *out (malloc'ed members, freed with the effect); may set fx->samplers[i].dim.
  * Returns 0, or -1 with errors in diags. */
 int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps, bool flat_colors, hfx_fx_program *out);
-/* The same from fxc's bytecode (the fx_2_0 reader, per pass): vs, ps decoded by d3d9_decode (NULL:
- * no shader, the fixed-function stand-in), each translated by d3d9_to_ir into the IR, lowered,
+/* The same from fxc's bytecode (the fx_2_0 reader, per pass): vs, ps decoded by hfx_d3d9_decode (NULL:
+ * no shader, the fixed-function stand-in), each translated by hfx_d3d9_to_ir into the IR, lowered,
  * printed for every target (the caller runs glslang's self-check over them, as the fx_2_0 reader
  * does with every program it loads); attributes, samplers and
  * uniforms filled from fx->params / fx->samplers, which the reader has filled (CTAB names are the

@@ -335,7 +335,7 @@ static bool pass_is_flat(const hfx_fx_effect *fx, uint32_t pass) {
 static d3d9_shader *decode_shader(fx2_reader *r, const fx2_blob *b) {
     if (!b || r->failed) return NULL;
     d3d9_input in = {b->data, b->size, r->file, b->at};
-    d3d9_shader *s = d3d9_decode(r->arena, r->diags, &in);
+    d3d9_shader *s = hfx_d3d9_decode(r->arena, r->diags, &in);
     if (!s) {
         r->failed = true;
         return NULL;

@@ -233,8 +233,8 @@ char *hfxc_result_ir_dump(const hfxc_result *r) {
 }
 
 const char *hfxc_pass_name(size_t i, const char **why) {
-    if (why) *why = i < ir_pass_count() ? ir_pass_why((uint32_t)i) : NULL;
-    return i < ir_pass_count() ? ir_pass_name((uint32_t)i) : NULL;
+    if (why) *why = i < hfx_ir_pass_count() ? hfx_ir_pass_why((uint32_t)i) : NULL;
+    return i < hfx_ir_pass_count() ? hfx_ir_pass_name((uint32_t)i) : NULL;
 }
 
 char *hfxc_disassemble(const void *data, size_t size, const char *name, char **diagnostics) {
@@ -249,10 +249,10 @@ char *hfxc_disassemble(const void *data, size_t size, const char *name, char **d
     r->arena.escape = &escape;
     if (setjmp(escape) == 0) {
         hfx_arena_escape_on(&r->arena);
-        if (d3d9_is_shader(data, size)) { /* a raw shader (.vso / .pso, fxc /T vs_* | ps_*) */
+        if (hfx_d3d9_is_shader(data, size)) { /* a raw shader (.vso / .pso, fxc /T vs_* | ps_*) */
             sbuf out = {.arena = &r->arena};
             d3d9_input in = {data, (uint32_t)size, hfx_diags_add_file(&r->diags, name ? name : "memory", NULL, "", 0), 0};
-            listing = d3d9_disassemble_blob(&r->arena, &r->diags, &in, &out) == 0 && !out.oom ? out.d : NULL;
+            listing = hfx_d3d9_disassemble_blob(&r->arena, &r->diags, &in, &out) == 0 && !out.oom ? out.d : NULL;
         } else listing = hfx_fx2_listing(&r->arena, &r->diags, name ? name : "memory", data, size);
         hfx_arena_escape_off(&r->arena);
     } else {

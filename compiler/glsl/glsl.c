@@ -8,7 +8,7 @@
 #include "glsl/glsl_int.h"
 
 static void line_start(gp *p) {
-    for (int i = 0; i < p->indent; i++) sb_put(p->out, "    ");
+    for (int i = 0; i < p->indent; i++) hfx_sb_put(p->out, "    ");
 }
 
 static void print_stmt(gp *p, const ir_stmt *s);
@@ -16,23 +16,23 @@ static void print_stmt(gp *p, const ir_stmt *s);
 /* `{ statements }` on lines of their own: blocks and switch bodies. */
 static void print_braced(gp *p, const ir_stmt *s) {
     line_start(p);
-    sb_put(p->out, "{\n");
+    hfx_sb_put(p->out, "{\n");
     p->indent++;
     for (uint32_t i = 0; i < s->count; i++) print_stmt(p, s->body[i]);
     p->indent--;
     line_start(p);
-    sb_put(p->out, "}\n");
+    hfx_sb_put(p->out, "}\n");
 }
 
 static void print_body(gp *p, const ir_stmt *s) {
     if (s && s->kind == IS_BLOCK) { print_stmt(p, s); return; }
     line_start(p);
-    sb_put(p->out, "{\n");
+    hfx_sb_put(p->out, "{\n");
     p->indent++;
     if (s) print_stmt(p, s);
     p->indent--;
     line_start(p);
-    sb_put(p->out, "}\n");
+    hfx_sb_put(p->out, "}\n");
 }
 
 /* GLSL 110 cannot write an array's value in one expression (no array constructors; found by
@@ -45,15 +45,15 @@ static bool zero_printable(gp *p, const hfx_type *t) {
 }
 
 static void print_decl(gp *p, const ir_var *v, const ir_expr *init, bool zero, const char *end) {
-    glsl_decl(p, p->out, v->type, v->glsl);
+    hfx_glsl_decl(p, p->out, v->type, v->glsl);
     if (init) {
-        sb_put(p->out, " = ");
-        glsl_expr(p, init, PREC_ASSIGN);
+        hfx_sb_put(p->out, " = ");
+        hfx_glsl_expr(p, init, PREC_ASSIGN);
     } else if (zero && zero_printable(p, v->type)) { /* HLSL leaves it undefined; zero keeps the output deterministic */
-        sb_put(p->out, " = ");
-        glsl_zero(p, v->type);
+        hfx_sb_put(p->out, " = ");
+        hfx_glsl_zero(p, v->type);
     }
-    sb_put(p->out, end);
+    hfx_sb_put(p->out, end);
 }
 
 static void print_for(gp *p, const ir_stmt *s) {
@@ -69,121 +69,121 @@ static void print_for(gp *p, const ir_stmt *s) {
     unsigned counter = s->max_iterations ? ++p->loop_counters : 0; /* [unroll(n)]: hfx_iterK counts to n */
     if (counter) {
         line_start(p);
-        sb_printf(p->out, "int hfx_iter%u = 0;\n", counter);
+        hfx_sb_printf(p->out, "int hfx_iter%u = 0;\n", counter);
     }
     line_start(p);
-    sb_put(p->out, "for (");
+    hfx_sb_put(p->out, "for (");
     if (init && init->kind == IS_DECL) print_decl(p, init->var, init->expr, true, "");
-    else if (init && init->kind == IS_EXPR) glsl_expr(p, init->expr, PREC_COMMA);
-    sb_put(p->out, ";");
-    if (s->expr) { sb_put(p->out, " "); glsl_expr(p, s->expr, counter ? PREC_AND : PREC_COMMA); }
-    if (counter) sb_printf(p->out, "%shfx_iter%u < %u", s->expr ? " && " : " ", counter, (unsigned)s->max_iterations);
-    sb_put(p->out, ";");
-    if (s->step) { sb_put(p->out, " "); glsl_expr(p, s->step, counter ? PREC_ASSIGN : PREC_COMMA); }
-    if (counter) sb_printf(p->out, "%shfx_iter%u++", s->step ? ", " : " ", counter);
-    sb_put(p->out, ")\n");
+    else if (init && init->kind == IS_EXPR) hfx_glsl_expr(p, init->expr, PREC_COMMA);
+    hfx_sb_put(p->out, ";");
+    if (s->expr) { hfx_sb_put(p->out, " "); hfx_glsl_expr(p, s->expr, counter ? PREC_AND : PREC_COMMA); }
+    if (counter) hfx_sb_printf(p->out, "%shfx_iter%u < %u", s->expr ? " && " : " ", counter, (unsigned)s->max_iterations);
+    hfx_sb_put(p->out, ";");
+    if (s->step) { hfx_sb_put(p->out, " "); hfx_glsl_expr(p, s->step, counter ? PREC_ASSIGN : PREC_COMMA); }
+    if (counter) hfx_sb_printf(p->out, "%shfx_iter%u++", s->step ? ", " : " ", counter);
+    hfx_sb_put(p->out, ")\n");
     print_body(p, s->then_s);
 }
 
 static void print_if(gp *p, const ir_stmt *s, bool chained) {
     if (!chained) line_start(p);
-    sb_put(p->out, "if (");
-    glsl_expr(p, s->expr, PREC_COMMA);
-    sb_put(p->out, ")\n");
+    hfx_sb_put(p->out, "if (");
+    hfx_glsl_expr(p, s->expr, PREC_COMMA);
+    hfx_sb_put(p->out, ")\n");
     print_body(p, s->then_s);
     if (!s->else_s) return;
     line_start(p);
     if (s->else_s->kind == IS_IF) {
-        sb_put(p->out, "else ");
+        hfx_sb_put(p->out, "else ");
         print_if(p, s->else_s, true);
         return;
     }
-    sb_put(p->out, "else\n");
+    hfx_sb_put(p->out, "else\n");
     print_body(p, s->else_s);
 }
 
 static void print_stmt(gp *p, const ir_stmt *s) {
     if (s->hint) {
         line_start(p);
-        sb_printf(p->out, "// [%s]\n", s->hint);
+        hfx_sb_printf(p->out, "// [%s]\n", s->hint);
     }
     switch (s->kind) {
     case IS_BLOCK:
         print_braced(p, s);
         return;
     case IS_DECL: line_start(p); print_decl(p, s->var, s->expr, true, ";\n"); return;
-    case IS_EXPR: line_start(p); glsl_expr(p, s->expr, PREC_COMMA); sb_put(p->out, ";\n"); return;
+    case IS_EXPR: line_start(p); hfx_glsl_expr(p, s->expr, PREC_COMMA); hfx_sb_put(p->out, ";\n"); return;
     case IS_IF: print_if(p, s, false); return;
     case IS_FOR: print_for(p, s); return;
     case IS_WHILE:
         line_start(p);
-        sb_put(p->out, "while (");
-        glsl_expr(p, s->expr, PREC_COMMA);
-        sb_put(p->out, ")\n");
+        hfx_sb_put(p->out, "while (");
+        hfx_glsl_expr(p, s->expr, PREC_COMMA);
+        hfx_sb_put(p->out, ")\n");
         print_body(p, s->then_s);
         return;
     case IS_DO:
         line_start(p);
-        sb_put(p->out, "do\n");
+        hfx_sb_put(p->out, "do\n");
         print_body(p, s->then_s);
         line_start(p);
-        sb_put(p->out, "while (");
-        glsl_expr(p, s->expr, PREC_COMMA);
-        sb_put(p->out, ");\n");
+        hfx_sb_put(p->out, "while (");
+        hfx_glsl_expr(p, s->expr, PREC_COMMA);
+        hfx_sb_put(p->out, ");\n");
         return;
     case IS_SWITCH:
         if (p->legacy) { /* found by fuzz/fuzz_diff.c: glslang's "Reserved word" */
-            glsl_error(p, s->loc, "switch statements need GLSL 330 or ES 300");
+            hfx_glsl_error(p, s->loc, "switch statements need GLSL 330 or ES 300");
             return;
         }
         line_start(p);
-        sb_put(p->out, "switch (");
-        if (s->expr->type->base != B_INT) sb_put(p->out, "int(");
-        glsl_expr(p, s->expr, PREC_COMMA);
-        sb_put(p->out, s->expr->type->base != B_INT ? "))\n" : ")\n");
+        hfx_sb_put(p->out, "switch (");
+        if (s->expr->type->base != B_INT) hfx_sb_put(p->out, "int(");
+        hfx_glsl_expr(p, s->expr, PREC_COMMA);
+        hfx_sb_put(p->out, s->expr->type->base != B_INT ? "))\n" : ")\n");
         print_braced(p, s);
         return;
     case IS_CASE:
         p->indent--;
         line_start(p);
-        sb_put(p->out, "case ");
-        if (ir_is_const(s->expr)) sb_printf(p->out, "%d", (int)hfx_ev_int(s->expr->cval[0])); /* the switch is on int */
-        else glsl_expr(p, s->expr, PREC_COMMA);
-        sb_put(p->out, ":\n");
+        hfx_sb_put(p->out, "case ");
+        if (hfx_ir_is_const(s->expr)) hfx_sb_printf(p->out, "%d", (int)hfx_ev_int(s->expr->cval[0])); /* the switch is on int */
+        else hfx_glsl_expr(p, s->expr, PREC_COMMA);
+        hfx_sb_put(p->out, ":\n");
         p->indent++;
         return;
-    case IS_DEFAULT: p->indent--; line_start(p); sb_put(p->out, "default:\n"); p->indent++; return;
-    case IS_BREAK: line_start(p); sb_put(p->out, "break;\n"); return;
-    case IS_CONTINUE: line_start(p); sb_put(p->out, "continue;\n"); return;
+    case IS_DEFAULT: p->indent--; line_start(p); hfx_sb_put(p->out, "default:\n"); p->indent++; return;
+    case IS_BREAK: line_start(p); hfx_sb_put(p->out, "break;\n"); return;
+    case IS_CONTINUE: line_start(p); hfx_sb_put(p->out, "continue;\n"); return;
     case IS_DISCARD:
-        if (p->stage != IR_PIXEL) glsl_error(p, s->loc, "discard is only allowed in a pixel shader");
+        if (p->stage != IR_PIXEL) hfx_glsl_error(p, s->loc, "discard is only allowed in a pixel shader");
         line_start(p);
-        sb_put(p->out, "discard;\n");
+        hfx_sb_put(p->out, "discard;\n");
         return;
     case IS_RETURN:
         line_start(p);
-        sb_put(p->out, "return");
-        if (s->expr) { sb_put(p->out, " "); glsl_expr(p, s->expr, PREC_COMMA); }
-        sb_put(p->out, ";\n");
+        hfx_sb_put(p->out, "return");
+        if (s->expr) { hfx_sb_put(p->out, " "); hfx_glsl_expr(p, s->expr, PREC_COMMA); }
+        hfx_sb_put(p->out, ";\n");
         return;
     }
 }
 
 static void print_func(gp *p, const ir_func *f) {
-    sb_printf(p->out, "// %s%s\n", f->name, f->is_entry ? " (entry point)" : "");
-    sb_printf(p->out, "%s %s(", glsl_ctor_type(p, f->ret), f->glsl);
+    hfx_sb_printf(p->out, "// %s%s\n", f->name, f->is_entry ? " (entry point)" : "");
+    hfx_sb_printf(p->out, "%s %s(", hfx_glsl_ctor_type(p, f->ret), f->glsl);
     for (uint32_t i = 0; i < f->param_count; i++) {
         const ir_var *v = f->params[i];
-        if (i) sb_put(p->out, ", ");
-        if (v->mods & MOD_OUT) sb_put(p->out, (v->mods & MOD_IN) ? "inout " : "out ");
+        if (i) hfx_sb_put(p->out, ", ");
+        if (v->mods & MOD_OUT) hfx_sb_put(p->out, (v->mods & MOD_IN) ? "inout " : "out ");
         const hfx_type *t = v->type;
         if (t->kind == TY_SAMPLER && t->dim == DIM_GENERIC && v->dim != DIM_GENERIC) /* `sampler s` sampled as a cube */
             t = hfx_type_object(p->c->types, TY_SAMPLER, v->dim);
-        glsl_decl(p, p->out, t, v->glsl);
+        hfx_glsl_decl(p, p->out, t, v->glsl);
     }
-    sb_put(p->out, ")\n");
+    hfx_sb_put(p->out, ")\n");
     print_stmt(p, f->body);
-    sb_put(p->out, "\n");
+    hfx_sb_put(p->out, "\n");
 }
 
 /* ---- the stage interface ---- */
@@ -195,12 +195,12 @@ static const char *varying_name(gp *p, const char *sem) { return hfx_arena_print
 /* `value` (a vec4 source) narrowed and converted to the leaf's type. */
 static void read_as(gp *p, const hfx_type *t, const char *vec4_src) {
     unsigned n = hfx_type_components(t);
-    const char *tn = glsl_type(p, t);
+    const char *tn = hfx_glsl_type(p, t);
     bool is_f = t->base == B_FLOAT || t->base == B_HALF || t->base == B_DOUBLE || t->base == B_MIN16FLOAT;
-    if (!is_f || glsl_is_matrix(t)) sb_printf(p->out, "%s(", tn);
-    sb_put(p->out, vec4_src);
-    if (n < 4 && !glsl_is_matrix(t)) sb_printf(p->out, ".%.*s", (int)n, "xyzw");
-    if (!is_f || glsl_is_matrix(t)) sb_put(p->out, ")");
+    if (!is_f || hfx_glsl_is_matrix(t)) hfx_sb_printf(p->out, "%s(", tn);
+    hfx_sb_put(p->out, vec4_src);
+    if (n < 4 && !hfx_glsl_is_matrix(t)) hfx_sb_printf(p->out, ".%.*s", (int)n, "xyzw");
+    if (!is_f || hfx_glsl_is_matrix(t)) hfx_sb_put(p->out, ")");
 }
 
 /* A leaf's value as a vec4: missing components are 0, and w is 1 for positions. */
@@ -208,18 +208,18 @@ static void write_vec4(gp *p, const ir_leaf *l, const char *dst, bool clamp) {
     unsigned n = hfx_type_components(l->type);
     bool pos = strncmp(l->semantic, "POSITION", 8) == 0;
     line_start(p);
-    sb_printf(p->out, "%s = ", dst);
-    if (clamp) sb_put(p->out, "clamp(");
+    hfx_sb_printf(p->out, "%s = ", dst);
+    if (clamp) hfx_sb_put(p->out, "clamp(");
     bool plain_vec4 = l->type->kind == TY_VECTOR && l->type->base == B_FLOAT;
-    if (n >= 4) sb_printf(p->out, plain_vec4 ? "%s" : "vec4(%s)", l->path);
-    else if (n == 1) sb_printf(p->out, "vec4(float(%s), 0.0, 0.0, %s)", l->path, pos ? "1.0" : "0.0");
-    else if (n == 2) sb_printf(p->out, "vec4(%s, 0.0, %s)", l->path, pos ? "1.0" : "0.0");
-    else sb_printf(p->out, "vec4(%s, %s)", l->path, pos ? "1.0" : "0.0");
-    if (clamp) sb_put(p->out, ", 0.0, 1.0)");
-    sb_put(p->out, ";\n");
+    if (n >= 4) hfx_sb_printf(p->out, plain_vec4 ? "%s" : "vec4(%s)", l->path);
+    else if (n == 1) hfx_sb_printf(p->out, "vec4(float(%s), 0.0, 0.0, %s)", l->path, pos ? "1.0" : "0.0");
+    else if (n == 2) hfx_sb_printf(p->out, "vec4(%s, 0.0, %s)", l->path, pos ? "1.0" : "0.0");
+    else hfx_sb_printf(p->out, "vec4(%s, %s)", l->path, pos ? "1.0" : "0.0");
+    if (clamp) hfx_sb_put(p->out, ", 0.0, 1.0)");
+    hfx_sb_put(p->out, ";\n");
 }
 
-bool glsl_iface_derived(const glsl_iface *io, const char *sem) {
+bool hfx_glsl_iface_derived(const glsl_iface *io, const char *sem) {
     for (uint32_t i = 0; i < io->derived_count; i++)
         if (strcmp(io->derived[i], sem) == 0) return true;
     return false;
@@ -245,14 +245,14 @@ static void declare_interface(gp *p) {
     const glsl_iface *io = p->io;
     if (p->stage == IR_VERTEX) {
         for (uint32_t i = 0; i < io->attr_count; i++) {
-            if (modern) sb_printf(p->out, "layout(location = %d) in vec4 %s;\n", io->attrs[i].location, io->attrs[i].glsl_name);
-            else sb_printf(p->out, "attribute vec4 %s;\n", io->attrs[i].glsl_name);
+            if (modern) hfx_sb_printf(p->out, "layout(location = %d) in vec4 %s;\n", io->attrs[i].location, io->attrs[i].glsl_name);
+            else hfx_sb_printf(p->out, "attribute vec4 %s;\n", io->attrs[i].glsl_name);
         }
-        glsl_uniform(p, NULL, "hfx_pos_fixup", "vec4 hfx_pos_fixup", false);
+        hfx_glsl_uniform(p, NULL, "hfx_pos_fixup", "vec4 hfx_pos_fixup", false);
     }
     for (uint32_t i = 0; i < io->varying_count; i++) {
-        if (p->vulkan) sb_printf(p->out, "layout(location = %u) ", (unsigned)i); /* both stages list them alike */
-        sb_printf(p->out, "%s%s vec4 %s;\n", modern && is_flat(io, io->varyings[i]) ? "flat " : "",
+        if (p->vulkan) hfx_sb_printf(p->out, "layout(location = %u) ", (unsigned)i); /* both stages list them alike */
+        hfx_sb_printf(p->out, "%s%s vec4 %s;\n", modern && is_flat(io, io->varyings[i]) ? "flat " : "",
                   !modern ? "varying" : p->stage == IR_VERTEX ? "out" : "in", varying_name(p, io->varyings[i]));
     }
     if (p->stage == IR_PIXEL) {
@@ -260,13 +260,13 @@ static void declare_interface(gp *p) {
         for (int i = 0; i < p->in_count; i++) vpos |= is_vpos(p->in[i].semantic);
         for (int i = 0; i < p->out_count; i++)
             if (color_target(p->outv[i].semantic) >= 0) color[color_target(p->outv[i].semantic)] = true;
-        if (vpos || p->uses_fixup) glsl_uniform(p, NULL, "hfx_pos_fixup", "vec4 hfx_pos_fixup", false);
+        if (vpos || p->uses_fixup) hfx_glsl_uniform(p, NULL, "hfx_pos_fixup", "vec4 hfx_pos_fixup", false);
         if (p->io->alpha_test) {
-            glsl_uniform(p, NULL, "hfx_alpha_func", "int hfx_alpha_func", false);
-            glsl_uniform(p, NULL, "hfx_alpha_ref", "float hfx_alpha_ref", false);
+            hfx_glsl_uniform(p, NULL, "hfx_alpha_func", "int hfx_alpha_func", false);
+            hfx_glsl_uniform(p, NULL, "hfx_alpha_ref", "float hfx_alpha_ref", false);
         }
         for (int i = 0; i < 4 && modern; i++)
-            if (color[i]) sb_printf(p->out, "layout(location = %d) out vec4 hfx_o_COLOR%d;\n", i, i);
+            if (color[i]) hfx_sb_printf(p->out, "layout(location = %d) out vec4 hfx_o_COLOR%d;\n", i, i);
     }
 }
 
@@ -277,9 +277,9 @@ static const char *attr_glsl(gp *p, const char *sem) {
 }
 
 static void feed_input(gp *p, const ir_leaf *l) {
-    if (p->stage == IR_PIXEL && glsl_iface_derived(p->io, l->semantic)) return; /* the entry computes it */
+    if (p->stage == IR_PIXEL && hfx_glsl_iface_derived(p->io, l->semantic)) return; /* the entry computes it */
     line_start(p);
-    sb_printf(p->out, "%s = ", l->path);
+    hfx_sb_printf(p->out, "%s = ", l->path);
     if (p->stage == IR_VERTEX) {
         const char *a = attr_glsl(p, l->semantic);
         read_as(p, l->type, a ? a : "vec4(0.0)");
@@ -291,7 +291,7 @@ static void feed_input(gp *p, const ir_leaf *l) {
     } else {
         read_as(p, l->type, varying_name(p, l->semantic));
     }
-    sb_put(p->out, ";\n");
+    hfx_sb_put(p->out, ";\n");
 }
 
 /* A matrix vertex input: its registers (TEXCOORD1..4 of `float4x4 world : TEXCOORD1`, as
@@ -300,12 +300,12 @@ static void feed_input(gp *p, const ir_leaf *l) {
 static void transpose_input(gp *p, const ir_leaf *l) {
     if (!l->matrix_path) return;
     if (l->matrix_type->rows != l->matrix_type->cols) {
-        glsl_error(p, l->loc, "a non-square matrix as a vertex input is not supported");
+        hfx_glsl_error(p, l->loc, "a non-square matrix as a vertex input is not supported");
         return;
     }
-    if (p->legacy) { glsl_error(p, l->loc, "a matrix vertex input needs GLSL 330 or ES 300"); return; }
+    if (p->legacy) { hfx_glsl_error(p, l->loc, "a matrix vertex input needs GLSL 330 or ES 300"); return; }
     line_start(p);
-    sb_printf(p->out, "%s = transpose(%s); // D3D9's registers hold its columns\n", l->matrix_path, l->matrix_path);
+    hfx_sb_printf(p->out, "%s = transpose(%s); // D3D9's registers hold its columns\n", l->matrix_path, l->matrix_path);
 }
 
 static bool written_by_vs(const glsl_iface *io, const char *sem) {
@@ -318,10 +318,10 @@ static void write_vertex_output(gp *p, const ir_leaf *l) {
     if (strcmp(l->semantic, "POSITION0") == 0) { write_vec4(p, l, "gl_Position", false); return; }
     if (strncmp(l->semantic, "PSIZE", 5) == 0) {
         line_start(p);
-        sb_printf(p->out, "gl_PointSize = float(%s%s);\n", l->path, hfx_type_components(l->type) > 1 ? ".x" : "");
+        hfx_sb_printf(p->out, "gl_PointSize = float(%s%s);\n", l->path, hfx_type_components(l->type) > 1 ? ".x" : "");
         return;
     }
-    if (glsl_iface_derived(p->io, l->semantic)) return; /* the pixel entry computes it */
+    if (hfx_glsl_iface_derived(p->io, l->semantic)) return; /* the pixel entry computes it */
     bool clamp = p->io->clamp_vs_colors && strncmp(l->semantic, "COLOR", 5) == 0;
     write_vec4(p, l, varying_name(p, l->semantic), clamp);
 }
@@ -329,11 +329,11 @@ static void write_vertex_output(gp *p, const ir_leaf *l) {
 static void write_pixel_output(gp *p, const ir_leaf *l) {
     if (strncmp(l->semantic, "DEPTH", 5) == 0) {
         line_start(p);
-        sb_printf(p->out, "gl_FragDepth = float(%s%s);\n", l->path, hfx_type_components(l->type) > 1 ? ".x" : "");
+        hfx_sb_printf(p->out, "gl_FragDepth = float(%s%s);\n", l->path, hfx_type_components(l->type) > 1 ? ".x" : "");
         return;
     }
     int n = color_target(l->semantic);
-    if (n < 0) { glsl_error(p, l->loc, hfx_arena_printf(p->c->arena, "'%s': invalid pixel shader output semantic", l->semantic)); return; }
+    if (n < 0) { hfx_glsl_error(p, l->loc, hfx_arena_printf(p->c->arena, "'%s': invalid pixel shader output semantic", l->semantic)); return; }
     const char *dst = p->legacy ? hfx_arena_printf(p->c->arena, "gl_FragData[%d]", n) : hfx_arena_printf(p->c->arena, "hfx_o_COLOR%d", n);
     write_vec4(p, l, dst, false);
 }
@@ -343,19 +343,19 @@ static void init_privates(gp *p) {
         const ir_var *v = p->sh->globals[i];
         if (v->kind != IRV_PRIVATE || v->pre || (!v->copy_of && !v->init && !zero_printable(p, v->type))) continue;
         line_start(p);
-        sb_printf(p->out, "%s = ", v->glsl);
-        if (v->copy_of) glsl_uniform_read(p, p->out, v->copy_of);
-        else if (v->init) glsl_expr(p, v->init, PREC_ASSIGN);
-        else glsl_zero(p, v->type);
-        sb_put(p->out, ";\n");
+        hfx_sb_printf(p->out, "%s = ", v->glsl);
+        if (v->copy_of) hfx_glsl_uniform_read(p, p->out, v->copy_of);
+        else if (v->init) hfx_glsl_expr(p, v->init, PREC_ASSIGN);
+        else hfx_glsl_zero(p, v->type);
+        hfx_sb_put(p->out, ";\n");
     }
 }
 
 static void alpha_test(gp *p, const char *color) {
     if (!p->io->alpha_test) return; /* no pass of the effect turns it on: no code, no cost */
     /* D3DCMPFUNC in hfx_alpha_func (0 or ALWAYS: off); reference in 0..1 */
-    if (glsl_helper(p, "alpha"))
-        sb_put(&p->helpers,
+    if (hfx_glsl_helper(p, "alpha"))
+        hfx_sb_put(&p->helpers,
                "bool hfx_alpha_pass(float a)\n{\n"
                "    float r = hfx_alpha_ref;\n"
                "    if (hfx_alpha_func == 1) return false;\n"
@@ -367,48 +367,48 @@ static void alpha_test(gp *p, const char *color) {
                "    if (hfx_alpha_func == 7) return a >= r;\n"
                "    return true;\n}\n");
     line_start(p);
-    sb_printf(p->out, "if (!hfx_alpha_pass(%s.a)) discard;\n", color);
+    hfx_sb_printf(p->out, "if (!hfx_alpha_pass(%s.a)) discard;\n", color);
 }
 
 /* Every vertex shader, the stand-in too, ends in D3D9's clip space made GL's (hfx_pos_fixup). */
 static void print_pos_fixup(gp *p) {
     line_start(p);
-    sb_put(p->out, "gl_Position.y *= 1.0 - 2.0 * hfx_pos_fixup.z; // render targets: D3D9's row order\n");
+    hfx_sb_put(p->out, "gl_Position.y *= 1.0 - 2.0 * hfx_pos_fixup.z; // render targets: D3D9's row order\n");
     line_start(p);
-    sb_put(p->out, "gl_Position.xy += hfx_pos_fixup.xy * gl_Position.w; // D3D9 pixel centres\n");
+    hfx_sb_put(p->out, "gl_Position.xy += hfx_pos_fixup.xy * gl_Position.w; // D3D9 pixel centres\n");
     if (p->vulkan) return; /* Vulkan's clip space has D3D's depth already */
     line_start(p);
-    sb_put(p->out, "gl_Position.z = gl_Position.z * 2.0 - gl_Position.w; // D3D depth 0..1 to GL -1..1\n");
+    hfx_sb_put(p->out, "gl_Position.z = gl_Position.z * 2.0 - gl_Position.w; // D3D depth 0..1 to GL -1..1\n");
 }
 
 static void print_main(gp *p) {
     const ir_func *f = p->sh->entry;
     ir_leaf *in = p->in, *out = p->outv;
     int nin = p->in_count, nout = p->out_count;
-    sb_put(p->out, "void main()\n{\n");
+    hfx_sb_put(p->out, "void main()\n{\n");
     p->indent = 1;
-    glsl_init_packed(p); /* before the privates: their initialisers may read them */
+    hfx_glsl_init_packed(p); /* before the privates: their initialisers may read them */
     init_privates(p);
     for (uint32_t i = 0; i < f->param_count; i++) {
         line_start(p);
-        glsl_decl(p, p->out, f->params[i]->type, hfx_arena_printf(p->c->arena, "hfx_arg%u", i));
-        sb_put(p->out, " = ");
-        glsl_zero(p, f->params[i]->type);
-        sb_put(p->out, ";\n");
+        hfx_glsl_decl(p, p->out, f->params[i]->type, hfx_arena_printf(p->c->arena, "hfx_arg%u", i));
+        hfx_sb_put(p->out, " = ");
+        hfx_glsl_zero(p, f->params[i]->type);
+        hfx_sb_put(p->out, ";\n");
     }
     for (int i = 0; i < nin; i++) feed_input(p, &in[i]);
     for (int i = 0; p->stage == IR_VERTEX && i < nin; i++) transpose_input(p, &in[i]);
     line_start(p);
-    if (f->ret && f->ret->kind != TY_VOID) { glsl_decl(p, p->out, f->ret, "hfx_ret"); sb_put(p->out, " = "); }
-    sb_printf(p->out, "%s(", f->glsl);
-    for (uint32_t i = 0; i < f->param_count; i++) sb_printf(p->out, "%shfx_arg%u", i ? ", " : "", i);
-    sb_put(p->out, ");\n");
+    if (f->ret && f->ret->kind != TY_VOID) { hfx_glsl_decl(p, p->out, f->ret, "hfx_ret"); hfx_sb_put(p->out, " = "); }
+    hfx_sb_printf(p->out, "%s(", f->glsl);
+    for (uint32_t i = 0; i < f->param_count; i++) hfx_sb_printf(p->out, "%shfx_arg%u", i ? ", " : "", i);
+    hfx_sb_put(p->out, ");\n");
     if (p->stage == IR_VERTEX) {
         for (int i = 0; i < nout; i++) write_vertex_output(p, &out[i]);
         for (uint32_t i = 0; i < p->io->varying_count; i++) /* read by the pixel shader, never written */
             if (!written_by_vs(p->io, p->io->varyings[i])) {
                 line_start(p);
-                sb_printf(p->out, "%s = vec4(0.0);\n", varying_name(p, p->io->varyings[i]));
+                hfx_sb_printf(p->out, "%s = vec4(0.0);\n", varying_name(p, p->io->varyings[i]));
             }
         print_pos_fixup(p);
     } else {
@@ -419,7 +419,7 @@ static void print_main(gp *p) {
         }
         if (color0) alpha_test(p, p->legacy ? "gl_FragData[0]" : "hfx_o_COLOR0");
     }
-    sb_put(p->out, "}\n");
+    hfx_sb_put(p->out, "}\n");
 }
 
 /* D3D9 without a vertex or pixel shader runs fixed-function; these stand-ins pass positions
@@ -428,26 +428,26 @@ static void print_main(gp *p) {
  * vertex stand-in ends with hfx_pos_fixup as every vertex shader does, so it draws the same
  * pixels on every back end and in render targets. */
 static void print_fixed_main(gp *p) {
-    sb_put(p->out, "void main()\n{\n");
+    hfx_sb_put(p->out, "void main()\n{\n");
     p->indent = 1;
     if (p->stage == IR_VERTEX) {
         const char *pos = attr_glsl(p, "POSITION0");
         line_start(p);
-        sb_printf(p->out, "gl_Position = %s;\n", pos ? pos : "vec4(0.0, 0.0, 0.0, 1.0)");
+        hfx_sb_printf(p->out, "gl_Position = %s;\n", pos ? pos : "vec4(0.0, 0.0, 0.0, 1.0)");
         for (uint32_t i = 0; i < p->io->varying_count; i++) {
             const char *a = attr_glsl(p, p->io->varyings[i]);
             line_start(p);
-            sb_printf(p->out, "%s = %s;\n", varying_name(p, p->io->varyings[i]), a ? a : "vec4(0.0)");
+            hfx_sb_printf(p->out, "%s = %s;\n", varying_name(p, p->io->varyings[i]), a ? a : "vec4(0.0)");
         }
         print_pos_fixup(p);
     } else {
         bool has_color = false;
         for (uint32_t i = 0; i < p->io->varying_count; i++) has_color |= strcmp(p->io->varyings[i], "COLOR0") == 0;
         line_start(p);
-        sb_printf(p->out, "%s = %s;\n", p->legacy ? "gl_FragData[0]" : "hfx_o_COLOR0", has_color ? "hfx_v_COLOR0" : "vec4(1.0)");
+        hfx_sb_printf(p->out, "%s = %s;\n", p->legacy ? "gl_FragData[0]" : "hfx_o_COLOR0", has_color ? "hfx_v_COLOR0" : "vec4(1.0)");
         alpha_test(p, p->legacy ? "gl_FragData[0]" : "hfx_o_COLOR0");
     }
-    sb_put(p->out, "}\n");
+    hfx_sb_put(p->out, "}\n");
 }
 
 /* The program's switch number of a uniform (HFX_FX_USE_SWITCH, counted in uniform order), or -1. */
@@ -470,28 +470,28 @@ static bool is_sampler_type(const hfx_type *t) {
  * uniform; SPIR-V is compiled once, without variants: the uniform. */
 static void declare_uniform(gp *p, const ir_var *v) {
     int k = v->param != HFX_NONE && !p->spirv ? switch_number(p, v) : -1;
-    if (k >= 0) sb_printf(p->out, "#ifdef HFX_SWITCH_%d\nconst bool %s = HFX_SWITCH_%d;\n#else\n", k, v->glsl, k);
+    if (k >= 0) hfx_sb_printf(p->out, "#ifdef HFX_SWITCH_%d\nconst bool %s = HFX_SWITCH_%d;\n#else\n", k, v->glsl, k);
     sbuf decl = {.arena = p->c->arena};
-    glsl_decl(p, &decl, v->type, v->glsl);
-    glsl_uniform(p, v, v->glsl, decl.d ? decl.d : "", is_sampler_type(v->type));
-    if (k >= 0) sb_put(p->out, "#endif\n");
+    hfx_glsl_decl(p, &decl, v->type, v->glsl);
+    hfx_glsl_uniform(p, v, v->glsl, decl.d ? decl.d : "", is_sampler_type(v->type));
+    if (k >= 0) hfx_sb_put(p->out, "#endif\n");
 }
 
 static void declare_globals(gp *p) {
-    glsl_declare_regs(p);
+    hfx_glsl_declare_regs(p);
     for (uint32_t i = 0; i < p->sh->global_count; i++) {
         const ir_var *v = p->sh->globals[i];
-        uint32_t reg = glsl_packed_reg(p, v);
+        uint32_t reg = hfx_glsl_packed_reg(p, v);
         if (reg != HFX_NONE) {
-            glsl_declare_packed(p, v, reg);
+            hfx_glsl_declare_packed(p, v, reg);
         } else if (v->kind == IRV_SAMPLER) {
             const char *type = v->dim == DIM_CUBE ? "samplerCube" : v->dim == DIM_3D ? "sampler3D" : "sampler2D";
-            glsl_uniform(p, v, v->glsl, hfx_arena_printf(p->c->arena, "%s %s", type, v->glsl), true);
+            hfx_glsl_uniform(p, v, v->glsl, hfx_arena_printf(p->c->arena, "%s %s", type, v->glsl), true);
         } else if (v->kind == IRV_UNIFORM) {
             declare_uniform(p, v);
         } else if (v->kind == IRV_PRIVATE) {
-            glsl_decl(p, p->out, v->type, v->glsl);
-            sb_put(p->out, v->copy_of ? "; // written by the shader: a private copy of the uniform\n" : ";\n");
+            hfx_glsl_decl(p, p->out, v->type, v->glsl);
+            hfx_sb_put(p->out, v->copy_of ? "; // written by the shader: a private copy of the uniform\n" : ";\n");
         }
     }
 }
@@ -511,7 +511,7 @@ static const char *header(gp *p) { return header_of(p->target); }
 
 /* GLSL 330 and ES 300 texts differ only in their headers: printing a stage once and swapping the
  * header halves the printer's work when an effect is compiled for both (the default). */
-char *glsl_retarget(const char *text, hfx_target from, hfx_target to) {
+char *hfx_glsl_retarget(const char *text, hfx_target from, hfx_target to) {
     const char *have = header_of(from), *want = header_of(to);
     size_t h = strlen(have), w = strlen(want), n = strlen(text);
     if (strncmp(text, have, h) != 0) return NULL;
@@ -522,7 +522,7 @@ char *glsl_retarget(const char *text, hfx_target from, hfx_target to) {
     return out;
 }
 
-char *glsl_print(ir_ctx *c, const ir_shader *sh, ir_stage stage, const glsl_iface *io, hfx_target target) {
+char *hfx_glsl_print(ir_ctx *c, const ir_shader *sh, ir_stage stage, const glsl_iface *io, hfx_target target) {
     gp p = {0};
     p.c = c;
     p.sh = sh;
@@ -535,8 +535,8 @@ char *glsl_print(ir_ctx *c, const ir_shader *sh, ir_stage stage, const glsl_ifac
     sbuf decls = {.arena = c->arena}, funcs = {.arena = c->arena}, all = {.arena = c->arena};
     p.helpers.arena = p.structs_text.arena = c->arena;
     if (sh) {
-        p.in_count = ir_entry_leaves(c, sh->entry, false, &p.in);
-        p.out_count = ir_entry_leaves(c, sh->entry, true, &p.outv);
+        p.in_count = hfx_ir_entry_leaves(c, sh->entry, false, &p.in);
+        p.out_count = hfx_ir_entry_leaves(c, sh->entry, true, &p.outv);
         if (p.in_count < 0 || p.out_count < 0) return NULL;
     }
     p.out = &decls;
@@ -551,20 +551,20 @@ char *glsl_print(ir_ctx *c, const ir_shader *sh, ir_stage stage, const glsl_ifac
     p.out = &decls; /* after the code: it decides which built-in uniforms are needed */
     declare_interface(&p);
     if (p.nonsquare)
-        glsl_error(&p, sh ? sh->entry->src->loc : (hfx_loc){0, 0, 0},
+        hfx_glsl_error(&p, sh ? sh->entry->src->loc : (hfx_loc){0, 0, 0},
                    hfx_arena_printf(c->arena, "'%s': non-square matrices are not available in GLSL 110", sh ? sh->entry->name : "?"));
     p.out = &all;
-    sb_put(&all, header(&p));
-    sb_printf(&all, "// %s shader generated by hfx%s%s\n", stage == IR_VERTEX ? "vertex" : "pixel",
+    hfx_sb_put(&all, header(&p));
+    hfx_sb_printf(&all, "// %s shader generated by hfx%s%s\n", stage == IR_VERTEX ? "vertex" : "pixel",
               sh ? " from " : " (fixed-function stand-in)", sh ? sh->entry->name : "");
-    sb_put(&all, "\n");
-    if (p.structs_text.d) { sb_put(&all, p.structs_text.d); }
-    glsl_spirv_decls(&p, &all, &decls);
-    sb_put(&all, "\n");
-    if (p.helpers.d) { sb_put(&all, p.helpers.d); sb_put(&all, "\n"); }
-    if (funcs.d) sb_put(&all, funcs.d);
+    hfx_sb_put(&all, "\n");
+    if (p.structs_text.d) { hfx_sb_put(&all, p.structs_text.d); }
+    hfx_glsl_spirv_decls(&p, &all, &decls);
+    hfx_sb_put(&all, "\n");
+    if (p.helpers.d) { hfx_sb_put(&all, p.helpers.d); hfx_sb_put(&all, "\n"); }
+    if (funcs.d) hfx_sb_put(&all, funcs.d);
     bool oom = decls.oom || funcs.oom || all.oom || p.helpers.oom || p.structs_text.oom;
-    char *text = p.failed || oom ? NULL : sb_take(&all);
+    char *text = p.failed || oom ? NULL : hfx_sb_take(&all);
     if (!p.failed && !text) hfx_error(c->diags, (hfx_loc){0, 1, 1}, X_MEMORY_LIMIT, "out of memory printing GLSL");
     return text;
 }

@@ -36,13 +36,13 @@ typedef struct glsl_iface {
 } glsl_iface;
 
 /* sem is one of io's derived varyings. */
-bool glsl_iface_derived(const glsl_iface *io, const char *sem);
+bool hfx_glsl_iface_derived(const glsl_iface *io, const char *sem);
 
 /* Prints one stage for one target (sh NULL: the fixed-function stand-in); malloc'ed text,
  * NULL with errors in diags. glsl.c */
-char *glsl_print(ir_ctx *c, const ir_shader *sh, ir_stage stage, const glsl_iface *io, hfx_target target);
+char *hfx_glsl_print(ir_ctx *c, const ir_shader *sh, ir_stage stage, const glsl_iface *io, hfx_target target);
 /* A GLSL 330 text as ES 300, or the reverse (only the header differs); malloc'ed, NULL when the
  * text does not start with from's header or memory runs out. */
-char *glsl_retarget(const char *text, hfx_target from, hfx_target to);
+char *hfx_glsl_retarget(const char *text, hfx_target from, hfx_target to);
 
 #endif

@@ -1,4 +1,4 @@
-/* glsl_expr.c: IR expressions as GLSL text, with HLSL's meaning. The matrix convention
+/* hfx_glsl_expr.c: IR expressions as GLSL text, with HLSL's meaning. The matrix convention
  * (docs/conventions.md): HLSL floatRxC is GLSL mat{R}x{C} whose column i holds HLSL row i, so
  * mul(v, M) prints `M * v`, mul(M, v) `v * M`, mul(A, B) `B * A`, M[i] is m[i], M._m01 m[0][1]. */
 #include <math.h>
@@ -9,12 +9,12 @@
 
 #include "glsl/glsl_int.h"
 
-void glsl_error(gp *p, hfx_loc loc, const char *msg) {
+void hfx_glsl_error(gp *p, hfx_loc loc, const char *msg) {
     hfx_error(p->c->diags, loc, X_UNSUPPORTED, "%s", msg);
     p->failed = true;
 }
 
-bool glsl_is_matrix(const hfx_type *t) { return t->kind == TY_MATRIX && t->rows > 1 && t->cols > 1; }
+bool hfx_glsl_is_matrix(const hfx_type *t) { return t->kind == TY_MATRIX && t->rows > 1 && t->cols > 1; }
 
 static bool is_float(hfx_base b) { return b == B_FLOAT || b == B_HALF || b == B_DOUBLE || b == B_MIN16FLOAT; }
 static unsigned ncomp(const hfx_type *t) { return hfx_type_is_numeric(t) ? hfx_type_components(t) : 0; }
@@ -58,19 +58,19 @@ static void add_struct(gp *p, const hfx_type *t) {
     if (!HFX_ARENA_GROW(p->c->arena, p->structs, p->struct_count, p->struct_cap, 8)) return;
     p->structs[p->struct_count++] = t;
     size_t from = p->structs_text.len;
-    const char *name = glsl_type(p, t);
-    sb_printf(&p->structs_text, "struct %s\n{\n", name);
+    const char *name = hfx_glsl_type(p, t);
+    hfx_sb_printf(&p->structs_text, "struct %s\n{\n", name);
     for (uint32_t i = 0; i < t->st->field_count; i++) {
         const hfx_field *f = &t->st->fields[i];
-        sb_put(&p->structs_text, "    ");
-        glsl_decl(p, &p->structs_text, f->type, hfx_glsl_name(p->c->arena, f->name));
-        sb_put(&p->structs_text, ";\n");
+        hfx_sb_put(&p->structs_text, "    ");
+        hfx_glsl_decl(p, &p->structs_text, f->type, hfx_glsl_name(p->c->arena, f->name));
+        hfx_sb_put(&p->structs_text, ";\n");
     }
-    sb_put(&p->structs_text, "};\n\n");
-    glsl_record_struct(p, name, from);
+    hfx_sb_put(&p->structs_text, "};\n\n");
+    hfx_glsl_record_struct(p, name, from);
 }
 
-const char *glsl_type(gp *p, const hfx_type *t) {
+const char *hfx_glsl_type(gp *p, const hfx_type *t) {
     hfx_arena *a = p->c->arena;
     switch (t->kind) {
     case TY_VOID: return "void";
@@ -79,9 +79,9 @@ const char *glsl_type(gp *p, const hfx_type *t) {
     case TY_MATRIX:
         if (t->rows == 1 && t->cols == 1) return scalar_name(p, t->base);
         if (t->rows == 1 || t->cols == 1) return vec_name(p, t->base, t->rows * t->cols);
-        if (t->rows != t->cols && p->legacy) p->nonsquare = true; /* reported once, by glsl_print */
+        if (t->rows != t->cols && p->legacy) p->nonsquare = true; /* reported once, by hfx_glsl_print */
         return mat_name(t->rows, t->cols);
-    case TY_ARRAY: return glsl_type(p, t->elem);
+    case TY_ARRAY: return hfx_glsl_type(p, t->elem);
     case TY_STRUCT: {
         const char *name = t->st->name ? hfx_glsl_name(a, t->st->name)
                                        : hfx_arena_printf(a, "hfx_struct_%u_%u", t->st->loc.line, t->st->loc.col);
@@ -102,44 +102,44 @@ static void use_type(gp *p, const hfx_type *t) {
     if (t->kind == TY_STRUCT) add_struct(p, t);
 }
 
-const char *glsl_ctor_type(gp *p, const hfx_type *t) {
+const char *hfx_glsl_ctor_type(gp *p, const hfx_type *t) {
     use_type(p, t);
-    if (t->kind != TY_ARRAY) return glsl_type(p, t);
-    return hfx_arena_printf(p->c->arena, "%s[%u]", glsl_ctor_type(p, t->elem), t->array_len);
+    if (t->kind != TY_ARRAY) return hfx_glsl_type(p, t);
+    return hfx_arena_printf(p->c->arena, "%s[%u]", hfx_glsl_ctor_type(p, t->elem), t->array_len);
 }
 
-void glsl_decl(gp *p, sbuf *out, const hfx_type *t, const char *name) {
+void hfx_glsl_decl(gp *p, sbuf *out, const hfx_type *t, const char *name) {
     use_type(p, t);
     const hfx_type *e = t;
     while (e->kind == TY_ARRAY) e = e->elem;
-    sb_put(out, glsl_type(p, e));
-    sb_putn(out, " ", 1);
-    sb_put(out, name);
-    for (e = t; e->kind == TY_ARRAY; e = e->elem) sb_printf(out, "[%u]", e->array_len);
+    hfx_sb_put(out, hfx_glsl_type(p, e));
+    hfx_sb_putn(out, " ", 1);
+    hfx_sb_put(out, name);
+    for (e = t; e->kind == TY_ARRAY; e = e->elem) hfx_sb_printf(out, "[%u]", e->array_len);
 }
 
 static void put_float(gp *p, double v) {
     char buf[48];
-    if (isnan(v)) { sb_put(p->out, "(0.0 / 0.0)"); return; }
-    if (isinf(v)) { sb_put(p->out, v > 0 ? "3.40282347e+38" : "-3.40282347e+38"); return; }
+    if (isnan(v)) { hfx_sb_put(p->out, "(0.0 / 0.0)"); return; }
+    if (isinf(v)) { hfx_sb_put(p->out, v > 0 ? "3.40282347e+38" : "-3.40282347e+38"); return; }
     float f = (float)v;
     if (f == truncf(f) && fabsf(f) < 1e9f) { /* what %.9g prints for integers, without snprintf */
-        sb_printf(p->out, "%s%lld.0", signbit(f) && f == 0 ? "-" : "", (long long)hfx_ev_int(f));
+        hfx_sb_printf(p->out, "%s%lld.0", signbit(f) && f == 0 ? "-" : "", (long long)hfx_ev_int(f));
         return;
     }
     snprintf(buf, sizeof buf, "%.9g", (double)f);
     if (!strpbrk(buf, ".e")) strcat(buf, ".0");
-    sb_put(p->out, buf);
+    hfx_sb_put(p->out, buf);
 }
 
 static void put_scalar(gp *p, hfx_base b, double v) {
     switch (b) {
-    case B_BOOL: sb_put(p->out, v != 0 ? "true" : "false"); break;
+    case B_BOOL: hfx_sb_put(p->out, v != 0 ? "true" : "false"); break;
     case B_INT:
-        if (v <= -2147483648.0) sb_put(p->out, "(-2147483647 - 1)"); /* 2147483648 is no int literal */
-        else sb_printf(p->out, "%lld", (long long)hfx_ev_int(v));
+        if (v <= -2147483648.0) hfx_sb_put(p->out, "(-2147483647 - 1)"); /* 2147483648 is no int literal */
+        else hfx_sb_printf(p->out, "%lld", (long long)hfx_ev_int(v));
         break;
-    case B_UINT: sb_printf(p->out, p->legacy ? "%lld" : "%lldu", (long long)hfx_ev_uint(v)); break;
+    case B_UINT: hfx_sb_printf(p->out, p->legacy ? "%lld" : "%lldu", (long long)hfx_ev_uint(v)); break;
     default: put_float(p, v);
     }
 }
@@ -149,33 +149,33 @@ static void put_const(gp *p, const ir_expr *e) {
     if (n <= 1) { put_scalar(p, e->type->base, e->cval[0]); return; }
     bool same = true;
     for (unsigned i = 1; i < n; i++) same = same && e->cval[i] == e->cval[0];
-    sb_printf(p->out, "%s(", glsl_type(p, e->type));
-    if (same && !glsl_is_matrix(e->type)) n = 1; /* mat4(x) would be a diagonal */
+    hfx_sb_printf(p->out, "%s(", hfx_glsl_type(p, e->type));
+    if (same && !hfx_glsl_is_matrix(e->type)) n = 1; /* mat4(x) would be a diagonal */
     for (unsigned i = 0; i < n; i++) {
-        if (i) sb_put(p->out, ", ");
+        if (i) hfx_sb_put(p->out, ", ");
         put_scalar(p, e->type->base, e->cval[i]);
     }
-    sb_put(p->out, ")");
+    hfx_sb_put(p->out, ")");
 }
 
-void glsl_zero(gp *p, const hfx_type *t) {
+void hfx_glsl_zero(gp *p, const hfx_type *t) {
     if (t->kind == TY_ARRAY || t->kind == TY_STRUCT) {
-        sb_printf(p->out, "%s(", glsl_ctor_type(p, t));
+        hfx_sb_printf(p->out, "%s(", hfx_glsl_ctor_type(p, t));
         uint32_t n = t->kind == TY_ARRAY ? t->array_len : t->st->field_count;
         for (uint32_t i = 0; i < n; i++) {
-            if (i) sb_put(p->out, ", ");
-            glsl_zero(p, t->kind == TY_ARRAY ? t->elem : t->st->fields[i].type);
+            if (i) hfx_sb_put(p->out, ", ");
+            hfx_glsl_zero(p, t->kind == TY_ARRAY ? t->elem : t->st->fields[i].type);
         }
-        sb_put(p->out, ")");
+        hfx_sb_put(p->out, ")");
         return;
     }
     if (ncomp(t) <= 1) { put_scalar(p, t->base, 0); return; }
-    sb_printf(p->out, "%s(", glsl_type(p, t));
+    hfx_sb_printf(p->out, "%s(", hfx_glsl_type(p, t));
     put_scalar(p, t->base, 0);
-    sb_put(p->out, ")");
+    hfx_sb_put(p->out, ")");
 }
 
-bool glsl_helper(gp *p, const char *key) {
+bool hfx_glsl_helper(gp *p, const char *key) {
     for (uint32_t i = 0; i < p->helper_count; i++)
         if (strcmp(p->helper_keys[i], key) == 0) return false;
     if (!HFX_ARENA_GROW(p->c->arena, p->helper_keys, p->helper_count, p->helper_cap, 16)) return false;
@@ -183,82 +183,82 @@ bool glsl_helper(gp *p, const char *key) {
     return true;
 }
 
-static void open_paren(gp *p, bool wrap) { if (wrap) sb_put(p->out, "("); }
-static void close_paren(gp *p, bool wrap) { if (wrap) sb_put(p->out, ")"); }
+static void open_paren(gp *p, bool wrap) { if (wrap) hfx_sb_put(p->out, "("); }
+static void close_paren(gp *p, bool wrap) { if (wrap) hfx_sb_put(p->out, ")"); }
 
 static void call_args(gp *p, const char *fn, ir_expr *const *a, uint32_t n) {
-    sb_printf(p->out, "%s(", fn);
+    hfx_sb_printf(p->out, "%s(", fn);
     for (uint32_t i = 0; i < n; i++) {
-        if (i) sb_put(p->out, ", ");
-        glsl_expr(p, a[i], PREC_ASSIGN);
+        if (i) hfx_sb_put(p->out, ", ");
+        hfx_glsl_expr(p, a[i], PREC_ASSIGN);
     }
-    sb_put(p->out, ")");
+    hfx_sb_put(p->out, ")");
 }
 
 /* An expression that is written (assignment target, out argument). */
-void glsl_lvalue(gp *p, const ir_expr *e, int max) {
+void hfx_glsl_lvalue(gp *p, const ir_expr *e, int max) {
     bool saved = p->lvalue;
     p->lvalue = true;
-    glsl_expr(p, e, max);
+    hfx_glsl_expr(p, e, max);
     p->lvalue = saved;
 }
 
 static void user_call(gp *p, const ir_expr *e) {
-    sb_printf(p->out, "%s(", e->fn->glsl);
+    hfx_sb_printf(p->out, "%s(", e->fn->glsl);
     for (uint32_t i = 0; i < e->n; i++) {
-        if (i) sb_put(p->out, ", ");
-        if (i < e->fn->param_count && (e->fn->params[i]->mods & MOD_OUT)) glsl_lvalue(p, e->a[i], PREC_ASSIGN);
-        else glsl_expr(p, e->a[i], PREC_ASSIGN);
+        if (i) hfx_sb_put(p->out, ", ");
+        if (i < e->fn->param_count && (e->fn->params[i]->mods & MOD_OUT)) hfx_glsl_lvalue(p, e->a[i], PREC_ASSIGN);
+        else hfx_glsl_expr(p, e->a[i], PREC_ASSIGN);
     }
-    sb_put(p->out, ")");
+    hfx_sb_put(p->out, ")");
 }
 
 static void binary(gp *p, const char *op, const ir_expr *x, const ir_expr *y, int prec, int max) {
     bool wrap = prec > max;
     open_paren(p, wrap);
-    glsl_expr(p, x, prec);
-    sb_printf(p->out, " %s ", op);
-    glsl_expr(p, y, prec - 1);
+    hfx_glsl_expr(p, x, prec);
+    hfx_sb_printf(p->out, " %s ", op);
+    hfx_glsl_expr(p, y, prec - 1);
     close_paren(p, wrap);
 }
 
 /* Helpers per GLSL type, overloaded by name. */
 static void helper_fmod(gp *p, const char *ty) {
-    if (glsl_helper(p, hfx_arena_printf(p->c->arena, "fmod %s", ty)))
-        sb_printf(&p->helpers, p->legacy ? "%s hfx_fmod(%s x, %s y) { %s q = x / y; return x - y * sign(q) * floor(abs(q)); }\n"
+    if (hfx_glsl_helper(p, hfx_arena_printf(p->c->arena, "fmod %s", ty)))
+        hfx_sb_printf(&p->helpers, p->legacy ? "%s hfx_fmod(%s x, %s y) { %s q = x / y; return x - y * sign(q) * floor(abs(q)); }\n"
                                          : "%s hfx_fmod(%s x, %s y) { return x - y * trunc(x / y); }\n", ty, ty, ty, ty);
 }
 
 static void helper_imod(gp *p, const char *ty) {
-    if (glsl_helper(p, hfx_arena_printf(p->c->arena, "imod %s", ty)))
-        sb_printf(&p->helpers, "%s hfx_imod(%s x, %s y) { return x - y * (x / y); }\n", ty, ty, ty);
+    if (hfx_glsl_helper(p, hfx_arena_printf(p->c->arena, "imod %s", ty)))
+        hfx_sb_printf(&p->helpers, "%s hfx_imod(%s x, %s y) { return x - y * (x / y); }\n", ty, ty, ty);
 }
 
 static const char *bvec(gp *p, unsigned n) { return n == 1 ? "bool" : hfx_arena_printf(p->c->arena, "bvec%u", n); }
 
 static void helper_logic(gp *p, unsigned n, bool is_and) {
     const char *ty = bvec(p, n), *name = is_and ? "hfx_and" : "hfx_or", *op = is_and ? "&&" : "||";
-    if (!glsl_helper(p, hfx_arena_printf(p->c->arena, "%s %s", name, ty))) return;
-    sb_printf(&p->helpers, "%s %s(%s a, %s b) { return %s(", ty, name, ty, ty, ty);
-    for (unsigned i = 0; i < n; i++) sb_printf(&p->helpers, "%sa[%u] %s b[%u]", i ? ", " : "", i, op, i);
-    sb_put(&p->helpers, "); }\n");
+    if (!hfx_glsl_helper(p, hfx_arena_printf(p->c->arena, "%s %s", name, ty))) return;
+    hfx_sb_printf(&p->helpers, "%s %s(%s a, %s b) { return %s(", ty, name, ty, ty, ty);
+    for (unsigned i = 0; i < n; i++) hfx_sb_printf(&p->helpers, "%sa[%u] %s b[%u]", i ? ", " : "", i, op, i);
+    hfx_sb_put(&p->helpers, "); }\n");
 }
 
 static void helper_select(gp *p, const hfx_type *t) {
-    const char *ty = glsl_type(p, t);
+    const char *ty = hfx_glsl_type(p, t);
     unsigned n = ncomp(t);
-    if (!glsl_helper(p, hfx_arena_printf(p->c->arena, "select %s", ty))) return;
-    sb_printf(&p->helpers, "%s hfx_select(%s c, %s a, %s b) { return %s(", ty, bvec(p, n), ty, ty, ty);
-    for (unsigned i = 0; i < n; i++) sb_printf(&p->helpers, "%sc[%u] ? a[%u] : b[%u]", i ? ", " : "", i, i, i);
-    sb_put(&p->helpers, "); }\n");
+    if (!hfx_glsl_helper(p, hfx_arena_printf(p->c->arena, "select %s", ty))) return;
+    hfx_sb_printf(&p->helpers, "%s hfx_select(%s c, %s a, %s b) { return %s(", ty, bvec(p, n), ty, ty, ty);
+    for (unsigned i = 0; i < n; i++) hfx_sb_printf(&p->helpers, "%sc[%u] ? a[%u] : b[%u]", i ? ", " : "", i, i, i);
+    hfx_sb_put(&p->helpers, "); }\n");
 }
 
 static void helper_splat_matrix(gp *p, const hfx_type *t) {
-    const char *ty = glsl_type(p, t);
-    if (!glsl_helper(p, hfx_arena_printf(p->c->arena, "splat %s", ty))) return;
-    sb_printf(&p->helpers, "%s hfx_splat_%s(float s) { return %s(", ty, ty, ty);
-    for (unsigned i = 0; i < t->rows; i++) sb_printf(&p->helpers, "%svec%u(s)", i ? ", " : "", t->cols);
-    sb_put(&p->helpers, "); }\n");
+    const char *ty = hfx_glsl_type(p, t);
+    if (!hfx_glsl_helper(p, hfx_arena_printf(p->c->arena, "splat %s", ty))) return;
+    hfx_sb_printf(&p->helpers, "%s hfx_splat_%s(float s) { return %s(", ty, ty, ty);
+    for (unsigned i = 0; i < t->rows; i++) hfx_sb_printf(&p->helpers, "%svec%u(s)", i ? ", " : "", t->cols);
+    hfx_sb_put(&p->helpers, "); }\n");
 }
 
 static void print_unary(gp *p, const ir_expr *e, int max) {
@@ -268,8 +268,8 @@ static void print_unary(gp *p, const ir_expr *e, int max) {
     if (e->op == OP_POSTINC || e->op == OP_POSTDEC) {
         bool wrap = PREC_POSTFIX > max;
         open_paren(p, wrap);
-        glsl_lvalue(p, x, PREC_POSTFIX);
-        sb_put(p->out, e->op == OP_POSTINC ? "++" : "--");
+        hfx_glsl_lvalue(p, x, PREC_POSTFIX);
+        hfx_sb_put(p->out, e->op == OP_POSTINC ? "++" : "--");
         close_paren(p, wrap);
         return;
     }
@@ -277,9 +277,9 @@ static void print_unary(gp *p, const ir_expr *e, int max) {
                      e->op == OP_PREINC ? "++" : "--";
     bool wrap = PREC_UNARY > max;
     open_paren(p, wrap);
-    sb_put(p->out, op);
-    if (e->op == OP_PREINC || e->op == OP_PREDEC) glsl_lvalue(p, x, PREC_POSTFIX);
-    else glsl_expr(p, x, PREC_POSTFIX); /* "- -x" would read as "--x" */
+    hfx_sb_put(p->out, op);
+    if (e->op == OP_PREINC || e->op == OP_PREDEC) hfx_glsl_lvalue(p, x, PREC_POSTFIX);
+    else hfx_glsl_expr(p, x, PREC_POSTFIX); /* "- -x" would read as "--x" */
     close_paren(p, wrap);
 }
 
@@ -288,7 +288,7 @@ static bool is_splat(const ir_expr *e) {
     if (e->kind != IE_CONVERT && !(e->kind == IE_CONSTRUCT && e->n == 1)) return false;
     const hfx_type *from = e->a[0]->type;
     return ncomp(from) == 1 && ncomp(e->type) > 1 && strcmp(scalar_name(NULL, from->base), scalar_name(NULL, e->type->base)) == 0 &&
-           (e->type->kind == TY_VECTOR || glsl_is_matrix(e->type));
+           (e->type->kind == TY_VECTOR || hfx_glsl_is_matrix(e->type));
 }
 
 static const char *rel_fn(hfx_op op) {
@@ -307,7 +307,7 @@ static void print_binary(gp *p, const ir_expr *e, int max) {
     unsigned n = ncomp(x->type);
     hfx_op op = e->op;
     if (op >= OP_LT && op <= OP_NE && n > 1) {
-        if (glsl_is_matrix(x->type)) glsl_error(p, e->loc, "comparison of matrices is not supported");
+        if (hfx_glsl_is_matrix(x->type)) hfx_glsl_error(p, e->loc, "comparison of matrices is not supported");
         call_args(p, rel_fn(op), e->a, 2);
         return;
     }
@@ -316,12 +316,12 @@ static void print_binary(gp *p, const ir_expr *e, int max) {
         call_args(p, op == OP_AND ? "hfx_and" : "hfx_or", e->a, 2);
         return;
     }
-    if (op == OP_MUL && glsl_is_matrix(x->type) && glsl_is_matrix(y->type)) {
+    if (op == OP_MUL && hfx_glsl_is_matrix(x->type) && hfx_glsl_is_matrix(y->type)) {
         call_args(p, "matrixCompMult", e->a, 2);
         return;
     }
     if (op == OP_MOD) {
-        const char *ty = glsl_type(p, e->type);
+        const char *ty = hfx_glsl_type(p, e->type);
         if (is_float(e->type->base)) { helper_fmod(p, ty); call_args(p, "hfx_fmod", e->a, 2); }
         else { helper_imod(p, ty); call_args(p, "hfx_imod", e->a, 2); }
         return;
@@ -333,9 +333,9 @@ static void print_binary(gp *p, const ir_expr *e, int max) {
         [OP_LT] = {"<", PREC_REL}, [OP_GT] = {">", PREC_REL}, [OP_LE] = {"<=", PREC_REL}, [OP_GE] = {">=", PREC_REL},
         [OP_EQ] = {"==", PREC_EQ}, [OP_NE] = {"!=", PREC_EQ}, [OP_AND] = {"&&", PREC_AND}, [OP_OR] = {"||", PREC_OR},
     };
-    if (op >= sizeof ops / sizeof *ops || !ops[op].s) { glsl_error(p, e->loc, "unknown operator"); return; }
+    if (op >= sizeof ops / sizeof *ops || !ops[op].s) { hfx_glsl_error(p, e->loc, "unknown operator"); return; }
     if (p->legacy && op >= OP_SHL && op <= OP_BITXOR) {
-        glsl_error(p, e->loc, "integer bit operations are not available in GLSL 110");
+        hfx_glsl_error(p, e->loc, "integer bit operations are not available in GLSL 110");
         return;
     }
     if (op >= OP_ADD && op <= OP_DIV) { /* GLSL mixes scalars and vectors here: drop the splat */
@@ -349,7 +349,7 @@ static void print_select(gp *p, const ir_expr *e, int max) {
     const ir_expr *c = e->a[0];
     if (ncomp(c->type) > 1) {
         /* mix(b, a, c) evaluates b first: with side effects, hfx_select keeps HLSL's order */
-        bool effects = ir_has_side_effects(c) || ir_has_side_effects(e->a[1]) || ir_has_side_effects(e->a[2]);
+        bool effects = hfx_ir_has_side_effects(c) || hfx_ir_has_side_effects(e->a[1]) || hfx_ir_has_side_effects(e->a[2]);
         if (is_float(e->type->base) && !p->legacy && !effects) {
             const ir_expr *args[3] = { e->a[2], e->a[1], c }; /* mix picks y where the bool is true */
             call_args(p, "mix", (ir_expr *const *)args, 3);
@@ -359,22 +359,22 @@ static void print_select(gp *p, const ir_expr *e, int max) {
         }
         return;
     }
-    if (ir_has_side_effects(e->a[1]) || ir_has_side_effects(e->a[2])) {
+    if (hfx_ir_has_side_effects(e->a[1]) || hfx_ir_has_side_effects(e->a[2])) {
         /* before SM6, HLSL evaluates both operands of ?: (the effects of both happen); a
          * function's arguments are all evaluated, GLSL's ?: evaluates one */
-        const char *ty = glsl_type(p, e->type);
-        if (glsl_helper(p, hfx_arena_printf(p->c->arena, "select1 %s", ty)))
-            sb_printf(&p->helpers, "%s hfx_select1(bool c, %s a, %s b) { return c ? a : b; }\n", ty, ty, ty);
+        const char *ty = hfx_glsl_type(p, e->type);
+        if (hfx_glsl_helper(p, hfx_arena_printf(p->c->arena, "select1 %s", ty)))
+            hfx_sb_printf(&p->helpers, "%s hfx_select1(bool c, %s a, %s b) { return c ? a : b; }\n", ty, ty, ty);
         call_args(p, "hfx_select1", e->a, 3);
         return;
     }
     bool wrap = PREC_SELECT > max;
     open_paren(p, wrap);
-    glsl_expr(p, c, PREC_OR);
-    sb_put(p->out, " ? ");
-    glsl_expr(p, e->a[1], PREC_ASSIGN);
-    sb_put(p->out, " : ");
-    glsl_expr(p, e->a[2], PREC_SELECT);
+    hfx_glsl_expr(p, c, PREC_OR);
+    hfx_sb_put(p->out, " ? ");
+    hfx_glsl_expr(p, e->a[1], PREC_ASSIGN);
+    hfx_sb_put(p->out, " : ");
+    hfx_glsl_expr(p, e->a[2], PREC_SELECT);
     close_paren(p, wrap);
 }
 
@@ -382,25 +382,25 @@ static void print_select(gp *p, const ir_expr *e, int max) {
  * order and returns v, so the assignment stays an expression. */
 static void print_scatter(gp *p, const ir_expr *e) {
     const ir_expr *ctor = e->a[0];
-    const char *vt = glsl_type(p, ctor->type);
+    const char *vt = hfx_glsl_type(p, ctor->type);
     sbuf sig = {.arena = p->c->arena}, body = {.arena = p->c->arena};
     unsigned at = 0;
     for (uint32_t i = 0; i < ctor->n; i++) {
         unsigned n = ncomp(ctor->a[i]->type);
-        sb_printf(&sig, "out %s a%u, ", glsl_type(p, ctor->a[i]->type), i);
-        sb_printf(&body, "a%u = v.%.*s; ", i, (int)n, &"xyzw"[at]);
+        hfx_sb_printf(&sig, "out %s a%u, ", hfx_glsl_type(p, ctor->a[i]->type), i);
+        hfx_sb_printf(&body, "a%u = v.%.*s; ", i, (int)n, &"xyzw"[at]);
         at += n;
     }
     const char *key = hfx_arena_printf(p->c->arena, "scatter %s%s", sig.d ? sig.d : "", vt);
-    if (glsl_helper(p, key))
-        sb_printf(&p->helpers, "%s hfx_scatter(%s%s v) { %sreturn v; }\n", vt, sig.d ? sig.d : "", vt, body.d ? body.d : "");
-    sb_put(p->out, "hfx_scatter(");
+    if (hfx_glsl_helper(p, key))
+        hfx_sb_printf(&p->helpers, "%s hfx_scatter(%s%s v) { %sreturn v; }\n", vt, sig.d ? sig.d : "", vt, body.d ? body.d : "");
+    hfx_sb_put(p->out, "hfx_scatter(");
     for (uint32_t i = 0; i < ctor->n; i++) {
-        glsl_lvalue(p, ctor->a[i], PREC_ASSIGN);
-        sb_put(p->out, ", ");
+        hfx_glsl_lvalue(p, ctor->a[i], PREC_ASSIGN);
+        hfx_sb_put(p->out, ", ");
     }
-    glsl_expr(p, e->a[1], PREC_ASSIGN);
-    sb_put(p->out, ")");
+    hfx_glsl_expr(p, e->a[1], PREC_ASSIGN);
+    hfx_sb_put(p->out, ")");
 }
 
 static void print_assign(gp *p, const ir_expr *e, int max) {
@@ -408,15 +408,15 @@ static void print_assign(gp *p, const ir_expr *e, int max) {
     if (x->kind == IE_CONSTRUCT && e->op == OP_NONE) { print_scatter(p, e); return; }
     bool wrap = PREC_ASSIGN > max;
     open_paren(p, wrap);
-    glsl_lvalue(p, x, PREC_UNARY);
+    hfx_glsl_lvalue(p, x, PREC_UNARY);
     if (e->op == OP_NONE) {
-        sb_put(p->out, " = ");
-        glsl_expr(p, y, PREC_ASSIGN);
-    } else if (e->op == OP_MOD || (e->op == OP_MUL && glsl_is_matrix(x->type))) {
+        hfx_sb_put(p->out, " = ");
+        hfx_glsl_expr(p, y, PREC_ASSIGN);
+    } else if (e->op == OP_MOD || (e->op == OP_MUL && hfx_glsl_is_matrix(x->type))) {
         /* no GLSL compound form with HLSL's meaning: x = f(x, y) */
         ir_expr tmp = *e;
         tmp.kind = IE_BINARY;
-        sb_put(p->out, " = ");
+        hfx_sb_put(p->out, " = ");
         print_binary(p, &tmp, PREC_ASSIGN);
     } else {
         static const char *const ops[] = {
@@ -424,10 +424,10 @@ static void print_assign(gp *p, const ir_expr *e, int max) {
             [OP_SHR] = ">>=", [OP_BITAND] = "&=", [OP_BITOR] = "|=", [OP_BITXOR] = "^=",
         };
         const char *op = e->op < sizeof ops / sizeof *ops ? ops[e->op] : NULL;
-        if (!op) { glsl_error(p, e->loc, "unknown assignment operator"); op = "="; }
+        if (!op) { hfx_glsl_error(p, e->loc, "unknown assignment operator"); op = "="; }
         if (e->op >= OP_ADD && e->op <= OP_DIV && is_splat(y) && x->type->kind == TY_VECTOR) y = y->a[0]; /* v *= s */
-        sb_printf(p->out, " %s ", op);
-        glsl_expr(p, y, PREC_ASSIGN);
+        hfx_sb_printf(p->out, " %s ", op);
+        hfx_glsl_expr(p, y, PREC_ASSIGN);
     }
     close_paren(p, wrap);
 }
@@ -436,31 +436,31 @@ static void print_assign(gp *p, const ir_expr *e, int max) {
  * so such a matrix is passed row by row (HLSL rows are GLSL columns). */
 static void print_construct(gp *p, const ir_expr *e) {
     if (p->legacy && e->type->kind == TY_ARRAY) { /* 110 has no array constructors (found by fuzz/fuzz_diff.c) */
-        glsl_error(p, e->loc, "array initializers and constructors need GLSL 330 or ES 300");
+        hfx_glsl_error(p, e->loc, "array initializers and constructors need GLSL 330 or ES 300");
         return;
     }
-    const char *ty = glsl_ctor_type(p, e->type);
-    if (glsl_is_matrix(e->type) && e->n == 1 && ncomp(e->a[0]->type) == 1) { /* a scalar spread */
+    const char *ty = hfx_glsl_ctor_type(p, e->type);
+    if (hfx_glsl_is_matrix(e->type) && e->n == 1 && ncomp(e->a[0]->type) == 1) { /* a scalar spread */
         helper_splat_matrix(p, e->type);
-        sb_printf(p->out, "hfx_splat_%s", ty);
+        hfx_sb_printf(p->out, "hfx_splat_%s", ty);
         call_args(p, "", e->a, 1);
         return;
     }
-    sb_printf(p->out, "%s(", ty);
+    hfx_sb_printf(p->out, "%s(", ty);
     for (uint32_t i = 0; i < e->n; i++) {
-        if (i) sb_put(p->out, ", ");
+        if (i) hfx_sb_put(p->out, ", ");
         const ir_expr *a = e->a[i];
-        if (glsl_is_matrix(e->type) && e->n > 1 && glsl_is_matrix(a->type)) {
+        if (hfx_glsl_is_matrix(e->type) && e->n > 1 && hfx_glsl_is_matrix(a->type)) {
             for (unsigned r = 0; r < a->type->rows; r++) {
-                if (r) sb_put(p->out, ", ");
-                glsl_expr(p, a, PREC_POSTFIX);
-                sb_printf(p->out, "[%u]", r);
+                if (r) hfx_sb_put(p->out, ", ");
+                hfx_glsl_expr(p, a, PREC_POSTFIX);
+                hfx_sb_printf(p->out, "[%u]", r);
             }
         } else {
-            glsl_expr(p, a, PREC_ASSIGN);
+            hfx_glsl_expr(p, a, PREC_ASSIGN);
         }
     }
-    sb_put(p->out, ")");
+    hfx_sb_put(p->out, ")");
 }
 
 static void print_convert(gp *p, const ir_expr *e, int max);
@@ -469,9 +469,9 @@ static void print_convert(gp *p, const ir_expr *e, int max);
  * 110, which builds matrices from vectors only (found by fuzz/fuzz_diff.c). */
 static void print_submatrix_columns(gp *p, const hfx_type *to, const ir_expr *x) {
     for (unsigned c = 0; c < to->rows; c++) {
-        if (c) sb_put(p->out, ", ");
-        glsl_expr(p, x, PREC_POSTFIX);
-        sb_printf(p->out, "[%u].%.*s", c, (int)to->cols, "xyzw");
+        if (c) hfx_sb_put(p->out, ", ");
+        hfx_glsl_expr(p, x, PREC_POSTFIX);
+        hfx_sb_printf(p->out, "[%u].%.*s", c, (int)to->cols, "xyzw");
     }
 }
 
@@ -483,29 +483,29 @@ static void print_fill(gp *p, const hfx_type *to, ir_expr *x) {
         print_convert(p, &conv, PREC_ASSIGN);
         return;
     }
-    if (p->legacy) { glsl_error(p, x->loc, "a cast to a struct or an array needs GLSL 330 or ES 300"); return; }
-    sb_printf(p->out, "%s(", glsl_ctor_type(p, to));
+    if (p->legacy) { hfx_glsl_error(p, x->loc, "a cast to a struct or an array needs GLSL 330 or ES 300"); return; }
+    hfx_sb_printf(p->out, "%s(", hfx_glsl_ctor_type(p, to));
     uint32_t n = to->kind == TY_ARRAY ? to->array_len : to->st ? to->st->field_count : 0;
     for (uint32_t i = 0; i < n; i++) {
-        if (i) sb_put(p->out, ", ");
+        if (i) hfx_sb_put(p->out, ", ");
         print_fill(p, to->kind == TY_ARRAY ? to->elem : to->st->fields[i].type, x);
     }
-    sb_put(p->out, ")");
+    hfx_sb_put(p->out, ")");
 }
 
 /* `(float[4])v`: each component of a vector or matrix (row by row) becomes an element. */
 static void print_to_array(gp *p, const hfx_type *to, const ir_expr *x) {
     unsigned n = ncomp(x->type);
     const char *elem = scalar_name(p, to->elem->base);
-    if (p->legacy) { glsl_error(p, x->loc, "a cast to an array needs GLSL 330 or ES 300"); return; }
-    sb_printf(p->out, "%s(", glsl_ctor_type(p, to));
+    if (p->legacy) { hfx_glsl_error(p, x->loc, "a cast to an array needs GLSL 330 or ES 300"); return; }
+    hfx_sb_printf(p->out, "%s(", hfx_glsl_ctor_type(p, to));
     for (unsigned i = 0; i < n; i++) {
-        sb_printf(p->out, "%s%s(", i ? ", " : "", elem);
-        glsl_expr(p, x, PREC_POSTFIX);
-        if (glsl_is_matrix(x->type)) sb_printf(p->out, "[%u][%u])", i / x->type->cols, i % x->type->cols);
-        else sb_printf(p->out, ".%c)", "xyzw"[i]);
+        hfx_sb_printf(p->out, "%s%s(", i ? ", " : "", elem);
+        hfx_glsl_expr(p, x, PREC_POSTFIX);
+        if (hfx_glsl_is_matrix(x->type)) hfx_sb_printf(p->out, "[%u][%u])", i / x->type->cols, i % x->type->cols);
+        else hfx_sb_printf(p->out, ".%c)", "xyzw"[i]);
     }
-    sb_put(p->out, ")");
+    hfx_sb_put(p->out, ")");
 }
 
 static void print_convert(gp *p, const ir_expr *e, int max) {
@@ -514,76 +514,76 @@ static void print_convert(gp *p, const ir_expr *e, int max) {
     unsigned nt = ncomp(to), nf = ncomp(from);
     if (nf == 1 && (to->kind == TY_STRUCT || to->kind == TY_ARRAY)) { print_fill(p, to, e->a[0]); return; }
     if (nf > 1 && to->kind == TY_ARRAY) { print_to_array(p, to, x); return; }
-    if (!nt || !nf) { glsl_expr(p, x, max); return; }
-    const char *tty = glsl_type(p, to), *fty = glsl_type(p, from);
-    if (glsl_is_matrix(to)) {
+    if (!nt || !nf) { hfx_glsl_expr(p, x, max); return; }
+    const char *tty = hfx_glsl_type(p, to), *fty = hfx_glsl_type(p, from);
+    if (hfx_glsl_is_matrix(to)) {
         if (nf == 1) {
             helper_splat_matrix(p, to);
-            sb_printf(p->out, "hfx_splat_%s(", tty);
-            if (!is_float(from->base)) sb_put(p->out, "float(");
-            glsl_expr(p, x, PREC_ASSIGN);
-            sb_put(p->out, is_float(from->base) ? ")" : "))");
+            hfx_sb_printf(p->out, "hfx_splat_%s(", tty);
+            if (!is_float(from->base)) hfx_sb_put(p->out, "float(");
+            hfx_glsl_expr(p, x, PREC_ASSIGN);
+            hfx_sb_put(p->out, is_float(from->base) ? ")" : "))");
             return;
         }
-        sb_printf(p->out, "%s(", tty); /* submatrix, or components in order from a vector */
-        if (p->legacy && glsl_is_matrix(from)) print_submatrix_columns(p, to, x); /* 110: no mat3(mat4) */
-        else glsl_expr(p, x, PREC_ASSIGN);
-        sb_put(p->out, ")");
+        hfx_sb_printf(p->out, "%s(", tty); /* submatrix, or components in order from a vector */
+        if (p->legacy && hfx_glsl_is_matrix(from)) print_submatrix_columns(p, to, x); /* 110: no mat3(mat4) */
+        else hfx_glsl_expr(p, x, PREC_ASSIGN);
+        hfx_sb_put(p->out, ")");
         return;
     }
     if (nt == 1 && nf > 1) { /* the first component */
         bool same = strcmp(tty, scalar_name(p, from->base)) == 0;
-        if (!same) sb_printf(p->out, "%s(", tty);
-        glsl_expr(p, x, PREC_POSTFIX);
-        sb_put(p->out, glsl_is_matrix(from) ? "[0][0]" : ".x");
-        if (!same) sb_put(p->out, ")");
+        if (!same) hfx_sb_printf(p->out, "%s(", tty);
+        hfx_glsl_expr(p, x, PREC_POSTFIX);
+        hfx_sb_put(p->out, hfx_glsl_is_matrix(from) ? "[0][0]" : ".x");
+        if (!same) hfx_sb_put(p->out, ")");
         return;
     }
-    if (to->kind == TY_MATRIX && to->cols == 1 && glsl_is_matrix(from)) { /* Nx1: column 0, a GLSL vector */
-        sb_printf(p->out, "%s(", tty);
+    if (to->kind == TY_MATRIX && to->cols == 1 && hfx_glsl_is_matrix(from)) { /* Nx1: column 0, a GLSL vector */
+        hfx_sb_printf(p->out, "%s(", tty);
         for (unsigned r = 0; r < nt; r++) {
-            if (r) sb_put(p->out, ", ");
-            glsl_expr(p, x, PREC_POSTFIX);
-            sb_printf(p->out, "[%u][0]", r);
+            if (r) hfx_sb_put(p->out, ", ");
+            hfx_glsl_expr(p, x, PREC_POSTFIX);
+            hfx_sb_printf(p->out, "[%u][0]", r);
         }
-        sb_put(p->out, ")");
+        hfx_sb_put(p->out, ")");
         return;
     }
-    if (strcmp(tty, fty) == 0) { glsl_expr(p, x, max); return; }
-    if (nt < nf && !glsl_is_matrix(from) && strcmp(scalar_name(p, to->base), scalar_name(p, from->base)) == 0) {
-        glsl_expr(p, x, PREC_POSTFIX);
-        sb_printf(p->out, ".%.*s", (int)nt, "xyzw");
+    if (strcmp(tty, fty) == 0) { hfx_glsl_expr(p, x, max); return; }
+    if (nt < nf && !hfx_glsl_is_matrix(from) && strcmp(scalar_name(p, to->base), scalar_name(p, from->base)) == 0) {
+        hfx_glsl_expr(p, x, PREC_POSTFIX);
+        hfx_sb_printf(p->out, ".%.*s", (int)nt, "xyzw");
         return;
     }
-    sb_printf(p->out, "%s(", tty);
-    glsl_expr(p, x, PREC_ASSIGN);
-    sb_put(p->out, ")");
+    hfx_sb_printf(p->out, "%s(", tty);
+    hfx_glsl_expr(p, x, PREC_ASSIGN);
+    hfx_sb_put(p->out, ")");
 }
 
 static void print_swizzle(gp *p, const ir_expr *e, int max) {
     const ir_expr *x = e->a[0];
     unsigned n = e->comp_count;
     if (ncomp(x->type) == 1) {
-        if (n == 1) { glsl_expr(p, x, max); return; }
-        sb_printf(p->out, "%s(", glsl_type(p, e->type));
-        glsl_expr(p, x, PREC_ASSIGN);
-        sb_put(p->out, ")");
+        if (n == 1) { hfx_glsl_expr(p, x, max); return; }
+        hfx_sb_printf(p->out, "%s(", hfx_glsl_type(p, e->type));
+        hfx_glsl_expr(p, x, PREC_ASSIGN);
+        hfx_sb_put(p->out, ")");
         return;
     }
-    if (glsl_is_matrix(x->type)) {
+    if (hfx_glsl_is_matrix(x->type)) {
         unsigned cols = x->type->cols;
-        if (n > 1) sb_printf(p->out, "%s(", glsl_type(p, e->type));
+        if (n > 1) hfx_sb_printf(p->out, "%s(", hfx_glsl_type(p, e->type));
         for (unsigned i = 0; i < n; i++) {
-            if (i) sb_put(p->out, ", ");
-            glsl_expr(p, x, PREC_POSTFIX);
-            sb_printf(p->out, "[%u][%u]", e->comps[i] / cols, e->comps[i] % cols);
+            if (i) hfx_sb_put(p->out, ", ");
+            hfx_glsl_expr(p, x, PREC_POSTFIX);
+            hfx_sb_printf(p->out, "[%u][%u]", e->comps[i] / cols, e->comps[i] % cols);
         }
-        if (n > 1) sb_put(p->out, ")");
+        if (n > 1) hfx_sb_put(p->out, ")");
         return;
     }
-    glsl_expr(p, x, PREC_POSTFIX);
-    sb_put(p->out, ".");
-    for (unsigned i = 0; i < n; i++) sb_printf(p->out, "%c", "xyzw"[e->comps[i] & 3]);
+    hfx_glsl_expr(p, x, PREC_POSTFIX);
+    hfx_sb_put(p->out, ".");
+    for (unsigned i = 0; i < n; i++) hfx_sb_printf(p->out, "%c", "xyzw"[e->comps[i] & 3]);
 }
 
 /* The test that sends a guarded read to zero: only the upper end for an index known not to be
@@ -606,54 +606,54 @@ static void print_guarded_read(gp *p, const ir_expr *e) {
     const hfx_type *at = v->type;
     const char *suffix, *test = guard_test(p, e, &suffix);
     const char *fn = hfx_arena_printf(p->c->arena, "hfx_read%s_%s", suffix, v->glsl);
-    if (glsl_helper(p, fn)) {
+    if (hfx_glsl_helper(p, fn)) {
         sbuf *saved = p->out;
         sbuf tmp = {.arena = p->c->arena};
         p->out = &tmp;
-        glsl_zero(p, at->elem);
+        hfx_glsl_zero(p, at->elem);
         p->out = saved;
         /* an if, not ?: (glslang's SPIR-V for a ?: of a uniform block's struct and a local one
          * stores mismatched types) */
         sbuf name = {.arena = p->c->arena};
-        glsl_uniform_read(p, &name, v);
-        sb_printf(&p->helpers, "%s %s(int i)\n{\n    if (%s) return %s;\n    return %s[i];\n}\n", glsl_ctor_type(p, at->elem),
+        hfx_glsl_uniform_read(p, &name, v);
+        hfx_sb_printf(&p->helpers, "%s %s(int i)\n{\n    if (%s) return %s;\n    return %s[i];\n}\n", hfx_glsl_ctor_type(p, at->elem),
                   fn, test, tmp.d ? tmp.d : "0", name.d ? name.d : v->glsl);
     }
-    sb_printf(p->out, "%s(", fn);
-    if (e->a[1]->type->base != B_INT) sb_put(p->out, "int(");
-    glsl_expr(p, e->a[1], PREC_ASSIGN);
-    sb_put(p->out, e->a[1]->type->base != B_INT ? "))" : ")");
+    hfx_sb_printf(p->out, "%s(", fn);
+    if (e->a[1]->type->base != B_INT) hfx_sb_put(p->out, "int(");
+    hfx_glsl_expr(p, e->a[1], PREC_ASSIGN);
+    hfx_sb_put(p->out, e->a[1]->type->base != B_INT ? "))" : ")");
 }
 
 static void print_index(gp *p, const ir_expr *e, int max) {
     const ir_expr *x = e->a[0], *i = e->a[1];
     if (!p->lvalue && x->type->kind == TY_ARRAY && x->kind == IE_VAR &&
         (x->var->kind == IRV_UNIFORM || x->var->kind == IRV_PRIVATE) &&
-        (!ir_is_const(i) ? e->range != IR_RANGE_IN_BOUNDS : i->cval[0] < 0 || i->cval[0] >= x->type->array_len)) {
+        (!hfx_ir_is_const(i) ? e->range != IR_RANGE_IN_BOUNDS : i->cval[0] < 0 || i->cval[0] >= x->type->array_len)) {
         bool saved = p->lvalue;
         p->lvalue = false;
         print_guarded_read(p, e);
         p->lvalue = saved;
         return;
     }
-    if (x->type->kind == TY_MATRIX && x->type->rows == 1) { glsl_expr(p, x, max); return; } /* float1xN: its row */
-    if (hfx_type_is_numeric(x->type) && ncomp(x->type) == 1) { glsl_expr(p, x, max); return; } /* float1[0] */
-    glsl_expr(p, x, PREC_POSTFIX);
-    sb_put(p->out, "[");
-    bool conv = i->type->base != B_INT && !ir_is_const(i), saved = p->lvalue;
-    if (conv) sb_put(p->out, "int(");
+    if (x->type->kind == TY_MATRIX && x->type->rows == 1) { hfx_glsl_expr(p, x, max); return; } /* float1xN: its row */
+    if (hfx_type_is_numeric(x->type) && ncomp(x->type) == 1) { hfx_glsl_expr(p, x, max); return; } /* float1[0] */
+    hfx_glsl_expr(p, x, PREC_POSTFIX);
+    hfx_sb_put(p->out, "[");
+    bool conv = i->type->base != B_INT && !hfx_ir_is_const(i), saved = p->lvalue;
+    if (conv) hfx_sb_put(p->out, "int(");
     p->lvalue = false; /* the index itself is read */
-    if (ir_is_const(i)) sb_printf(p->out, "%lld", (long long)hfx_ev_int(i->cval[0]));
-    else glsl_expr(p, i, PREC_COMMA - 1);
+    if (hfx_ir_is_const(i)) hfx_sb_printf(p->out, "%lld", (long long)hfx_ev_int(i->cval[0]));
+    else hfx_glsl_expr(p, i, PREC_COMMA - 1);
     p->lvalue = saved;
-    if (conv) sb_put(p->out, ")");
-    sb_put(p->out, "]");
+    if (conv) hfx_sb_put(p->out, ")");
+    hfx_sb_put(p->out, "]");
 }
 
-void glsl_intrinsic(gp *p, const ir_expr *e, int max);
+void hfx_glsl_intrinsic(gp *p, const ir_expr *e, int max);
 
-void glsl_expr(gp *p, const ir_expr *e, int max) {
-    if (!e) { glsl_error(p, (hfx_loc){0, 0, 0}, "missing expression"); return; }
+void hfx_glsl_expr(gp *p, const ir_expr *e, int max) {
+    if (!e) { hfx_glsl_error(p, (hfx_loc){0, 0, 0}, "missing expression"); return; }
     switch (e->kind) {
     case IE_CONST: {
         bool neg = ncomp(e->type) == 1 && e->cval[0] < 0;
@@ -662,21 +662,21 @@ void glsl_expr(gp *p, const ir_expr *e, int max) {
         close_paren(p, neg && PREC_UNARY > max);
         break;
     }
-    case IE_VAR: glsl_uniform_read(p, p->out, e->var); break;
+    case IE_VAR: hfx_glsl_uniform_read(p, p->out, e->var); break;
     case IE_UNARY: print_unary(p, e, max); break;
     case IE_BINARY: print_binary(p, e, max); break;
     case IE_SELECT: print_select(p, e, max); break;
     case IE_ASSIGN: print_assign(p, e, max); break;
     case IE_COMMA: binary(p, ",", e->a[0], e->a[1], PREC_COMMA, max); break;
     case IE_CALL: user_call(p, e); break;
-    case IE_INTRIN: glsl_intrinsic(p, e, max); break;
+    case IE_INTRIN: hfx_glsl_intrinsic(p, e, max); break;
     case IE_CONSTRUCT: print_construct(p, e); break;
     case IE_CONVERT: print_convert(p, e, max); break;
     case IE_SWIZZLE: print_swizzle(p, e, max); break;
     case IE_INDEX: print_index(p, e, max); break;
     case IE_FIELD:
-        glsl_expr(p, e->a[0], PREC_POSTFIX);
-        sb_printf(p->out, ".%s", hfx_glsl_name(p->c->arena, e->a[0]->type->st->fields[e->field].name));
+        hfx_glsl_expr(p, e->a[0], PREC_POSTFIX);
+        hfx_sb_printf(p->out, ".%s", hfx_glsl_name(p->c->arena, e->a[0]->type->st->fields[e->field].name));
         break;
     }
 }

@@ -1,4 +1,4 @@
-/* glsl_int.h: what glsl.c (declarations, statements, main) and glsl_expr.c (expressions,
+/* glsl_int.h: what glsl.c (declarations, statements, main) and hfx_glsl_expr.c (expressions,
  * intrinsics, helper functions) share. */
 #ifndef HFX_GLSL_INT_H
 #define HFX_GLSL_INT_H
@@ -15,7 +15,7 @@ typedef struct gp {
     const glsl_iface *io;
     hfx_target target;
     bool legacy;              /* GLSL 110. Nothing is decided on ES 300 against GLSL 330 but the
-                                 header: codegen makes one text from the other (glsl_retarget) */
+                                 header: codegen makes one text from the other (hfx_glsl_retarget) */
     sbuf *out;
     int indent;
     unsigned loop_counters;     /* hfx_iterK variables of [unroll(n)] loops so far */
@@ -39,28 +39,28 @@ typedef struct gp {
 enum { PREC_PRIMARY = 1, PREC_POSTFIX, PREC_UNARY, PREC_MUL, PREC_ADD, PREC_SHIFT, PREC_REL, PREC_EQ,
        PREC_BITAND, PREC_BITXOR, PREC_BITOR, PREC_AND, PREC_XOR, PREC_OR, PREC_SELECT, PREC_ASSIGN, PREC_COMMA };
 
-const char *glsl_type(gp *p, const hfx_type *t);        /* "vec4", "mat3x4", "LuzSpot"; arrays: the element */
-const char *glsl_ctor_type(gp *p, const hfx_type *t);   /* arrays as "float[3]" */
-void glsl_decl(gp *p, sbuf *out, const hfx_type *t, const char *name); /* appends "float a[3]" */
-bool glsl_is_matrix(const hfx_type *t);                 /* a matrix GLSL keeps as one (no 1xN / Nx1) */
-void glsl_zero(gp *p, const hfx_type *t);               /* a zero value of t */
-void glsl_expr(gp *p, const ir_expr *e, int max_prec);
-void glsl_lvalue(gp *p, const ir_expr *e, int max_prec); /* an expression that is written */
-bool glsl_helper(gp *p, const char *key);               /* true when key is new: print its text into p->helpers */
-void glsl_error(gp *p, hfx_loc loc, const char *msg);
+const char *hfx_glsl_type(gp *p, const hfx_type *t);        /* "vec4", "mat3x4", "LuzSpot"; arrays: the element */
+const char *hfx_glsl_ctor_type(gp *p, const hfx_type *t);   /* arrays as "float[3]" */
+void hfx_glsl_decl(gp *p, sbuf *out, const hfx_type *t, const char *name); /* appends "float a[3]" */
+bool hfx_glsl_is_matrix(const hfx_type *t);                 /* a matrix GLSL keeps as one (no 1xN / Nx1) */
+void hfx_glsl_zero(gp *p, const hfx_type *t);               /* a zero value of t */
+void hfx_glsl_expr(gp *p, const ir_expr *e, int max_prec);
+void hfx_glsl_lvalue(gp *p, const ir_expr *e, int max_prec); /* an expression that is written */
+bool hfx_glsl_helper(gp *p, const char *key);               /* true when key is new: print its text into p->helpers */
+void hfx_glsl_error(gp *p, hfx_loc loc, const char *msg);
 
 /* glsl_pack.c: HFXC_PACK_UNIFORMS (packed parameters read from `uniform vec4 hfx_c[K]`). */
-uint32_t glsl_packed_reg(const gp *p, const ir_var *v); /* v's first register, or HFX_NONE */
-void glsl_declare_regs(gp *p);                          /* hfx_c, when the stage reads a packed parameter */
-void glsl_declare_packed(gp *p, const ir_var *v, uint32_t reg); /* its private global */
-void glsl_init_packed(gp *p);                           /* main's first lines: each from its registers */
+uint32_t hfx_glsl_packed_reg(const gp *p, const ir_var *v); /* v's first register, or HFX_NONE */
+void hfx_glsl_declare_regs(gp *p);                          /* hfx_c, when the stage reads a packed parameter */
+void hfx_glsl_declare_packed(gp *p, const ir_var *v, uint32_t reg); /* its private global */
+void hfx_glsl_init_packed(gp *p);                           /* main's first lines: each from its registers */
 
 /* glsl_spirv.c: what the SPIR-V targets print differently. Every top-level uniform declaration
- * goes through glsl_uniform (v NULL for the code generator's own); reads of a uniform through
- * glsl_uniform_read; glsl_spirv_decls appends the declarations with Vulkan's block in place. */
-void glsl_uniform(gp *p, const ir_var *v, const char *name, const char *decl, bool sampler);
-void glsl_uniform_read(gp *p, sbuf *out, const ir_var *v);
-void glsl_record_struct(gp *p, const char *name, size_t text_from);
-void glsl_spirv_decls(gp *p, sbuf *all, const sbuf *decls);
+ * goes through hfx_glsl_uniform (v NULL for the code generator's own); reads of a uniform through
+ * hfx_glsl_uniform_read; hfx_glsl_spirv_decls appends the declarations with Vulkan's block in place. */
+void hfx_glsl_uniform(gp *p, const ir_var *v, const char *name, const char *decl, bool sampler);
+void hfx_glsl_uniform_read(gp *p, sbuf *out, const ir_var *v);
+void hfx_glsl_record_struct(gp *p, const char *name, size_t text_from);
+void hfx_glsl_spirv_decls(gp *p, sbuf *all, const sbuf *decls);
 
 #endif

@@ -15,74 +15,74 @@ static unsigned ncomp(const hfx_type *t) { return hfx_type_is_numeric(t) ? hfx_t
 static bool is_float(hfx_base b) { return b == B_FLOAT || b == B_HALF || b == B_DOUBLE || b == B_MIN16FLOAT; }
 
 static void args(gp *p, const char *fn, ir_expr *const *a, uint32_t n) {
-    sb_printf(p->out, "%s(", fn);
+    hfx_sb_printf(p->out, "%s(", fn);
     for (uint32_t i = 0; i < n; i++) {
-        if (i) sb_put(p->out, ", ");
-        glsl_expr(p, a[i], PREC_ASSIGN);
+        if (i) hfx_sb_put(p->out, ", ");
+        hfx_glsl_expr(p, a[i], PREC_ASSIGN);
     }
-    sb_put(p->out, ")");
+    hfx_sb_put(p->out, ")");
 }
 
 /* f(x, out y): modf, frexp. */
 static void args_out2(gp *p, const char *fn, ir_expr *const *a) {
-    sb_printf(p->out, "%s(", fn);
-    glsl_expr(p, a[0], PREC_ASSIGN);
-    sb_put(p->out, ", ");
-    glsl_lvalue(p, a[1], PREC_ASSIGN);
-    sb_put(p->out, ")");
+    hfx_sb_printf(p->out, "%s(", fn);
+    hfx_glsl_expr(p, a[0], PREC_ASSIGN);
+    hfx_sb_put(p->out, ", ");
+    hfx_glsl_lvalue(p, a[1], PREC_ASSIGN);
+    hfx_sb_put(p->out, ")");
 }
 
-static void wrap_open(gp *p, int prec, int max) { if (prec > max) sb_put(p->out, "("); }
-static void wrap_close(gp *p, int prec, int max) { if (prec > max) sb_put(p->out, ")"); }
+static void wrap_open(gp *p, int prec, int max) { if (prec > max) hfx_sb_put(p->out, "("); }
+static void wrap_close(gp *p, int prec, int max) { if (prec > max) hfx_sb_put(p->out, ")"); }
 
-static const char *ty(gp *p, const hfx_type *t) { return glsl_type(p, t); }
+static const char *ty(gp *p, const hfx_type *t) { return hfx_glsl_type(p, t); }
 
 /* `x` as a float type (dot, any/all of non-bool values). */
 static void as_float(gp *p, const ir_expr *x) {
-    if (is_float(x->type->base)) { glsl_expr(p, x, PREC_ASSIGN); return; }
+    if (is_float(x->type->base)) { hfx_glsl_expr(p, x, PREC_ASSIGN); return; }
     unsigned n = ncomp(x->type);
-    sb_printf(p->out, n > 1 ? "vec%u(" : "float(", n);
-    glsl_expr(p, x, PREC_ASSIGN);
-    sb_put(p->out, ")");
+    hfx_sb_printf(p->out, n > 1 ? "vec%u(" : "float(", n);
+    hfx_glsl_expr(p, x, PREC_ASSIGN);
+    hfx_sb_put(p->out, ")");
 }
 
 static void all_any(gp *p, const ir_expr *e, const char *fn) {
     const ir_expr *x = e->a[0];
     unsigned n = ncomp(x->type);
     if (n == 1) {
-        if (x->type->base == B_BOOL) glsl_expr(p, x, PREC_ASSIGN);
-        else { sb_put(p->out, "bool("); glsl_expr(p, x, PREC_ASSIGN); sb_put(p->out, ")"); }
+        if (x->type->base == B_BOOL) hfx_glsl_expr(p, x, PREC_ASSIGN);
+        else { hfx_sb_put(p->out, "bool("); hfx_glsl_expr(p, x, PREC_ASSIGN); hfx_sb_put(p->out, ")"); }
         return;
     }
-    sb_printf(p->out, "%s(", fn);
-    if (x->type->base == B_BOOL) glsl_expr(p, x, PREC_ASSIGN);
+    hfx_sb_printf(p->out, "%s(", fn);
+    if (x->type->base == B_BOOL) hfx_glsl_expr(p, x, PREC_ASSIGN);
     else {
-        sb_put(p->out, "notEqual(");
-        glsl_expr(p, x, PREC_ASSIGN);
-        sb_put(p->out, ", ");
-        glsl_zero(p, x->type);
-        sb_put(p->out, ")");
+        hfx_sb_put(p->out, "notEqual(");
+        hfx_glsl_expr(p, x, PREC_ASSIGN);
+        hfx_sb_put(p->out, ", ");
+        hfx_glsl_zero(p, x->type);
+        hfx_sb_put(p->out, ")");
     }
-    sb_put(p->out, ")");
+    hfx_sb_put(p->out, ")");
 }
 
 static void helper_lit(gp *p) {
-    if (glsl_helper(p, "lit"))
-        sb_put(&p->helpers,
+    if (hfx_glsl_helper(p, "lit"))
+        hfx_sb_put(&p->helpers,
                "vec4 hfx_lit(float n_dot_l, float n_dot_h, float m)\n{\n"
                "    return vec4(1.0, max(n_dot_l, 0.0), (n_dot_l < 0.0 || n_dot_h < 0.0) ? 0.0 : pow(n_dot_h, m), 1.0);\n}\n");
 }
 
 static void helper_typed(gp *p, const char *name, const hfx_type *t, const char *fmt) {
     const char *tn = ty(p, t);
-    if (!glsl_helper(p, hfx_arena_printf(p->c->arena, "%s %s", name, tn))) return;
+    if (!hfx_glsl_helper(p, hfx_arena_printf(p->c->arena, "%s %s", name, tn))) return;
     /* fmt writes $T for the type and $N for its component count */
     const char *s = fmt;
     for (; *s; s++) {
-        if (s[0] == '$' && s[1] == 'T') { sb_put(&p->helpers, tn); s++; continue; }
-        if (s[0] == '$' && s[1] == 'N') { sb_printf(&p->helpers, "%u", ncomp(t)); s++; continue; } /* components */
+        if (s[0] == '$' && s[1] == 'T') { hfx_sb_put(&p->helpers, tn); s++; continue; }
+        if (s[0] == '$' && s[1] == 'N') { hfx_sb_printf(&p->helpers, "%u", ncomp(t)); s++; continue; } /* components */
         char c[2] = { *s, 0 };
-        sb_put(&p->helpers, c);
+        hfx_sb_put(&p->helpers, c);
     }
 }
 
@@ -96,37 +96,37 @@ static void print_mul(gp *p, const ir_expr *e, int max) {
     const ir_expr *a = e->a[0], *b = e->a[1];
     const hfx_type *ta = a->type, *tb = b->type;
     unsigned na = ncomp(ta), nb = ncomp(tb);
-    bool ma = glsl_is_matrix(ta), mb = glsl_is_matrix(tb);
+    bool ma = hfx_glsl_is_matrix(ta), mb = hfx_glsl_is_matrix(tb);
     if (na == 1 || nb == 1 || (!ma && !mb && ncomp(e->type) > 1)) { /* scalar times anything; row x column */
         wrap_open(p, PREC_MUL, max);
-        glsl_expr(p, a, PREC_MUL);
-        sb_put(p->out, " * ");
-        glsl_expr(p, b, PREC_UNARY);
+        hfx_glsl_expr(p, a, PREC_MUL);
+        hfx_sb_put(p->out, " * ");
+        hfx_glsl_expr(p, b, PREC_UNARY);
         wrap_close(p, PREC_MUL, max);
         return;
     }
     if (!ma && !mb) { /* vector . vector */
         bool conv = !is_float(e->type->base);
-        if (conv) sb_printf(p->out, "%s(", ty(p, e->type));
-        sb_put(p->out, "dot(");
+        if (conv) hfx_sb_printf(p->out, "%s(", ty(p, e->type));
+        hfx_sb_put(p->out, "dot(");
         as_float(p, a);
-        sb_put(p->out, ", ");
+        hfx_sb_put(p->out, ", ");
         as_float(p, b);
-        sb_put(p->out, conv ? "))" : ")");
+        hfx_sb_put(p->out, conv ? "))" : ")");
         return;
     }
     /* column i of the GLSL matrix is HLSL row i: every product reverses */
     wrap_open(p, PREC_MUL, max);
-    glsl_expr(p, b, PREC_MUL);
-    sb_put(p->out, " * ");
-    glsl_expr(p, a, PREC_UNARY);
+    hfx_glsl_expr(p, b, PREC_MUL);
+    hfx_sb_put(p->out, " * ");
+    hfx_glsl_expr(p, a, PREC_UNARY);
     wrap_close(p, PREC_MUL, max);
 }
 
 /* The coordinate part `.xy` of a packed float4 argument (lod, bias, proj forms). */
 static void coord_part(gp *p, const ir_expr *t, unsigned n) {
-    glsl_expr(p, t, PREC_POSTFIX);
-    sb_printf(p->out, ".%.*s", (int)n, "xyzw");
+    hfx_glsl_expr(p, t, PREC_POSTFIX);
+    hfx_sb_printf(p->out, ".%.*s", (int)n, "xyzw");
 }
 
 /* The GLSL sampling function of a dimension and form (GLSL 110: texture2D... and no gradients). */
@@ -144,46 +144,46 @@ static const char *tex_function(gp *p, hfx_dim dim, hfx_tex_form form) {
 
 /* A 1D coordinate as the vec2 (t, 0.5) of the 2D texture of height 1 that stands for it. */
 static void coord_1d(gp *p, const ir_expr *t, const char *fill) {
-    sb_put(p->out, "vec2(");
-    glsl_expr(p, t, PREC_ASSIGN);
-    sb_printf(p->out, ", %s)", fill);
+    hfx_sb_put(p->out, "vec2(");
+    hfx_glsl_expr(p, t, PREC_ASSIGN);
+    hfx_sb_printf(p->out, ", %s)", fill);
 }
 
 /* tex*D(s, t) and tex*Dgrad(s, t, ddx, ddy) (no gradients in GLSL 110). */
 static void tex_plain_args(gp *p, const ir_expr *e, bool one_d, bool grad) {
     if (one_d) coord_1d(p, e->a[1], "0.5");
-    else glsl_expr(p, e->a[1], PREC_ASSIGN);
+    else hfx_glsl_expr(p, e->a[1], PREC_ASSIGN);
     for (int k = 2; grad && !p->legacy && k < 4; k++) {
-        sb_put(p->out, ", ");
+        hfx_sb_put(p->out, ", ");
         if (one_d) coord_1d(p, e->a[k], "0.0");
-        else glsl_expr(p, e->a[k], PREC_ASSIGN);
+        else hfx_glsl_expr(p, e->a[k], PREC_ASSIGN);
     }
 }
 
 /* tex*Dbias / tex*Dlod: the level (or bias) in .w. */
 static void tex_level_args(gp *p, const ir_expr *t, bool one_d, unsigned dims) {
-    if (one_d) { sb_put(p->out, "vec2("); coord_part(p, t, 1); sb_put(p->out, ", 0.5)"); }
+    if (one_d) { hfx_sb_put(p->out, "vec2("); coord_part(p, t, 1); hfx_sb_put(p->out, ", 0.5)"); }
     else coord_part(p, t, dims);
-    sb_put(p->out, ", ");
-    glsl_expr(p, t, PREC_POSTFIX);
-    sb_put(p->out, ".w");
+    hfx_sb_put(p->out, ", ");
+    hfx_glsl_expr(p, t, PREC_POSTFIX);
+    hfx_sb_put(p->out, ".w");
 }
 
 /* tex*Dproj: divided by .w (textureProj where GLSL has the form). */
 static void tex_proj_args(gp *p, const ir_expr *t, hfx_dim dim) {
     if (dim == DIM_1D) {
-        sb_put(p->out, "vec2(");
+        hfx_sb_put(p->out, "vec2(");
         coord_part(p, t, 1);
-        sb_put(p->out, " / ");
-        glsl_expr(p, t, PREC_POSTFIX);
-        sb_put(p->out, ".w, 0.5)");
+        hfx_sb_put(p->out, " / ");
+        hfx_glsl_expr(p, t, PREC_POSTFIX);
+        hfx_sb_put(p->out, ".w, 0.5)");
     } else if (dim == DIM_CUBE) {
         coord_part(p, t, 3);
-        sb_put(p->out, " / ");
-        glsl_expr(p, t, PREC_POSTFIX);
-        sb_put(p->out, ".w");
+        hfx_sb_put(p->out, " / ");
+        hfx_glsl_expr(p, t, PREC_POSTFIX);
+        hfx_sb_put(p->out, ".w");
     } else {
-        glsl_expr(p, t, PREC_ASSIGN);
+        hfx_glsl_expr(p, t, PREC_ASSIGN);
     }
 }
 
@@ -193,18 +193,18 @@ static void emit_tex(gp *p, const ir_expr *e, int max) {
     const hfx_intrinsic_info *info = hfx_intrinsic_info_of((int)e->intrin);
     hfx_dim dim = info->dim;
     hfx_tex_form form = info->tex_form == TEXF_PLAIN && e->n == 4 ? TEXF_GRAD : info->tex_form;
-    if (e->n < 2) { glsl_error(p, e->loc, "texture sampling needs coordinates"); return; }
+    if (e->n < 2) { hfx_glsl_error(p, e->loc, "texture sampling needs coordinates"); return; }
     if (p->legacy && form == TEXF_LOD && p->stage == IR_PIXEL) { /* 110 has texture2DLod in vertex shaders only */
-        glsl_error(p, e->loc, "tex*Dlod in a pixel shader needs GLSL 330 or ES 300");
+        hfx_glsl_error(p, e->loc, "tex*Dlod in a pixel shader needs GLSL 330 or ES 300");
         return;
     }
-    sb_printf(p->out, "%s(", tex_function(p, dim, form));
-    glsl_expr(p, e->a[0], PREC_ASSIGN);
-    sb_put(p->out, ", ");
+    hfx_sb_printf(p->out, "%s(", tex_function(p, dim, form));
+    hfx_glsl_expr(p, e->a[0], PREC_ASSIGN);
+    hfx_sb_put(p->out, ", ");
     if (form == TEXF_PLAIN || form == TEXF_GRAD) tex_plain_args(p, e, dim == DIM_1D, form == TEXF_GRAD);
     else if (form == TEXF_BIAS || form == TEXF_LOD) tex_level_args(p, e->a[1], dim == DIM_1D, dim == DIM_2D ? 2 : 3);
     else tex_proj_args(p, e->a[1], dim);
-    sb_put(p->out, ")");
+    hfx_sb_put(p->out, ")");
 }
 
 /* GLSL 110 lacks the hyperbolic functions, trunc-based helpers, isnan/isinf, modf and
@@ -282,7 +282,7 @@ static void emit_modf(gp *p, const ir_expr *e, int max) {
 /* determinant / transpose: a 1x1 "matrix" is its one value. */
 static void emit_matrix(gp *p, const ir_expr *e, int max) {
     if (p->legacy && legacy_intrinsic(p, e)) return;
-    if (!glsl_is_matrix(e->a[0]->type)) glsl_expr(p, e->a[0], max);
+    if (!hfx_glsl_is_matrix(e->a[0]->type)) hfx_glsl_expr(p, e->a[0], max);
     else emit_call(p, e, max);
 }
 
@@ -297,23 +297,23 @@ static void emit_numeric(gp *p, const ir_expr *e, int max) {
     }
     unsigned n = ncomp(t);
     const char *ft = n == 1 ? "float" : hfx_arena_printf(p->c->arena, "vec%u", n);
-    sb_printf(p->out, "%s(%s(", ty(p, t), glsl_name_of(e->intrin));
+    hfx_sb_printf(p->out, "%s(%s(", ty(p, t), glsl_name_of(e->intrin));
     for (uint32_t i = 0; i < e->n; i++) {
-        sb_printf(p->out, "%s%s(", i ? ", " : "", ft);
-        glsl_expr(p, e->a[i], PREC_ASSIGN);
-        sb_put(p->out, ")");
+        hfx_sb_printf(p->out, "%s%s(", i ? ", " : "", ft);
+        hfx_glsl_expr(p, e->a[i], PREC_ASSIGN);
+        hfx_sb_put(p->out, ")");
     }
-    sb_put(p->out, "))");
+    hfx_sb_put(p->out, "))");
 }
 
 /* GLSL 110 has no trunc: sign(x) * floor(abs(x)). */
 static void emit_trunc(gp *p, const ir_expr *e, int max) {
     if (!p->legacy) { emit_call(p, e, max); return; }
-    sb_put(p->out, "(sign(");
-    glsl_expr(p, e->a[0], PREC_ASSIGN);
-    sb_put(p->out, ") * floor(abs(");
-    glsl_expr(p, e->a[0], PREC_ASSIGN);
-    sb_put(p->out, ")))");
+    hfx_sb_put(p->out, "(sign(");
+    hfx_glsl_expr(p, e->a[0], PREC_ASSIGN);
+    hfx_sb_put(p->out, ") * floor(abs(");
+    hfx_glsl_expr(p, e->a[0], PREC_ASSIGN);
+    hfx_sb_put(p->out, ")))");
 }
 
 /* D3D9's pow instruction raises |x| (SM2/SM3 code from fxc computes pow(x, y) so): a
@@ -344,32 +344,32 @@ static bool nonnegative(const ir_expr *x) {
 /* D3D9's log instruction: log2(|x|), and -FLT_MAX (not -inf) at 0. */
 static void d3d_log2(gp *p, const ir_expr *x) {
     bool whole = nonnegative(x);
-    sb_put(p->out, whole ? "max(log2(" : "max(log2(abs(");
-    glsl_expr(p, x, PREC_ASSIGN);
-    sb_put(p->out, whole ? "), -3.40282347e+38)" : ")), -3.40282347e+38)");
+    hfx_sb_put(p->out, whole ? "max(log2(" : "max(log2(abs(");
+    hfx_glsl_expr(p, x, PREC_ASSIGN);
+    hfx_sb_put(p->out, whole ? "), -3.40282347e+38)" : ")), -3.40282347e+38)");
 }
 
-/* fxc's products for pow(x, n) (ir_pow_products' rule), as a helper taking x once:
+/* fxc's products for pow(x, n) (hfx_ir_pow_products' rule), as a helper taking x once:
  * hfx_pow3(x) is x * (x * x). lower/once.c expands the products inside functions; this is for
  * the places without a function to hold a local (static initialisers). */
 static void power_by_helper(gp *p, const ir_expr *x, int n) {
     const char *name = hfx_arena_printf(p->c->arena, n < 0 ? "powm%d" : "pow%d", n < 0 ? -n : n);
-    if (glsl_helper(p, hfx_arena_printf(p->c->arena, "%s %s", name, ty(p, x->type)))) {
+    if (hfx_glsl_helper(p, hfx_arena_printf(p->c->arena, "%s %s", name, ty(p, x->type)))) {
         const char *tn = ty(p, x->type);
         uint32_t m = (uint32_t)(n < 0 ? -(int64_t)n : n);
-        sb_printf(&p->helpers, "%s hfx_%s(%s x)\n{\n    %s r = %s(1.0);\n    %s s = x;\n", tn, name, tn, tn, tn, tn);
+        hfx_sb_printf(&p->helpers, "%s hfx_%s(%s x)\n{\n    %s r = %s(1.0);\n    %s s = x;\n", tn, name, tn, tn, tn, tn);
         bool first = true;
         for (int i = 0; i < 32 && m >> i; i++) {
-            if (i) sb_put(&p->helpers, "    s = s * s;\n");
+            if (i) hfx_sb_put(&p->helpers, "    s = s * s;\n");
             if (!(m >> i & 1)) continue;
-            sb_put(&p->helpers, first ? "    r = s;\n" : "    r = r * s;\n");
+            hfx_sb_put(&p->helpers, first ? "    r = s;\n" : "    r = r * s;\n");
             first = false;
         }
-        sb_put(&p->helpers, n < 0 ? "    return 1.0 / r;\n}\n" : "    return r;\n}\n");
+        hfx_sb_put(&p->helpers, n < 0 ? "    return 1.0 / r;\n}\n" : "    return r;\n}\n");
     }
-    sb_printf(p->out, "hfx_%s(", name);
-    glsl_expr(p, x, PREC_ASSIGN);
-    sb_put(p->out, ")");
+    hfx_sb_printf(p->out, "hfx_%s(", name);
+    hfx_glsl_expr(p, x, PREC_ASSIGN);
+    hfx_sb_put(p->out, ")");
 }
 
 /* pow(x, y) is exp(y * log(x)) with D3D9's log: |x|, and pow(0, 0) = 1, pow(0, y > 0) = 0;
@@ -378,15 +378,15 @@ static void emit_pow(gp *p, const ir_expr *e, int max) {
     (void)max;
     int n;
     if (is_float(e->type->base) && hfx_type_equal(e->a[0]->type, e->type) &&
-        ir_pow_products(e->a[1], ncomp(e->type), &n)) {
+        hfx_ir_pow_products(e->a[1], ncomp(e->type), &n)) {
         power_by_helper(p, e->a[0], n);
         return;
     }
-    sb_put(p->out, "exp2(");
-    glsl_expr(p, e->a[1], PREC_MUL);
-    sb_put(p->out, " * ");
+    hfx_sb_put(p->out, "exp2(");
+    hfx_glsl_expr(p, e->a[1], PREC_MUL);
+    hfx_sb_put(p->out, " * ");
     d3d_log2(p, e->a[0]);
-    sb_put(p->out, ")");
+    hfx_sb_put(p->out, ")");
 }
 
 /* log2, log (x ln 2) and log10 (x log10(2)) as fxc builds them on the log instruction. */
@@ -394,23 +394,23 @@ static void emit_log(gp *p, const ir_expr *e, int max) {
     const char *scale = e->intrin == HFX_INTR_LOG ? " * 0.693147181" : e->intrin == HFX_INTR_LOG10 ? " * 0.301029996" : "";
     if (*scale) wrap_open(p, PREC_MUL, max);
     d3d_log2(p, e->a[0]);
-    sb_put(p->out, scale);
+    hfx_sb_put(p->out, scale);
     if (*scale) wrap_close(p, PREC_MUL, max);
 }
 
 /* D3D9's rsq: 1 / sqrt(|x|), FLT_MAX at 0; sqrt is compiled as rcp(rsq(x)), so it takes |x| too. */
 static void emit_rsqrt(gp *p, const ir_expr *e, int max) {
     (void)max;
-    sb_put(p->out, "min(inversesqrt(abs(");
-    glsl_expr(p, e->a[0], PREC_ASSIGN);
-    sb_put(p->out, ")), 3.40282347e+38)");
+    hfx_sb_put(p->out, "min(inversesqrt(abs(");
+    hfx_glsl_expr(p, e->a[0], PREC_ASSIGN);
+    hfx_sb_put(p->out, ")), 3.40282347e+38)");
 }
 
 static void emit_sqrt(gp *p, const ir_expr *e, int max) {
     (void)max;
-    sb_put(p->out, "sqrt(abs(");
-    glsl_expr(p, e->a[0], PREC_ASSIGN);
-    sb_put(p->out, "))");
+    hfx_sb_put(p->out, "sqrt(abs(");
+    hfx_glsl_expr(p, e->a[0], PREC_ASSIGN);
+    hfx_sb_put(p->out, "))");
 }
 
 static void emit_all_any(gp *p, const ir_expr *e, int max) {
@@ -421,9 +421,9 @@ static void emit_all_any(gp *p, const ir_expr *e, int max) {
 static void emit_saturate(gp *p, const ir_expr *e, int max) {
     (void)max;
     const char *z = is_float(e->type->base) ? "0.0" : "0", *o = is_float(e->type->base) ? "1.0" : "1";
-    sb_put(p->out, "clamp(");
-    glsl_expr(p, e->a[0], PREC_ASSIGN);
-    sb_printf(p->out, ", %s, %s)", z, o);
+    hfx_sb_put(p->out, "clamp(");
+    hfx_glsl_expr(p, e->a[0], PREC_ASSIGN);
+    hfx_sb_printf(p->out, ", %s, %s)", z, o);
 }
 
 /* D3D's screen y grows downwards, GL's window y upwards (unless flipped). */
@@ -431,16 +431,16 @@ static void emit_ddy(gp *p, const ir_expr *e, int max) {
     p->uses_fixup = true;
     wrap_open(p, PREC_MUL, max);
     args(p, "dFdy", e->a, 1);
-    sb_put(p->out, " * (2.0 * hfx_pos_fixup.z - 1.0)");
+    hfx_sb_put(p->out, " * (2.0 * hfx_pos_fixup.z - 1.0)");
     wrap_close(p, PREC_MUL, max);
 }
 
 /* floor(x + 0.5), as fxc's ps_2/3 code computes round. */
 static void emit_round(gp *p, const ir_expr *e, int max) {
     (void)max;
-    sb_put(p->out, "floor(");
-    glsl_expr(p, e->a[0], PREC_ADD);
-    sb_put(p->out, " + 0.5)");
+    hfx_sb_put(p->out, "floor(");
+    hfx_glsl_expr(p, e->a[0], PREC_ADD);
+    hfx_sb_put(p->out, " + 0.5)");
 }
 
 /* HLSL's fmod truncates (GLSL's mod floors). */
@@ -520,11 +520,11 @@ static void emit_atan2(gp *p, const ir_expr *e, int max) {
 /* mad(a, b, c) = a * b + c (GLSL 330 has no fma; the driver fuses it when it can). */
 static void emit_mad(gp *p, const ir_expr *e, int max) {
     wrap_open(p, PREC_ADD, max);
-    glsl_expr(p, e->a[0], PREC_MUL);
-    sb_put(p->out, " * ");
-    glsl_expr(p, e->a[1], PREC_UNARY);
-    sb_put(p->out, " + ");
-    glsl_expr(p, e->a[2], PREC_MUL);
+    hfx_glsl_expr(p, e->a[0], PREC_MUL);
+    hfx_sb_put(p->out, " * ");
+    hfx_glsl_expr(p, e->a[1], PREC_UNARY);
+    hfx_sb_put(p->out, " + ");
+    hfx_glsl_expr(p, e->a[2], PREC_MUL);
     wrap_close(p, PREC_ADD, max);
 }
 
@@ -538,18 +538,18 @@ static void emit_dst(gp *p, const ir_expr *e, int max) {
 static void emit_sincos(gp *p, const ir_expr *e, int max) {
     (void)max;
     const hfx_type *t = e->a[0]->type;
-    if (glsl_is_matrix(t)) /* GLSL's sin takes no matrix: column by column (HLSL rows) */
+    if (hfx_glsl_is_matrix(t)) /* GLSL's sin takes no matrix: column by column (HLSL rows) */
         helper_typed(p, "sincos", t, hfx_arena_printf(p->c->arena, "void hfx_sincos($T x, out $T s, out $T c) {\n"
                                      "    for (int i = 0; i < %u; i++) { s[i] = sin(x[i]); c[i] = cos(x[i]); }\n}\n", t->rows));
     else
         helper_typed(p, "sincos", t, "void hfx_sincos($T x, out $T s, out $T c) { s = sin(x); c = cos(x); }\n");
-    sb_put(p->out, "hfx_sincos(");
-    glsl_expr(p, e->a[0], PREC_ASSIGN);
-    sb_put(p->out, ", ");
-    glsl_lvalue(p, e->a[1], PREC_ASSIGN);
-    sb_put(p->out, ", ");
-    glsl_lvalue(p, e->a[2], PREC_ASSIGN);
-    sb_put(p->out, ")");
+    hfx_sb_put(p->out, "hfx_sincos(");
+    hfx_glsl_expr(p, e->a[0], PREC_ASSIGN);
+    hfx_sb_put(p->out, ", ");
+    hfx_glsl_lvalue(p, e->a[1], PREC_ASSIGN);
+    hfx_sb_put(p->out, ", ");
+    hfx_glsl_lvalue(p, e->a[2], PREC_ASSIGN);
+    hfx_sb_put(p->out, ")");
 }
 
 static void emit_clip(gp *p, const ir_expr *e, int max) {
@@ -560,28 +560,28 @@ static void emit_clip(gp *p, const ir_expr *e, int max) {
 
 static void emit_d3dcolor(gp *p, const ir_expr *e, int max) {
     (void)max;
-    sb_put(p->out, "ivec4(");
-    glsl_expr(p, e->a[0], PREC_POSTFIX);
-    sb_put(p->out, ".zyxw * 255.001953)");
+    hfx_sb_put(p->out, "ivec4(");
+    hfx_glsl_expr(p, e->a[0], PREC_POSTFIX);
+    hfx_sb_put(p->out, ".zyxw * 255.001953)");
 }
 
 /* GLSL's dot is float only: integer vectors go through float and back. */
 static void emit_dot(gp *p, const ir_expr *e, int max) {
     (void)max;
-    if (!is_float(e->type->base)) sb_printf(p->out, "%s(", ty(p, e->type));
-    sb_put(p->out, "dot(");
+    if (!is_float(e->type->base)) hfx_sb_printf(p->out, "%s(", ty(p, e->type));
+    hfx_sb_put(p->out, "dot(");
     as_float(p, e->a[0]);
-    sb_put(p->out, ", ");
+    hfx_sb_put(p->out, ", ");
     as_float(p, e->a[1]);
-    sb_put(p->out, is_float(e->type->base) ? ")" : "))");
+    hfx_sb_put(p->out, is_float(e->type->base) ? ")" : "))");
 }
 
 static void emit_mul(gp *p, const ir_expr *e, int max) { print_mul(p, e, max); }
 
 static void emit_ldexp(gp *p, const ir_expr *e, int max) {
     wrap_open(p, PREC_MUL, max);
-    glsl_expr(p, e->a[0], PREC_MUL);
-    sb_put(p->out, " * ");
+    hfx_glsl_expr(p, e->a[0], PREC_MUL);
+    hfx_sb_put(p->out, " * ");
     args(p, "exp2", e->a + 1, 1);
     wrap_close(p, PREC_MUL, max);
 }
@@ -590,9 +590,9 @@ static void emit_isfinite(gp *p, const ir_expr *e, int max) {
     (void)max;
     if (ncomp(e->a[0]->type) != 1 && !p->legacy) { /* a component is NaN, infinite, or neither */
         args(p, "equal(isnan", e->a, 1);
-        sb_put(p->out, ", ");
+        hfx_sb_put(p->out, ", ");
         args(p, "isinf", e->a, 1);
-        sb_put(p->out, ")");
+        hfx_sb_put(p->out, ")");
         return;
     }
     /* GLSL 110 has neither isnan nor isinf (found by fuzz/fuzz_diff.c): there x == x rules out
@@ -616,7 +616,7 @@ static void emit_frexp(gp *p, const ir_expr *e, int max) {
         args_out2(p, "hfx_frexp", e->a);
         return;
     }
-    if (ncomp(e->a[0]->type) != 1) { glsl_error(p, e->loc, "'frexp' of a vector needs GLSL 330 or ES 300"); return; }
+    if (ncomp(e->a[0]->type) != 1) { hfx_glsl_error(p, e->loc, "'frexp' of a vector needs GLSL 330 or ES 300"); return; }
     helper_typed(p, "frexp", e->type,
                  "float hfx_frexp(float x, out float e)\n{\n    if (x == 0.0) { e = 0.0; return 0.0; }\n"
                  "    e = floor(log2(abs(x))) + 1.0;\n    return x * exp2(-e);\n}\n");
@@ -633,13 +633,13 @@ static void emit_reinterpret(gp *p, const ir_expr *e, int max) {
     else if (from == B_INT && is_float(to)) fn = "intBitsToFloat";
     else if (from == B_UINT && is_float(to)) fn = "uintBitsToFloat";
     else fn = ty(p, e->type);
-    if (p->legacy) { glsl_error(p, e->loc, "bit casts need GLSL 330 or ES 300"); return; }
+    if (p->legacy) { hfx_glsl_error(p, e->loc, "bit casts need GLSL 330 or ES 300"); return; }
     args(p, fn, e->a, 1);
 }
 
 static void emit_unsupported(gp *p, const ir_expr *e, int max) {
     (void)max;
-    glsl_error(p, e->loc, hfx_arena_printf(p->c->arena, "'%s': intrinsic is not supported", hfx_intrinsic_name((int)e->intrin)));
+    hfx_glsl_error(p, e->loc, hfx_arena_printf(p->c->arena, "'%s': intrinsic is not supported", hfx_intrinsic_name((int)e->intrin)));
 }
 
 /* The GLSL columns of check/intrinsics.def: each row's emitter and GLSL function. */
@@ -654,7 +654,7 @@ static const struct glsl_row {
 
 static const char *glsl_name_of(ir_intrin i) { return rows[i].fn; }
 
-void glsl_intrinsic(gp *p, const ir_expr *e, int max) {
-    if ((unsigned)e->intrin >= HFX_INTR_COUNT) { glsl_error(p, e->loc, "unknown intrinsic"); return; }
+void hfx_glsl_intrinsic(gp *p, const ir_expr *e, int max) {
+    if ((unsigned)e->intrin >= HFX_INTR_COUNT) { hfx_glsl_error(p, e->loc, "unknown intrinsic"); return; }
     rows[e->intrin].emit(p, e, max);
 }

@@ -12,7 +12,7 @@ static uint32_t preshader_reg(const gp *p, const ir_var *v) {
     return HFX_NONE;
 }
 
-uint32_t glsl_packed_reg(const gp *p, const ir_var *v) {
+uint32_t hfx_glsl_packed_reg(const gp *p, const ir_var *v) {
     if (v->pre && p->io) return preshader_reg(p, v);
     if (v->kind != IRV_UNIFORM || v->param == HFX_NONE || !p->io) return HFX_NONE;
     for (uint32_t k = 0; k < p->io->uniform_count; k++) {
@@ -24,30 +24,30 @@ uint32_t glsl_packed_reg(const gp *p, const ir_var *v) {
 
 static bool stage_packs(const gp *p) {
     for (uint32_t i = 0; i < p->sh->global_count; i++)
-        if (glsl_packed_reg(p, p->sh->globals[i]) != HFX_NONE) return true;
+        if (hfx_glsl_packed_reg(p, p->sh->globals[i]) != HFX_NONE) return true;
     return false;
 }
 
-void glsl_declare_regs(gp *p) {
+void hfx_glsl_declare_regs(gp *p) {
     if (stage_packs(p))
-        glsl_uniform(p, NULL, HFX_FX_REGS_NAME,
+        hfx_glsl_uniform(p, NULL, HFX_FX_REGS_NAME,
                      hfx_arena_printf(p->c->arena, "vec4 %s[%u]", HFX_FX_REGS_NAME, p->io->reg_count), false);
 }
 
-void glsl_declare_packed(gp *p, const ir_var *v, uint32_t reg) {
+void hfx_glsl_declare_packed(gp *p, const ir_var *v, uint32_t reg) {
     const hfx_type *t = v->type;
     uint32_t n = t->kind == TY_MATRIX ? t->rows : 1;
-    glsl_decl(p, p->out, t, v->glsl);
-    if (n > 1) sb_printf(p->out, "; // %s[%u..%u]", HFX_FX_REGS_NAME, reg, reg + n - 1);
-    else sb_printf(p->out, "; // %s[%u]", HFX_FX_REGS_NAME, reg);
-    if (v->pre) sb_printf(p->out, " = %s, computed on the CPU (a preshader)", v->pre_text);
-    sb_put(p->out, "\n");
+    hfx_glsl_decl(p, p->out, t, v->glsl);
+    if (n > 1) hfx_sb_printf(p->out, "; // %s[%u..%u]", HFX_FX_REGS_NAME, reg, reg + n - 1);
+    else hfx_sb_printf(p->out, "; // %s[%u]", HFX_FX_REGS_NAME, reg);
+    if (v->pre) hfx_sb_printf(p->out, " = %s, computed on the CPU (a preshader)", v->pre_text);
+    hfx_sb_put(p->out, "\n");
 }
 
 /* Register r, narrowed to its first n components. */
 static void reg_comps(gp *p, uint32_t r, unsigned n) {
-    sb_printf(p->out, "%s[%u]", HFX_FX_REGS_NAME, r);
-    if (n < 4) sb_printf(p->out, ".%.*s", (int)n, "xyzw");
+    hfx_sb_printf(p->out, "%s[%u]", HFX_FX_REGS_NAME, r);
+    if (n < 4) hfx_sb_printf(p->out, ".%.*s", (int)n, "xyzw");
 }
 
 /* The value of a packed parameter of type t whose first register is reg. A matrix of R > 1 rows
@@ -59,22 +59,22 @@ static void packed_value(gp *p, const hfx_type *t, uint32_t reg) {
         reg_comps(p, reg, hfx_type_components(t));
         return;
     }
-    sb_printf(p->out, "%s(", glsl_type(p, t));
+    hfx_sb_printf(p->out, "%s(", hfx_glsl_type(p, t));
     for (uint32_t i = 0; i < t->rows; i++) {
-        if (i) sb_put(p->out, ", ");
+        if (i) hfx_sb_put(p->out, ", ");
         reg_comps(p, reg + i, t->cols);
     }
-    sb_put(p->out, ")");
+    hfx_sb_put(p->out, ")");
 }
 
-void glsl_init_packed(gp *p) {
+void hfx_glsl_init_packed(gp *p) {
     for (uint32_t i = 0; i < p->sh->global_count; i++) {
         const ir_var *v = p->sh->globals[i];
-        uint32_t reg = glsl_packed_reg(p, v);
+        uint32_t reg = hfx_glsl_packed_reg(p, v);
         if (reg == HFX_NONE) continue;
-        for (int k = 0; k < p->indent; k++) sb_put(p->out, "    ");
-        sb_printf(p->out, "%s = ", v->glsl);
+        for (int k = 0; k < p->indent; k++) hfx_sb_put(p->out, "    ");
+        hfx_sb_printf(p->out, "%s = ", v->glsl);
         packed_value(p, v->type, reg);
-        sb_put(p->out, ";\n");
+        hfx_sb_put(p->out, ";\n");
     }
 }

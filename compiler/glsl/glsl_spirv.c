@@ -56,7 +56,7 @@ static int bool_uniform(gp *p, const ir_var *v, uint32_t *elements) {
         t = t->elem;
         if (t->kind == TY_ARRAY || !*elements || *elements > 65536) return 0;
     }
-    const char *tn = glsl_type(p, t);
+    const char *tn = hfx_glsl_type(p, t);
     if (strcmp(tn, "bool") == 0) return 1;
     if (strncmp(tn, "bvec", 4) == 0 && tn[4] >= '2' && tn[4] <= '4' && !tn[5]) return tn[4] - '0';
     return 0;
@@ -69,26 +69,26 @@ static void declare_bool(gp *p, const ir_var *v, int n, uint32_t elements) {
     snprintf(itype, sizeof itype, n == 1 ? "int" : "ivec%d", n);
     if (HFX_ARENA_GROW(p->c->arena, p->bools, p->bool_count, p->bool_cap, 4)) p->bools[p->bool_count++] = v;
     if (!elements) {
-        sb_printf(p->out, "uniform %s %s;\n", itype, name);
+        hfx_sb_printf(p->out, "uniform %s %s;\n", itype, name);
         return;
     }
-    sb_printf(p->out, "uniform %s %s[%u];\n", itype, name, elements);
-    sb_printf(p->out, "%s[%u] hfx_bools_%s() { %s r[%u]; for (int i = 0; i < %u; i++) r[i] = ", btype, elements, name,
+    hfx_sb_printf(p->out, "uniform %s %s[%u];\n", itype, name, elements);
+    hfx_sb_printf(p->out, "%s[%u] hfx_bools_%s() { %s r[%u]; for (int i = 0; i < %u; i++) r[i] = ", btype, elements, name,
               btype, elements, elements);
-    if (n == 1) sb_printf(p->out, "%s[i] != 0;", name);
-    else sb_printf(p->out, "%s(%s[i]);", btype, name);
-    sb_put(p->out, " return r; }\n");
+    if (n == 1) hfx_sb_printf(p->out, "%s[i] != 0;", name);
+    else hfx_sb_printf(p->out, "%s(%s[i]);", btype, name);
+    hfx_sb_put(p->out, " return r; }\n");
 }
 
-void glsl_uniform_read(gp *p, sbuf *out, const ir_var *v) {
+void hfx_glsl_uniform_read(gp *p, sbuf *out, const ir_var *v) {
     bool converted = false;
     for (uint32_t i = 0; i < p->bool_count && !converted; i++) converted = p->bools[i] == v;
     uint32_t elements;
     int n = converted ? bool_uniform(p, v, &elements) : 0;
-    if (!n) sb_put(out, v->glsl);
-    else if (elements) sb_printf(out, "hfx_bools_%s()", v->glsl);
-    else if (n == 1) sb_printf(out, "(%s != 0)", v->glsl);
-    else sb_printf(out, "bvec%d(%s)", n, v->glsl);
+    if (!n) hfx_sb_put(out, v->glsl);
+    else if (elements) hfx_sb_printf(out, "hfx_bools_%s()", v->glsl);
+    else if (n == 1) hfx_sb_printf(out, "(%s != 0)", v->glsl);
+    else hfx_sb_printf(out, "bvec%d(%s)", n, v->glsl);
 }
 
 /* OpenGL's SPIR-V: uniforms, then samplers, then the known internal ones, then any other. */
@@ -111,31 +111,31 @@ static void gl_uniform(gp *p, const ir_var *v, const char *name, const char *dec
     }
     if (loc > INT32_MAX) loc = -1;
     if (loc < 0 && unit < 0) { /* not ours to place: glslang's auto-mapping does it */
-        sb_printf(p->out, "uniform %s;\n", decl);
+        hfx_sb_printf(p->out, "uniform %s;\n", decl);
         return;
     }
-    sb_put(p->out, "layout(");
-    if (loc >= 0) sb_printf(p->out, "location = %lld", (long long)loc);
-    if (unit >= 0) sb_printf(p->out, "%sbinding = %lld", loc >= 0 ? ", " : "", (long long)unit);
-    sb_put(p->out, ") ");
+    hfx_sb_put(p->out, "layout(");
+    if (loc >= 0) hfx_sb_printf(p->out, "location = %lld", (long long)loc);
+    if (unit >= 0) hfx_sb_printf(p->out, "%sbinding = %lld", loc >= 0 ? ", " : "", (long long)unit);
+    hfx_sb_put(p->out, ") ");
     uint32_t elements;
     int n = bool_uniform(p, v, &elements);
     if (n) declare_bool(p, v, n, elements);
-    else sb_printf(p->out, "uniform %s;\n", decl);
+    else hfx_sb_printf(p->out, "uniform %s;\n", decl);
 }
 
-void glsl_uniform(gp *p, const ir_var *v, const char *name, const char *decl, bool sampler) {
+void hfx_glsl_uniform(gp *p, const ir_var *v, const char *name, const char *decl, bool sampler) {
     glsl_record *r = p->io ? p->io->record : NULL;
     if (r && p->target == HFX_TARGET_GLSL330 &&
         HFX_ARENA_GROW(p->c->arena, r->uniforms, r->uniform_count, r->uniform_cap, 8))
         r->uniforms[r->uniform_count++] = (struct glsl_rec_uniform){name, decl, sampler};
     if (!p->spirv) {
-        sb_printf(p->out, "uniform %s;\n", decl);
+        hfx_sb_printf(p->out, "uniform %s;\n", decl);
     } else if (!p->vulkan) {
         gl_uniform(p, v, name, decl);
     } else if (sampler) {
         int64_t k = hfx_fx_spirv_sampler(p->io->prog, name, strlen(name));
-        sb_printf(p->out, "layout(set = 0, binding = %lld) uniform %s;\n",
+        hfx_sb_printf(p->out, "layout(set = 0, binding = %lld) uniform %s;\n",
                   (long long)HFX_VK_BINDING_SAMPLER0 + (k >= 0 ? k : (int64_t)p->io->prog->sampler_count), decl);
     } else { /* a member of the block, which takes the stage's last loose uniform's place */
         p->block_at = p->out->len;
@@ -143,7 +143,7 @@ void glsl_uniform(gp *p, const ir_var *v, const char *name, const char *decl, bo
     }
 }
 
-void glsl_record_struct(gp *p, const char *name, size_t text_from) {
+void hfx_glsl_record_struct(gp *p, const char *name, size_t text_from) {
     glsl_record *r = p->io ? p->io->record : NULL;
     if (!r || p->target != HFX_TARGET_GLSL330 || p->structs_text.oom || !p->structs_text.d) return;
     const char *text = hfx_arena_strndup(p->c->arena, p->structs_text.d + text_from, p->structs_text.len - text_from);
@@ -153,7 +153,7 @@ void glsl_record_struct(gp *p, const char *name, size_t text_from) {
 
 static bool stage_defines(gp *p, const char *name) {
     for (uint32_t i = 0; i < p->struct_count; i++)
-        if (strcmp(glsl_type(p, p->structs[i]), name) == 0) return true;
+        if (strcmp(hfx_glsl_type(p, p->structs[i]), name) == 0) return true;
     return false;
 }
 
@@ -181,20 +181,20 @@ static void vk_block(gp *p, sbuf *all) {
     for (int s = 0; s < 2; s++)
         for (uint32_t i = 0; p->io->records[s] && i < p->io->records[s]->struct_count; i++) {
             const struct glsl_rec_struct *st = &p->io->records[s]->structs[i];
-            if (!earlier_struct(p, s, i, st->name) && !stage_defines(p, st->name)) sb_printf(all, "%s\n", st->text);
+            if (!earlier_struct(p, s, i, st->name) && !stage_defines(p, st->name)) hfx_sb_printf(all, "%s\n", st->text);
         }
-    sb_printf(all, "layout(std140, set = 0, binding = %d) uniform hfx_block\n{\n", HFX_VK_BINDING_BLOCK);
+    hfx_sb_printf(all, "layout(std140, set = 0, binding = %d) uniform hfx_block\n{\n", HFX_VK_BINDING_BLOCK);
     for (int s = 0; s < 2; s++)
         for (uint32_t i = 0; p->io->records[s] && i < p->io->records[s]->uniform_count; i++) {
             const struct glsl_rec_uniform *u = &p->io->records[s]->uniforms[i];
-            if (!u->sampler && !earlier_member(p, s, i, u->name)) sb_printf(all, "    %s;\n", u->decl);
+            if (!u->sampler && !earlier_member(p, s, i, u->name)) hfx_sb_printf(all, "    %s;\n", u->decl);
         }
-    sb_put(all, "};\n");
+    hfx_sb_put(all, "};\n");
 }
 
-void glsl_spirv_decls(gp *p, sbuf *all, const sbuf *decls) {
+void hfx_glsl_spirv_decls(gp *p, sbuf *all, const sbuf *decls) {
     size_t at = p->vulkan && p->has_block ? p->block_at : decls->len;
-    if (decls->d) sb_putn(all, decls->d, at);
+    if (decls->d) hfx_sb_putn(all, decls->d, at);
     if (p->vulkan && p->has_block) vk_block(p, all);
-    if (decls->d && at < decls->len) sb_putn(all, decls->d + at, decls->len - at);
+    if (decls->d && at < decls->len) hfx_sb_putn(all, decls->d + at, decls->len - at);
 }

@@ -23,7 +23,7 @@ typedef struct builder {
     ir_var **closed_for_vars; uint32_t closed_count, closed_cap; /* for-init vars whose loop ended */
     int depth;
     bool failed;
-    const ir_value_src *value;   /* building a value outside shader code (ir_build_value) */
+    const ir_value_src *value;   /* building a value outside shader code (hfx_ir_build_value) */
 } builder;
 
 /* Growable arrays in the arena (hfx_grow): the old block is simply abandoned. */
@@ -46,7 +46,7 @@ static void map_put(hfx_arena *a, var_map *m, const void *key, void *val) {
     m->vals[m->count++] = val;
 }
 
-ir_expr *ir_new_expr(ir_ctx *c, ir_expr_kind k, const hfx_type *ty, hfx_loc loc, uint32_t n) {
+ir_expr *hfx_ir_new_expr(ir_ctx *c, ir_expr_kind k, const hfx_type *ty, hfx_loc loc, uint32_t n) {
     ir_expr *e = HFX_NEW(c->arena, ir_expr);
     e->kind = k;
     e->type = ty;
@@ -56,21 +56,21 @@ ir_expr *ir_new_expr(ir_ctx *c, ir_expr_kind k, const hfx_type *ty, hfx_loc loc,
     return e;
 }
 
-ir_expr *ir_new_binary(ir_ctx *c, hfx_op op, const hfx_type *ty, ir_expr *a, ir_expr *b) {
-    ir_expr *e = ir_new_expr(c, IE_BINARY, ty, a->loc, 2);
+ir_expr *hfx_ir_new_binary(ir_ctx *c, hfx_op op, const hfx_type *ty, ir_expr *a, ir_expr *b) {
+    ir_expr *e = hfx_ir_new_expr(c, IE_BINARY, ty, a->loc, 2);
     e->op = op;
     e->a[0] = a;
     e->a[1] = b;
     return e;
 }
 
-ir_expr *ir_new_convert(ir_ctx *c, const hfx_type *ty, ir_expr *x) {
-    ir_expr *e = ir_new_expr(c, IE_CONVERT, ty, x->loc, 1);
+ir_expr *hfx_ir_new_convert(ir_ctx *c, const hfx_type *ty, ir_expr *x) {
+    ir_expr *e = hfx_ir_new_expr(c, IE_CONVERT, ty, x->loc, 1);
     e->a[0] = x;
     return e;
 }
 
-ir_stmt *ir_new_stmt(ir_ctx *c, ir_stmt_kind k, hfx_loc loc) {
+ir_stmt *hfx_ir_new_stmt(ir_ctx *c, ir_stmt_kind k, hfx_loc loc) {
     ir_stmt *s = HFX_NEW(c->arena, ir_stmt);
     if (!s) return NULL;
     s->kind = k;
@@ -78,15 +78,15 @@ ir_stmt *ir_new_stmt(ir_ctx *c, ir_stmt_kind k, hfx_loc loc) {
     return s;
 }
 
-ir_expr *ir_const_scalar(ir_ctx *c, const hfx_type *ty, double v, hfx_loc loc) {
-    ir_expr *e = ir_new_expr(c, IE_CONST, ty, loc, 0);
+ir_expr *hfx_ir_const_scalar(ir_ctx *c, const hfx_type *ty, double v, hfx_loc loc) {
+    ir_expr *e = hfx_ir_new_expr(c, IE_CONST, ty, loc, 0);
     unsigned n = hfx_type_components(ty);
     for (unsigned i = 0; i < n && i < 16; i++) e->cval[i] = v;
     return e;
 }
 
-bool ir_is_const(const ir_expr *e) { return e && e->kind == IE_CONST; }
-bool ir_const_truth(const ir_expr *e) { return e->cval[0] != 0; }
+bool hfx_ir_is_const(const ir_expr *e) { return e && e->kind == IE_CONST; }
+bool hfx_ir_const_truth(const ir_expr *e) { return e->cval[0] != 0; }
 
 static void fail(builder *b, hfx_loc loc, const char *what) {
     if (!b->value) hfx_error(b->c->diags, loc, X_UNSUPPORTED, "%s", what); /* a value that is not one: the caller says */
@@ -206,7 +206,7 @@ static ir_expr *sampler_element(builder *b, const hfx_expr *e) {
         v->glsl = hfx_arena_printf(b->c->arena, "%s_%u", hfx_glsl_name(b->c->arena, d->name), (unsigned)index->ival);
         add_global(b, v);
     }
-    ir_expr *r = ir_new_expr(b->c, IE_VAR, v->type, e->loc, 0);
+    ir_expr *r = hfx_ir_new_expr(b->c, IE_VAR, v->type, e->loc, 0);
     r->var = v;
     return r;
 }
@@ -220,7 +220,7 @@ static ir_expr *build_call(builder *b, const hfx_expr *e) {
     if (e->fn) {
         ir_func *f = build_func(b, e->fn, e->loc);
         if (!f) return NULL;
-        r = ir_new_expr(b->c, IE_CALL, e->type, e->loc, e->arg_count);
+        r = hfx_ir_new_expr(b->c, IE_CALL, e->type, e->loc, e->arg_count);
         r->fn = f;
     } else {
         int id = e->intrinsic; /* the checker resolved it: ids are intrinsics.def's */
@@ -228,7 +228,7 @@ static ir_expr *build_call(builder *b, const hfx_expr *e) {
             fail(b, e->loc, hfx_arena_printf(b->c->arena, "'%s': unknown function", e->name ? e->name : "?"));
             return NULL;
         }
-        r = ir_new_expr(b->c, IE_INTRIN, e->type, e->loc, e->arg_count);
+        r = hfx_ir_new_expr(b->c, IE_INTRIN, e->type, e->loc, e->arg_count);
         r->intrin = (ir_intrin)id;
     }
     for (uint32_t i = 0; i < e->arg_count; i++)
@@ -240,7 +240,7 @@ static ir_expr *build_call(builder *b, const hfx_expr *e) {
 static ir_expr *regroup(builder *b, const hfx_type *ty, ir_expr **flat, uint32_t n, uint32_t *pos, hfx_loc loc) {
     if (ty->kind == TY_ARRAY || ty->kind == TY_STRUCT) {
         uint32_t count = ty->kind == TY_ARRAY ? ty->array_len : ty->st->field_count;
-        ir_expr *r = ir_new_expr(b->c, IE_CONSTRUCT, ty, loc, count);
+        ir_expr *r = hfx_ir_new_expr(b->c, IE_CONSTRUCT, ty, loc, count);
         for (uint32_t i = 0; i < count; i++) {
             const hfx_type *et = ty->kind == TY_ARRAY ? ty->elem : ty->st->fields[i].type;
             if (!(r->a[i] = regroup(b, et, flat, n, pos, loc))) return NULL;
@@ -255,7 +255,7 @@ static ir_expr *regroup(builder *b, const hfx_type *ty, ir_expr **flat, uint32_t
         return NULL;
     }
     if (*pos - start == 1 && hfx_type_equal(flat[start]->type, ty)) return flat[start];
-    ir_expr *r = ir_new_expr(b->c, IE_CONSTRUCT, ty, loc, *pos - start);
+    ir_expr *r = hfx_ir_new_expr(b->c, IE_CONSTRUCT, ty, loc, *pos - start);
     for (uint32_t i = start; i < *pos; i++) r->a[i - start] = flat[i];
     return r;
 }
@@ -267,9 +267,9 @@ static void scalars_of(builder *b, ir_expr *x, ir_expr **out, uint32_t *n) {
         uint32_t count = ty->kind == TY_ARRAY ? ty->array_len : ty->st->field_count;
         for (uint32_t i = 0; i < count; i++) {
             const hfx_type *et = ty->kind == TY_ARRAY ? ty->elem : ty->st->fields[i].type;
-            ir_expr *part = ir_new_expr(b->c, ty->kind == TY_ARRAY ? IE_INDEX : IE_FIELD, et, x->loc, ty->kind == TY_ARRAY ? 2 : 1);
-            part->a[0] = ir_clone_expr(b->c, x);
-            if (ty->kind == TY_ARRAY) part->a[1] = ir_const_scalar(b->c, hfx_type_scalar(b->c->types, B_INT), i, x->loc);
+            ir_expr *part = hfx_ir_new_expr(b->c, ty->kind == TY_ARRAY ? IE_INDEX : IE_FIELD, et, x->loc, ty->kind == TY_ARRAY ? 2 : 1);
+            part->a[0] = hfx_ir_clone_expr(b->c, x);
+            if (ty->kind == TY_ARRAY) part->a[1] = hfx_ir_const_scalar(b->c, hfx_type_scalar(b->c->types, B_INT), i, x->loc);
             else part->field = i;
             scalars_of(b, part, out, n);
         }
@@ -278,8 +278,8 @@ static void scalars_of(builder *b, ir_expr *x, ir_expr **out, uint32_t *n) {
     unsigned count = hfx_type_components(ty);
     if (count == 1) { out[(*n)++] = x; return; }
     for (unsigned i = 0; i < count; i++) {
-        ir_expr *one = ir_new_expr(b->c, IE_SWIZZLE, hfx_type_scalar(b->c->types, ty->base), x->loc, 1);
-        one->a[0] = ir_clone_expr(b->c, x);
+        ir_expr *one = hfx_ir_new_expr(b->c, IE_SWIZZLE, hfx_type_scalar(b->c->types, ty->base), x->loc, 1);
+        one->a[0] = hfx_ir_clone_expr(b->c, x);
         one->comp_count = 1;
         one->comps[0] = (uint8_t)i; /* row-major for matrices */
         out[(*n)++] = one;
@@ -289,7 +289,7 @@ static void scalars_of(builder *b, ir_expr *x, ir_expr **out, uint32_t *n) {
 /* A value of type ty from scalars[*pos...], each converted to ty's element type. */
 static ir_expr *rebuild(builder *b, const hfx_type *ty, ir_expr **scalars, uint32_t *pos, hfx_loc loc) {
     uint32_t count = ty->kind == TY_ARRAY ? ty->array_len : ty->kind == TY_STRUCT ? ty->st->field_count : hfx_type_components(ty);
-    ir_expr *r = ir_new_expr(b->c, IE_CONSTRUCT, ty, loc, count);
+    ir_expr *r = hfx_ir_new_expr(b->c, IE_CONSTRUCT, ty, loc, count);
     for (uint32_t i = 0; i < count; i++) {
         if (ty->kind == TY_ARRAY || ty->kind == TY_STRUCT) {
             r->a[i] = rebuild(b, ty->kind == TY_ARRAY ? ty->elem : ty->st->fields[i].type, scalars, pos, loc);
@@ -298,7 +298,7 @@ static ir_expr *rebuild(builder *b, const hfx_type *ty, ir_expr **scalars, uint3
         ir_expr *s = scalars[(*pos)++];
         const hfx_type *want = hfx_type_scalar(b->c->types, ty->base);
         if (s->type != want) {
-            ir_expr *conv = ir_new_expr(b->c, IE_CONVERT, want, loc, 1);
+            ir_expr *conv = hfx_ir_new_expr(b->c, IE_CONVERT, want, loc, 1);
             conv->a[0] = s;
             s = conv;
         }
@@ -326,7 +326,7 @@ static bool restructures(const hfx_type *from, const hfx_type *to) {
 static ir_expr *build_restructure(builder *b, const hfx_expr *e) {
     ir_expr *x = build_expr(b, e->args[0]);
     if (!x) return NULL;
-    if (ir_has_side_effects(x)) {
+    if (hfx_ir_has_side_effects(x)) {
         fail(b, e->loc, "a cast to or from a struct of an expression with side effects is not supported");
         return NULL;
     }
@@ -345,7 +345,7 @@ static ir_expr *build_init_list(builder *b, const hfx_expr *e) {
 }
 
 static ir_expr *build_children(builder *b, const hfx_expr *e, ir_expr_kind k, const hfx_type *ty) {
-    ir_expr *r = ir_new_expr(b->c, k, ty, e->loc, e->arg_count);
+    ir_expr *r = hfx_ir_new_expr(b->c, k, ty, e->loc, e->arg_count);
     r->op = e->op;
     for (uint32_t i = 0; i < e->arg_count; i++)
         if (!(r->a[i] = build_expr(b, e->args[i]))) return NULL;
@@ -359,13 +359,13 @@ static ir_expr *build_node(builder *b, const hfx_expr *e) {
     ir_expr *r;
     switch (e->kind) {
     case EX_INT: case EX_BOOL:
-        return ir_const_scalar(b->c, e->type, (double)e->ival, e->loc);
+        return hfx_ir_const_scalar(b->c, e->type, (double)e->ival, e->loc);
     case EX_FLOAT:
-        return ir_const_scalar(b->c, e->type, e->fval, e->loc);
+        return hfx_ir_const_scalar(b->c, e->type, e->fval, e->loc);
     case EX_IDENT: {
         ir_var *v = lookup_var(b, e);
         if (!v) return NULL;
-        r = ir_new_expr(b->c, IE_VAR, v->type, e->loc, 0);
+        r = hfx_ir_new_expr(b->c, IE_VAR, v->type, e->loc, 0);
         r->var = v;
         return r;
     }
@@ -415,13 +415,13 @@ static ir_expr *build_expr(builder *b, const hfx_expr *e) {
     return b->value ? value_expr(b, e) : build_node(b, e);
 }
 
-/* ---- values outside shader code (ir_build_value) ---- */
+/* ---- values outside shader code (hfx_ir_build_value) ---- */
 
 /* A state's named value (`SrcAlpha`) as the int the state takes. */
 static ir_expr *state_name(builder *b, const hfx_expr *e) {
     int32_t v;
     if (!b->value->names || !e->name || hfx_state_value_lookup(b->value->names, e->name, &v) != 0) return NULL;
-    return ir_const_scalar(b->c, hfx_type_scalar(b->c->types, B_INT), v, e->loc);
+    return hfx_ir_const_scalar(b->c, hfx_type_scalar(b->c->types, B_INT), v, e->loc);
 }
 
 /* The parameter e reads (a whole one, or an array's element at a constant index) as a uniform. */
@@ -431,7 +431,7 @@ static ir_expr *value_param(builder *b, const hfx_expr *e) {
     ir_var *v = new_var(b, IRV_UNIFORM, e->kind == EX_INDEX ? NULL : e->sym, e->type);
     v->name = b->c->fx && p < b->c->fx->param_count ? b->c->fx->params[p].name : "param";
     v->param = p;
-    ir_expr *r = ir_new_expr(b->c, IE_VAR, e->type, e->loc, 0);
+    ir_expr *r = hfx_ir_new_expr(b->c, IE_VAR, e->type, e->loc, 0);
     r->var = v;
     return r;
 }
@@ -464,7 +464,7 @@ static ir_expr *value_expr(builder *b, const hfx_expr *e) {
     return r;
 }
 
-ir_expr *ir_build_value(ir_ctx *c, const hfx_expr *e, const ir_value_src *src) {
+ir_expr *hfx_ir_build_value(ir_ctx *c, const hfx_expr *e, const ir_value_src *src) {
     builder b = {0};
     b.c = c;
     b.sh = HFX_NEW(c->arena, ir_shader);
@@ -473,7 +473,7 @@ ir_expr *ir_build_value(ir_ctx *c, const hfx_expr *e, const ir_value_src *src) {
     return b.failed ? NULL : r;
 }
 
-static ir_stmt *new_stmt(builder *b, ir_stmt_kind k, hfx_loc loc) { return ir_new_stmt(b->c, k, loc); }
+static ir_stmt *new_stmt(builder *b, ir_stmt_kind k, hfx_loc loc) { return hfx_ir_new_stmt(b->c, k, loc); }
 
 typedef struct stmt_list { ir_stmt **items; uint32_t count, cap; } stmt_list;
 
@@ -708,11 +708,11 @@ static bool bind_uniform_params(builder *b, const hfx_expr *compile, ir_func *en
         ir_expr *val = build_expr(b, arg);
         if (!val) return false;
         if (!hfx_type_equal(val->type, v->type)) {
-            ir_expr *cv = ir_new_expr(b->c, IE_CONVERT, v->type, arg->loc, 1);
+            ir_expr *cv = hfx_ir_new_expr(b->c, IE_CONVERT, v->type, arg->loc, 1);
             cv->a[0] = val;
             val = cv;
         }
-        if (!ir_var_map_put(b->c, &b->sh->args, v, val)) return false;
+        if (!hfx_ir_var_map_put(b->c, &b->sh->args, v, val)) return false;
     }
     return true;
 }
@@ -727,7 +727,7 @@ static void move_entry_last(ir_shader *sh, ir_func *entry) {
     sh->funcs[sh->func_count - 1] = entry;
 }
 
-ir_shader *ir_build(ir_ctx *c, const hfx_expr *compile, ir_stage stage) {
+ir_shader *hfx_ir_build(ir_ctx *c, const hfx_expr *compile, ir_stage stage) {
     const hfx_func *f = compile->fn ? compile->fn : find_entry(c, compile);
     if (!f) {
         hfx_error(c->diags, compile->loc, X_UNDECLARED, "'%s': entry point not found", compile->name ? compile->name : "?");

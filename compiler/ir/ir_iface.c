@@ -8,13 +8,13 @@
 
 #include "ir/ir.h"
 
-const char *ir_canonical_semantic(hfx_arena *a, const char *semantic) {
+const char *hfx_ir_canonical_semantic(hfx_arena *a, const char *semantic) {
     char buf[64];
     size_t n = 0;
     for (; semantic[n] && n < sizeof buf - 2; n++) buf[n] = (char)toupper((unsigned char)semantic[n]);
     buf[n] = 0;
     if (buf[0] == 'S' && buf[1] == 'V' && buf[2] == '_') {
-        if (strncmp(buf + 3, "POSITION", 8) == 0) return ir_canonical_semantic(a, buf + 3);
+        if (strncmp(buf + 3, "POSITION", 8) == 0) return hfx_ir_canonical_semantic(a, buf + 3);
         if (strncmp(buf + 3, "TARGET", 6) == 0) return hfx_arena_printf(a, "COLOR%s", buf[9] ? buf + 9 : "0");
         if (strncmp(buf + 3, "DEPTH", 5) == 0) return "DEPTH0";
     }
@@ -47,14 +47,14 @@ static spot spot_in(const spot *s, uint32_t f, const char *path) {
 static void push(ir_ctx *c, leaves *l, const char *sem, const hfx_type *ty, const spot *s, hfx_loc loc, uint32_t mods) {
     if (!HFX_ARENA_GROW(c->arena, l->items, l->count, l->cap, 8)) return;
     ir_leaf *x = &l->items[l->count++];
-    *x = (ir_leaf){ ir_canonical_semantic(c->arena, sem), ty, s->path, loc, NULL, NULL,
+    *x = (ir_leaf){ hfx_ir_canonical_semantic(c->arena, sem), ty, s->path, loc, NULL, NULL,
                     (mods & MOD_NOINTERPOLATION) != 0, mods, s->root, {0}, s->depth, s->indexed };
     memcpy(x->fields, s->fields, sizeof x->fields);
 }
 
 /* The semantic `k` registers after sem: TEXCOORD1 + 2 = TEXCOORD3. */
 static const char *semantic_plus(ir_ctx *c, const char *sem, uint32_t k) {
-    const char *canon = ir_canonical_semantic(c->arena, sem);
+    const char *canon = hfx_ir_canonical_semantic(c->arena, sem);
     size_t n = strlen(canon);
     while (n && isdigit((unsigned char)canon[n - 1])) n--;
     return hfx_arena_printf(c->arena, "%.*s%lu", (int)n, canon, strtoul(canon + n, NULL, 10) + k);
@@ -110,7 +110,7 @@ static void walk(ir_ctx *c, leaves *l, const hfx_type *ty, const char *sem, cons
     push(c, l, sem, ty, at, loc, mods);
 }
 
-int ir_entry_leaves(ir_ctx *c, const ir_func *entry, bool outputs, ir_leaf **out) {
+int hfx_ir_entry_leaves(ir_ctx *c, const ir_func *entry, bool outputs, ir_leaf **out) {
     leaves l = {0};
     for (uint32_t i = 0; i < entry->param_count; i++) {
         const ir_var *v = entry->params[i];

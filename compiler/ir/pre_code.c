@@ -56,7 +56,7 @@ static bool binary_ok(const ir_expr *e) {
     return !((op == HFX_EV_DIV || op == HFX_EV_MOD) && e->type->base != B_FLOAT && e->type->base != B_HALF);
 }
 
-bool ir_pre_node(const ir_ctx *c, const ir_expr *e) {
+bool hfx_ir_pre_node(const ir_ctx *c, const ir_expr *e) {
     if (e->kind != IE_INDEX && e->kind != IE_VAR && !numeric_base(e->type)) return false;
     switch (e->kind) {
     case IE_CONST: return true;
@@ -74,13 +74,13 @@ bool ir_pre_node(const ir_ctx *c, const ir_expr *e) {
     }
 }
 
-bool ir_pre_only(const ir_ctx *c, const ir_expr *e) {
+bool hfx_ir_pre_only(const ir_ctx *c, const ir_expr *e) {
     for (uint32_t i = 0; i < e->n; i++)
-        if (!ir_pre_only(c, e->a[i])) return false;
-    return ir_pre_node(c, e);
+        if (!hfx_ir_pre_only(c, e->a[i])) return false;
+    return hfx_ir_pre_node(c, e);
 }
 
-bool ir_pre_work(const ir_expr *e) {
+bool hfx_ir_pre_work(const ir_expr *e) {
     return e->kind == IE_UNARY || e->kind == IE_BINARY || e->kind == IE_SELECT || e->kind == IE_INTRIN ||
            (e->kind == IE_INDEX && e->a[1]->kind != IE_CONST);
 }
@@ -93,7 +93,7 @@ bool ir_pre_work(const ir_expr *e) {
 static bool const_array(const ir_expr *a) {
     if (a->kind != IE_CONSTRUCT || a->type->kind != TY_ARRAY || !a->n || a->n != a->type->array_len) return false;
     for (uint32_t i = 0; i < a->n; i++)
-        if (!ir_is_const(a->a[i]) || !hfx_type_is_numeric(a->a[i]->type) || hfx_type_components(a->a[i]->type) > 16)
+        if (!hfx_ir_is_const(a->a[i]) || !hfx_type_is_numeric(a->a[i]->type) || hfx_type_components(a->a[i]->type) > 16)
             return false;
     return true;
 }
@@ -116,7 +116,7 @@ typedef struct pc {
 
 /* What the writer can write: a preshader's nodes, and a value's table reads and divisions. */
 static bool writable(const pc *p, const ir_expr *e) {
-    return table_read(e) || ir_pre_node(p->c, e) || (p->value && value_division(e));
+    return table_read(e) || hfx_ir_pre_node(p->c, e) || (p->value && value_division(e));
 }
 
 static void put(pc *p, uint32_t w) {
@@ -299,9 +299,9 @@ static uint32_t *program(ir_ctx *c, const ir_expr *e, bool value, uint32_t count
     return p.w;
 }
 
-uint32_t *ir_pre_code(ir_ctx *c, const ir_expr *e, uint32_t *words) { return program(c, e, false, 0, words); }
+uint32_t *hfx_ir_pre_code(ir_ctx *c, const ir_expr *e, uint32_t *words) { return program(c, e, false, 0, words); }
 
-uint32_t *ir_value_code(ir_ctx *c, const ir_expr *e, uint32_t clamp, uint32_t *words) {
+uint32_t *hfx_ir_value_code(ir_ctx *c, const ir_expr *e, uint32_t clamp, uint32_t *words) {
     return program(c, e, true, clamp, words);
 }
 
@@ -321,59 +321,59 @@ static void text(sbuf *b, hfx_arena *a, const ir_expr *e);
 
 static void binary_text(sbuf *b, hfx_arena *a, const ir_expr *e) {
     text(b, a, e->a[0]);
-    sb_put(b, op_text(e->op));
+    hfx_sb_put(b, op_text(e->op));
     text(b, a, e->a[1]);
 }
 
 /* An argument list's commas bracket enough: a binary argument needs no parentheses. */
 static void args(sbuf *b, hfx_arena *a, const ir_expr *e) {
-    sb_put(b, "(");
+    hfx_sb_put(b, "(");
     for (uint32_t i = 0; i < e->n; i++) {
-        if (i) sb_put(b, ", ");
+        if (i) hfx_sb_put(b, ", ");
         if (e->a[i]->kind == IE_BINARY) binary_text(b, a, e->a[i]);
         else text(b, a, e->a[i]);
     }
-    sb_put(b, ")");
+    hfx_sb_put(b, ")");
 }
 
 static void constant_text(sbuf *b, hfx_arena *a, const ir_expr *e) {
     unsigned n = hfx_type_components(e->type);
-    if (n > 1) sb_printf(b, "%s(", hfx_type_name(a, e->type));
-    for (unsigned i = 0; i < n; i++) sb_printf(b, "%s%g", i ? ", " : "", e->cval[i]);
-    if (n > 1) sb_put(b, ")");
+    if (n > 1) hfx_sb_printf(b, "%s(", hfx_type_name(a, e->type));
+    for (unsigned i = 0; i < n; i++) hfx_sb_printf(b, "%s%g", i ? ", " : "", e->cval[i]);
+    if (n > 1) hfx_sb_put(b, ")");
 }
 
 static void swizzle_text(sbuf *b, const ir_expr *e) {
     const hfx_type *t = e->a[0]->type;
-    sb_put(b, ".");
+    hfx_sb_put(b, ".");
     for (unsigned i = 0; i < e->comp_count; i++) {
         unsigned k = e->comps[i];
-        if (t->kind == TY_MATRIX) sb_printf(b, "_m%u%u", k / t->cols, k % t->cols);
-        else sb_printf(b, "%c", "xyzw"[k & 3]);
+        if (t->kind == TY_MATRIX) hfx_sb_printf(b, "_m%u%u", k / t->cols, k % t->cols);
+        else hfx_sb_printf(b, "%c", "xyzw"[k & 3]);
     }
 }
 
 static void text(sbuf *b, hfx_arena *a, const ir_expr *e) {
     switch (e->kind) {
     case IE_CONST: constant_text(b, a, e); return;
-    case IE_VAR: sb_put(b, e->var->name); return;
-    case IE_UNARY: sb_put(b, op_text(e->op)); text(b, a, e->a[0]); return;
-    case IE_BINARY: sb_put(b, "("); binary_text(b, a, e); sb_put(b, ")"); return;
+    case IE_VAR: hfx_sb_put(b, e->var->name); return;
+    case IE_UNARY: hfx_sb_put(b, op_text(e->op)); text(b, a, e->a[0]); return;
+    case IE_BINARY: hfx_sb_put(b, "("); binary_text(b, a, e); hfx_sb_put(b, ")"); return;
     case IE_SELECT:
-        sb_put(b, "(");
-        text(b, a, e->a[0]); sb_put(b, " ? "); text(b, a, e->a[1]); sb_put(b, " : "); text(b, a, e->a[2]);
-        sb_put(b, ")");
+        hfx_sb_put(b, "(");
+        text(b, a, e->a[0]); hfx_sb_put(b, " ? "); text(b, a, e->a[1]); hfx_sb_put(b, " : "); text(b, a, e->a[2]);
+        hfx_sb_put(b, ")");
         return;
-    case IE_CONSTRUCT: sb_put(b, hfx_type_name(a, e->type)); args(b, a, e); return;
-    case IE_CONVERT: sb_printf(b, "(%s)", hfx_type_name(a, e->type)); text(b, a, e->a[0]); return;
+    case IE_CONSTRUCT: hfx_sb_put(b, hfx_type_name(a, e->type)); args(b, a, e); return;
+    case IE_CONVERT: hfx_sb_printf(b, "(%s)", hfx_type_name(a, e->type)); text(b, a, e->a[0]); return;
     case IE_SWIZZLE: text(b, a, e->a[0]); swizzle_text(b, e); return;
-    case IE_INDEX: text(b, a, e->a[0]); sb_put(b, "["); text(b, a, e->a[1]); sb_put(b, "]"); return;
-    case IE_INTRIN: sb_put(b, hfx_intrinsic_name((int)e->intrin) ? hfx_intrinsic_name((int)e->intrin) : "?"); args(b, a, e); return;
-    default: sb_put(b, "?"); return;
+    case IE_INDEX: text(b, a, e->a[0]); hfx_sb_put(b, "["); text(b, a, e->a[1]); hfx_sb_put(b, "]"); return;
+    case IE_INTRIN: hfx_sb_put(b, hfx_intrinsic_name((int)e->intrin) ? hfx_intrinsic_name((int)e->intrin) : "?"); args(b, a, e); return;
+    default: hfx_sb_put(b, "?"); return;
     }
 }
 
-const char *ir_pre_text(ir_ctx *c, const ir_expr *e) {
+const char *hfx_ir_pre_text(ir_ctx *c, const ir_expr *e) {
     sbuf b = {.arena = c->arena};
     text(&b, c->arena, e);
     return b.oom || !b.d ? "?" : b.d; /* arena text: nothing to free */

@@ -31,13 +31,13 @@ static bool grow(ir_ctx *c, ir_var_map *m) {
     return true;
 }
 
-bool ir_var_map_put(ir_ctx *c, ir_var_map *m, const ir_var *v, void *val) {
+bool hfx_ir_var_map_put(ir_ctx *c, ir_var_map *m, const ir_var *v, void *val) {
     if ((m->count + 1) * 2 > m->cap && !grow(c, m)) return false;
     place(m, v, val);
     return true;
 }
 
-void *ir_var_map_get(const ir_var_map *m, const ir_var *v) {
+void *hfx_ir_var_map_get(const ir_var_map *m, const ir_var *v) {
     if (!m || !m->count || !v) return NULL;
     for (uint32_t i = slot_of(v, m->cap); m->keys[i]; i = (i + 1) & (m->cap - 1))
         if (m->keys[i] == v) return m->vals[i];

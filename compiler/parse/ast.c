@@ -18,7 +18,7 @@ typedef struct dump {
     hfx_arena arena;  /* for type names */
 } dump;
 
-static void put(dump *d, const char *s, size_t n) { sb_putn(&d->out, s, n); }
+static void put(dump *d, const char *s, size_t n) { hfx_sb_putn(&d->out, s, n); }
 
 static void puts_(dump *d, const char *s) { put(d, s, strlen(s)); }
 
@@ -428,7 +428,7 @@ char *hfx_ast_dump(const hfx_ast *ast) {
     puts_(&d, "");
     for (uint32_t i = 0; ast && i < ast->decl_count; i++) dump_decl(&d, ast->decls[i], 0);
     hfx_arena_free(&d.arena);
-    return sb_take(&d.out);
+    return hfx_sb_take(&d.out);
 }
 
 _Static_assert(OP_BITNOT - OP_NEG == HFX_EV_BITNOT - HFX_EV_NEG && OP_OR - OP_ADD == HFX_EV_OR - HFX_EV_ADD,

@@ -1,4 +1,4 @@
-/* keywords.c: the spelling tables behind kw_lookup (keywords.h). Every identifier of a file
+/* keywords.c: the spelling tables behind hfx_kw_lookup (keywords.h). Every identifier of a file
  * goes through here, most of them user names, so the tables are grouped by first letter (in
  * lower case) and each entry carries its length: a lookup checks the lengths of the few words
  * of its letter and compares spellings only when one fits. Numeric type names are not listed
@@ -42,7 +42,7 @@ typedef struct entry {
 /* Each word is filed under its first letter in lower case (NULL under n, DWORD under d): one
  * under another letter would never be found, which test_parse_lex would see. A spelling may
  * match several entries (`technique` is a keyword and, in any case, an effect-layer word);
- * kw_lookup applies them all. */
+ * hfx_kw_lookup applies them all. */
 /* Direct3D 10 state objects (`BlendState b { ... };`) are any-case words that start a global. */
 static const entry b_words[] = {KEYWORD("break", BREAK), SCALAR("bool", B_BOOL), ANY_CASE("blendstate", D3D10_STATE)};
 static const entry c_words[] = {
@@ -185,7 +185,7 @@ static void numeric_form(const char *s, uint32_t len, kw_word *w) {
     w->cols = (uint8_t)(s[len - 1] - '0');
 }
 
-void kw_lookup(const char *s, uint32_t len, kw_word *w) {
+void hfx_kw_lookup(const char *s, uint32_t len, kw_word *w) {
     memset(w, 0, sizeof *w);
     entry_list l = words_for(s, len);
     for (uint32_t i = 0; i < l.count; i++)
@@ -193,7 +193,7 @@ void kw_lookup(const char *s, uint32_t len, kw_word *w) {
     if (w->form == KW_TYPE_NONE) numeric_form(s, len, w);
 }
 
-const hfx_type *kw_builtin_type(hfx_types *types, const kw_word *w) {
+const hfx_type *hfx_kw_builtin_type(hfx_types *types, const kw_word *w) {
     switch (w->form) {
     case KW_TYPE_VOID: return hfx_type_void(types);
     case KW_TYPE_STRING: return hfx_type_object(types, TY_STRING, DIM_GENERIC);

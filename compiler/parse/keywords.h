@@ -1,6 +1,6 @@
 /* keywords.h: what an identifier's spelling can mean to the parser, looked up once per
- * identifier by parse_lex.c. The spelling alone decides it; the context (is this a keyword
- * here?) is parse_lex.c's business. Keywords are case-sensitive, as in fxc; the effect-layer
+ * identifier by hfx_parse_lex.c. The spelling alone decides it; the context (is this a keyword
+ * here?) is hfx_parse_lex.c's business. Keywords are case-sensitive, as in fxc; the effect-layer
  * keywords also have an any-case reading (XNA and MonoGame accept `Technique`, `Pass`), and
  * the object type names (`texture2D`, `Texture2D`) ignore case. Pure and table-driven: the
  * tables are const, so threads compiling at once share nothing mutable. */
@@ -35,8 +35,8 @@ typedef struct kw_word {
 } kw_word;
 
 /* Fills *w for the identifier s of len bytes (s need not be NUL-terminated). */
-void kw_lookup(const char *s, uint32_t len, kw_word *w);
+void hfx_kw_lookup(const char *s, uint32_t len, kw_word *w);
 /* The builtin type w names, or NULL when w->form is KW_TYPE_NONE. */
-const hfx_type *kw_builtin_type(hfx_types *types, const kw_word *w);
+const hfx_type *hfx_kw_builtin_type(hfx_types *types, const kw_word *w);
 
 #endif

@@ -6,10 +6,10 @@
 
 /* ---- declarators ---- */
 
-parse_declarator *pb_declarator(parse_ctx *ctx, const char *name, hfx_loc loc) {
+parse_declarator *hfx_pb_declarator(parse_ctx *ctx, const char *name, hfx_loc loc) {
     parse_declarator *d = HFX_NEW(ctx->arena, parse_declarator);
     if (!d) {
-        parse_fatal(ctx, loc, "out of memory");
+        hfx_parse_fatal(ctx, loc, "out of memory");
         return NULL;
     }
     d->name = name;
@@ -17,29 +17,29 @@ parse_declarator *pb_declarator(parse_ctx *ctx, const char *name, hfx_loc loc) {
     return d;
 }
 
-parse_declarator *pb_decl_dims(parse_ctx *ctx, parse_declarator *d, parse_vec dims) {
+parse_declarator *hfx_pb_decl_dims(parse_ctx *ctx, parse_declarator *d, parse_vec dims) {
     if (d) d->dims = dims;
     return d;
 }
 
-parse_declarator *pb_decl_semantic(parse_declarator *d, const char *semantic) {
+parse_declarator *hfx_pb_decl_semantic(parse_declarator *d, const char *semantic) {
     if (d) d->semantic = semantic;
     return d;
 }
 
-parse_declarator *pb_decl_register(parse_declarator *d, const char *reg) {
+parse_declarator *hfx_pb_decl_register(parse_declarator *d, const char *reg) {
     if (d) d->reg = reg;
     return d;
 }
 
-parse_declarator *pb_decl_annotations(parse_ctx *ctx, parse_declarator *d, parse_vec annotations) {
+parse_declarator *hfx_pb_decl_annotations(parse_ctx *ctx, parse_declarator *d, parse_vec annotations) {
     if (!d) return d;
     for (uint32_t i = 0; i < annotations.count; i++)
-        d->annotations = parse_vec_push(ctx, d->annotations, annotations.items[i]);
+        d->annotations = hfx_parse_vec_push(ctx, d->annotations, annotations.items[i]);
     return d;
 }
 
-parse_declarator *pb_decl_init(parse_declarator *d, hfx_expr *init) {
+parse_declarator *hfx_pb_decl_init(parse_declarator *d, hfx_expr *init) {
     if (d) d->init = init;
     return d;
 }
@@ -57,7 +57,7 @@ static hfx_annotation_ast *annotation_array(parse_ctx *ctx, parse_vec v, uint32_
 static hfx_decl *new_decl(parse_ctx *ctx, hfx_decl_kind kind, const char *name, hfx_loc loc) {
     hfx_decl *d = HFX_NEW(ctx->arena, hfx_decl);
     if (!d) {
-        parse_fatal(ctx, loc, "out of memory");
+        hfx_parse_fatal(ctx, loc, "out of memory");
         return NULL;
     }
     d->kind = kind;
@@ -70,7 +70,7 @@ static hfx_decl *new_decl(parse_ctx *ctx, hfx_decl_kind kind, const char *name, 
 static hfx_decl *var_decl(parse_ctx *ctx, hfx_decl_kind kind, parse_specs *specs, parse_declarator *dt) {
     hfx_decl *d = new_decl(ctx, kind, dt->name, dt->loc);
     if (!d) return NULL;
-    d->type = pb_array_type(ctx, specs->type, dt->dims);
+    d->type = hfx_pb_array_type(ctx, specs->type, dt->dims);
     d->mods = specs->mods;
     d->semantic = dt->semantic;
     d->reg = dt->reg;
@@ -80,7 +80,7 @@ static hfx_decl *var_decl(parse_ctx *ctx, hfx_decl_kind kind, parse_specs *specs
 }
 
 /* The DECL_STRUCT a declaration introduces with `struct S {...}`, or NULL. */
-hfx_decl *pb_struct_decl(parse_ctx *ctx, parse_specs *specs) {
+hfx_decl *hfx_pb_struct_decl(parse_ctx *ctx, parse_specs *specs) {
     if (!specs->defines) return NULL;
     hfx_decl *d = new_decl(ctx, DECL_STRUCT, specs->defines->name, specs->defines->loc);
     if (d) d->type = specs->type;
@@ -88,56 +88,56 @@ hfx_decl *pb_struct_decl(parse_ctx *ctx, parse_specs *specs) {
     return d;
 }
 
-parse_vec pb_vars(parse_ctx *ctx, parse_specs *specs, parse_vec declarators, bool global) {
-    parse_vec out = parse_vec_new();
-    hfx_decl *st = pb_struct_decl(ctx, specs);
-    if (st) out = parse_vec_push(ctx, out, st);
+parse_vec hfx_pb_vars(parse_ctx *ctx, parse_specs *specs, parse_vec declarators, bool global) {
+    parse_vec out = hfx_parse_vec_new();
+    hfx_decl *st = hfx_pb_struct_decl(ctx, specs);
+    if (st) out = hfx_parse_vec_push(ctx, out, st);
     for (uint32_t i = 0; i < declarators.count; i++) {
         parse_declarator *dt = declarators.items[i];
         hfx_decl *d = dt ? var_decl(ctx, DECL_VAR, specs, dt) : NULL;
         if (!d) continue;
         d->is_global = global;
-        out = parse_vec_push(ctx, out, d);
+        out = hfx_parse_vec_push(ctx, out, d);
     }
     return out;
 }
 
-parse_vec pb_typedefs(parse_ctx *ctx, parse_specs *specs, parse_vec declarators) {
-    parse_vec out = parse_vec_new();
-    hfx_decl *st = pb_struct_decl(ctx, specs);
-    if (st) out = parse_vec_push(ctx, out, st);
+parse_vec hfx_pb_typedefs(parse_ctx *ctx, parse_specs *specs, parse_vec declarators) {
+    parse_vec out = hfx_parse_vec_new();
+    hfx_decl *st = hfx_pb_struct_decl(ctx, specs);
+    if (st) out = hfx_parse_vec_push(ctx, out, st);
     for (uint32_t i = 0; i < declarators.count; i++) {
         parse_declarator *dt = declarators.items[i];
         hfx_decl *d = dt ? var_decl(ctx, DECL_TYPEDEF, specs, dt) : NULL;
         if (!d) continue;
-        parse_typename *e = parse_find_typename(ctx, d->name);
+        parse_typename *e = hfx_parse_find_typename(ctx, d->name);
         if (e && !e->type && !e->st) {
             e->type = d->type;
             e->mods = d->mods;
         }
-        out = parse_vec_push(ctx, out, d);
+        out = hfx_parse_vec_push(ctx, out, d);
     }
     return out;
 }
 
-parse_vec pb_fields(parse_ctx *ctx, parse_vec fields, parse_specs *specs, parse_vec declarators) {
+parse_vec hfx_pb_fields(parse_ctx *ctx, parse_vec fields, parse_specs *specs, parse_vec declarators) {
     for (uint32_t i = 0; i < declarators.count; i++) {
         parse_declarator *dt = declarators.items[i];
         hfx_field *f = dt ? HFX_NEW(ctx->arena, hfx_field) : NULL;
         if (!f) continue;
         f->name = dt->name;
-        f->type = pb_array_type(ctx, specs->type, dt->dims);
+        f->type = hfx_pb_array_type(ctx, specs->type, dt->dims);
         f->semantic = dt->semantic;
         f->mods = specs->mods;
         f->loc = dt->loc;
-        fields = parse_vec_push(ctx, fields, f);
+        fields = hfx_parse_vec_push(ctx, fields, f);
     }
     return fields;
 }
 
 /* ---- functions ---- */
 
-hfx_decl *pb_param(parse_ctx *ctx, parse_specs *specs, parse_declarator *dt, hfx_loc loc) {
+hfx_decl *hfx_pb_param(parse_ctx *ctx, parse_specs *specs, parse_declarator *dt, hfx_loc loc) {
     if (!dt) {
         hfx_decl *d = new_decl(ctx, DECL_PARAM, NULL, loc);
         if (!d) return NULL;
@@ -155,7 +155,7 @@ static bool is_void_list(parse_vec params) {
     return !p->name && p->type && p->type->kind == TY_VOID;
 }
 
-hfx_decl *pb_function(parse_ctx *ctx, parse_specs *specs, const char *name, hfx_loc loc, parse_vec params,
+hfx_decl *hfx_pb_function(parse_ctx *ctx, parse_specs *specs, const char *name, hfx_loc loc, parse_vec params,
                       const char *semantic) {
     hfx_decl *d = new_decl(ctx, DECL_FUNC, name, loc);
     hfx_func *f = HFX_NEW(ctx->arena, hfx_func);
@@ -188,7 +188,7 @@ static hfx_attribute *attribute_array(parse_ctx *ctx, parse_vec v, uint32_t *cou
     return a;
 }
 
-hfx_decl *pb_function_body(parse_ctx *ctx, hfx_decl *fn, parse_vec attrs, hfx_stmt *body) {
+hfx_decl *hfx_pb_function_body(parse_ctx *ctx, hfx_decl *fn, parse_vec attrs, hfx_stmt *body) {
     if (!fn) return NULL;
     fn->func->body = body;
     /* a prototype may leave parameters unnamed (as C does); a definition may not */
@@ -200,17 +200,17 @@ hfx_decl *pb_function_body(parse_ctx *ctx, hfx_decl *fn, parse_vec attrs, hfx_st
     return fn;
 }
 
-hfx_annotation_ast *pb_annotation(parse_ctx *ctx, const hfx_type *type, parse_declarator *dt) {
+hfx_annotation_ast *hfx_pb_annotation(parse_ctx *ctx, const hfx_type *type, parse_declarator *dt) {
     hfx_annotation_ast *a = HFX_NEW(ctx->arena, hfx_annotation_ast);
     if (!a || !dt) return a;
-    a->type = pb_array_type(ctx, type, dt->dims);
+    a->type = hfx_pb_array_type(ctx, type, dt->dims);
     a->name = dt->name;
     a->value = dt->init;
     a->loc = dt->loc;
     return a;
 }
 
-hfx_attribute *pb_attribute(parse_ctx *ctx, const char *name, parse_vec args, hfx_loc loc) {
+hfx_attribute *hfx_pb_attribute(parse_ctx *ctx, const char *name, parse_vec args, hfx_loc loc) {
     hfx_attribute *a = HFX_NEW(ctx->arena, hfx_attribute);
     if (!a) return NULL;
     a->name = name;
@@ -222,7 +222,7 @@ hfx_attribute *pb_attribute(parse_ctx *ctx, const char *name, parse_vec args, hf
 
 /* ---- techniques ---- */
 
-hfx_state_assign *pb_state(parse_ctx *ctx, const char *name, hfx_expr *index, hfx_expr *value, hfx_loc loc) {
+hfx_state_assign *hfx_pb_state(parse_ctx *ctx, const char *name, hfx_expr *index, hfx_expr *value, hfx_loc loc) {
     hfx_state_assign *s = HFX_NEW(ctx->arena, hfx_state_assign);
     if (!s) return NULL;
     s->name = name;
@@ -241,7 +241,7 @@ static hfx_state_assign *state_array(parse_ctx *ctx, parse_vec v, uint32_t *coun
     return a;
 }
 
-hfx_pass_ast *pb_pass(parse_ctx *ctx, const char *name, parse_vec annotations, parse_vec states, hfx_loc loc) {
+hfx_pass_ast *hfx_pb_pass(parse_ctx *ctx, const char *name, parse_vec annotations, parse_vec states, hfx_loc loc) {
     hfx_pass_ast *p = HFX_NEW(ctx->arena, hfx_pass_ast);
     if (!p) return NULL;
     p->name = name;
@@ -251,7 +251,7 @@ hfx_pass_ast *pb_pass(parse_ctx *ctx, const char *name, parse_vec annotations, p
     return p;
 }
 
-hfx_decl *pb_technique(parse_ctx *ctx, const char *keyword, const char *name, parse_vec annotations,
+hfx_decl *hfx_pb_technique(parse_ctx *ctx, const char *keyword, const char *name, parse_vec annotations,
                        parse_vec passes, hfx_loc loc) {
     hfx_decl *d = new_decl(ctx, DECL_TECHNIQUE, name, loc);
     hfx_technique_ast *t = HFX_NEW(ctx->arena, hfx_technique_ast);
@@ -268,19 +268,19 @@ hfx_decl *pb_technique(parse_ctx *ctx, const char *keyword, const char *name, pa
     return d;
 }
 
-void pb_global(parse_ctx *ctx, hfx_decl *d) {
+void hfx_pb_global(parse_ctx *ctx, hfx_decl *d) {
     if (!d) return;
     d->is_global = true;
-    ctx->globals = parse_vec_push(ctx, ctx->globals, d);
+    ctx->globals = hfx_parse_vec_push(ctx, ctx->globals, d);
 }
 
-void pb_d3d10_ignored(parse_ctx *ctx, const char *what, const char *name, hfx_loc loc) {
+void hfx_pb_d3d10_ignored(parse_ctx *ctx, const char *what, const char *name, hfx_loc loc) {
     hfx_warning(ctx->diags, loc, X_UNSUPPORTED, "'%s': %s is Direct3D 10 effect syntax, ignored in fx_2_0", name ? name : "",
                 what);
 }
 
-void pb_globals(parse_ctx *ctx, parse_vec decls) {
-    for (uint32_t i = 0; i < decls.count; i++) pb_global(ctx, decls.items[i]);
+void hfx_pb_globals(parse_ctx *ctx, parse_vec decls) {
+    for (uint32_t i = 0; i < decls.count; i++) hfx_pb_global(ctx, decls.items[i]);
 }
 
 /* ---- statements ---- */
@@ -289,10 +289,10 @@ typedef parse_stmt_node stmt_node;
 
 static uint32_t stmt_depth(const hfx_stmt *s) { return s ? ((const stmt_node *)s)->depth : 0; }
 
-hfx_stmt *pb_stmt(parse_ctx *ctx, hfx_stmt_kind kind, hfx_loc loc) {
+hfx_stmt *hfx_pb_stmt(parse_ctx *ctx, hfx_stmt_kind kind, hfx_loc loc) {
     stmt_node *n = HFX_NEW(ctx->arena, stmt_node);
     if (!n) {
-        parse_fatal(ctx, loc, "out of memory");
+        hfx_parse_fatal(ctx, loc, "out of memory");
         n = ctx->oom_stmt;
     }
     n->s.kind = kind;
@@ -308,12 +308,12 @@ static hfx_stmt *deepen(parse_ctx *ctx, hfx_stmt *s, const hfx_stmt *a, const hf
     if (stmt_depth(c) > d) d = stmt_depth(c);
     if (((stmt_node *)s)->depth < d + 1) ((stmt_node *)s)->depth = d + 1;
     if (d + 1 > PARSE_MAX_STMT_DEPTH)
-        parse_fatal(ctx, s->loc, "nesting too deep: statements more than 1024 levels deep");
+        hfx_parse_fatal(ctx, s->loc, "nesting too deep: statements more than 1024 levels deep");
     return s;
 }
 
-hfx_stmt *pb_block(parse_ctx *ctx, parse_vec stmts, hfx_loc loc) {
-    hfx_stmt *s = pb_stmt(ctx, ST_BLOCK, loc);
+hfx_stmt *hfx_pb_block(parse_ctx *ctx, parse_vec stmts, hfx_loc loc) {
+    hfx_stmt *s = hfx_pb_stmt(ctx, ST_BLOCK, loc);
     uint32_t n = 0;
     for (uint32_t i = 0; i < stmts.count; i++)
         if (stmts.items[i]) {
@@ -325,39 +325,39 @@ hfx_stmt *pb_block(parse_ctx *ctx, parse_vec stmts, hfx_loc loc) {
     return s;
 }
 
-hfx_stmt *pb_decl_stmt(parse_ctx *ctx, parse_vec decls, hfx_loc loc) {
+hfx_stmt *hfx_pb_decl_stmt(parse_ctx *ctx, parse_vec decls, hfx_loc loc) {
     uint32_t n = 0;
     for (uint32_t i = 0; i < decls.count; i++)
         if (decls.items[i]) decls.items[n++] = decls.items[i];
-    hfx_stmt *s = pb_stmt(ctx, n ? ST_DECL : ST_EMPTY, loc);
+    hfx_stmt *s = hfx_pb_stmt(ctx, n ? ST_DECL : ST_EMPTY, loc);
     s->decls = (hfx_decl **)decls.items;
     s->decl_count = n;
     return s;
 }
 
-hfx_stmt *pb_expr_stmt(parse_ctx *ctx, hfx_stmt_kind kind, hfx_expr *e, hfx_loc loc) {
-    hfx_stmt *s = pb_stmt(ctx, kind, loc);
+hfx_stmt *hfx_pb_expr_stmt(parse_ctx *ctx, hfx_stmt_kind kind, hfx_expr *e, hfx_loc loc) {
+    hfx_stmt *s = hfx_pb_stmt(ctx, kind, loc);
     s->expr = e;
     return s;
 }
 
-hfx_stmt *pb_if(parse_ctx *ctx, hfx_expr *cond, hfx_stmt *then_stmt, hfx_stmt *else_stmt, hfx_loc loc) {
-    hfx_stmt *s = pb_stmt(ctx, ST_IF, loc);
+hfx_stmt *hfx_pb_if(parse_ctx *ctx, hfx_expr *cond, hfx_stmt *then_stmt, hfx_stmt *else_stmt, hfx_loc loc) {
+    hfx_stmt *s = hfx_pb_stmt(ctx, ST_IF, loc);
     s->expr = cond;
     s->then_stmt = then_stmt;
     s->else_stmt = else_stmt;
     return deepen(ctx, s, then_stmt, else_stmt, NULL);
 }
 
-hfx_stmt *pb_loop(parse_ctx *ctx, hfx_stmt_kind kind, hfx_expr *cond, hfx_stmt *body, hfx_loc loc) {
-    hfx_stmt *s = pb_stmt(ctx, kind, loc);
+hfx_stmt *hfx_pb_loop(parse_ctx *ctx, hfx_stmt_kind kind, hfx_expr *cond, hfx_stmt *body, hfx_loc loc) {
+    hfx_stmt *s = hfx_pb_stmt(ctx, kind, loc);
     s->expr = cond;
     s->then_stmt = body;
     return deepen(ctx, s, body, NULL, NULL);
 }
 
-hfx_stmt *pb_for(parse_ctx *ctx, hfx_stmt *init, hfx_expr *cond, hfx_expr *step, hfx_stmt *body, hfx_loc loc) {
-    hfx_stmt *s = pb_stmt(ctx, ST_FOR, loc);
+hfx_stmt *hfx_pb_for(parse_ctx *ctx, hfx_stmt *init, hfx_expr *cond, hfx_expr *step, hfx_stmt *body, hfx_loc loc) {
+    hfx_stmt *s = hfx_pb_stmt(ctx, ST_FOR, loc);
     s->init = init;
     s->expr = cond;
     s->step = step;
@@ -365,14 +365,14 @@ hfx_stmt *pb_for(parse_ctx *ctx, hfx_stmt *init, hfx_expr *cond, hfx_expr *step,
     return deepen(ctx, s, init, body, NULL);
 }
 
-hfx_stmt *pb_switch(parse_ctx *ctx, hfx_expr *e, parse_vec body, hfx_loc loc) {
-    hfx_stmt *s = pb_block(ctx, body, loc);
+hfx_stmt *hfx_pb_switch(parse_ctx *ctx, hfx_expr *e, parse_vec body, hfx_loc loc) {
+    hfx_stmt *s = hfx_pb_block(ctx, body, loc);
     s->kind = ST_SWITCH;
     s->expr = e;
     return s;
 }
 
-hfx_stmt *pb_attributed(parse_ctx *ctx, hfx_attribute *attr, hfx_stmt *s) {
+hfx_stmt *hfx_pb_attributed(parse_ctx *ctx, hfx_attribute *attr, hfx_stmt *s) {
     if (!attr) return s;
     hfx_attribute *a = HFX_NEW_ARRAY(ctx->arena, hfx_attribute, s->attr_count + 1);
     if (!a) return s;
@@ -383,6 +383,6 @@ hfx_stmt *pb_attributed(parse_ctx *ctx, hfx_attribute *attr, hfx_stmt *s) {
     return s;
 }
 
-hfx_stmt *pb_asm_stmt(parse_ctx *ctx, const char *text, hfx_loc loc) {
-    return pb_expr_stmt(ctx, ST_ASM, pb_asm(ctx, text, loc), loc);
+hfx_stmt *hfx_pb_asm_stmt(parse_ctx *ctx, const char *text, hfx_loc loc) {
+    return hfx_pb_expr_stmt(ctx, ST_ASM, hfx_pb_asm(ctx, text, loc), loc);
 }

@@ -11,18 +11,18 @@
 
 /* ---- vectors ---- */
 
-parse_vec parse_vec_new(void) { return (parse_vec){NULL, 0, 0}; }
+parse_vec hfx_parse_vec_new(void) { return (parse_vec){NULL, 0, 0}; }
 
-parse_vec parse_vec_push(parse_ctx *ctx, parse_vec v, void *item) {
+parse_vec hfx_parse_vec_push(parse_ctx *ctx, parse_vec v, void *item) {
     if (!HFX_ARENA_GROW(ctx->arena, v.items, v.count, v.cap, 4)) return v;
     v.items[v.count++] = item;
     return v;
 }
 
-parse_vec parse_vec_one(parse_ctx *ctx, void *item) { return parse_vec_push(ctx, parse_vec_new(), item); }
+parse_vec hfx_parse_vec_one(parse_ctx *ctx, void *item) { return hfx_parse_vec_push(ctx, hfx_parse_vec_new(), item); }
 
-parse_vec parse_vec_concat(parse_ctx *ctx, parse_vec a, parse_vec b) {
-    for (uint32_t i = 0; i < b.count; i++) a = parse_vec_push(ctx, a, b.items[i]);
+parse_vec hfx_parse_vec_concat(parse_ctx *ctx, parse_vec a, parse_vec b) {
+    for (uint32_t i = 0; i < b.count; i++) a = hfx_parse_vec_push(ctx, a, b.items[i]);
     return a;
 }
 
@@ -32,10 +32,10 @@ typedef parse_expr_node expr_node;
 
 static uint32_t expr_depth(const hfx_expr *e) { return e ? ((const expr_node *)e)->depth : 0; }
 
-hfx_expr *pb_expr(parse_ctx *ctx, hfx_expr_kind kind, hfx_loc loc) {
+hfx_expr *hfx_pb_expr(parse_ctx *ctx, hfx_expr_kind kind, hfx_loc loc) {
     expr_node *n = HFX_NEW(ctx->arena, expr_node);
     if (!n) {
-        parse_fatal(ctx, loc, "out of memory");
+        hfx_parse_fatal(ctx, loc, "out of memory");
         n = ctx->oom_expr;
     }
     n->e.kind = kind;
@@ -54,7 +54,7 @@ static hfx_expr *set_args(parse_ctx *ctx, hfx_expr *e, hfx_expr **args, uint32_t
         if (expr_depth(args[i]) > d) d = expr_depth(args[i]);
     ((expr_node *)e)->depth = d + 1;
     if (d + 1 > PARSE_MAX_EXPR_DEPTH)
-        parse_fatal(ctx, e->loc, "nesting too deep: expression more than 4096 levels deep");
+        hfx_parse_fatal(ctx, e->loc, "nesting too deep: expression more than 4096 levels deep");
     return e;
 }
 
@@ -73,8 +73,8 @@ static hfx_expr *with_vec(parse_ctx *ctx, hfx_expr *e, parse_vec v) {
 
 /* ---- literals ---- */
 
-hfx_expr *pb_int(parse_ctx *ctx, const char *text, hfx_loc loc) {
-    hfx_expr *e = pb_expr(ctx, EX_INT, loc);
+hfx_expr *hfx_pb_int(parse_ctx *ctx, const char *text, hfx_loc loc) {
+    hfx_expr *e = hfx_pb_expr(ctx, EX_INT, loc);
     errno = 0;
     unsigned long long v = strtoull(text, NULL, 0); /* 0x.., 0.. octal; u/l suffixes stop it */
     if (errno == ERANGE) v = UINT64_MAX;
@@ -83,14 +83,14 @@ hfx_expr *pb_int(parse_ctx *ctx, const char *text, hfx_loc loc) {
     return e;
 }
 
-hfx_expr *pb_float(parse_ctx *ctx, const char *text, hfx_loc loc) {
-    hfx_expr *e = pb_expr(ctx, EX_FLOAT, loc);
+hfx_expr *hfx_pb_float(parse_ctx *ctx, const char *text, hfx_loc loc) {
+    hfx_expr *e = hfx_pb_expr(ctx, EX_FLOAT, loc);
     e->fval = strtod(text, NULL); /* stops at the f/h/l suffix */
     return e;
 }
 
-hfx_expr *pb_bool(parse_ctx *ctx, bool v, hfx_loc loc) {
-    hfx_expr *e = pb_expr(ctx, EX_BOOL, loc);
+hfx_expr *hfx_pb_bool(parse_ctx *ctx, bool v, hfx_loc loc) {
+    hfx_expr *e = hfx_pb_expr(ctx, EX_BOOL, loc);
     e->ival = v;
     return e;
 }
@@ -149,13 +149,13 @@ static char *string_value(parse_ctx *ctx, const char *text) {
     return out;
 }
 
-hfx_expr *pb_string(parse_ctx *ctx, const char *text, hfx_loc loc) {
-    hfx_expr *e = pb_expr(ctx, EX_STRING, loc);
+hfx_expr *hfx_pb_string(parse_ctx *ctx, const char *text, hfx_loc loc) {
+    hfx_expr *e = hfx_pb_expr(ctx, EX_STRING, loc);
     e->sval = string_value(ctx, text);
     return e;
 }
 
-hfx_expr *pb_string_join(parse_ctx *ctx, hfx_expr *s, const char *text) {
+hfx_expr *hfx_pb_string_join(parse_ctx *ctx, hfx_expr *s, const char *text) {
     const char *more = string_value(ctx, text);
     s->sval = hfx_arena_printf(ctx->arena, "%s%s", s->sval, more);
     return s;
@@ -163,89 +163,89 @@ hfx_expr *pb_string_join(parse_ctx *ctx, hfx_expr *s, const char *text) {
 
 /* ---- operators ---- */
 
-hfx_expr *pb_ident(parse_ctx *ctx, const char *name, hfx_loc loc) {
-    hfx_expr *e = pb_expr(ctx, EX_IDENT, loc);
+hfx_expr *hfx_pb_ident(parse_ctx *ctx, const char *name, hfx_loc loc) {
+    hfx_expr *e = hfx_pb_expr(ctx, EX_IDENT, loc);
     e->name = name;
     return e;
 }
 
-hfx_expr *pb_unary(parse_ctx *ctx, hfx_op op, hfx_expr *a, hfx_loc loc) {
-    hfx_expr *e = pb_expr(ctx, EX_UNARY, loc);
+hfx_expr *hfx_pb_unary(parse_ctx *ctx, hfx_op op, hfx_expr *a, hfx_loc loc) {
+    hfx_expr *e = hfx_pb_expr(ctx, EX_UNARY, loc);
     e->op = op;
     return with_args(ctx, e, a, NULL, NULL);
 }
 
-hfx_expr *pb_binary(parse_ctx *ctx, hfx_op op, hfx_expr *a, hfx_expr *b, hfx_loc loc) {
-    hfx_expr *e = pb_expr(ctx, EX_BINARY, loc);
+hfx_expr *hfx_pb_binary(parse_ctx *ctx, hfx_op op, hfx_expr *a, hfx_expr *b, hfx_loc loc) {
+    hfx_expr *e = hfx_pb_expr(ctx, EX_BINARY, loc);
     e->op = op;
     return with_args(ctx, e, a, b, NULL);
 }
 
-hfx_expr *pb_assign(parse_ctx *ctx, hfx_op op, hfx_expr *a, hfx_expr *b, hfx_loc loc) {
-    hfx_expr *e = pb_expr(ctx, EX_ASSIGN, loc);
+hfx_expr *hfx_pb_assign(parse_ctx *ctx, hfx_op op, hfx_expr *a, hfx_expr *b, hfx_loc loc) {
+    hfx_expr *e = hfx_pb_expr(ctx, EX_ASSIGN, loc);
     e->op = op;
     return with_args(ctx, e, a, b, NULL);
 }
 
-hfx_expr *pb_ternary(parse_ctx *ctx, hfx_expr *c, hfx_expr *a, hfx_expr *b, hfx_loc loc) {
-    return with_args(ctx, pb_expr(ctx, EX_TERNARY, loc), c, a, b);
+hfx_expr *hfx_pb_ternary(parse_ctx *ctx, hfx_expr *c, hfx_expr *a, hfx_expr *b, hfx_loc loc) {
+    return with_args(ctx, hfx_pb_expr(ctx, EX_TERNARY, loc), c, a, b);
 }
 
-hfx_expr *pb_comma(parse_ctx *ctx, hfx_expr *a, hfx_expr *b, hfx_loc loc) {
-    return with_args(ctx, pb_expr(ctx, EX_COMMA, loc), a, b, NULL);
+hfx_expr *hfx_pb_comma(parse_ctx *ctx, hfx_expr *a, hfx_expr *b, hfx_loc loc) {
+    return with_args(ctx, hfx_pb_expr(ctx, EX_COMMA, loc), a, b, NULL);
 }
 
-hfx_expr *pb_call(parse_ctx *ctx, const char *name, parse_vec args, hfx_loc loc) {
-    hfx_expr *e = pb_expr(ctx, EX_CALL, loc);
+hfx_expr *hfx_pb_call(parse_ctx *ctx, const char *name, parse_vec args, hfx_loc loc) {
+    hfx_expr *e = hfx_pb_expr(ctx, EX_CALL, loc);
     e->name = name;
     return with_vec(ctx, e, args);
 }
 
-hfx_expr *pb_method(parse_ctx *ctx, hfx_expr *obj, const char *name, parse_vec args, hfx_loc loc) {
-    hfx_expr *e = pb_expr(ctx, EX_METHOD, loc);
+hfx_expr *hfx_pb_method(parse_ctx *ctx, hfx_expr *obj, const char *name, parse_vec args, hfx_loc loc) {
+    hfx_expr *e = hfx_pb_expr(ctx, EX_METHOD, loc);
     e->name = name;
-    parse_vec all = parse_vec_one(ctx, obj);
-    for (uint32_t i = 0; i < args.count; i++) all = parse_vec_push(ctx, all, args.items[i]);
+    parse_vec all = hfx_parse_vec_one(ctx, obj);
+    for (uint32_t i = 0; i < args.count; i++) all = hfx_parse_vec_push(ctx, all, args.items[i]);
     return with_vec(ctx, e, all);
 }
 
-hfx_expr *pb_construct(parse_ctx *ctx, const hfx_type *type, parse_vec args, hfx_loc loc) {
+hfx_expr *hfx_pb_construct(parse_ctx *ctx, const hfx_type *type, parse_vec args, hfx_loc loc) {
     ctx->last_type = NULL;
-    hfx_expr *e = pb_expr(ctx, EX_CONSTRUCT, loc);
+    hfx_expr *e = hfx_pb_expr(ctx, EX_CONSTRUCT, loc);
     e->cast_type = type;
     return with_vec(ctx, e, args);
 }
 
-hfx_expr *pb_cast(parse_ctx *ctx, const hfx_type *type, hfx_expr *a, hfx_loc loc) {
+hfx_expr *hfx_pb_cast(parse_ctx *ctx, const hfx_type *type, hfx_expr *a, hfx_loc loc) {
     ctx->last_type = NULL;
-    hfx_expr *e = pb_expr(ctx, EX_CAST, loc);
+    hfx_expr *e = hfx_pb_expr(ctx, EX_CAST, loc);
     e->cast_type = type;
     return with_args(ctx, e, a, NULL, NULL);
 }
 
-hfx_expr *pb_member(parse_ctx *ctx, hfx_expr *a, const char *name, hfx_loc loc) {
-    hfx_expr *e = pb_expr(ctx, EX_MEMBER, loc);
+hfx_expr *hfx_pb_member(parse_ctx *ctx, hfx_expr *a, const char *name, hfx_loc loc) {
+    hfx_expr *e = hfx_pb_expr(ctx, EX_MEMBER, loc);
     e->name = name;
     return with_args(ctx, e, a, NULL, NULL);
 }
 
-hfx_expr *pb_index(parse_ctx *ctx, hfx_expr *a, hfx_expr *i, hfx_loc loc) {
-    return with_args(ctx, pb_expr(ctx, EX_INDEX, loc), a, i, NULL);
+hfx_expr *hfx_pb_index(parse_ctx *ctx, hfx_expr *a, hfx_expr *i, hfx_loc loc) {
+    return with_args(ctx, hfx_pb_expr(ctx, EX_INDEX, loc), a, i, NULL);
 }
 
-hfx_expr *pb_init_list(parse_ctx *ctx, parse_vec items, hfx_loc loc) {
-    return with_vec(ctx, pb_expr(ctx, EX_INIT_LIST, loc), items);
+hfx_expr *hfx_pb_init_list(parse_ctx *ctx, parse_vec items, hfx_loc loc) {
+    return with_vec(ctx, hfx_pb_expr(ctx, EX_INIT_LIST, loc), items);
 }
 
-hfx_expr *pb_compile(parse_ctx *ctx, const char *profile, const char *entry, parse_vec args, hfx_loc loc) {
-    hfx_expr *e = pb_expr(ctx, EX_COMPILE, loc);
+hfx_expr *hfx_pb_compile(parse_ctx *ctx, const char *profile, const char *entry, parse_vec args, hfx_loc loc) {
+    hfx_expr *e = hfx_pb_expr(ctx, EX_COMPILE, loc);
     e->profile = profile;
     e->name = entry;
     return with_vec(ctx, e, args);
 }
 
-hfx_expr *pb_sampler_state(parse_ctx *ctx, parse_vec states, hfx_loc loc) {
-    hfx_expr *e = pb_expr(ctx, EX_SAMPLER_STATE, loc);
+hfx_expr *hfx_pb_sampler_state(parse_ctx *ctx, parse_vec states, hfx_loc loc) {
+    hfx_expr *e = hfx_pb_expr(ctx, EX_SAMPLER_STATE, loc);
     e->states = HFX_NEW_ARRAY(ctx->arena, hfx_state_assign, states.count ? states.count : 1);
     if (!e->states) return e;
     for (uint32_t i = 0; i < states.count; i++) e->states[i] = *(hfx_state_assign *)states.items[i];
@@ -253,19 +253,19 @@ hfx_expr *pb_sampler_state(parse_ctx *ctx, parse_vec states, hfx_loc loc) {
     return e;
 }
 
-hfx_expr *pb_state_ref(parse_ctx *ctx, const char *name, hfx_loc loc) {
-    hfx_expr *e = pb_expr(ctx, EX_STATE_REF, loc);
+hfx_expr *hfx_pb_state_ref(parse_ctx *ctx, const char *name, hfx_loc loc) {
+    hfx_expr *e = hfx_pb_expr(ctx, EX_STATE_REF, loc);
     e->name = name;
     return e;
 }
 
-hfx_expr *pb_asm(parse_ctx *ctx, const char *text, hfx_loc loc) {
-    hfx_expr *e = pb_expr(ctx, EX_ASM, loc);
+hfx_expr *hfx_pb_asm(parse_ctx *ctx, const char *text, hfx_loc loc) {
+    hfx_expr *e = hfx_pb_expr(ctx, EX_ASM, loc);
     e->sval = text;
     return e;
 }
 
-hfx_expr *pb_paren(hfx_expr *e) {
+hfx_expr *hfx_pb_paren(hfx_expr *e) {
     e->parenthesized = true;
     return e;
 }
@@ -289,20 +289,20 @@ static hfx_base generic_base(parse_ctx *ctx, const hfx_type *scalar, hfx_loc loc
     return B_FLOAT;
 }
 
-const hfx_type *pb_generic_vector(parse_ctx *ctx, const hfx_type *scalar, const char *n, hfx_loc loc) {
+const hfx_type *hfx_pb_generic_vector(parse_ctx *ctx, const hfx_type *scalar, const char *n, hfx_loc loc) {
     ctx->last_type = NULL;
     if (!n) return hfx_type_vector(ctx->types, B_FLOAT, 4);
     return hfx_type_vector(ctx->types, generic_base(ctx, scalar, loc), dimension(ctx, n, loc));
 }
 
-const hfx_type *pb_generic_matrix(parse_ctx *ctx, const hfx_type *scalar, const char *r, const char *c, hfx_loc loc) {
+const hfx_type *hfx_pb_generic_matrix(parse_ctx *ctx, const hfx_type *scalar, const char *r, const char *c, hfx_loc loc) {
     ctx->last_type = NULL;
     if (!r) return hfx_type_matrix(ctx->types, B_FLOAT, 4, 4);
     hfx_base b = generic_base(ctx, scalar, loc);
     return hfx_type_matrix(ctx->types, b, dimension(ctx, r, loc), dimension(ctx, c, loc));
 }
 
-const hfx_type *pb_typename(parse_ctx *ctx, const parse_tok *t, hfx_loc loc) {
+const hfx_type *hfx_pb_typename(parse_ctx *ctx, const parse_tok *t, hfx_loc loc) {
     const hfx_type *ty = t->entry ? t->entry->type : t->type;
     ctx->last_type = ty;
     ctx->last_type_mods = t->entry ? t->entry->mods : 0;
@@ -312,7 +312,7 @@ const hfx_type *pb_typename(parse_ctx *ctx, const parse_tok *t, hfx_loc loc) {
 }
 
 /* `unsigned int` is uint (unsigned int2 is uint2). */
-const hfx_type *pb_unsigned(parse_ctx *ctx, const hfx_type *ty, hfx_loc loc) {
+const hfx_type *hfx_pb_unsigned(parse_ctx *ctx, const hfx_type *ty, hfx_loc loc) {
     ctx->last_type = NULL;
     if (ty && ty->kind == TY_SCALAR && ty->base == B_INT) return hfx_type_scalar(ctx->types, B_UINT);
     if (ty && ty->kind == TY_VECTOR && ty->base == B_INT) return hfx_type_vector(ctx->types, B_UINT, ty->cols);
@@ -321,7 +321,7 @@ const hfx_type *pb_unsigned(parse_ctx *ctx, const hfx_type *ty, hfx_loc loc) {
 }
 
 /* `Texture2D<float4>` (SM4 spelling): the element type is dropped, D3D9 textures have none. */
-const hfx_type *pb_template(parse_ctx *ctx, const hfx_type *object, const hfx_type *elem, hfx_loc loc) {
+const hfx_type *hfx_pb_template(parse_ctx *ctx, const hfx_type *object, const hfx_type *elem, hfx_loc loc) {
     (void)elem;
     if (object->kind == TY_TEXTURE) return object;
     hfx_error(ctx->diags, loc, X_SYNTAX, "syntax error: unexpected token '<'");
@@ -329,7 +329,7 @@ const hfx_type *pb_template(parse_ctx *ctx, const hfx_type *object, const hfx_ty
 }
 
 /* Folds a constant integer expression (array sizes) with int's rules (common/eval); false
- * when it is not one. Names are the checker's to fold (ck_fold_int). */
+ * when it is not one. Names are the checker's to fold (hfx_ck_fold_int). */
 static bool fold_int(const hfx_expr *e, int64_t *out) {
     int64_t a, b;
     hfx_ev_op op;
@@ -368,19 +368,19 @@ static const hfx_type *array_of(parse_ctx *ctx, const hfx_type *t, hfx_expr *siz
     return hfx_type_array(ctx->types, t, (uint32_t)n);
 }
 
-const hfx_type *pb_array_type(parse_ctx *ctx, const hfx_type *elem, parse_vec dims) {
+const hfx_type *hfx_pb_array_type(parse_ctx *ctx, const hfx_type *elem, parse_vec dims) {
     const hfx_type *t = elem;
     for (uint32_t i = dims.count; i-- > 0;) t = array_of(ctx, t, dims.items[i]);
     return t;
 }
 
-uint32_t pb_more_mods(parse_ctx *ctx, uint32_t mods, uint32_t more, hfx_loc loc) {
+uint32_t hfx_pb_more_mods(parse_ctx *ctx, uint32_t mods, uint32_t more, hfx_loc loc) {
     if (mods & more & (MOD_ROW_MAJOR | MOD_COLUMN_MAJOR))
         hfx_error(ctx->diags, loc, 3048, "duplicate usages specified");
     return mods | more;
 }
 
-parse_specs *pb_specs(parse_ctx *ctx, uint32_t mods, const hfx_type *type, hfx_loc loc) {
+parse_specs *hfx_pb_specs(parse_ctx *ctx, uint32_t mods, const hfx_type *type, hfx_loc loc) {
     parse_specs *s = HFX_NEW(ctx->arena, parse_specs);
     if (!s) return ctx->oom_specs;
     if (type && type == ctx->last_type) mods |= ctx->last_type_mods;
@@ -405,7 +405,7 @@ parse_specs *pb_specs(parse_ctx *ctx, uint32_t mods, const hfx_type *type, hfx_l
 }
 
 static hfx_struct *struct_object(parse_ctx *ctx, const char *name, hfx_loc loc, const hfx_type **type) {
-    parse_typename *e = name ? parse_find_typename(ctx, name) : NULL;
+    parse_typename *e = name ? hfx_parse_find_typename(ctx, name) : NULL;
     if (e && e->st) {
         *type = e->type;
         return e->st;
@@ -418,7 +418,7 @@ static hfx_struct *struct_object(parse_ctx *ctx, const char *name, hfx_loc loc, 
     return st;
 }
 
-const hfx_type *pb_struct(parse_ctx *ctx, const char *name, parse_vec fields, hfx_loc loc) {
+const hfx_type *hfx_pb_struct(parse_ctx *ctx, const char *name, parse_vec fields, hfx_loc loc) {
     ctx->last_type = NULL;
     const hfx_type *type = NULL;
     hfx_struct *st = struct_object(ctx, name, loc, &type);
@@ -433,19 +433,19 @@ const hfx_type *pb_struct(parse_ctx *ctx, const char *name, parse_vec fields, hf
 }
 
 /* `struct B : A { ... }`: B has A's members first, then its own (fxc's struct inheritance). */
-const hfx_type *pb_struct_derived(parse_ctx *ctx, const char *name, const hfx_type *base, parse_vec fields,
+const hfx_type *hfx_pb_struct_derived(parse_ctx *ctx, const char *name, const hfx_type *base, parse_vec fields,
                                   hfx_loc loc) {
-    parse_vec all = parse_vec_new();
+    parse_vec all = hfx_parse_vec_new();
     if (base && base->kind == TY_STRUCT) {
-        for (uint32_t i = 0; i < base->st->field_count; i++) all = parse_vec_push(ctx, all, &base->st->fields[i]);
+        for (uint32_t i = 0; i < base->st->field_count; i++) all = hfx_parse_vec_push(ctx, all, &base->st->fields[i]);
     } else {
         hfx_error(ctx->diags, loc, X_TYPE_MISMATCH, "'%s': a struct can only inherit from a struct", name);
     }
-    for (uint32_t i = 0; i < fields.count; i++) all = parse_vec_push(ctx, all, fields.items[i]);
-    return pb_struct(ctx, name, all, loc);
+    for (uint32_t i = 0; i < fields.count; i++) all = hfx_parse_vec_push(ctx, all, fields.items[i]);
+    return hfx_pb_struct(ctx, name, all, loc);
 }
 
-const hfx_type *pb_struct_ref(parse_ctx *ctx, const char *name, hfx_loc loc) {
+const hfx_type *hfx_pb_struct_ref(parse_ctx *ctx, const char *name, hfx_loc loc) {
     ctx->last_type = NULL;
     const hfx_type *type = NULL;
     (void)struct_object(ctx, name, loc, &type);

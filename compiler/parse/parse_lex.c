@@ -1,4 +1,4 @@
-/* parse_lex.c: turns the preprocessed hfx_token list into Bison tokens. The lexer knows no
+/* hfx_parse_lex.c: turns the preprocessed hfx_token list into Bison tokens. The lexer knows no
  * keywords, so they are decided here, as are type names: builtin ones by spelling (keywords.c:
  * float4x3, Texture2D...), user ones (struct and typedef names) from a scope table fed while
  * tokens go by (the classic C "lexer hack"; tokens come from a list, so peeking is free).
@@ -15,7 +15,7 @@ static bool is_punct(const hfx_token *t, hfx_punct p) {
     return t && t->kind == TK_PUNCT && t->punct == (uint32_t)p;
 }
 
-parse_typename *parse_find_typename(parse_ctx *ctx, const char *name) {
+parse_typename *hfx_parse_find_typename(parse_ctx *ctx, const char *name) {
     for (uint32_t i = ctx->name_count; i-- > 0;)
         if (ctx->names[i]->name[0] == name[0] && strcmp(ctx->names[i]->name, name) == 0) return ctx->names[i];
     return NULL;
@@ -34,7 +34,7 @@ static parse_typename *add_typename(parse_ctx *ctx, const char *name) {
 /* `struct S`: a use (`struct S x;`) finds the visible S; a definition (`struct S {`) or a
  * first sight declares S in this scope. */
 static parse_typename *declare_struct(parse_ctx *ctx, const hfx_token *t) {
-    parse_typename *e = parse_find_typename(ctx, t->text);
+    parse_typename *e = hfx_parse_find_typename(ctx, t->text);
     bool defines = is_punct(t->next, P_LBRACE);
     if (e && e->st && (e->depth == ctx->brace_depth || !defines)) return e;
     e = add_typename(ctx, t->text);
@@ -53,7 +53,7 @@ static void pop_scope(parse_ctx *ctx) {
 
 /* ---- context ---- */
 
-bool parse_ctx_init(parse_ctx *ctx, hfx_arena *arena, hfx_diags *diags, hfx_types *types, hfx_token *tokens) {
+bool hfx_parse_ctx_init(parse_ctx *ctx, hfx_arena *arena, hfx_diags *diags, hfx_types *types, hfx_token *tokens) {
     memset(ctx, 0, sizeof *ctx);
     ctx->oom_expr = HFX_NEW(arena, parse_expr_node);
     ctx->oom_stmt = HFX_NEW(arena, parse_stmt_node);
@@ -63,11 +63,11 @@ bool parse_ctx_init(parse_ctx *ctx, hfx_arena *arena, hfx_diags *diags, hfx_type
     ctx->types = types;
     ctx->next = tokens;
     ctx->typedef_depth = -1;
-    ctx->globals = parse_vec_new();
+    ctx->globals = hfx_parse_vec_new();
     return ctx->oom_expr && ctx->oom_stmt && ctx->oom_specs && tokens;
 }
 
-hfx_ast *parse_ctx_finish(parse_ctx *ctx) {
+hfx_ast *hfx_parse_ctx_finish(parse_ctx *ctx) {
     hfx_ast *ast = HFX_NEW(ctx->arena, hfx_ast);
     if (!ast) return NULL;
     ast->decls = (hfx_decl **)ctx->globals.items;
@@ -81,9 +81,9 @@ hfx_ast *parse_ctx_finish(parse_ctx *ctx) {
 static bool starts_type(parse_ctx *ctx, const hfx_token *t) {
     if (!t || t->kind != TK_IDENT) return false;
     kw_word w;
-    kw_lookup(t->text, t->len, &w);
+    hfx_kw_lookup(t->text, t->len, &w);
     if (w.keyword) return w.keyword == MODIFIER || w.keyword == STRUCT || w.keyword == VECTOR || w.keyword == MATRIX;
-    return w.interp || w.form != KW_TYPE_NONE || parse_find_typename(ctx, t->text);
+    return w.interp || w.form != KW_TYPE_NONE || hfx_parse_find_typename(ctx, t->text);
 }
 
 /* The effect-layer keywords in another case (`Technique`, `Pass`, `SAMPLER_STATE`, `Compile`),
@@ -161,7 +161,7 @@ static int classify_ident(parse_ctx *ctx, const hfx_token *t, parse_tok *val) {
     }
     if (ctx->prev_code == '.') return IDENT; /* a member or swizzle may be spelled like anything */
     kw_word w;
-    kw_lookup(t->text, t->len, &w);
+    hfx_kw_lookup(t->text, t->len, &w);
     if (w.keyword) {
         val->mods = w.mods;
         return w.keyword;
@@ -173,8 +173,8 @@ static int classify_ident(parse_ctx *ctx, const hfx_token *t, parse_tok *val) {
     int tp = effect_keyword_any_case(ctx, t, w.any_case_keyword);
     if (tp) return tp;
     if (is_state_null(ctx, t)) return NULL_KW;
-    parse_typename *e = parse_find_typename(ctx, t->text);
-    const hfx_type *builtin = e ? NULL : kw_builtin_type(ctx->types, &w);
+    parse_typename *e = hfx_parse_find_typename(ctx, t->text);
+    const hfx_type *builtin = e ? NULL : hfx_kw_builtin_type(ctx->types, &w);
     if (builtin && type_spelling_is_name(ctx, t)) return IDENT;
     /* In `ColorArg1[0] = Texture;` or `VertexShader = ...` a type's spelling names a state
      * or a state value; only a constructor, `float4(...)`, is a type there. */
@@ -259,7 +259,7 @@ static void track_state_blocks(parse_ctx *ctx, int code) {
 static void track_nesting(parse_ctx *ctx, int code, hfx_loc loc) {
     if (opens(code)) {
         if (++ctx->depth > PARSE_MAX_NESTING)
-            parse_fatal(ctx, loc, "nesting too deep: more than 256 levels of ( [ {");
+            hfx_parse_fatal(ctx, loc, "nesting too deep: more than 256 levels of ( [ {");
         if (code == '{') ctx->brace_depth++;
     } else if (closes(code)) {
         if (ctx->depth) ctx->depth--;
@@ -308,7 +308,7 @@ static bool is_asm(const hfx_token *t) {
 
 static int token_code(parse_ctx *ctx, hfx_token *t, parse_tok *val) {
     switch (t->kind) {
-    case TK_EOF: return YYEOF;
+    case TK_EOF: return HFX_YYEOF;
     case TK_IDENT:
         if (is_asm(t)) {
             val->text = take_asm_block(ctx, t);
@@ -336,13 +336,13 @@ static bool take_pack_matrix(parse_ctx *ctx, hfx_token *t) {
     return true;
 }
 
-int parse_lex(YYSTYPE *lval, hfx_loc *lloc, parse_ctx *ctx) {
+int hfx_parse_lex(HFX_YYSTYPE *lval, hfx_loc *lloc, parse_ctx *ctx) {
     while (ctx->next && !ctx->fatal && take_pack_matrix(ctx, ctx->next)) continue;
     hfx_token *t = ctx->next;
     memset(&lval->tok, 0, sizeof lval->tok);
     if (ctx->fatal || !t) {
         *lloc = ctx->prev ? ctx->prev->loc : (hfx_loc){0, 0, 0};
-        return YYEOF;
+        return HFX_YYEOF;
     }
     if (t->kind != TK_EOF) ctx->next = t->next;
     lval->tok.text = t->text;
@@ -360,14 +360,14 @@ int parse_lex(YYSTYPE *lval, hfx_loc *lloc, parse_ctx *ctx) {
     ctx->hist_code[0] = ctx->prev_code;
     ctx->prev = t;
     ctx->prev_code = code;
-    return ctx->fatal ? YYEOF : code;
+    return ctx->fatal ? HFX_YYEOF : code;
 }
 
 /* ---- diagnostics ---- */
 
 static bool same_loc(hfx_loc a, hfx_loc b) { return a.file == b.file && a.line == b.line && a.col == b.col; }
 
-void parse_report_syntax(parse_ctx *ctx, bool at_eof, hfx_loc loc) {
+void hfx_parse_report_syntax(parse_ctx *ctx, bool at_eof, hfx_loc loc) {
     if (ctx->fatal) return;
     const hfx_token *t = ctx->prev;
     if (ctx->error_count && same_loc(loc, ctx->last_error)) return;
@@ -398,12 +398,12 @@ void parse_report_syntax(parse_ctx *ctx, bool at_eof, hfx_loc loc) {
     }
 }
 
-void parse_report_failure(parse_ctx *ctx, hfx_loc loc, const char *msg) {
-    if (strstr(msg, "exhausted")) parse_fatal(ctx, loc, "nesting too deep: the parser's stack is exhausted");
+void hfx_parse_report_failure(parse_ctx *ctx, hfx_loc loc, const char *msg) {
+    if (strstr(msg, "exhausted")) hfx_parse_fatal(ctx, loc, "nesting too deep: the parser's stack is exhausted");
     else if (!ctx->fatal) hfx_error(ctx->diags, loc, X_SYNTAX, "%s", msg);
 }
 
-void parse_fatal(parse_ctx *ctx, hfx_loc loc, const char *msg) {
+void hfx_parse_fatal(parse_ctx *ctx, hfx_loc loc, const char *msg) {
     if (ctx->fatal) return;
     hfx_error(ctx->diags, loc, X_SYNTAX, "%s", msg);
     ctx->fatal = true;

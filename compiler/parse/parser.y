@@ -1,10 +1,11 @@
 /* parser.y: the grammar of D3D9 effect files (fx_2_0: SM2/SM3 HLSL plus techniques, passes,
  * annotations and state blocks). Actions are one line: nodes are built by parse_expr.c and
- * parse_decl.c, tokens come from parse_lex.c (keywords, type names, the typedef/struct lexer
+ * parse_decl.c, tokens come from hfx_parse_lex.c (keywords, type names, the typedef/struct lexer
  * hack, nesting limits, the X3000 messages). Recovery: `error` at ';' and '}' in statements,
  * struct bodies, annotations, state blocks and at top level, so every syntax error in a file
  * is reported. The only conflicts are the dangling else and the binary operators, both
  * settled by the precedence declarations. */
+%define api.prefix {hfx_yy}
 %define api.pure full
 %define api.location.type {hfx_loc}
 %define parse.error custom
@@ -22,7 +23,7 @@
 /* A deeper stack comes from the arena: nothing to free if an allocation failure escapes. */
 #define YYSTACK_ALLOC(n) hfx_arena_alloc_raw(ctx->arena, (n))
 #define YYSTACK_ALLOC_MAXIMUM ((size_t)1 << 30)
-static int yylex(YYSTYPE *lval, YYLTYPE *lloc, parse_ctx *ctx) { return parse_lex(lval, lloc, ctx); }
+static int yylex(YYSTYPE *lval, YYLTYPE *lloc, parse_ctx *ctx) { return hfx_parse_lex(lval, lloc, ctx); }
 static void yyerror(YYLTYPE *loc, parse_ctx *ctx, const char *msg);
 }
 
@@ -84,21 +85,21 @@ file
     ;
 
 global
-    : decl_specs declarators ';'             { pb_globals(ctx, pb_vars(ctx, $1, $2, true)); }
-    | decl_specs ';'                         { pb_global(ctx, pb_struct_decl(ctx, $1)); }
-    | TYPEDEF decl_specs declarators ';'     { pb_globals(ctx, pb_typedefs(ctx, $2, $3)); }
-    | function                               { pb_global(ctx, $1); }
-    | technique                              { pb_global(ctx, $1); }
+    : decl_specs declarators ';'             { hfx_pb_globals(ctx, hfx_pb_vars(ctx, $1, $2, true)); }
+    | decl_specs ';'                         { hfx_pb_global(ctx, hfx_pb_struct_decl(ctx, $1)); }
+    | TYPEDEF decl_specs declarators ';'     { hfx_pb_globals(ctx, hfx_pb_typedefs(ctx, $2, $3)); }
+    | function                               { hfx_pb_global(ctx, $1); }
+    | technique                              { hfx_pb_global(ctx, $1); }
     | CBUFFER name_opt cbuffer_register '{' cbuffer_members '}'
-    | D3D10_STATE IDENT '{' states '}'       { pb_d3d10_ignored(ctx, $1.text, $2.text, @2); }
-    | D3D10_STATE IDENT dims '{' states '}'  { pb_d3d10_ignored(ctx, $1.text, $2.text, @2); }
-    | FXGROUP name_opt '{' group_techniques '}' { pb_d3d10_ignored(ctx, "fxgroup", $2.text, @1); }
+    | D3D10_STATE IDENT '{' states '}'       { hfx_pb_d3d10_ignored(ctx, $1.text, $2.text, @2); }
+    | D3D10_STATE IDENT dims '{' states '}'  { hfx_pb_d3d10_ignored(ctx, $1.text, $2.text, @2); }
+    | FXGROUP name_opt '{' group_techniques '}' { hfx_pb_d3d10_ignored(ctx, "fxgroup", $2.text, @1); }
     | ';'
     | error ';'
     | error '}'
     ;
 
-/* Direct3D 10 / 11 groups of techniques: parsed, then dropped (pb_d3d10_ignored). */
+/* Direct3D 10 / 11 groups of techniques: parsed, then dropped (hfx_pb_d3d10_ignored). */
 group_techniques
     : %empty
     | group_techniques technique
@@ -113,7 +114,7 @@ cbuffer_register
 
 cbuffer_members
     : %empty
-    | cbuffer_members decl_specs declarators ';' { pb_globals(ctx, pb_vars(ctx, $2, $3, true)); }
+    | cbuffer_members decl_specs declarators ';' { hfx_pb_globals(ctx, hfx_pb_vars(ctx, $2, $3, true)); }
     | cbuffer_members error ';'
     ;
 
@@ -121,12 +122,12 @@ cbuffer_members
 
 mods
     : MODIFIER                               { $$ = $1.mods; }
-    | mods MODIFIER                          { $$ = pb_more_mods(ctx, $1, $2.mods, @2); }
+    | mods MODIFIER                          { $$ = hfx_pb_more_mods(ctx, $1, $2.mods, @2); }
     ;
 
 decl_specs
-    : type_spec                              { $$ = pb_specs(ctx, 0, $1, @1); }
-    | mods type_spec                         { $$ = pb_specs(ctx, $1, $2, @1); }
+    : type_spec                              { $$ = hfx_pb_specs(ctx, 0, $1, @1); }
+    | mods type_spec                         { $$ = hfx_pb_specs(ctx, $1, $2, @1); }
     ;
 
 type_spec
@@ -135,75 +136,75 @@ type_spec
     ;
 
 ctor_type
-    : TYPE_NAME                              { $$ = pb_typename(ctx, &$1, @1); }
-    | TYPE_NAME '<' ctor_type '>'            { $$ = pb_template(ctx, pb_typename(ctx, &$1, @1), $3, @2); }
-    | TYPE_NAME '<' ctor_type ',' INTCONST '>' { $$ = pb_template(ctx, pb_typename(ctx, &$1, @1), $3, @2); }
-    | UNSIGNED TYPE_NAME                     { $$ = pb_unsigned(ctx, pb_typename(ctx, &$2, @2), @1); }
-    | VECTOR                                 { $$ = pb_generic_vector(ctx, NULL, NULL, @1); }
-    | VECTOR '<' TYPE_NAME ',' INTCONST '>'  { $$ = pb_generic_vector(ctx, $3.type, $5.text, @3); }
-    | MATRIX                                 { $$ = pb_generic_matrix(ctx, NULL, NULL, NULL, @1); }
-    | MATRIX '<' TYPE_NAME ',' INTCONST ',' INTCONST '>' { $$ = pb_generic_matrix(ctx, $3.type, $5.text, $7.text, @3); }
+    : TYPE_NAME                              { $$ = hfx_pb_typename(ctx, &$1, @1); }
+    | TYPE_NAME '<' ctor_type '>'            { $$ = hfx_pb_template(ctx, hfx_pb_typename(ctx, &$1, @1), $3, @2); }
+    | TYPE_NAME '<' ctor_type ',' INTCONST '>' { $$ = hfx_pb_template(ctx, hfx_pb_typename(ctx, &$1, @1), $3, @2); }
+    | UNSIGNED TYPE_NAME                     { $$ = hfx_pb_unsigned(ctx, hfx_pb_typename(ctx, &$2, @2), @1); }
+    | VECTOR                                 { $$ = hfx_pb_generic_vector(ctx, NULL, NULL, @1); }
+    | VECTOR '<' TYPE_NAME ',' INTCONST '>'  { $$ = hfx_pb_generic_vector(ctx, $3.type, $5.text, @3); }
+    | MATRIX                                 { $$ = hfx_pb_generic_matrix(ctx, NULL, NULL, NULL, @1); }
+    | MATRIX '<' TYPE_NAME ',' INTCONST ',' INTCONST '>' { $$ = hfx_pb_generic_matrix(ctx, $3.type, $5.text, $7.text, @3); }
     ;
 
 struct_spec
-    : STRUCT IDENT '{' fields '}'            { $$ = pb_struct(ctx, $2.text, $4, @2); }
-    | STRUCT '{' fields '}'                  { $$ = pb_struct(ctx, NULL, $3, @1); }
-    | STRUCT IDENT '{' fields error '}'      { $$ = pb_struct(ctx, $2.text, $4, @2); }
-    | STRUCT IDENT ':' TYPE_NAME '{' fields '}' { $$ = pb_struct_derived(ctx, $2.text, pb_typename(ctx, &$4, @4), $6, @2); }
-    | STRUCT IDENT                           { $$ = pb_struct_ref(ctx, $2.text, @2); }
+    : STRUCT IDENT '{' fields '}'            { $$ = hfx_pb_struct(ctx, $2.text, $4, @2); }
+    | STRUCT '{' fields '}'                  { $$ = hfx_pb_struct(ctx, NULL, $3, @1); }
+    | STRUCT IDENT '{' fields error '}'      { $$ = hfx_pb_struct(ctx, $2.text, $4, @2); }
+    | STRUCT IDENT ':' TYPE_NAME '{' fields '}' { $$ = hfx_pb_struct_derived(ctx, $2.text, hfx_pb_typename(ctx, &$4, @4), $6, @2); }
+    | STRUCT IDENT                           { $$ = hfx_pb_struct_ref(ctx, $2.text, @2); }
     ;
 
 fields
-    : %empty                                 { $$ = parse_vec_new(); }
-    | fields decl_specs declarators ';'      { $$ = pb_fields(ctx, $1, $2, $3); }
+    : %empty                                 { $$ = hfx_parse_vec_new(); }
+    | fields decl_specs declarators ';'      { $$ = hfx_pb_fields(ctx, $1, $2, $3); }
     | fields error ';'                       { $$ = $1; }
     ;
 
 declarators
-    : declarator                             { $$ = parse_vec_one(ctx, $1); }
-    | declarators ',' declarator             { $$ = parse_vec_push(ctx, $1, $3); }
+    : declarator                             { $$ = hfx_parse_vec_one(ctx, $1); }
+    | declarators ',' declarator             { $$ = hfx_parse_vec_push(ctx, $1, $3); }
     ;
 
 decl_head
-    : IDENT                                  { $$ = pb_declarator(ctx, $1.text, @1); }
-    | IDENT dims                             { $$ = pb_decl_dims(ctx, pb_declarator(ctx, $1.text, @1), $2); }
+    : IDENT                                  { $$ = hfx_pb_declarator(ctx, $1.text, @1); }
+    | IDENT dims                             { $$ = hfx_pb_decl_dims(ctx, hfx_pb_declarator(ctx, $1.text, @1), $2); }
     ;
 
 dims
-    : '[' expr ']'                           { $$ = parse_vec_one(ctx, $2); }
-    | '[' ']'                                { $$ = parse_vec_one(ctx, NULL); }
-    | dims '[' expr ']'                      { $$ = parse_vec_push(ctx, $1, $3); }
-    | dims '[' ']'                           { $$ = parse_vec_push(ctx, $1, NULL); }
+    : '[' expr ']'                           { $$ = hfx_parse_vec_one(ctx, $2); }
+    | '[' ']'                                { $$ = hfx_parse_vec_one(ctx, NULL); }
+    | dims '[' expr ']'                      { $$ = hfx_parse_vec_push(ctx, $1, $3); }
+    | dims '[' ']'                           { $$ = hfx_parse_vec_push(ctx, $1, NULL); }
     ;
 
 decl_post
     : decl_head
-    | decl_post ':' IDENT                    { $$ = pb_decl_semantic($1, $3.text); }
-    | decl_post ':' REGISTER '(' IDENT ')'   { $$ = pb_decl_register($1, $5.text); }
-    | decl_post ':' REGISTER '(' IDENT ',' IDENT ')' { $$ = pb_decl_register($1, hfx_arena_printf(ctx->arena, "%s,%s", $5.text, $7.text)); }
-    | decl_post ':' REGISTER '(' IDENT '[' expr ']' ')' { $$ = pb_decl_register($1, $5.text); }
-    | decl_post ':' REGISTER '(' IDENT ',' IDENT '[' expr ']' ')' { $$ = pb_decl_register($1, $7.text); }
-    | decl_post annotations                  { $$ = pb_decl_annotations(ctx, $1, $2); }
+    | decl_post ':' IDENT                    { $$ = hfx_pb_decl_semantic($1, $3.text); }
+    | decl_post ':' REGISTER '(' IDENT ')'   { $$ = hfx_pb_decl_register($1, $5.text); }
+    | decl_post ':' REGISTER '(' IDENT ',' IDENT ')' { $$ = hfx_pb_decl_register($1, hfx_arena_printf(ctx->arena, "%s,%s", $5.text, $7.text)); }
+    | decl_post ':' REGISTER '(' IDENT '[' expr ']' ')' { $$ = hfx_pb_decl_register($1, $5.text); }
+    | decl_post ':' REGISTER '(' IDENT ',' IDENT '[' expr ']' ')' { $$ = hfx_pb_decl_register($1, $7.text); }
+    | decl_post annotations                  { $$ = hfx_pb_decl_annotations(ctx, $1, $2); }
     ;
 
 declarator
     : decl_post
-    | decl_post '=' initializer              { $$ = pb_decl_init($1, $3); }
-    | decl_post '{' states '}'               { $$ = pb_decl_init($1, pb_sampler_state(ctx, $3, @2)); }
-    | decl_post '{' states error '}'         { $$ = pb_decl_init($1, pb_sampler_state(ctx, $3, @2)); }
+    | decl_post '=' initializer              { $$ = hfx_pb_decl_init($1, $3); }
+    | decl_post '{' states '}'               { $$ = hfx_pb_decl_init($1, hfx_pb_sampler_state(ctx, $3, @2)); }
+    | decl_post '{' states error '}'         { $$ = hfx_pb_decl_init($1, hfx_pb_sampler_state(ctx, $3, @2)); }
     ;
 
 initializer
     : assign
-    | '{' init_items '}'                     { $$ = pb_init_list(ctx, $2, @1); }
-    | '{' init_items ',' '}'                 { $$ = pb_init_list(ctx, $2, @1); }
-    | '{' '}'                                { $$ = pb_init_list(ctx, parse_vec_new(), @1); }
-    | ASM_BLOCK                              { $$ = pb_asm(ctx, $1.text, @1); }
+    | '{' init_items '}'                     { $$ = hfx_pb_init_list(ctx, $2, @1); }
+    | '{' init_items ',' '}'                 { $$ = hfx_pb_init_list(ctx, $2, @1); }
+    | '{' '}'                                { $$ = hfx_pb_init_list(ctx, hfx_parse_vec_new(), @1); }
+    | ASM_BLOCK                              { $$ = hfx_pb_asm(ctx, $1.text, @1); }
     ;
 
 init_items
-    : initializer                            { $$ = parse_vec_one(ctx, $1); }
-    | init_items ',' initializer             { $$ = parse_vec_push(ctx, $1, $3); }
+    : initializer                            { $$ = hfx_parse_vec_one(ctx, $1); }
+    | init_items ',' initializer             { $$ = hfx_parse_vec_push(ctx, $1, $3); }
     ;
 
 annotations
@@ -212,26 +213,26 @@ annotations
     ;
 
 anno_list
-    : %empty                                 { $$ = parse_vec_new(); }
-    | anno_list annotation                   { $$ = parse_vec_push(ctx, $1, $2); }
+    : %empty                                 { $$ = hfx_parse_vec_new(); }
+    | anno_list annotation                   { $$ = hfx_parse_vec_push(ctx, $1, $2); }
     | anno_list error ';'                    { $$ = $1; }
     ;
 
 annotation
-    : type_spec declarator ';'               { $$ = pb_annotation(ctx, $1, $2); }
+    : type_spec declarator ';'               { $$ = hfx_pb_annotation(ctx, $1, $2); }
     ;
 
 /* ---- functions ---- */
 
 function
-    : fn_head block                          { $$ = pb_function_body(ctx, $1, parse_vec_new(), $2); }
-    | fn_head ';'                            { $$ = pb_function_body(ctx, $1, parse_vec_new(), NULL); }
-    | attrs fn_head block                    { $$ = pb_function_body(ctx, $2, $1, $3); }
-    | attrs fn_head ';'                      { $$ = pb_function_body(ctx, $2, $1, NULL); }
+    : fn_head block                          { $$ = hfx_pb_function_body(ctx, $1, hfx_parse_vec_new(), $2); }
+    | fn_head ';'                            { $$ = hfx_pb_function_body(ctx, $1, hfx_parse_vec_new(), NULL); }
+    | attrs fn_head block                    { $$ = hfx_pb_function_body(ctx, $2, $1, $3); }
+    | attrs fn_head ';'                      { $$ = hfx_pb_function_body(ctx, $2, $1, NULL); }
     ;
 
 fn_head
-    : decl_specs IDENT '(' params_opt ')' semantic_opt { $$ = pb_function(ctx, $1, $2.text, @2, $4, $6.text); }
+    : decl_specs IDENT '(' params_opt ')' semantic_opt { $$ = hfx_pb_function(ctx, $1, $2.text, @2, $4, $6.text); }
     ;
 
 semantic_opt
@@ -240,36 +241,36 @@ semantic_opt
     ;
 
 params_opt
-    : %empty                                 { $$ = parse_vec_new(); }
+    : %empty                                 { $$ = hfx_parse_vec_new(); }
     | params
     ;
 
 params
-    : param                                  { $$ = parse_vec_one(ctx, $1); }
-    | params ',' param                       { $$ = parse_vec_push(ctx, $1, $3); }
+    : param                                  { $$ = hfx_parse_vec_one(ctx, $1); }
+    | params ',' param                       { $$ = hfx_parse_vec_push(ctx, $1, $3); }
     ;
 
 param
-    : decl_specs                             { $$ = pb_param(ctx, $1, NULL, @1); }
-    | decl_specs declarator                  { $$ = pb_param(ctx, $1, $2, @1); }
+    : decl_specs                             { $$ = hfx_pb_param(ctx, $1, NULL, @1); }
+    | decl_specs declarator                  { $$ = hfx_pb_param(ctx, $1, $2, @1); }
     ;
 
 attrs
-    : attr                                   { $$ = parse_vec_one(ctx, $1); }
-    | attrs attr                             { $$ = parse_vec_push(ctx, $1, $2); }
+    : attr                                   { $$ = hfx_parse_vec_one(ctx, $1); }
+    | attrs attr                             { $$ = hfx_parse_vec_push(ctx, $1, $2); }
     ;
 
 attr
-    : '[' IDENT ']'                          { $$ = pb_attribute(ctx, $2.text, parse_vec_new(), @2); }
-    | '[' IDENT '(' args_opt ')' ']'         { $$ = pb_attribute(ctx, $2.text, $4, @2); }
+    : '[' IDENT ']'                          { $$ = hfx_pb_attribute(ctx, $2.text, hfx_parse_vec_new(), @2); }
+    | '[' IDENT '(' args_opt ')' ']'         { $$ = hfx_pb_attribute(ctx, $2.text, $4, @2); }
     ;
 
 /* ---- techniques, passes, state blocks ---- */
 
 technique
-    : TECHNIQUE name_opt '{' passes '}'             { $$ = pb_technique(ctx, $1.text, $2.text, parse_vec_new(), $4, @2); }
-    | TECHNIQUE name_opt annotations '{' passes '}' { $$ = pb_technique(ctx, $1.text, $2.text, $3, $5, @2); }
-    | TECHNIQUE name_opt '{' passes error '}'       { $$ = pb_technique(ctx, $1.text, $2.text, parse_vec_new(), $4, @2); }
+    : TECHNIQUE name_opt '{' passes '}'             { $$ = hfx_pb_technique(ctx, $1.text, $2.text, hfx_parse_vec_new(), $4, @2); }
+    | TECHNIQUE name_opt annotations '{' passes '}' { $$ = hfx_pb_technique(ctx, $1.text, $2.text, $3, $5, @2); }
+    | TECHNIQUE name_opt '{' passes error '}'       { $$ = hfx_pb_technique(ctx, $1.text, $2.text, hfx_parse_vec_new(), $4, @2); }
     ;
 
 /* A technique or pass may share its name with a type (struct T {...}; technique T {...}) */
@@ -280,29 +281,29 @@ name_opt
     ;
 
 passes
-    : %empty                                 { $$ = parse_vec_new(); }
-    | passes pass                            { $$ = parse_vec_push(ctx, $1, $2); }
+    : %empty                                 { $$ = hfx_parse_vec_new(); }
+    | passes pass                            { $$ = hfx_parse_vec_push(ctx, $1, $2); }
     | passes ';'                             { $$ = $1; }
     ;
 
 pass
-    : PASS name_opt '{' states '}'             { $$ = pb_pass(ctx, $2.text, parse_vec_new(), $4, @2); }
-    | PASS name_opt annotations '{' states '}' { $$ = pb_pass(ctx, $2.text, $3, $5, @2); }
-    | PASS name_opt '{' states error '}'       { $$ = pb_pass(ctx, $2.text, parse_vec_new(), $4, @2); }
-    | PASS name_opt annotations '{' states error '}' { $$ = pb_pass(ctx, $2.text, $3, $5, @2); }
+    : PASS name_opt '{' states '}'             { $$ = hfx_pb_pass(ctx, $2.text, hfx_parse_vec_new(), $4, @2); }
+    | PASS name_opt annotations '{' states '}' { $$ = hfx_pb_pass(ctx, $2.text, $3, $5, @2); }
+    | PASS name_opt '{' states error '}'       { $$ = hfx_pb_pass(ctx, $2.text, hfx_parse_vec_new(), $4, @2); }
+    | PASS name_opt annotations '{' states error '}' { $$ = hfx_pb_pass(ctx, $2.text, $3, $5, @2); }
     ;
 
 states
-    : %empty                                 { $$ = parse_vec_new(); }
-    | states state                           { $$ = parse_vec_push(ctx, $1, $2); }
+    : %empty                                 { $$ = hfx_parse_vec_new(); }
+    | states state                           { $$ = hfx_parse_vec_push(ctx, $1, $2); }
     | states error ';'                       { $$ = $1; }
-    | states '{' states '}'                  { $$ = parse_vec_concat(ctx, $1, $3); }
+    | states '{' states '}'                  { $$ = hfx_parse_vec_concat(ctx, $1, $3); }
     ;
 
 state
-    : state_name '=' state_value ';'              { $$ = pb_state(ctx, $1.text, NULL, $3, @1); }
-    | state_name '[' expr ']' '=' state_value ';' { $$ = pb_state(ctx, $1.text, $3, $6, @1); }
-    | IDENT '(' args_opt ')' ';'                  { $$ = pb_state(ctx, $1.text, NULL, pb_call(ctx, $1.text, $3, @1), @1); }
+    : state_name '=' state_value ';'              { $$ = hfx_pb_state(ctx, $1.text, NULL, $3, @1); }
+    | state_name '[' expr ']' '=' state_value ';' { $$ = hfx_pb_state(ctx, $1.text, $3, $6, @1); }
+    | IDENT '(' args_opt ')' ';'                  { $$ = hfx_pb_state(ctx, $1.text, NULL, hfx_pb_call(ctx, $1.text, $3, @1), @1); }
     ;
 
 state_name
@@ -312,50 +313,50 @@ state_name
 
 state_value
     : initializer
-    | '<' IDENT '>'                          { $$ = pb_state_ref(ctx, $2.text, @2); }
-    | '<' IDENT '[' expr ']' '>'             { $$ = pb_index(ctx, pb_state_ref(ctx, $2.text, @2), $4, @3); }
+    | '<' IDENT '>'                          { $$ = hfx_pb_state_ref(ctx, $2.text, @2); }
+    | '<' IDENT '[' expr ']' '>'             { $$ = hfx_pb_index(ctx, hfx_pb_state_ref(ctx, $2.text, @2), $4, @3); }
     ;
 
 /* ---- statements ---- */
 
 block
-    : '{' stmt_list '}'                      { $$ = pb_block(ctx, $2, @1); }
-    | '{' stmt_list error '}'                { $$ = pb_block(ctx, $2, @1); }
+    : '{' stmt_list '}'                      { $$ = hfx_pb_block(ctx, $2, @1); }
+    | '{' stmt_list error '}'                { $$ = hfx_pb_block(ctx, $2, @1); }
     ;
 
 stmt_list
-    : %empty                                 { $$ = parse_vec_new(); }
-    | stmt_list stmt                         { $$ = parse_vec_push(ctx, $1, $2); }
+    : %empty                                 { $$ = hfx_parse_vec_new(); }
+    | stmt_list stmt                         { $$ = hfx_parse_vec_push(ctx, $1, $2); }
     ;
 
 stmt
     : block
-    | decl_specs declarators ';'             { $$ = pb_decl_stmt(ctx, pb_vars(ctx, $1, $2, false), @1); }
-    | decl_specs ';'                         { $$ = pb_decl_stmt(ctx, parse_vec_one(ctx, pb_struct_decl(ctx, $1)), @1); }
-    | TYPEDEF decl_specs declarators ';'     { $$ = pb_decl_stmt(ctx, pb_typedefs(ctx, $2, $3), @1); }
-    | expr ';'                               { $$ = pb_expr_stmt(ctx, ST_EXPR, $1, @1); }
-    | ';'                                    { $$ = pb_stmt(ctx, ST_EMPTY, @1); }
-    | IF '(' expr ')' stmt %prec LOWER_THAN_ELSE { $$ = pb_if(ctx, $3, $5, NULL, @1); }
-    | IF '(' expr ')' stmt ELSE stmt         { $$ = pb_if(ctx, $3, $5, $7, @1); }
-    | WHILE '(' expr ')' stmt                { $$ = pb_loop(ctx, ST_WHILE, $3, $5, @1); }
-    | DO stmt WHILE '(' expr ')' ';'         { $$ = pb_loop(ctx, ST_DO, $5, $2, @1); }
-    | FOR '(' for_init expr_opt ';' expr_opt ')' stmt { $$ = pb_for(ctx, $3, $4, $6, $8, @1); }
-    | SWITCH '(' expr ')' '{' stmt_list '}'  { $$ = pb_switch(ctx, $3, $6, @1); }
-    | CASE expr ':'                          { $$ = pb_expr_stmt(ctx, ST_CASE, $2, @1); }
-    | DEFAULT ':'                            { $$ = pb_stmt(ctx, ST_DEFAULT, @1); }
-    | BREAK ';'                              { $$ = pb_stmt(ctx, ST_BREAK, @1); }
-    | CONTINUE ';'                           { $$ = pb_stmt(ctx, ST_CONTINUE, @1); }
-    | DISCARD ';'                            { $$ = pb_stmt(ctx, ST_DISCARD, @1); }
-    | RETURN expr_opt ';'                    { $$ = pb_expr_stmt(ctx, ST_RETURN, $2, @1); }
-    | ASM_BLOCK                              { $$ = pb_asm_stmt(ctx, $1.text, @1); }
-    | attr stmt                              { $$ = pb_attributed(ctx, $1, $2); }
-    | error ';'                              { $$ = pb_stmt(ctx, ST_EMPTY, @1); }
+    | decl_specs declarators ';'             { $$ = hfx_pb_decl_stmt(ctx, hfx_pb_vars(ctx, $1, $2, false), @1); }
+    | decl_specs ';'                         { $$ = hfx_pb_decl_stmt(ctx, hfx_parse_vec_one(ctx, hfx_pb_struct_decl(ctx, $1)), @1); }
+    | TYPEDEF decl_specs declarators ';'     { $$ = hfx_pb_decl_stmt(ctx, hfx_pb_typedefs(ctx, $2, $3), @1); }
+    | expr ';'                               { $$ = hfx_pb_expr_stmt(ctx, ST_EXPR, $1, @1); }
+    | ';'                                    { $$ = hfx_pb_stmt(ctx, ST_EMPTY, @1); }
+    | IF '(' expr ')' stmt %prec LOWER_THAN_ELSE { $$ = hfx_pb_if(ctx, $3, $5, NULL, @1); }
+    | IF '(' expr ')' stmt ELSE stmt         { $$ = hfx_pb_if(ctx, $3, $5, $7, @1); }
+    | WHILE '(' expr ')' stmt                { $$ = hfx_pb_loop(ctx, ST_WHILE, $3, $5, @1); }
+    | DO stmt WHILE '(' expr ')' ';'         { $$ = hfx_pb_loop(ctx, ST_DO, $5, $2, @1); }
+    | FOR '(' for_init expr_opt ';' expr_opt ')' stmt { $$ = hfx_pb_for(ctx, $3, $4, $6, $8, @1); }
+    | SWITCH '(' expr ')' '{' stmt_list '}'  { $$ = hfx_pb_switch(ctx, $3, $6, @1); }
+    | CASE expr ':'                          { $$ = hfx_pb_expr_stmt(ctx, ST_CASE, $2, @1); }
+    | DEFAULT ':'                            { $$ = hfx_pb_stmt(ctx, ST_DEFAULT, @1); }
+    | BREAK ';'                              { $$ = hfx_pb_stmt(ctx, ST_BREAK, @1); }
+    | CONTINUE ';'                           { $$ = hfx_pb_stmt(ctx, ST_CONTINUE, @1); }
+    | DISCARD ';'                            { $$ = hfx_pb_stmt(ctx, ST_DISCARD, @1); }
+    | RETURN expr_opt ';'                    { $$ = hfx_pb_expr_stmt(ctx, ST_RETURN, $2, @1); }
+    | ASM_BLOCK                              { $$ = hfx_pb_asm_stmt(ctx, $1.text, @1); }
+    | attr stmt                              { $$ = hfx_pb_attributed(ctx, $1, $2); }
+    | error ';'                              { $$ = hfx_pb_stmt(ctx, ST_EMPTY, @1); }
     ;
 
 for_init
     : ';'                                    { $$ = NULL; }
-    | expr ';'                               { $$ = pb_expr_stmt(ctx, ST_EXPR, $1, @1); }
-    | decl_specs declarators ';'             { $$ = pb_decl_stmt(ctx, pb_vars(ctx, $1, $2, false), @1); }
+    | expr ';'                               { $$ = hfx_pb_expr_stmt(ctx, ST_EXPR, $1, @1); }
+    | decl_specs declarators ';'             { $$ = hfx_pb_decl_stmt(ctx, hfx_pb_vars(ctx, $1, $2, false), @1); }
     ;
 
 expr_opt
@@ -366,107 +367,107 @@ expr_opt
 /* ---- expressions, C precedence ---- */
 
 strings
-    : STRING                                 { $$ = pb_string(ctx, $1.text, @1); }
-    | strings STRING                         { $$ = pb_string_join(ctx, $1, $2.text); }
+    : STRING                                 { $$ = hfx_pb_string(ctx, $1.text, @1); }
+    | strings STRING                         { $$ = hfx_pb_string_join(ctx, $1, $2.text); }
     ;
 
 /* The primary expressions are alternatives of postfix itself: one unit reduction less for
  * every operand. */
 postfix
-    : IDENT                                  { $$ = pb_ident(ctx, $1.text, @1); }
-    | INTCONST                               { $$ = pb_int(ctx, $1.text, @1); }
-    | FLOATCONST                             { $$ = pb_float(ctx, $1.text, @1); }
-    | TRUE_KW                                { $$ = pb_bool(ctx, true, @1); }
-    | FALSE_KW                               { $$ = pb_bool(ctx, false, @1); }
+    : IDENT                                  { $$ = hfx_pb_ident(ctx, $1.text, @1); }
+    | INTCONST                               { $$ = hfx_pb_int(ctx, $1.text, @1); }
+    | FLOATCONST                             { $$ = hfx_pb_float(ctx, $1.text, @1); }
+    | TRUE_KW                                { $$ = hfx_pb_bool(ctx, true, @1); }
+    | FALSE_KW                               { $$ = hfx_pb_bool(ctx, false, @1); }
     | strings
-    | '(' expr ')'                           { $$ = pb_paren($2); }
-    | IDENT '(' args_opt ')'                 { $$ = pb_call(ctx, $1.text, $3, @1); }
-    | ctor_type '(' args_opt ')'             { $$ = pb_construct(ctx, $1, $3, @1); }
-    | COMPILE IDENT IDENT '(' args_opt ')'   { $$ = pb_compile(ctx, $2.text, $3.text, $5, @3); }
-    | COMPILE IDENT IDENT                    { $$ = pb_compile(ctx, $2.text, $3.text, parse_vec_new(), @3); }
-    | SAMPLER_STATE '{' states '}'           { $$ = pb_sampler_state(ctx, $3, @1); }
-    | SAMPLER_STATE '{' states error '}'     { $$ = pb_sampler_state(ctx, $3, @1); }
-    | NULL_KW                                { $$ = pb_expr(ctx, EX_NULL, @1); }
-    | postfix '[' expr ']'                   { $$ = pb_index(ctx, $1, $3, @2); }
-    | postfix '.' IDENT                      { $$ = pb_member(ctx, $1, $3.text, @2); }
-    | postfix '.' IDENT '(' args_opt ')'     { $$ = pb_method(ctx, $1, $3.text, $5, @3); }
-    | postfix INC                            { $$ = pb_unary(ctx, OP_POSTINC, $1, @2); }
-    | postfix DEC                            { $$ = pb_unary(ctx, OP_POSTDEC, $1, @2); }
+    | '(' expr ')'                           { $$ = hfx_pb_paren($2); }
+    | IDENT '(' args_opt ')'                 { $$ = hfx_pb_call(ctx, $1.text, $3, @1); }
+    | ctor_type '(' args_opt ')'             { $$ = hfx_pb_construct(ctx, $1, $3, @1); }
+    | COMPILE IDENT IDENT '(' args_opt ')'   { $$ = hfx_pb_compile(ctx, $2.text, $3.text, $5, @3); }
+    | COMPILE IDENT IDENT                    { $$ = hfx_pb_compile(ctx, $2.text, $3.text, hfx_parse_vec_new(), @3); }
+    | SAMPLER_STATE '{' states '}'           { $$ = hfx_pb_sampler_state(ctx, $3, @1); }
+    | SAMPLER_STATE '{' states error '}'     { $$ = hfx_pb_sampler_state(ctx, $3, @1); }
+    | NULL_KW                                { $$ = hfx_pb_expr(ctx, EX_NULL, @1); }
+    | postfix '[' expr ']'                   { $$ = hfx_pb_index(ctx, $1, $3, @2); }
+    | postfix '.' IDENT                      { $$ = hfx_pb_member(ctx, $1, $3.text, @2); }
+    | postfix '.' IDENT '(' args_opt ')'     { $$ = hfx_pb_method(ctx, $1, $3.text, $5, @3); }
+    | postfix INC                            { $$ = hfx_pb_unary(ctx, OP_POSTINC, $1, @2); }
+    | postfix DEC                            { $$ = hfx_pb_unary(ctx, OP_POSTDEC, $1, @2); }
     ;
 
 unary
     : postfix
-    | INC unary                              { $$ = pb_unary(ctx, OP_PREINC, $2, @1); }
-    | DEC unary                              { $$ = pb_unary(ctx, OP_PREDEC, $2, @1); }
-    | '-' unary                              { $$ = pb_unary(ctx, OP_NEG, $2, @1); }
-    | '+' unary                              { $$ = pb_unary(ctx, OP_POS, $2, @1); }
-    | '!' unary                              { $$ = pb_unary(ctx, OP_NOT, $2, @1); }
-    | '~' unary                              { $$ = pb_unary(ctx, OP_BITNOT, $2, @1); }
-    | '(' ctor_type ')' unary                { $$ = pb_cast(ctx, $2, $4, @1); }
-    | '(' ctor_type dims ')' unary           { $$ = pb_cast(ctx, pb_array_type(ctx, $2, $3), $5, @1); }
-    | '(' struct_spec ')' unary              { ctx->pending_struct = NULL; $$ = pb_cast(ctx, $2, $4, @1); }
+    | INC unary                              { $$ = hfx_pb_unary(ctx, OP_PREINC, $2, @1); }
+    | DEC unary                              { $$ = hfx_pb_unary(ctx, OP_PREDEC, $2, @1); }
+    | '-' unary                              { $$ = hfx_pb_unary(ctx, OP_NEG, $2, @1); }
+    | '+' unary                              { $$ = hfx_pb_unary(ctx, OP_POS, $2, @1); }
+    | '!' unary                              { $$ = hfx_pb_unary(ctx, OP_NOT, $2, @1); }
+    | '~' unary                              { $$ = hfx_pb_unary(ctx, OP_BITNOT, $2, @1); }
+    | '(' ctor_type ')' unary                { $$ = hfx_pb_cast(ctx, $2, $4, @1); }
+    | '(' ctor_type dims ')' unary           { $$ = hfx_pb_cast(ctx, hfx_pb_array_type(ctx, $2, $3), $5, @1); }
+    | '(' struct_spec ')' unary              { ctx->pending_struct = NULL; $$ = hfx_pb_cast(ctx, $2, $4, @1); }
     ;
 
 /* The binary operators in one rule: precedence declarations order them like C, which keeps
  * each operand's climb through unit rules short. */
 binary
     : unary
-    | binary '*' binary                      { $$ = pb_binary(ctx, OP_MUL, $1, $3, @2); }
-    | binary '/' binary                      { $$ = pb_binary(ctx, OP_DIV, $1, $3, @2); }
-    | binary '%' binary                      { $$ = pb_binary(ctx, OP_MOD, $1, $3, @2); }
-    | binary '+' binary                      { $$ = pb_binary(ctx, OP_ADD, $1, $3, @2); }
-    | binary '-' binary                      { $$ = pb_binary(ctx, OP_SUB, $1, $3, @2); }
-    | binary SHL binary                      { $$ = pb_binary(ctx, OP_SHL, $1, $3, @2); }
-    | binary SHR binary                      { $$ = pb_binary(ctx, OP_SHR, $1, $3, @2); }
-    | binary '<' binary                      { $$ = pb_binary(ctx, OP_LT, $1, $3, @2); }
-    | binary '>' binary                      { $$ = pb_binary(ctx, OP_GT, $1, $3, @2); }
-    | binary LE binary                       { $$ = pb_binary(ctx, OP_LE, $1, $3, @2); }
-    | binary GE binary                       { $$ = pb_binary(ctx, OP_GE, $1, $3, @2); }
-    | binary EQ binary                       { $$ = pb_binary(ctx, OP_EQ, $1, $3, @2); }
-    | binary NE binary                       { $$ = pb_binary(ctx, OP_NE, $1, $3, @2); }
-    | binary '&' binary                      { $$ = pb_binary(ctx, OP_BITAND, $1, $3, @2); }
-    | binary '^' binary                      { $$ = pb_binary(ctx, OP_BITXOR, $1, $3, @2); }
-    | binary '|' binary                      { $$ = pb_binary(ctx, OP_BITOR, $1, $3, @2); }
-    | binary ANDAND binary                   { $$ = pb_binary(ctx, OP_AND, $1, $3, @2); }
-    | binary OROR binary                     { $$ = pb_binary(ctx, OP_OR, $1, $3, @2); }
+    | binary '*' binary                      { $$ = hfx_pb_binary(ctx, OP_MUL, $1, $3, @2); }
+    | binary '/' binary                      { $$ = hfx_pb_binary(ctx, OP_DIV, $1, $3, @2); }
+    | binary '%' binary                      { $$ = hfx_pb_binary(ctx, OP_MOD, $1, $3, @2); }
+    | binary '+' binary                      { $$ = hfx_pb_binary(ctx, OP_ADD, $1, $3, @2); }
+    | binary '-' binary                      { $$ = hfx_pb_binary(ctx, OP_SUB, $1, $3, @2); }
+    | binary SHL binary                      { $$ = hfx_pb_binary(ctx, OP_SHL, $1, $3, @2); }
+    | binary SHR binary                      { $$ = hfx_pb_binary(ctx, OP_SHR, $1, $3, @2); }
+    | binary '<' binary                      { $$ = hfx_pb_binary(ctx, OP_LT, $1, $3, @2); }
+    | binary '>' binary                      { $$ = hfx_pb_binary(ctx, OP_GT, $1, $3, @2); }
+    | binary LE binary                       { $$ = hfx_pb_binary(ctx, OP_LE, $1, $3, @2); }
+    | binary GE binary                       { $$ = hfx_pb_binary(ctx, OP_GE, $1, $3, @2); }
+    | binary EQ binary                       { $$ = hfx_pb_binary(ctx, OP_EQ, $1, $3, @2); }
+    | binary NE binary                       { $$ = hfx_pb_binary(ctx, OP_NE, $1, $3, @2); }
+    | binary '&' binary                      { $$ = hfx_pb_binary(ctx, OP_BITAND, $1, $3, @2); }
+    | binary '^' binary                      { $$ = hfx_pb_binary(ctx, OP_BITXOR, $1, $3, @2); }
+    | binary '|' binary                      { $$ = hfx_pb_binary(ctx, OP_BITOR, $1, $3, @2); }
+    | binary ANDAND binary                   { $$ = hfx_pb_binary(ctx, OP_AND, $1, $3, @2); }
+    | binary OROR binary                     { $$ = hfx_pb_binary(ctx, OP_OR, $1, $3, @2); }
     ;
 
 /* The conditional operator is one of assign's alternatives (no unit rule between them). */
 assign
     : binary
-    | binary '?' expr ':' assign             { $$ = pb_ternary(ctx, $1, $3, $5, @2); }
-    | unary '=' assign                       { $$ = pb_assign(ctx, OP_NONE, $1, $3, @2); }
-    | unary ASSIGN_OP assign                 { $$ = pb_assign(ctx, $2.op, $1, $3, @2); }
+    | binary '?' expr ':' assign             { $$ = hfx_pb_ternary(ctx, $1, $3, $5, @2); }
+    | unary '=' assign                       { $$ = hfx_pb_assign(ctx, OP_NONE, $1, $3, @2); }
+    | unary ASSIGN_OP assign                 { $$ = hfx_pb_assign(ctx, $2.op, $1, $3, @2); }
     ;
 
 expr
     : assign
-    | expr ',' assign                        { $$ = pb_comma(ctx, $1, $3, @2); }
+    | expr ',' assign                        { $$ = hfx_pb_comma(ctx, $1, $3, @2); }
     ;
 
 args_opt
-    : %empty                                 { $$ = parse_vec_new(); }
+    : %empty                                 { $$ = hfx_parse_vec_new(); }
     | args
     ;
 
 args
-    : assign                                 { $$ = parse_vec_one(ctx, $1); }
-    | args ',' assign                        { $$ = parse_vec_push(ctx, $1, $3); }
+    : assign                                 { $$ = hfx_parse_vec_one(ctx, $1); }
+    | args ',' assign                        { $$ = hfx_parse_vec_push(ctx, $1, $3); }
     ;
 
 %%
 
 static void yyerror(YYLTYPE *loc, parse_ctx *ctx, const char *msg) {
-    parse_report_failure(ctx, *loc, msg);
+    hfx_parse_report_failure(ctx, *loc, msg);
 }
 
 static int yyreport_syntax_error(const yypcontext_t *yyctx, parse_ctx *ctx) {
-    parse_report_syntax(ctx, yypcontext_token(yyctx) == YYSYMBOL_YYEOF, *yypcontext_location(yyctx));
+    hfx_parse_report_syntax(ctx, yypcontext_token(yyctx) == YYSYMBOL_YYEOF, *yypcontext_location(yyctx));
     return 0;
 }
 
 hfx_ast *hfx_parse(hfx_arena *arena, hfx_diags *diags, hfx_types *types, struct hfx_token *tokens) {
     parse_ctx ctx;
-    if (parse_ctx_init(&ctx, arena, diags, types, tokens)) (void)yyparse(&ctx);
-    return parse_ctx_finish(&ctx);
+    if (hfx_parse_ctx_init(&ctx, arena, diags, types, tokens)) (void)yyparse(&ctx);
+    return hfx_parse_ctx_finish(&ctx);
 }

@@ -24,13 +24,13 @@ static bool is_punct(const hfx_token *t, hfx_punct p) { return t->kind == TK_PUN
 
 static void fail_code(expr *e, const hfx_token *at, unsigned code, const char *msg) {
     if (!e->failed)
-        pp_error(e->pp, at->kind == TK_EOF ? e->directive : at->loc, code, "%s", msg);
+        hfx_pp_error(e->pp, at->kind == TK_EOF ? e->directive : at->loc, code, "%s", msg);
     e->failed = true;
 }
 
 static void fail(expr *e, const hfx_token *at, const char *msg) {
     if (!e->failed)
-        pp_error(e->pp, at->kind == TK_EOF ? e->directive : at->loc, X_PP_INVALID_INT_EXPR, "%s", msg);
+        hfx_pp_error(e->pp, at->kind == TK_EOF ? e->directive : at->loc, X_PP_INVALID_INT_EXPR, "%s", msg);
     e->failed = true;
 }
 
@@ -62,9 +62,9 @@ static hfx_token *resolve_defined(hfx_pp *pp, hfx_token *line, expr *e) {
             }
             after = after->next;
         }
-        hfx_token *value = pp_copy_token(pp, t);
+        hfx_token *value = hfx_pp_copy_token(pp, t);
         value->kind = TK_INT;
-        value->text = pp_find_macro(pp, name->text) ? "1" : "0";
+        value->text = hfx_pp_find_macro(pp, name->text) ? "1" : "0";
         value->len = 1;
         cur = cur->next = value;
         t = after;
@@ -109,7 +109,7 @@ static pp_value defined_operator(expr *e, hfx_token *t) {
         if (!is_punct(e->tok, P_RPAREN)) fail(e, e->tok, "missing ')' after 'defined'");
         else e->tok = e->tok->next;
     }
-    return (pp_value){pp_find_macro(e->pp, name->text) != NULL, false};
+    return (pp_value){hfx_pp_find_macro(e->pp, name->text) != NULL, false};
 }
 
 static pp_value parse_expr(expr *e, bool eval);
@@ -272,7 +272,7 @@ static pp_value parse_expr(expr *e, bool eval) {
 static hfx_token *expand_condition(hfx_pp *pp, hfx_token *tok) {
     hfx_token head = {0}, *cur = &head;
     while (tok->kind != TK_EOF) {
-        if (pp_expand_macro(pp, &tok, tok)) continue;
+        if (hfx_pp_expand_macro(pp, &tok, tok)) continue;
         cur = cur->next = tok;
         tok = tok->next;
         if (cur->kind != TK_IDENT || strcmp(cur->text, "defined") != 0) continue;
@@ -286,10 +286,10 @@ static hfx_token *expand_condition(hfx_pp *pp, hfx_token *tok) {
     return head.next;
 }
 
-bool pp_eval_condition(hfx_pp *pp, hfx_token *line, hfx_loc directive) {
+bool hfx_pp_eval_condition(hfx_pp *pp, hfx_token *line, hfx_loc directive) {
     expr e = {pp, NULL, directive, false, 0};
     if (line->kind == TK_EOF) {
-        pp_error(pp, directive, X_PP_INVALID_INT_EXPR, "#if with no expression");
+        hfx_pp_error(pp, directive, X_PP_INVALID_INT_EXPR, "#if with no expression");
         return false;
     }
     line = resolve_defined(pp, line, &e);

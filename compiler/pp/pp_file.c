@@ -1,4 +1,4 @@
-/* pp_file.c: reading source files and finding #include'd ones. Effects come from Windows:
+/* hfx_pp_file.c: reading source files and finding #include'd ones. Effects come from Windows:
  * backslashes are separators and names often differ in case from the file on disk, so a
  * name that is not found exactly is looked up again component by component, ignoring case. */
 #define _XOPEN_SOURCE 700 /* realpath */
@@ -28,7 +28,7 @@ static uint32_t put_utf8(char *out, uint32_t cp) {
  * byte-order mark (FF FE little endian, FE FF big endian) becomes UTF-8 behind a UTF-8 mark,
  * which the lexer skips, so columns count as in the original. An unpaired surrogate is U+FFFD.
  * Any other text is returned as it is. */
-char *pp_decode_source(hfx_arena *arena, char *text, uint32_t *size) {
+char *hfx_pp_decode_source(hfx_arena *arena, char *text, uint32_t *size) {
     const unsigned char *u = (const unsigned char *)text;
     uint32_t n = *size;
     bool le = n >= 2 && u[0] == 0xFF && u[1] == 0xFE, be = n >= 2 && u[0] == 0xFE && u[1] == 0xFF;
@@ -57,7 +57,7 @@ char *pp_decode_source(hfx_arena *arena, char *text, uint32_t *size) {
     return out;
 }
 
-char *pp_read_file(hfx_arena *arena, const char *path, uint32_t *size) {
+char *hfx_pp_read_file(hfx_arena *arena, const char *path, uint32_t *size) {
     struct stat st;
     if (stat(path, &st) != 0 || !S_ISREG(st.st_mode)) return NULL;
     if (st.st_size > HFXC_MAX_SOURCE_BYTES) { /* refused before reading: the caller reports the size */
@@ -73,10 +73,10 @@ char *pp_read_file(hfx_arena *arena, const char *path, uint32_t *size) {
     if (!buf || got != n) return NULL;
     buf[n] = 0;
     *size = (uint32_t)n;
-    return pp_decode_source(arena, buf, size);
+    return hfx_pp_decode_source(arena, buf, size);
 }
 
-char *pp_dirname(hfx_arena *arena, const char *path) {
+char *hfx_pp_dirname(hfx_arena *arena, const char *path) {
     const char *slash = strrchr(path, '/');
     const char *back = strrchr(path, '\\');
     if (back && (!slash || back > slash)) slash = back;
@@ -86,7 +86,7 @@ char *pp_dirname(hfx_arena *arena, const char *path) {
 }
 
 /* Into a buffer of our own: no malloc'ed string alive while the arena allocates. */
-char *pp_realpath(hfx_arena *arena, const char *path) {
+char *hfx_pp_realpath(hfx_arena *arena, const char *path) {
     char buf[PATH_MAX];
     return realpath(path, buf) ? hfx_arena_strdup(arena, buf) : NULL;
 }
@@ -148,7 +148,7 @@ static const char *try_dir(hfx_pp *pp, const char *dir, const char *name) {
     return lookup_nocase(pp->arena, dir, name);
 }
 
-const char *pp_find_include(hfx_pp *pp, const char *name, bool angled, const char *including_dir) {
+const char *hfx_pp_find_include(hfx_pp *pp, const char *name, bool angled, const char *including_dir) {
     (void)angled; /* fxc's default handler searches the same places for <x> and "x" */
     char *n = hfx_arena_strdup(pp->arena, name);
     for (char *p = n; *p; p++)

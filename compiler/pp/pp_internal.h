@@ -1,5 +1,5 @@
 /* pp_internal.h: what the preprocessor's files (preprocess.c: directives and the main loop,
- * pp_macro.c: macro table and expansion, pp_expr.c: #if arithmetic, pp_file.c: finding and
+ * pp_macro.c: macro table and expansion, pp_expr.c: #if arithmetic, hfx_pp_file.c: finding and
  * reading files) share. One hfx_pp per hfx_preprocess call; all of it lives in the arena. */
 #ifndef HFX_PP_INTERNAL_H
 #define HFX_PP_INTERNAL_H
@@ -109,46 +109,46 @@ typedef struct hfx_pp {
 } hfx_pp;
 
 /* preprocess.c */
-void pp_error(hfx_pp *pp, hfx_loc loc, unsigned code, const char *fmt, ...) __attribute__((format(printf, 4, 5)));
-void pp_warning(hfx_pp *pp, hfx_loc loc, unsigned code, const char *fmt, ...) __attribute__((format(printf, 4, 5)));
-hfx_loc pp_map_loc(hfx_pp *pp, hfx_loc loc);      /* applies #line */
-hfx_token *pp_new_eof(hfx_pp *pp, hfx_loc loc);
+void hfx_pp_error(hfx_pp *pp, hfx_loc loc, unsigned code, const char *fmt, ...) __attribute__((format(printf, 4, 5)));
+void hfx_pp_warning(hfx_pp *pp, hfx_loc loc, unsigned code, const char *fmt, ...) __attribute__((format(printf, 4, 5)));
+hfx_loc hfx_pp_map_loc(hfx_pp *pp, hfx_loc loc);      /* applies #line */
+hfx_token *hfx_pp_new_eof(hfx_pp *pp, hfx_loc loc);
 /* Reports a string the lexer flagged TF_UNTERMINATED (once), now that it is used. */
-void pp_check_string(hfx_pp *pp, hfx_token *t);
-hfx_token *pp_copy_token(hfx_pp *pp, const hfx_token *t);
-pp_file_info *pp_file(hfx_pp *pp, uint32_t file); /* grows the per-file table */
+void hfx_pp_check_string(hfx_pp *pp, hfx_token *t);
+hfx_token *hfx_pp_copy_token(hfx_pp *pp, const hfx_token *t);
+pp_file_info *hfx_pp_file(hfx_pp *pp, uint32_t file); /* grows the per-file table */
 
 /* pp_macro.c */
-pp_macro *pp_find_macro(hfx_pp *pp, const char *name);
-void pp_undef(hfx_pp *pp, const char *name);
-void pp_define_builtins(hfx_pp *pp);
+pp_macro *hfx_pp_find_macro(hfx_pp *pp, const char *name);
+void hfx_pp_undef(hfx_pp *pp, const char *name);
+void hfx_pp_define_builtins(hfx_pp *pp);
 /* Parses a #define line (the tokens after "define", ending with TK_EOF). */
-void pp_define(hfx_pp *pp, hfx_token *line, hfx_loc directive);
+void hfx_pp_define(hfx_pp *pp, hfx_token *line, hfx_loc directive);
 /* Defines NAME or NAME=VALUE given on the command line. */
-void pp_define_option(hfx_pp *pp, const char *def, hfx_loc loc);
+void hfx_pp_define_option(hfx_pp *pp, const char *def, hfx_loc loc);
 /* When tok is a macro use, replaces it (and its arguments) by the expansion in front of the
  * rest of the list: *rest is where to go on. Returns false when tok is not expanded. */
-bool pp_expand_macro(hfx_pp *pp, hfx_token **rest, hfx_token *tok);
+bool hfx_pp_expand_macro(hfx_pp *pp, hfx_token **rest, hfx_token *tok);
 /* Expands every macro of a list ending with TK_EOF (for #if, #include and arguments). */
-hfx_token *pp_expand_all(hfx_pp *pp, hfx_token *list);
+hfx_token *hfx_pp_expand_all(hfx_pp *pp, hfx_token *list);
 /* The token after tok that starts a new line, or the TK_EOF. */
-hfx_token *pp_line_end(hfx_token *tok);
+hfx_token *hfx_pp_line_end(hfx_token *tok);
 /* A copy of the tokens from tok up to the line's end, ending with a TK_EOF. */
-hfx_token *pp_copy_line(hfx_pp *pp, hfx_token *tok, hfx_token **rest);
+hfx_token *hfx_pp_copy_line(hfx_pp *pp, hfx_token *tok, hfx_token **rest);
 /* Spellings joined with single spaces where the source had white space. */
-char *pp_join(hfx_pp *pp, const hfx_token *from, const hfx_token *to);
+char *hfx_pp_join(hfx_pp *pp, const hfx_token *from, const hfx_token *to);
 
 /* pp_expr.c */
 /* Evaluates a #if / #elif line (tokens after the directive name, ending with TK_EOF). */
-bool pp_eval_condition(hfx_pp *pp, hfx_token *line, hfx_loc directive);
+bool hfx_pp_eval_condition(hfx_pp *pp, hfx_token *line, hfx_loc directive);
 
-/* pp_file.c */
+/* hfx_pp_file.c */
 /* Reads a whole file into the arena, NUL-terminated; NULL when it cannot be read. */
-char *pp_read_file(hfx_arena *arena, const char *path, uint32_t *size); /* UTF-16 decoded */
-char *pp_decode_source(hfx_arena *arena, char *text, uint32_t *size); /* UTF-16 with a BOM to UTF-8 */
+char *hfx_pp_read_file(hfx_arena *arena, const char *path, uint32_t *size); /* UTF-16 decoded */
+char *hfx_pp_decode_source(hfx_arena *arena, char *text, uint32_t *size); /* UTF-16 with a BOM to UTF-8 */
 /* Finds an #include'd file as fxc does; returns the path it opened (arena) or NULL. */
-const char *pp_find_include(hfx_pp *pp, const char *name, bool angled, const char *including_dir);
-char *pp_dirname(hfx_arena *arena, const char *path);
-char *pp_realpath(hfx_arena *arena, const char *path);
+const char *hfx_pp_find_include(hfx_pp *pp, const char *name, bool angled, const char *including_dir);
+char *hfx_pp_dirname(hfx_arena *arena, const char *path);
+char *hfx_pp_realpath(hfx_arena *arena, const char *path);
 
 #endif

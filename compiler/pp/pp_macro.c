@@ -23,7 +23,7 @@ static uint32_t start_bit(const char *name) {
     return a * 128 + b;
 }
 
-pp_macro *pp_find_macro(hfx_pp *pp, const char *name) {
+pp_macro *hfx_pp_find_macro(hfx_pp *pp, const char *name) {
     uint32_t bit = start_bit(name);
     if (!(pp->macro_starts[bit / 64] >> (bit % 64) & 1)) return NULL;
     for (pp_macro *m = pp->macros[hash_name(name)]; m; m = m->next)
@@ -31,7 +31,7 @@ pp_macro *pp_find_macro(hfx_pp *pp, const char *name) {
     return NULL;
 }
 
-void pp_undef(hfx_pp *pp, const char *name) {
+void hfx_pp_undef(hfx_pp *pp, const char *name) {
     for (pp_macro **p = &pp->macros[hash_name(name)]; *p; p = &(*p)->next) {
         if (strcmp((*p)->name, name) == 0) {
             *p = (*p)->next;
@@ -41,7 +41,7 @@ void pp_undef(hfx_pp *pp, const char *name) {
 }
 
 static void add_macro(hfx_pp *pp, pp_macro *m) {
-    pp_undef(pp, m->name);
+    hfx_pp_undef(pp, m->name);
     uint32_t bit = start_bit(m->name);
     pp->macro_starts[bit / 64] |= (uint64_t)1 << (bit % 64);
     unsigned h = hash_name(m->name);
@@ -49,7 +49,7 @@ static void add_macro(hfx_pp *pp, pp_macro *m) {
     pp->macros[h] = m;
 }
 
-void pp_define_builtins(hfx_pp *pp) {
+void hfx_pp_define_builtins(hfx_pp *pp) {
     static const struct { const char *name; pp_builtin kind; } builtins[] = {
         {"__FILE__", PP_BUILTIN_FILE}, {"__LINE__", PP_BUILTIN_LINE}};
     for (size_t i = 0; i < sizeof builtins / sizeof builtins[0]; i++) {
@@ -65,21 +65,21 @@ void pp_define_builtins(hfx_pp *pp) {
 
 static bool is_punct(const hfx_token *t, hfx_punct p) { return t->kind == TK_PUNCT && t->punct == p; }
 
-hfx_token *pp_line_end(hfx_token *tok) {
+hfx_token *hfx_pp_line_end(hfx_token *tok) {
     while (tok->kind != TK_EOF && !(tok->flags & TF_BOL)) tok = tok->next;
     return tok;
 }
 
-hfx_token *pp_copy_line(hfx_pp *pp, hfx_token *tok, hfx_token **rest) {
+hfx_token *hfx_pp_copy_line(hfx_pp *pp, hfx_token *tok, hfx_token **rest) {
     hfx_token head = {0}, *cur = &head;
-    hfx_token *end = pp_line_end(tok);
-    for (; tok != end; tok = tok->next) cur = cur->next = pp_copy_token(pp, tok);
-    cur->next = pp_new_eof(pp, end->loc);
+    hfx_token *end = hfx_pp_line_end(tok);
+    for (; tok != end; tok = tok->next) cur = cur->next = hfx_pp_copy_token(pp, tok);
+    cur->next = hfx_pp_new_eof(pp, end->loc);
     *rest = end;
     return head.next;
 }
 
-char *pp_join(hfx_pp *pp, const hfx_token *from, const hfx_token *to) {
+char *hfx_pp_join(hfx_pp *pp, const hfx_token *from, const hfx_token *to) {
     size_t len = 1;
     for (const hfx_token *t = from; t != to && t->kind != TK_EOF; t = t->next) len += t->len + 1;
     char *buf = hfx_arena_alloc(pp->arena, len), *p = buf;
@@ -161,11 +161,11 @@ static hfx_token *parse_params(hfx_pp *pp, pp_macro *m, hfx_token *t) {
         } else if (t->kind == TK_IDENT) {
             for (uint32_t i = 0; i < n; i++)
                 if (strcmp(names[i], t->text) == 0) {
-                    pp_error(pp, t->loc, X_PP_DUPLICATE_PARAMETER, "'%s' : duplicate macro parameter", t->text);
+                    hfx_pp_error(pp, t->loc, X_PP_DUPLICATE_PARAMETER, "'%s' : duplicate macro parameter", t->text);
                     return NULL;
                 }
             if (n == sizeof names / sizeof names[0]) {
-                pp_error(pp, t->loc, X_PP_SYNTAX, "too many macro parameters");
+                hfx_pp_error(pp, t->loc, X_PP_SYNTAX, "too many macro parameters");
                 return NULL;
             }
             names[n++] = t->text;
@@ -175,13 +175,13 @@ static hfx_token *parse_params(hfx_pp *pp, pp_macro *m, hfx_token *t) {
                 t = t->next;
             }
         } else {
-            pp_error(pp, t->loc, X_PP_SYNTAX, "expected a macro parameter name, found '%s'",
+            hfx_pp_error(pp, t->loc, X_PP_SYNTAX, "expected a macro parameter name, found '%s'",
                      t->kind == TK_EOF ? "end of line" : t->text);
             return NULL;
         }
         if (is_punct(t, P_RPAREN)) break;
         if (m->variadic || !is_punct(t, P_COMMA)) {
-            pp_error(pp, t->loc, X_PP_SYNTAX, "expected ')' in macro parameter list");
+            hfx_pp_error(pp, t->loc, X_PP_SYNTAX, "expected ')' in macro parameter list");
             return NULL;
         }
         t = t->next;
@@ -197,12 +197,12 @@ static bool body_is_valid(hfx_pp *pp, const pp_macro *m) {
     for (const hfx_token *t = m->body; t->kind != TK_EOF; t = t->next) {
         last = t;
         if (m->function_like && t->kind == TK_HASH && param_index(m, t->next) < 0) {
-            pp_error(pp, t->loc, X_PP_SYNTAX, "'#' is not followed by a macro parameter");
+            hfx_pp_error(pp, t->loc, X_PP_SYNTAX, "'#' is not followed by a macro parameter");
             return false;
         }
     }
     if ((first->kind == TK_HASHHASH) || (last && last->kind == TK_HASHHASH)) {
-        pp_error(pp, first->kind == TK_HASHHASH ? first->loc : last->loc, X_PP_SYNTAX,
+        hfx_pp_error(pp, first->kind == TK_HASHHASH ? first->loc : last->loc, X_PP_SYNTAX,
                  "'##' cannot occur at either end of a macro expansion");
         return false;
     }
@@ -223,14 +223,14 @@ static bool same_definition(const pp_macro *a, const pp_macro *b) {
     return x->kind == y->kind;
 }
 
-void pp_define(hfx_pp *pp, hfx_token *line, hfx_loc directive) {
+void hfx_pp_define(hfx_pp *pp, hfx_token *line, hfx_loc directive) {
     hfx_token *name = line;
     if (name->kind != TK_IDENT) {
-        pp_error(pp, name->kind == TK_EOF ? directive : name->loc, X_PP_SYNTAX, "#define: macro name expected");
+        hfx_pp_error(pp, name->kind == TK_EOF ? directive : name->loc, X_PP_SYNTAX, "#define: macro name expected");
         return;
     }
     if (strcmp(name->text, "defined") == 0) {
-        pp_error(pp, name->loc, X_PP_SYNTAX, "'defined' cannot be used as a macro name");
+        hfx_pp_error(pp, name->loc, X_PP_SYNTAX, "'defined' cannot be used as a macro name");
         return;
     }
     pp_macro *m = HFX_NEW(pp->arena, pp_macro);
@@ -243,21 +243,21 @@ void pp_define(hfx_pp *pp, hfx_token *line, hfx_loc directive) {
         if (!body) return;
     }
     m->body = body;
-    for (hfx_token *t = body; t->kind != TK_EOF; t = t->next) pp_check_string(pp, t);
+    for (hfx_token *t = body; t->kind != TK_EOF; t = t->next) hfx_pp_check_string(pp, t);
     if (!body_is_valid(pp, m)) return;
-    pp_macro *old = pp_find_macro(pp, m->name);
+    pp_macro *old = hfx_pp_find_macro(pp, m->name);
     if (old && !same_definition(old, m))
-        pp_warning(pp, name->loc, X_PP_MACRO_REDEFINITION, "'%s' : macro redefinition", m->name);
+        hfx_pp_warning(pp, name->loc, X_PP_MACRO_REDEFINITION, "'%s' : macro redefinition", m->name);
     add_macro(pp, m);
 }
 
-void pp_define_option(hfx_pp *pp, const char *def, hfx_loc loc) {
+void hfx_pp_define_option(hfx_pp *pp, const char *def, hfx_loc loc) {
     const char *eq = strchr(def, '=');
     size_t name_len = eq ? (size_t)(eq - def) : strlen(def);
     char *text = hfx_arena_printf(pp->arena, "%.*s %s", (int)name_len, def, eq ? eq + 1 : "1");
     hfx_token *line = hfx_tokenize_text(pp->arena, pp->diags, text, (uint32_t)strlen(text), loc);
     for (hfx_token *t = line; t; t = t->next) t->flags &= ~(uint32_t)TF_BOL;
-    pp_define(pp, line, loc);
+    hfx_pp_define(pp, line, loc);
 }
 
 /* ---- expansion ---- */
@@ -265,14 +265,14 @@ void pp_define_option(hfx_pp *pp, const char *def, hfx_loc loc) {
 /* A token copy made by an expansion: charged to the work budget (a token costs 4 units). */
 static hfx_token *copy_for_expansion(hfx_pp *pp, const hfx_token *t) {
     pp->work += 4;
-    return pp_copy_token(pp, t);
+    return hfx_pp_copy_token(pp, t);
 }
 
 /* The budget for all expansions of one preprocess call: past it, nothing expands any more. */
 static bool over_budget(hfx_pp *pp, const hfx_token *use) {
     if (pp->work <= PP_MAX_EXPANSION_WORK + PP_EXPANSION_WORK_PER_BYTE * pp->source_bytes) return false;
     if (!pp->budget_reported)
-        pp_error(pp, use->loc, X_PP_ERROR, "macro expansion is too complex: the preprocessor's work limit is exceeded");
+        hfx_pp_error(pp, use->loc, X_PP_ERROR, "macro expansion is too complex: the preprocessor's work limit is exceeded");
     pp->budget_reported = true;
     return true;
 }
@@ -305,14 +305,14 @@ static bool count_tokens(hfx_pp *pp, const hfx_token *use, uint32_t n) {
     pp->expansion_tokens += n;
     if (pp->expansion_tokens <= PP_MAX_EXPANSION_TOKENS) return true;
     if (!pp->runaway_reported)
-        pp_error(pp, use->loc, X_PP_ERROR, "macro expansion produces more than %u tokens",
+        hfx_pp_error(pp, use->loc, X_PP_ERROR, "macro expansion produces more than %u tokens",
                  (unsigned)PP_MAX_EXPANSION_TOKENS);
     pp->runaway_reported = true;
     return false;
 }
 
 static hfx_token *builtin_token(hfx_pp *pp, const pp_macro *m, const hfx_token *use) {
-    hfx_loc at = pp_map_loc(pp, use->loc);
+    hfx_loc at = hfx_pp_map_loc(pp, use->loc);
     char *text;
     hfx_token_kind kind;
     if (m->builtin == PP_BUILTIN_LINE) {
@@ -332,7 +332,7 @@ static hfx_token *builtin_token(hfx_pp *pp, const pp_macro *m, const hfx_token *
         *p = 0;
         kind = TK_STRING;
     }
-    hfx_token *t = pp_copy_token(pp, use);
+    hfx_token *t = hfx_pp_copy_token(pp, use);
     t->kind = kind;
     t->text = text;
     t->len = (uint32_t)strlen(text);
@@ -356,7 +356,7 @@ static hfx_token *stringize(hfx_pp *pp, const hfx_token *hash, const hfx_token *
     }
     *p++ = '"';
     *p = 0;
-    hfx_token *t = pp_copy_token(pp, hash);
+    hfx_token *t = hfx_pp_copy_token(pp, hash);
     t->kind = TK_STRING;
     t->punct = 0;
     t->text = text;
@@ -384,15 +384,15 @@ static hfx_token *expanded_arg(hfx_pp *pp, macro_arg *arg, const hfx_token *use)
     if (arg->expanded) return arg->expanded;
     if (pp->arg_depth >= PP_MAX_EXPANSION_DEPTH) {
         if (!pp->runaway_reported)
-            pp_error(pp, use->loc, X_PP_ERROR, "macro arguments of '%s' nested too deeply", use->text);
+            hfx_pp_error(pp, use->loc, X_PP_ERROR, "macro arguments of '%s' nested too deeply", use->text);
         pp->runaway_reported = true;
         return arg->expanded = arg->raw;
     }
     hfx_token head = {0}, *cur = &head;
     for (const hfx_token *t = arg->raw; t->kind != TK_EOF; t = t->next) cur = cur->next = copy_for_expansion(pp, t);
-    cur->next = pp_new_eof(pp, use->loc);
+    cur->next = hfx_pp_new_eof(pp, use->loc);
     pp->arg_depth++;
-    arg->expanded = pp_expand_all(pp, head.next);
+    arg->expanded = hfx_pp_expand_all(pp, head.next);
     pp->arg_depth--;
     return arg->expanded;
 }
@@ -456,13 +456,13 @@ static hfx_token *collect_args(hfx_pp *pp, const pp_macro *m, const hfx_token *u
     hfx_token head = {0}, *cur = &head;
     for (tok = tok->next;; tok = tok->next) {
         if (tok->kind == TK_EOF) {
-            pp_error(pp, use->loc, X_PP_EOF_IN_MACRO, "unexpected end of file in macro expansion of '%s'", m->name);
+            hfx_pp_error(pp, use->loc, X_PP_EOF_IN_MACRO, "unexpected end of file in macro expansion of '%s'", m->name);
             return NULL;
         }
         bool ends_arg = depth == 0 && (is_punct(tok, P_RPAREN) ||
                                        (is_punct(tok, P_COMMA) && !(m->variadic && count + 1 >= n)));
         if (ends_arg) {
-            cur->next = pp_new_eof(pp, tok->loc);
+            cur->next = hfx_pp_new_eof(pp, tok->loc);
             if (count < n) args[count].raw = head.next;
             count++;
             head.next = NULL;
@@ -478,9 +478,9 @@ static hfx_token *collect_args(hfx_pp *pp, const pp_macro *m, const hfx_token *u
     }
     bool empty_va = m->variadic && count + 1 == n;
     if (count > n || (m->param_count == 0 && args[0].raw->kind != TK_EOF)) {
-        pp_error(pp, use->loc, X_PP_MACRO_ARGUMENTS, "too many actual parameters for macro '%s'", m->name);
+        hfx_pp_error(pp, use->loc, X_PP_MACRO_ARGUMENTS, "too many actual parameters for macro '%s'", m->name);
     } else if (count < n && !empty_va) {
-        pp_error(pp, use->loc, X_PP_MACRO_ARGUMENTS, "not enough actual parameters for macro '%s'", m->name);
+        hfx_pp_error(pp, use->loc, X_PP_MACRO_ARGUMENTS, "not enough actual parameters for macro '%s'", m->name);
     }
     for (uint32_t i = count; i < n; i++) args[i].raw = pp->eof;
     *out = args;
@@ -505,9 +505,9 @@ static hfx_token *link_expansion(hfx_pp *pp, tok_vec *body, const pp_hideset *hs
     return first;
 }
 
-bool pp_expand_macro(hfx_pp *pp, hfx_token **rest, hfx_token *tok) {
+bool hfx_pp_expand_macro(hfx_pp *pp, hfx_token **rest, hfx_token *tok) {
     if (tok->kind != TK_IDENT || (tok->flags & TF_NOEXPAND)) return false;
-    pp_macro *m = pp_find_macro(pp, tok->text);
+    pp_macro *m = hfx_pp_find_macro(pp, tok->text);
     if (!m) return false;
     if (over_budget(pp, tok)) return false;
     if (hs_contains(pp, tok->hideset, m->name)) {
@@ -523,7 +523,7 @@ bool pp_expand_macro(hfx_pp *pp, hfx_token **rest, hfx_token *tok) {
     if (m->function_like && !is_punct(tok->next, P_LPAREN)) return false;
     if (hs_length(tok->hideset) >= PP_MAX_EXPANSION_DEPTH) {
         if (!pp->runaway_reported)
-            pp_error(pp, tok->loc, X_PP_ERROR, "macro expansion of '%s' nested too deeply", m->name);
+            hfx_pp_error(pp, tok->loc, X_PP_ERROR, "macro expansion of '%s' nested too deeply", m->name);
         pp->runaway_reported = true;
         return false;
     }
@@ -548,14 +548,14 @@ bool pp_expand_macro(hfx_pp *pp, hfx_token **rest, hfx_token *tok) {
     return true;
 }
 
-hfx_token *pp_expand_all(hfx_pp *pp, hfx_token *list) {
+hfx_token *hfx_pp_expand_all(hfx_pp *pp, hfx_token *list) {
     hfx_token head = {0}, *cur = &head;
     for (hfx_token *tok = list;;) {
         if (tok->kind == TK_EOF) {
             cur->next = tok;
             break;
         }
-        if (pp_expand_macro(pp, &tok, tok)) continue;
+        if (hfx_pp_expand_macro(pp, &tok, tok)) continue;
         cur = cur->next = tok;
         tok = tok->next;
     }

@@ -11,7 +11,7 @@
 
 typedef sbuf text_buf;
 
-static void put(text_buf *b, const char *s, size_t n) { sb_putn(b, s, n); }
+static void put(text_buf *b, const char *s, size_t n) { hfx_sb_putn(b, s, n); }
 static void put_str(text_buf *b, const char *s) { put(b, s, strlen(s)); }
 
 static bool is_word_char(char c) {
@@ -62,5 +62,5 @@ char *hfx_tokens_to_text(const hfx_diags *d, const hfx_token *t) {
         put(&b, t->text, t->len);
     }
     put(&b, "\n", 1);
-    return sb_take(&b);
+    return hfx_sb_take(&b);
 }

@@ -14,11 +14,11 @@ static const hfx_type *flat_type(ir_ctx *c, const hfx_type *t) {
 }
 
 static ir_expr *int_const(ir_ctx *c, uint32_t v, hfx_loc loc) {
-    return ir_const_scalar(c, hfx_type_scalar(c->types, B_INT), v, loc);
+    return hfx_ir_const_scalar(c, hfx_type_scalar(c->types, B_INT), v, loc);
 }
 
 static ir_expr *binary(ir_ctx *c, hfx_op op, ir_expr *x, ir_expr *y) {
-    ir_expr *r = ir_new_expr(c, IE_BINARY, x->type, x->loc, 2);
+    ir_expr *r = hfx_ir_new_expr(c, IE_BINARY, x->type, x->loc, 2);
     r->op = op;
     r->a[0] = x;
     r->a[1] = y;
@@ -31,8 +31,8 @@ static void flatten_index(ir_ctx *c, ir_expr *e) {
     if (inner->kind != IE_INDEX || inner->type->kind != TY_ARRAY || inner->a[0]->type->kind != TY_ARRAY) return;
     ir_expr *i = inner->a[1], *j = e->a[1];
     const hfx_type *it = hfx_type_scalar(c->types, B_INT);
-    if (i->type != it) { ir_expr *cv = ir_new_expr(c, IE_CONVERT, it, i->loc, 1); cv->a[0] = i; i = cv; }
-    if (j->type != it) { ir_expr *cv = ir_new_expr(c, IE_CONVERT, it, j->loc, 1); cv->a[0] = j; j = cv; }
+    if (i->type != it) { ir_expr *cv = hfx_ir_new_expr(c, IE_CONVERT, it, i->loc, 1); cv->a[0] = i; i = cv; }
+    if (j->type != it) { ir_expr *cv = hfx_ir_new_expr(c, IE_CONVERT, it, j->loc, 1); cv->a[0] = j; j = cv; }
     e->a[0] = inner->a[0];
     e->a[1] = binary(c, OP_ADD, binary(c, OP_MUL, i, int_const(c, inner->type->array_len, e->loc)), j);
 }
@@ -41,7 +41,7 @@ static void flatten_index(ir_ctx *c, ir_expr *e) {
 static void splice_construct(ir_ctx *c, ir_expr **slot, int *bad) {
     ir_expr *e = *slot;
     const hfx_type *ft = flat_type(c, e->type);
-    ir_expr *r = ir_new_expr(c, IE_CONSTRUCT, ft, e->loc, ft->array_len);
+    ir_expr *r = hfx_ir_new_expr(c, IE_CONSTRUCT, ft, e->loc, ft->array_len);
     uint32_t k = 0;
     for (uint32_t i = 0; i < e->n; i++) {
         ir_expr *part = e->a[i];
@@ -80,7 +80,7 @@ static void flatten_decls(ir_ctx *c, ir_stmt *s) {
     flatten_decls(c, s->else_s);
 }
 
-void ir_pass_arrays(ir_ctx *c, ir_shader *sh) {
+void hfx_ir_pass_arrays(ir_ctx *c, ir_shader *sh) {
     if (!hfx_types_nested_arrays(c->types)) return; /* no such type, nothing to flatten or report */
     int bad = 0;
     for (uint32_t i = 0; i < sh->global_count; i++) {
@@ -91,7 +91,7 @@ void ir_pass_arrays(ir_ctx *c, ir_shader *sh) {
                       "'%s': a parameter that is an array of arrays is not supported", v->name);
             continue;
         }
-        ir_walk_expr(c, &v->init, flatten_expr, &bad);
+        hfx_ir_walk_expr(c, &v->init, flatten_expr, &bad);
         v->type = flat_type(c, v->type);
     }
     for (uint32_t i = 0; i < sh->func_count; i++) {
@@ -99,7 +99,7 @@ void ir_pass_arrays(ir_ctx *c, ir_shader *sh) {
         for (uint32_t k = 0; k < f->param_count; k++) /* float f(float a[2][2]): a float[4] parameter */
             if (nested(f->params[k]->type)) f->params[k]->type = flat_type(c, f->params[k]->type);
         flatten_decls(c, sh->funcs[i]->body);
-        ir_walk_stmt_exprs(c, sh->funcs[i]->body, flatten_expr, &bad);
-        ir_walk_stmt_exprs(c, sh->funcs[i]->body, check_left, &bad);
+        hfx_ir_walk_stmt_exprs(c, sh->funcs[i]->body, flatten_expr, &bad);
+        hfx_ir_walk_stmt_exprs(c, sh->funcs[i]->body, check_left, &bad);
     }
 }

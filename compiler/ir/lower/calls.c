@@ -36,7 +36,7 @@ typedef struct param_writes { const ir_func *fn; uint64_t mask; } param_writes;
 
 /* Sets the bit of the parameter that the l-value e writes into, if it is one. */
 static void mark_written(param_writes *w, const ir_expr *e) {
-    const ir_var *v = ir_lvalue_root(e);
+    const ir_var *v = hfx_ir_lvalue_root(e);
     if (!v) return;
     for (uint32_t i = 0; i < w->fn->param_count && i < 64; i++)
         if (w->fn->params[i] == v) w->mask |= (uint64_t)1 << i;
@@ -51,7 +51,7 @@ static void note_write(ir_ctx *c, ir_expr **slot, void *data) {
     if (e->kind == IE_CALL) /* passed on as an out argument */
         for (uint32_t i = 0; i < e->n && i < e->fn->param_count; i++)
             if (e->fn->params[i]->mods & MOD_OUT) mark_written(w, e->a[i]);
-    if (e->kind == IE_INTRIN && ir_has_side_effects(e)) /* sincos, modf, frexp write their later arguments */
+    if (e->kind == IE_INTRIN && hfx_ir_has_side_effects(e)) /* sincos, modf, frexp write their later arguments */
         for (uint32_t i = 1; i < e->n; i++) mark_written(w, e->a[i]);
 }
 
@@ -63,7 +63,7 @@ static uint64_t written_mask(ir_ctx *c, specialiser *sp, const ir_func *f) {
     for (uint32_t i = 0; i < f->param_count && i < 64; i++)
         if (bindable_param(f->params[i])) bindable |= (uint64_t)1 << i;
     param_writes w = {f, 0};
-    if (bindable) ir_walk_stmt_exprs(c, f->body, note_write, &w);
+    if (bindable) hfx_ir_walk_stmt_exprs(c, f->body, note_write, &w);
     uint64_t mask = w.mask & bindable;
     if (HFX_ARENA_GROW(c->arena, sp->writes, sp->write_count, sp->write_cap, 16))
         sp->writes[sp->write_count++] = (writes){f, mask};
@@ -73,7 +73,7 @@ static uint64_t written_mask(ir_ctx *c, specialiser *sp, const ir_func *f) {
 /* Argument i can be bound: a constant for an `in` numeric parameter the callee never writes. */
 static bool bindable(ir_ctx *c, specialiser *sp, const ir_func *f, const ir_expr *call, uint32_t i) {
     const ir_var *p = f->params[i];
-    return ir_is_const(call->a[i]) && bindable_param(p) && hfx_type_equal(call->a[i]->type, p->type) &&
+    return hfx_ir_is_const(call->a[i]) && bindable_param(p) && hfx_type_equal(call->a[i]->type, p->type) &&
            !(written_mask(c, sp, f) & ((uint64_t)1 << i));
 }
 
@@ -114,8 +114,8 @@ static void remap_var(ir_ctx *c, ir_expr **slot, void *data) {
     const remap *r = data;
     if (e->kind == IE_VAR) {
         ir_var *v = mapped(r->map, e->var);
-        const ir_expr *value = ir_var_map_get(&r->bound, v);
-        if (value) *slot = ir_clone_expr(c, value);
+        const ir_expr *value = hfx_ir_var_map_get(&r->bound, v);
+        if (value) *slot = hfx_ir_clone_expr(c, value);
         else e->var = v;
     }
 }
@@ -126,8 +126,8 @@ static ir_stmt *copy_stmt(ir_ctx *c, var_map *m, const ir_stmt *s) {
     if (!n) return NULL;
     *n = *s;
     if (s->kind == IS_DECL) n->var = copy_var(c, m, s->var);
-    n->expr = ir_clone_expr(c, s->expr);
-    n->step = ir_clone_expr(c, s->step);
+    n->expr = hfx_ir_clone_expr(c, s->expr);
+    n->step = hfx_ir_clone_expr(c, s->step);
     n->init = copy_stmt(c, m, s->init);
     n->then_s = copy_stmt(c, m, s->then_s);
     n->else_s = copy_stmt(c, m, s->else_s);
@@ -151,10 +151,10 @@ static ir_func *copy_func(ir_ctx *c, specialiser *sp, ir_func *f, const ir_expr 
     for (uint32_t i = 0; i < f->param_count; i++) {
         ir_var *p = copy_var(c, &m, f->params[i]);
         if (!bind[i]) n->params[n->param_count++] = p;
-        else if (!ir_var_map_put(c, &r.bound, p, call->a[i])) return NULL;
+        else if (!hfx_ir_var_map_put(c, &r.bound, p, call->a[i])) return NULL;
     }
     n->body = copy_stmt(c, &m, f->body);
-    ir_walk_stmt_exprs(c, n->body, remap_var, &r);
+    hfx_ir_walk_stmt_exprs(c, n->body, remap_var, &r);
     return n;
 }
 
@@ -230,7 +230,7 @@ static bool round_of(ir_ctx *c, specialiser *sp) {
     for (uint32_t i = 0; i < n; i++) {
         if (known_call_free(sp, funcs[i])) continue;
         sp->calls_seen = 0;
-        ir_walk_stmt_exprs(c, funcs[i]->body, specialise_call, sp);
+        hfx_ir_walk_stmt_exprs(c, funcs[i]->body, specialise_call, sp);
         if (!sp->calls_seen && HFX_ARENA_GROW(c->arena, sp->call_free, sp->call_free_count, sp->call_free_cap, 8))
             sp->call_free[sp->call_free_count++] = funcs[i];
     }
@@ -239,9 +239,9 @@ static bool round_of(ir_ctx *c, specialiser *sp) {
 
 /* Rounds until no call changes: a bound parameter folds, which can make the copy's own calls'
  * arguments constant. */
-void ir_pass_calls(ir_ctx *c, ir_shader *sh) {
+void hfx_ir_pass_calls(ir_ctx *c, ir_shader *sh) {
     specialiser *sp = HFX_NEW(c->arena, specialiser);
     if (!sp) return;
     sp->sh = sh;
-    for (int round = 0; round < 8 && round_of(c, sp); round++) ir_pass_fold(c, sh);
+    for (int round = 0; round < 8 && round_of(c, sp); round++) hfx_ir_pass_fold(c, sh);
 }

@@ -35,8 +35,8 @@ static ir_stmt *simplify(ir_ctx *c, ir_stmt *s, bool in_switch) {
     case IS_IF:
         s->then_s = simplify(c, s->then_s, false);
         s->else_s = simplify(c, s->else_s, false);
-        if (ir_is_const(s->expr) && !ir_has_side_effects(s->expr)) {
-            ir_stmt *taken = ir_const_truth(s->expr) ? s->then_s : s->else_s;
+        if (hfx_ir_is_const(s->expr) && !hfx_ir_has_side_effects(s->expr)) {
+            ir_stmt *taken = hfx_ir_const_truth(s->expr) ? s->then_s : s->else_s;
             return taken ? taken : empty_block(c, s->loc);
         }
         if (!s->then_s) s->then_s = empty_block(c, s->loc);
@@ -44,7 +44,7 @@ static ir_stmt *simplify(ir_ctx *c, ir_stmt *s, bool in_switch) {
     case IS_WHILE: case IS_FOR:
         s->then_s = simplify(c, s->then_s, false);
         if (!s->then_s) s->then_s = empty_block(c, s->loc);
-        if (s->expr && ir_is_const(s->expr) && !ir_const_truth(s->expr))
+        if (s->expr && hfx_ir_is_const(s->expr) && !hfx_ir_const_truth(s->expr))
             return s->kind == IS_FOR && s->init ? s->init : empty_block(c, s->loc);
         return s;
     case IS_DO:
@@ -71,17 +71,17 @@ static void mark_call(ir_ctx *c, ir_expr **slot, void *data) {
     if ((*slot)->kind == IE_CALL) mark(data, (*slot)->fn);
 }
 
-void ir_pass_dce(ir_ctx *c, ir_shader *sh) {
+void hfx_ir_pass_dce(ir_ctx *c, ir_shader *sh) {
     for (uint32_t i = 0; i < sh->func_count; i++) simplify_block(c, sh->funcs[i]->body, false);
     reach r = {sh, HFX_NEW_ARRAY(c->arena, bool, sh->func_count + 1), HFX_NEW_ARRAY(c->arena, ir_func *, sh->func_count + 1), 0};
     mark(&r, sh->entry);
     if (!r.count) r.stack[r.count++] = sh->entry; /* not in the list: walked all the same */
     while (r.count) {
         ir_func *f = r.stack[--r.count];
-        ir_walk_stmt_exprs(c, f->body, mark_call, &r);
+        hfx_ir_walk_stmt_exprs(c, f->body, mark_call, &r);
     }
     for (uint32_t i = 0; i < sh->global_count; i++) /* static initialisers cannot call, but be safe */
-        ir_walk_expr(c, &sh->globals[i]->init, mark_call, &r);
+        hfx_ir_walk_expr(c, &sh->globals[i]->init, mark_call, &r);
     uint32_t kept = 0;
     for (uint32_t i = 0; i < sh->func_count; i++)
         if (r.reached[i]) sh->funcs[kept++] = sh->funcs[i];

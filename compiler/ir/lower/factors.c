@@ -50,12 +50,12 @@ static void add(factors *fs, group *g, ir_expr *e) {
 
 static void collect_scalar(factors *fs, ir_expr *e) {
     if (is_product(e) && e->type->kind == TY_SCALAR) {
-        if (!ir_pre_only(fs->c, e)) fs->cost++;
+        if (!hfx_ir_pre_only(fs->c, e)) fs->cost++;
         collect_scalar(fs, e->a[0]);
         collect_scalar(fs, e->a[1]);
         return;
     }
-    add(fs, ir_pre_only(fs->c, e) ? &fs->uni_scalars : &fs->scalars, e);
+    add(fs, hfx_ir_pre_only(fs->c, e) ? &fs->uni_scalars : &fs->scalars, e);
 }
 
 /* Walks a vector product down to its factors; scalars come out of their splats. */
@@ -65,19 +65,19 @@ static void collect(factors *fs, ir_expr *e) {
     if (s) {
         collect_scalar(fs, s);
     } else if (equal_components(e)) {
-        add(fs, &fs->uni_scalars, ir_const_scalar(c, hfx_type_scalar(c->types, e->type->base), e->cval[0], e->loc));
+        add(fs, &fs->uni_scalars, hfx_ir_const_scalar(c, hfx_type_scalar(c->types, e->type->base), e->cval[0], e->loc));
     } else if (is_product(e) && e->type->kind == TY_VECTOR) {
-        if (!ir_pre_only(c, e)) fs->cost += e->type->rows * e->type->cols;
+        if (!hfx_ir_pre_only(c, e)) fs->cost += e->type->rows * e->type->cols;
         collect(fs, e->a[0]);
         collect(fs, e->a[1]);
     } else {
-        add(fs, ir_pre_only(fs->c, e) ? &fs->uni_vectors : &fs->vectors, e);
+        add(fs, hfx_ir_pre_only(fs->c, e) ? &fs->uni_vectors : &fs->vectors, e);
     }
 }
 
 /* acc * g's factors, left to right (acc NULL: from the first factor). */
 static ir_expr *product_of(ir_ctx *c, const group *g, ir_expr *acc, const hfx_type *t) {
-    for (unsigned i = 0; i < g->n; i++) acc = acc ? ir_new_binary(c, OP_MUL, t, acc, g->f[i]) : g->f[i];
+    for (unsigned i = 0; i < g->n; i++) acc = acc ? hfx_ir_new_binary(c, OP_MUL, t, acc, g->f[i]) : g->f[i];
     return acc;
 }
 
@@ -93,7 +93,7 @@ static unsigned reordered_cost(const factors *fs, unsigned n) {
 static void reorder(ir_ctx *c, ir_expr **slot, void *data) {
     (void)data;
     ir_expr *e = *slot;
-    if (!is_product(e) || e->type->kind != TY_VECTOR || ir_has_side_effects(e)) return;
+    if (!is_product(e) || e->type->kind != TY_VECTOR || hfx_ir_has_side_effects(e)) return;
     factors fs = {.c = c, .ok = true};
     collect(&fs, e);
     unsigned n = e->type->rows * e->type->cols;
@@ -101,14 +101,14 @@ static void reorder(ir_ctx *c, ir_expr **slot, void *data) {
     const hfx_type *scalar = hfx_type_scalar(c->types, e->type->base);
     ir_expr *uni = product_of(c, &fs.uni_scalars, NULL, scalar), *s = NULL;
     if (uni && !fs.uni_vectors.n) s = uni, uni = NULL; /* all scalars: one scalar product */
-    else if (uni) uni = ir_new_convert(c, e->type, uni);
+    else if (uni) uni = hfx_ir_new_convert(c, e->type, uni);
     uni = product_of(c, &fs.uni_vectors, uni, e->type);
     s = product_of(c, &fs.scalars, s, scalar);
-    ir_expr *r = s ? ir_new_convert(c, e->type, s) : NULL;
-    if (uni) r = r ? ir_new_binary(c, OP_MUL, e->type, r, uni) : uni;
+    ir_expr *r = s ? hfx_ir_new_convert(c, e->type, s) : NULL;
+    if (uni) r = r ? hfx_ir_new_binary(c, OP_MUL, e->type, r, uni) : uni;
     *slot = product_of(c, &fs.vectors, r, e->type);
 }
 
-void ir_pass_factors(ir_ctx *c, ir_shader *sh) {
-    for (uint32_t i = 0; i < sh->func_count; i++) ir_walk_stmt_exprs(c, sh->funcs[i]->body, reorder, NULL);
+void hfx_ir_pass_factors(ir_ctx *c, ir_shader *sh) {
+    for (uint32_t i = 0; i < sh->func_count; i++) hfx_ir_walk_stmt_exprs(c, sh->funcs[i]->body, reorder, NULL);
 }

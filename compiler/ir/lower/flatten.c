@@ -23,7 +23,7 @@ static bool pure(const ir_expr *e) {
     if (!e) return true;
     if (e->kind == IE_CALL || e->kind == IE_ASSIGN || e->kind == IE_COMMA) return false;
     if (e->kind == IE_UNARY && e->op != OP_NEG && e->op != OP_POS && e->op != OP_NOT && e->op != OP_BITNOT) return false;
-    if ((e->kind == IE_INTRIN && !ir_intrinsic_movable(e->intrin)) || ir_integer_division(e))
+    if ((e->kind == IE_INTRIN && !hfx_ir_intrinsic_movable(e->intrin)) || hfx_ir_integer_division(e))
         return false; /* an integer division the branch guards may trap */
     for (uint32_t i = 0; i < e->n; i++)
         if (!pure(e->a[i])) return false;
@@ -48,11 +48,11 @@ static void flatten_if(ir_ctx *c, ir_stmt *s) {
     if (!then_a || (s->else_s && (!else_a || else_a->a[0]->var != then_a->a[0]->var))) return;
     ir_expr *target = then_a->a[0], *other = else_a ? else_a->a[1] : target;
     if (nodes(then_a->a[1], MAX_NODES + 1) + nodes(other, MAX_NODES + 1) > MAX_NODES) return;
-    ir_expr *sel = ir_new_expr(c, IE_SELECT, target->type, s->loc, 3);
+    ir_expr *sel = hfx_ir_new_expr(c, IE_SELECT, target->type, s->loc, 3);
     sel->a[0] = s->expr;
     sel->a[1] = then_a->a[1];
-    sel->a[2] = else_a ? other : ir_clone_expr(c, target);
-    ir_expr *as = ir_new_expr(c, IE_ASSIGN, target->type, s->loc, 2);
+    sel->a[2] = else_a ? other : hfx_ir_clone_expr(c, target);
+    ir_expr *as = hfx_ir_new_expr(c, IE_ASSIGN, target->type, s->loc, 2);
     as->op = OP_NONE;
     as->a[0] = target;
     as->a[1] = sel;
@@ -70,6 +70,6 @@ static void flatten_stmt(ir_ctx *c, ir_stmt *s) {
     if (s->kind == IS_IF) flatten_if(c, s);
 }
 
-void ir_pass_flatten(ir_ctx *c, ir_shader *sh) {
+void hfx_ir_pass_flatten(ir_ctx *c, ir_shader *sh) {
     for (uint32_t i = 0; i < sh->func_count; i++) flatten_stmt(c, sh->funcs[i]->body);
 }

@@ -1,7 +1,7 @@
 /* fold.c: constant folding of the IR with common/eval, the evaluator every phase shares (ints
  * wrap at 32 bits and divide toward zero, floats are single precision, conversions truncate).
  * In shader code intrinsics are left alone (the GPU computes them as the shader would); a value
- * outside shader code (ir_fold_value: a state value) folds them too, as fxc does, since nothing
+ * outside shader code (hfx_ir_fold_value: a state value) folds them too, as fxc does, since nothing
  * but the CPU ever computes it. The one tree walk over constant expressions. */
 #include <math.h>
 
@@ -17,18 +17,18 @@ static unsigned comps(const hfx_type *t) { return hfx_type_is_numeric(t) ? hfx_t
 /* any_value: a value outside shader code, which no GLSL literal has to spell. */
 static ir_expr *fold_binary(ir_ctx *c, ir_expr *e, bool any_value) {
     ir_expr *x = e->a[0], *y = e->a[1];
-    if (!ir_is_const(x) || !ir_is_const(y)) {
+    if (!hfx_ir_is_const(x) || !hfx_ir_is_const(y)) {
         /* false && e, true || e: the right side matters only for its effects */
-        if ((e->op == OP_AND || e->op == OP_OR) && ir_is_const(x) && comps(x->type) == 1 &&
-            ir_const_truth(x) == (e->op == OP_OR) && !ir_has_side_effects(y))
-            return ir_const_scalar(c, e->type, e->op == OP_OR, e->loc);
+        if ((e->op == OP_AND || e->op == OP_OR) && hfx_ir_is_const(x) && comps(x->type) == 1 &&
+            hfx_ir_const_truth(x) == (e->op == OP_OR) && !hfx_ir_has_side_effects(y))
+            return hfx_ir_const_scalar(c, e->type, e->op == OP_OR, e->loc);
         return e;
     }
     unsigned n = comps(e->type), nx = comps(x->type), ny = comps(y->type);
     if (!n || n > 16 || !nx || !ny) return e;
     hfx_ev_op op;
     if (!hfx_op_ev(e->op, &op)) return e;
-    ir_expr *r = ir_new_expr(c, IE_CONST, e->type, e->loc, 0);
+    ir_expr *r = hfx_ir_new_expr(c, IE_CONST, e->type, e->loc, 0);
     hfx_ev_base b = ev(x->type), rb = hfx_ev_result_base(op, b);
     for (unsigned i = 0; i < n; i++) {
         double v;
@@ -42,10 +42,10 @@ static ir_expr *fold_binary(ir_ctx *c, ir_expr *e, bool any_value) {
 static ir_expr *fold_unary(ir_ctx *c, ir_expr *e) {
     ir_expr *x = e->a[0];
     hfx_ev_op op;
-    if (!ir_is_const(x) || (e->op != OP_NEG && e->op != OP_NOT && e->op != OP_BITNOT) || !hfx_op_ev(e->op, &op)) return e;
+    if (!hfx_ir_is_const(x) || (e->op != OP_NEG && e->op != OP_NOT && e->op != OP_BITNOT) || !hfx_op_ev(e->op, &op)) return e;
     unsigned n = comps(e->type);
     if (!n || n > 16) return e;
-    ir_expr *r = ir_new_expr(c, IE_CONST, e->type, e->loc, 0);
+    ir_expr *r = hfx_ir_new_expr(c, IE_CONST, e->type, e->loc, 0);
     hfx_ev_base b = ev(x->type);
     for (unsigned i = 0; i < n; i++) {
         double v;
@@ -66,9 +66,9 @@ static double convert_comp(const ir_expr *x, const hfx_type *to, unsigned i) {
 static ir_expr *fold_convert(ir_ctx *c, ir_expr *e) {
     ir_expr *x = e->a[0];
     unsigned n = comps(e->type);
-    if (!ir_is_const(x) || !n || n > 16 || !comps(x->type)) return e;
+    if (!hfx_ir_is_const(x) || !n || n > 16 || !comps(x->type)) return e;
     if (comps(x->type) != 1 && comps(x->type) < n) return e;
-    ir_expr *r = ir_new_expr(c, IE_CONST, e->type, e->loc, 0);
+    ir_expr *r = hfx_ir_new_expr(c, IE_CONST, e->type, e->loc, 0);
     for (unsigned i = 0; i < n; i++) r->cval[i] = hfx_ev_convert(ev(x->type), ev(e->type), convert_comp(x, e->type, i));
     return r;
 }
@@ -77,8 +77,8 @@ static ir_expr *fold_construct(ir_ctx *c, ir_expr *e) {
     unsigned n = comps(e->type), k = 0;
     if (!n || n > 16) return e;
     for (uint32_t i = 0; i < e->n; i++)
-        if (!ir_is_const(e->a[i]) || !comps(e->a[i]->type)) return e;
-    ir_expr *r = ir_new_expr(c, IE_CONST, e->type, e->loc, 0);
+        if (!hfx_ir_is_const(e->a[i]) || !comps(e->a[i]->type)) return e;
+    ir_expr *r = hfx_ir_new_expr(c, IE_CONST, e->type, e->loc, 0);
     for (uint32_t i = 0; i < e->n; i++)
         for (unsigned j = 0; j < comps(e->a[i]->type) && k < 16; j++)
             r->cval[k++] = hfx_ev_convert(ev(e->a[i]->type), ev(e->type), e->a[i]->cval[j]);
@@ -90,17 +90,17 @@ static ir_expr *fold_construct(ir_ctx *c, ir_expr *e) {
 
 static ir_expr *fold_swizzle(ir_ctx *c, ir_expr *e) {
     ir_expr *x = e->a[0];
-    if (!ir_is_const(x)) return e;
-    ir_expr *r = ir_new_expr(c, IE_CONST, e->type, e->loc, 0);
+    if (!hfx_ir_is_const(x)) return e;
+    ir_expr *r = hfx_ir_new_expr(c, IE_CONST, e->type, e->loc, 0);
     for (unsigned i = 0; i < e->comp_count && i < 16; i++) r->cval[i] = x->cval[e->comps[i] < 16 ? e->comps[i] : 0];
     return r;
 }
 
 static ir_expr *fold_select(ir_ctx *c, ir_expr *e) {
     ir_expr *cond = e->a[0];
-    if (!ir_is_const(cond) || comps(cond->type) != 1) return e;
-    ir_expr *other = ir_const_truth(cond) ? e->a[2] : e->a[1];
-    return ir_has_side_effects(other) ? e : ir_const_truth(cond) ? e->a[1] : e->a[2];
+    if (!hfx_ir_is_const(cond) || comps(cond->type) != 1) return e;
+    ir_expr *other = hfx_ir_const_truth(cond) ? e->a[2] : e->a[1];
+    return hfx_ir_has_side_effects(other) ? e : hfx_ir_const_truth(cond) ? e->a[1] : e->a[2];
 }
 
 static void fold_one(ir_ctx *c, ir_expr **slot, void *data) {
@@ -125,7 +125,7 @@ static ir_expr *fold_call(ir_ctx *c, ir_expr *e) {
     hfx_ev_value args[3], r;
     hfx_ev_base base = HFX_EV_BOOL; /* the evaluator takes one base: the largest, as BINARY's */
     for (uint32_t i = 0; i < e->n; i++) {
-        if (!ir_is_const(e->a[i]) || !comps(e->a[i]->type) || comps(e->a[i]->type) > 16) return e;
+        if (!hfx_ir_is_const(e->a[i]) || !comps(e->a[i]->type) || comps(e->a[i]->type) > 16) return e;
         if (ev(e->a[i]->type) > base) base = ev(e->a[i]->type);
     }
     for (uint32_t i = 0; i < e->n; i++) {
@@ -134,7 +134,7 @@ static ir_expr *fold_call(ir_ctx *c, ir_expr *e) {
         for (unsigned j = 0; j < args[i].n; j++) args[i].c[j] = hfx_ev_convert(ev(e->a[i]->type), base, e->a[i]->cval[j]);
     }
     if (!hfx_ev_call(info->fold, args, e->n, &r) || (r.n != n && r.n != 1)) return e;
-    ir_expr *out = ir_new_expr(c, IE_CONST, e->type, e->loc, 0);
+    ir_expr *out = hfx_ir_new_expr(c, IE_CONST, e->type, e->loc, 0);
     for (unsigned i = 0; i < n; i++) out->cval[i] = hfx_ev_convert(r.base, ev(e->type), r.c[r.n == 1 ? 0 : i]);
     return out;
 }
@@ -144,9 +144,9 @@ static void fold_value_one(ir_ctx *c, ir_expr **slot, void *data) {
     else fold_one(c, slot, data);
 }
 
-void ir_fold_value(ir_ctx *c, ir_expr **slot) {
+void hfx_ir_fold_value(ir_ctx *c, ir_expr **slot) {
     static const bool any_value = true; /* fold_one's data: set for values */
-    ir_walk_expr(c, slot, fold_value_one, (void *)&any_value);
+    hfx_ir_walk_expr(c, slot, fold_value_one, (void *)&any_value);
 }
 
 static bool is_const_var(const ir_var *v) {
@@ -162,8 +162,8 @@ typedef struct consts { ir_var_map values; } consts;
 static bool find_const_locals(ir_ctx *c, consts *k, ir_stmt *s) {
     if (!s) return false;
     bool found = false;
-    if (s->kind == IS_DECL && ir_is_const(s->expr) && is_const_var(s->var))
-        found = ir_var_map_put(c, &k->values, s->var, s->expr);
+    if (s->kind == IS_DECL && hfx_ir_is_const(s->expr) && is_const_var(s->var))
+        found = hfx_ir_var_map_put(c, &k->values, s->var, s->expr);
     found |= find_const_locals(c, k, s->init);
     for (uint32_t i = 0; i < s->count; i++) found |= find_const_locals(c, k, s->body[i]);
     found |= find_const_locals(c, k, s->then_s);
@@ -173,26 +173,26 @@ static bool find_const_locals(ir_ctx *c, consts *k, ir_stmt *s) {
 
 static void propagate(ir_ctx *c, ir_expr **slot, void *data) {
     ir_expr *e = *slot;
-    const ir_expr *value = e->kind == IE_VAR ? ir_var_map_get(&((consts *)data)->values, e->var) : NULL;
-    if (value) *slot = ir_clone_expr(c, value);
+    const ir_expr *value = e->kind == IE_VAR ? hfx_ir_var_map_get(&((consts *)data)->values, e->var) : NULL;
+    if (value) *slot = hfx_ir_clone_expr(c, value);
     else fold_one(c, slot, NULL);
 }
 
-void ir_pass_fold(ir_ctx *c, ir_shader *sh) {
+void hfx_ir_pass_fold(ir_ctx *c, ir_shader *sh) {
     bool const_globals = false;
     consts k = {{0}};
     for (uint32_t i = 0; i < sh->global_count; i++) {
         ir_var *g = sh->globals[i];
-        ir_walk_expr(c, &g->init, fold_one, NULL);
-        if (ir_is_const(g->init) && is_const_var(g)) const_globals |= ir_var_map_put(c, &k.values, g, g->init);
+        hfx_ir_walk_expr(c, &g->init, fold_one, NULL);
+        if (hfx_ir_is_const(g->init) && is_const_var(g)) const_globals |= hfx_ir_var_map_put(c, &k.values, g, g->init);
     }
     /* constants flow into their uses (so `static const bool on = false; if (on)` dies), and
      * what they make constant folds in the same walk. Without a constant to propagate the walk
      * would only fold again what the first one left: nothing (the first walk went operands
      * first, so each node it kept had its final operands when it was tried). */
     for (uint32_t i = 0; i < sh->func_count; i++) {
-        ir_walk_stmt_exprs(c, sh->funcs[i]->body, fold_one, NULL);
+        hfx_ir_walk_stmt_exprs(c, sh->funcs[i]->body, fold_one, NULL);
         if (find_const_locals(c, &k, sh->funcs[i]->body) || const_globals)
-            ir_walk_stmt_exprs(c, sh->funcs[i]->body, propagate, &k);
+            hfx_ir_walk_stmt_exprs(c, sh->funcs[i]->body, propagate, &k);
     }
 }

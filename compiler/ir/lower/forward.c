@@ -23,8 +23,8 @@
 static bool simple_next(const ir_stmt *s) {
     if (s->kind != IS_EXPR && s->kind != IS_DECL && s->kind != IS_RETURN) return false;
     const ir_expr *e = s->expr;
-    if (e && s->kind == IS_EXPR && e->kind == IE_ASSIGN) return !ir_has_side_effects(e->a[0]) && !ir_has_side_effects(e->a[1]);
-    return !ir_has_side_effects(e);
+    if (e && s->kind == IS_EXPR && e->kind == IE_ASSIGN) return !hfx_ir_has_side_effects(e->a[0]) && !hfx_ir_has_side_effects(e->a[1]);
+    return !hfx_ir_has_side_effects(e);
 }
 
 /* Statement i of block b declares a local the next statement reads once and nothing else
@@ -32,15 +32,15 @@ static bool simple_next(const ir_stmt *s) {
 static bool substitute(ir_stmt *fn_body, ir_stmt *b, uint32_t i) {
     ir_stmt *d = b->body[i], *next = i + 1 < b->count ? b->body[i + 1] : NULL;
     if (d->kind != IS_DECL || !d->var || d->var->kind != IRV_LOCAL || d->var->hoisted || !d->expr || !next ||
-        !simple_next(next) || !hfx_type_is_numeric(d->var->type) || ir_has_side_effects(d->expr))
+        !simple_next(next) || !hfx_type_is_numeric(d->var->type) || hfx_ir_has_side_effects(d->expr))
         return false;
     ir_uses all = {d->var, false, 0, 0, NULL}, here = {d->var, false, 0, 0, NULL};
-    ir_count_uses(&here, next); /* first: most locals fail here, and the whole body costs more */
+    hfx_ir_count_uses(&here, next); /* first: most locals fail here, and the whole body costs more */
     if (here.reads != 1 || here.writes) return false;
-    ir_count_uses(&all, fn_body);
+    hfx_ir_count_uses(&all, fn_body);
     if (all.reads != 1 || all.writes) return false;
     *here.slot = d->expr;
-    ir_remove_stmt(b, i);
+    hfx_ir_remove_stmt(b, i);
     return true;
 }
 
@@ -62,7 +62,7 @@ static bool float_matrix(const ir_expr *e) {
 }
 
 static ir_expr *product(ir_ctx *c, ir_expr *a, ir_expr *b, const hfx_type *ty, hfx_loc loc) {
-    ir_expr *m = ir_new_expr(c, IE_INTRIN, ty, loc, 2);
+    ir_expr *m = hfx_ir_new_expr(c, IE_INTRIN, ty, loc, 2);
     m->intrin = HFX_INTR_MUL;
     m->a[0] = a;
     m->a[1] = b;
@@ -75,14 +75,14 @@ static void reassociate(ir_ctx *c, ir_expr **slot, void *data) {
     if (!is_mul(e) || e->type->kind != TY_VECTOR) return;
     ir_expr *in = e->a[0], *B = e->a[1];
     if (is_mul(in) && in->type->kind == TY_VECTOR && float_matrix(in->a[1]) && float_matrix(B) &&
-        in->a[0]->type->kind == TY_VECTOR && ir_pre_only(c, in->a[1]) && ir_pre_only(c, B)) {
+        in->a[0]->type->kind == TY_VECTOR && hfx_ir_pre_only(c, in->a[1]) && hfx_ir_pre_only(c, B)) {
         const hfx_type *ab = hfx_type_matrix(c->types, B_FLOAT, in->a[1]->type->rows, B->type->cols);
         if (ab) e->a[0] = in->a[0], e->a[1] = product(c, in->a[1], B, ab, e->loc);
         return;
     }
     in = e->a[1], B = e->a[0];
     if (is_mul(in) && in->type->kind == TY_VECTOR && float_matrix(in->a[0]) && float_matrix(B) &&
-        in->a[1]->type->kind == TY_VECTOR && ir_pre_only(c, in->a[0]) && ir_pre_only(c, B)) {
+        in->a[1]->type->kind == TY_VECTOR && hfx_ir_pre_only(c, in->a[0]) && hfx_ir_pre_only(c, B)) {
         const hfx_type *ba = hfx_type_matrix(c->types, B_FLOAT, B->type->rows, in->a[0]->type->cols);
         if (ba) e->a[0] = product(c, B, in->a[0], ba, e->loc), e->a[1] = in->a[1];
     }
@@ -101,7 +101,7 @@ static ir_stmt *decl_of(ir_stmt *s, const ir_var *v) {
 
 static bool never_written(ir_stmt *body, const ir_var *v) {
     ir_uses u = {v, false, 0, 0, NULL};
-    ir_count_uses(&u, body);
+    hfx_ir_count_uses(&u, body);
     return u.writes == 0;
 }
 
@@ -111,7 +111,7 @@ static bool unchanging(ir_stmt *body, const ir_expr *e) {
     if (e->kind == IE_VAR)
         return (e->var->kind == IRV_PARAM || e->var->kind == IRV_LOCAL || e->var->kind == IRV_UNIFORM) &&
                never_written(body, e->var);
-    if (e->kind == IE_CALL || ir_has_side_effects(e)) return false;
+    if (e->kind == IE_CALL || hfx_ir_has_side_effects(e)) return false;
     for (uint32_t i = 0; i < e->n; i++)
         if (!unchanging(body, e->a[i])) return false;
     return true;
@@ -120,7 +120,7 @@ static bool unchanging(ir_stmt *body, const ir_expr *e) {
 static bool has_constant_part(const ir_expr *y) {
     if (y->kind != IE_CONSTRUCT) return false;
     for (uint32_t i = 0; i < y->n; i++)
-        if (ir_is_const(y->a[i])) return true;
+        if (hfx_ir_is_const(y->a[i])) return true;
     return false;
 }
 
@@ -132,7 +132,7 @@ static const ir_expr *source_product(const ir_ctx *c, ir_stmt *body, const ir_ex
     const ir_expr *m = d ? d->expr : NULL;
     if (!m || !is_mul(m) || !never_written(body, x->var)) return NULL;
     const ir_expr *y = m->a[row ? 0 : 1], *A = m->a[row ? 1 : 0];
-    if (y->type != x->type || !float_matrix(A) || !ir_pre_only(c, A) || !has_constant_part(y) || !unchanging(body, y))
+    if (y->type != x->type || !float_matrix(A) || !hfx_ir_pre_only(c, A) || !has_constant_part(y) || !unchanging(body, y))
         return NULL;
     return m;
 }
@@ -142,21 +142,21 @@ static void from_source(ir_ctx *c, ir_expr **slot, void *data) {
     if (!is_mul(e) || e->type->kind != TY_VECTOR) return;
     bool row = e->a[0]->type->kind == TY_VECTOR;
     ir_expr *x = e->a[row ? 0 : 1], *B = e->a[row ? 1 : 0];
-    const ir_expr *m = float_matrix(B) && ir_pre_only(c, B) ? source_product(c, data, x, row) : NULL;
+    const ir_expr *m = float_matrix(B) && hfx_ir_pre_only(c, B) ? source_product(c, data, x, row) : NULL;
     if (!m) return;
     const ir_expr *A = m->a[row ? 1 : 0];
     const hfx_type *ab = row ? hfx_type_matrix(c->types, B_FLOAT, A->type->rows, B->type->cols)
                              : hfx_type_matrix(c->types, B_FLOAT, B->type->rows, A->type->cols);
     if (!ab) return;
-    ir_expr *y = ir_clone_expr(c, m->a[row ? 0 : 1]), *a = ir_clone_expr(c, A);
+    ir_expr *y = hfx_ir_clone_expr(c, m->a[row ? 0 : 1]), *a = hfx_ir_clone_expr(c, A);
     e->a[row ? 0 : 1] = y;
     e->a[row ? 1 : 0] = row ? product(c, a, B, ab, e->loc) : product(c, B, a, ab, e->loc);
 }
 
-void ir_pass_forward(ir_ctx *c, ir_shader *sh) {
+void hfx_ir_pass_forward(ir_ctx *c, ir_shader *sh) {
     for (uint32_t i = 0; i < sh->func_count; i++) {
         forward_block(sh->funcs[i]->body, sh->funcs[i]->body);
-        ir_walk_stmt_exprs(c, sh->funcs[i]->body, reassociate, NULL);
-        ir_walk_stmt_exprs(c, sh->funcs[i]->body, from_source, sh->funcs[i]->body);
+        hfx_ir_walk_stmt_exprs(c, sh->funcs[i]->body, reassociate, NULL);
+        hfx_ir_walk_stmt_exprs(c, sh->funcs[i]->body, from_source, sh->funcs[i]->body);
     }
 }

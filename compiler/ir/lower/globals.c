@@ -9,7 +9,7 @@
 typedef struct writes { bool copies; } writes;
 
 static void mark_written(ir_ctx *c, writes *w, const ir_expr *lv) {
-    ir_var *v = ir_lvalue_root(lv);
+    ir_var *v = hfx_ir_lvalue_root(lv);
     if (!v || v->kind != IRV_UNIFORM) return;
     w->copies = true;
     if (v->priv) return;
@@ -26,7 +26,7 @@ static void find_writes(ir_ctx *c, ir_expr **slot, void *data) {
     writes *w = data;
     ir_expr *e = *slot;
     for (uint32_t i = 0; i < e->n; i++) {
-        if (!ir_writes_operand(e, i)) continue;
+        if (!hfx_ir_writes_operand(e, i)) continue;
         const ir_expr *t = e->a[i];
         if (e->kind == IE_ASSIGN && t->kind == IE_CONSTRUCT) /* float4(a, b) = v: each argument */
             for (uint32_t k = 0; k < t->n; k++) mark_written(c, w, t->a[k]);
@@ -41,10 +41,10 @@ static void use_copies(ir_ctx *c, ir_expr **slot, void *data) {
 }
 
 /* The second walk only when some uniform is written: priv is set here and nowhere else. */
-void ir_pass_globals(ir_ctx *c, ir_shader *sh) {
+void hfx_ir_pass_globals(ir_ctx *c, ir_shader *sh) {
     writes w = {false};
-    for (uint32_t i = 0; i < sh->func_count; i++) ir_walk_stmt_exprs(c, sh->funcs[i]->body, find_writes, &w);
+    for (uint32_t i = 0; i < sh->func_count; i++) hfx_ir_walk_stmt_exprs(c, sh->funcs[i]->body, find_writes, &w);
     if (!w.copies) return;
-    for (uint32_t i = 0; i < sh->func_count; i++) ir_walk_stmt_exprs(c, sh->funcs[i]->body, use_copies, NULL);
-    for (uint32_t i = 0; i < sh->global_count; i++) ir_walk_expr(c, &sh->globals[i]->init, use_copies, NULL);
+    for (uint32_t i = 0; i < sh->func_count; i++) hfx_ir_walk_stmt_exprs(c, sh->funcs[i]->body, use_copies, NULL);
+    for (uint32_t i = 0; i < sh->global_count; i++) hfx_ir_walk_expr(c, &sh->globals[i]->init, use_copies, NULL);
 }

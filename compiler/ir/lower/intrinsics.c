@@ -26,9 +26,9 @@ static bool truncated_matrix(const ir_expr *e) {
 static ir_expr *pad(ir_ctx *c, ir_expr *v, unsigned n) {
     unsigned have = hfx_type_components(v->type);
     if (have == n) return v;
-    ir_expr *r = ir_new_expr(c, IE_CONSTRUCT, hfx_type_vector(c->types, v->type->base, n), v->loc, 1 + (n - have));
+    ir_expr *r = hfx_ir_new_expr(c, IE_CONSTRUCT, hfx_type_vector(c->types, v->type->base, n), v->loc, 1 + (n - have));
     r->a[0] = v;
-    for (unsigned i = 1; i <= n - have; i++) r->a[i] = ir_const_scalar(c, hfx_type_scalar(c->types, v->type->base), 0, v->loc);
+    for (unsigned i = 1; i <= n - have; i++) r->a[i] = hfx_ir_const_scalar(c, hfx_type_scalar(c->types, v->type->base), 0, v->loc);
     return r;
 }
 
@@ -36,7 +36,7 @@ static ir_expr *pad(ir_ctx *c, ir_expr *v, unsigned n) {
 static ir_expr *first(ir_ctx *c, ir_expr *v, const hfx_type *ty) {
     unsigned n = hfx_type_components(ty);
     if (hfx_type_components(v->type) == n) return v;
-    ir_expr *s = ir_new_expr(c, IE_SWIZZLE, ty, v->loc, 1);
+    ir_expr *s = hfx_ir_new_expr(c, IE_SWIZZLE, ty, v->loc, 1);
     s->a[0] = v;
     s->comp_count = (uint8_t)n;
     for (unsigned i = 0; i < n; i++) s->comps[i] = (uint8_t)i;
@@ -49,14 +49,14 @@ static void lower_mul(ir_ctx *c, ir_expr **slot, void *data) {
     ir_expr *a = e->a[0], *b = e->a[1];
     if (a->type->kind == TY_VECTOR && truncated_matrix(b) && a->type->cols == b->type->rows) {
         const hfx_type *m = b->a[0]->type;
-        ir_expr *r = ir_new_expr(c, IE_INTRIN, hfx_type_vector(c->types, e->type->base, m->cols), e->loc, 2);
+        ir_expr *r = hfx_ir_new_expr(c, IE_INTRIN, hfx_type_vector(c->types, e->type->base, m->cols), e->loc, 2);
         r->intrin = e->intrin;
         r->a[0] = pad(c, a, m->rows);
         r->a[1] = b->a[0];
         *slot = first(c, r, e->type);
     } else if (b->type->kind == TY_VECTOR && truncated_matrix(a) && b->type->cols == a->type->cols) {
         const hfx_type *m = a->a[0]->type;
-        ir_expr *r = ir_new_expr(c, IE_INTRIN, hfx_type_vector(c->types, e->type->base, m->rows), e->loc, 2);
+        ir_expr *r = hfx_ir_new_expr(c, IE_INTRIN, hfx_type_vector(c->types, e->type->base, m->rows), e->loc, 2);
         r->intrin = e->intrin;
         r->a[0] = a->a[0];
         r->a[1] = pad(c, b, m->cols);
@@ -67,7 +67,7 @@ static void lower_mul(ir_ctx *c, ir_expr **slot, void *data) {
 static bool componentwise_on_matrix(const ir_expr *e) {
     if (lowering_of(e) != LOWER_ROWS || e->type->kind != TY_MATRIX || e->type->rows < 2 || e->type->cols < 2) return false;
     for (uint32_t i = 0; i < e->n; i++)
-        if (!hfx_type_equal(e->a[i]->type, e->type) || ir_has_side_effects(e->a[i])) return false;
+        if (!hfx_type_equal(e->a[i]->type, e->type) || hfx_ir_has_side_effects(e->a[i])) return false;
     return true;
 }
 
@@ -75,18 +75,18 @@ static bool componentwise_on_matrix(const ir_expr *e) {
 static ir_expr *row_of(ir_ctx *c, ir_expr *m, unsigned r) {
     const hfx_type *row = hfx_type_vector(c->types, m->type->base, m->type->cols);
     if (m->kind == IE_CONVERT && hfx_type_components(m->a[0]->type) == 1) { /* a splatted scalar */
-        ir_expr *x = ir_new_expr(c, IE_CONVERT, row, m->loc, 1);
-        x->a[0] = r ? ir_clone_expr(c, m->a[0]) : m->a[0];
+        ir_expr *x = hfx_ir_new_expr(c, IE_CONVERT, row, m->loc, 1);
+        x->a[0] = r ? hfx_ir_clone_expr(c, m->a[0]) : m->a[0];
         return x;
     }
     if (m->kind == IE_CONST) {
-        ir_expr *x = ir_new_expr(c, IE_CONST, row, m->loc, 0);
+        ir_expr *x = hfx_ir_new_expr(c, IE_CONST, row, m->loc, 0);
         for (unsigned i = 0; i < row->cols; i++) x->cval[i] = m->cval[r * m->type->cols + i];
         return x;
     }
-    ir_expr *x = ir_new_expr(c, IE_INDEX, row, m->loc, 2);
-    x->a[0] = r ? ir_clone_expr(c, m) : m;
-    x->a[1] = ir_const_scalar(c, hfx_type_scalar(c->types, B_INT), r, m->loc);
+    ir_expr *x = hfx_ir_new_expr(c, IE_INDEX, row, m->loc, 2);
+    x->a[0] = r ? hfx_ir_clone_expr(c, m) : m;
+    x->a[1] = hfx_ir_const_scalar(c, hfx_type_scalar(c->types, B_INT), r, m->loc);
     return x;
 }
 
@@ -95,9 +95,9 @@ static void lower_matrix_componentwise(ir_ctx *c, ir_expr **slot, void *data) {
     ir_expr *e = *slot;
     if (!componentwise_on_matrix(e)) return;
     const hfx_type *row = hfx_type_vector(c->types, e->type->base, e->type->cols);
-    ir_expr *m = ir_new_expr(c, IE_CONSTRUCT, e->type, e->loc, e->type->rows);
+    ir_expr *m = hfx_ir_new_expr(c, IE_CONSTRUCT, e->type, e->loc, e->type->rows);
     for (unsigned r = 0; r < e->type->rows; r++) {
-        ir_expr *call = ir_new_expr(c, IE_INTRIN, row, e->loc, e->n);
+        ir_expr *call = hfx_ir_new_expr(c, IE_INTRIN, row, e->loc, e->n);
         call->intrin = e->intrin;
         for (uint32_t i = 0; i < e->n; i++) call->a[i] = row_of(c, e->a[i], r);
         m->a[r] = call;
@@ -114,15 +114,15 @@ static bool is_bool_matrix(const ir_expr *e) {
 static ir_expr *bool_row(ir_ctx *c, ir_expr *e, unsigned r) {
     const hfx_type *bvec = hfx_type_vector(c->types, B_BOOL, e->type->cols);
     if (e->kind == IE_CONVERT && e->a[0]->type->kind == TY_MATRIX && e->a[0]->type->rows == e->type->rows &&
-        e->a[0]->type->cols == e->type->cols && !ir_has_side_effects(e)) { /* (bool2x2)m: a row of m */
-        ir_expr *x = ir_new_expr(c, IE_CONVERT, bvec, e->loc, 1);
+        e->a[0]->type->cols == e->type->cols && !hfx_ir_has_side_effects(e)) { /* (bool2x2)m: a row of m */
+        ir_expr *x = hfx_ir_new_expr(c, IE_CONVERT, bvec, e->loc, 1);
         if (!(x->a[0] = is_bool_matrix(e->a[0]) ? bool_row(c, e->a[0], r) : row_of(c, e->a[0], r))) return NULL;
         return x;
     }
     bool binary = e->kind == IE_BINARY && e->op >= OP_LT && e->op <= OP_OR;
     bool negation = e->kind == IE_UNARY && e->op == OP_NOT;
-    if ((!binary && !negation) || ir_has_side_effects(e)) return NULL;
-    ir_expr *x = ir_new_expr(c, e->kind, bvec, e->loc, e->n);
+    if ((!binary && !negation) || hfx_ir_has_side_effects(e)) return NULL;
+    ir_expr *x = hfx_ir_new_expr(c, e->kind, bvec, e->loc, e->n);
     x->op = e->op;
     for (uint32_t i = 0; i < e->n; i++) {
         ir_expr *a = e->a[i];
@@ -136,11 +136,11 @@ static void select_rows(ir_ctx *c, ir_expr **slot) {
     ir_expr *e = *slot;
     const hfx_type *t = e->type;
     if (t->kind != TY_MATRIX || t->rows != e->a[0]->type->rows || t->cols != e->a[0]->type->cols ||
-        ir_has_side_effects(e->a[1]) || ir_has_side_effects(e->a[2]))
+        hfx_ir_has_side_effects(e->a[1]) || hfx_ir_has_side_effects(e->a[2]))
         return;
-    ir_expr *m = ir_new_expr(c, IE_CONSTRUCT, t, e->loc, t->rows);
+    ir_expr *m = hfx_ir_new_expr(c, IE_CONSTRUCT, t, e->loc, t->rows);
     for (unsigned r = 0; r < t->rows; r++) {
-        ir_expr *x = ir_new_expr(c, IE_SELECT, hfx_type_vector(c->types, t->base, t->cols), e->loc, 3);
+        ir_expr *x = hfx_ir_new_expr(c, IE_SELECT, hfx_type_vector(c->types, t->base, t->cols), e->loc, 3);
         if (!(x->a[0] = bool_row(c, e->a[0], r))) return;
         x->a[1] = row_of(c, e->a[1], r);
         x->a[2] = row_of(c, e->a[2], r);
@@ -156,7 +156,7 @@ static void lower_bool_matrix(ir_ctx *c, ir_expr **slot, void *data) {
         select_rows(c, slot);
         return;
     }
-    if (e->kind == IE_INDEX && is_bool_matrix(e->a[0]) && ir_is_const(e->a[1])) {
+    if (e->kind == IE_INDEX && is_bool_matrix(e->a[0]) && hfx_ir_is_const(e->a[1])) {
         ir_expr *row = bool_row(c, e->a[0], hfx_ev_uint(e->a[1]->cval[0]));
         if (row) *slot = row;
         return;
@@ -164,11 +164,11 @@ static void lower_bool_matrix(ir_ctx *c, ir_expr **slot, void *data) {
     if (e->kind != IE_CONVERT || !is_bool_matrix(e->a[0]) || e->type->kind != TY_MATRIX || e->type->rows != e->a[0]->type->rows ||
         e->type->cols != e->a[0]->type->cols)
         return;
-    ir_expr *m = ir_new_expr(c, IE_CONSTRUCT, e->type, e->loc, e->type->rows);
+    ir_expr *m = hfx_ir_new_expr(c, IE_CONSTRUCT, e->type, e->loc, e->type->rows);
     for (unsigned r = 0; r < e->type->rows; r++) {
         ir_expr *row = bool_row(c, e->a[0], r);
         if (!row) return;
-        ir_expr *conv = ir_new_expr(c, IE_CONVERT, hfx_type_vector(c->types, e->type->base, e->type->cols), e->loc, 1);
+        ir_expr *conv = hfx_ir_new_expr(c, IE_CONVERT, hfx_type_vector(c->types, e->type->base, e->type->cols), e->loc, 1);
         conv->a[0] = row;
         m->a[r] = conv;
     }
@@ -194,12 +194,12 @@ static void find_needs(ir_ctx *c, ir_expr **slot, void *data) {
     if (is_bool_matrix(e)) n->bool_matrix = true;
 }
 
-void ir_pass_intrinsics(ir_ctx *c, ir_shader *sh) {
+void hfx_ir_pass_intrinsics(ir_ctx *c, ir_shader *sh) {
     for (uint32_t i = 0; i < sh->func_count; i++) {
         needs n = {false, false, false};
-        ir_walk_stmt_exprs(c, sh->funcs[i]->body, find_needs, &n);
-        if (n.mul) ir_walk_stmt_exprs(c, sh->funcs[i]->body, lower_mul, NULL);
-        if (n.componentwise) ir_walk_stmt_exprs(c, sh->funcs[i]->body, lower_matrix_componentwise, NULL);
-        if (n.bool_matrix) ir_walk_stmt_exprs(c, sh->funcs[i]->body, lower_bool_matrix, NULL);
+        hfx_ir_walk_stmt_exprs(c, sh->funcs[i]->body, find_needs, &n);
+        if (n.mul) hfx_ir_walk_stmt_exprs(c, sh->funcs[i]->body, lower_mul, NULL);
+        if (n.componentwise) hfx_ir_walk_stmt_exprs(c, sh->funcs[i]->body, lower_matrix_componentwise, NULL);
+        if (n.bool_matrix) hfx_ir_walk_stmt_exprs(c, sh->funcs[i]->body, lower_bool_matrix, NULL);
     }
 }

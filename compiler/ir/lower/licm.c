@@ -28,14 +28,14 @@ typedef struct licm {
 static void find_writes(licm *l, ir_stmt *loop) {
     l->w.count = 0;
     l->w.calls = l->w.unknown = false;
-    ir_note_writes(l->c, loop, &l->w);
+    hfx_ir_note_writes(l->c, loop, &l->w);
 }
 
 /* ---- what may move ---- */
 
 static bool invariant_var(const licm *l, const ir_var *v) {
     if (l->w.calls && v->kind == IRV_PRIVATE) return false;
-    return !ir_var_set_has(&l->w, v);
+    return !hfx_ir_var_set_has(&l->w, v);
 }
 
 /* The node itself may be computed before the loop, its operands aside. */
@@ -44,9 +44,9 @@ static bool movable_node(const licm *l, const ir_expr *e) {
     case IE_CONST: return true;
     case IE_VAR: return invariant_var(l, e->var);
     case IE_UNARY: return e->op == OP_NEG || e->op == OP_NOT || e->op == OP_BITNOT;
-    case IE_BINARY: return !ir_integer_division(e);
+    case IE_BINARY: return !hfx_ir_integer_division(e);
     case IE_SELECT: case IE_CONSTRUCT: case IE_CONVERT: case IE_SWIZZLE: case IE_INDEX: case IE_FIELD: return true;
-    case IE_INTRIN: return ir_intrinsic_movable(e->intrin);
+    case IE_INTRIN: return hfx_ir_intrinsic_movable(e->intrin);
     default: return false; /* assignments, calls, commas */
     }
 }
@@ -55,7 +55,7 @@ static bool movable_node(const licm *l, const ir_expr *e) {
  * only moves components. */
 static bool computes(const ir_expr *e) {
     if (e->kind == IE_BINARY || e->kind == IE_INTRIN || e->kind == IE_SELECT) return true;
-    if (e->kind == IE_INDEX && !ir_is_const(e->a[1])) return true;
+    if (e->kind == IE_INDEX && !hfx_ir_is_const(e->a[1])) return true;
     for (uint32_t i = 0; i < e->n; i++)
         if (computes(e->a[i])) return true;
     return false;
@@ -88,7 +88,7 @@ static ir_stmt *new_decl(licm *l, ir_expr *value) {
 static void move_out(licm *l, ir_expr **slot) {
     ir_expr *e = *slot;
     if (!local_type(e->type) || !computes(e)) return;
-    ir_expr *r = ir_new_expr(l->c, IE_VAR, e->type, e->loc, 0);
+    ir_expr *r = hfx_ir_new_expr(l->c, IE_VAR, e->type, e->loc, 0);
     ir_stmt *d = r ? new_decl(l, e) : NULL;
     if (!d) return;
     r->var = d->var;
@@ -145,7 +145,7 @@ static uint32_t hoist_in_block(licm *l, ir_stmt *b, uint32_t i) {
     hoist_loop(l, b->body[i]);
     uint32_t n = l->decl_count;
     if (!n) return i + 1;
-    return ir_insert_stmts(l->c, b, i, l->decls, n) ? i + n + 1 : i + 1;
+    return hfx_ir_insert_stmts(l->c, b, i, l->decls, n) ? i + n + 1 : i + 1;
 }
 
 /* A loop that is not in a block (an if's branch, another loop's whole body, a case) gets one, unless
@@ -190,7 +190,7 @@ static void licm_stmt(licm *l, ir_stmt **slot) {
     if (s->kind == IS_IF) licm_branch(l, &s->else_s);
 }
 
-void ir_pass_licm(ir_ctx *c, ir_shader *sh) {
+void hfx_ir_pass_licm(ir_ctx *c, ir_shader *sh) {
     for (uint32_t i = 0; i < sh->func_count; i++) {
         licm l = {c, {NULL, 0, 0, false, false}, NULL, 0, 0, 0};
         if (sh->funcs[i]->body) licm_stmt(&l, &sh->funcs[i]->body);

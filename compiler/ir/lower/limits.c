@@ -21,7 +21,7 @@ static void check_expr(ir_ctx *c, ir_expr **slot, void *data) {
         (*bad)++;
         return;
     }
-    if (ir_integer_division(e) && ir_is_const(e->a[1])) { /* fxc refuses an integer / or % by a constant 0 */
+    if (hfx_ir_integer_division(e) && hfx_ir_is_const(e->a[1])) { /* fxc refuses an integer / or % by a constant 0 */
         for (unsigned i = 0; i < hfx_type_components(e->a[1]->type) && i < 16; i++)
             if (e->a[1]->cval[i] == 0) {
                 hfx_error(c->diags, e->a[1]->loc, 3033, "division by zero");
@@ -45,8 +45,8 @@ static bool always_returns(const ir_stmt *s) {
             if (always_returns(s->body[i])) return true;
         return false;
     case IS_IF: /* a condition the pass's uniform arguments made constant picks its branch */
-        if (s->expr && ir_is_const(s->expr) && hfx_type_components(s->expr->type) == 1)
-            return always_returns(ir_const_truth(s->expr) ? s->then_s : s->else_s);
+        if (s->expr && hfx_ir_is_const(s->expr) && hfx_type_components(s->expr->type) == 1)
+            return always_returns(hfx_ir_const_truth(s->expr) ? s->then_s : s->else_s);
         return always_returns(s->then_s) && always_returns(s->else_s);
     case IS_DO: return always_returns(s->then_s);
     default: return false;
@@ -64,10 +64,10 @@ static int check_returns(ir_ctx *c, const ir_func *f) {
     return 1;
 }
 
-int ir_pass_check(ir_ctx *c, ir_shader *sh) {
+int hfx_ir_pass_check(ir_ctx *c, ir_shader *sh) {
     int bad = 0;
     for (uint32_t i = 0; i < sh->func_count; i++) {
-        ir_walk_stmt_exprs(c, sh->funcs[i]->body, check_expr, &bad);
+        hfx_ir_walk_stmt_exprs(c, sh->funcs[i]->body, check_expr, &bad);
         bad += check_returns(c, sh->funcs[i]);
     }
     return bad ? -1 : 0;

@@ -1,7 +1,7 @@
 /* once.c: operands a lowering reads more than once are evaluated once, as HLSL evaluates them.
  *
  * - pow(x, n) with a constant integral exponent that fxc expands into multiplications (the rule
- *   is ir_pow_products') becomes those products: x * (x * x) for 3, keeping x's sign, and
+ *   is hfx_ir_pow_products') becomes those products: x * (x * x) for 3, keeping x's sign, and
  *   1 / products for a negative n, as fxc's SM2/SM3 code computes them.
  * - tex*Dlod / tex*Dbias / tex*Dproj read their coordinate's .w apart from the rest: a
  *   coordinate with side effects or work in it (`float4(uv, 0, k++)`, a call) is computed once.
@@ -23,7 +23,7 @@ typedef struct once {
     unsigned next;
 } once;
 
-bool ir_pow_products(const ir_expr *y, unsigned comps, int *n) {
+bool hfx_ir_pow_products(const ir_expr *y, unsigned comps, int *n) {
     if (!y || y->kind != IE_CONST || !hfx_type_is_numeric(y->type)) return false;
     double k = y->cval[0];
     for (unsigned i = 1; i < hfx_type_components(y->type) && i < 16; i++)
@@ -50,7 +50,7 @@ static bool repeatable(const ir_expr *x) {
 
 static ir_var *new_temp(once *o, const hfx_type *t, hfx_loc loc) {
     ir_var *v = HFX_NEW(o->c->arena, ir_var);
-    ir_stmt *d = ir_new_stmt(o->c, IS_DECL, loc);
+    ir_stmt *d = hfx_ir_new_stmt(o->c, IS_DECL, loc);
     if (!HFX_ARENA_GROW(o->c->arena, o->decls, o->decl_count, o->decl_cap, 4)) return NULL;
     v->kind = IRV_LOCAL;
     v->name = v->glsl = hfx_arena_printf(o->c->arena, "hfx_once%u", o->next++);
@@ -62,7 +62,7 @@ static ir_var *new_temp(once *o, const hfx_type *t, hfx_loc loc) {
 }
 
 static ir_expr *var_ref(ir_ctx *c, ir_var *v, hfx_loc loc) {
-    ir_expr *r = ir_new_expr(c, IE_VAR, v->type, loc, 0);
+    ir_expr *r = hfx_ir_new_expr(c, IE_VAR, v->type, loc, 0);
     r->var = v;
     return r;
 }
@@ -71,10 +71,10 @@ static ir_expr *var_ref(ir_ctx *c, ir_var *v, hfx_loc loc) {
  * static initialiser (no function to hold the local) a pure x is read again instead. */
 static ir_expr *read_once(once *o, ir_expr *x, ir_expr **set) {
     *set = NULL;
-    if (repeatable(x) || !hfx_type_is_numeric(x->type) || (!o->fn && !ir_has_side_effects(x))) return x;
+    if (repeatable(x) || !hfx_type_is_numeric(x->type) || (!o->fn && !hfx_ir_has_side_effects(x))) return x;
     ir_var *t = new_temp(o, x->type, x->loc);
     if (!t) return x;
-    *set = ir_new_expr(o->c, IE_ASSIGN, x->type, x->loc, 2);
+    *set = hfx_ir_new_expr(o->c, IE_ASSIGN, x->type, x->loc, 2);
     (*set)->op = OP_NONE;
     (*set)->a[0] = var_ref(o->c, t, x->loc);
     (*set)->a[1] = x;
@@ -84,7 +84,7 @@ static ir_expr *read_once(once *o, ir_expr *x, ir_expr **set) {
 /* (set, value), or value alone. */
 static ir_expr *after(ir_ctx *c, ir_expr *set, ir_expr *value) {
     if (!set) return value;
-    ir_expr *e = ir_new_expr(c, IE_COMMA, value->type, value->loc, 2);
+    ir_expr *e = hfx_ir_new_expr(c, IE_COMMA, value->type, value->loc, 2);
     e->a[0] = set;
     e->a[1] = value;
     return e;
@@ -96,21 +96,21 @@ static ir_expr *after(ir_ctx *c, ir_expr *set, ir_expr *value) {
 static ir_expr *products(once *o, ir_expr *x, const hfx_type *t, int n, ir_expr **sets) {
     ir_ctx *c = o->c;
     uint32_t m = (uint32_t)(n < 0 ? -(int64_t)n : n);
-    if (m == 0) return ir_const_scalar(c, t, 1, x->loc);
+    if (m == 0) return hfx_ir_const_scalar(c, t, 1, x->loc);
     ir_expr *square = NULL, *result = NULL;
     int last = -1;
     for (int i = 0; i < 32 && m >> i; i++) {
         if (!(m >> i & 1)) continue;
         for (int j = i; j > last; j--) {
             if (!square) { square = x; continue; }
-            ir_expr *set, *sq = ir_new_binary(c, OP_MUL, t, square, ir_clone_expr(c, square));
+            ir_expr *set, *sq = hfx_ir_new_binary(c, OP_MUL, t, square, hfx_ir_clone_expr(c, square));
             square = m >> (i + 1) || j > last + 1 ? read_once(o, sq, &set) : sq;
             if (square != sq) *sets = after(c, *sets, set);
         }
-        result = result ? ir_new_binary(c, OP_MUL, t, result, ir_clone_expr(c, square)) : ir_clone_expr(c, square);
+        result = result ? hfx_ir_new_binary(c, OP_MUL, t, result, hfx_ir_clone_expr(c, square)) : hfx_ir_clone_expr(c, square);
         last = i;
     }
-    if (n < 0) result = ir_new_binary(c, OP_DIV, t, ir_const_scalar(c, t, 1, x->loc), result);
+    if (n < 0) result = hfx_ir_new_binary(c, OP_DIV, t, hfx_ir_const_scalar(c, t, 1, x->loc), result);
     return result;
 }
 
@@ -120,9 +120,9 @@ static void expand_pow(once *o, ir_expr **slot) {
     ir_expr *e = *slot;
     int n;
     if (e->n != 2 || !float_base(e->type->base) || !hfx_type_equal(e->a[0]->type, e->type) ||
-        !ir_pow_products(e->a[1], hfx_type_components(e->type), &n))
+        !hfx_ir_pow_products(e->a[1], hfx_type_components(e->type), &n))
         return;
-    if (!o->fn && ir_has_side_effects(e->a[0])) return;
+    if (!o->fn && hfx_ir_has_side_effects(e->a[0])) return;
     ir_expr *set, *x = read_once(o, e->a[0], &set);
     ir_expr *value = products(o, x, e->type, n, &set);
     *slot = after(o->c, set, value);
@@ -148,15 +148,15 @@ static void visit(ir_ctx *c, ir_expr **slot, void *data) {
     else coordinate_once(data, slot);
 }
 
-void ir_pass_once(ir_ctx *c, ir_shader *sh) {
+void hfx_ir_pass_once(ir_ctx *c, ir_shader *sh) {
     once g = {c, NULL, NULL, 0, 0, 0}; /* static initialisers: pow's products, no locals */
     for (uint32_t i = 0; i < sh->global_count; i++)
-        if (sh->globals[i]->init) ir_walk_expr(c, &sh->globals[i]->init, visit, &g);
+        if (sh->globals[i]->init) hfx_ir_walk_expr(c, &sh->globals[i]->init, visit, &g);
     for (uint32_t i = 0; i < sh->func_count; i++) {
         once o = {c, sh->funcs[i], NULL, 0, 0, 0};
         ir_stmt *body = sh->funcs[i]->body;
         if (!body || body->kind != IS_BLOCK) continue;
-        ir_walk_stmt_exprs(c, body, visit, &o);
-        if (o.decl_count) ir_insert_stmts(c, body, 0, o.decls, o.decl_count);
+        hfx_ir_walk_stmt_exprs(c, body, visit, &o);
+        if (o.decl_count) hfx_ir_insert_stmts(c, body, 0, o.decls, o.decl_count);
     }
 }

@@ -51,7 +51,7 @@ static ir_var *new_preshader(pre *p, const ir_expr *e, uint32_t *code, uint32_t 
     v->pre = e;
     v->pre_code = code;
     v->pre_words = words;
-    v->pre_text = ir_pre_text(p->c, e);
+    v->pre_text = hfx_ir_pre_text(p->c, e);
     p->regs += regs_of(e->type);
     p->sh->pres[p->sh->pre_count++] = v;
     return v;
@@ -60,11 +60,11 @@ static ir_var *new_preshader(pre *p, const ir_expr *e, uint32_t *code, uint32_t 
 /* *slot, uniform-only and computing, read from a preshader; false when it cannot be one. */
 static bool hoist(pre *p, ir_expr **slot) {
     ir_expr *e = *slot;
-    uint32_t words = 0, *code = result_ok(e->type) ? ir_pre_code(p->c, e, &words) : NULL;
+    uint32_t words = 0, *code = result_ok(e->type) ? hfx_ir_pre_code(p->c, e, &words) : NULL;
     if (!code) return false;
     ir_var *v = same_preshader(p, e->type, code, words);
     if (!v && !(v = new_preshader(p, e, code, words))) return false;
-    ir_expr *r = ir_new_expr(p->c, IE_VAR, e->type, e->loc, 0);
+    ir_expr *r = hfx_ir_new_expr(p->c, IE_VAR, e->type, e->loc, 0);
     r->var = v;
     *slot = r;
     return true;
@@ -86,14 +86,14 @@ static unsigned visit(pre *p, ir_expr **slot, int depth) {
     ir_expr *e = *slot;
     if (!e || depth > 200) return 0;
     unsigned local[8], *flags = e->n <= 8 ? local : HFX_NEW_ARRAY(p->c->arena, unsigned, e->n);
-    unsigned all = UNI, more = (ir_pre_work(e) ? WORK : 0) | (e->kind == IE_VAR ? READS : 0);
+    unsigned all = UNI, more = (hfx_ir_pre_work(e) ? WORK : 0) | (e->kind == IE_VAR ? READS : 0);
     if (!flags) return 0;
     for (uint32_t i = 0; i < e->n; i++) {
         flags[i] = visit(p, &e->a[i], depth + 1);
         all &= flags[i];
         more |= flags[i] & (WORK | READS);
     }
-    if (all && ir_pre_node(p->c, e)) return UNI | more;
+    if (all && hfx_ir_pre_node(p->c, e)) return UNI | more;
     hoist_parts(p, e, flags, depth);
     return 0;
 }
@@ -138,14 +138,14 @@ static bool only_negated(pre *p, const ir_var *v, ir_stmt *assign) {
     ir_uses all = {v, false, 0, 0, NULL}, own = {v, false, 0, 0, NULL}, init = {v, false, 0, 0, NULL};
     negations neg = {v, 0}, own_neg = {v, 0};
     for (uint32_t i = 0; i < p->sh->func_count; i++) {
-        ir_count_uses(&all, p->sh->funcs[i]->body);
-        ir_walk_stmt_exprs(p->c, p->sh->funcs[i]->body, count_negation, &neg);
+        hfx_ir_count_uses(&all, p->sh->funcs[i]->body);
+        hfx_ir_walk_stmt_exprs(p->c, p->sh->funcs[i]->body, count_negation, &neg);
     }
-    ir_count_uses(&own, assign); /* `Light = normalize(Light)` reads it too */
-    ir_walk_stmt_exprs(p->c, assign, count_negation, &own_neg);
+    hfx_ir_count_uses(&own, assign); /* `Light = normalize(Light)` reads it too */
+    hfx_ir_walk_stmt_exprs(p->c, assign, count_negation, &own_neg);
     for (uint32_t i = 0; i < p->sh->global_count; i++) {
         ir_stmt s = {.kind = IS_EXPR, .expr = p->sh->globals[i]->init};
-        ir_count_uses(&init, &s);
+        hfx_ir_count_uses(&init, &s);
     }
     unsigned reads = all.reads - own.reads;
     return all.writes == 1 && reads && neg.count - own_neg.count == reads && !init.reads;
@@ -166,13 +166,13 @@ static int leading_assignment(pre *p, ir_stmt *block, uint32_t i, assigned *done
     if (!HFX_ARENA_GROW(p->c->arena, done->vars, done->count, done->cap, 4)) return STOP;
     ir_expr *e = block->body[i]->expr;
     ir_var *copy = e->a[0]->var;
-    ir_expr *value = ir_clone_expr(p->c, e->a[1]);
-    ir_walk_expr(p->c, &value, read_uniforms, done);
+    ir_expr *value = hfx_ir_clone_expr(p->c, e->a[1]);
+    hfx_ir_walk_expr(p->c, &value, read_uniforms, done);
     bool hoistable = visit(p, &value, 0) == HOIST;
     ir_var_map values = {0}; /* the copy's reads take the value */
-    if (hoistable && only_negated(p, copy, block->body[i]) && ir_var_map_put(p->c, &values, copy, value)) {
-        ir_remove_stmt(block, i);
-        for (uint32_t f = 0; f < p->sh->func_count; f++) ir_put_values(p->c, p->sh->funcs[f]->body, &values);
+    if (hoistable && only_negated(p, copy, block->body[i]) && hfx_ir_var_map_put(p->c, &values, copy, value)) {
+        hfx_ir_remove_stmt(block, i);
+        for (uint32_t f = 0; f < p->sh->func_count; f++) hfx_ir_put_values(p->c, p->sh->funcs[f]->body, &values);
         return DROPPED;
     }
     if (hoistable && hoist(p, &value)) e->a[1] = value;
@@ -214,7 +214,7 @@ static void entry_assignments(pre *p) {
     leading_assignments(p, body, &done);
 }
 
-uint32_t ir_stage_regs(const ir_ctx *c, const ir_shader *sh) {
+uint32_t hfx_ir_stage_regs(const ir_ctx *c, const ir_shader *sh) {
     uint32_t n = 0;
     for (uint32_t i = 0; i < sh->global_count; i++) {
         const ir_var *v = sh->globals[i];
@@ -224,10 +224,10 @@ uint32_t ir_stage_regs(const ir_ctx *c, const ir_shader *sh) {
     return n;
 }
 
-void ir_pass_preshade(ir_ctx *c, ir_shader *sh) {
-    pre p = {c, sh, ir_stage_regs(c, sh)};
+void hfx_ir_pass_preshade(ir_ctx *c, ir_shader *sh) {
+    pre p = {c, sh, hfx_ir_stage_regs(c, sh)};
     entry_assignments(&p);
-    for (uint32_t i = 0; i < sh->func_count; i++) ir_walk_stmt_roots(c, sh->funcs[i]->body, root, &p);
+    for (uint32_t i = 0; i < sh->func_count; i++) hfx_ir_walk_stmt_roots(c, sh->funcs[i]->body, root, &p);
     for (uint32_t i = 0; i < sh->global_count; i++)
         if (sh->globals[i]->kind == IRV_PRIVATE && sh->globals[i]->init) root(c, &sh->globals[i]->init, &p);
 }

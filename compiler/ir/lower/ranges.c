@@ -1,6 +1,6 @@
 /* ranges.c: what a for loop's counter tells of the array reads it indexes. A uniform array read
  * at a dynamic index goes through a guard that returns zero past either end (D3D9's unset
- * registers; glsl_expr.c print_guarded_read). Inside the body of
+ * registers; hfx_glsl_expr.c print_guarded_read). Inside the body of
  *     for (int i = C; i < X; i += K)      (or i <= X; ++i, i++; C >= 0, K > 0 constants)
  * where nothing but the step writes i, i is never negative, and when X is a constant it is
  * at most X - 1 (X for <=): a read arr[i] in that body is marked IR_RANGE_NONNEG, or
@@ -24,7 +24,7 @@ typedef struct counter {
 static bool int_scalar(const hfx_type *t) { return t->kind == TY_SCALAR && t->base == B_INT; }
 
 static bool int_const(const ir_expr *e, int64_t *out) {
-    if (!ir_is_const(e) || !int_scalar(e->type)) return false;
+    if (!hfx_ir_is_const(e) || !int_scalar(e->type)) return false;
     *out = hfx_ev_int(e->cval[0]);
     return true;
 }
@@ -75,7 +75,7 @@ static void count_target(writes *w, const ir_expr *e, const ir_expr *target) {
         for (uint32_t k = 0; k < target->n; k++) count_target(w, e, target->a[k]);
         return;
     }
-    const ir_var *root = ir_lvalue_root(target);
+    const ir_var *root = hfx_ir_lvalue_root(target);
     if (!root || root == w->v) w->count++; /* a target that cannot be told counts */
 }
 
@@ -83,20 +83,20 @@ static void note_write(ir_ctx *c, ir_expr **slot, void *data) {
     (void)c;
     const ir_expr *e = *slot;
     for (uint32_t i = 0; i < e->n; i++)
-        if (ir_writes_operand(e, i)) count_target(data, e, e->a[i]);
+        if (hfx_ir_writes_operand(e, i)) count_target(data, e, e->a[i]);
 }
 
 static bool only_step_writes(ir_ctx *c, ir_stmt *loop, const counter *k) {
     writes w = {k->v, 0};
-    ir_walk_expr(c, &loop->expr, note_write, &w);
-    ir_walk_stmt_exprs(c, loop->then_s, note_write, &w);
+    hfx_ir_walk_expr(c, &loop->expr, note_write, &w);
+    hfx_ir_walk_stmt_exprs(c, loop->then_s, note_write, &w);
     return w.count == 0;
 }
 
 /* The loop's counter, or false when what it is cannot be told. */
 static bool find_counter(ir_ctx *c, ir_stmt *loop, counter *k) {
     *k = (counter){NULL, 0, INT64_MAX, 0, false};
-    if (!counter_init(loop->init, k) || !counter_step(loop->step, k) || ir_has_side_effects(loop->expr)) return false;
+    if (!counter_init(loop->init, k) || !counter_step(loop->step, k) || hfx_ir_has_side_effects(loop->expr)) return false;
     counter_bound(loop->expr, k);
     bool no_overflow = k->hi != INT64_MAX ? k->hi + k->step <= INT_TOP : k->step == 1 && k->strict;
     return no_overflow && only_step_writes(c, loop, k);
@@ -113,12 +113,12 @@ static void mark(ir_ctx *c, ir_expr **slot, void *data) {
 static void ranges_stmt(ir_ctx *c, ir_stmt *s) {
     if (!s) return;
     counter k;
-    if (s->kind == IS_FOR && find_counter(c, s, &k)) ir_walk_stmt_exprs(c, s->then_s, mark, &k);
+    if (s->kind == IS_FOR && find_counter(c, s, &k)) hfx_ir_walk_stmt_exprs(c, s->then_s, mark, &k);
     for (uint32_t i = 0; i < s->count; i++) ranges_stmt(c, s->body[i]);
     ranges_stmt(c, s->then_s);
     ranges_stmt(c, s->else_s);
 }
 
-void ir_pass_ranges(ir_ctx *c, ir_shader *sh) {
+void hfx_ir_pass_ranges(ir_ctx *c, ir_shader *sh) {
     for (uint32_t i = 0; i < sh->func_count; i++) ranges_stmt(c, sh->funcs[i]->body);
 }

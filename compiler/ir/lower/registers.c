@@ -44,7 +44,7 @@ static bool parse_reg(const char *reg, char *bank, uint32_t *index) {
     return true;
 }
 
-void ir_pass_registers(ir_ctx *c, ir_shader *sh) {
+void hfx_ir_pass_registers(ir_ctx *c, ir_shader *sh) {
     uint32_t limit_c, limit_s, n = 0;
     const char *profile = sh->compile ? sh->compile->profile : NULL;
     bank_sizes(profile, &limit_c, &limit_s);

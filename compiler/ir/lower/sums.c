@@ -48,13 +48,13 @@ static bool counted_loop(const ir_ctx *c, const ir_stmt *loop, counted *out) {
     const ir_expr *cond = loop->expr;
     if (loop->kind != IS_FOR || loop->max_iterations || !cond || cond->kind != IE_BINARY || cond->op != OP_LT) return false;
     out->i = counter_start(loop->init, &out->from);
-    if (!out->i || !is_var(cond->a[0], out->i) || !int_scalar(cond->a[1]->type) || !ir_pre_only(c, cond->a[1]) ||
+    if (!out->i || !is_var(cond->a[0], out->i) || !int_scalar(cond->a[1]->type) || !hfx_ir_pre_only(c, cond->a[1]) ||
         !steps_by_one(loop->step, out->i))
         return false;
     ir_uses u = {out->i, true, 0, 0, NULL};
-    ir_count_uses(&u, loop->then_s);
+    hfx_ir_count_uses(&u, loop->then_s);
     out->bound = cond->a[1];
-    return !ir_has_jumps(loop->then_s) && u.writes == 0;
+    return !hfx_ir_has_jumps(loop->then_s) && u.writes == 0;
 }
 
 /* ---- the sum ---- */
@@ -67,11 +67,11 @@ typedef struct terms { ir_expr *kept[MAX_TERMS], *moved[MAX_TERMS]; unsigned nk,
 /* The parameter-only value of term t, before the loop at b->body[at]: t itself, or the
  * initialiser of a local declared (licm's) among the declarations right before the loop. */
 static ir_expr *invariant_value(const ir_ctx *c, const ir_stmt *b, uint32_t at, ir_expr *t, moves *m) {
-    if (ir_pre_only(c, t)) return t;
+    if (hfx_ir_pre_only(c, t)) return t;
     if (t->kind != IE_VAR || t->var->kind != IRV_LOCAL) return NULL;
     for (uint32_t k = at; k-- > 0 && b->body[k]->kind == IS_DECL;) {
         if (b->body[k]->var != t->var) continue;
-        if (!b->body[k]->expr || !ir_pre_only(c, b->body[k]->expr) || m->nl == MAX_TERMS) return NULL;
+        if (!b->body[k]->expr || !hfx_ir_pre_only(c, b->body[k]->expr) || m->nl == MAX_TERMS) return NULL;
         m->locals[m->nl++] = t->var;
         return b->body[k]->expr;
     }
@@ -93,8 +93,8 @@ static void split(const ir_ctx *c, const ir_stmt *b, uint32_t at, ir_expr *e, co
 static ir_expr *sum_of(ir_ctx *c, ir_expr *const *t, unsigned n, const hfx_type *ty, bool clone) {
     ir_expr *s = NULL;
     for (unsigned k = 0; k < n; k++) {
-        ir_expr *x = clone ? ir_clone_expr(c, t[k]) : t[k];
-        s = s ? ir_new_binary(c, OP_ADD, ty, s, x) : x;
+        ir_expr *x = clone ? hfx_ir_clone_expr(c, t[k]) : t[k];
+        s = s ? hfx_ir_new_binary(c, OP_ADD, ty, s, x) : x;
     }
     return s;
 }
@@ -103,13 +103,13 @@ static ir_expr *sum_of(ir_ctx *c, ir_expr *const *t, unsigned n, const hfx_type 
 static ir_expr *trips(ir_ctx *c, const counted *k, const hfx_type *ty) {
     const hfx_type *i = k->bound->type, *f = hfx_type_scalar(c->types, ty->base);
     hfx_loc loc = k->bound->loc;
-    ir_expr *from = ir_const_scalar(c, i, k->from, loc), *n = ir_clone_expr(c, k->bound);
-    ir_expr *sel = ir_new_expr(c, IE_SELECT, i, loc, 3);
-    sel->a[0] = ir_new_binary(c, OP_GT, hfx_type_scalar(c->types, B_BOOL), n, from);
-    sel->a[1] = k->from == 0 ? ir_clone_expr(c, k->bound) : ir_new_binary(c, OP_SUB, i, ir_clone_expr(c, k->bound), ir_clone_expr(c, from));
-    sel->a[2] = ir_const_scalar(c, i, 0, loc);
-    ir_expr *r = ir_new_convert(c, f, sel);
-    return ty->kind == TY_SCALAR ? r : ir_new_convert(c, ty, r);
+    ir_expr *from = hfx_ir_const_scalar(c, i, k->from, loc), *n = hfx_ir_clone_expr(c, k->bound);
+    ir_expr *sel = hfx_ir_new_expr(c, IE_SELECT, i, loc, 3);
+    sel->a[0] = hfx_ir_new_binary(c, OP_GT, hfx_type_scalar(c->types, B_BOOL), n, from);
+    sel->a[1] = k->from == 0 ? hfx_ir_clone_expr(c, k->bound) : hfx_ir_new_binary(c, OP_SUB, i, hfx_ir_clone_expr(c, k->bound), hfx_ir_clone_expr(c, from));
+    sel->a[2] = hfx_ir_const_scalar(c, i, 0, loc);
+    ir_expr *r = hfx_ir_new_convert(c, f, sel);
+    return ty->kind == TY_SCALAR ? r : hfx_ir_new_convert(c, ty, r);
 }
 
 /* `acc += ...` in the loop's body whose invariant terms may move; acc the local it adds to. */
@@ -121,7 +121,7 @@ static const ir_var *accumulator(const ir_stmt *s, ir_stmt *loop) {
         (acc->type->kind != TY_SCALAR && acc->type->kind != TY_VECTOR))
         return NULL;
     ir_uses u = {acc, true, 0, 0, NULL};
-    ir_count_uses(&u, loop);
+    hfx_ir_count_uses(&u, loop);
     return u.reads == 1 && u.writes == 1 ? acc : NULL; /* the += alone */
 }
 
@@ -137,12 +137,12 @@ static ir_stmt *take_invariant(ir_ctx *c, ir_stmt *b, uint32_t at, ir_stmt *s, c
         m->nl = locals;
         return NULL;
     }
-    ir_stmt *before = ir_new_stmt(c, IS_EXPR, e->loc);
-    ir_expr *add = before ? ir_new_expr(c, IE_ASSIGN, acc->type, e->loc, 2) : NULL;
+    ir_stmt *before = hfx_ir_new_stmt(c, IS_EXPR, e->loc);
+    ir_expr *add = before ? hfx_ir_new_expr(c, IE_ASSIGN, acc->type, e->loc, 2) : NULL;
     if (!add) return NULL;
     add->op = OP_ADD;
-    add->a[0] = ir_clone_expr(c, e->a[0]);
-    add->a[1] = ir_new_binary(c, OP_MUL, acc->type, sum_of(c, ts.moved, ts.nm, acc->type, true), trips(c, k, acc->type));
+    add->a[0] = hfx_ir_clone_expr(c, e->a[0]);
+    add->a[1] = hfx_ir_new_binary(c, OP_MUL, acc->type, sum_of(c, ts.moved, ts.nm, acc->type, true), trips(c, k, acc->type));
     before->expr = add;
     if (ts.nk) e->a[1] = sum_of(c, ts.kept, ts.nk, acc->type, false);
     else s->kind = IS_BLOCK, s->expr = NULL, s->count = 0; /* nothing left to add in the loop */
@@ -155,9 +155,9 @@ static uint32_t drop_unread(ir_stmt *b, uint32_t at, const moves *m) {
         ir_uses u = {b->body[j]->var, false, 0, 0, NULL};
         bool moved = false;
         for (unsigned k = 0; k < m->nl; k++) moved |= b->body[j]->kind == IS_DECL && m->locals[k] == u.v;
-        if (moved) ir_count_uses(&u, b);
+        if (moved) hfx_ir_count_uses(&u, b);
         if (!moved || u.reads) { j++; continue; }
-        ir_remove_stmt(b, j);
+        hfx_ir_remove_stmt(b, j);
         at--;
     }
     return at;
@@ -176,7 +176,7 @@ static uint32_t sums_of_loop(ir_ctx *c, ir_stmt *b, uint32_t at) {
         ir_stmt *before = take_invariant(c, b, at, list[s], &k, &m);
         if (before) m.before[m.nb++] = before;
     }
-    if (!m.nb || !ir_insert_stmts(c, b, at, m.before, m.nb)) return at;
+    if (!m.nb || !hfx_ir_insert_stmts(c, b, at, m.before, m.nb)) return at;
     return drop_unread(b, at + m.nb, &m);
 }
 
@@ -190,6 +190,6 @@ static void sums_stmt(ir_ctx *c, ir_stmt *s) {
     sums_stmt(c, s->else_s);
 }
 
-void ir_pass_sums(ir_ctx *c, ir_shader *sh) {
+void hfx_ir_pass_sums(ir_ctx *c, ir_shader *sh) {
     for (uint32_t i = 0; i < sh->func_count; i++) sums_stmt(c, sh->funcs[i]->body);
 }

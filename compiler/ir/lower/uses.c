@@ -15,9 +15,9 @@ static void walk_func(ir_ctx *c, uses *u, ir_func *f);
 static void visit(ir_ctx *c, ir_expr **slot, void *data);
 
 static void add(ir_ctx *c, uses *u, ir_var *v) {
-    if (ir_var_map_get(&u->listed, v) || !ir_var_map_put(c, &u->listed, v, v)) return;
+    if (hfx_ir_var_map_get(&u->listed, v) || !hfx_ir_var_map_put(c, &u->listed, v, v)) return;
     if (v->copy_of) add(c, u, v->copy_of);
-    if (v->init) ir_walk_expr(c, &v->init, visit, u);
+    if (v->init) hfx_ir_walk_expr(c, &v->init, visit, u);
     if (!HFX_ARENA_GROW(c->arena, u->list, u->count, u->cap, 16)) return;
     u->list[u->count++] = v;
 }
@@ -53,10 +53,10 @@ static void walk_func(ir_ctx *c, uses *u, ir_func *f) {
     for (uint32_t i = 0; i < u->seen_count; i++)
         if (u->seen[i] == f) return;
     u->seen[u->seen_count++] = f;
-    ir_walk_stmt_exprs(c, f->body, visit, u);
+    hfx_ir_walk_stmt_exprs(c, f->body, visit, u);
 }
 
-void ir_pass_uses(ir_ctx *c, ir_shader *sh) {
+void hfx_ir_pass_uses(ir_ctx *c, ir_shader *sh) {
     uses u = { sh, NULL, 0, 0, {0}, HFX_NEW_ARRAY(c->arena, ir_func *, sh->func_count + 1), 0 };
     walk_func(c, &u, sh->entry);
     sh->globals = u.list;

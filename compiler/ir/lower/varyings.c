@@ -104,10 +104,10 @@ static bool is_place(const ir_expr *e, const place *pl) {
 
 /* pl as an expression. */
 static ir_expr *place_expr(ir_ctx *c, ir_var *root, const place *pl, hfx_loc loc) {
-    ir_expr *e = ir_new_expr(c, IE_VAR, root->type, loc, 0);
+    ir_expr *e = hfx_ir_new_expr(c, IE_VAR, root->type, loc, 0);
     e->var = root;
     for (uint32_t k = 0; k < pl->depth; k++) {
-        ir_expr *f = ir_new_expr(c, IE_FIELD, e->type->st->fields[pl->fields[k]].type, loc, 1);
+        ir_expr *f = hfx_ir_new_expr(c, IE_FIELD, e->type->st->fields[pl->fields[k]].type, loc, 1);
         f->field = pl->fields[k];
         f->a[0] = e;
         e = f;
@@ -124,13 +124,13 @@ static void count_writes(ir_ctx *c, ir_expr **slot, void *data) {
     counter *k = data;
     const ir_expr *e = *slot;
     for (uint32_t i = 0; i < e->n; i++)
-        if (ir_writes_operand(e, i) && overlaps(e->a[i], k->pl)) k->writes++;
+        if (hfx_ir_writes_operand(e, i) && overlaps(e->a[i], k->pl)) k->writes++;
 }
 
 static unsigned writes_in(ir_ctx *c, ir_stmt *s, const place *pl) {
     counter k = {pl, 0};
     if (s->kind == IS_DECL && s->var == pl->root) k.writes++;
-    ir_walk_stmt_exprs(c, s, count_writes, &k);
+    hfx_ir_walk_stmt_exprs(c, s, count_writes, &k);
     return k.writes;
 }
 
@@ -146,7 +146,7 @@ static int final_write(const pair *p, const place *pl) {
     if (last < 0 || n != 1) return -1;
     const ir_stmt *s = p->body->body[last];
     const ir_expr *e = s->kind == IS_EXPR ? s->expr : NULL;
-    if (!e || e->kind != IE_ASSIGN || e->op != OP_NONE || !is_place(e->a[0], pl) || ir_has_side_effects(e->a[1]))
+    if (!e || e->kind != IE_ASSIGN || e->op != OP_NONE || !is_place(e->a[0], pl) || hfx_ir_has_side_effects(e->a[1]))
         return -1;
     return last;
 }
@@ -173,22 +173,22 @@ static const ir_var *returned_local(const ir_stmt *body) {
 /* ---- the value X: the same in both statements ---- */
 
 static void note_read(ir_ctx *c, ir_expr **slot, void *data) {
-    if ((*slot)->kind == IE_VAR) ir_var_set_add(c, data, (*slot)->var);
+    if ((*slot)->kind == IE_VAR) hfx_ir_var_set_add(c, data, (*slot)->var);
 }
 
 /* X, computed by statement `from`, has the same value at statement `to` (either order): the
  * statements between write none of its variables, and it reads no output. */
 static bool stable(const pair *p, ir_expr *x, uint32_t from, uint32_t to) {
     ir_var_set reads = {0}, writes = {0};
-    ir_walk_expr(p->c, &x, note_read, &reads);
-    if (reads.unknown || ir_var_set_has(&reads, p->ret)) return false;
+    hfx_ir_walk_expr(p->c, &x, note_read, &reads);
+    if (reads.unknown || hfx_ir_var_set_has(&reads, p->ret)) return false;
     for (uint32_t i = 0; i < reads.count; i++)
         if (reads.vars[i]->kind == IRV_PARAM && (reads.vars[i]->mods & MOD_OUT)) return false;
     uint32_t lo = from < to ? from : to, hi = from < to ? to : from;
-    for (uint32_t i = lo + 1; i < hi; i++) ir_note_writes(p->c, p->body->body[i], &writes);
+    for (uint32_t i = lo + 1; i < hi; i++) hfx_ir_note_writes(p->c, p->body->body[i], &writes);
     if (writes.unknown) return false;
     for (uint32_t i = 0; i < reads.count; i++)
-        if (ir_var_set_has(&writes, reads.vars[i]) || (writes.calls && reads.vars[i]->kind == IRV_PRIVATE)) return false;
+        if (hfx_ir_var_set_has(&writes, reads.vars[i]) || (writes.calls && reads.vars[i]->kind == IRV_PRIVATE)) return false;
     return true;
 }
 
@@ -210,7 +210,7 @@ static bool moved_uniform(const ir_expr *e) {
 typedef struct source { const ir_expr *x; const place *w; bool place_holds; } source;
 
 static bool is_x(const ir_expr *e, const source *s) {
-    return ir_same_expr(e, s->x) || (s->place_holds && is_place(e, s->w));
+    return hfx_ir_same_expr(e, s->x) || (s->place_holds && is_place(e, s->w));
 }
 
 /* 1 when e is an affine function of X (operations on it counted in *work), 0 when it is a
@@ -262,7 +262,7 @@ static void find_read(ir_ctx *c, ir_expr **slot, void *data) {
 static bool reads_input(ir_ctx *c, const ir_shader *ps, const place *pl) {
     finder f = {pl, false};
     if (writes_in(c, ps->entry->body, &(place){pl->root, NULL, 0})) return false;
-    ir_walk_stmt_roots(c, ps->entry->body, find_read, &f);
+    hfx_ir_walk_stmt_roots(c, ps->entry->body, find_read, &f);
     return f.found;
 }
 
@@ -283,8 +283,8 @@ static ir_var *pixel_var(pair *p, const ir_var *v) {
 
 /* f's value in the pixel stage: x read from the input w, parameters from its own variables. */
 static ir_expr *to_pixels(pair *p, const ir_expr *e, const source *x, const ir_expr *w) {
-    if (is_x(e, x)) return ir_clone_expr(p->c, w);
-    ir_expr *r = ir_new_expr(p->c, e->kind, e->type, e->loc, e->n);
+    if (is_x(e, x)) return hfx_ir_clone_expr(p->c, w);
+    ir_expr *r = hfx_ir_new_expr(p->c, e->kind, e->type, e->loc, e->n);
     if (!r) return NULL;
     ir_expr **args = r->a;
     *r = *e;
@@ -328,8 +328,8 @@ static bool derive_from(pair *p, const ir_leaf *vo, const ir_leaf *vw, derived *
     place pin_o = place_of(po, NULL), pin_w = place_of(pw, NULL);
     if (!reads_input(p->c, p->ps, &pin_o) || !reads_input(p->c, p->ps, &pin_w)) return false;
     ir_expr *value = to_pixels(p, ov, &x, place_expr(p->c, pw->root, &pin_w, ov->loc));
-    ir_expr *set = value ? ir_new_expr(p->c, IE_ASSIGN, po->type, ov->loc, 2) : NULL;
-    ir_stmt *s = set ? ir_new_stmt(p->c, IS_EXPR, ov->loc) : NULL;
+    ir_expr *set = value ? hfx_ir_new_expr(p->c, IE_ASSIGN, po->type, ov->loc, 2) : NULL;
+    ir_stmt *s = set ? hfx_ir_new_stmt(p->c, IS_EXPR, ov->loc) : NULL;
     if (!s) return false;
     set->op = OP_NONE;
     set->a[0] = place_expr(p->c, po->root, &pin_o, ov->loc);
@@ -380,9 +380,9 @@ static bool rewrite(pair *p, const derived *d, uint32_t n, bool pack, ir_shader 
     memmove(pb->body + n, pb->body, pb->count * sizeof *pb->body);
     for (uint32_t k = 0; k < n; k++) pb->body[k] = d[k].compute;
     pb->count += n;
-    ir_pass_uses(p->c, v); /* O's value read parameters only, never a preshader: they all stay */
-    ir_pass_uses(p->c, q);
-    if (pack && ir_stage_regs(p->c, q) > IR_STAGE_REGS) return false;
+    hfx_ir_pass_uses(p->c, v); /* O's value read parameters only, never a preshader: they all stay */
+    hfx_ir_pass_uses(p->c, q);
+    if (pack && hfx_ir_stage_regs(p->c, q) > IR_STAGE_REGS) return false;
     *vs = v;
     *ps = q;
     return true;
@@ -391,14 +391,14 @@ static bool rewrite(pair *p, const derived *d, uint32_t n, bool pack, ir_shader 
 /* The role of each vertex output so far: a source W stays a varying, a derived O is gone. */
 enum { FREE, SOURCE, DERIVED };
 
-uint32_t ir_pass_varyings(ir_ctx *c, ir_shader **vs, ir_shader **ps, bool pack, const char ***derived_out) {
+uint32_t hfx_ir_pass_varyings(ir_ctx *c, ir_shader **vs, ir_shader **ps, bool pack, const char ***derived_out) {
     *derived_out = NULL;
     if (!*vs || !*ps || !(*vs)->entry->body || (*vs)->entry->body->kind != IS_BLOCK || !(*ps)->entry->body ||
         (*ps)->entry->body->kind != IS_BLOCK)
         return 0;
     pair p = {c, *vs, *ps, NULL, NULL, 0, 0, NULL, (*vs)->entry->body, NULL, 0, 0};
-    p.out_count = ir_entry_leaves(c, p.vs->entry, true, &p.out);
-    p.in_count = ir_entry_leaves(c, p.ps->entry, false, &p.in);
+    p.out_count = hfx_ir_entry_leaves(c, p.vs->entry, true, &p.out);
+    p.in_count = hfx_ir_entry_leaves(c, p.ps->entry, false, &p.in);
     if (p.out_count <= 0 || p.in_count <= 0 || !straight(p.body)) return 0;
     p.ret = returned_local(p.body);
     unsigned char *role = HFX_NEW_ARRAY(c->arena, unsigned char, (uint32_t)p.out_count);

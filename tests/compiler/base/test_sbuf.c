@@ -1,4 +1,4 @@
-/* The text buffer's formatter: sb_printf writes %s %d %u %c %% itself and hands everything else
+/* The text buffer's formatter: hfx_sb_printf writes %s %d %u %c %% itself and hands everything else
  * to snprintf one conversion at a time, so each case is checked against what the C library
  * prints for the same format and arguments (and the plain ones against hand-written text). */
 #include <limits.h>
@@ -15,7 +15,7 @@
         char want_[512]; \
         snprintf(want_, sizeof want_, __VA_ARGS__); \
         sbuf b_ = {0}; \
-        sb_printf(&b_, __VA_ARGS__); \
+        hfx_sb_printf(&b_, __VA_ARGS__); \
         CHECK_STR(b_.d ? b_.d : "", want_); \
         CHECK_STR(want_, expected_text); \
         free(b_.d); \
@@ -54,7 +54,7 @@ static void long_output(void) {
     memset(big, 'x', sizeof big - 1);
     big[sizeof big - 1] = 0;
     sbuf b = {0};
-    sb_printf(&b, "[%1999s]", big);
+    hfx_sb_printf(&b, "[%1999s]", big);
     CHECK_INT(b.len, 2001);
     CHECK(b.d && b.d[0] == '[' && b.d[1] == 'x' && b.d[2000] == ']');
     free(b.d);
@@ -62,7 +62,7 @@ static void long_output(void) {
 
 static void appends(void) {
     sbuf b = {0};
-    for (int i = 0; i < 1000; i++) sb_printf(&b, "%d,", i % 10);
+    for (int i = 0; i < 1000; i++) hfx_sb_printf(&b, "%d,", i % 10);
     CHECK_INT(b.len, 2000);
     CHECK(strncmp(b.d, "0,1,2,3,4,5,6,7,8,9,0,", 22) == 0);
     free(b.d);

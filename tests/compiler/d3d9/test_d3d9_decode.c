@@ -16,12 +16,12 @@ static char *run(const uint32_t *w, size_t n, int *ok) {
     hfx_arena_init(&arena);
     hfx_diags_init(&diags, &arena, 0);
     d3d9_input in = {w, (uint32_t)(n * 4), hfx_diags_add_file(&diags, "t.vso", NULL, "", 0), 0};
-    d3d9_shader *s = d3d9_decode(&arena, &diags, &in);
+    d3d9_shader *s = hfx_d3d9_decode(&arena, &diags, &in);
     char *out;
     if (s) {
         sbuf b = {0};
-        d3d9_disassemble(s, &b);
-        out = sb_take(&b);
+        hfx_d3d9_disassemble(s, &b);
+        out = hfx_sb_take(&b);
     } else out = hfx_diags_format(&diags, 0);
     *ok = s != NULL;
     hfx_arena_free(&arena);
@@ -222,11 +222,11 @@ static void errors_located(void) {
 static void shader_detection(void) {
     static const uint32_t ps[] = {PS(2, 0), END_TOKEN}, vs11[] = {VS(1, 1), END_TOKEN}, vs10[] = {VS(1, 0), END_TOKEN};
     static const uint32_t fx[] = {0xfeff0901u, 0}; /* an fx_2_0 effect's version word */
-    CHECK(d3d9_is_shader(ps, sizeof ps));
-    CHECK(d3d9_is_shader(vs11, sizeof vs11));
-    CHECK(!d3d9_is_shader(vs10, sizeof vs10));
-    CHECK(!d3d9_is_shader(fx, sizeof fx));
-    CHECK(!d3d9_is_shader(ps, 4));
+    CHECK(hfx_d3d9_is_shader(ps, sizeof ps));
+    CHECK(hfx_d3d9_is_shader(vs11, sizeof vs11));
+    CHECK(!hfx_d3d9_is_shader(vs10, sizeof vs10));
+    CHECK(!hfx_d3d9_is_shader(fx, sizeof fx));
+    CHECK(!hfx_d3d9_is_shader(ps, 4));
 }
 
 int main(void) {

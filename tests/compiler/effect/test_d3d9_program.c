@@ -57,7 +57,7 @@ static void close_fixture(fixture *x) {
 
 static d3d9_shader *decode(fixture *x, const uint32_t *w, size_t n, uint32_t base) {
     d3d9_input in = {w, (uint32_t)(n * 4), x->file, base};
-    d3d9_shader *s = d3d9_decode(&x->arena, &x->diags, &in);
+    d3d9_shader *s = hfx_d3d9_decode(&x->arena, &x->diags, &in);
     CHECK(s != NULL);
     return s;
 }

@@ -152,10 +152,10 @@ static void shader_constants_fold_as_direct3d(void) {
     CHECK(fx != NULL);
     const hfx_state_assign *a = fx ? &ast->decls[ast->decl_count - 1]->technique->passes[0].states[0] : NULL;
     ir_ctx c = {&arena, &diags, types, ast, fx};
-    ir_shader *sh = a ? ir_build(&c, a->value, IR_PIXEL) : NULL;
-    CHECK(sh != NULL && ir_lower(&c, sh, 0) == 0);
+    ir_shader *sh = a ? hfx_ir_build(&c, a->value, IR_PIXEL) : NULL;
+    CHECK(sh != NULL && hfx_ir_lower(&c, sh, 0) == 0);
     const ir_expr *k = NULL;
-    if (sh) ir_walk_stmt_exprs(&c, sh->entry->body, find_const4, &k);
+    if (sh) hfx_ir_walk_stmt_exprs(&c, sh->entry->body, find_const4, &k);
     CHECK(k != NULL);
     if (k) {
         CHECK_NEAR(k->cval[0], -3, 0);

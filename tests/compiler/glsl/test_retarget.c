@@ -1,9 +1,9 @@
 /* test_retarget.c: codegen prints a stage once for GLSL 330 and makes the ES 300 text by
- * swapping the header (glsl_retarget), which is right only while the printer decides nothing
+ * swapping the header (hfx_glsl_retarget), which is right only while the printer decides nothing
  * else on the target. This holds it: every program of the project's effects (and of the seeds,
  * when present) compiled for ES 300 alone, so printed directly, equals the GLSL 330 text of a
  * compile for 330 alone with the ES header in place of the 330 one; and the texts of a compile
- * for both are the same again. Also glsl_retarget itself on exact headers. */
+ * for both are the same again. Also hfx_glsl_retarget itself on exact headers. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -45,7 +45,7 @@ static void same_texts(const char *path) {
     for (uint32_t p = 0; fa && fb && p < fa->program_count && p < fb->program_count; p++)
         for (int s = 0; s < HFX_STAGE_COUNT; s++) {
             const char *t330 = code(a, p, s, HFX_TARGET_GLSL330), *tes = code(b, p, s, HFX_TARGET_GLSLES300);
-            char *made = t330 ? glsl_retarget(t330, HFX_TARGET_GLSL330, HFX_TARGET_GLSLES300) : NULL;
+            char *made = t330 ? hfx_glsl_retarget(t330, HFX_TARGET_GLSL330, HFX_TARGET_GLSLES300) : NULL;
             CHECK(made && tes && strcmp(made, tes) == 0);
             if (!made || !tes || strcmp(made, tes) != 0) printf("  %s: program %u stage %d differs\n", path, p, s);
             const char *both_es = code(both, p, s, HFX_TARGET_GLSLES300), *both_gl = code(both, p, s, HFX_TARGET_GLSL330);
@@ -75,12 +75,12 @@ static void seed_effects(void) {
 }
 
 static void headers(void) {
-    char *t = glsl_retarget("#version 330 core\nvoid main() {}\n", HFX_TARGET_GLSL330, HFX_TARGET_GLSLES300);
+    char *t = hfx_glsl_retarget("#version 330 core\nvoid main() {}\n", HFX_TARGET_GLSL330, HFX_TARGET_GLSLES300);
     CHECK_STR(t, "#version 300 es\nprecision highp float;\nprecision highp int;\nprecision highp sampler2D;\n"
                  "precision highp sampler3D;\nprecision highp samplerCube;\nvoid main() {}\n");
-    char *back = t ? glsl_retarget(t, HFX_TARGET_GLSLES300, HFX_TARGET_GLSL330) : NULL;
+    char *back = t ? hfx_glsl_retarget(t, HFX_TARGET_GLSLES300, HFX_TARGET_GLSL330) : NULL;
     CHECK_STR(back, "#version 330 core\nvoid main() {}\n");
-    CHECK(glsl_retarget("#version 110\nvoid main() {}\n", HFX_TARGET_GLSL330, HFX_TARGET_GLSLES300) == NULL);
+    CHECK(hfx_glsl_retarget("#version 110\nvoid main() {}\n", HFX_TARGET_GLSL330, HFX_TARGET_GLSLES300) == NULL);
     free(t);
     free(back);
 }

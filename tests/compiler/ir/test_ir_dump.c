@@ -48,8 +48,8 @@ static char *lowered(const char *src, const char *entry, int nargs, const bool *
             compile->args[i] = b;
         }
         ir_ctx c = { &f.arena, &f.diags, f.types, f.ast, NULL };
-        ir_shader *sh = ir_build(&c, compile, pixel ? IR_PIXEL : IR_VERTEX);
-        if (sh && ir_lower(&c, sh, 0) == 0) out = ir_dump_shader(sh);
+        ir_shader *sh = hfx_ir_build(&c, compile, pixel ? IR_PIXEL : IR_VERTEX);
+        if (sh && hfx_ir_lower(&c, sh, 0) == 0) out = hfx_ir_dump_shader(sh);
     }
     if (!out) {
         char *d = hfx_diags_format(&f.diags, 0);

@@ -13,10 +13,10 @@
 /* The docs' table as passes.c's rows print it. */
 static char *table_text(void) {
     sbuf b = {0};
-    sb_put(&b, "| # | pass | runs | why |\n|---|---|---|---|\n");
-    for (uint32_t i = 0; i < ir_pass_count(); i++)
-        sb_printf(&b, "| %u | `%s` | %s | %s |\n", (unsigned)i + 1, ir_pass_name(i), ir_pass_runs(i), ir_pass_why(i));
-    return sb_take(&b);
+    hfx_sb_put(&b, "| # | pass | runs | why |\n|---|---|---|---|\n");
+    for (uint32_t i = 0; i < hfx_ir_pass_count(); i++)
+        hfx_sb_printf(&b, "| %u | `%s` | %s | %s |\n", (unsigned)i + 1, hfx_ir_pass_name(i), hfx_ir_pass_runs(i), hfx_ir_pass_why(i));
+    return hfx_sb_take(&b);
 }
 
 /* docs/architecture.md's lines from the table's head to the end marker. */
@@ -44,12 +44,12 @@ static void names_in_order(void) {
     size_t n = 0;
     const char *why;
     while (hfxc_pass_name(n, &why)) {
-        CHECK_STR(hfxc_pass_name(n, NULL), ir_pass_name((uint32_t)n));
+        CHECK_STR(hfxc_pass_name(n, NULL), hfx_ir_pass_name((uint32_t)n));
         CHECK(why && why[0]);
         for (size_t k = 0; k < n; k++) CHECK(strcmp(hfxc_pass_name(k, NULL), hfxc_pass_name(n, NULL)) != 0);
         n++;
     }
-    CHECK_INT(n, ir_pass_count());
+    CHECK_INT(n, hfx_ir_pass_count());
     CHECK(n >= 22);
     static const char *const order[] = {"specialise", "fold", "calls", "globals", "uses", "check", "sums",
                                         "forward", "factors", "preshade", "uses-again", "varyings"};
@@ -97,10 +97,10 @@ static const char two_stages[] =
 static void every_pass_in_order(void) {
     char *all = dump_after(two_stages, "all", HFXC_PACK_UNIFORMS);
     CHECK(all != NULL);
-    for (uint32_t i = 0; all && i < ir_pass_count(); i++) {
+    for (uint32_t i = 0; all && i < hfx_ir_pass_count(); i++) {
         char head[64];
-        snprintf(head, sizeof head, "// after %s: ", ir_pass_name(i));
-        unsigned want = !strcmp(ir_pass_name(i), "uses-again") ? 1 : 2;
+        snprintf(head, sizeof head, "// after %s: ", hfx_ir_pass_name(i));
+        unsigned want = !strcmp(hfx_ir_pass_name(i), "uses-again") ? 1 : 2;
         if (lines_starting(all, head) != want) fprintf(stderr, "  %s\n", head);
         CHECK_INT(lines_starting(all, head), want);
     }
@@ -159,7 +159,7 @@ static void golden_preshade(void) {
 /* After specialise, then after fold, then after dce (PS at line 9, column 53). specialise: PS(true)
  * binds `bright`, which leaves the signature, and its read is the argument, a bool constant;
  * the checker's conversions are there (`1 + 1` to float, `two` and `Half` splat to float4, the
- * int 3 to float4). Globals are ir_build's list (uses has not run): Tint and the static Half,
+ * int 3 to float4). Globals are hfx_ir_build's list (uses has not run): Tint and the static Half,
  * listed by its GLSL name. fold: 1 + 1 is 2; `two` and `Half` are constants where they are read,
  * and their splats fold to float4 constants; (Tint * 2) * 0.5 is not reassociated; the if on a
  * constant and the declarations stay. dce: the if on true is its branch alone; the unread

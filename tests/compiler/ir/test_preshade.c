@@ -72,18 +72,18 @@ static void look(ir_ctx *c, ir_expr **slot, void *data) {
     scan *s = data;
     const ir_expr *e = *slot;
     if (flags_of(e) == (CAN | WORK | READS)) {
-        if (s->where) fprintf(stderr, "  %s: left in the shader: %s\n", s->where, ir_pre_text(c, e));
+        if (s->where) fprintf(stderr, "  %s: left in the shader: %s\n", s->where, hfx_ir_pre_text(c, e));
         s->left++;
     }
 }
 
 /* The IR of one compile expression, lowered (preshaded unless told not to: where NULL), scanned. */
 static unsigned stage_left(ir_ctx *c, const hfx_expr *compile, ir_stage st, const char *where, uint32_t *pres) {
-    ir_shader *sh = ir_build(c, compile, st);
-    if (!sh || ir_lower(c, sh, IR_LOWER_PACKED | (where ? IR_LOWER_PRESHADE : 0)) != 0) return 1;
+    ir_shader *sh = hfx_ir_build(c, compile, st);
+    if (!sh || hfx_ir_lower(c, sh, IR_LOWER_PACKED | (where ? IR_LOWER_PRESHADE : 0)) != 0) return 1;
     *pres += sh->pre_count;
     scan s = {c, 0, where};
-    for (uint32_t i = 0; i < sh->func_count; i++) ir_walk_stmt_exprs(c, sh->funcs[i]->body, look, &s);
+    for (uint32_t i = 0; i < sh->func_count; i++) hfx_ir_walk_stmt_exprs(c, sh->funcs[i]->body, look, &s);
     return s.left;
 }
 

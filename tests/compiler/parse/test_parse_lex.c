@@ -1,4 +1,4 @@
-/* parse_lex's identifier classification: every keyword, interpolation modifier, effect-layer
+/* hfx_parse_lex's identifier classification: every keyword, interpolation modifier, effect-layer
  * keyword and builtin type name gives its exact Bison code and value, and near misses (other
  * case, truncated, extended, out-of-range sizes) stay plain identifiers. The expectations are
  * written out here, independent of keywords.c's tables. */
@@ -23,13 +23,13 @@ static void lex_open(lex_run *r, const char *text) {
     hfx_diags_init(&r->diags, &r->arena, 0);
     r->types = hfx_types_new(&r->arena);
     hfx_token *toks = hfx_tokenize_text(&r->arena, &r->diags, text, (uint32_t)strlen(text), (hfx_loc){0, 1, 1});
-    CHECK(parse_ctx_init(&r->ctx, &r->arena, &r->diags, r->types, toks));
+    CHECK(hfx_parse_ctx_init(&r->ctx, &r->arena, &r->diags, r->types, toks));
 }
 
 static int lex_next(lex_run *r, parse_tok *tok) {
-    YYSTYPE v;
+    HFX_YYSTYPE v;
     hfx_loc loc;
-    int code = parse_lex(&v, &loc, &r->ctx);
+    int code = hfx_parse_lex(&v, &loc, &r->ctx);
     *tok = v.tok;
     return code;
 }
@@ -337,16 +337,16 @@ static void asm_blocks_and_pack_matrix(void) {
     EXPECT_CODE("__hfx_pack_matri ( row_major )", IDENT);
 }
 
-/* kw_lookup reads only `len` bytes: parse_lex hands it token spellings by length. */
+/* hfx_kw_lookup reads only `len` bytes: hfx_parse_lex hands it token spellings by length. */
 static void lookup_respects_length(void) {
     kw_word w;
-    kw_lookup("float4x4abc", 6, &w);
+    hfx_kw_lookup("float4x4abc", 6, &w);
     CHECK_INT(w.form, KW_TYPE_VECTOR);
     CHECK_INT(w.cols, 4);
-    kw_lookup("inout", 2, &w);
+    hfx_kw_lookup("inout", 2, &w);
     CHECK_INT(w.keyword, MODIFIER);
     CHECK_INT(w.mods, MOD_IN);
-    kw_lookup("", 0, &w);
+    hfx_kw_lookup("", 0, &w);
     CHECK_INT(w.form, KW_TYPE_NONE);
     CHECK_INT(w.keyword, 0);
 }

@@ -56,7 +56,7 @@ static char *join_all(hfx_arena *a, const hfx_token *t) {
 }
 
 /* Preprocesses the file `rel` of the temp folder, read from disk. */
-static void pp_file(pp_run *r, const char *rel, const hfx_pp_options *opt) {
+static void hfx_pp_file(pp_run *r, const char *rel, const hfx_pp_options *opt) {
     hfx_arena_init(&r->arena);
     hfx_diags_init(&r->diags, &r->arena, 0);
     r->toks = hfx_preprocess(&r->arena, &r->diags, path_of(rel), NULL, 0, opt);
@@ -96,7 +96,7 @@ static void search_order(void) {
     const char *dirs[] = {inc};
     hfx_pp_options opt = {NULL, 0, dirs, 1, 0, NULL};
     pp_run r;
-    pp_file(&r, "order.fx", &opt);
+    hfx_pp_file(&r, "order.fx", &opt);
     CHECK_STR(r.out, "a1 b_in_sub common_in_root a2 lib b_in_root end");
     CHECK_STR(r.diag, "");
     hfx_token *t = find_tok(&r, "b_in_sub");
@@ -108,7 +108,7 @@ static void search_order(void) {
     CHECK_INT(t->loc.col, 1);
     CHECK_INT(find_tok(&r, "end")->loc.line, 4);
     done(&r);
-    pp_file(&r, "order.fx", NULL); /* without -I, <lib.fxh> is missing */
+    hfx_pp_file(&r, "order.fx", NULL); /* without -I, <lib.fxh> is missing */
     CHECK_STR(r.diag, "order.fx(2,1): error X1507: failed to open source file: 'lib.fxh'\n");
     CHECK_STR(r.out, "a1 b_in_sub common_in_root a2 b_in_root end");
     done(&r);
@@ -118,7 +118,7 @@ static void backslashes_and_case(void) {
     put("Mixed/Case.FXH", "mixed\n");
     put("cased.fx", "#include \"sub\\\\a.fxh\"\n#include \"mixed/case.fxh\"\n#include \"MIXED\\\\CASE.fxh\"\n");
     pp_run r;
-    pp_file(&r, "cased.fx", NULL);
+    hfx_pp_file(&r, "cased.fx", NULL);
     CHECK_STR(r.out, "a1 b_in_sub common_in_root a2 mixed mixed");
     CHECK_STR(r.diag, "");
     done(&r);
@@ -127,7 +127,7 @@ static void backslashes_and_case(void) {
 static void missing_include(void) {
     put("bad.fx", "float a;\n\n#include \"missing.fxh\"\nfloat b;\n");
     pp_run r;
-    pp_file(&r, "bad.fx", NULL);
+    hfx_pp_file(&r, "bad.fx", NULL);
     CHECK_STR(r.diag, "bad.fx(3,1): error X1507: failed to open source file: 'missing.fxh'\n");
     CHECK_STR(r.out, "float a ; float b ;");
     done(&r);
@@ -138,7 +138,7 @@ static void include_cycle(void) {
     put("cyc_b.fxh", "#include \"cyc_a.fxh\"\n");
     put("cycle.fx", "#include \"cyc_a.fxh\"\nafter\n");
     pp_run r;
-    pp_file(&r, "cycle.fx", NULL);
+    hfx_pp_file(&r, "cycle.fx", NULL);
     /* Frames: cycle.fx, then cyc_a and cyc_b in turn; the 64th (cyc_a) may include no more. */
     CHECK_STR(r.diag, "cyc_a.fxh(1,1): error X1506: #include cycle: 'cyc_b.fxh' includes itself (nesting depth 64)\n");
     CHECK_STR(r.out, "after");
@@ -150,7 +150,7 @@ static void guarded_cycle_is_fine(void) {
     put("g2.fxh", "#include \"g1.fxh\"\ng2\n");
     put("guarded.fx", "#include \"g1.fxh\"\n#include \"g2.fxh\"\n");
     pp_run r;
-    pp_file(&r, "guarded.fx", NULL);
+    hfx_pp_file(&r, "guarded.fx", NULL);
     CHECK_STR(r.out, "g2 g1 g2");
     CHECK_STR(r.diag, "");
     done(&r);
@@ -163,11 +163,11 @@ static void include_depth_limit(void) {
     put("deep.fx", "#include \"d1.fxh\"\n");
     hfx_pp_options opt = {NULL, 0, NULL, 0, 3, NULL};
     pp_run r;
-    pp_file(&r, "deep.fx", &opt);
+    hfx_pp_file(&r, "deep.fx", &opt);
     CHECK_STR(r.diag, "d2.fxh(1,1): error X1506: #include nested too deeply (more than 3 files)\n");
     CHECK_STR(r.out, "d2 d1");
     done(&r);
-    pp_file(&r, "deep.fx", NULL);
+    hfx_pp_file(&r, "deep.fx", NULL);
     CHECK_STR(r.out, "d3 d2 d1");
     done(&r);
 }
@@ -177,7 +177,7 @@ static void pragma_once(void) {
     put("twice.fxh", "twice\n");
     put("once.fx", "#include \"once.fxh\"\n#include \"./once.fxh\"\n#include \"twice.fxh\"\n#include \"twice.fxh\"\n");
     pp_run r;
-    pp_file(&r, "once.fx", NULL);
+    hfx_pp_file(&r, "once.fx", NULL);
     CHECK_STR(r.out, "once twice twice");
     done(&r);
 }
@@ -186,7 +186,7 @@ static void conditionals_are_per_file(void) {
     put("open.fxh", "#if 1\nopen\n");
     put("close.fx", "#if 1\n#include \"open.fxh\"\n#endif\nx\n");
     pp_run r;
-    pp_file(&r, "close.fx", NULL);
+    hfx_pp_file(&r, "close.fx", NULL);
     CHECK_STR(r.diag, "open.fxh(1,1): error X1502: unterminated '#if'\n");
     CHECK_STR(r.out, "open x");
     done(&r);
@@ -196,7 +196,7 @@ static void include_from_macro_and_file_macro(void) {
     put("common2.fxh", "__FILE__ __LINE__\n");
     put("macro.fx", "#define HDR \"common2.fxh\"\n#define ANGLED <common2.fxh>\n#include HDR\n#include ANGLED\n");
     pp_run r;
-    pp_file(&r, "macro.fx", NULL);
+    hfx_pp_file(&r, "macro.fx", NULL);
     CHECK_STR(r.out, "\"common2.fxh\" 1 \"common2.fxh\" 1");
     CHECK_STR(r.diag, "");
     done(&r);
@@ -205,7 +205,7 @@ static void include_from_macro_and_file_macro(void) {
 static void root_read_from_disk_with_crlf_and_bom(void) {
     put("crlf.fx", "\xEF\xBB\xBF#define N 4\r\nfloat a[N];\r\n#if N > 3\r\nbig\r\n#endif\r\n");
     pp_run r;
-    pp_file(&r, "crlf.fx", NULL);
+    hfx_pp_file(&r, "crlf.fx", NULL);
     CHECK_STR(r.out, "float a [ 4 ] ; big");
     CHECK_STR(r.diag, "");
     CHECK_INT(find_tok(&r, "big")->loc.line, 4);
@@ -239,7 +239,7 @@ static void utf16_sources(void) {
     put_utf16("u16le.fx", "// \x01 \x02\r\n#include \"u16be.fxh\"\r\nfloat a[N];\r\n#error done\r\n", false);
     put_utf16("u16be.fxh", "#define N 4 // \x02\n", true);
     pp_run r;
-    pp_file(&r, "u16le.fx", NULL);
+    hfx_pp_file(&r, "u16le.fx", NULL);
     CHECK_STR(r.out, "float a [ 4 ] ;");
     CHECK_STR(r.diag, "u16le.fx(4,1): error X1003: done\n");
     hfx_token *a = find_tok(&r, "a");
