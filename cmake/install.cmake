@@ -13,9 +13,6 @@ set(HFX_INSTALL_PKGCONFIGDIR ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
 install(TARGETS hfx hfx_runtime hfx_compiler hfx_common
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-if(TARGET hfx_shared) # libhfx.so: the public API only (HFX_API)
-  install(TARGETS hfx_shared LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-endif()
 foreach(tool hfxc hfxview)
   if(TARGET ${tool})
     install(TARGETS ${tool} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
