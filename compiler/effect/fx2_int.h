@@ -1,5 +1,6 @@
 /* fx2_int.h: what the fx_2_0 reader's files (fx2_read.c, fx2_states.c, fxlvm.c, fx2_list.c)
- * share. Not a contract: nothing else includes it. The layout is in docs/fx2.md. */
+ * and its writer's (fx2_write.c, fxlvm_write.c) share. Not a contract: nothing else includes
+ * it. The layout is in docs/fx2.md. */
 #ifndef HFX_FX2_INT_H
 #define HFX_FX2_INT_H
 
@@ -11,6 +12,9 @@
 #include "bytes.h"
 #include "eval.h"
 
+/* An fx_2_0 container's first word. */
+enum { FX2_MAGIC = 0xFEFF0901u };
+
 /* D3DXPARAMETER_CLASS and D3DXPARAMETER_TYPE as the file stores them. */
 enum { PC_SCALAR, PC_VECTOR, PC_MATRIX_ROWS, PC_MATRIX_COLUMNS, PC_OBJECT, PC_STRUCT, PC_COUNT };
 enum {
@@ -21,6 +25,17 @@ enum {
 
 /* The state operations of fx_2_0 (D3DX's table order): the ones the reader treats apart. */
 enum { OP_VERTEXSHADER = 146, OP_PIXELSHADER = 147, OP_TEXTURE = 164, OP_SAMPLER = 178, OP_COUNT = 179 };
+
+/* FXLVM, fxc's expression programs (fxlvm.c reads them, fxlvm_write.c writes them): an operand's
+ * register table, the opcodes (each instruction token's low 16 bits), the comment blocks' fourccs. */
+enum { T_IMM = 1, T_CONST = 2, T_OUT = 4, T_TEMP = 7 };
+enum {
+    FXLVM_MOV = 0x100, FXLVM_NEG = 0x101, FXLVM_RCP = 0x103, FXLVM_FRC = 0x104, FXLVM_EXP = 0x105, FXLVM_LOG = 0x106,
+    FXLVM_RSQ = 0x107, FXLVM_SIN = 0x108, FXLVM_COS = 0x109, FXLVM_ASIN = 0x10a, FXLVM_ACOS = 0x10b, FXLVM_ATAN = 0x10c,
+    FXLVM_MIN = 0x200, FXLVM_MAX = 0x201, FXLVM_LT = 0x202, FXLVM_GE = 0x203, FXLVM_ADD = 0x204, FXLVM_MUL = 0x205,
+    FXLVM_ATAN2 = 0x206, FXLVM_DIV = 0x208, FXLVM_CMP = 0x300, FXLVM_DOT = 0x500, FXLVM_DOTSWIZ = 0x70e
+};
+enum { FXLVM_CLIT = 0x54494c43u, FXLVM_FXLC = 0x434c5846u };
 
 /* Resource usages (the large objects' fifth word). */
 enum { USE_NONE = -1, USE_DATA = 0, USE_PARAM = 1, USE_SELECTOR = 2 };

@@ -9,7 +9,7 @@
 
 #include "effect/fx2_int.h"
 
-enum { FX2_MAGIC = 0xFEFF0901u, XNA_MAGIC = 0xBCF00BCFu, MAX_TYPE_DEPTH = 16, MAX_ELEMENTS = 1u << 16 };
+enum { XNA_MAGIC = 0xBCF00BCFu, MAX_TYPE_DEPTH = 16, MAX_ELEMENTS = 1u << 16 };
 
 int hfx_fx2_is_binary(const void *data, size_t size) {
     const uint8_t *p = data;

@@ -20,8 +20,6 @@
 #include "grow.h"
 #include "states.h"
 
-enum { FX2_MAGIC = 0xFEFF0901u };
-
 typedef struct bytes {
     uint8_t *d;
     uint32_t n, cap;

@@ -24,7 +24,6 @@
 #include "effect/fx2_int.h"
 #include "eval_code.h"
 
-enum { T_IMM = 1, T_CONST = 2, T_OUT = 4, T_TEMP = 7 };
 enum { MAX_REGS = 256, MAX_COMPONENTS = MAX_REGS * 4, MAX_WORDS = 1u << 16, MAX_DEPTH = 512 };
 
 typedef enum { N_CONST, N_PARAM, N_ELEMENT, N_TABLE, N_CALL, N_BINARY, N_SELECT_GE, N_CONVERT, N_NEG } node_kind;
@@ -309,11 +308,11 @@ typedef struct opinfo {
 } opinfo;
 
 static const opinfo ops[] = {
-    {0x100, 1, "mov"}, {0x101, 1, "neg"}, {0x103, 1, "rcp"}, {0x104, 1, "frc"}, {0x105, 1, "exp"}, {0x106, 1, "log"},
-    {0x107, 1, "rsq"}, {0x108, 1, "sin"}, {0x109, 1, "cos"}, {0x10a, 1, "asin"}, {0x10b, 1, "acos"}, {0x10c, 1, "atan"},
-    {0x200, 2, "min"}, {0x201, 2, "max"}, {0x202, 2, "lt"}, {0x203, 2, "ge"}, {0x204, 2, "add"}, {0x205, 2, "mul"},
-    {0x206, 2, "atan2"}, {0x208, 2, "div"}, {0x300, 3, "cmp"}, {0x500, 2, "dot"}, {0x70e, 6, "dotswiz"},
-    {0x70e, 8, "dotswiz"}};
+    {FXLVM_MOV, 1, "mov"}, {FXLVM_NEG, 1, "neg"}, {FXLVM_RCP, 1, "rcp"}, {FXLVM_FRC, 1, "frc"}, {FXLVM_EXP, 1, "exp"},
+    {FXLVM_LOG, 1, "log"}, {FXLVM_RSQ, 1, "rsq"}, {FXLVM_SIN, 1, "sin"}, {FXLVM_COS, 1, "cos"}, {FXLVM_ASIN, 1, "asin"},
+    {FXLVM_ACOS, 1, "acos"}, {FXLVM_ATAN, 1, "atan"}, {FXLVM_MIN, 2, "min"}, {FXLVM_MAX, 2, "max"}, {FXLVM_LT, 2, "lt"},
+    {FXLVM_GE, 2, "ge"}, {FXLVM_ADD, 2, "add"}, {FXLVM_MUL, 2, "mul"}, {FXLVM_ATAN2, 2, "atan2"}, {FXLVM_DIV, 2, "div"},
+    {FXLVM_CMP, 3, "cmp"}, {FXLVM_DOT, 2, "dot"}, {FXLVM_DOTSWIZ, 6, "dotswiz"}, {FXLVM_DOTSWIZ, 8, "dotswiz"}};
 
 static const opinfo *find_op(uint32_t code, uint32_t inputs) {
     for (size_t i = 0; i < sizeof ops / sizeof *ops; i++)
@@ -324,27 +323,27 @@ static const opinfo *find_op(uint32_t code, uint32_t inputs) {
 /* The value of one component of an instruction, from its inputs' nodes. */
 static uint32_t compute(vm *m, uint32_t code, const uint32_t *x, uint32_t n) {
     switch (code) {
-    case 0x100: return x[0];
-    case 0x101: return x[0] == HFX_NONE ? HFX_NONE : add_node(m, (node){.kind = N_NEG, .kids = {x[0]}, .kid_count = 1});
-    case 0x103: return op2(m, N_BINARY, HFX_EV_DIV, constant(m, 1.0), x[0]);
-    case 0x104: return call1(m, HFX_EV_FN_FRAC, x[0]);
-    case 0x105: return call1(m, HFX_EV_FN_EXP2, x[0]);
-    case 0x106: return call1(m, HFX_EV_FN_LOG2, call1(m, HFX_EV_FN_ABS, x[0]));
-    case 0x107: return call1(m, HFX_EV_FN_RSQRT, call1(m, HFX_EV_FN_ABS, x[0]));
-    case 0x108: return call1(m, HFX_EV_FN_SIN, x[0]);
-    case 0x109: return call1(m, HFX_EV_FN_COS, x[0]);
-    case 0x10a: return call1(m, HFX_EV_FN_ASIN, x[0]);
-    case 0x10b: return call1(m, HFX_EV_FN_ACOS, x[0]);
-    case 0x10c: return call1(m, HFX_EV_FN_ATAN, x[0]);
-    case 0x200: return op2(m, N_CALL, HFX_EV_FN_MIN, x[0], x[1]);
-    case 0x201: return op2(m, N_CALL, HFX_EV_FN_MAX, x[0], x[1]);
-    case 0x202: return add_node(m, (node){.kind = N_CONVERT, .kids = {op2(m, N_BINARY, HFX_EV_LT, x[0], x[1])}, .kid_count = 1});
-    case 0x203: return add_node(m, (node){.kind = N_CONVERT, .kids = {op2(m, N_BINARY, HFX_EV_GE, x[0], x[1])}, .kid_count = 1});
-    case 0x204: return op2(m, N_BINARY, HFX_EV_ADD, x[0], x[1]);
-    case 0x205: return op2(m, N_BINARY, HFX_EV_MUL, x[0], x[1]);
-    case 0x206: return op2(m, N_CALL, HFX_EV_FN_ATAN2, x[0], x[1]);
-    case 0x208: return op2(m, N_BINARY, HFX_EV_DIV, x[0], x[1]);
-    case 0x300:
+    case FXLVM_MOV: return x[0];
+    case FXLVM_NEG: return x[0] == HFX_NONE ? HFX_NONE : add_node(m, (node){.kind = N_NEG, .kids = {x[0]}, .kid_count = 1});
+    case FXLVM_RCP: return op2(m, N_BINARY, HFX_EV_DIV, constant(m, 1.0), x[0]);
+    case FXLVM_FRC: return call1(m, HFX_EV_FN_FRAC, x[0]);
+    case FXLVM_EXP: return call1(m, HFX_EV_FN_EXP2, x[0]);
+    case FXLVM_LOG: return call1(m, HFX_EV_FN_LOG2, call1(m, HFX_EV_FN_ABS, x[0]));
+    case FXLVM_RSQ: return call1(m, HFX_EV_FN_RSQRT, call1(m, HFX_EV_FN_ABS, x[0]));
+    case FXLVM_SIN: return call1(m, HFX_EV_FN_SIN, x[0]);
+    case FXLVM_COS: return call1(m, HFX_EV_FN_COS, x[0]);
+    case FXLVM_ASIN: return call1(m, HFX_EV_FN_ASIN, x[0]);
+    case FXLVM_ACOS: return call1(m, HFX_EV_FN_ACOS, x[0]);
+    case FXLVM_ATAN: return call1(m, HFX_EV_FN_ATAN, x[0]);
+    case FXLVM_MIN: return op2(m, N_CALL, HFX_EV_FN_MIN, x[0], x[1]);
+    case FXLVM_MAX: return op2(m, N_CALL, HFX_EV_FN_MAX, x[0], x[1]);
+    case FXLVM_LT: return add_node(m, (node){.kind = N_CONVERT, .kids = {op2(m, N_BINARY, HFX_EV_LT, x[0], x[1])}, .kid_count = 1});
+    case FXLVM_GE: return add_node(m, (node){.kind = N_CONVERT, .kids = {op2(m, N_BINARY, HFX_EV_GE, x[0], x[1])}, .kid_count = 1});
+    case FXLVM_ADD: return op2(m, N_BINARY, HFX_EV_ADD, x[0], x[1]);
+    case FXLVM_MUL: return op2(m, N_BINARY, HFX_EV_MUL, x[0], x[1]);
+    case FXLVM_ATAN2: return op2(m, N_CALL, HFX_EV_FN_ATAN2, x[0], x[1]);
+    case FXLVM_DIV: return op2(m, N_BINARY, HFX_EV_DIV, x[0], x[1]);
+    case FXLVM_CMP:
         if (x[0] == HFX_NONE || x[1] == HFX_NONE || x[2] == HFX_NONE) return HFX_NONE;
         return add_node(m, (node){.kind = N_SELECT_GE, .kids = {x[1], x[2], x[0]}, .kid_count = 3});
     default: { /* dot products: the sum of the products of the two halves */
@@ -465,7 +464,7 @@ static bool load(vm *m, fx2_reader *r, const fx2_blob *blob) {
     memcpy(w, blob->data, (size_t)m->n * 4);
     m->w = w;
     uint32_t at, words;
-    if (find_comment(m, 0x54494c43u /* CLIT */, &at, &words) && words >= 1) {
+    if (find_comment(m, FXLVM_CLIT, &at, &words) && words >= 1) {
         uint32_t count = m->w[at];
         if (count > (words - 1) / 2) {
             fail(m, at, "%sliterals run past their block", "");
@@ -487,7 +486,7 @@ static bool load(vm *m, fx2_reader *r, const fx2_blob *blob) {
 static bool execute(vm *m, fx2_reader *r, const fx2_blob *blob) {
     if (!load(m, r, blob)) return false;
     uint32_t at, size;
-    if (!find_comment(m, 0x434c5846u /* FXLC */, &at, &size) || size < 1) {
+    if (!find_comment(m, FXLVM_FXLC, &at, &size) || size < 1) {
         fail(m, 0, "%sno FXLC block (the code)", "");
         return false;
     }
@@ -590,7 +589,7 @@ char *hfx_fxlvm_text(fx2_reader *r, const fx2_blob *blob) {
     vm m;
     if (!load(&m, r, blob)) return NULL;
     uint32_t at, size;
-    if (!find_comment(&m, 0x434c5846u, &at, &size) || size < 1) return hfx_arena_strdup(r->arena, "");
+    if (!find_comment(&m, FXLVM_FXLC, &at, &size) || size < 1) return hfx_arena_strdup(r->arena, "");
     char *text = hfx_arena_strdup(r->arena, "");
     uint32_t count = m.w[at], i = at + 1, end = at + size;
     for (uint32_t k = 0; k < count && !m.failed; k++) {

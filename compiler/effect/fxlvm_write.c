@@ -14,14 +14,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "effect/fx2_int.h"
 #include "effect/fx2_write.h"
 #include "grow.h"
 #include "eval_code.h"
 
-enum { T_IMM = 1, T_CONST = 2, T_OUT = 4, T_TEMP = 7 };
-enum { OP_MOV = 0x100, OP_NEG = 0x101, OP_RCP = 0x103, OP_FRC = 0x104, OP_EXP = 0x105, OP_LOG = 0x106, OP_RSQ = 0x107,
-       OP_SIN = 0x108, OP_COS = 0x109, OP_ASIN = 0x10a, OP_ACOS = 0x10b, OP_ATAN = 0x10c, OP_MIN = 0x200, OP_MAX = 0x201,
-       OP_LT = 0x202, OP_GE = 0x203, OP_ADD = 0x204, OP_MUL = 0x205, OP_ATAN2 = 0x206, OP_DIV = 0x208, OP_CMP = 0x300 };
 enum { MAX_TEMPS = 1000, MAX_INPUTS = 64, FX_VERSION = 0x46580200u };
 
 typedef struct opnd {
@@ -125,28 +122,28 @@ static opnd boolean(opnd o) { o.integral = true; return o; }
 static opnd plain(wr *w, opnd o) {
     if (!o.indexed) return o;
     bool i = o.integral;
-    o = op1(w, OP_MOV, o);
+    o = op1(w, FXLVM_MOV, o);
     o.integral = i;
     return o;
 }
 
-static opnd neg(wr *w, opnd a) { return op1(w, OP_NEG, a); }
-static opnd sub(wr *w, opnd a, opnd b) { return op2(w, OP_ADD, a, neg(w, b)); }
-static opnd absval(wr *w, opnd a) { return op2(w, OP_MAX, a, neg(w, a)); }
-static opnd floor_of(wr *w, opnd a) { return sub(w, a, op1(w, OP_FRC, a)); }
+static opnd neg(wr *w, opnd a) { return op1(w, FXLVM_NEG, a); }
+static opnd sub(wr *w, opnd a, opnd b) { return op2(w, FXLVM_ADD, a, neg(w, b)); }
+static opnd absval(wr *w, opnd a) { return op2(w, FXLVM_MAX, a, neg(w, a)); }
+static opnd floor_of(wr *w, opnd a) { return sub(w, a, op1(w, FXLVM_FRC, a)); }
 
 /* Truncation toward zero: floor, plus one where a negative value had a fraction. */
 static opnd trunc_of(wr *w, opnd a) {
     if (a.integral) return a;
-    opnd f = op1(w, OP_FRC, a), fl = sub(w, a, f), zero = literal(w, 0.0);
-    opnd up = op2(w, OP_MUL, op2(w, OP_LT, a, zero), op2(w, OP_LT, zero, f));
-    return boolean(op2(w, OP_ADD, fl, up));
+    opnd f = op1(w, FXLVM_FRC, a), fl = sub(w, a, f), zero = literal(w, 0.0);
+    opnd up = op2(w, FXLVM_MUL, op2(w, FXLVM_LT, a, zero), op2(w, FXLVM_LT, zero, f));
+    return boolean(op2(w, FXLVM_ADD, fl, up));
 }
 
 /* x != 0 as 0 / 1. */
 static opnd truth(wr *w, opnd a) {
     if (a.integral && a.table == T_TEMP) return a; /* comparisons already give 0 / 1 */
-    return boolean(op2(w, OP_LT, literal(w, 0.0), absval(w, a)));
+    return boolean(op2(w, FXLVM_LT, literal(w, 0.0), absval(w, a)));
 }
 
 /* --- inputs ---------------------------------------------------------------------------------- */
@@ -233,23 +230,23 @@ static void binary(wr *w, hfx_ev_op op) {
     for (uint32_t i = 0; i < n && !w->failed; i++) {
         opnd a = comp(&x, i), b = comp(&y, i), o;
         switch (op) {
-        case HFX_EV_ADD: o = op2(w, OP_ADD, a, b); break;
+        case HFX_EV_ADD: o = op2(w, FXLVM_ADD, a, b); break;
         case HFX_EV_SUB: o = sub(w, a, b); break;
-        case HFX_EV_MUL: o = op2(w, OP_MUL, a, b); break;
-        case HFX_EV_DIV: o = op2(w, OP_DIV, a, b); if (base != HFX_EV_FLOAT) o = trunc_of(w, o); break;
+        case HFX_EV_MUL: o = op2(w, FXLVM_MUL, a, b); break;
+        case HFX_EV_DIV: o = op2(w, FXLVM_DIV, a, b); if (base != HFX_EV_FLOAT) o = trunc_of(w, o); break;
         case HFX_EV_MOD: { /* a - b * trunc(a / b): fmod, and % on ints */
-            opnd q = trunc_of(w, op2(w, OP_DIV, a, b));
-            o = sub(w, a, op2(w, OP_MUL, b, q));
+            opnd q = trunc_of(w, op2(w, FXLVM_DIV, a, b));
+            o = sub(w, a, op2(w, FXLVM_MUL, b, q));
             break;
         }
-        case HFX_EV_LT: o = boolean(op2(w, OP_LT, a, b)); break;
-        case HFX_EV_GT: o = boolean(op2(w, OP_LT, b, a)); break;
-        case HFX_EV_LE: o = boolean(op2(w, OP_GE, b, a)); break;
-        case HFX_EV_GE: o = boolean(op2(w, OP_GE, a, b)); break;
-        case HFX_EV_EQ: o = boolean(op2(w, OP_MUL, op2(w, OP_GE, a, b), op2(w, OP_GE, b, a))); break;
-        case HFX_EV_NE: o = boolean(op2(w, OP_ADD, op2(w, OP_LT, a, b), op2(w, OP_LT, b, a))); break;
-        case HFX_EV_AND: o = boolean(op2(w, OP_MUL, truth(w, a), truth(w, b))); break;
-        case HFX_EV_OR: o = boolean(op2(w, OP_MAX, truth(w, a), truth(w, b))); break;
+        case HFX_EV_LT: o = boolean(op2(w, FXLVM_LT, a, b)); break;
+        case HFX_EV_GT: o = boolean(op2(w, FXLVM_LT, b, a)); break;
+        case HFX_EV_LE: o = boolean(op2(w, FXLVM_GE, b, a)); break;
+        case HFX_EV_GE: o = boolean(op2(w, FXLVM_GE, a, b)); break;
+        case HFX_EV_EQ: o = boolean(op2(w, FXLVM_MUL, op2(w, FXLVM_GE, a, b), op2(w, FXLVM_GE, b, a))); break;
+        case HFX_EV_NE: o = boolean(op2(w, FXLVM_ADD, op2(w, FXLVM_LT, a, b), op2(w, FXLVM_LT, b, a))); break;
+        case HFX_EV_AND: o = boolean(op2(w, FXLVM_MUL, truth(w, a), truth(w, b))); break;
+        case HFX_EV_OR: o = boolean(op2(w, FXLVM_MAX, truth(w, a), truth(w, b))); break;
         default: fail(w, "bit operations have no form in fxc's expressions"); return;
         }
         if (base != HFX_EV_FLOAT && (op == HFX_EV_ADD || op == HFX_EV_SUB || op == HFX_EV_MUL || op == HFX_EV_MOD))
@@ -264,7 +261,7 @@ static void unary(wr *w, hfx_ev_op op) {
     for (uint32_t i = 0; i < x.n && !w->failed; i++) {
         if (op == HFX_EV_NEG) r->c[i] = neg(w, x.c[i]), r->c[i].integral = x.c[i].integral;
         else if (op == HFX_EV_POS) r->c[i] = x.c[i];
-        else if (op == HFX_EV_NOT) r->c[i] = boolean(op2(w, OP_GE, literal(w, 0.0), absval(w, x.c[i])));
+        else if (op == HFX_EV_NOT) r->c[i] = boolean(op2(w, FXLVM_GE, literal(w, 0.0), absval(w, x.c[i])));
         else fail(w, "bit operations have no form in fxc's expressions");
     }
 }
@@ -272,30 +269,30 @@ static void unary(wr *w, hfx_ev_op op) {
 /* One component of an intrinsic on arguments a[0..n). */
 static opnd call_one(wr *w, hfx_ev_fn fn, const opnd *a) {
     static const struct { hfx_ev_fn fn; uint32_t op; } direct[] = {
-        {HFX_EV_FN_MIN, OP_MIN}, {HFX_EV_FN_MAX, OP_MAX}, {HFX_EV_FN_SIN, OP_SIN}, {HFX_EV_FN_COS, OP_COS},
-        {HFX_EV_FN_ASIN, OP_ASIN}, {HFX_EV_FN_ACOS, OP_ACOS}, {HFX_EV_FN_ATAN, OP_ATAN}, {HFX_EV_FN_ATAN2, OP_ATAN2},
-        {HFX_EV_FN_EXP2, OP_EXP}, {HFX_EV_FN_FRAC, OP_FRC}, {HFX_EV_FN_RSQRT, OP_RSQ}, {HFX_EV_FN_LOG2, OP_LOG}};
+        {HFX_EV_FN_MIN, FXLVM_MIN}, {HFX_EV_FN_MAX, FXLVM_MAX}, {HFX_EV_FN_SIN, FXLVM_SIN}, {HFX_EV_FN_COS, FXLVM_COS},
+        {HFX_EV_FN_ASIN, FXLVM_ASIN}, {HFX_EV_FN_ACOS, FXLVM_ACOS}, {HFX_EV_FN_ATAN, FXLVM_ATAN}, {HFX_EV_FN_ATAN2, FXLVM_ATAN2},
+        {HFX_EV_FN_EXP2, FXLVM_EXP}, {HFX_EV_FN_FRAC, FXLVM_FRC}, {HFX_EV_FN_RSQRT, FXLVM_RSQ}, {HFX_EV_FN_LOG2, FXLVM_LOG}};
     for (size_t i = 0; i < sizeof direct / sizeof *direct; i++)
         if (direct[i].fn == fn) return emit(w, direct[i].op, a, (uint32_t)hfx_ev_fn_args(fn), false);
     opnd zero = literal(w, 0.0), one = literal(w, 1.0);
     switch (fn) {
     case HFX_EV_FN_ABS: return absval(w, a[0]);
-    case HFX_EV_FN_SQRT: return op1(w, OP_RCP, op1(w, OP_RSQ, a[0]));
+    case HFX_EV_FN_SQRT: return op1(w, FXLVM_RCP, op1(w, FXLVM_RSQ, a[0]));
     case HFX_EV_FN_FLOOR: return floor_of(w, a[0]);
     case HFX_EV_FN_CEIL: return neg(w, floor_of(w, neg(w, a[0])));
     case HFX_EV_FN_TRUNC: return trunc_of(w, a[0]);
-    case HFX_EV_FN_ROUND: return floor_of(w, op2(w, OP_ADD, a[0], literal(w, 0.5)));
-    case HFX_EV_FN_SATURATE: return op2(w, OP_MIN, op2(w, OP_MAX, a[0], zero), one);
-    case HFX_EV_FN_CLAMP: return op2(w, OP_MIN, op2(w, OP_MAX, a[0], a[1]), a[2]);
-    case HFX_EV_FN_LERP: return op2(w, OP_ADD, a[0], op2(w, OP_MUL, a[2], sub(w, a[1], a[0])));
-    case HFX_EV_FN_STEP: return boolean(op2(w, OP_GE, a[1], a[0]));
-    case HFX_EV_FN_SIGN: return sub(w, op2(w, OP_LT, zero, a[0]), op2(w, OP_LT, a[0], zero));
-    case HFX_EV_FN_POW: return op1(w, OP_EXP, op2(w, OP_MUL, a[1], op1(w, OP_LOG, a[0])));
-    case HFX_EV_FN_EXP: return op1(w, OP_EXP, op2(w, OP_MUL, a[0], literal(w, 1.4426950408889634)));
-    case HFX_EV_FN_LOG: return op2(w, OP_MUL, op1(w, OP_LOG, a[0]), literal(w, 0.69314718055994531));
-    case HFX_EV_FN_TAN: return op2(w, OP_DIV, op1(w, OP_SIN, a[0]), op1(w, OP_COS, a[0]));
-    case HFX_EV_FN_DEGREES: return op2(w, OP_MUL, a[0], literal(w, 57.295779513082323));
-    case HFX_EV_FN_RADIANS: return op2(w, OP_MUL, a[0], literal(w, 0.017453292519943295));
+    case HFX_EV_FN_ROUND: return floor_of(w, op2(w, FXLVM_ADD, a[0], literal(w, 0.5)));
+    case HFX_EV_FN_SATURATE: return op2(w, FXLVM_MIN, op2(w, FXLVM_MAX, a[0], zero), one);
+    case HFX_EV_FN_CLAMP: return op2(w, FXLVM_MIN, op2(w, FXLVM_MAX, a[0], a[1]), a[2]);
+    case HFX_EV_FN_LERP: return op2(w, FXLVM_ADD, a[0], op2(w, FXLVM_MUL, a[2], sub(w, a[1], a[0])));
+    case HFX_EV_FN_STEP: return boolean(op2(w, FXLVM_GE, a[1], a[0]));
+    case HFX_EV_FN_SIGN: return sub(w, op2(w, FXLVM_LT, zero, a[0]), op2(w, FXLVM_LT, a[0], zero));
+    case HFX_EV_FN_POW: return op1(w, FXLVM_EXP, op2(w, FXLVM_MUL, a[1], op1(w, FXLVM_LOG, a[0])));
+    case HFX_EV_FN_EXP: return op1(w, FXLVM_EXP, op2(w, FXLVM_MUL, a[0], literal(w, 1.4426950408889634)));
+    case HFX_EV_FN_LOG: return op2(w, FXLVM_MUL, op1(w, FXLVM_LOG, a[0]), literal(w, 0.69314718055994531));
+    case HFX_EV_FN_TAN: return op2(w, FXLVM_DIV, op1(w, FXLVM_SIN, a[0]), op1(w, FXLVM_COS, a[0]));
+    case HFX_EV_FN_DEGREES: return op2(w, FXLVM_MUL, a[0], literal(w, 57.295779513082323));
+    case HFX_EV_FN_RADIANS: return op2(w, FXLVM_MUL, a[0], literal(w, 0.017453292519943295));
     default: fail(w, "an intrinsic with no form in fxc's expressions"); return zero;
     }
 }
@@ -307,8 +304,8 @@ static void call(wr *w, hfx_ev_fn fn) {
     for (int i = n - 1; i >= 0; i--) args[i] = pop(w);
     if (fn == HFX_EV_FN_DOT) {
         value *r = push(w, 1, HFX_EV_FLOAT);
-        opnd sum = op2(w, OP_MUL, comp(&args[0], 0), comp(&args[1], 0));
-        for (uint32_t i = 1; i < args[0].n; i++) sum = op2(w, OP_ADD, sum, op2(w, OP_MUL, comp(&args[0], i), comp(&args[1], i)));
+        opnd sum = op2(w, FXLVM_MUL, comp(&args[0], 0), comp(&args[1], 0));
+        for (uint32_t i = 1; i < args[0].n; i++) sum = op2(w, FXLVM_ADD, sum, op2(w, FXLVM_MUL, comp(&args[0], i), comp(&args[1], i)));
         r->c[0] = sum;
         return;
     }
@@ -336,7 +333,7 @@ static void convert(wr *w, hfx_ev_base base, uint32_t n) {
 /* The index operand of a relative read, clamped into [0, count - 1] when it may leave it. */
 static opnd index_of(wr *w, const value *v, uint32_t count, bool clamp) {
     opnd i = plain(w, v->c[0]);
-    if (clamp) i = op2(w, OP_MIN, op2(w, OP_MAX, i, literal(w, 0.0)), literal(w, (double)(count - 1)));
+    if (clamp) i = op2(w, FXLVM_MIN, op2(w, FXLVM_MAX, i, literal(w, 0.0)), literal(w, (double)(count - 1)));
     return i;
 }
 
@@ -423,7 +420,7 @@ static void run(wr *w, const uint32_t *code, uint32_t words) {
             uint32_t n = x.n > y.n ? x.n : y.n;
             value *r = push(w, n, larger(x.base, y.base));
             for (uint32_t k = 0; k < n && !w->failed; k++) /* cmp: -truth(c) >= 0 (c false) takes y */
-                r->c[k] = op3(w, OP_CMP, neg(w, truth(w, comp(&c, k))), comp(&y, k), comp(&x, k));
+                r->c[k] = op3(w, FXLVM_CMP, neg(w, truth(w, comp(&c, k))), comp(&y, k), comp(&x, k));
             break;
         }
         case HFX_EVC_ELEMENT: element(w, (hfx_ev_base)a, b, code[at + 1], code[at + 3]); break;
@@ -496,7 +493,7 @@ uint32_t *hfx_fxlvm_write(const hfx_fx_effect *fx, const uint32_t *code, uint32_
             w.uses[o->offset] = 1;
             continue;
         }
-        put(&w, OP_MOV << 20 | 1u), put(&w, 1), put_opnd(&w, &v.c[k]);
+        put(&w, FXLVM_MOV << 20 | 1u), put(&w, 1), put_opnd(&w, &v.c[k]);
         put_opnd(&w, &(opnd){.table = T_OUT, .offset = k});
         w.instructions++;
     }
@@ -511,10 +508,10 @@ uint32_t *hfx_fxlvm_write(const hfx_fx_effect *fx, const uint32_t *code, uint32_
         out[n++] = 0x42415443u; /* CTAB */
         put_ctab(&w, out, &n, cap);
         out[head] = 0xfffeu | (n - head - 1) << 16;
-        out[n++] = 0xfffeu | (2 * w.lit_count + 2) << 16, out[n++] = 0x54494c43u /* CLIT */, out[n++] = w.lit_count;
+        out[n++] = 0xfffeu | (2 * w.lit_count + 2) << 16, out[n++] = FXLVM_CLIT, out[n++] = w.lit_count;
         memcpy(out + n, w.lit, w.lit_count * sizeof(double));
         n += 2 * w.lit_count;
-        out[n++] = 0xfffeu | (w.code_count + 2) << 16, out[n++] = 0x434c5846u /* FXLC */, out[n++] = w.instructions;
+        out[n++] = 0xfffeu | (w.code_count + 2) << 16, out[n++] = FXLVM_FXLC, out[n++] = w.instructions;
         memcpy(out + n, w.code, w.code_count * sizeof *w.code);
         n += w.code_count;
         out[n++] = 0x0000ffffu;
