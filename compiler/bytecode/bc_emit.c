@@ -1,9 +1,10 @@
-/* hfx_bc_emit.c: instructions as d3d9_inst records (so a later step may still retarget one),
+/* bc_emit.c: instructions as d3d9_inst records (so a later step may still retarget one),
  * temporaries, `def` constants, the CTAB comment and the token stream (Microsoft's "Shader Code
  * Format": instruction, destination and source parameter tokens, comments, END). */
 #include <stdio.h>
 
 #include "bytecode/bc_int.h"
+#include "bytes.h"
 
 void hfx_bc_fail(bc_gen *g, hfx_loc loc, unsigned code, const char *fmt, ...) {
     char msg[256];
@@ -410,8 +411,7 @@ static void put_ctab(bc_gen *g, words *o, uint32_t version) {
     }
     while (b.n % 4) reserve(&b, 1);
     put(o, 0xfffeu | (b.n / 4) << 16);
-    for (uint32_t i = 0; i + 4 <= b.n; i += 4)
-        put(o, (uint32_t)b.b[i] | (uint32_t)b.b[i + 1] << 8 | (uint32_t)b.b[i + 2] << 16 | (uint32_t)b.b[i + 3] << 24);
+    for (uint32_t i = 0; i + 4 <= b.n; i += 4) put(o, hfx_le32(b.b + i));
 }
 
 const uint32_t *hfx_bc_encode(bc_gen *g, uint32_t *count) {

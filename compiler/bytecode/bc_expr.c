@@ -1,4 +1,4 @@
-/* hfx_bc_expr.c: expressions to registers. A variable's value is its registers (no code); arithmetic
+/* bc_expr.c: expressions to registers. A variable's value is its registers (no code); arithmetic
  * takes fresh temporaries (an add of a product is one mad); bools are 0.0 / 1.0 and comparisons
  * are slt / sge (vertex) or cmp (pixel) as fxc writes them; selects are cmp (pixel) or lrp (vertex).
  * Matrices live in registers by row, or by column for column_major parameters: a product picks

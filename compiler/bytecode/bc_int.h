@@ -1,6 +1,6 @@
-/* bc_int.h: what the files of compiler/bytecode/ share. hfx_bc_emit.c: instructions as records,
+/* bc_int.h: what the files of compiler/bytecode/ share. bc_emit.c: instructions as records,
  * registers, constants, the CTAB and the token stream; bc_gen.c: the entry's interface,
- * variables and statements (flattened, unrolled); hfx_bc_expr.c: expressions; bc_intrin.c: the
+ * variables and statements (flattened, unrolled); bc_expr.c: expressions; bc_intrin.c: the
  * intrinsics, one table. */
 #ifndef HFX_BC_INT_H
 #define HFX_BC_INT_H
@@ -73,7 +73,7 @@ typedef struct bc_gen {
     bool failed;
 } bc_gen;
 
-/* --- hfx_bc_emit.c --- */
+/* --- bc_emit.c --- */
 void hfx_bc_fail(bc_gen *g, hfx_loc loc, unsigned code, const char *fmt, ...) __attribute__((format(printf, 4, 5)));
 unsigned hfx_bc_temp_limit(const bc_gen *g);                  /* the model's r registers */
 int hfx_bc_temp(bc_gen *g);                                    /* a free r register, or -1 (error reported) */
@@ -112,7 +112,7 @@ bool hfx_bc_straight_return(const ir_stmt *body);             /* the body return
 void hfx_bc_gen_body(bc_gen *g, const ir_stmt *body);
 bool hfx_bc_writes_param(bc_gen *g, const ir_func *f, const ir_var *p); /* f's body writes its parameter p */
 
-/* --- hfx_bc_expr.c --- */
+/* --- bc_expr.c --- */
 bc_obj hfx_bc_expr(bc_gen *g, const ir_expr *e);
 bool hfx_bc_immutable(const bc_gen *g, const bc_val *v);     /* c / v / t registers nothing writes */
 /* lhs = src; owned: the slots of src whose temporaries it may take (the rest are copied or viewed). */
@@ -129,9 +129,9 @@ bc_val hfx_bc_per_comp(bc_gen *g, uint16_t op, bc_val a, const bc_val *b); /* op
 
 /* --- bc_peep.c --- */
 void hfx_bc_sink(bc_gen *g);                                 /* copies folded into the instructions they copy */
-uint32_t hfx_bc_renumber(bc_gen *g);
+uint32_t hfx_bc_renumber(bc_gen *g);                         /* temporaries renumbered by span; how many */
 void hfx_bc_dead_code(bc_gen *g);                            /* instructions whose results nothing reads */
-void hfx_bc_prune_constants(bc_gen *g);                      /* parameters and defs nothing reads */                         /* temporaries renumbered by span; how many */
+void hfx_bc_prune_constants(bc_gen *g);                      /* parameters and defs nothing reads */
 
 /* --- bc_intrin.c --- */
 bc_obj hfx_bc_intrinsic(bc_gen *g, const ir_expr *e);

@@ -1,4 +1,4 @@
-/* hfx_bc_write.c: one stage to bytecode: the model from the profile, the entry's interface,
+/* bc_write.c: one stage to bytecode: the model from the profile, the entry's interface,
  * parameters and samplers, the body, then the encoded shader decoded again by compiler/d3d9
  * (a malformed stream is hfx's bug: an internal error at the entry) and held to fxc's limits
  * for the model (instruction slots, temporaries, constants). */
