@@ -56,6 +56,20 @@ static hfxc_result *round_trip(const hfx_fx_effect *fx, const hfx_fx2_write_opti
     return r;
 }
 
+/* text compiled, written as fx_2_0 and read back: the read-back effect (NULL when either step
+ * failed, which is checked); the caller frees *r and *back. */
+static const hfx_fx_effect *compile_round_trip(const char *text, hfxc_result **r, hfxc_result **back) {
+    *r = compile(text);
+    *back = NULL;
+    const hfx_fx_effect *src = hfxc_result_effect(*r);
+    CHECK(src != NULL);
+    if (!src) return NULL;
+    *back = round_trip(src, NULL, NULL, NULL);
+    const hfx_fx_effect *fx = hfxc_result_effect(*back);
+    CHECK(fx != NULL);
+    return fx;
+}
+
 /* float Ref = 0.5; one technique, one pass, CullMode = None: every word, by hand. The data
  * (offsets from byte 8) is: 0x00 the empty name; 0x04 "Ref" (length 4, 2 words); 0x0c Ref's
  * typedef (float 3, scalar 0, name 0x04, no semantic, no elements, 1 row, 1 column); 0x28 its
@@ -134,16 +148,13 @@ static uint32_t find_state(const hfx_fx_effect *fx, const char *name) {
  * to the last element as D3D9's relative addressing of an effect's expression does);
  * PointSize = max(Size, 2) is 2 for 1.5 and 3.25 for 3.25. */
 static void expressions_round_trip(void) {
-    hfxc_result *r = compile("float Ref = 0.5; int Index = 2; bool Flip = true; int Modes[3] = {1, 2, 3}; int Sel = 1;\n"
-                             "float Size = 1.5;\n"
-                             "technique T { pass P { AlphaRef = (Ref * 255); StencilRef = (Index * 3 - 1);\n"
-                             "  CullMode = (Flip ? 2 : 3); FillMode = (Modes[Sel]); PointSize = (max(Size, 2.0)); } }\n");
-    const hfx_fx_effect *src = hfxc_result_effect(r);
-    CHECK(src != NULL);
-    if (!src) goto done;
-    hfxc_result *back = round_trip(src, NULL, NULL, NULL);
-    const hfx_fx_effect *fx = hfxc_result_effect(back);
-    CHECK(fx != NULL);
+    hfxc_result *r, *back;
+    const hfx_fx_effect *fx =
+        compile_round_trip("float Ref = 0.5; int Index = 2; bool Flip = true; int Modes[3] = {1, 2, 3}; int Sel = 1;\n"
+                           "float Size = 1.5;\n"
+                           "technique T { pass P { AlphaRef = (Ref * 255); StencilRef = (Index * 3 - 1);\n"
+                           "  CullMode = (Flip ? 2 : 3); FillMode = (Modes[Sel]); PointSize = (max(Size, 2.0)); } }\n",
+                           &r, &back);
     if (fx) {
         uint32_t ref = fx->params[hfx_fx_param_find(fx, "Ref")].offset, index = fx->params[hfx_fx_param_find(fx, "Index")].offset;
         uint32_t flip = fx->params[hfx_fx_param_find(fx, "Flip")].offset, sel = fx->params[hfx_fx_param_find(fx, "Sel")].offset;
@@ -165,7 +176,6 @@ static void expressions_round_trip(void) {
         }
     }
     hfxc_result_free(back);
-done:
     hfxc_result_free(r);
 }
 
@@ -187,14 +197,10 @@ static void inexpressible_expression(void) {
 
 /* Passes that set states alone, or NULL shaders: read back with no program, every state kept. */
 static void null_shaders_and_state_only_passes(void) {
-    hfxc_result *r = compile("technique T { pass A { ZEnable = false; AlphaBlendEnable = true; SrcBlend = SrcAlpha; }\n"
-                             "  pass B { VertexShader = NULL; PixelShader = NULL; CullMode = CW; } }\n");
-    const hfx_fx_effect *src = hfxc_result_effect(r);
-    CHECK(src != NULL);
-    if (!src) goto done;
-    hfxc_result *back = round_trip(src, NULL, NULL, NULL);
-    const hfx_fx_effect *fx = hfxc_result_effect(back);
-    CHECK(fx != NULL);
+    hfxc_result *r, *back;
+    const hfx_fx_effect *fx =
+        compile_round_trip("technique T { pass A { ZEnable = false; AlphaBlendEnable = true; SrcBlend = SrcAlpha; }\n"
+                           "  pass B { VertexShader = NULL; PixelShader = NULL; CullMode = CW; } }\n", &r, &back);
     if (fx) {
         CHECK_INT(fx->pass_count, 2);
         CHECK_INT(fx->passes[0].program, HFX_NONE);
@@ -217,7 +223,6 @@ static void null_shaders_and_state_only_passes(void) {
         CHECK_INT(fx->program_count, 0);
     }
     hfxc_result_free(back);
-done:
     hfxc_result_free(r);
 }
 
