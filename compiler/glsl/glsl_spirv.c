@@ -18,12 +18,9 @@
 
 enum { MAX_OTHER = 64, KNOWN_INTERNAL = HFX_SPIRV_KNOWN_COUNT };
 
+/* A parameter, hfx_c, a sampler or a known internal one: spirv_loc.c's rules place it. */
 static bool placed_by_program(const gp *p, const char *name) {
-    size_t len = strlen(name);
-    uint64_t end;
-    return hfx_fx_spirv_uniform(p->io->fx, p->io->prog, name, len, &end) >= 0 ||
-           hfx_fx_spirv_is_regs(p->io->prog, name, len) || hfx_fx_spirv_sampler(p->io->prog, name, len) >= 0 ||
-           hfx_fx_spirv_known(name, len) >= 0;
+    return hfx_fx_spirv_location(p->io->fx, p->io->prog, name) >= 0;
 }
 
 /* name's place among the uniforms the program does not place, in order of first appearance

@@ -48,8 +48,8 @@ int32_t hfx_spirv_location(const hfx_fx_effect *fx, const hfx_fx_program *p, con
 int hfx_spirv_find(const uint32_t *words, size_t count, const char *name, int32_t *location, int32_t *binding);
 
 /* 1 (and the variable's name) when a UniformConstant variable of the module holds a bool: a
- * uniform struct with bool members, which the rewrite leaves alone and strict validators
- * (spirv-val) reject; 0 when none does, -1 when `words` is not SPIR-V. */
+ * uniform struct with bool members, which the printer's SPIR-V mode leaves bool and strict
+ * validators (spirv-val) reject; 0 when none does, -1 when `words` is not SPIR-V. */
 int hfx_spirv_bool_uniform(const uint32_t *words, size_t count, char *name, size_t name_size);
 
 #endif

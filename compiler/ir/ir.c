@@ -8,16 +8,10 @@
 #include <strings.h>
 
 
-typedef struct var_map {
-    const void **keys;
-    void **vals;
-    uint32_t count, cap;
-} var_map;
-
 typedef struct builder {
     ir_ctx *c;
     ir_shader *sh;
-    var_map globals, locals, funcs;
+    ir_var_map globals, locals, funcs; /* by declaration / function: what the IR has for it */
     ir_func *fn;                 /* the function being built */
     const char **names; uint32_t name_count, name_cap; /* GLSL names taken in fn */
     ir_var **closed_for_vars; uint32_t closed_count, closed_cap; /* for-init vars whose loop ended */
@@ -30,20 +24,6 @@ typedef struct builder {
 static void *grow(hfx_arena *a, void *old, uint32_t *cap, uint32_t count, size_t elem) {
     void *items = old;
     return hfx_grow(&items, elem, count, cap, 8, hfx_arena_grow, a) ? items : NULL;
-}
-
-static void *map_get(const var_map *m, const void *key) {
-    for (uint32_t i = m->count; i-- > 0;)
-        if (m->keys[i] == key) return m->vals[i];
-    return NULL;
-}
-
-static void map_put(hfx_arena *a, var_map *m, const void *key, void *val) {
-    uint32_t cap = m->cap;
-    m->keys = grow(a, m->keys, &cap, m->count, sizeof *m->keys);
-    m->vals = grow(a, m->vals, &m->cap, m->count, sizeof *m->vals);
-    m->keys[m->count] = key;
-    m->vals[m->count++] = val;
 }
 
 ir_expr *hfx_ir_new_expr(ir_ctx *c, ir_expr_kind k, const hfx_type *ty, hfx_loc loc, uint32_t n) {
@@ -93,6 +73,11 @@ static void fail(builder *b, hfx_loc loc, const char *what) {
     b->failed = true;
 }
 
+/* key's IR in one of the builder's maps; out of memory fails the build. */
+static void remember(builder *b, ir_var_map *m, const void *key, void *val) {
+    if (!hfx_ir_var_map_put(b->c, m, key, val)) b->failed = true;
+}
+
 /* A GLSL name for a local, unique in its function so that HLSL's looser scoping (for-loop
  * variables outliving the loop) can be printed by hoisting without clashes. */
 static const char *local_name(builder *b, const char *name) {
@@ -129,7 +114,7 @@ static void add_global(builder *b, ir_var *v) {
 }
 
 static ir_var *global_var(builder *b, const hfx_decl *d, hfx_loc use) {
-    ir_var *v = map_get(&b->globals, d);
+    ir_var *v = hfx_ir_var_map_get(&b->globals, d);
     if (v) return v;
     const hfx_fx_effect *fx = b->c->fx;
     bool is_static = (d->mods & MOD_STATIC) != 0;
@@ -154,7 +139,7 @@ static ir_var *global_var(builder *b, const hfx_decl *d, hfx_loc use) {
         v = new_var(b, IRV_PRIVATE, d, d->type);
         v->glsl = hfx_arena_printf(b->c->arena, "hfx_static_%s", d->name);
     }
-    map_put(b->c->arena, &b->globals, d, v);
+    remember(b, &b->globals, d, v);
     add_global(b, v);
     if (v->kind == IRV_PRIVATE && d->init) {
         ir_func *saved = b->fn;
@@ -171,7 +156,7 @@ static ir_var *lookup_var(builder *b, const hfx_expr *e) {
         fail(b, e->loc, hfx_arena_printf(b->c->arena, "'%s': unresolved name", e->name ? e->name : "?"));
         return NULL;
     }
-    ir_var *v = map_get(&b->locals, d);
+    ir_var *v = hfx_ir_var_map_get(&b->locals, d);
     if (v) {
         for (uint32_t i = 0; i < b->closed_count; i++)
             if (b->closed_for_vars[i] == v) v->hoisted = true;
@@ -516,7 +501,7 @@ static void build_decls(builder *b, const hfx_stmt *s, stmt_list *out) {
         ir_stmt *st = new_stmt(b, IS_DECL, d->loc);
         st->var = v;
         if (d->init && !(st->expr = build_expr(b, d->init))) return;
-        map_put(b->c->arena, &b->locals, d, v);
+        remember(b, &b->locals, d, v);
         list_add(b, out, st);
     }
 }
@@ -615,7 +600,7 @@ static void add_func(builder *b, ir_func *f) {
 /* Builds f (once per shader) and, first, every function it calls. */
 static ir_func *build_func(builder *b, const hfx_func *f, hfx_loc use) {
     if (f->definition) f = f->definition;
-    ir_func *r = map_get(&b->funcs, f);
+    ir_func *r = hfx_ir_var_map_get(&b->funcs, f);
     if (r) {
         if (!r->body) fail(b, use, hfx_arena_printf(b->c->arena, "'%s': recursive calls are not allowed", f->name));
         return r->body ? r : NULL;
@@ -634,16 +619,16 @@ static ir_func *build_func(builder *b, const hfx_func *f, hfx_loc use) {
     r->ret = f->ret;
     r->ret_semantic = f->ret_semantic;
     r->src = f;
-    map_put(b->c->arena, &b->funcs, f, r);
+    remember(b, &b->funcs, f, r);
 
     /* a fresh local scope; the caller's is restored afterwards */
-    var_map saved_locals = b->locals;
+    ir_var_map saved_locals = b->locals;
     const char **saved_names = b->names;
     uint32_t saved_nc = b->name_count, saved_ncap = b->name_cap;
     ir_var **saved_closed = b->closed_for_vars;
     uint32_t saved_cc = b->closed_count, saved_ccap = b->closed_cap;
     ir_func *saved_fn = b->fn;
-    b->locals = (var_map){0};
+    b->locals = (ir_var_map){0};
     b->names = NULL;
     b->name_count = b->name_cap = 0;
     b->closed_for_vars = NULL;
@@ -657,7 +642,7 @@ static ir_func *build_func(builder *b, const hfx_func *f, hfx_loc use) {
         ir_var *v = new_var(b, IRV_PARAM, d, d->type);
         v->glsl = local_name(b, d->name);
         r->params[i] = v;
-        map_put(b->c->arena, &b->locals, d, v);
+        remember(b, &b->locals, d, v);
     }
     ir_stmt *body = build_block_of(b, f->body->body, f->body->body_count, f->body->loc, IS_BLOCK);
     b->locals = saved_locals;

@@ -59,11 +59,11 @@ struct ir_var {
     const char *pre_text;
 };
 
-/* A pass's facts about variables, keyed by the variable (var_map.c): zero-initialise; lives in
- * the arena, so nothing to free. */
-typedef struct ir_var_map { const ir_var **keys; void **vals; uint32_t count, cap; } ir_var_map;
-bool hfx_ir_var_map_put(ir_ctx *c, ir_var_map *m, const ir_var *v, void *val); /* false: out of memory */
-void *hfx_ir_var_map_get(const ir_var_map *m, const ir_var *v);                /* NULL when absent */
+/* A pass's facts about variables, keyed by the variable (var_map.c); the builder (ir.c) keys its
+ * declarations and functions the same way. Zero-initialise; lives in the arena, so nothing to free. */
+typedef struct ir_var_map { const void **keys; void **vals; uint32_t count, cap; } ir_var_map;
+bool hfx_ir_var_map_put(ir_ctx *c, ir_var_map *m, const void *key, void *val); /* false: out of memory */
+void *hfx_ir_var_map_get(const ir_var_map *m, const void *key);                /* NULL when absent */
 
 typedef enum {
     IE_CONST,     /* cval[] holds type's components (row-major), by base: b/i/f */

@@ -49,20 +49,24 @@ static bool intrinsic_ok(const ir_expr *e) {
     return info && info->fold != HFX_EV_FN_NONE && (int)e->n == hfx_ev_fn_args(info->fold);
 }
 
-static bool binary_ok(const ir_expr *e) {
+/* value: a state value's operation, not a preshader's. */
+static bool binary_ok(const ir_expr *e, bool value) {
     hfx_ev_op op;
     if (!hfx_op_ev(e->op, &op)) return false;
-    /* an integer division by zero has no value the CPU could agree with the GPU on */
-    return !((op == HFX_EV_DIV || op == HFX_EV_MOD) && e->type->base != B_FLOAT && e->type->base != B_HALF);
+    /* an integer division by zero has no value the CPU could agree with the GPU on; a state
+     * value has no GPU side (`VertexShader = (VSArray[Index / 2]);`): the runtime does not fold
+     * one by zero and keeps the state's last value */
+    return value || !((op == HFX_EV_DIV || op == HFX_EV_MOD) && e->type->base != B_FLOAT && e->type->base != B_HALF);
 }
 
-bool hfx_ir_pre_node(const ir_ctx *c, const ir_expr *e) {
+/* e computes from operands the writer computes (hfx_ir_pre_node); value: in a state value. */
+static bool node_ok(const ir_ctx *c, const ir_expr *e, bool value) {
     if (e->kind != IE_INDEX && e->kind != IE_VAR && !numeric_base(e->type)) return false;
     switch (e->kind) {
     case IE_CONST: return true;
     case IE_VAR: return param_leaf(c, e->var) || param_array(c, e) != NULL;
     case IE_UNARY: return e->op == OP_NEG || e->op == OP_POS || e->op == OP_NOT || e->op == OP_BITNOT;
-    case IE_BINARY: return binary_ok(e);
+    case IE_BINARY: return binary_ok(e, value);
     case IE_SELECT: case IE_CONSTRUCT: case IE_SWIZZLE: return true;
     case IE_CONVERT: return hfx_type_is_numeric(e->a[0]->type);
     case IE_INTRIN: return intrinsic_ok(e);
@@ -73,6 +77,8 @@ bool hfx_ir_pre_node(const ir_ctx *c, const ir_expr *e) {
     default: return false;
     }
 }
+
+bool hfx_ir_pre_node(const ir_ctx *c, const ir_expr *e) { return node_ok(c, e, false); }
 
 bool hfx_ir_pre_only(const ir_ctx *c, const ir_expr *e) {
     for (uint32_t i = 0; i < e->n; i++)
@@ -100,13 +106,6 @@ static bool const_array(const ir_expr *a) {
 
 static bool table_read(const ir_expr *e) { return e->kind == IE_INDEX && const_array(e->a[0]); }
 
-/* An integer / or %: a state value's (`VertexShader = (VSArray[Index / 2]);`). The runtime
- * does not fold one by zero and keeps the state's last value; a preshader leaves it to the GPU. */
-static bool value_division(const ir_expr *e) {
-    hfx_ev_op op;
-    return e->kind == IE_BINARY && numeric_base(e->type) && hfx_op_ev(e->op, &op) && (op == HFX_EV_DIV || op == HFX_EV_MOD);
-}
-
 typedef struct pc {
     ir_ctx *c;
     uint32_t *w; uint32_t n, cap;
@@ -114,9 +113,9 @@ typedef struct pc {
     bool value;   /* a state value's program, not a preshader's */
 } pc;
 
-/* What the writer can write: a preshader's nodes, and a value's table reads and divisions. */
+/* What the writer can write: a preshader's nodes (a value's integer divisions too), and table reads. */
 static bool writable(const pc *p, const ir_expr *e) {
-    return table_read(e) || hfx_ir_pre_node(p->c, e) || (p->value && value_division(e));
+    return table_read(e) || node_ok(p->c, e, p->value);
 }
 
 static void put(pc *p, uint32_t w) {

@@ -43,6 +43,19 @@ static hfxc_result *compile_seed(const char *name, unsigned targets) {
     return r;
 }
 
+/* src compiled as `name` for targets; its diagnostics printed when it fails. */
+static hfxc_result *compile_source(const char *src, const char *name, unsigned targets) {
+    hfxc_options o = {0};
+    o.targets = targets;
+    hfxc_result *r = hfxc_compile_memory(src, strlen(src), name, &o);
+    if (!hfxc_result_ok(r)) {
+        char *d = hfxc_diagnostics_text(r);
+        fprintf(stderr, "%s: %s\n", name, d);
+        free(d);
+    }
+    return r;
+}
+
 static const uint32_t *words_of(const hfx_fx_code *c, size_t *count) {
     *count = c->size / 4;
     return (const uint32_t *)(const void *)c->data;
@@ -245,15 +258,8 @@ static void locations_are_per_program(void) {
                       "technique t { pass a { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); }\n"
                       "  pass b { VertexShader = compile vs_3_0 VS1(); PixelShader = compile ps_3_0 PS(); }\n"
                       "  pass c { VertexShader = compile vs_3_0 VS2(); PixelShader = compile ps_3_0 PS(); } }\n";
-    hfxc_options o = {0};
-    o.targets = SPIRV;
-    hfxc_result *r = hfxc_compile_memory(src, strlen(src), "big.fx", &o);
+    hfxc_result *r = compile_source(src, "big.fx", SPIRV);
     const hfx_fx_effect *fx = hfxc_result_effect(r);
-    if (!fx) {
-        char *d = hfxc_diagnostics_text(r);
-        fprintf(stderr, "%s\n", d);
-        free(d);
-    }
     CHECK(fx != NULL);
     if (fx) {
         CHECK_INT(fx->program_count, 3);
@@ -299,9 +305,7 @@ static void printer_spirv_mode(void) {
                       "float4 PS(float2 uv : TEXCOORD0) : COLOR { return on ? tex2D(s, uv) * m[2][0] : 0; }\n"
                       "technique t { pass p { AlphaTestEnable = true;\n"
                       "  VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }\n";
-    hfxc_options o = {0};
-    o.targets = SPIRV;
-    hfxc_result *r = hfxc_compile_memory(src, strlen(src), "mode.fx", &o);
+    hfxc_result *r = compile_source(src, "mode.fx", SPIRV);
     const hfx_fx_effect *fx = hfxc_result_effect(r);
     CHECK(fx != NULL);
     if (fx) {
@@ -329,8 +333,6 @@ static void printer_spirv_mode(void) {
     hfxc_result_free(r);
 }
 
-static hfxc_result *compile_source(const char *src, unsigned targets);
-
 /* A bool uniform named like a struct field or a parameter is read converted all the same (the
  * text rewrite once kept it bool there: a #define would have broken the field and the parameter). */
 static void bool_named_like_a_field(void) {
@@ -343,7 +345,7 @@ static void bool_named_like_a_field(void) {
     for (int i = 0; i < 2; i++) {
         char src[512];
         snprintf(src, sizeof src, "%s%s", srcs[i], "technique t { pass p { PixelShader = compile ps_3_0 PS(); } }\n");
-        hfxc_result *r = compile_source(src, SPIRV);
+        hfxc_result *r = compile_source(src, "bools.fx", SPIRV);
         const hfx_fx_effect *fx = hfxc_result_effect(r);
         CHECK(fx != NULL);
         if (fx) {
@@ -358,12 +360,6 @@ static void bool_named_like_a_field(void) {
         }
         hfxc_result_free(r);
     }
-}
-
-static hfxc_result *compile_source(const char *src, unsigned targets) {
-    hfxc_options o = {0};
-    o.targets = targets;
-    return hfxc_compile_memory(src, strlen(src), "bools.fx", &o);
 }
 
 static uint32_t count_warnings(const hfxc_result *r, const char *needle) {
@@ -385,7 +381,7 @@ static void bool_uniforms(void) {
     snprintf(src, sizeof src, "%sfloat4 PS(float2 uv : TEXCOORD0) : COLOR {\n"
                               "  float4 c = tex2D(samp, uv);\n"
                               "  if (flags[2] && bb.y && one) c *= 2;\n  return c;\n}\n%s", common, tail);
-    hfxc_result *r = compile_source(src, SPIRV);
+    hfxc_result *r = compile_source(src, "bools.fx", SPIRV);
     const hfx_fx_effect *fx = hfxc_result_effect(r);
     CHECK(fx != NULL);
     CHECK_INT(count_warnings(r, "bool"), 0);
@@ -411,7 +407,7 @@ static void bool_uniforms(void) {
                               "float4 PS(float2 uv : TEXCOORD0) : COLOR {\n"
                               "  float4 c = tex2D(samp, uv);\n"
                               "  if (lights[1].on) c *= 2;\n  return c;\n}\n%s", common, tail);
-    r = compile_source(src, SPIRV);
+    r = compile_source(src, "bools.fx", SPIRV);
     fx = hfxc_result_effect(r);
     CHECK(fx != NULL);
     CHECK_INT(count_warnings(r, "'lights': a uniform with bool members stays bool in SPIR-V"), 1);
