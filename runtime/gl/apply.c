@@ -3,11 +3,6 @@
  * program, uploads the parameters that changed since that program last saw them, binds textures
  * and sampler objects, and sets render states; everything goes through the device's shadow, so
  * an Apply with nothing changed makes no GL call. */
-#include <ctype.h>
-#include <string.h>
-#include <strings.h>
-
-#include "eval_code.h"
 #include "gl/gl_int.h"
 
 static void bind_textures(hfx_effect *fx, const hfx_rt_pass *rp) {
