@@ -326,7 +326,7 @@ static void directx_names_light_the_sphere(void) {
     CHECK_CONTAINS(out, "hfxview: 1 parameter not bound, left at the effect's values: Mystery = 0\n");
     free(out);
     out = NULL;
-    char *cmd = view_format("%s %s/c.fx --list", hfxview, tmp);
+    char *cmd = view_format("%s %s/view.fx --list", hfxview, tmp); /* the file run_view wrote */
     CHECK_INT(view_run(cmd, &out), 0);
     CHECK_CONTAINS(out, "parameter g_LightDir  (name: light direction)\n");
     CHECK_CONTAINS(out, "parameter Mystery  (not bound: the effect's value)\n");
