@@ -1,19 +1,13 @@
 /* apply.c: Passes[i].Apply(), Begin and End for every back end. The core checks the handles
  * and the order of the calls (D3DX refuses a second Begin before End), and the back end's table
  * does the work: GL's Apply keeps its own short way for a pass applied again (gl/apply.c), so
- * the dispatch costs one indirect call per Apply. */
+ * the dispatch costs one indirect call per Apply. Vulkan's Apply records into a command buffer,
+ * so it has its own entry (hfx_pass_apply_vk, vk/apply.c) and refuses hfx_pass_apply. */
 #include "internal.h"
-
-/* One entry for every back end's Apply: hfx_pass_apply passes no target, another back end's
- * own Apply (hfx_pass_apply_vk) its description of where it draws. */
-int hfx_rt_pass_apply(hfx_pass *p, const void *target) {
-    if (!p) return HFX_ERR_NULL;
-    return p->fx->dev->be->pass_apply(p, target);
-}
 
 int hfx_pass_apply(hfx_pass *p) {
     if (!p) return HFX_ERR_NULL;
-    return p->fx->dev->be->pass_apply(p, NULL);
+    return p->fx->dev->be->pass_apply(p);
 }
 
 /* A second snapshot would make end restore the effect's own states rather than the

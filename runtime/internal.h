@@ -37,9 +37,9 @@ typedef struct hfx_backend {
     void (*device_destroy)(hfx_device *dev);
     hfx_target (*target_for)(hfx_target asked);           /* the shader target it loads */
     int (*cache_usable)(const hfx_device *dev);            /* a program cache; NULL: none */
-    /* Passes[i].Apply(): target is NULL from hfx_pass_apply, the back end's own description of
-     * where it draws from its own entry (hfx_pass_apply_vk's command buffer and target). */
-    int (*pass_apply)(hfx_pass *p, const void *target);
+    /* hfx_pass_apply (Passes[i].Apply()); a back end whose Apply needs more (Vulkan's command
+     * buffer and target) refuses here and has its own entry (hfx_pass_apply_vk). */
+    int (*pass_apply)(hfx_pass *p);
     /* Begin saves what the passes will change, End puts it back; apply.c checks the order. */
     int (*effect_begin)(hfx_effect *e);
     int (*effect_end)(hfx_effect *e);
@@ -250,9 +250,6 @@ void hfx_rt_copy_textures(hfx_effect *to, uint32_t j, const hfx_effect *from, ui
 int hfx_rt_watch_set(hfx_watch *w, struct hfx_rt_files *files); /* takes files; 0 or -1 */
 int hfx_rt_watch_copy(hfx_watch *to, const hfx_watch *from);
 void hfx_rt_watch_free(hfx_watch *w);
-
-/* apply.c: the one entry of every back end's Apply (hfx_pass_apply passes target NULL). */
-int hfx_rt_pass_apply(hfx_pass *p, const void *target);
 
 /* device_core.c */
 int hfx_rt_fail(hfx_device *dev, int code, const char *fmt, ...) __attribute__((format(printf, 3, 4)));

@@ -3,11 +3,6 @@
  * program, uploads the parameters that changed since that program last saw them, binds textures
  * and sampler objects, and sets render states; everything goes through the device's shadow, so
  * an Apply with nothing changed makes no GL call. */
-#include <ctype.h>
-#include <string.h>
-#include <strings.h>
-
-#include "eval_code.h"
 #include "gl/gl_int.h"
 
 static void bind_textures(hfx_effect *fx, const hfx_rt_pass *rp) {
@@ -92,10 +87,8 @@ static int apply_full(hfx_pass *p) {
 }
 
 /* A pass other than the last one applied; a program-only one becomes the device's last. */
-static __attribute__((noinline)) int apply_first(hfx_pass *p, const void *target) {
+static __attribute__((noinline)) int apply_first(hfx_pass *p) {
     hfx_device *dev = p->fx->dev;
-    if (target) /* only another back end's Apply passes a target */
-        return hfx_rt_fail(dev, HFX_ERR_NOT_FOUND, "this device is OpenGL's: apply its passes with hfx_pass_apply");
     dev->applied = NULL;
     int rc = apply_full(p);
     if (p->rt->direct) dev->applied = p;
@@ -104,15 +97,15 @@ static __attribute__((noinline)) int apply_first(hfx_pass *p, const void *target
 
 /* The same program-only pass again, with no other state set since, only uploads what the
  * parameters' log holds past what its program saw: the per-draw path of a game loop. */
-int hfx_gl_pass_apply(hfx_pass *p, const void *target) {
+int hfx_gl_pass_apply(hfx_pass *p) {
     hfx_effect *fx = p->fx;
-    if (fx->dev->applied != p || target) return apply_first(p, target);
+    if (fx->dev->applied != p) return apply_first(p);
     hfx_rt_program *prog = p->rt->prog;
     if (prog->switch_count) { /* the variant apply_full picked; a bool can change only with the log */
         hfx_rt_program *base = prog;
         prog = p->switched;
         if (prog->memo_seen != fx->log_len && hfx_rt_switch_mask(base, fx->values) != p->switch_mask)
-            return apply_first(p, NULL);
+            return apply_first(p);
     }
     uint64_t seen = prog->memo_seen;
     if (seen == fx->log_len) return HFX_OK;

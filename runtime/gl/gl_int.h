@@ -250,7 +250,7 @@ void hfx_rt_textures_free(hfx_device *dev);
 
 /* apply.c: Apply, Begin and End on GL (the table's pass_apply, effect_begin, effect_end,
  * begun_carry). */
-int hfx_gl_pass_apply(hfx_pass *p, const void *target);
+int hfx_gl_pass_apply(hfx_pass *p);
 int hfx_gl_effect_begin(hfx_effect *fx);
 int hfx_gl_effect_end(hfx_effect *fx);
 void hfx_gl_begun_carry(hfx_effect *to, const hfx_effect *from);

@@ -217,21 +217,15 @@ static const char *check_target(const hfx_vk_target *t) {
     return NULL;
 }
 
-/* Where Apply records: hfx_pass_apply_vk's arguments through the core's one Apply entry. */
-typedef struct vk_apply_target {
-    VkCommandBuffer cmd;
-    const hfx_vk_target *t;
-} vk_apply_target;
+/* The table's pass_apply, reached from hfx_pass_apply: it has no command buffer to record into. */
+int hfx_vk_pass_apply(hfx_pass *p) {
+    return hfx_rt_fail(p->fx->dev, HFX_ERR_NOT_FOUND, "hfx_pass_apply: this device is Vulkan's; apply its passes "
+                       "with hfx_pass_apply_vk");
+}
 
-/* The table's pass_apply: target is a vk_apply_target, or NULL from hfx_pass_apply (which has
- * no command buffer to record into). */
-int hfx_vk_pass_apply(hfx_pass *p, const void *target) {
-    if (!target)
-        return hfx_rt_fail(p->fx->dev, HFX_ERR_NOT_FOUND, "hfx_pass_apply: this device is Vulkan's; apply its passes "
-                           "with hfx_pass_apply_vk");
-    const vk_apply_target *at = target;
-    VkCommandBuffer cmd = at->cmd;
-    const hfx_vk_target *t = at->t;
+/* Apply recorded into cmd; hfx_pass_apply_vk has checked that the device is Vulkan's and that
+ * cmd and t are set. */
+static int apply_vk(hfx_pass *p, VkCommandBuffer cmd, const hfx_vk_target *t) {
     hfx_effect *fx = p->fx;
     hfx_device *dev = fx->dev;
     if (!dev->vk->serial) return fail(dev, HFX_ERR_NOT_FOUND, "call hfx_device_begin_frame_vk before the first Apply");
@@ -261,6 +255,5 @@ int hfx_vk_pass_apply(hfx_pass *p, const void *target) {
 int hfx_pass_apply_vk(hfx_pass *p, VkCommandBuffer cmd, const hfx_vk_target *t) {
     if (!p || !cmd || !t) return p ? fail(p->fx->dev, HFX_ERR_NULL, "NULL command buffer or target") : HFX_ERR_NULL;
     if (!p->fx->dev->vk) return fail(p->fx->dev, HFX_ERR_NOT_FOUND, "the effect was not loaded on a Vulkan device");
-    vk_apply_target at = {cmd, t};
-    return hfx_rt_pass_apply(p, &at);
+    return apply_vk(p, cmd, t);
 }

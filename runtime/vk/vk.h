@@ -205,8 +205,9 @@ struct hfx_vk_instance {
 /* backend.c */
 extern const hfx_backend hfx_vk_backend;
 
-/* apply.c: the table's pass_apply (target: hfx_pass_apply_vk's command buffer and target). */
-int hfx_vk_pass_apply(hfx_pass *p, const void *target);
+/* apply.c: the table's pass_apply, which refuses (Apply records into hfx_pass_apply_vk's
+ * command buffer). */
+int hfx_vk_pass_apply(hfx_pass *p);
 
 /* device.c */
 void hfx_vk_device_destroy(hfx_device *dev);

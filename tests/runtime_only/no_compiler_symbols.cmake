@@ -8,31 +8,13 @@ foreach(v NM RUNTIME_ONLY WITH_COMPILER COMPILER_LIB)
   endif()
 endforeach()
 
-# The functions and data a file defines, one name per list element: a library's globals, and a
-# program's every symbol (the libraries are built with hidden visibility, so their functions are
-# local in a linked program).
-function(defined_globals file out)
-  set(scope -g)
-  if(ARGV2)
-    set(scope)
-  endif()
-  execute_process(COMMAND ${NM} --defined-only ${scope} ${file} OUTPUT_VARIABLE text RESULT_VARIABLE rc ERROR_QUIET)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "${NM} ${file} failed (${rc})")
-  endif()
-  string(REGEX MATCHALL "[0-9a-fA-F]+ [TDBRtdbr] [A-Za-z_][A-Za-z0-9_.]*" lines "${text}")
-  set(names "")
-  foreach(l IN LISTS lines)
-    string(REGEX REPLACE "^[0-9a-fA-F]+ [TDBRtdbr] " "" n "${l}")
-    list(APPEND names ${n})
-  endforeach()
-  list(REMOVE_DUPLICATES names)
-  set(${out} ${names} PARENT_SCOPE)
-endfunction()
+# The functions and data a file defines: a library's globals, and a program's every symbol (the
+# libraries are built with hidden visibility, so their functions are local in a linked program).
+include(${CMAKE_CURRENT_LIST_DIR}/../common/nm_names.cmake)
 
-defined_globals(${COMPILER_LIB} compiler)
-defined_globals(${RUNTIME_ONLY} rt ALL)
-defined_globals(${WITH_COMPILER} full ALL)
+nm_names(compiler TDBRtdbr --defined-only -g ${COMPILER_LIB})
+nm_names(rt TDBRtdbr --defined-only ${RUNTIME_ONLY})
+nm_names(full TDBRtdbr --defined-only ${WITH_COMPILER})
 list(LENGTH compiler n_compiler)
 if(n_compiler LESS 20)
   message(FATAL_ERROR "only ${n_compiler} symbols found in ${COMPILER_LIB}")

@@ -260,15 +260,7 @@ static void view_binding_follows_the_clock(void) {
 static char *hfxview, *tmp;
 
 static int run_view(const char *fx_text, const char *args, view_png *img, char **out) {
-    char *fx = view_format("%s/c.fx", tmp), *png = view_format("%s/c.png", tmp);
-    FILE *f = fopen(fx, "w");
-    if (f) fputs(fx_text, f), fclose(f);
-    char *cmd = view_format("%s %s -o %s --size 128x128 %s", hfxview, fx, png, args);
-    int rc = view_run(cmd, out);
-    int ok = rc == 0 && view_png_read(img, png) == 0;
-    if (!ok) fprintf(stderr, "%s exited %d:\n%s\n", cmd, rc, out && *out ? *out : "");
-    free(cmd), free(fx), free(png);
-    return ok;
+    return view_run_effect(hfxview, tmp, fx_text, args, img, out);
 }
 
 #define RED_PS "float4 PS() : COLOR0 { return float4(1, 0, 0, 1); }\n"
@@ -334,7 +326,7 @@ static void directx_names_light_the_sphere(void) {
     CHECK_CONTAINS(out, "hfxview: 1 parameter not bound, left at the effect's values: Mystery = 0\n");
     free(out);
     out = NULL;
-    char *cmd = view_format("%s %s/c.fx --list", hfxview, tmp);
+    char *cmd = view_format("%s %s/view.fx --list", hfxview, tmp); /* the file run_view wrote */
     CHECK_INT(view_run(cmd, &out), 0);
     CHECK_CONTAINS(out, "parameter g_LightDir  (name: light direction)\n");
     CHECK_CONTAINS(out, "parameter Mystery  (not bound: the effect's value)\n");

@@ -216,15 +216,7 @@ static void light_endings_cones_scales_loops(void) {
 static char *hfxview, *tmp;
 
 static int run_view(const char *fx_text, view_png *img) {
-    char *fx = view_format("%s/e.fx", tmp), *png = view_format("%s/e.png", tmp), *out = NULL;
-    FILE *f = fopen(fx, "w");
-    if (f) fputs(fx_text, f), fclose(f);
-    char *cmd = view_format("%s %s -o %s --size 128x128 --camera eye=0,0,3,at=0,0,0", hfxview, fx, png);
-    int rc = view_run(cmd, &out);
-    int ok = rc == 0 && view_png_read(img, png) == 0;
-    if (!ok) fprintf(stderr, "%s exited %d:\n%s\n", cmd, rc, out ? out : "");
-    free(cmd), free(fx), free(png), free(out);
-    return ok;
+    return view_run_effect(hfxview, tmp, fx_text, "--camera eye=0,0,3,at=0,0,0", img, NULL);
 }
 
 #define RED_PS "float4 PS() : COLOR0 { return float4(1, 0, 0, 1); }\n"

@@ -218,20 +218,14 @@ static void unchanged_apply_writes_nothing(void) {
 }
 
 int main(void) {
-    const char *why = NULL;
-    V = test_vk_create(64, 64, &why);
-    if (!V) test_skip(why ? why : "no Vulkan device");
-    hfx_vertex_layout *layout = vk_layout(V);
-    test_vk_target(V)->layout = layout;
+    hfx_vertex_layout *layout;
+    V = vk_suite_begin(64, 64, &layout);
     RUN(sampler_states);
     RUN(clone_and_technique);
     RUN(state_expression);
     RUN(shader_arrays);
     RUN(hot_reload);
     RUN(unchanged_apply_writes_nothing);
-    hfx_vertex_layout_destroy(layout);
-    int messages = test_vk_messages(V);
-    test_vk_destroy(V);
-    CHECK_INT(messages, 0);
+    int messages = vk_suite_end(V, layout);
     return test_summary() || messages;
 }

@@ -105,16 +105,10 @@ static void bound_states_at_apply(void) {
 }
 
 int main(void) {
-    const char *why = NULL;
-    V = test_vk_create(16, 16, &why);
-    if (!V) test_skip(why ? why : "no Vulkan device");
-    hfx_vertex_layout *layout = vk_layout(V);
-    test_vk_target(V)->layout = layout;
+    hfx_vertex_layout *layout;
+    V = vk_suite_begin(16, 16, &layout);
     RUN(selector_clamped_at_apply);
     RUN(bound_states_at_apply);
-    hfx_vertex_layout_destroy(layout);
-    int messages = test_vk_messages(V);
-    test_vk_destroy(V);
-    CHECK_INT(messages, 0);
+    vk_suite_end(V, layout);
     return test_summary();
 }

@@ -95,18 +95,12 @@ static void valid_draws(void) {
 }
 
 int main(void) {
-    const char *why = NULL;
-    V = test_vk_create(16, 16, &why);
-    if (!V) test_skip(why ? why : "no Vulkan device");
-    hfx_vertex_layout *layout = vk_layout(V);
-    test_vk_target(V)->layout = layout;
+    hfx_vertex_layout *layout;
+    V = vk_suite_begin(16, 16, &layout);
     RUN(no_magic_refused);
     RUN(bad_bound_refused);
     RUN(bad_import_refused);
     RUN(valid_draws);
-    hfx_vertex_layout_destroy(layout);
-    int messages = test_vk_messages(V);
-    test_vk_destroy(V);
-    CHECK_INT(messages, 0); /* the validation layer saw no invalid module */
+    vk_suite_end(V, layout); /* the validation layer saw no invalid module */
     return test_summary();
 }

@@ -163,20 +163,14 @@ static void pass_without_shaders(void) {
 }
 
 int main(void) {
-    const char *why = NULL;
-    V = test_vk_create(64, 64, &why);
-    if (!V) test_skip(why ? why : "no Vulkan device");
-    hfx_vertex_layout *layout = vk_layout(V);
-    test_vk_target(V)->layout = layout;
+    hfx_vertex_layout *layout;
+    V = vk_suite_begin(64, 64, &layout);
     RUN(pixel_shader_only);
     RUN(samplers_without_textures);
     RUN(cube_and_volume);
     RUN(missing_inputs);
     RUN(more_outputs_than_targets);
     RUN(pass_without_shaders);
-    hfx_vertex_layout_destroy(layout);
-    int messages = test_vk_messages(V);
-    test_vk_destroy(V);
-    CHECK_INT(messages, 0);
+    int messages = vk_suite_end(V, layout);
     return test_summary() || messages;
 }

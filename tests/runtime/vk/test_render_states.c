@@ -146,11 +146,8 @@ static void pipelines_cached(void) {
 }
 
 int main(void) {
-    const char *why = NULL;
-    V = test_vk_create(64, 64, &why);
-    if (!V) test_skip(why ? why : "no Vulkan device");
-    hfx_vertex_layout *layout = vk_layout(V);
-    test_vk_target(V)->layout = layout;
+    hfx_vertex_layout *layout;
+    V = vk_suite_begin(64, 64, &layout);
     FX = vk_load(V, SRC);
     if (!FX) return 1;
     RUN(blend_modes);
@@ -163,9 +160,6 @@ int main(void) {
     RUN(dynamic_blend_factor);
     RUN(pipelines_cached);
     hfx_effect_destroy(FX);
-    hfx_vertex_layout_destroy(layout);
-    int messages = test_vk_messages(V);
-    test_vk_destroy(V);
-    CHECK_INT(messages, 0);
+    int messages = vk_suite_end(V, layout);
     return test_summary() || messages;
 }

@@ -70,6 +70,26 @@ static inline int vk_draw(test_vk *v, hfx_effect *fx, const char *technique, con
     return failed;
 }
 
+/* A test program's device, w x h, with vk_layout on its target (test_skip without Vulkan);
+ * vk_suite_end frees both and checks that the validation layer reported nothing. */
+static inline test_vk *vk_suite_begin(int w, int h, hfx_vertex_layout **layout) {
+    const char *why = NULL;
+    test_vk *v = test_vk_create(w, h, &why);
+    if (!v) test_skip(why ? why : "no Vulkan device");
+    *layout = vk_layout(v);
+    test_vk_target(v)->layout = *layout;
+    return v;
+}
+
+/* The validation layer's message count (checked to be 0). */
+static inline int vk_suite_end(test_vk *v, hfx_vertex_layout *layout) {
+    hfx_vertex_layout_destroy(layout);
+    int messages = test_vk_messages(v);
+    test_vk_destroy(v);
+    CHECK_INT(messages, 0);
+    return messages;
+}
+
 #define CHECK_PIXEL(v, x, y, r, g, b, a) do { const unsigned char *p_ = test_vk_pixel((v), (x), (y)); \
     CHECK_NEAR(p_[0], (r), 1.01); CHECK_NEAR(p_[1], (g), 1.01); CHECK_NEAR(p_[2], (b), 1.01); \
     CHECK_NEAR(p_[3], (a), 1.01); } while (0)

@@ -115,3 +115,18 @@ int view_png_max_difference(const view_png *a, const view_png *b, int *count_ove
     if (count_over_1) *count_over_1 = over;
     return worst;
 }
+
+int view_run_effect(const char *hfxview, const char *dir, const char *fx_text, const char *args, view_png *img,
+                    char **out) {
+    char *fx = view_format("%s/view.fx", dir), *png = view_format("%s/view.png", dir), *text = NULL;
+    FILE *f = fx ? fopen(fx, "w") : NULL;
+    if (f) fputs(fx_text, f), fclose(f);
+    char *cmd = view_format("%s %s -o %s --size 128x128 %s", hfxview, fx, png, args);
+    int rc = cmd ? view_run(cmd, &text) : -1;
+    int ok = rc == 0 && view_png_read(img, png) == 0;
+    if (!ok) fprintf(stderr, "%s exited %d:\n%s\n", cmd ? cmd : "hfxview", rc, text ? text : "");
+    if (out) *out = text;
+    else free(text);
+    free(cmd), free(fx), free(png);
+    return ok;
+}

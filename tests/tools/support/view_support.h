@@ -24,5 +24,10 @@ int view_pixel_near(const view_png *img, int x, int y, int r, int g, int b, int 
  * prints the first few pixels that differ by more than 1, and counts them in *count_over_1. */
 int view_png_max_difference(const view_png *a, const view_png *b, int *count_over_1);
 char *view_format(const char *fmt, ...) __attribute__((format(printf, 1, 2))); /* malloc'ed */
+/* hfxview (its path) on an effect's text, written to dir/view.fx: `hfxview FX -o dir/view.png
+ * --size 128x128 args`, the image read into *img. 1 when it ran and wrote an image (else 0, the
+ * command and its output printed); its output in *out (malloc'ed) unless out is NULL. */
+int view_run_effect(const char *hfxview, const char *dir, const char *fx_text, const char *args, view_png *img,
+                    char **out);
 
 #endif
