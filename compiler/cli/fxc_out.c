@@ -11,13 +11,13 @@
 #include "cli.h"
 #include "effect/fx2_write.h"
 
-/* A program's D3D9 bytecode when it carries none: the D3D9 back end is wired in here. Until
- * then a compiled source's shaders cannot be written (an effect without shaders can). */
+/* A program's D3D9 bytecode when it carries none. A compiled source's programs carry theirs (jobs.c
+ * asks for HFXC_D3D9_BYTECODE), as do an fxc binary's; an .hfxo keeps GLSL only. */
 static int bytecode_of(void *ctx, const hfx_fx_effect *fx, uint32_t program, int stage, const void **data, size_t *size,
                        char *err, size_t err_size) {
     (void)ctx, (void)fx, (void)program, (void)stage, (void)data, (void)size;
-    snprintf(err, err_size, "no Direct3D 9 bytecode for this shader: hfxc's D3D9 back end is not built in yet "
-             "(write .hfxo with -o, or convert an fxc binary)");
+    snprintf(err, err_size, "no Direct3D 9 bytecode for this shader: an .hfxo carries GLSL only "
+             "(compile the effect's .fx source with /T fx_2_0 /Fo)");
     return -1;
 }
 
@@ -67,9 +67,9 @@ static void write_header(const cli_options *o, cli_job *job, const uint8_t *data
 void cli_write_fxc(const cli_options *o, cli_job *job, const hfx_fx_effect *fx) {
     bool fo = o->output && o->format == CLI_FORMAT_FXC;
     if (!fo && !o->header && !o->listing) return;
-    if (o->entry) { /* fxc's /T vs_* | ps_* /E: one shader's bytecode, the D3D9 back end's output */
-        job->error = text_printf("'%s': one shader's bytecode (/E with /Fo, /Fh, /Fc) needs hfxc's D3D9 back end, "
-                                 "not built in yet; -o writes .hfxo", job->input);
+    if (o->entry) { /* fxc's /T vs_* | ps_* /E on a compiled effect: jobs.c writes a source's shader */
+        job->error = text_printf("'%s': /E picks one function of an effect's source; a compiled effect has none to pick",
+                                 job->input);
         job->ok = false;
         return;
     }

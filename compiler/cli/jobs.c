@@ -227,6 +227,8 @@ static void compile_one(const cli_options *o, cli_job *job, hfxc_session *sessio
                 (o->pack_uniforms ? HFXC_PACK_UNIFORMS : 0) | (o->no_self_check ? HFXC_NO_SELF_CHECK : 0) |
                 (o->no_preshaders ? HFXC_NO_PRESHADERS : 0) |
                 (o->no_derived_varyings ? HFXC_NO_DERIVED_VARYINGS : 0) | (o->via_d3d9 ? HFXC_VIA_D3D9 : 0);
+    if (!o->entry && ((o->output && o->format == CLI_FORMAT_FXC) || o->header || o->listing))
+        opt.flags |= HFXC_D3D9_BYTECODE; /* fx_2_0's writer needs every pass's shaders as Direct3D 9 bytecode */
     hfxc_result *r = hfxc_compile_file(job->input, &opt);
     if (!r) {
         job->error = fmt("out of memory compiling '%s'%s", job->input, "");

@@ -383,10 +383,10 @@ static uint32_t program_for(hfx_builder *b, const hfx_expr *vs, const hfx_expr *
         return HFX_NONE;
     }
     hfx_fx_program *prog = &b->pending; /* the builder's, so an escaping failure frees it */
-    uint32_t errors = b->diags->errors;
     if (hfx_codegen_program(b->cg, vs, ps, flat, prog) != 0) {
         hfx_fx_program_clear(prog);
-        if (b->diags->errors == errors)
+        /* a stage shared by many passes reports its errors once, at its first pass */
+        if (b->diags->errors == 0)
             hfx_error(b->diags, loc, X_UNSUPPORTED, "code generation failed for this pass");
         return HFX_NONE;
     }

@@ -17,6 +17,7 @@ typedef struct built_stage {
     const hfx_expr *compile;
     ir_stage stage;
     ir_shader *sh;  /* NULL when it failed */
+    const uint32_t *code; uint32_t words; bool code_tried; /* its D3D9 bytecode (HFXC_D3D9_BYTECODE) */
 } built_stage;
 
 struct hfx_codegen {
@@ -133,7 +134,7 @@ static bool stage(hfx_codegen *cg, const hfx_expr *e, ir_stage st, ir_shader **s
     if (b) return (*sh = b->sh) != NULL;
     *sh = build_stage(cg, e, st);
     if (HFX_ARENA_GROW(cg->c.arena, cg->built, cg->built_count, cg->built_cap, 8))
-        cg->built[cg->built_count++] = (built_stage){e, st, *sh};
+        cg->built[cg->built_count++] = (built_stage){e, st, *sh, NULL, 0, false};
     return *sh != NULL;
 }
 
@@ -433,14 +434,21 @@ oom:
 }
 
 static int via_bytecode(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps, bool flat_colors, hfx_fx_program *out);
+static bool keep_bytecode(hfx_codegen *cg, const hfx_expr *e, bool pixel, hfx_fx_code *out);
 
 int hfx_codegen_program(hfx_codegen *cg, const hfx_expr *vs, const hfx_expr *ps, bool flat_colors, hfx_fx_program *out) {
-    if (cg->c.diags->flags & HFXC_VIA_D3D9) return via_bytecode(cg, vs, ps, flat_colors, out);
-    memset(out, 0, sizeof *out);
-    ir_shader *sh[2];
-    bool vs_ok = stage(cg, vs, IR_VERTEX, &sh[0]), ps_ok = stage(cg, ps, IR_PIXEL, &sh[1]);
-    if (!vs_ok || !ps_ok) return -1;
-    return program_of(cg, sh, flat_colors, vs ? vs->loc : ps ? ps->loc : (hfx_loc){0, 1, 1}, out);
+    int r = (cg->c.diags->flags & HFXC_VIA_D3D9) ? via_bytecode(cg, vs, ps, flat_colors, out) : -1;
+    if (!(cg->c.diags->flags & HFXC_VIA_D3D9)) {
+        memset(out, 0, sizeof *out);
+        ir_shader *sh[2];
+        bool vs_ok = stage(cg, vs, IR_VERTEX, &sh[0]), ps_ok = stage(cg, ps, IR_PIXEL, &sh[1]);
+        if (!vs_ok || !ps_ok) return -1;
+        r = program_of(cg, sh, flat_colors, vs ? vs->loc : ps ? ps->loc : (hfx_loc){0, 1, 1}, out);
+    }
+    if (r != 0 || !(cg->c.diags->flags & HFXC_D3D9_BYTECODE)) return r;
+    /* both stages tried, so that each reports its own errors */
+    bool vs_ok = keep_bytecode(cg, vs, false, &out->d3d9[0]), ps_ok = keep_bytecode(cg, ps, true, &out->d3d9[1]);
+    return vs_ok && ps_ok ? 0 : -1;
 }
 
 /* A bytecode stage: translated (d3d9/d3d9_ir.c), lowered like a compiled one. */
@@ -491,6 +499,25 @@ const uint32_t *hfx_codegen_entry_bytecode(hfx_arena *arena, hfx_diags *diags, h
     c->intrinsic = -1;
     c->fn = fn->func->definition ? fn->func->definition : fn->func;
     return hfx_codegen_bytecode(cg, c, profile[0] == 'p' || profile[0] == 'P', count);
+}
+
+/* HFXC_D3D9_BYTECODE: a stage's bytecode kept in the program (malloc'ed: the effect owns it) for
+ * fx_2_0's writer. A stage that is no `compile` (NULL, absent) has none. */
+static bool keep_bytecode(hfx_codegen *cg, const hfx_expr *e, bool pixel, hfx_fx_code *out) {
+    if (!e || e->kind != EX_COMPILE) return true;
+    /* once per distinct stage, as the GLSL: a shader shared by many programs reports its errors once */
+    built_stage *b = (built_stage *)find_built(cg, e, pixel ? IR_PIXEL : IR_VERTEX);
+    uint32_t n = b && b->code_tried ? b->words : 0;
+    const uint32_t *w = b && b->code_tried ? b->code : hfx_codegen_bytecode(cg, e, pixel, &n);
+    if (b) b->code = w, b->words = n, b->code_tried = true;
+    if (!w) return false;
+    if (!(out->data = malloc((size_t)n * 4))) {
+        hfx_error(cg->c.diags, e->loc, X_MEMORY_LIMIT, "out of memory");
+        return false;
+    }
+    memcpy(out->data, w, (size_t)n * 4);
+    out->size = (size_t)n * 4;
+    return true;
 }
 
 /* HFXC_VIA_D3D9: each stage written as bytecode for its profile, decoded and translated back

@@ -39,7 +39,8 @@ enum { /* hfxc_options.flags */
     HFXC_TEST_BREAK_GLSL = 1u << 6, /* for hfx's own tests: the code generator spoils every shader, so the self-check must fail */
     HFXC_NO_PRESHADERS = 1u << 7, /* keep parameter-only work in the shaders (preshaders need HFXC_PACK_UNIFORMS) */
     HFXC_NO_DERIVED_VARYINGS = 1u << 8, /* interpolate every vertex output, even one the pixel shader could compute from another */
-    HFXC_VIA_D3D9 = 1u << 9     /* for tests: every program goes source -> D3D9 bytecode (each pass's profile) -> hfx's reader -> GLSL */
+    HFXC_VIA_D3D9 = 1u << 9,    /* for tests: every program goes source -> D3D9 bytecode (each pass's profile) -> hfx's reader -> GLSL */
+    HFXC_D3D9_BYTECODE = 1u << 10 /* every program also carries its Direct3D 9 bytecode (each pass's profile), for fx_2_0's writer */
 };
 
 /* Limits on untrusted input. A source file (the root or an #include) of more than

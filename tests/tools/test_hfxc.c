@@ -598,9 +598,16 @@ static void reflect_json_interface(void) {
 }
 #endif
 
+/* Whether the 4 bytes b occur in data[0..size). */
+static int has_bytes(const char *data, size_t size, const uint8_t b[4]) {
+    for (size_t i = 0; i + 4 <= size; i++)
+        if (memcmp(data + i, b, 4) == 0) return 1;
+    return 0;
+}
+
 /* fxc's outputs: /Fo writes fx_2_0 (its bytes: tests/compiler/effect/test_fx2_write.c's tiny
  * effect, worked out by hand), /Fh a C header of them named by /Vn, /Fc the listing; -o keeps
- * writing .hfxo; an effect with shaders waits for the D3D9 back end, with a message saying so. */
+ * writing .hfxo; an effect's shaders go in as the D3D9 back end's bytecode; an .hfxo's cannot. */
 static void fxc_outputs(void) {
     char src[1024], fxo[1024], h[1024], lst[1024];
     snprintf(src, sizeof src, "%s/tiny.fx", tmp);
@@ -631,11 +638,29 @@ static void fxc_outputs(void) {
         CHECK_INT(fx->states[fx->passes[0].first_state].i, 1);
     }
     hfx_fx_effect_free(fx);
-    /* shaders: the D3D9 back end's business, said plainly */
+    /* shaders: the D3D9 back end writes each pass's (ambient.fx: vs_3_0 / ps_3_0) into the file */
     char *seed = test_seed_path("ambient.fx");
     if (!seed) return;
-    r = run_expecting(1, "/T fx_2_0 /Fo '%s' '%s'", fxo, seed);
-    CHECK_CONTAINS(r.err, "error X9011: vertex shader: no Direct3D 9 bytecode for this shader");
+    r = run_expecting(0, "/T fx_2_0 /Fo '%s' '%s'", fxo, seed);
+    CHECK_STR(r.err, "");
+    run_free(&r);
+    fx = compile_to("-o", "ambient_back.hfxo", fxo); /* read back through fx_2_0's reader */
+    if (fx) {
+        CHECK_INT(fx->technique_count, 1);
+        CHECK(fx->program_count >= 1 && fx->programs[0].code[0][0].data && fx->programs[0].code[1][0].data);
+    }
+    hfx_fx_effect_free(fx);
+    size_t fxo_size = 0;
+    char *bytes = test_read_file(fxo, &fxo_size);
+    /* vs_3_0's version token (0xFFFE0300) and ps_3_0's (0xFFFF0300), little-endian, in the resources */
+    static const uint8_t vs30[4] = {0x00, 0x03, 0xfe, 0xff}, ps30[4] = {0x00, 0x03, 0xff, 0xff};
+    CHECK(bytes && has_bytes(bytes, fxo_size, vs30) && has_bytes(bytes, fxo_size, ps30));
+    free(bytes);
+    /* an .hfxo keeps GLSL only: its shaders cannot become fx_2_0, said plainly */
+    char hfxo[1024];
+    snprintf(hfxo, sizeof hfxo, "%s/ambient_back.hfxo", tmp);
+    r = run_expecting(1, "/T fx_2_0 /Fo '%s' '%s'", fxo, hfxo);
+    CHECK_CONTAINS(r.err, "error X9011: vertex shader: no Direct3D 9 bytecode for this shader: an .hfxo carries GLSL only");
     run_free(&r);
     free(seed);
 }

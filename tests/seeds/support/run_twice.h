@@ -11,7 +11,8 @@
 int seed_run_twice(seed_scene **scene, void (*run_all)(void));
 
 /* The same, then a third time with each effect compiled through hfx's D3D9 bytecode back end
- * (HFXC_VIA_D3D9: source -> bytecode -> compiler/d3d9's reader -> GLSL): the same probes. */
+ * (HFXC_VIA_D3D9: source -> bytecode -> compiler/d3d9's reader -> GLSL), and a fourth with each
+ * written as fx_2_0 and loaded back (fxc's container round trip): the same probes. */
 int seed_run_thrice(seed_scene **scene, void (*run_all)(void));
 
 #endif

@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 
 #include "effect.h"
+#include "effect/fx2_write.h"
 #include "files.h"
 #include "hfx/hfxc.h"
 #include "scene_gpu.h"
@@ -49,6 +50,7 @@ void seed_scene_destroy(seed_scene *s) {
 
 hfx_device *seed_device(seed_scene *s) { return s->dev; }
 void seed_use_target(seed_scene *s, hfx_target target) { s->target = target; }
+hfx_target seed_target(const seed_scene *s) { return s->target; }
 int seed_width(const seed_scene *s) { return s->width; }
 int seed_height(const seed_scene *s) { return s->height; }
 
@@ -200,7 +202,9 @@ static hfx_effect *load_via_hfxo(seed_scene *s, const char *seed_file, const cha
     memset(&opt, 0, sizeof opt);
     opt.target = s->target;
     if (s->via_hfxo == 2) co.flags |= HFXC_VIA_D3D9 | HFXC_PACK_UNIFORMS; /* source -> D3D9 bytecode -> reader -> GLSL */
-    hfxc_result *r = hfxc_compile_file(path, s->target == HFX_TARGET_GLSL330 && s->via_hfxo != 2 ? NULL : &co);
+    if (s->via_hfxo == 3) co.flags |= HFXC_D3D9_BYTECODE; /* source -> fx_2_0 (hfxc /T fx_2_0 /Fo) -> fx_2_0's loader */
+    char why[1024] = "";
+    hfxc_result *r = hfxc_compile_file(path, s->target == HFX_TARGET_GLSL330 && s->via_hfxo < 2 ? NULL : &co);
     const struct hfx_fx_effect *compiled = r ? hfxc_result_effect(r) : NULL;
     void *data = NULL;
     size_t size = 0;
@@ -210,8 +214,9 @@ static hfx_effect *load_via_hfxo(seed_scene *s, const char *seed_file, const cha
         char *text = r ? hfxc_diagnostics_text(r) : NULL;
         seed_note(s, "compiling %s failed: %s", seed_file, text ? text : "");
         free(text);
-    } else if (hfx_fx_write_hfxo(compiled, &data, &size) != 0) {
-        seed_note(s, "writing %s as .hfxo failed", seed_file);
+    } else if (s->via_hfxo == 3 ? hfx_fx2_write(compiled, seed_file, NULL, &data, &size, why, sizeof why) != 0
+                                 : hfx_fx_write_hfxo(compiled, &data, &size) != 0) {
+        seed_note(s, "writing %s as %s failed: %s", seed_file, s->via_hfxo == 3 ? "fx_2_0" : ".hfxo", why);
     } else {
         fx = hfx_effect_load_memory(s->dev, data, size, seed_file, &opt, &errors);
         if (!fx) seed_note(s, "loading %s from .hfxo failed: %s", seed_file, errors && *errors ? errors : hfx_device_last_error(s->dev));
@@ -486,7 +491,8 @@ rgba seed_pixel(seed_scene *s, int x, int y) {
 
 static void record(seed_scene *s, const char *name, double diff) {
     char file[64];
-    snprintf(file, sizeof file, "%s%s", name, s->via_hfxo == 2 ? " via D3D9 bytecode" : s->via_hfxo ? " via .hfxo" : "");
+    snprintf(file, sizeof file, "%s%s", name,
+             s->via_hfxo == 3 ? " via fx_2_0" : s->via_hfxo == 2 ? " via D3D9 bytecode" : s->via_hfxo ? " via .hfxo" : "");
     seed_file_report *r = NULL;
     for (int i = 0; i < s->file_count; i++)
         if (strcmp(s->files[i].file, file) == 0) r = &s->files[i];

@@ -104,6 +104,8 @@ hfx_effect *seed_load(seed_scene *s, const char *seed_file);  /* from the seed c
 void seed_use_hfxo(seed_scene *s, int on);
 /* The shader target seed_load compiles for and loads; default HFX_TARGET_GLSL330. */
 void seed_use_target(seed_scene *s, hfx_target target);
+/* The shader target the scene draws with. */
+hfx_target seed_target(const seed_scene *s);
 /* Setters by name that note (and print) any failure: unknown name, wrong type or count. */
 void seed_set_matrix(seed_scene *s, hfx_effect *fx, const char *name, const float m[16]);
 void seed_set_float(seed_scene *s, hfx_effect *fx, const char *name, double v);
