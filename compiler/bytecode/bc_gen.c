@@ -536,6 +536,49 @@ static void capture_return(bc_gen *g, const ir_expr *e) {
     g->capture = NULL;
 }
 
+/* A return in flattened code. Every side of every if runs, so after the first return under a
+ * condition, g->done holds 1 where the function has returned, and a later return (after the if,
+ * or in the next unrolled iteration) takes the return value only where the code runs (g->cond)
+ * and done is 0, then adds that to done. The first return writes the value unmasked: before it
+ * the value is undefined, and HLSL makes every path return, so where it did not run a later
+ * return will. */
+static void gen_return(bc_gen *g, const ir_expr *e) {
+    bc_obj v = hfx_bc_expr(g, e);
+    if (!g->done.n) {
+        hfx_bc_assign(g, *g->ret, v, e->type, false);
+        bc_val c = g->cond;
+        c.own = false;
+        if (c.n) g->done = hfx_bc_op1(g, D3D9_MOV, 1, c); /* a register of its own: later returns add to it */
+        return;
+    }
+    bc_obj val = hfx_bc_alloc_obj(g, e->type);
+    hfx_bc_assign(g, val, v, e->type, false);
+    bc_val d = g->done, now = g->cond;
+    d.own = now.own = false;
+    bc_val not_done = hfx_bc_not(g, d);
+    if (now.n) {
+        bc_val nd = not_done;
+        nd.own = false;
+        now = hfx_bc_op2(g, D3D9_MUL, 1, now, nd); /* where this return runs and none ran before */
+        not_done.own = true;
+        hfx_bc_release(g, not_done);
+    } else {
+        now = not_done;
+    }
+    for (uint32_t k = 0; k < g->ret->count && k < val.count && !g->failed; k++) {
+        bc_val x = now, t = val.slot[k], r = g->ret->slot[k];
+        x.own = t.own = r.own = false;
+        hfx_bc_store(g, g->ret->slot[k], hfx_bc_select(g, x, t, r), false);
+    }
+    for (uint32_t k = 0; k < val.count; k++) val.slot[k].own = true;
+    hfx_bc_release_obj(g, val);
+    bc_val n = now;
+    n.own = false;
+    hfx_bc_store(g, g->done, hfx_bc_op2(g, D3D9_ADD, 1, d, n), false);
+    now.own = true;
+    hfx_bc_release(g, now);
+}
+
 static void gen_stmt(bc_gen *g, const ir_stmt *s) {
     if (g->failed) return;
     g->loc = s->loc;
@@ -551,7 +594,7 @@ static void gen_stmt(bc_gen *g, const ir_stmt *s) {
     case IS_FOR: case IS_WHILE: case IS_DO: gen_loop(g, s); break;
     case IS_RETURN:
         if (s->expr && g->capture) capture_return(g, s->expr);
-        else if (s->expr && g->ret) hfx_bc_assign(g, *g->ret, hfx_bc_expr(g, s->expr), s->expr->type, false);
+        else if (s->expr && g->ret) gen_return(g, s->expr);
         break;
     case IS_DISCARD: gen_discard(g); break;
     case IS_BREAK:
@@ -592,9 +635,13 @@ void hfx_bc_call(bc_gen *g, const ir_expr *e, bc_obj *out) {
     g->ret = straight ? NULL : &ret;
     g->capture = straight ? &ret : NULL;
     g->capture_mark = g->bind_count;
+    bc_val saved_done = g->done;
+    g->done = (bc_val){0}; /* the callee's own returns */
     g->depth++;
     gen_body(g, f->body);
     g->depth--;
+    if (g->done.n) { g->done.own = true; hfx_bc_release(g, g->done); }
+    g->done = saved_done;
     g->ret = saved_ret;
     g->capture = saved_capture;
     g->capture_mark = saved_mark;
