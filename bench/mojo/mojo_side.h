@@ -1,0 +1,34 @@
+/* mojo_side.h: drawing an fx_2_0 effect the way FNA does, through MojoShader's effect framework
+ * and its GLSL (built outside the repository; bench/mojo/README.md). The device state is hfx's:
+ * each pass is applied by hfx first (render states, which the fx_2_0 round trip compares
+ * elsewhere), then MojoShader's program, uniforms, samplers and vertex attributes replace the
+ * shader side. Parameter values are copied from the hfx effect drawn from source, so both sides
+ * see the same inputs. */
+#ifndef HFX_BENCH_MOJO_SIDE_H
+#define HFX_BENCH_MOJO_SIDE_H
+
+#include <stddef.h>
+
+#include "hfx/hfx.h"
+#include "render.h"
+
+typedef struct mj_side mj_side;
+
+/* A MojoShader GL context for `profile` ("glsl120") in the current GL context, drawing into its
+ * width x height default framebuffer; NULL with err. */
+mj_side *mj_create(const char *profile, hv_gl_loader load, int width, int height, char *err, size_t errlen);
+void mj_destroy(mj_side *m);
+
+/* Parses and compiles an fx_2_0 file (every shader to GLSL and through the driver's compiler);
+ * 0, or -1 with MojoShader's first error in err. */
+int mj_load(mj_side *m, const char *path, char *err, size_t errlen);
+size_t mj_technique_count(const mj_side *m);
+size_t mj_pass_count(const mj_side *m, size_t technique);
+
+/* Draws technique `technique` (all passes) over g with fx's current parameter values, inside
+ * hfx_effect_begin / end on fx (whose technique t is applied for the render states). 0, or -1
+ * with err (a program MojoShader could not link, a parameter it lays out differently). */
+int mj_draw(mj_side *m, const hv_gl *gl, hfx_effect *fx, hfx_technique *t, size_t technique, const hv_gpu_mesh *g,
+            char *err, size_t errlen);
+
+#endif
