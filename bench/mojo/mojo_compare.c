@@ -60,6 +60,8 @@ typedef struct run {
     hv_gpu_mesh gpu;
     hv_textures textures;
     mj_side *mojo;
+    PFNGLGETUNIFORMLOCATIONPROC GetUniformLocation;
+    PFNGLUNIFORM4FPROC Uniform4f;
     char err[1024];
 } run;
 
@@ -111,8 +113,11 @@ static int make_context(run *r) {
         return fprintf(stderr, "mojo_compare: no OSMesa compatibility context\n"), -1;
     const char *missing = hv_gl_load(&r->gl, osmesa_loader);
     if (missing) return fprintf(stderr, "mojo_compare: no %s\n", missing), -1;
+    void *p = osmesa_loader("glGetUniformLocation"), *q = osmesa_loader("glUniform4f");
+    memcpy(&r->GetUniformLocation, &p, sizeof p);
+    memcpy(&r->Uniform4f, &q, sizeof q);
     r->dev = hfx_device_create_gl(osmesa_loader);
-    return r->dev ? 0 : -1;
+    return r->dev && p && q ? 0 : -1;
 }
 
 static int load_source(run *r) {
@@ -150,16 +155,43 @@ static int prepare(run *r) {
     return hv_bind_textures(&r->textures, &r->gl, r->fx, &r->opt, r->err, sizeof r->err) == 0 ? 0 : -1;
 }
 
+/* hfx moves what it draws half a pixel right and down, to D3D9's pixel centres (hfx_pos_fixup.xy,
+ * docs/conventions.md); MojoShader, as FNA runs it, leaves GL's. For pictures, that offset is
+ * set to zero after each Apply, so that only the shaders differ (VPOS keeps .w, the height). */
+static void gl_pixel_centres(run *r) {
+    GLint program = 0;
+    r->gl.GetIntegerv(GL_CURRENT_PROGRAM, &program);
+    GLint loc = program ? r->GetUniformLocation((GLuint)program, "hfx_pos_fixup") : -1;
+    if (loc >= 0) r->Uniform4f(loc, 0, 0, 0, (float)r->opt.height);
+}
+
+/* hv_draw_technique's passes, with GL's pixel centres. */
+static int draw_technique(run *r, hfx_technique *t) {
+    int rc = HFX_OK;
+    hv_set_default_states(&r->gl);
+    hfx_effect_begin(r->fx);
+    for (size_t i = 0; i < hfx_technique_pass_count(t) && rc == HFX_OK; i++) {
+        hfx_pass *p = hfx_technique_pass(t, i);
+        if ((rc = hfx_pass_apply(p)) != HFX_OK) break;
+        gl_pixel_centres(r);
+        hv_draw_mesh(&r->gl, &r->gpu, p);
+    }
+    hfx_effect_end(r->fx);
+    r->gl.BindVertexArray(0);
+    return rc;
+}
+
+/* img: a picture (GL's pixel centres), else a benchmark frame (hfxview's own drawing). */
 static int draw_hfx(run *r, hfx_technique *t, hv_image *img) {
     hv_clear(&r->gl, r->opt.width, r->opt.height, r->opt.background);
-    int rc = hv_draw_technique(&r->gl, &r->gpu, r->fx, t, -1, 0, NULL);
+    int rc = img ? draw_technique(r, t) : hv_draw_technique(&r->gl, &r->gpu, r->fx, t, -1, 0, NULL);
     if (rc != HFX_OK) snprintf(r->err, sizeof r->err, "hfx: %s", hfx_device_last_error(r->dev));
     return rc == HFX_OK && (!img || hv_read_image(&r->gl, r->opt.width, r->opt.height, img) == 0) ? 0 : -1;
 }
 
-static int draw_mojo(run *r, hfx_technique *t, size_t ti, hv_image *img) {
+static int draw_mojo(run *r, hfx_technique *t, size_t ti, int hfx_states, hv_image *img) {
     hv_clear(&r->gl, r->opt.width, r->opt.height, r->opt.background);
-    if (mj_draw(r->mojo, &r->gl, r->fx, t, ti, &r->gpu, r->err, sizeof r->err) != 0) return -1;
+    if (mj_draw(r->mojo, &r->gl, r->fx, t, ti, &r->gpu, hfx_states, r->err, sizeof r->err) != 0) return -1;
     return !img || hv_read_image(&r->gl, r->opt.width, r->opt.height, img) == 0 ? 0 : -1;
 }
 
@@ -186,15 +218,19 @@ static void save(run *r, const hv_image *img, size_t ti, int variant, const char
 }
 
 /* Under callgrind: two frames to warm up (llvmpipe compiles on first use), then `bench` frames
- * counted on their own. */
+ * counted on their own: each side's Apply (hfx's; MojoShader's CommitChanges and ProgramReady),
+ * attributes and draw, with XNA's default states (the stock effects' passes set none), and no
+ * call into the other side. */
 static void count(run *r, hfx_technique *t, size_t ti, int variant, int mojo) {
     char label[512];
     snprintf(label, sizeof label, "%s|%s|%d|%s", r->opt.input, hfx_technique_name(t), variant, mojo ? "mojo" : "hfx");
-    for (int i = 0; i < 2; i++) mojo ? draw_mojo(r, t, ti, NULL) : draw_hfx(r, t, NULL);
+    mj_reset(r->mojo); /* after the other side's draws */
+    hfx_device_sync(r->dev);
+    for (int i = 0; i < 2; i++) mojo ? draw_mojo(r, t, ti, 0, NULL) : draw_hfx(r, t, NULL);
     r->gl.Finish();
     CALLGRIND_START_INSTRUMENTATION;
     CALLGRIND_ZERO_STATS;
-    for (int i = 0; i < r->bench; i++) mojo ? draw_mojo(r, t, ti, NULL) : draw_hfx(r, t, NULL);
+    for (int i = 0; i < r->bench; i++) mojo ? draw_mojo(r, t, ti, 0, NULL) : draw_hfx(r, t, NULL);
     r->gl.Finish();
     CALLGRIND_DUMP_STATS_AT(label);
     CALLGRIND_STOP_INSTRUMENTATION;
@@ -202,7 +238,8 @@ static void count(run *r, hfx_technique *t, size_t ti, int variant, int mojo) {
 
 static int one(run *r, hfx_technique *t, size_t ti, int variant) {
     hv_image a = {0}, b = {0};
-    int rc = draw_hfx(r, t, &a) != 0 || draw_mojo(r, t, ti, &b) != 0 ? -1 : 0, over = 0;
+    int rc = draw_hfx(r, t, &a) != 0 || mj_copy_params(r->mojo, r->fx, r->err, sizeof r->err) != 0 ||
+                     draw_mojo(r, t, ti, 1, &b) != 0 ? -1 : 0, over = 0;
     const char *name = *hfx_technique_name(t) ? hfx_technique_name(t) : "(unnamed)";
     if (rc != 0) printf("FAIL %s %zu %s %d: %s\n", r->opt.input, ti, name, variant, r->err);
     else {
@@ -213,7 +250,7 @@ static int one(run *r, hfx_technique *t, size_t ti, int variant) {
     }
     hv_image_free(&a);
     hv_image_free(&b);
-    if (rc == 0 && r->bench > 0) count(r, t, ti, variant, 0), count(r, t, ti, variant, 1);
+    if (rc >= 0 && r->bench > 0) count(r, t, ti, variant, 0), count(r, t, ti, variant, 1); /* pictures told apart above */
     return rc;
 }
 

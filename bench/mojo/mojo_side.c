@@ -13,7 +13,6 @@ typedef void(APIENTRYP bind_sampler_fn)(GLuint unit, GLuint sampler);
 typedef void(APIENTRYP gen_samplers_fn)(GLsizei n, GLuint *samplers);
 typedef void(APIENTRYP delete_samplers_fn)(GLsizei n, const GLuint *samplers);
 typedef void(APIENTRYP sampler_parameteri_fn)(GLuint sampler, GLenum name, GLint value);
-typedef void(APIENTRYP viewport_f_fn)(GLuint index, GLfloat x, GLfloat y, GLfloat w, GLfloat h);
 
 enum { MAX_UNITS = 32 };
 
@@ -28,7 +27,7 @@ struct mj_side {
     GLuint samplers[MAX_UNITS]; /* one sampler object per unit, set from MojoShader's sampler states */
     GLuint vao;                 /* MojoShader's own: it tracks which arrays it enabled */
     PFNGLVERTEXATTRIB4FVPROC VertexAttrib4fv;
-    viewport_f_fn ViewportIndexedf; /* D3D9's half-pixel offset, which hfx applies and MojoShader not */
+    PFNGLBINDVERTEXARRAYPROC BindVertexArray;
     int width, height;          /* the target, for VPOS (MojoShader flips it in the default framebuffer) */
     int vertex_sampler_offset;  /* MOJOSHADER_XNA4_VERTEX_TEXTURES: vertex samplers after the pixel ones */
 };
@@ -87,9 +86,7 @@ mj_side *mj_create(const char *profile, hv_gl_loader load, int width, int height
     PFNGLGETINTEGERVPROC get_integerv;
     PFNGLGENVERTEXARRAYSPROC gen_vao;
     if ((p = entry(load, "glVertexAttrib4fv"))) memcpy(&m->VertexAttrib4fv, &p, sizeof p);
-    if ((p = entry(load, "glViewportIndexedf"))) memcpy(&m->ViewportIndexedf, &p, sizeof p);
     if (!m->BindSampler || !m->GenSamplers || !m->DeleteSamplers || !m->SamplerParameteri || !m->VertexAttrib4fv ||
-        !m->ViewportIndexedf ||
         !(p = entry(load, "glGetIntegerv"))) {
         snprintf(err, errlen, "no sampler objects in this GL context");
         mj_destroy(m);
@@ -98,6 +95,8 @@ mj_side *mj_create(const char *profile, hv_gl_loader load, int width, int height
     memcpy(&get_integerv, &p, sizeof p);
     p = entry(load, "glGenVertexArrays");
     memcpy(&gen_vao, &p, sizeof p);
+    p = entry(load, "glBindVertexArray");
+    memcpy(&m->BindVertexArray, &p, sizeof p);
     GLint units = 0;
     get_integerv(GL_MAX_TEXTURE_IMAGE_UNITS, &units); /* MojoShader's own rule for vertex samplers */
     if (units > 20) units = 20;
@@ -199,7 +198,7 @@ static int copy_param(const mj_side *m, MOJOSHADER_effectValue *v, hfx_param *p,
     return 0;
 }
 
-static int copy_params(mj_side *m, hfx_effect *fx, char *err, size_t errlen) {
+int mj_copy_params(mj_side *m, hfx_effect *fx, char *err, size_t errlen) {
     for (int i = 0; i < m->effect->param_count; i++) {
         MOJOSHADER_effectValue *v = &m->effect->params[i].value;
         if (v->type.parameter_class > MOJOSHADER_SYMCLASS_MATRIX_COLUMNS) continue; /* objects, structs */
@@ -320,12 +319,26 @@ static void set_constants(const mj_side *m) {
     }
 }
 
+/* MojoShader switches off the arrays it enabled when its program goes, in the bound vertex
+ * array object: its own, or its record of them would no longer be true. */
+void mj_reset(mj_side *m) {
+    m->BindVertexArray(m->vao);
+    MOJOSHADER_glBindProgram(NULL);
+    m->BindVertexArray(0);
+    for (int u = 0; u < MAX_UNITS; u++) m->BindSampler((GLuint)u, 0);
+}
+
+/* hfx_states: hfx applies the pass first (its render states; hfx's program and units, which
+ * MojoShader's replace), else the device keeps XNA's defaults and hfx is not called. */
 static int draw_pass(mj_side *m, const hv_gl *gl, hfx_effect *fx, hfx_pass *p, unsigned pass, const hv_gpu_mesh *g,
-                     char *err, size_t errlen) {
-    hfx_device_sync(hfx_effect_device(fx)); /* MojoShader changed the program and the units behind hfx */
-    int rc = hfx_pass_apply(p);
-    if (rc != HFX_OK) return snprintf(err, errlen, "hfx: %s", hfx_device_last_error(hfx_effect_device(fx))), -1;
-    MOJOSHADER_glBindProgram(NULL); /* MojoShader binds its program again (hfx's is current now) */
+                     int hfx_states, char *err, size_t errlen) {
+    if (hfx_states) {
+        hfx_device_sync(hfx_effect_device(fx)); /* MojoShader changed the program and the units behind hfx */
+        if (hfx_pass_apply(p) != HFX_OK)
+            return snprintf(err, errlen, "hfx: %s", hfx_device_last_error(hfx_effect_device(fx))), -1;
+        gl->BindVertexArray(m->vao);
+        MOJOSHADER_glBindProgram(NULL); /* MojoShader binds its program again (hfx's is current now) */
+    }
     MOJOSHADER_effectBeginPass(m->effect, pass);
     GLint program = 0;
     gl->GetIntegerv(GL_CURRENT_PROGRAM, &program);
@@ -345,27 +358,22 @@ static int draw_pass(mj_side *m, const hv_gl *gl, hfx_effect *fx, hfx_pass *p, u
 }
 
 int mj_draw(mj_side *m, const hv_gl *gl, hfx_effect *fx, hfx_technique *t, size_t technique, const hv_gpu_mesh *g,
-            char *err, size_t errlen) {
+            int hfx_states, char *err, size_t errlen) {
     if (technique >= mj_technique_count(m)) return snprintf(err, errlen, "MojoShader: no technique %zu", technique), -1;
-    if (copy_params(m, fx, err, errlen) != 0) return -1;
     MOJOSHADER_effectSetTechnique(m->effect, &m->effect->techniques[technique]);
     unsigned passes = 0;
     hv_set_default_states(gl);
-    hfx_effect_begin(fx);
-    /* hfx moves what it draws half a pixel right and down to D3D9's pixel centres (hfx_pos_fixup,
-     * docs/conventions.md); MojoShader leaves GL's. The same shift on MojoShader's side, by the
-     * viewport, so that only the shaders differ. */
-    m->ViewportIndexedf(0, 0.5f, -0.5f, (float)m->width, (float)m->height);
+    if (hfx_states) hfx_effect_begin(fx);
     MOJOSHADER_effectBegin(m->effect, &passes, 0, &m->changes);
     int rc = 0;
     for (unsigned i = 0; rc == 0 && i < passes && i < hfx_technique_pass_count(t); i++)
-        rc = draw_pass(m, gl, fx, hfx_technique_pass(t, i), i, g, err, errlen);
+        rc = draw_pass(m, gl, fx, hfx_technique_pass(t, i), i, g, hfx_states, err, errlen);
     MOJOSHADER_effectEnd(m->effect);
-    MOJOSHADER_glBindProgram(NULL);
-    for (int u = 0; u < MAX_UNITS; u++) m->BindSampler((GLuint)u, 0);
-    hfx_effect_end(fx);
-    gl->Viewport(0, 0, m->width, m->height);
     gl->BindVertexArray(0);
-    hfx_device_sync(hfx_effect_device(fx));
+    if (hfx_states) {
+        mj_reset(m);
+        hfx_effect_end(fx);
+        hfx_device_sync(hfx_effect_device(fx));
+    }
     return rc;
 }

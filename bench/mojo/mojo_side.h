@@ -25,10 +25,20 @@ int mj_load(mj_side *m, const char *path, char *err, size_t errlen);
 size_t mj_technique_count(const mj_side *m);
 size_t mj_pass_count(const mj_side *m, size_t technique);
 
-/* Draws technique `technique` (all passes) over g with fx's current parameter values, inside
- * hfx_effect_begin / end on fx (whose technique t is applied for the render states). 0, or -1
- * with err (a program MojoShader could not link, a parameter it lays out differently). */
+/* FNA's EffectParameter.SetValue for every numeric parameter: fx's current values (by name)
+ * into the effect's. 0, or -1 with err (a parameter MojoShader lays out in fewer registers). */
+int mj_copy_params(mj_side *m, hfx_effect *fx, char *err, size_t errlen);
+
+/* Draws technique `technique` (all passes) over g with the values mj_copy_params gave. hfx_states:
+ * fx's technique t is applied first for each pass (hfx_effect_begin / end around), so both sides
+ * draw with the render states hfx read from the source; 0: XNA's device defaults and no hfx
+ * call (what a benchmark of the shaders alone wants). 0, or -1 with err (a program MojoShader
+ * could not link). */
 int mj_draw(mj_side *m, const hv_gl *gl, hfx_effect *fx, hfx_technique *t, size_t technique, const hv_gpu_mesh *g,
-            char *err, size_t errlen);
+            int hfx_states, char *err, size_t errlen);
+
+/* Unbinds MojoShader's program and sampler objects, and forgets which program is bound: before
+ * MojoShader draws after hfx did, or hfx after MojoShader (then hfx_device_sync). */
+void mj_reset(mj_side *m);
 
 #endif
