@@ -9,8 +9,9 @@
 #
 # BUILD (default build/test) must have been configured with -DMOJOSHADER_DIR (MojoShader built
 # outside the repository, bench/mojo/README.md); without mojo_compare the script says so and
-# exits 0. Prints one line per effect (hfx fx2 mojo alike/techniques effect), the techniques
-# that differ or fail, the first errors of the fx_2_0 failures, and the counts. Outputs (logs,
+# exits 0. Prints one line per effect (hfx fx2 mojo alike/techniques effect; mojo: ok, FAIL
+# when MojoShader refuses the effect, CRASH when it crashes reading it), the techniques that
+# differ or fail, the first errors of the fx_2_0 failures, and the counts. Outputs (logs,
 # the pictures of each difference) stay in a temporary folder whose path is printed.
 set -uo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -43,7 +44,7 @@ one() {
         mkdir -p "$out/png/$name"
         "$compare" --out "$out/png/$name" "$out/fxo/$name.fxo" "$fx" --size 128x128 "${inc[@]}" \
             > "$out/log/$name.cmp" 2>&1
-        case $? in 0|1) m=ok ;; 3) m=FAIL ;; *) m=hfx? ;; esac
+        case $? in 0|1) m=ok ;; 3) m=FAIL ;; 4) m=hfx? ;; *) m=CRASH ;; esac
         a=$(grep -c '^alike' "$out/log/$name.cmp"); n=$(grep -c '^\(alike\|DIFFER\|FAIL\)' "$out/log/$name.cmp")
         rmdir "$out/png/$name" 2>/dev/null
     fi
@@ -58,12 +59,17 @@ echo
 echo "techniques that differ or fail:"
 cat "$out"/log/*.cmp 2>/dev/null | grep '^\(DIFFER\|FAIL\|MOJO-FAIL\)' | sort -k4 | tee "$out/differ.txt"
 echo
+echo "MojoShader crashed loading (the effect's line CRASH):"
+awk '$3 == "CRASH" { print "  " $5 }' "$out/table.txt"
+echo
 echo "first errors of the fx_2_0 failures (by message, most frequent first):"
 cat "$out"/log/*.fx2 2>/dev/null | grep -o "error X[0-9]*: .*" | sed "s/'[^']*'/'_'/g; s/[0-9][0-9]*/N/g" |
     sort | uniq -c | sort -rn | head -20
 t=$out/table.txt
+skipped=$(cat "$out"/log/*.cmp 2>/dev/null | grep -c '^SKIP')
 echo
 echo "outputs in $out"
+echo "$skipped techniques not compared: a pass without a vertex shader (FNA draws it with the one bound before)"
 awk '{ e++; if ($1 == "ok") h++; if ($2 == "ok") f++; if ($3 == "ok") m++;
        if ($3 == "ok") { split($4, x, "/"); a += x[1]; n += x[2]; if (x[1] == x[2]) all++ } }
      END { printf "%d effects: %d compile (hfx), %d to fx_2_0, %d parsed by MojoShader (%d with every technique alike); techniques drawn alike: %d/%d\n",

@@ -8,7 +8,8 @@
  *
  * For every technique that has a pass (and every value of --vary's parameter, XNA's ShaderIndex),
  * prints `alike|DIFFER max=M over=K technique variant`: M the largest channel difference
- * (/255), K the pixels more than 2/255 apart; --out DIR writes both pictures of a difference.
+ * (/255), K the pixels more than 2/255 apart (`SKIP` for a pass without a vertex shader, which
+ * FNA draws with the one bound before); --out DIR writes both pictures of a difference.
  * --bench N: each side draws N frames between a reset and a dump labelled
  * "effect|technique|variant|side" under callgrind, and prints `count LABEL INSTRUCTIONS` from the
  * kernel's counter (bench/mojo_instructions.sh). Exit: 0 all alike, 1 a difference,
@@ -225,7 +226,8 @@ static int draw_hfx(run *r, hfx_technique *t, hv_image *img) {
 
 static int draw_mojo(run *r, hfx_technique *t, size_t ti, int hfx_states, hv_image *img) {
     hv_clear(&r->gl, r->opt.width, r->opt.height, r->opt.background);
-    if (mj_draw(r->mojo, &r->gl, r->fx, t, ti, &r->gpu, hfx_states, r->err, sizeof r->err) != 0) return -1;
+    int rc = mj_draw(r->mojo, &r->gl, r->fx, t, ti, &r->gpu, hfx_states, r->err, sizeof r->err);
+    if (rc != 0) return rc;
     return !img || hv_read_image(&r->gl, r->opt.width, r->opt.height, img) == 0 ? 0 : -1;
 }
 
@@ -293,10 +295,12 @@ static void count(run *r, hfx_technique *t, size_t ti, int variant, int mojo) {
 
 static int one(run *r, hfx_technique *t, size_t ti, int variant) {
     hv_image a = {0}, b = {0};
-    int rc = draw_hfx(r, t, &a) != 0 || mj_copy_params(r->mojo, r->fx, r->err, sizeof r->err) != 0 ||
-                     draw_mojo(r, t, ti, 1, &b) != 0 ? -1 : 0, over = 0;
+    int rc = draw_hfx(r, t, &a) != 0 || mj_copy_params(r->mojo, r->fx, r->err, sizeof r->err) != 0 ? -1
+                                                                                            : draw_mojo(r, t, ti, 1, &b),
+        over = 0;
     const char *name = *hfx_technique_name(t) ? hfx_technique_name(t) : "(unnamed)";
-    if (rc != 0) printf("FAIL %s %zu %s %d: %s\n", r->opt.input, ti, name, variant, r->err);
+    if (rc == -2) printf("SKIP %s %zu %s %d: %s\n", r->opt.input, ti, name, variant, r->err);
+    else if (rc != 0) printf("FAIL %s %zu %s %d: %s\n", r->opt.input, ti, name, variant, r->err);
     else {
         int max = compare(&a, &b, &over);
         rc = over ? 1 : 0;

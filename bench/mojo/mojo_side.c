@@ -340,6 +340,12 @@ static int draw_pass(mj_side *m, const hv_gl *gl, hfx_effect *fx, hfx_pass *p, u
         MOJOSHADER_glBindProgram(NULL); /* MojoShader binds its program again (hfx's is current now) */
     }
     MOJOSHADER_effectBeginPass(m->effect, pass);
+    MOJOSHADER_glShader *vs = NULL, *ps = NULL;
+    MOJOSHADER_glGetBoundShaders(&vs, &ps);
+    if (!vs) { /* FNA keeps the vertex shader bound before (SpriteBatch's); GL would run fixed function */
+        MOJOSHADER_effectEndPass(m->effect);
+        return snprintf(err, errlen, "pass %u has no vertex shader", pass), -2;
+    }
     GLint program = 0;
     gl->GetIntegerv(GL_CURRENT_PROGRAM, &program);
     if (!program) {

@@ -32,8 +32,9 @@ int mj_copy_params(mj_side *m, hfx_effect *fx, char *err, size_t errlen);
 /* Draws technique `technique` (all passes) over g with the values mj_copy_params gave. hfx_states:
  * fx's technique t is applied first for each pass (hfx_effect_begin / end around), so both sides
  * draw with the render states hfx read from the source; 0: XNA's device defaults and no hfx
- * call (what a benchmark of the shaders alone wants). 0, or -1 with err (a program MojoShader
- * could not link). */
+ * call (what a benchmark of the shaders alone wants). 0, -1 with err (a program MojoShader
+ * could not link), or -2 with err when a pass has no vertex shader (FNA draws those with the
+ * vertex shader bound before, SpriteBatch's: not compared). */
 int mj_draw(mj_side *m, const hv_gl *gl, hfx_effect *fx, hfx_technique *t, size_t technique, const hv_gpu_mesh *g,
             int hfx_states, char *err, size_t errlen);
 
