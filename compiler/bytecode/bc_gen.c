@@ -212,8 +212,25 @@ bool hfx_bc_straight_return(const ir_stmt *body) {
     return true;
 }
 
-/* Parameters, samplers and private globals, in the order the stage lists them. */
+/* The c register a parameter's `register(c#)` gives this shader (`register(vs, c13)` in a vertex
+ * shader, `register(ps, c14)` in a pixel shader), or -1. */
+static int explicit_const(const bc_gen *g, const ir_var *v) {
+    char buf[32];
+    const char *reg = hfx_register_for(v->decl ? v->decl->reg : NULL, g->profile, buf, sizeof buf);
+    return reg && (reg[0] == 'c' || reg[0] == 'C') && reg[1] >= '0' && reg[1] <= '9' ? atoi(reg + 1) : -1;
+}
+
+/* Parameters, samplers and private globals, in the order the stage lists them. A parameter
+ * without a register takes the first free run that no later parameter's register asks for. */
 void hfx_bc_bind_globals(bc_gen *g) {
+    uint8_t reserved[BC_MAX_CONSTS] = {0};
+    for (uint32_t i = 0; i < g->sh->global_count; i++) {
+        const ir_var *v = g->sh->globals[i];
+        int first = v->kind == IRV_UNIFORM ? explicit_const(g, v) : -1;
+        bool cols = !(v->mods & MOD_ROW_MAJOR) && !(v->decl && (v->decl->mods & MOD_ROW_MAJOR));
+        for (uint32_t k = 0; first >= 0 && k < hfx_bc_slots(v->type, cols) && first + k < BC_MAX_CONSTS; k++)
+            reserved[first + k] = 1;
+    }
     for (uint32_t i = 0; i < g->sh->global_count && !g->failed; i++) {
         const ir_var *v = g->sh->globals[i];
         if (v->kind == IRV_SAMPLER) {
@@ -229,14 +246,11 @@ void hfx_bc_bind_globals(bc_gen *g) {
         } else if (v->kind == IRV_UNIFORM) {
             bool cols = !(v->mods & MOD_ROW_MAJOR) && !(v->decl && (v->decl->mods & MOD_ROW_MAJOR));
             uint32_t n = hfx_bc_slots(v->type, cols);
-            int first = -1;
-            const char *reg = v->decl ? v->decl->reg : NULL;
-            if (reg && (reg[0] == 'c' || reg[0] == 'C')) first = atoi(reg + 1);
-            else if (reg && strchr(reg, ',')) { const char *c = strchr(reg, ',') + 1; if (*c == 'c') first = atoi(c + 1); }
+            int first = explicit_const(g, v);
             if (first < 0)
                 for (uint32_t r = 0; r + n <= g->max_consts && first < 0; r++) {
                     uint32_t k = 0;
-                    while (k < n && !g->cused[r + k]) k++;
+                    while (k < n && !g->cused[r + k] && !reserved[r + k]) k++;
                     if (k == n) first = (int)r;
                 }
             if (first < 0 || !hfx_bc_reserve_consts(g, (uint16_t)first, (uint16_t)n)) {
