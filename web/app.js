@@ -1,5 +1,6 @@
-// app.js: the page. The effect's files live in a Map (name -> text) mirrored into the
-// module's in-memory file system under /src, where the compiler resolves #include among them;
+// app.js: the page. The effect's files live in a Map (name -> text, or bytes for an effect fxc
+// compiled) mirrored into the module's in-memory file system under /src, where the compiler
+// resolves #include among them and reads fx_2_0 binaries as hfxc does;
 // every edit recompiles after a pause; a failed compile lists its errors and keeps the last
 // good picture. window.hfxPage is what the tests (tests/web/) drive.
 "use strict";
@@ -170,7 +171,8 @@ function showFile(name) {
   state.current = name;
   $("file-list").value = name;
   suppressEdit = true;
-  editor.setText(state.files.get(name) || "");
+  const content = state.files.get(name);
+  editor.setText(content instanceof Uint8Array ? binaryNote(name, content) : content || "");
   editor.view.dispatch({selection: {anchor: 0}, scrollIntoView: true});
   suppressEdit = false;
   markEditor();
@@ -192,11 +194,27 @@ function selectEffect(group, name) {
   return setFiles(new Map(Object.entries(folder)), name);
 }
 
+// Whether bytes start as an effect fxc compiled: fx_2_0's version token, XNA's effect header or
+// an .xnb (runtime/compile_none.c knows the same three); such a file stays bytes.
+function isBinaryEffect(b) {
+  const starts = (m) => m.every((x, i) => b[i] === x);
+  return starts([0x01, 0x09, 0xff, 0xfe]) || starts([0xcf, 0x0b, 0xf0, 0xbc]) || starts([0x58, 0x4e, 0x42]);
+}
+
+// What the editor shows for a binary: it has no source to edit (edits to it are ignored).
+function binaryNote(name, bytes) {
+  return `// ${name}: an effect compiled by fxc (fx_2_0, ${bytes.length} bytes), loaded as it is;\n` +
+    "// its shaders' Direct3D 9 bytecode is translated to GLSL ES.\n";
+}
+
 async function openFiles(list) {
   const files = new Map();
-  for (const f of list) files.set(f.name, await f.text());
+  for (const f of list) {
+    const bytes = new Uint8Array(await f.arrayBuffer());
+    files.set(f.name, isBinaryEffect(bytes) ? bytes : new TextDecoder().decode(bytes));
+  }
   const names = [...files.keys()];
-  const main = names.find((n) => /\.fx$/i.test(n)) || names[0];
+  const main = names.find((n) => /\.fx$/i.test(n)) || names.find((n) => files.get(n) instanceof Uint8Array) || names[0];
   if (main) setFiles(files, main);
 }
 
@@ -283,7 +301,7 @@ function downloadHfxo() {
   if (!n) return;
   const p = call("hfxw_hfxo", "number", [], []);
   const blob = new Blob([M.HEAPU8.slice(p, p + n)], {type: "application/octet-stream"});
-  const a = Object.assign(document.createElement("a"), {href: URL.createObjectURL(blob), download: state.main.replace(/\.fx$/i, "") + ".hfxo"});
+  const a = Object.assign(document.createElement("a"), {href: URL.createObjectURL(blob), download: state.main.replace(/\.[^./]*$/, "") + ".hfxo"});
   a.click();
   URL.revokeObjectURL(a.href);
 }
@@ -334,7 +352,7 @@ createHfx().then((module) => {
   }
   $("version").textContent = call("hfxw_version", "string", [], []);
   editor = HfxEditor.create($("editor"), (text) => {
-    if (suppressEdit) return;
+    if (suppressEdit || state.files.get(state.current) instanceof Uint8Array) return;
     state.files.set(state.current, text);
     scheduleCompile();
   });

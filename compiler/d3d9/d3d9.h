@@ -158,13 +158,15 @@ typedef struct d3d9_comment {
 /* Registers a preshader computes (fx_2_0 keeps a shader's PRES block, an FXLVM program, in a
  * comment: the effect reader validates it, translates it into a common/eval_code program and
  * lists its outputs here before hfx_codegen_d3d9_program). The shader reads c[reg .. reg +
- * count - 1] from them; the program's hfx_fx_preshader entries carry the code to the runtime,
+ * count - 1] (or b[reg], i[reg]: fxc's ob# / oi# outputs, for `if b#` and `loop i#`) from them; the program's hfx_fx_preshader entries carry the code to the runtime,
  * which runs it at Apply as for a compiled effect (needs HFXC_PACK_UNIFORMS). */
+typedef enum d3d9_pre_file { D3D9_PRE_C, D3D9_PRE_B, D3D9_PRE_I } d3d9_pre_file;
 typedef struct d3d9_preshader_out {
-    uint32_t reg, count;      /* first c register, how many (1..4) */
+    uint32_t reg, count;      /* first register, how many (1..4; 1 for b and i registers) */
     const uint32_t *code;     /* eval_code words computing count * 4 floats, register after register */
     uint32_t words;
     const char *text;         /* what it computes, for the GLSL comment; NULL: "c<reg>" */
+    d3d9_pre_file file;       /* the registers it sets: c# (floats), b# (x != 0), i# (each truncated) */
 } d3d9_preshader_out;
 
 typedef struct d3d9_shader {

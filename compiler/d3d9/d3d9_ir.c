@@ -275,7 +275,8 @@ static ir_expr *constant_register(d3d9_tx *t, uint32_t i, unsigned num) {
     return register_value(t, x);
 }
 
-/* Register num of preshader output i: the variable codegen gives hfx_c registers (glsl_pack.c). */
+/* Register num of preshader output i: the variable codegen gives hfx_c registers (glsl_pack.c);
+ * a b# or i# output is a float4 there too, converted where the shader reads it. */
 static ir_expr *preshader_register(d3d9_tx *t, uint32_t i, unsigned num) {
     const d3d9_preshader_out *o = &t->s->pres[i];
     if (!t->pres[i]) {
@@ -285,13 +286,13 @@ static ir_expr *preshader_register(d3d9_tx *t, uint32_t i, unsigned num) {
         }
         ir_var *v = HFX_NEW(t->c->arena, ir_var);
         v->kind = IRV_PRIVATE;
-        v->name = v->glsl = hfx_arena_printf(t->c->arena, "hfx_pre_c%u", o->reg);
+        v->name = v->glsl = hfx_arena_printf(t->c->arena, "hfx_pre_%c%u", "cbi"[o->file], o->reg);
         v->type = o->count == 1 ? t->f4 : hfx_type_matrix(t->c->types, B_FLOAT, o->count, 4);
         v->param = HFX_NONE;
         v->pre = hfx_d3d9_tx_const4(t, (const float[4]){0, 0, 0, 0}); /* marks it a preshader; never evaluated here */
         v->pre_code = o->code;
         v->pre_words = o->words;
-        v->pre_text = o->text ? o->text : hfx_arena_printf(t->c->arena, "c%u", o->reg);
+        v->pre_text = o->text ? o->text : hfx_arena_printf(t->c->arena, "%c%u", "cbi"[o->file], o->reg);
         if (!HFX_ARENA_GROW(t->c->arena, t->sh->pres, t->sh->pre_count, t->sh->pre_cap, 4)) return NULL;
         t->sh->pres[t->sh->pre_count++] = v;
         t->pres[i] = v;
@@ -303,15 +304,23 @@ static ir_expr *preshader_register(d3d9_tx *t, uint32_t i, unsigned num) {
     return hfx_d3d9_tx_swizzle(t, x, comps, 4);
 }
 
+/* The preshader output setting register num of a file, or -1. */
+static int preshader_of(const d3d9_shader *s, d3d9_pre_file file, unsigned num) {
+    for (uint32_t i = 0; i < s->pre_count; i++)
+        if (s->pres[i].file == file && num >= s->pres[i].reg && num < s->pres[i].reg + s->pres[i].count &&
+            s->pres[i].count <= 4)
+            return (int)i;
+    return -1;
+}
+
 /* A c register as float4: its def, a preshader's output, the parameter covering it, or zero. */
 static ir_expr *const_register(d3d9_tx *t, unsigned num) {
     for (uint32_t i = 0; i < t->s->inst_count; i++) {
         const d3d9_inst *in = &t->s->insts[i];
         if (in->op == D3D9_DEF && in->dst.num == num) return hfx_d3d9_tx_const4(t, in->value.f);
     }
-    for (uint32_t i = 0; i < t->s->pre_count; i++)
-        if (num >= t->s->pres[i].reg && num < t->s->pres[i].reg + t->s->pres[i].count && t->s->pres[i].count <= 4)
-            return preshader_register(t, i, num);
+    int pre = preshader_of(t->s, D3D9_PRE_C, num);
+    if (pre >= 0) return preshader_register(t, (uint32_t)pre, num);
     int k = constant_at(t->s, D3D9_RS_FLOAT4, num);
     if (k >= 0) return constant_register(t, (uint32_t)k, num);
     return hfx_d3d9_tx_const4(t, (const float[4]){0, 0, 0, 0});
@@ -529,6 +538,13 @@ ir_expr *hfx_d3d9_tx_bool(d3d9_tx *t, unsigned num) {
     const hfx_type *b1 = hfx_type_scalar(t->c->types, B_BOOL);
     const d3d9_inst *d = find_def(t->s, D3D9_DEFB, num);
     if (d) return hfx_ir_const_scalar(t->c, b1, d->value.u[0] != 0, t->loc);
+    int pre = preshader_of(t->s, D3D9_PRE_B, num);
+    if (pre >= 0) { /* the preshader's x, as D3DX sets a bool register from a float: nonzero is true */
+        ir_expr *x = preshader_register(t, (uint32_t)pre, num);
+        static const uint8_t first = 0;
+        return x ? hfx_ir_new_binary(t->c, OP_NE, b1, hfx_d3d9_tx_swizzle(t, x, &first, 1),
+                                     hfx_ir_const_scalar(t->c, t->f1, 0, t->loc)) : NULL;
+    }
     int k = constant_at(t->s, D3D9_RS_BOOL, num);
     if (k < 0) return hfx_ir_const_scalar(t->c, b1, 0, t->loc);
     const d3d9_constant *c = &t->s->constants[k];
@@ -543,6 +559,11 @@ ir_expr *hfx_d3d9_tx_int4(d3d9_tx *t, unsigned num) {
         ir_expr *e = hfx_ir_new_expr(t->c, IE_CONST, t->i4, t->loc, 0);
         for (int q = 0; q < 4; q++) e->cval[q] = d->value.i[q];
         return e;
+    }
+    int pre = preshader_of(t->s, D3D9_PRE_I, num);
+    if (pre >= 0) { /* each component truncated, as D3DX converts a float for an int register */
+        ir_expr *x = preshader_register(t, (uint32_t)pre, num);
+        return x ? hfx_ir_new_convert(t->c, t->i4, x) : NULL;
     }
     int k = constant_at(t->s, D3D9_RS_INT4, num);
     if (k < 0) return hfx_ir_const_scalar(t->c, t->i4, 0, t->loc);

@@ -378,8 +378,7 @@ static hfx_builder *builder_start(hfx_arena *arena, hfx_diags *diags, hfx_types 
     b->diags = diags;
     b->types = types;
     b->ast = ast;
-    b->targets = targets;
-    if (targets & (3u << HFX_TARGET_SPIRV)) b->targets |= 1u << HFX_TARGET_GLSL330; /* SPIR-V is made from it */
+    b->targets = hfx_build_code_targets(targets); /* SPIR-V is made from GLSL 330 */
     b->fx = ast ? calloc(1, sizeof *b->fx) : NULL;
     if (!b->fx) {
         hfx_arena_forget(arena, b->cleanup);
@@ -418,7 +417,7 @@ static void program_name(const hfx_fx_effect *fx, uint32_t i, char *out, size_t 
 
 /* A uniform holding a bool inside (a struct with bool members) stays bool in the SPIR-V, which
  * strict validators reject: worth a warning, once per name. */
-static void warn_bool_uniforms(hfx_builder *b, const hfx_fx_program *p) {
+static void warn_bool_uniforms(hfx_diags *diags, hfx_loc at, const hfx_fx_program *p) {
     char names[2][128] = {"", ""};
     for (int s = 0; s < HFX_STAGE_COUNT; s++) {
         const hfx_fx_code *c = &p->code[s][HFX_TARGET_SPIRV];
@@ -426,14 +425,13 @@ static void warn_bool_uniforms(hfx_builder *b, const hfx_fx_program *p) {
                                                sizeof names[s]) != 1)
             continue;
         if (s == 1 && strcmp(names[0], names[1]) == 0) continue;
-        hfx_warning(b->diags, (hfx_loc){0, 1, 1}, X_UNSUPPORTED,
+        hfx_warning(diags, at, X_UNSUPPORTED,
                     "'%s': a uniform with bool members stays bool in SPIR-V, which spirv-val rejects", names[s]);
     }
 }
 
 /* One SPIR-V target for every program (spirv.c), each failure an error at the program. */
-static void build_spirv_target(hfx_builder *b, int target) {
-    hfx_fx_effect *fx = b->fx;
+static void build_spirv_target(hfx_diags *diags, hfx_loc at, hfx_fx_effect *fx, int target) {
     for (uint32_t i = 0; i < fx->program_count; i++) {
         char *log = NULL;
         int rc = target == HFX_TARGET_SPIRV_VK ? hfx_spirv_vk_program(fx, &fx->programs[i], &log)
@@ -441,17 +439,14 @@ static void build_spirv_target(hfx_builder *b, int target) {
         if (rc != 0) {
             char name[256];
             program_name(fx, i, name, sizeof name);
-            hfx_error(b->diags, (hfx_loc){0, 1, 1}, X_UNSUPPORTED, "'%s': SPIR-V generation failed: %s", name,
+            hfx_error(diags, at, X_UNSUPPORTED, "'%s': SPIR-V generation failed: %s", name,
                       log ? log : "glslang gave no reason");
         }
         free(log);
-        if (target == HFX_TARGET_SPIRV) warn_bool_uniforms(b, &fx->programs[i]);
+        if (target == HFX_TARGET_SPIRV) warn_bool_uniforms(diags, at, &fx->programs[i]);
     }
 }
 
-/* HFX_TARGET_SPIRV and HFX_TARGET_SPIRV_VK: every program's GLSL 330 through glslang (spirv.c);
- * the GLSL 330 goes again unless it was asked for too. Without glslang nothing is made (hfxc
- * says so). */
 /* The GLSL the printer left in the SPIR-V targets' code (codegen.c) when no words are made of it. */
 static void drop_spirv_text(hfx_fx_effect *fx) {
     for (uint32_t i = 0; i < fx->program_count; i++)
@@ -463,15 +458,21 @@ static void drop_spirv_text(hfx_fx_effect *fx) {
             }
 }
 
-static void build_spirv(hfx_builder *b, unsigned requested) {
-    hfx_fx_effect *fx = b->fx;
+unsigned hfx_build_code_targets(unsigned requested) {
+    return requested & (3u << HFX_TARGET_SPIRV) ? requested | 1u << HFX_TARGET_GLSL330 : requested;
+}
+
+/* HFX_TARGET_SPIRV and HFX_TARGET_SPIRV_VK: every program's GLSL 330 through glslang (spirv.c);
+ * the GLSL 330 goes again unless it was asked for too. Without glslang nothing is made (hfxc
+ * says so). */
+void hfx_build_spirv(hfx_diags *diags, hfx_loc at, hfx_fx_effect *fx, unsigned requested) {
     if ((requested & (3u << HFX_TARGET_SPIRV)) && fx->program_count && hfx_spirv_available()) {
         if (!hfx_spirv_begin()) {
-            hfx_error(b->diags, (hfx_loc){0, 1, 1}, X_UNSUPPORTED, "SPIR-V: glslang could not start");
+            hfx_error(diags, at, X_UNSUPPORTED, "SPIR-V: glslang could not start");
             drop_spirv_text(fx);
         } else {
             for (int t = HFX_TARGET_SPIRV; t <= HFX_TARGET_SPIRV_VK; t++)
-                if (requested & (1u << t)) build_spirv_target(b, t);
+                if (requested & (1u << t)) build_spirv_target(diags, at, fx, t);
             hfx_spirv_end();
         }
     } else {
@@ -532,7 +533,8 @@ static hfx_fx_effect *builder_finish(hfx_builder *b, bool ok, uint32_t errors) {
     /* glslang's work holds its own memory and process state: failures return NULL here */
     hfx_arena_escape_off(b->arena);
     if (ok && !b->failed_alloc && b->diags->errors == errors) self_check(b);
-    if (ok && !b->failed_alloc && b->diags->errors == errors) build_spirv(b, b->fx->targets);
+    if (ok && !b->failed_alloc && b->diags->errors == errors)
+        hfx_build_spirv(b->diags, (hfx_loc){0, 1, 1}, b->fx, b->fx->targets);
     else drop_spirv_text(b->fx);
     hfx_arena_escape_on(b->arena);
     b->fx->targets = present_targets(b->fx);

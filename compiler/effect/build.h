@@ -17,4 +17,13 @@ hfx_fx_effect *hfx_build_entry_effect(hfx_arena *arena, hfx_diags *diags, hfx_ty
                                       const char *source_name, unsigned targets, const char *entry,
                                       const char *profile);
 
+/* The code targets the printer must make for `requested`: the SPIR-V targets are made from GLSL
+ * 330 (its text records both stages' uniforms), so that one is printed too. */
+unsigned hfx_build_code_targets(unsigned requested);
+/* The SPIR-V step every effect goes through, compiled from source (build.c) or read from an
+ * fx_2_0 binary (fx2_states.c): the printer's SPIR-V-mode text of every program (printed with
+ * hfx_build_code_targets' targets) through glslang into words for each requested SPIR-V target,
+ * failures reported at `at`; the GLSL 330 goes again unless requested. Without glslang the
+ * SPIR-V targets stay empty. Call it with the arena's escape off (glslang holds its own memory). */
+void hfx_build_spirv(hfx_diags *diags, hfx_loc at, hfx_fx_effect *fx, unsigned requested);
 #endif

@@ -28,7 +28,7 @@ enum { OP_VERTEXSHADER = 146, OP_PIXELSHADER = 147, OP_TEXTURE = 164, OP_SAMPLER
 
 /* FXLVM, fxc's expression programs (fxlvm.c reads them, fxlvm_write.c writes them): an operand's
  * register table, the opcodes (each instruction token's low 16 bits), the comment blocks' fourccs. */
-enum { T_IMM = 1, T_CONST = 2, T_OUT = 4, T_TEMP = 7 };
+enum { T_IMM = 1, T_CONST = 2, T_OUT = 4, T_OUT_BOOL = 5, T_OUT_INT = 6, T_TEMP = 7 };
 enum {
     FXLVM_MOV = 0x100, FXLVM_NEG = 0x101, FXLVM_RCP = 0x103, FXLVM_FRC = 0x104, FXLVM_EXP = 0x105, FXLVM_LOG = 0x106,
     FXLVM_RSQ = 0x107, FXLVM_SIN = 0x108, FXLVM_COS = 0x109, FXLVM_ASIN = 0x10a, FXLVM_ACOS = 0x10b, FXLVM_ATAN = 0x10c,

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "effect/build.h"
 #include "effect/fx2_int.h"
 #include "eval_code.h"
 #include "glsl/glslang.h"
@@ -397,7 +398,7 @@ static uint32_t shader_program(fx2_reader *r, const fx2_blob *vs, const fx2_blob
     if (!r->cg) {
         glsl_names(r);
         r->cg = hfx_codegen_new(r->arena, r->diags, hfx_types_new(r->arena), NULL, fx,
-                                r->targets & ~(3u << HFX_TARGET_SPIRV), /* no glslang here: GLSL only */
+                                hfx_build_code_targets(r->targets), /* SPIR-V: hfx_fx2_finish */
                                 (r->diags->flags & HFXC_PACK_UNIFORMS) != 0, NULL, NULL);
         if (!r->cg) {
             hfx_fx2_error(r, at, "the code generator could not start");
@@ -464,8 +465,7 @@ static void self_check(fx2_reader *r) {
     hfx_arena_escape_on(r->arena);
 }
 
-/* The targets every program carries code for (SPIR-V is made from a compiled effect's GLSL by
- * build.c; a binary's programs have the GLSL targets). */
+/* The targets every program carries code for. */
 static unsigned present_targets(const hfx_fx_effect *fx, unsigned asked) {
     for (uint32_t i = 0; i < fx->program_count; i++) {
         unsigned here = 0;
@@ -583,6 +583,11 @@ bool hfx_fx2_finish(fx2_reader *r) {
     shader_params(r);
     for (uint32_t p = 0; p < r->fx->pass_count && !r->failed; p++) pass_program(r, p);
     if (!r->failed && !r->diags->errors) self_check(r);
+    if (!r->failed && !r->diags->errors) { /* the SPIR-V step of compiled effects, glslang's memory its own */
+        hfx_arena_escape_off(r->arena);
+        hfx_build_spirv(r->diags, (hfx_loc){r->file, 0, 0}, r->fx, r->targets);
+        hfx_arena_escape_on(r->arena);
+    }
     r->fx->targets = present_targets(r->fx, r->targets);
     return !r->failed;
 }

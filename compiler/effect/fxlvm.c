@@ -6,7 +6,8 @@
  * registers c# hold, as a shader's constant table), then the end token 0x0000ffff.
  * An instruction is a word `opcode << 20 | components` (bit 31: the first input is a scalar),
  * an input count, then each input and the output as (0 | 1 + index table + index offset),
- * table, offset; tables are 1 literals, 2 inputs (c#), 4 outputs (oc#), 7 temporaries (r#),
+ * table, offset; tables are 1 literals, 2 inputs (c#), 4 outputs (oc#), 5 and 6 the bool and int
+ * registers a preshader sets (ob#, oi#: 4 components each, as oc#), 7 temporaries (r#),
  * offsets count components (c3.y is 13). Opcodes: 0x100 mov, 0x101 neg, 0x103 rcp, 0x104 frc,
  * 0x105 exp, 0x106 log, 0x107 rsq, 0x108 sin, 0x109 cos, 0x10a asin, 0x10b acos, 0x10c atan,
  * 0x200 min, 0x201 max, 0x202 lt, 0x203 ge, 0x204 add, 0x205 mul, 0x206 atan2, 0x208 div,
@@ -57,10 +58,17 @@ typedef struct vm {
     const double *lit; uint32_t lit_count;
     ctab_entry *ctab; uint32_t ctab_count;
     node *nodes; uint32_t node_count, node_cap;
-    uint32_t *temp, *out;   /* node per component (HFX_NONE unset) */
+    uint32_t *temp, *out;   /* node per component (HFX_NONE unset); out: oc#, then ob#, then oi# */
     uint32_t *code; uint32_t code_count, code_cap;
     bool failed;
 } vm;
+
+/* Where output table `table`'s components start in m->out (out_files of them). */
+enum { OUT_FILES = 3 };
+static uint32_t out_base(uint32_t table) {
+    return table == T_OUT_BOOL ? MAX_COMPONENTS : table == T_OUT_INT ? 2 * MAX_COMPONENTS : 0;
+}
+static bool is_out(uint32_t table) { return table == T_OUT || table == T_OUT_BOOL || table == T_OUT_INT; }
 
 static void fail(vm *m, uint32_t word, const char *fmt, const char *arg) {
     if (m->failed) return;
@@ -276,15 +284,15 @@ static bool read_operand(vm *m, uint32_t *i, uint32_t end, operand *o) {
 
 /* The node of one register component (unindexed). */
 static uint32_t component(vm *m, uint32_t table, uint32_t offset, uint32_t at) {
-    if ((table == T_TEMP || table == T_OUT) && offset >= MAX_COMPONENTS)
+    if ((table == T_TEMP || is_out(table)) && offset >= MAX_COMPONENTS)
         return fail(m, at, "%sa register past r255", ""), HFX_NONE;
     switch (table) {
     case T_IMM:
         if (offset >= m->lit_count) return fail(m, at, "%sa literal past the literal table", ""), HFX_NONE;
         return constant(m, m->lit[offset]);
     case T_CONST: return input(m, offset / 4, offset % 4);
-    case T_TEMP: case T_OUT: {
-        uint32_t *regs = table == T_TEMP ? m->temp : m->out;
+    case T_TEMP: case T_OUT: case T_OUT_BOOL: case T_OUT_INT: {
+        uint32_t *regs = table == T_TEMP ? m->temp : m->out + out_base(table);
         if (regs[offset] == HFX_NONE) return fail(m, at, "%sa register read before it is written", ""), HFX_NONE;
         return regs[offset];
     }
@@ -368,7 +376,7 @@ static void run_instruction(vm *m, uint32_t *i, uint32_t end) {
     for (uint32_t k = 0; k < inputs; k++)
         if (!read_operand(m, i, end, &in[k])) return;
     if (!read_operand(m, i, end, &out)) return;
-    if (out.indexed || (out.table != T_TEMP && out.table != T_OUT) || out.offset >= MAX_COMPONENTS - 4)
+    if (out.indexed || (out.table != T_TEMP && !is_out(out.table)) || out.offset >= MAX_COMPONENTS - 4)
         { fail(m, out.at, "%san output that is no temporary or output register", ""); return; }
     bool whole = code == 0x500 || code == 0x70e; /* dot products write one component */
     uint32_t results[4], count = whole ? 1 : comps;
@@ -381,7 +389,7 @@ static void run_instruction(vm *m, uint32_t *i, uint32_t end) {
             for (uint32_t k = 0; k < inputs; k++) x[n++] = fetch(m, &in[k], whole || (scalar && !k) ? 0 : c);
         results[c] = compute(m, code, x, n);
     }
-    uint32_t *regs = out.table == T_TEMP ? m->temp : m->out;
+    uint32_t *regs = out.table == T_TEMP ? m->temp : m->out + out_base(out.table);
     for (uint32_t c = 0; c < count && !m->failed; c++) regs[out.offset + c] = results[c]; /* after: inputs may alias */
 }
 
@@ -476,9 +484,9 @@ static bool load(vm *m, fx2_reader *r, const fx2_blob *blob) {
     }
     read_ctab(m);
     m->temp = HFX_NEW_ARRAY(r->arena, uint32_t, MAX_COMPONENTS);
-    m->out = HFX_NEW_ARRAY(r->arena, uint32_t, MAX_COMPONENTS);
+    m->out = HFX_NEW_ARRAY(r->arena, uint32_t, OUT_FILES * MAX_COMPONENTS);
     memset(m->temp, 0xff, MAX_COMPONENTS * sizeof *m->temp);
-    memset(m->out, 0xff, MAX_COMPONENTS * sizeof *m->out);
+    memset(m->out, 0xff, OUT_FILES * MAX_COMPONENTS * sizeof *m->out);
     return !m->failed;
 }
 
@@ -535,29 +543,40 @@ bool hfx_fxlvm_translate(fx2_reader *r, const fx2_blob *blob, uint32_t n, hfx_ev
     return true;
 }
 
+/* Whether the program writes any component of register reg of the output file starting at base. */
+static bool out_written(const vm *m, uint32_t base, uint32_t reg) {
+    for (uint32_t k = 0; k < 4; k++)
+        if (m->out[base + reg * 4 + k] != HFX_NONE) return true;
+    return false;
+}
+
 bool hfx_fxlvm_preshader(fx2_reader *r, const fx2_blob *blob, d3d9_preshader_out **outs, uint32_t *count) {
     vm m;
     *outs = NULL, *count = 0;
     if (!execute(&m, r, blob)) return false;
-    bool written[MAX_REGS];
     uint32_t runs = 0;
-    for (uint32_t reg = 0; reg < MAX_REGS; reg++) {
-        written[reg] = false;
-        for (uint32_t k = 0; k < 4; k++) written[reg] |= m.out[reg * 4 + k] != HFX_NONE;
-    }
-    d3d9_preshader_out *list = HFX_NEW_ARRAY(r->arena, d3d9_preshader_out, MAX_REGS);
-    for (uint32_t reg = 0; reg < MAX_REGS;) { /* runs of written registers, 4 at most (16 components) */
-        if (!written[reg]) {
+    d3d9_preshader_out *list = HFX_NEW_ARRAY(r->arena, d3d9_preshader_out, OUT_FILES * MAX_REGS);
+    for (uint32_t reg = 0; reg < MAX_REGS;) { /* c#: runs of written registers, 4 at most (16 components) */
+        if (!out_written(&m, 0, reg)) {
             reg++;
             continue;
         }
         uint32_t n = 1;
-        while (n < 4 && reg + n < MAX_REGS && written[reg + n]) n++;
+        while (n < 4 && reg + n < MAX_REGS && out_written(&m, 0, reg + n)) n++;
         d3d9_preshader_out *o = &list[runs++];
-        o->reg = reg, o->count = n, o->text = NULL;
+        *o = (d3d9_preshader_out){.reg = reg, .count = n, .file = D3D9_PRE_C};
         if (!(o->code = write_outputs(&m, reg * 4, n * 4, HFX_EV_FLOAT, &o->words))) return false;
         reg += n;
     }
+    static const uint32_t tables[2] = {T_OUT_BOOL, T_OUT_INT};
+    for (int f = 0; f < 2; f++) /* b# and i#: one register each, computed as 4 floats like c# */
+        for (uint32_t reg = 0; reg < MAX_REGS; reg++) {
+            uint32_t base = out_base(tables[f]);
+            if (!out_written(&m, base, reg)) continue;
+            d3d9_preshader_out *o = &list[runs++];
+            *o = (d3d9_preshader_out){.reg = reg, .count = 1, .file = f ? D3D9_PRE_I : D3D9_PRE_B};
+            if (!(o->code = write_outputs(&m, base + reg * 4, 4, HFX_EV_FLOAT, &o->words))) return false;
+        }
     *outs = list, *count = runs;
     return true;
 }

@@ -650,6 +650,21 @@ static void fxc_outputs(void) {
         CHECK(fx->program_count >= 1 && fx->programs[0].code[0][0].data && fx->programs[0].code[1][0].data);
     }
     hfx_fx_effect_free(fx);
+    /* and for Vulkan and GL 4.6: both stages of every program are SPIR-V modules (magic word
+     * 0x07230203), the GLSL 330 they were made from dropped as for a compiled source */
+    fx = compile_to("--target spirv,spirv-vk -o", "ambient_spirv.hfxo", fxo);
+    for (uint32_t i = 0; fx && i < fx->program_count; i++)
+        for (int s = 0; s < HFX_STAGE_COUNT; s++) {
+            CHECK(fx->programs[i].code[s][HFX_TARGET_GLSL330].data == NULL);
+            for (int t = HFX_TARGET_SPIRV; t <= HFX_TARGET_SPIRV_VK; t++) {
+                const hfx_fx_code *c = &fx->programs[i].code[s][t];
+                uint32_t magic = 0;
+                if (c->data && c->size >= 20) memcpy(&magic, c->data, 4);
+                CHECK_INT(magic, 0x07230203);
+            }
+        }
+    CHECK(fx && fx->program_count >= 1);
+    hfx_fx_effect_free(fx);
     size_t fxo_size = 0;
     char *bytes = test_read_file(fxo, &fxo_size);
     /* vs_3_0's version token (0xFFFE0300) and ps_3_0's (0xFFFF0300), little-endian, in the resources */

@@ -11,12 +11,14 @@
 //   - multilights.fx: X3013 at (204,20); a warning (X3206) listed, marked, clickable;
 //   - a PNG picked for a texture, several files opened with an #include among them, files
 //     dropped (with the include, and without it: X1507), an OBJ mesh, the GLSL tab, the .hfxo download;
+//   - an fx_2_0 binary dropped (hfxc /T fx_2_0 /Fo of a source here): drawn, ShaderIndex switching;
 //   - screenshots of three seeds, and the page's timings (first picture, compile).
 // Exit 77 (skip) only when Chromium cannot start or the seed corpus is absent.
-//   node page_test.js --site DIR --expect WEB_EXPECT --shots DIR
+//   node page_test.js --site DIR --expect WEB_EXPECT --shots DIR [--hfxc HFXC]
 "use strict";
 const {execFileSync} = require("child_process");
 const fs = require("fs");
+const os = require("os");
 const path = require("path");
 
 const arg = (name) => process.argv[process.argv.indexOf("--" + name) + 1];
@@ -245,6 +247,66 @@ async function droppedFiles(page) {
   check(marks.includes("#"), `the editor marks the #include (${JSON.stringify(marks)})`);
 }
 
+// An effect compiled to fx_2_0 (hfx's own binary: hfxc /T fx_2_0 /Fo, the container and
+// bytecode fxc writes) dropped on the page: it loads through the binary reader (the editor says
+// so), draws Tint on the plane, and ShaderIndex picks the array's second pixel shader, which
+// halves the colour: (0.125, 0.25, 0.375, 1).
+const BINARY_SOURCE = `float4x4 WorldViewProj : WorldViewProjection;
+float4 Tint = {0.25, 0.5, 0.75, 1};
+int ShaderIndex = 0;
+float4 VS(float3 p : POSITION) : POSITION { return mul(float4(p, 1), WorldViewProj); }
+float4 Plain() : COLOR { return Tint; }
+float4 Halved() : COLOR { return float4(Tint.rgb * 0.5, 1); }
+PixelShader Shaders[2] = { compile ps_2_0 Plain(), compile ps_2_0 Halved() };
+technique Flat { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = (Shaders[ShaderIndex]); } }
+`;
+
+function fx2Bytes() {
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), "hfx-page-"));
+  try {
+    fs.writeFileSync(path.join(dir, "tint.fx"), BINARY_SOURCE);
+    execFileSync(arg("hfxc"), ["/T", "fx_2_0", "/nologo", "/Fo", path.join(dir, "tint.fxo"), path.join(dir, "tint.fx")]);
+    return [...fs.readFileSync(path.join(dir, "tint.fxo"))];
+  } finally {
+    fs.rmSync(dir, {recursive: true, force: true});
+  }
+}
+
+async function droppedBinary(page) {
+  if (!process.argv.includes("--hfxc")) {
+    console.log("skip an fx_2_0 binary dropped: no --hfxc to write one");
+    return;
+  }
+  const bytes = fx2Bytes();
+  check(bytes[0] === 0x01 && bytes[1] === 0x09 && bytes[2] === 0xff && bytes[3] === 0xfe, "hfxc wrote tint.fxo as fx_2_0");
+  await page.evaluate(async (bytes) => {
+    window.hfxPage.lastResult = null;
+    const dt = new DataTransfer();
+    dt.items.add(new File([new Uint8Array(bytes)], "tint.fxo", {type: "application/octet-stream"}));
+    const target = document.querySelector(".cm-content");
+    for (const type of ["dragenter", "dragover", "drop"])
+      target.dispatchEvent(new DragEvent(type, {dataTransfer: dt, bubbles: true, cancelable: true}));
+  }, bytes);
+  await page.waitForFunction(() => window.hfxPage.lastResult, null, {timeout: 10000}).catch(() => {});
+  const r = await page.evaluate(async () => {
+    const p = window.hfxPage;
+    await p.setMesh("plane");
+    p.setCamera(0, 60, 3);
+    p.renderNow();
+    const plain = p.pixel(256, 256);
+    const err = p.setParam("ShaderIndex", "1");
+    p.renderNow();
+    return {ok: p.lastResult && p.lastResult.ok, diags: p.diagnosticsText(), text: p.editorText(), plain, err,
+      halved: p.pixel(256, 256)};
+  });
+  check(r.ok, `dropped tint.fxo: loaded (${JSON.stringify(r.diags)})`);
+  check(r.text.startsWith("// tint.fxo: an effect compiled by fxc (fx_2_0, " + bytes.length + " bytes)"),
+    `the editor says tint.fxo is a binary: ${JSON.stringify(r.text.split("\n")[0])}`);
+  const tint = [0.25, 0.5, 0.75, 1], halved = [0.125, 0.25, 0.375, 1];
+  check(near(r.plain, tint), `tint.fxo, ShaderIndex 0: centre ${show(r.plain)} is Tint ${showWant(tint)}`);
+  check(!r.err && near(r.halved, halved), `tint.fxo, ShaderIndex 1: centre ${show(r.halved)} is Tint / 2 ${showWant(halved)}`);
+}
+
 // The orbit camera driven by the mouse on the canvas: a drag of (60, -40) pixels turns the
 // camera to yaw -30, pitch 40 (app.js: half a degree a pixel); phong.fx's light comes from the
 // side, so the centre pixel's highlight takes the colour the equation gives for that eye, not
@@ -469,6 +531,7 @@ async function main() {
   await objMesh(page, x);
   await glslAndDownload(page);
   await droppedFiles(page);
+  await droppedBinary(page);
   await screenshots(page);
   await browser.close();
   console.log(failures ? `${failures} check(s) failed` : "all checks passed");

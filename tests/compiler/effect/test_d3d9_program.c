@@ -131,6 +131,9 @@ static void set4(GLuint prog, const char *name, const float *v, int count) {
 }
 
 /* Draws the program over the 8x8 target with XNA's parameter values; reads pixels (0, 4), (5, 4). */
+/* The value draw puts in every preshader's registers, as the runtime would have computed it. */
+static float pre_value[4] = {0.1f, 0.2f, 0.3f, 0.4f};
+
 static void draw(const hfx_fx_program *p, const hfx_fx_effect *fx, unsigned char left[4], unsigned char right[4]) {
     GLuint vs = stage(GL_VERTEX_SHADER, p->code[0][HFX_TARGET_GLSL330].data);
     GLuint fs = stage(GL_FRAGMENT_SHADER, p->code[1][HFX_TARGET_GLSL330].data);
@@ -153,12 +156,11 @@ static void draw(const hfx_fx_program *p, const hfx_fx_effect *fx, unsigned char
         else if (strcmp(n, "Colors") == 0) set4(prog, g, colors, 2);
         else if (strcmp(n, "Scale") == 0 && loc >= 0) f.Uniform1fv(loc, 1, &scale);
     }
-    /* what the runtime's preshaders would put in their registers: (0.1, 0.2, 0.3, 0.4) */
-    static const float pre[4] = {0.1f, 0.2f, 0.3f, 0.4f};
+    /* what the runtime's preshaders would put in their registers (pre_value) */
     for (uint32_t i = 0; i < p->preshader_count; i++) {
         char name[32];
         snprintf(name, sizeof name, "hfx_c[%u]", p->preshaders[i].reg);
-        set4(prog, name, pre, 1);
+        set4(prog, name, pre_value, 1);
     }
     /* a 1x1 texture of (51, 102, 153, 204) / 255 = (0.2, 0.4, 0.6, 0.8) on unit 0 for every sampler */
     static const unsigned char texel[4] = {51, 102, 153, 204};
@@ -331,7 +333,7 @@ static void preshader_registers(void) {
                                   OP(0x01, 2), DST(R_RASTOUT, 0, 0xf), SRC(R_INPUT, 0, XYZW), END_TOKEN};
     static const uint32_t ps[] = {PS(2, 0), OP(0x01, 2), DST(R_COLOROUT, 0, 0xf), SRC(R_CONST, 5, XYZW), END_TOKEN};
     static const uint32_t code[3] = {7, 8, 9}; /* carried, not run here */
-    static const d3d9_preshader_out out = {5, 1, code, 3, "Tint * 2"};
+    static const d3d9_preshader_out out = {5, 1, code, 3, "Tint * 2", D3D9_PRE_C};
     d3d9_shader *v = decode(&x, vs, sizeof vs / 4, 0), *p = decode(&x, ps, sizeof ps / 4, 64);
     p->pres = &out;
     p->pre_count = 1;
@@ -502,6 +504,59 @@ static void subroutines_refused_at_instruction(void) {
     close_fixture(&x);
 }
 
+/* fxc's ob# / oi# preshader outputs (d3d9_preshader_out.file B and I) drive `if b0` and
+ * `rep i3`: the b register is the preshader's x != 0, the i register its components truncated.
+ *     def c0, 0.25, 0.5, 0.75, 1;  def c1, 0.125, 0, 0, 0
+ *     mov r0, c1.y;  rep i3 { add r0.x, r0.x, c1.x };  if b0 { mov r0.y, c0.w } else { mov r0.y, c0.x }
+ *     mov r0.z, c0.y;  mov r0.w, c0.w;  mov oC0, r0
+ * Preshaders giving (2.75, 1, 0, 0): i3.x = 2 (truncated; rounding would give 3 passes, 0.375),
+ * b0 true: (0.25, 1, 0.5, 1). Giving zeros: no pass, b0 false: (0, 0.25, 0.5, 1). */
+static void preshader_bool_and_int_registers(void) {
+    fixture x;
+    open_fixture(&x, true);
+    const uint32_t ps[] = {
+        PS(3, 0),
+        OP(0x51, 5), DST(R_CONST, 0, 0xf), fbits(0.25f), fbits(0.5f), fbits(0.75f), fbits(1),
+        OP(0x51, 5), DST(R_CONST, 1, 0xf), fbits(0.125f), 0, 0, 0,
+        OP(0x01, 2), DST(R_TEMP, 0, 0xf), SRC(R_CONST, 1, 0x55),
+        OP(0x26, 1), SRC(R_CONSTINT, 3, XYZW),
+        OP(0x02, 3), DST(R_TEMP, 0, 0x1), SRC(R_TEMP, 0, 0), SRC(R_CONST, 1, 0),
+        OP(0x27, 0),
+        OP(0x28, 1), SRC(R_CONSTBOOL, 0, XYZW),
+        OP(0x01, 2), DST(R_TEMP, 0, 0x2), SRC(R_CONST, 0, 0xff),
+        OP(0x2a, 0),
+        OP(0x01, 2), DST(R_TEMP, 0, 0x2), SRC(R_CONST, 0, 0),
+        OP(0x2b, 0),
+        OP(0x01, 2), DST(R_TEMP, 0, 0x4), SRC(R_CONST, 0, 0x55),
+        OP(0x01, 2), DST(R_TEMP, 0, 0x8), SRC(R_CONST, 0, 0xff),
+        OP(0x01, 2), DST(R_COLOROUT, 0, 0xf), SRC(R_TEMP, 0, XYZW),
+        END_TOKEN};
+    static const uint32_t code[3] = {7, 8, 9}; /* carried, not run here */
+    static const d3d9_preshader_out outs[2] = {{3, 1, code, 3, NULL, D3D9_PRE_I}, {0, 1, code, 3, NULL, D3D9_PRE_B}};
+    d3d9_shader *v = decode(&x, vs30, sizeof vs30 / 4, 0), *p = decode(&x, ps, sizeof ps / 4, 256);
+    if (p) p->pres = outs, p->pre_count = 2;
+    hfx_fx_program prog;
+    int rc = v && p ? hfx_codegen_d3d9_program(x.cg, v, p, false, &prog) : -1;
+    CHECK_INT(rc, 0);
+    if (rc == 0) {
+        CHECK_INT(prog.preshader_count, 2);
+        CHECK_CONTAINS(prog.code[1][HFX_TARGET_GLSL330].data, "vec4 hfx_pre_i3;");
+        CHECK_CONTAINS(prog.code[1][HFX_TARGET_GLSL330].data, "vec4 hfx_pre_b0;");
+        if (gl) {
+            unsigned char left[4], right[4];
+            memcpy(pre_value, (const float[4]){2.75f, 1, 0, 0}, sizeof pre_value);
+            draw(&prog, x.fx, left, right);
+            near(right, 0.25f, 1, 0.5f, 1);
+            memset(pre_value, 0, sizeof pre_value);
+            draw(&prog, x.fx, left, right);
+            near(right, 0, 0.25f, 0.5f, 1);
+            memcpy(pre_value, (const float[4]){0.1f, 0.2f, 0.3f, 0.4f}, sizeof pre_value);
+        }
+    }
+    if (rc == 0) hfx_fx_program_clear(&prog);
+    close_fixture(&x);
+}
+
 int main(void) {
     gl = test_gl_create(W, H);
     if (gl) CHECK_INT(test_gl_fns_load(&f), 0);
@@ -514,6 +569,7 @@ int main(void) {
     RUN(vs_ps_3_0_flow_drawn);
     RUN(subroutines_refused_at_instruction);
     RUN(preshader_registers);
+    RUN(preshader_bool_and_int_registers);
     if (gl) test_gl_destroy(gl);
     return test_summary();
 }

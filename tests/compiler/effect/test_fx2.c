@@ -428,28 +428,84 @@ static void listing_of_the_test_effect(void) {
     free(file);
 }
 
+/* A reader over an effect of two float parameters, A and B (values words 0 and 1), for fxlvm.c
+ * alone. */
+static void open_reader(fx2_reader *r, hfx_arena *arena, hfx_diags *diags) {
+    hfx_arena_init(arena);
+    hfx_diags_init(diags, arena, 0);
+    *r = (fx2_reader){0};
+    r->arena = arena;
+    r->diags = diags;
+    r->file = hfx_diags_add_file(diags, "t.fxb", NULL, NULL, 0);
+    r->fx = calloc(1, sizeof *r->fx);
+    r->fx->params = calloc(2, sizeof *r->fx->params);
+    r->fx->param_count = r->fx->top_param_count = 2;
+    const char *names[2] = {"A", "B"};
+    for (uint32_t i = 0; i < 2; i++)
+        r->fx->params[i] = (hfx_fx_param){.name = strdup(names[i]), .klass = HFX_CLASS_SCALAR, .type = HFX_TYPE_FLOAT,
+                                           .rows = 1, .cols = 1, .parent = HFX_NONE, .offset = i, .words = 1,
+                                           .sampler = HFX_NONE};
+    r->fx->value_words = 2;
+}
+
+/* The first component of preshader output o run with A = a. */
+static double run_output(const d3d9_preshader_out *o, float a) {
+    uint32_t values[2] = {0, 0};
+    memcpy(values, &a, 4);
+    hfx_ev_value out;
+    CHECK(hfx_evc_run(o->code, o->words, values, &out));
+    CHECK_INT(out.n, 4);
+    return out.c[0];
+}
+
+/* A preshader setting a bool and an int register besides a float one (fxc's ob# and oi#, which
+ * DigitalRune's ColorEncoder uses for `if b#`), with A in c0:
+ *     cmp ob0.x, c0.x, (0), (1);  add oi1.x, c0.x, (2);  mov oc2.x, c0.x
+ * Outputs: c2 first, then b0, then i1, each 4 floats (unwritten components 0). A = -1.5: b0.x =
+ * 1 (cmp picks its third input when the first is negative), i1.x = 0.5, c2.x = -1.5; A = 0.5:
+ * b0.x = 0, i1.x = 2.5. */
+static void fxlvm_bool_and_int_outputs(void) {
+    hfx_arena arena;
+    hfx_diags diags;
+    fx2_reader r;
+    open_reader(&r, &arena, &diags);
+    fxb b = {0};
+    const fxb_input in[] = {{"A", 0, 1, FXB_FLOAT, 1, 1}};
+    const double lit[4] = {0, 1, 2, 0};
+    const uint32_t code[] = {0x30000001u, 3, 0, 2, 0, 0, 1, 0, 0, 1, 1, 0, 5, 0,
+                             0x20400001u, 2, 0, 2, 0, 0, 1, 2, 0, 6, 4,
+                             0x10000001u, 1, 0, 2, 0, 0, 4, 8};
+    fxb_fxlvm(&b, in, 1, lit, 4, 3, code, sizeof code / sizeof *code);
+    fx2_blob blob = {b.d, b.n, 0};
+    d3d9_preshader_out *outs = NULL;
+    uint32_t n = 0;
+    CHECK(hfx_fxlvm_preshader(&r, &blob, &outs, &n));
+    CHECK_INT(n, 3);
+    if (n == 3) {
+        CHECK(outs[0].file == D3D9_PRE_C && outs[0].reg == 2 && outs[0].count == 1);
+        CHECK(outs[1].file == D3D9_PRE_B && outs[1].reg == 0 && outs[1].count == 1);
+        CHECK(outs[2].file == D3D9_PRE_I && outs[2].reg == 1 && outs[2].count == 1);
+        CHECK_NEAR(run_output(&outs[0], -1.5f), -1.5, 0);
+        CHECK_NEAR(run_output(&outs[1], -1.5f), 1, 0);
+        CHECK_NEAR(run_output(&outs[2], -1.5f), 0.5, 0);
+        CHECK_NEAR(run_output(&outs[1], 0.5f), 0, 0);
+        CHECK_NEAR(run_output(&outs[2], 0.5f), 2.5, 0);
+    }
+    CHECK_INT(diags.errors, 0);
+    free(b.d);
+    hfx_fx_effect_free(r.fx);
+    hfx_arena_free(&arena);
+}
+
 /* fxlvm.c alone on a program with temporaries, literals, cmp and rcp and two outputs:
  *     mul r0.x, c0.x, (2);  add r0.x, r0.x, c1.x;  cmp oc0.x, c1.x, r0.x, (0.5);  rcp oc0.y, r0.x
  * with A in c0 and B in c1. A = 1.5, B = 0.25: r0 = 3.25, (3.25, 1 / 3.25 = 0.30769231);
  * B = -1: r0 = 2, (0.5, 0.5). */
 static void fxlvm_temporaries_and_outputs(void) {
     hfx_arena arena;
-    hfx_arena_init(&arena);
     hfx_diags diags;
-    hfx_diags_init(&diags, &arena, 0);
-    fx2_reader r = {0};
-    r.arena = &arena;
-    r.diags = &diags;
-    r.file = hfx_diags_add_file(&diags, "t.fxb", NULL, NULL, 0);
-    r.fx = calloc(1, sizeof *r.fx);
-    r.fx->params = calloc(2, sizeof *r.fx->params);
-    r.fx->param_count = r.fx->top_param_count = 2;
-    const char *names[2] = {"A", "B"};
-    for (uint32_t i = 0; i < 2; i++)
-        r.fx->params[i] = (hfx_fx_param){.name = strdup(names[i]), .klass = HFX_CLASS_SCALAR, .type = HFX_TYPE_FLOAT,
-                                          .rows = 1, .cols = 1, .parent = HFX_NONE, .offset = i, .words = 1,
-                                          .sampler = HFX_NONE};
-    r.fx->value_words = 2;
+    fx2_reader r;
+    open_reader(&r, &arena, &diags);
     fxb b = {0};
     const fxb_input in[] = {{"A", 0, 1, FXB_FLOAT, 1, 1}, {"B", 1, 1, FXB_FLOAT, 1, 1}};
     const double lit[4] = {2, 0.5, 0, 0};
@@ -500,5 +556,6 @@ int main(void) {
     RUN(xnb_files);
     RUN(listing_of_the_test_effect);
     RUN(fxlvm_temporaries_and_outputs);
+    RUN(fxlvm_bool_and_int_outputs);
     return test_summary();
 }

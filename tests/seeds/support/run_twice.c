@@ -20,12 +20,9 @@ static int run(seed_scene **scene, void (*run_all)(void), bool bytecode) {
         printf("== the same, each effect compiled through the D3D9 bytecode back end and read back\n");
         seed_use_hfxo(*scene, 2);
         run_all();
-        /* an fx_2_0 binary loads with GLSL targets only, not SPIR-V yet */
-        if (seed_target(*scene) < HFX_TARGET_SPIRV) {
-            printf("== the same, each effect written as fx_2_0 (hfxc /T fx_2_0 /Fo) and loaded back by its reader\n");
-            seed_use_hfxo(*scene, 3);
-            run_all();
-        }
+        printf("== the same, each effect written as fx_2_0 (hfxc /T fx_2_0 /Fo) and loaded back by its reader\n");
+        seed_use_hfxo(*scene, 3);
+        run_all();
     }
     seed_report(*scene);
     seed_scene_destroy(*scene);
