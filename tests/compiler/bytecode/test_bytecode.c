@@ -145,12 +145,11 @@ static void limits(void) {
     for (int i = 1; i < 13; i++) n += (size_t)sprintf(src + n, " + s%d", i);
     sprintf(src + n, ";\n}\n");
     refused(src, "vs_2_0", "t.fx(2,8): error X4505: this shader needs 13 temporary registers; vs_2_0 has 12\n");
-    /* a loop bounded by a parameter cannot be unrolled (the writer unrolls every loop) */
+    /* ps_2_0 has no loops: one bounded by a parameter cannot be unrolled (fxc: X3511) */
     refused("int N;\nfloat4 K;\nfloat4 main(float4 c : COLOR0) : COLOR0 {\n    float4 x = c;\n"
             "    for (int i = 0; i < N; i++) x += K;\n    return x;\n}\n",
-            "ps_3_0",
-            "t.fx(5,5): error X3511: unable to unroll loop, loop does not appear to terminate in a timely manner (the "
-            "bytecode writer unrolls every loop)\n");
+            "ps_2_0",
+            "t.fx(5,5): error X3511: unable to unroll loop, loop does not appear to terminate in a timely manner (1024 iterations)\n");
     /* tex2Dlod needs SM3 */
     refused("sampler S;\nfloat4 main(float4 uv : TEXCOORD0) : COLOR0 { return tex2Dlod(S, uv); }\n", "ps_2_0",
             "t.fx(2,54): error X4121: tex2Dlod needs a higher shader model than ps_2_0\n");
