@@ -464,19 +464,17 @@ void hfx_bc_dead_code_flow(bc_gen *g) {
     }
 }
 
-/* At a loop (or an if with an else), the temporaries live into it keep one register until its
- * end (its else): a value the next pass (or the else) reads must stay where it is. Opens their
- * segments here when none is open; true when out of segments. */
+/* At a loop or an if, the temporaries live into it keep one register until its end: what the
+ * next pass reads, or what reaches the endif both through the body and around it, must be in
+ * the same register either way. Opens their segments here when none is open; true when out of
+ * segments. */
 bool hfx_bc_hold_segments(const bc_gen *g, uint32_t i, uint8_t (*live_after)[BC_MAX_TEMPS], int32_t *open, uint32_t *held,
                           int32_t *seg_start, int32_t *seg_end, uint32_t *segs, uint32_t max) {
     uint16_t op = g->insts[i].op;
     if (op != D3D9_LOOP && op != D3D9_REP && op != D3D9_IF && op != D3D9_IFC) return false;
-    uint32_t end = hfx_bc_flow_end(g, i);
+    uint32_t *m = partners(g), end = m[i];
     if (end == UINT32_MAX) return false;
-    if (op == D3D9_IF || op == D3D9_IFC) {
-        if (g->insts[end].op != D3D9_ELSE) return false;
-        end++;
-    }
+    if (g->insts[end].op == D3D9_ELSE) end = m[end]; /* the endif */
     for (unsigned r = 0; r < BC_MAX_TEMPS; r++) {
         if (!live_after[i][r]) continue;
         if (open[r] < 0) {
