@@ -141,6 +141,31 @@ static void ps_3_0_parameter_loop(void) {
             "\n// approximately 13 instruction slots used (0 texture, 13 arithmetic)\n");
 }
 
+/* A while loop with a break in ps_3_0: `rep` over defi's 255 passes (no counter for aL to
+ * follow), the condition as break_ge at the top (x.x < Limit negated), `if (x.y > 2) break;` as
+ * one break_gt; slots: rep 3, break_comp 3 each, endrep 2. */
+static void ps_3_0_while_break(void) {
+    listing("float4 K;\nfloat Limit;\n"
+            "float4 main(float4 c : COLOR0) : COLOR0 {\n    float4 x = c;\n"
+            "    while (x.x < Limit) {\n        x += K;\n        if (x.y > 2) break;\n    }\n    return x;\n}\n",
+            "ps_3_0",
+            "//   float4 K;\n//   float Limit;\n//\n//\n// Registers:\n//\n"
+            "//   Name         Reg   Size\n//   ------------ ----- ----\n"
+            "//   Limit        c0       1\n//   K            c1       1\n//\n\n",
+            "    ps_3_0\n"
+            "    def c2, 0, 2, 0, 0\n"
+            "    defi i0, 255, 0, 0, 0\n"
+            "    dcl_color v0\n"
+            "    mov r0, v0\n"
+            "    rep i0\n"
+            "      break_ge r0.x, c0.x\n"
+            "      add r0, r0, c1\n"
+            "      break_gt r0.y, c2.y\n"
+            "    endrep\n"
+            "    mov oC0, r0\n"
+            "\n// approximately 14 instruction slots used (0 texture, 14 arithmetic)\n");
+}
+
 /* vs_2_0's static loop: `rep i0` runs Count's i register (INT4 in the CTAB) times; the counter,
  * which nothing reads, is not kept. Slots: rep 3, endrep 2. */
 static void vs_2_0_static_loop(void) {
@@ -216,6 +241,7 @@ int main(void) {
     RUN(ps_2_0_clip_and_saturate);
     RUN(ps_3_0_parameter_loop);
     RUN(vs_2_0_static_loop);
+    RUN(ps_3_0_while_break);
     RUN(ps_3_0_reflect_pow_select);
     RUN(limits);
     return test_summary();
