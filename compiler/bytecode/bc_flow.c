@@ -169,7 +169,7 @@ static bool canonical(bc_gen *g, const ir_stmt *s, shape *sh) {
     else if (st->kind == IE_UNARY && (st->op == OP_PREDEC || st->op == OP_POSTDEC)) k = -1;
     else if (st->kind == IE_ASSIGN && (st->op == OP_ADD || st->op == OP_SUB) && hfx_bc_try_const(g, st->a[1], &k)) k = st->op == OP_SUB ? -k : k;
     else return false;
-    if (k == 0 || k != (double)(int)k) return false;
+    if (k == 0 || k != (double)hfx_ev_int(k)) return false;
     ir_var_set w = {0};
     hfx_ir_note_writes(g->c, s->then_s, &w);
     if (w.unknown || hfx_ir_var_set_has(&w, v->var)) return false;
@@ -253,7 +253,7 @@ static void real_loop(bc_gen *g, const ir_stmt *s, const shape *sh, enum loop_ki
     if (!rd.found) hfx_ir_walk_stmt_exprs(g->c, s->then_s, note_read, &rd);
     bc_region r = pin(g, s, rd.found ? NULL : sh->i);
     bc_val src[2] = {hfx_bc_reg(D3D9_REG_LOOP, 0, 4), hfx_bc_reg(D3D9_REG_CONSTINT, 0, 4)};
-    if (kind == LOOP_AL) src[1].num = defi(g, 255, (int32_t)(sh->start * per), (int32_t)(sh->step * per));
+    if (kind == LOOP_AL) src[1].num = defi(g, 255, hfx_ev_int(sh->start * per), hfx_ev_int(sh->step * per));
     else if (kind == LOOP_REP) src[1].num = defi(g, 255, 0, 0);
     else src[1].num = int_param(g, strip(sh->bound)->var);
     if (kind == LOOP_AL) emit_flow(g, D3D9_LOOP, src, 2);
