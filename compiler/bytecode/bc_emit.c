@@ -68,7 +68,7 @@ bc_val hfx_bc_neg(bc_val v) {
 
 static d3d9_src src_of(const bc_val *v, unsigned mask, bool replicate) {
     d3d9_src s = {.type = v->type, .num = v->num, .mod = v->mod, .relative = v->rel};
-    if (v->rel) { s.rel_type = D3D9_REG_ADDR; s.rel_comp = 0; }
+    if (v->rel) { s.rel_type = v->rel_aL ? D3D9_REG_LOOP : D3D9_REG_ADDR; s.rel_comp = 0; }
     uint8_t sw[4];
     unsigned k = 0;
     bool identity = true;
@@ -424,6 +424,12 @@ const uint32_t *hfx_bc_encode(bc_gen *g, uint32_t *count) {
         d3d9_inst d = {.op = D3D9_DEF, .has_dst = true};
         d.dst = (d3d9_dst){.type = D3D9_REG_CONST, .num = g->defs[i].num, .mask = 0xf};
         memcpy(d.value.f, g->defs[i].v, sizeof d.value.f);
+        put_inst(&o, &d);
+    }
+    for (uint32_t i = 0; i < g->defi_count; i++) { /* loop counts: `defi iN, count, start, step, 0` */
+        d3d9_inst d = {.op = D3D9_DEFI, .has_dst = true};
+        d.dst = (d3d9_dst){.type = D3D9_REG_CONSTINT, .num = g->defis[i].num, .mask = 0xf};
+        memcpy(d.value.i, g->defis[i].v, sizeof d.value.i);
         put_inst(&o, &d);
     }
     for (int pass = 0; pass < 2; pass++) /* inputs and outputs, then samplers, as fxc lists them */

@@ -349,6 +349,8 @@ static bc_obj index_of(bc_gen *g, const ir_expr *e) {
     double k;
     if (t->kind == TY_ARRAY) {
         uint32_t per = hfx_bc_slots(t->elem, o.cols);
+        bc_obj by_aL;
+        if (!hfx_bc_try_const(g, e->a[1], &k) && hfx_bc_loop_index(g, o, e->a[1], per, &by_aL)) return by_aL;
         if (!hfx_bc_try_const(g, e->a[1], &k)) return relative(g, o, e->a[1], per);
         uint32_t i = k < 0 || k >= t->array_len ? 0 : hfx_ev_uint(k);
         return sub(g, o, i * per, per);

@@ -295,6 +295,9 @@ static bool ends_in_return(const ir_stmt *s) {
     return s->kind == IS_BLOCK && s->count && ends_in_return(s->body[s->count - 1]);
 }
 
+/* Code inside a loop written as a loop (bc_flow.c), in the loop's own function. */
+static bool in_real_loop(const bc_gen *g) { return g->loop_region && g->depth == g->loop_fn_depth; }
+
 static void end_scope(bc_gen *g, uint32_t mark) {
     uint32_t n = mark;
     for (uint32_t i = mark; i < g->bind_count; i++) {
@@ -317,7 +320,7 @@ static void gen_block_from(bc_gen *g, const ir_stmt *b, uint32_t from) {
     for (uint32_t i = from; i < b->count && !g->failed && !g->broke; i++) {
         const ir_stmt *s = b->body[i];
         g->loc = s->loc;
-        if (s->kind == IS_IF && ends_in_return(s->then_s) && !s->else_s && i + 1 < b->count) {
+        if (s->kind == IS_IF && ends_in_return(s->then_s) && !s->else_s && i + 1 < b->count && !in_real_loop(g)) {
             gen_if(g, s, b, i + 1);
             break;
         }
@@ -415,6 +418,7 @@ static void gen_if(bc_gen *g, const ir_stmt *s, const ir_stmt *rest, uint32_t re
         else gen_body(g, s->else_s);
         return;
     }
+    if (hfx_bc_flow_if(g, s)) return;
     uint32_t *wi;
     uint32_t n = written(g, s, &wi);
 #define w(i) (&g->binds[wi[i]])
@@ -497,11 +501,16 @@ enum { MAX_UNROLL = 1024 };
 static void gen_loop(bc_gen *g, const ir_stmt *s) {
     uint32_t mark = g->bind_count;
     if (s->init) gen_stmt(g, s->init);
+    if (!g->failed && hfx_bc_flow_loop(g, s)) {
+        end_scope(g, mark);
+        return;
+    }
+    struct bc_region *outer = g->loop_region; /* its breaks are the unrolled loop's */
+    g->loop_region = NULL;
     for (unsigned it = 0; !g->failed; it++) {
         double k = 1;
         if ((s->kind != IS_DO || it) && s->expr && !hfx_bc_try_const(g, s->expr, &k)) {
-            hfx_bc_fail(g, s->loc, X_BC_LOOP, "unable to unroll loop, loop does not appear to terminate in a timely "
-                                          "manner (the bytecode writer unrolls every loop)");
+            hfx_bc_fail(g, s->loc, X_BC_LOOP, "unable to unroll loop, loop does not appear to terminate in a timely manner (%u iterations)", MAX_UNROLL);
             break;
         }
         if (!k) break;
@@ -517,6 +526,7 @@ static void gen_loop(bc_gen *g, const ir_stmt *s) {
             break;
         }
     }
+    g->loop_region = outer;
     end_scope(g, mark);
 }
 
@@ -607,11 +617,16 @@ static void gen_stmt(bc_gen *g, const ir_stmt *s) {
     case IS_IF: gen_if(g, s, NULL, 0); break;
     case IS_FOR: case IS_WHILE: case IS_DO: gen_loop(g, s); break;
     case IS_RETURN:
+        if (in_real_loop(g)) {
+            hfx_bc_fail(g, s->loc, X_BC_UNSUPPORTED, "the bytecode writer does not handle a return inside a loop it does not unroll yet");
+            break;
+        }
         if (s->expr && g->capture) capture_return(g, s->expr);
         else if (s->expr && g->ret) gen_return(g, s->expr);
         break;
     case IS_DISCARD: gen_discard(g); break;
     case IS_BREAK:
+        if (in_real_loop(g)) { hfx_bc_flow_break(g, s); break; }
         if (g->cond.n) hfx_bc_fail(g, s->loc, X_BC_LOOP, "unable to unroll loop: it breaks under a condition the compiler cannot fold");
         g->broke = true;
         break;

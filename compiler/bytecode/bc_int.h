@@ -25,6 +25,7 @@ typedef struct bc_val {
     uint8_t sw[4];
     bool own;
     bool rel;                 /* c[a0.x + num] */
+    bool rel_aL;              /* with rel: c[aL + num] */
 } bc_val;
 
 /* A value of any type: slots of up to four components (matrices one per row, or one per column
@@ -72,6 +73,15 @@ typedef struct bc_gen {
     uint32_t inputs, outputs, samplers;
     uint32_t depth;           /* inlined calls, against recursion */
     bool failed;
+    /* flow control (bc_flow.c) */
+    struct bc_region *loop_region; /* the innermost real loop's pinned variables (a break syncs them) */
+    uint32_t loop_fn_depth;   /* g->depth of that loop: a return there cannot be flattened */
+    const ir_var *aL_var;     /* the counter aL follows: its arrays read as c[aL + n] */
+    uint32_t aL_per;          /* registers aL steps per element */
+    uint32_t loop_nest, if_nest;
+    struct bc_defi { int32_t v[4]; uint16_t num; } *defis; uint32_t defi_count, defi_cap;
+    uint16_t next_int;        /* i registers taken */
+    bool has_flow;            /* the code has if / loop / rep: liveness follows the flow */
 } bc_gen;
 
 /* --- bc_emit.c --- */
@@ -128,7 +138,24 @@ bc_val hfx_bc_select(bc_gen *g, bc_val c, bc_val a, bc_val b);  /* c (0 / 1) ? a
 bool hfx_bc_try_const(bc_gen *g, const ir_expr *e, double *out);
 bc_val hfx_bc_per_comp(bc_gen *g, uint16_t op, bc_val a, const bc_val *b); /* op on each component (rcp, rsq, exp, log, pow) */
 
+/* --- bc_flow.c --- */
+/* A loop the unroller cannot unroll (its condition is not a constant), written as a loop with
+ * loop / rep / break (SM3, vs_2_x), or false when the caller should unroll it. init already ran. */
+bool hfx_bc_flow_loop(bc_gen *g, const ir_stmt *s);
+bool hfx_bc_flow_if(bc_gen *g, const ir_stmt *s);           /* an if inside a real loop that breaks: if_comp / endif */
+void hfx_bc_flow_break(bc_gen *g, const ir_stmt *s);
+bool hfx_bc_loop_index(bc_gen *g, bc_obj o, const ir_expr *idx, uint32_t per, bc_obj *out); /* c[aL + n] */
+/* Temporaries' live components after each instruction, following if / else / loop / break. */
+void hfx_bc_live(const bc_gen *g, uint8_t (*after)[BC_MAX_TEMPS]);
+void hfx_bc_dead_code_flow(bc_gen *g);
+/* hfx_bc_renumber's segments held open across the loop / if at instruction i. */
+bool hfx_bc_hold_segments(const bc_gen *g, uint32_t i, uint8_t (*live_after)[BC_MAX_TEMPS], int32_t *open, uint32_t *held,
+                          int32_t *seg_start, int32_t *seg_end, uint32_t *segs, uint32_t max);                      /* hfx_bc_dead_code where the code has flow */
+/* The flow instruction closing / continuing the block opened at `at` (loop: its endloop). */
+uint32_t hfx_bc_flow_end(const bc_gen *g, uint32_t at);
+
 /* --- bc_peep.c --- */
+unsigned hfx_bc_read_comps(const d3d9_inst *in, const d3d9_src *s); /* the components in reads of s */
 void hfx_bc_sink(bc_gen *g);                                 /* copies folded into the instructions they copy */
 uint32_t hfx_bc_renumber(bc_gen *g);                         /* temporaries renumbered by span; how many */
 void hfx_bc_dead_code(bc_gen *g);                            /* instructions whose results nothing reads */

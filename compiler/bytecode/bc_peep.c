@@ -37,7 +37,7 @@ static bool dead_after(const bc_gen *g, uint32_t at, unsigned num, unsigned mask
             mask &= ~(unsigned)in->dst.mask;
             if (!mask) return true;
         }
-        if (in->op == D3D9_IF || in->op == D3D9_LOOP || in->op == D3D9_REP) return false;
+        if (hfx_d3d9_op_find(in->op)->flags & D3D9_OPF_FLOW) return false; /* the value may flow elsewhere */
     }
     return true;
 }
@@ -84,7 +84,7 @@ static bool try_sink(bc_gen *g, uint32_t at) {
     unsigned remaining = mask;
     for (uint32_t i = at; i-- > 0 && remaining;) {
         d3d9_inst *in = &g->insts[i];
-        if (in->op == D3D9_ENDIF || in->op == D3D9_ENDLOOP || in->op == D3D9_ENDREP || in->op == D3D9_ELSE) return false;
+        if (hfx_d3d9_op_find(in->op)->flags & D3D9_OPF_FLOW) return false; /* writers in this block only */
         bool w = writes(in, D3D9_REG_TEMP, T);
         if (reads(in, D3D9_REG_TEMP, T)) return false;
         /* the target must be left alone while the writers run (the first writer may read it:
@@ -118,7 +118,6 @@ void hfx_bc_sink(bc_gen *g) {
         if (!try_sink(g, i)) i++;
 }
 
-static unsigned read_comps(const d3d9_inst *in, const d3d9_src *s);
 
 /* Temporaries renumbered by the values they hold: a register's value ends where none of its
  * components is read again (backward liveness; the code has no loops), the next write starts
@@ -127,13 +126,14 @@ uint32_t hfx_bc_renumber(bc_gen *g) {
     uint32_t n = g->inst_count;
     uint8_t (*live_after)[BC_MAX_TEMPS] = (uint8_t (*)[BC_MAX_TEMPS])hfx_arena_alloc_raw(g->c->arena, (size_t)(n ? n : 1) * BC_MAX_TEMPS);
     unsigned live[BC_MAX_TEMPS] = {0};
-    for (uint32_t i = n; i-- > 0;) {
+    if (g->has_flow) hfx_bc_live(g, live_after);
+    for (uint32_t i = g->has_flow ? 0 : n; i-- > 0;) {
         const d3d9_inst *in = &g->insts[i];
         for (unsigned r = 0; r < BC_MAX_TEMPS; r++) live_after[i][r] = (uint8_t)live[r];
         if (writes(in, D3D9_REG_TEMP, in->dst.num) && in->dst.type == D3D9_REG_TEMP && in->dst.num < BC_MAX_TEMPS && !in->predicated)
             live[in->dst.num] &= ~(unsigned)in->dst.mask;
         for (unsigned k = 0; k < in->src_count; k++)
-            if (in->src[k].type == D3D9_REG_TEMP && in->src[k].num < BC_MAX_TEMPS) live[in->src[k].num] |= read_comps(in, &in->src[k]);
+            if (in->src[k].type == D3D9_REG_TEMP && in->src[k].num < BC_MAX_TEMPS) live[in->src[k].num] |= hfx_bc_read_comps(in, &in->src[k]);
         if (in->op == D3D9_TEXKILL && in->dst.type == D3D9_REG_TEMP && in->dst.num < BC_MAX_TEMPS) live[in->dst.num] |= 0xf;
     }
     enum { MAX_SEGS = 4096 };
@@ -141,9 +141,11 @@ uint32_t hfx_bc_renumber(bc_gen *g) {
     for (unsigned r = 0; r < BC_MAX_TEMPS; r++) open[r] = -1;
     int32_t *seg_start = HFX_NEW_ARRAY(g->c->arena, int32_t, MAX_SEGS), *seg_end = HFX_NEW_ARRAY(g->c->arena, int32_t, MAX_SEGS);
     int32_t *dst_seg = HFX_NEW_ARRAY(g->c->arena, int32_t, n ? n : 1), *src_seg = HFX_NEW_ARRAY(g->c->arena, int32_t, (n ? n : 1) * 4);
-    uint32_t segs = 0;
+    uint32_t segs = 0, held[BC_MAX_TEMPS] = {0};
     for (uint32_t i = 0; i < n; i++) {
         const d3d9_inst *in = &g->insts[i];
+        if (g->has_flow && hfx_bc_hold_segments(g, i, live_after, open, held, seg_start, seg_end, &segs, MAX_SEGS))
+            return BC_MAX_TEMPS + 1;
         dst_seg[i] = -1;
         for (unsigned k = 0; k < 4; k++) src_seg[i * 4 + k] = -1;
         for (unsigned r = 0; r < BC_MAX_TEMPS; r++) {
@@ -157,11 +159,11 @@ uint32_t hfx_bc_renumber(bc_gen *g) {
                 seg_start[segs] = (int32_t)i;
                 segs++;
             }
-            seg_end[open[r]] = (int32_t)i;
+            if (seg_end[open[r]] < (int32_t)i) seg_end[open[r]] = (int32_t)i;
             if (dst) dst_seg[i] = open[r];
             for (unsigned k = 0; k < in->src_count; k++)
                 if (in->src[k].type == D3D9_REG_TEMP && in->src[k].num == r) src_seg[i * 4 + k] = open[r];
-            if (!live_after[i][r]) open[r] = -1;
+            if (!live_after[i][r] && i >= held[r]) open[r] = -1;
         }
     }
     int32_t *color = HFX_NEW_ARRAY(g->c->arena, int32_t, segs ? segs : 1);
@@ -187,7 +189,7 @@ uint32_t hfx_bc_renumber(bc_gen *g) {
 }
 
 /* The source components an instruction reads (componentwise: those its mask writes). */
-static unsigned read_comps(const d3d9_inst *in, const d3d9_src *s) {
+unsigned hfx_bc_read_comps(const d3d9_inst *in, const d3d9_src *s) {
     unsigned mask = 0;
     const d3d9_op_info *info = hfx_d3d9_op_find(in->op);
     bool componentwise = in->has_dst && info && !(info->flags & (D3D9_OPF_TEX | D3D9_OPF_SCALAR | D3D9_OPF_MATRIX)) &&
@@ -201,6 +203,7 @@ static unsigned read_comps(const d3d9_inst *in, const d3d9_src *s) {
 /* Instructions whose temporaries nothing reads afterwards are dropped (a variant's unused
  * outputs, a select's unread side); the code has no loops, so one walk back suffices. */
 void hfx_bc_dead_code(bc_gen *g) {
+    if (g->has_flow) { hfx_bc_dead_code_flow(g); return; }
     unsigned live[BC_MAX_TEMPS] = {0};
     uint32_t n = g->inst_count;
     bool *drop = HFX_NEW_ARRAY(g->c->arena, bool, n ? n : 1);
@@ -213,7 +216,7 @@ void hfx_bc_dead_code(bc_gen *g) {
         }
         if (temp && !in->predicated) live[in->dst.num] &= ~(unsigned)in->dst.mask;
         for (unsigned k = 0; k < in->src_count; k++)
-            if (in->src[k].type == D3D9_REG_TEMP && in->src[k].num < BC_MAX_TEMPS) live[in->src[k].num] |= read_comps(in, &in->src[k]);
+            if (in->src[k].type == D3D9_REG_TEMP && in->src[k].num < BC_MAX_TEMPS) live[in->src[k].num] |= hfx_bc_read_comps(in, &in->src[k]);
         if (in->op == D3D9_TEXKILL && in->dst.type == D3D9_REG_TEMP && in->dst.num < BC_MAX_TEMPS) live[in->dst.num] |= 0xf;
     }
     uint32_t k = 0;

@@ -259,6 +259,6 @@ static void run_all(void) {
 }
 
 int main(void) {
-    if (seed_run_twice(&S, run_all)) return 1;
+    if (seed_run_thrice(&S, run_all)) return 1;
     return test_summary();
 }

@@ -115,6 +115,77 @@ static void ps_3_0_reflect_pow_select(void) {
             "\n// approximately 15 instruction slots used (0 texture, 15 arithmetic)\n");
 }
 
+/* A loop bounded by a parameter in ps_3_0, as fxc writes it: the counter i in a temporary tested
+ * against N by break_ge at the top of each pass; aL runs 0, 1, 2... (defi: 255 passes at most,
+ * start 0, step 1) so Col[i] is c[aL + 1]; slots: loop 3, break_comp 3, endloop 2, the rest 1. */
+static void ps_3_0_parameter_loop(void) {
+    listing("int N;\nfloat4 Col[8];\n"
+            "float4 main(float2 uv : TEXCOORD0) : COLOR0 {\n    float4 c = 0;\n"
+            "    for (int i = 0; i < N; i++) c += Col[i] * uv.x;\n    return c;\n}\n",
+            "ps_3_0",
+            "//   float4 Col[8];\n//   int N;\n//\n//\n// Registers:\n//\n"
+            "//   Name         Reg   Size\n//   ------------ ----- ----\n"
+            "//   N            c0       1\n//   Col          c1       8\n//\n\n",
+            "    ps_3_0\n"
+            "    def c9, 0, 1, 0, 0\n"
+            "    defi i0, 255, 0, 1, 0\n"
+            "    dcl_texcoord v0.xy\n"
+            "    mov r0.x, c9.x\n"              /* i = 0 */
+            "    mov r1, c9.x\n"                /* c = 0 */
+            "    loop aL, i0\n"
+            "      break_ge r0.x, c0.x\n"       /* leaves when !(i < N) */
+            "      mad r1, c1[aL], v0.x, r1\n"  /* c += Col[i] * uv.x */
+            "      add r0.x, r0.x, c9.y\n"      /* i++ */
+            "    endloop\n"
+            "    mov oC0, r1\n"
+            "\n// approximately 13 instruction slots used (0 texture, 13 arithmetic)\n");
+}
+
+/* A while loop with a break in ps_3_0: `rep` over defi's 255 passes (no counter for aL to
+ * follow), the condition as break_ge at the top (x.x < Limit negated), `if (x.y > 2) break;` as
+ * one break_gt; slots: rep 3, break_comp 3 each, endrep 2. */
+static void ps_3_0_while_break(void) {
+    listing("float4 K;\nfloat Limit;\n"
+            "float4 main(float4 c : COLOR0) : COLOR0 {\n    float4 x = c;\n"
+            "    while (x.x < Limit) {\n        x += K;\n        if (x.y > 2) break;\n    }\n    return x;\n}\n",
+            "ps_3_0",
+            "//   float4 K;\n//   float Limit;\n//\n//\n// Registers:\n//\n"
+            "//   Name         Reg   Size\n//   ------------ ----- ----\n"
+            "//   Limit        c0       1\n//   K            c1       1\n//\n\n",
+            "    ps_3_0\n"
+            "    def c2, 0, 2, 0, 0\n"
+            "    defi i0, 255, 0, 0, 0\n"
+            "    dcl_color v0\n"
+            "    mov r0, v0\n"
+            "    rep i0\n"
+            "      break_ge r0.x, c0.x\n"
+            "      add r0, r0, c1\n"
+            "      break_gt r0.y, c2.y\n"
+            "    endrep\n"
+            "    mov oC0, r0\n"
+            "\n// approximately 14 instruction slots used (0 texture, 14 arithmetic)\n");
+}
+
+/* vs_2_0's static loop: `rep i0` runs Count's i register (INT4 in the CTAB) times; the counter,
+ * which nothing reads, is not kept. Slots: rep 3, endrep 2. */
+static void vs_2_0_static_loop(void) {
+    listing("int Count;\nfloat4 Offset;\n"
+            "float4 main(float4 p : POSITION) : POSITION {\n    float4 x = p;\n"
+            "    for (int i = 0; i < Count; i++) x += Offset;\n    return x;\n}\n",
+            "vs_2_0",
+            "//   int Count;\n//   float4 Offset;\n//\n//\n// Registers:\n//\n"
+            "//   Name         Reg   Size\n//   ------------ ----- ----\n"
+            "//   Offset       c1       1\n//   Count        i0       1\n//\n\n",
+            "    vs_2_0\n"
+            "    dcl_position v0\n"
+            "    mov r0, v0\n"
+            "    rep i0\n"
+            "      add r0, r0, c1\n"
+            "    endrep\n"
+            "    mov oPos, r0\n"
+            "\n// approximately 8 instruction slots used\n");
+}
+
 /* `register(vs, c3) : register(ps, c1)` (FNA's stock effects write every parameter so): each
  * stage takes its own reservation; a parameter without one takes the first register no
  * parameter reserves for that stage (c0 here, though A and B come first). Before, the last
@@ -174,12 +245,21 @@ static void limits(void) {
     for (int i = 1; i < 13; i++) n += (size_t)sprintf(src + n, " + s%d", i);
     sprintf(src + n, ";\n}\n");
     refused(src, "vs_2_0", "t.fx(2,8): error X4505: this shader needs 13 temporary registers; vs_2_0 has 12\n");
-    /* a loop bounded by a parameter cannot be unrolled (the writer unrolls every loop) */
+    /* ps_2_0 has no loops: one bounded by a parameter cannot be unrolled (fxc: X3511) */
     refused("int N;\nfloat4 K;\nfloat4 main(float4 c : COLOR0) : COLOR0 {\n    float4 x = c;\n"
             "    for (int i = 0; i < N; i++) x += K;\n    return x;\n}\n",
-            "ps_3_0",
-            "t.fx(5,5): error X3511: unable to unroll loop, loop does not appear to terminate in a timely manner (the "
-            "bytecode writer unrolls every loop)\n");
+            "ps_2_0",
+            "t.fx(5,5): error X3511: unable to unroll loop, loop does not appear to terminate in a timely manner (1024 iterations)\n");
+    /* SM3 nests loops 4 deep: the fifth is refused where it starts */
+    refused("int N;\nfloat4 main(float4 c : COLOR0) : COLOR0 {\n    float4 x = c;\n"
+            "    for (int a = 0; a < N; a++)\n        for (int b = 0; b < N; b++)\n"
+            "            for (int d = 0; d < N; d++)\n                for (int e = 0; e < N; e++)\n"
+            "                    for (int f = 0; f < N; f++) x += c;\n    return x;\n}\n",
+            "ps_3_0", "t.fx(8,21): error X5301: loop nesting exceeds the limit of ps_3_0 (4)\n");
+    /* vs_2_0 nests loops 1 deep */
+    refused("int N;\nfloat4 main(float4 c : POSITION) : POSITION {\n    float4 x = c;\n"
+            "    for (int a = 0; a < N; a++)\n        for (int b = 0; b < N; b++) x += c;\n    return x;\n}\n",
+            "vs_2_0", "t.fx(5,9): error X5301: loop nesting exceeds the limit of vs_2_0 (1)\n");
     /* tex2Dlod needs SM3 */
     refused("sampler S;\nfloat4 main(float4 uv : TEXCOORD0) : COLOR0 { return tex2Dlod(S, uv); }\n", "ps_2_0",
             "t.fx(2,54): error X4121: tex2Dlod needs a higher shader model than ps_2_0\n");
@@ -188,6 +268,9 @@ static void limits(void) {
 int main(void) {
     RUN(vs_2_0_transform_and_mad);
     RUN(ps_2_0_clip_and_saturate);
+    RUN(ps_3_0_parameter_loop);
+    RUN(vs_2_0_static_loop);
+    RUN(ps_3_0_while_break);
     RUN(ps_3_0_reflect_pow_select);
     RUN(per_stage_registers);
     RUN(limits);

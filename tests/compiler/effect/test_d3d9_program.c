@@ -24,7 +24,7 @@ static test_gl_fns f;
 
 /* The effect whose parameters the CTABs name (its own passes are not used). */
 static const char params_fx[] =
-    "float4x4 M; float4 Tint; float Scale; float4 Colors[2]; float4 Offset;\n"
+    "float4x4 M; float4 Tint; float Scale; float4 Colors[2]; float4 Offset; int Count;\n"
     "texture Tex; sampler TexSampler = sampler_state { Texture = <Tex>; MinFilter = Point; MagFilter = Point; };\n"
     "technique T { pass P { } }\n";
 
@@ -155,6 +155,7 @@ static void draw(const hfx_fx_program *p, const hfx_fx_effect *fx, unsigned char
         else if (strcmp(n, "Offset") == 0) set4(prog, g, offset, 1);
         else if (strcmp(n, "Colors") == 0) set4(prog, g, colors, 2);
         else if (strcmp(n, "Scale") == 0 && loc >= 0) f.Uniform1fv(loc, 1, &scale);
+        else if (strcmp(n, "Count") == 0 && loc >= 0) f.Uniform1i(loc, 2);
     }
     /* what the runtime's preshaders would put in their registers (pre_value) */
     for (uint32_t i = 0; i < p->preshader_count; i++) {
@@ -321,6 +322,71 @@ static void vs_ps_3_0_flow_drawn(void) {
         }
     }
     hfx_fx_program_clear(&prog);
+    close_fixture(&x);
+}
+
+/* One entry compiled from HLSL by hfx's bytecode writer (hfxc /T profile /E main), decoded. */
+static d3d9_shader *compiled(fixture *x, const char *src, const char *profile, uint32_t base) {
+    hfxc_options o = {.entry = "main", .profile = profile};
+    hfxc_result *r = hfxc_compile_memory(src, strlen(src), "loop.fx", &o);
+    size_t size = 0;
+    const void *code = hfxc_result_bytecode(r, &size);
+    CHECK(code != NULL);
+    d3d9_shader *s = NULL;
+    if (code) {
+        uint32_t *w = hfx_arena_alloc_raw(&x->arena, size);
+        memcpy(w, code, size);
+        s = decode(x, w, size / 4, base);
+    } else {
+        char *d = hfxc_diagnostics_text(r);
+        fprintf(stderr, "%s", d);
+        free(d);
+    }
+    hfxc_result_free(r);
+    return s;
+}
+
+static void draw_pair(fixture *x, d3d9_shader *vs, d3d9_shader *ps, const float want[4]) {
+    hfx_fx_program prog;
+    int rc = vs && ps ? hfx_codegen_d3d9_program(x->cg, vs, ps, false, &prog) : -1;
+    CHECK_INT(rc, 0);
+    if (rc != 0) {
+        char *d = hfx_diags_format(&x->diags, 0);
+        fprintf(stderr, "%s", d);
+        free(d);
+        return;
+    }
+    if (getenv("HFX_D3D9_SHOW")) printf("%s\n%s\n", prog.code[0][HFX_TARGET_GLSL330].data, prog.code[1][HFX_TARGET_GLSL330].data);
+    if (gl) {
+        unsigned char left[4], right[4];
+        draw(&prog, x->fx, left, right);
+        near(right, want[0], want[1], want[2], want[3]);
+    }
+    hfx_fx_program_clear(&prog);
+}
+
+/* Loops bounded by a parameter, as hfx's writer writes them, read back and drawn (Count = 2):
+ * ps_3_0's `loop aL` / `break_ge` with Colors[i] read as c[aL + n], vs_2_0's `rep` over Count's
+ * i register. */
+static void parameter_bound_loops_drawn(void) {
+    fixture x;
+    open_fixture(&x, true);
+    /* c = (0.1, 0.2, 0.3, 0.4) + (Colors[0] + Colors[1]) * 0.5 = (0.1, 0.2, 0.3 + (0.9 + 0.3) * 0.5, 0.4) */
+    d3d9_shader *ps = compiled(&x, "int Count; float4 Colors[2];\n"
+                                   "float4 main(float2 uv : TEXCOORD0) : COLOR0 {\n"
+                                   "    float4 c = float4(0.1, 0.2, 0.3, 0.4);\n"
+                                   "    for (int i = 0; i < Count; i++) c += Colors[i] * 0.5;\n"
+                                   "    return c;\n}\n", "ps_3_0", 512);
+    draw_pair(&x, decode(&x, vs30, sizeof vs30 / 4, 0), ps, (const float[4]){0.1f, 0.2f, 0.9f, 0.4f});
+    close_fixture(&x);
+    open_fixture(&x, false); /* parameters as uniforms of their own, which draw() sets by name */
+    /* col = Offset * 0.5 twice = Offset = (0.3, 0.1, 0.05, 0.6); M moves the quad right by 0.5 */
+    d3d9_shader *vs = compiled(&x, "int Count; float4 Offset; float4x4 M;\n"
+                                   "void main(float4 p : POSITION, out float4 o : POSITION, out float4 col : COLOR0) {\n"
+                                   "    o = mul(p, M);\n    col = 0;\n"
+                                   "    for (int i = 0; i < Count; i++) col += Offset * 0.5;\n}\n", "vs_2_0", 0);
+    d3d9_shader *ps2 = compiled(&x, "float4 main(float4 c : COLOR0) : COLOR0 { return c; }\n", "ps_2_0", 1024);
+    draw_pair(&x, vs, ps2, (const float[4]){0.3f, 0.1f, 0.05f, 0.6f});
     close_fixture(&x);
 }
 
@@ -570,6 +636,7 @@ int main(void) {
     RUN(subroutines_refused_at_instruction);
     RUN(preshader_registers);
     RUN(preshader_bool_and_int_registers);
+    RUN(parameter_bound_loops_drawn);
     if (gl) test_gl_destroy(gl);
     return test_summary();
 }
