@@ -129,8 +129,15 @@ bc_val hfx_bc_per_comp(bc_gen *g, uint16_t op, bc_val a, const bc_val *b); /* op
 
 /* --- bc_peep.c --- */
 void hfx_bc_sink(bc_gen *g);                                 /* copies folded into the instructions they copy */
-uint32_t hfx_bc_renumber(bc_gen *g);                         /* temporaries renumbered by span; how many */
 void hfx_bc_dead_code(bc_gen *g);                            /* instructions whose results nothing reads */
+
+/* --- bc_alloc.c --- */
+/* Per instruction, the components of each temporary read later on some path (NULL: out of
+ * memory); dead (optional, one per instruction): writes nothing reads, which read nothing. */
+uint8_t (*hfx_bc_liveness(bc_gen *g, bool *dead))[BC_MAX_TEMPS];
+unsigned hfx_bc_read_comps(const bc_gen *g, const d3d9_inst *in, unsigned k); /* components source k reads */
+bool hfx_bc_droppable(const d3d9_inst *in);                  /* only writes a temporary */
+uint32_t hfx_bc_renumber(bc_gen *g);                         /* temporaries packed by component; how many */
 void hfx_bc_prune_constants(bc_gen *g);                      /* parameters and defs nothing reads */
 
 /* --- bc_intrin.c --- */

@@ -102,15 +102,15 @@ static void ps_3_0_reflect_pow_select(void) {
             "    dcl_texcoord v0.xyz\n"
             "    dcl_texcoord1 v1.xyz\n"
             "    nrm r0.xyz, v0\n"
-            "    dp3 r1.x, r0, c0\n"                /* d */
-            "    dp3 r2.x, r0, -c0\n"               /* reflect(i = -L, N): dot(N, i) */
-            "    add r2.x, r2.x, r2.x\n"            /* 2 dot(N, i) */
-            "    mad r0.xyz, r0, -r2.x, -c0\n"      /* i - 2 dot(N, i) N, over N (read first) */
+            "    dp3 r0.w, r0, c0\n"               /* d, packed beside N (r0.w is free) */
+            "    dp3 r1.x, r0, -c0\n"              /* reflect(i = -L, N): dot(N, i) */
+            "    add r1.x, r1.x, r1.x\n"           /* 2 dot(N, i) */
+            "    mad r0.xyz, r0, -r1.x, -c0\n"     /* i - 2 dot(N, i) N, over N (read first), d kept in .w */
             "    dp3_sat r0.x, r0, v1\n"
             "    pow r0.x, r0.x, c1.x\n"
-            "    cmp r2.x, -r1.x, c2.x, c2.y\n"     /* d > 0 is 0 - d < 0 (0 - d folded to -d): (-d >= 0) ? 0 : 1 */
-            "    cmp oC0.x, -r2.x, c2.x, r0.x\n"    /* the select: (-c >= 0) ? 0 : s */
-            "    mov oC0.y, r1.x\n"
+            "    cmp r0.y, -r0.w, c2.x, c2.y\n"    /* d > 0 is 0 - d < 0 (0 - d folded to -d): (-d >= 0) ? 0 : 1; r0.y is dead after the dp3 */
+            "    cmp oC0.x, -r0.y, c2.x, r0.x\n"   /* the select: (-c >= 0) ? 0 : s */
+            "    mov oC0.y, r0.w\n"
             "    mov oC0.zw, c2.xyxy\n"
             "\n// approximately 15 instruction slots used (0 texture, 15 arithmetic)\n");
 }
