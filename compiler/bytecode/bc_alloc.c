@@ -242,13 +242,38 @@ static bool build_segments(bc_gen *g, uint8_t (*live)[BC_MAX_TEMPS], segs *S) {
     return true;
 }
 
+/* A segment that starts as a copy of one ending there takes the copy's source components (the
+ * mov becomes mov rN.x, rN.x, dropped afterwards). */
+static bool coalesce(const bc_gen *g, const segs *S, seg *s, int32_t (*busy)[4]) {
+    const d3d9_inst *in = &g->insts[s->start];
+    if (in->op != D3D9_MOV || in->predicated || in->dst.mods || S->dst[s->start] != (int32_t)(s - S->s) ||
+        in->src[0].mod || S->src[s->start * 4] < 0 || s->mask != in->dst.mask)
+        return false;
+    const seg *t = &S->s[S->src[s->start * 4]];
+    if (t == s || t->end != s->start) return false;
+    uint8_t want[4] = {0, 1, 2, 3};
+    unsigned used = 0;
+    for (unsigned c = 0; c < 4; c++) {
+        if (!(s->mask >> c & 1)) continue;
+        want[c] = t->map[in->src[0].swizzle >> (2 * c) & 3];
+        if ((used >> want[c] & 1) || busy[t->phys][want[c]] > (int32_t)s->start || (s->fixed && want[c] != c)) return false;
+        used |= 1u << want[c];
+    }
+    s->phys = t->phys;
+    memcpy(s->map, want, 4);
+    for (unsigned c = 0; c < 4; c++)
+        if (s->mask >> c & 1) busy[s->phys][s->map[c]] = (int32_t)s->end;
+    return true;
+}
+
 /* Registers for the segments, first fit by start: a fixed segment needs its own components free,
  * a movable one as many free components as it has. busy[p][c]: the last instruction using it. */
-static uint32_t color(segs *S) {
+static uint32_t color(const bc_gen *g, segs *S) {
     int32_t busy[BC_MAX_TEMPS][4];
     uint32_t count = 0;
     for (uint32_t k = 0; k < S->n; k++) {
         seg *s = &S->s[k];
+        if (coalesce(g, S, s, busy)) continue;
         unsigned need = (unsigned)__builtin_popcount(s->mask);
         uint32_t p = 0;
         for (;; p++) {
@@ -322,13 +347,28 @@ static void rewrite(const bc_gen *g, d3d9_inst *in, const segs *S, uint32_t i) {
     }
 }
 
+/* mov rN.xy, rN.xy: what coalescing leaves. */
+static bool self_copy(const d3d9_inst *in) {
+    if (in->op != D3D9_MOV || in->predicated || in->dst.mods || in->src[0].mod || in->src[0].relative ||
+        in->dst.type != D3D9_REG_TEMP || in->src[0].type != D3D9_REG_TEMP || in->dst.num != in->src[0].num)
+        return false;
+    for (unsigned c = 0; c < 4; c++)
+        if ((in->dst.mask >> c & 1) && (in->src[0].swizzle >> (2 * c) & 3) != c) return false;
+    return true;
+}
+
 /* Temporaries renumbered: segments packed into the fewest registers; how many. */
 uint32_t hfx_bc_renumber(bc_gen *g) {
     uint8_t (*live)[BC_MAX_TEMPS] = hfx_bc_liveness(g, NULL);
     segs S = {0};
     if (!live || !build_segments(g, live, &S)) return BC_MAX_TEMPS + 1;
-    uint32_t count = color(&S);
+    uint32_t count = color(g, &S);
     if (count > BC_MAX_TEMPS) return count;
-    for (uint32_t i = 0; i < g->inst_count; i++) rewrite(g, &g->insts[i], &S, i);
+    uint32_t k = 0;
+    for (uint32_t i = 0; i < g->inst_count; i++) {
+        rewrite(g, &g->insts[i], &S, i);
+        if (!self_copy(&g->insts[i])) g->insts[k++] = g->insts[i];
+    }
+    g->inst_count = k;
     return count;
 }

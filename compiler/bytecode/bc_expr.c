@@ -629,6 +629,17 @@ static bc_obj assign(bc_gen *g, const ir_expr *e) {
         hfx_bc_assign(g, dst, src, e->type, sat);
         return dst;
     }
+    if (e->op != OP_NONE && lhs->type->kind != TY_MATRIX && lval_of(g, lhs, &l)) {
+        /* x op= y as x = x op y: the current value is read where it is (a zero it starts as
+         * folds away, a product added is one mad) and the result taken as an assignment's */
+        bc_val cur = hfx_bc_expr1(g, lhs), r;
+        cur.own = false;
+        if (e->op == OP_ADD && is_mul(e->a[1]))
+            r = hfx_bc_op3(g, D3D9_MAD, width(e->type), hfx_bc_expr1(g, e->a[1]->a[0]), hfx_bc_expr1(g, e->a[1]->a[1]), cur);
+        else r = binary_vals(g, e->op, cur, hfx_bc_expr1(g, e->a[1]), e->type);
+        if (lval_of(g, lhs, &l)) assign_slots(g, &l, one(g, r), false);
+        return hfx_bc_expr(g, lhs);
+    }
     if (lval_of(g, lhs, &l)) /* a compound assignment or a matrix: writable temporaries first */
         for (uint32_t k = 0; k < l.count; k++) own_slot(g, l.b, l.first + k, true);
     bc_obj dst = hfx_bc_expr(g, lhs);
