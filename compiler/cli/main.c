@@ -53,7 +53,9 @@ static const char usage_text[] =
     "  -MP                   add an empty rule per include, so deleting one does not break make\n"
     "  -j, --jobs N          compile N files at a time (default: one per core)\n"
     "  --quiet               no progress line and no summary\n"
-    "  /nologo, /Od, /O0-/O3, /Gec, /Zi  accepted for fxc compatibility; change nothing\n"
+    "  /Op                 fxc's spelling of --no-preshaders\n"
+    "  /nologo, /Od, /O0-/O3, /Gec, /Gfa, /Gfp, /Ges, /Gis, /Gpp, /Zi, /Vi, /Vd, /LD\n"
+    "                      accepted for fxc compatibility; change nothing\n"
     "  --help, /?            this text\n"
     "  --version             the version\n";
 
@@ -81,6 +83,15 @@ static int add_targets(cli_options *o, const char *spec) {
         o->targets |= 1u << target;
     }
     return EXIT_OK;
+}
+
+/* fxc's switches that change nothing in hfxc: debug information, optimisation levels, flow-control
+ * preferences, strictness, partial precision, include details, validation, the legacy compiler. */
+static bool fxc_no_op(const char *a) {
+    static const char *const same[] = {"/Zi", "/Od", "/Gec", "/Gfp", "/Gfa", "/Ges", "/Gis", "/Gpp", "/Vi", "/Vd", "/LD"};
+    for (size_t i = 0; i < sizeof same / sizeof *same; i++)
+        if (!strcmp(a, same[i])) return true;
+    return a[0] == '/' && a[1] == 'O' && a[2] >= '0' && a[2] <= '3' && !a[3];
 }
 
 static bool exists(const char *path) {
@@ -206,9 +217,10 @@ static int flag(cli_options *o, const char *a, bool *handled) {
     else if (!strcmp(a, "/nologo") || !strcmp(a, "-nologo")) {
     } else if (!strcmp(a, "/Zpr") || !strcmp(a, "-Zpr") || !strcmp(a, "/Zpc") || !strcmp(a, "-Zpc")) {
         o->matrix_packing = a[3] == 'r' ? 1 : -1;
-    } else if (!strcmp(a, "/Zi") || !strcmp(a, "/Od") || !strcmp(a, "/Gec") || !strcmp(a, "/Gfp") ||
-               (a[0] == '/' && a[1] == 'O' && a[2] >= '0' && a[2] <= '3' && !a[3])) {
-        /* fxc's debug and optimisation switches change nothing here. */
+    } else if (!strcmp(a, "/Op")) {
+        o->no_preshaders = true; /* fxc's "disable preshaders" */
+    } else if (fxc_no_op(a)) {
+        /* fxc's debug, optimisation and strictness switches change nothing here. */
     } else *handled = false;
     return EXIT_OK;
 }

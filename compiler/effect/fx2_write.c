@@ -373,9 +373,12 @@ static void sampler_texture(writer *w, uint32_t top, uint32_t element, const hfx
     resource_at(w, &at, USE_PARAM, path, (uint32_t)strlen(path) + 1);
 }
 
-/* A sampler's value: state count, then records, its Texture where the block had it. */
-static uint32_t sampler_value(writer *w, uint32_t top, uint32_t element, const hfx_fx_sampler *s) {
-    uint32_t rec[64][4], count = 0;
+/* A sampler's state records (their typedefs and values written to the data now), its Texture
+ * where the block had it; returns how many (at most 64). */
+typedef uint32_t sampler_recs[64][4];
+
+static uint32_t sampler_records(writer *w, uint32_t top, uint32_t element, const hfx_fx_sampler *s, sampler_recs rec) {
+    uint32_t count = 0;
     bool texture = s->texture_param != HFX_NONE && s->texture_param < w->fx->param_count;
     for (uint32_t i = 0; i <= s->state_count && count < 64; i++) {
         if (texture && i == (s->texture_slot < s->state_count ? s->texture_slot : s->state_count))
@@ -385,9 +388,36 @@ static uint32_t sampler_value(writer *w, uint32_t top, uint32_t element, const h
         if (state(w, &w->fx->states[s->first_state + i], &at, &rec[count][0], &rec[count][2], &rec[count][3]))
             rec[count++][1] = 0;
     }
-    uint32_t value = u32(w, &w->data, count);
-    for (uint32_t i = 0; i < count; i++)
-        for (int k = 0; k < 4; k++) u32(w, &w->data, rec[i][k]);
+    return count;
+}
+
+/* A sampler parameter's value: for each element its state count, then its records. The blocks of
+ * an array follow one another (readers step from one to the next), so every element's records
+ * are made, with their data, before the first block is written. */
+static uint32_t sampler_value(writer *w, uint32_t top) {
+    const hfx_fx_effect *fx = w->fx;
+    const hfx_fx_param *p = &fx->params[top];
+    uint32_t n = p->elements ? p->child_count : 1;
+    sampler_recs *recs = calloc(n ? n : 1, sizeof *recs);
+    uint32_t *counts = calloc(n ? n : 1, sizeof *counts);
+    if (!recs || !counts) {
+        free(recs), free(counts);
+        fail(w, p->line, p->col, "out of memory writing the effect");
+        return 0;
+    }
+    for (uint32_t e = 0; e < n; e++) {
+        const hfx_fx_param *leaf = p->elements ? &fx->params[p->first_child + e] : p;
+        hfx_fx_sampler none = {top, HFX_NONE, HFX_FX_DIM_2D, 0, 0, 0};
+        const hfx_fx_sampler *s = leaf->sampler < fx->sampler_count ? &fx->samplers[leaf->sampler] : &none;
+        counts[e] = sampler_records(w, top, p->elements ? e : 0, s, recs[e]);
+    }
+    uint32_t value = w->data.n;
+    for (uint32_t e = 0; e < n; e++) {
+        u32(w, &w->data, counts[e]);
+        for (uint32_t i = 0; i < counts[e]; i++)
+            for (int k = 0; k < 4; k++) u32(w, &w->data, recs[e][i][k]);
+    }
+    free(recs), free(counts);
     return value;
 }
 
@@ -401,17 +431,7 @@ static uint32_t param_value(writer *w, uint32_t top) {
         return at;
     }
     uint32_t n = p->elements ? p->child_count : 1;
-    if (p->type >= HFX_TYPE_SAMPLER && p->type <= HFX_TYPE_SAMPLERCUBE) {
-        uint32_t first = HFX_NONE;
-        for (uint32_t e = 0; e < n; e++) {
-            const hfx_fx_param *leaf = p->elements ? &fx->params[p->first_child + e] : p;
-            hfx_fx_sampler none = {top, HFX_NONE, HFX_FX_DIM_2D, 0, 0, 0};
-            const hfx_fx_sampler *s = leaf->sampler < fx->sampler_count ? &fx->samplers[leaf->sampler] : &none;
-            uint32_t at = sampler_value(w, top, p->elements ? e : 0, s);
-            if (first == HFX_NONE) first = at;
-        }
-        return first;
-    }
+    if (p->type >= HFX_TYPE_SAMPLER && p->type <= HFX_TYPE_SAMPLERCUBE) return sampler_value(w, top);
     uint32_t ids[4096], count = n < 4096 ? n : 4096;
     for (uint32_t e = 0; e < count; e++) {
         uint32_t leaf = p->elements ? p->first_child + e : top;

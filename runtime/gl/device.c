@@ -121,6 +121,9 @@ hfx_device *hfx_device_create_gl(hfx_gl_loader load) {
     dev->gl->pos_fixup_serial = 1; /* programs start at 0: they compare on their first Apply */
     while (dev->gl->fn.GetError() != GL_NO_ERROR) {}
     read_caps(dev);
+    /* Cube maps filter across face edges, as Vulkan and WebGL 2 always do (and D3D9 on current
+     * hardware): the same picture on every back end. GL 3.2's core switch, the context's state. */
+    dev->gl->fn.Enable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     hfx_rt_spirv_init(dev, load);
     read_bindings(dev);
     hfx_rt_read_target(dev);

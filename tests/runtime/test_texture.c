@@ -31,6 +31,7 @@ static const char effect_src[] =
     "samplerCUBE C0 = sampler_state { Texture = <Cube>; MinFilter = Point; MipFilter = None; };\n"
     "samplerCUBE C1 = sampler_state { Texture = <Cube>; MinFilter = Point; MipFilter = Point; };\n"
     "samplerCUBE C2 = sampler_state { Texture = <Cube>; MinFilter = Linear; MipFilter = Linear; };\n"
+    "samplerCUBE C3 = sampler_state { Texture = <Cube>; MinFilter = Linear; MagFilter = Linear; MipFilter = None; };\n"
     "float4 VS(float4 p : POSITION) : POSITION { return p; }\n"
     "float4 P0() : COLOR { return tex2Dlod(S0, float4(0.5, 0.5, 0, Lod)); }\n"
     "float4 P1() : COLOR { return tex2Dlod(S1, float4(0.5, 0.5, 0, Lod)); }\n"
@@ -38,6 +39,7 @@ static const char effect_src[] =
     "float4 Q0() : COLOR { return texCUBElod(C0, float4(1, 0, 0, Lod)); }\n"
     "float4 Q1() : COLOR { return texCUBElod(C1, float4(1, 0, 0, Lod)); }\n"
     "float4 Q2() : COLOR { return texCUBElod(C2, float4(1, 0, 0, Lod)); }\n"
+    "float4 Seam() : COLOR { return texCUBElod(C3, float4(1, 0.8, 0, 0)); }\n"
     "float4 Implicit() : COLOR { return tex2D(S2, float2(0.25, 0.25)); }\n"
     "technique Flat { pass None { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 P0(); }\n"
     "  pass Point { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 P1(); }\n"
@@ -45,6 +47,7 @@ static const char effect_src[] =
     "technique Cubes { pass None { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 Q0(); }\n"
     "  pass Point { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 Q1(); }\n"
     "  pass Linear { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 Q2(); } }\n"
+    "technique Seams { pass Linear { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 Seam(); } }\n"
     "technique Magnified { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 Implicit(); } }\n";
 
 static void fill_level(GLenum target, int level, int size) {
@@ -227,6 +230,34 @@ static void test_application_max_level_kept(void) {
     g.DeleteTextures(1, &tex);
 }
 
+/* Cube maps filter across face edges on every back end (Vulkan and WebGL 2 cannot do otherwise).
+ * Faces 1x1: +X red, +Y green, the rest blue. Direction (1, 0.8, 0) is on +X (major axis x) at
+ * s = (-z/|x| + 1) / 2 = 0.5, t = (-y/|x| + 1) / 2 = 0.1 (the GL / D3D cube face tables); in
+ * texels t * 1 - 0.5 = -0.4, so bilinear filtering takes 0.6 of +X's texel and 0.4 of the texel
+ * past the edge at t = 0, the +Y face's: (153, 102, 0). Filtering inside the face alone (clamped
+ * to its edge) would give pure red. */
+static void test_seamless_cube(void) {
+    hfx_effect *fx = load();
+    if (!fx) return;
+    GLuint tex;
+    g.GenTextures(1, &tex);
+    g.BindTexture(GL_TEXTURE_CUBE_MAP, tex);
+    for (int f = 0; f < 6; f++) {
+        unsigned char texel[4] = {f == 0 ? 255 : 0, f == 2 ? 255 : 0, f == 0 || f == 2 ? 0 : 255, 255};
+        g.TexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+    }
+    g.BindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    CHECK_INT(hfx_param_set_texture(hfx_effect_param(fx, "Cube"), tex), HFX_OK);
+    unsigned char px[4];
+    draw(fx, "Seams", "Linear", 0, px);
+    CHECK_NEAR(px[0], 153, 2);
+    CHECK_NEAR(px[1], 102, 2);
+    CHECK_NEAR(px[2], 0, 1);
+    hfx_effect_destroy(fx);
+    g.DeleteTextures(1, &tex);
+    hfx_device_texture_changed(dev, tex);
+}
+
 /* Where the passes bind each texture: declared type, or (plain `texture`) the samplers' kind. */
 static void test_texture_targets(void) {
     hfx_effect *fx = load();
@@ -253,6 +284,7 @@ int main(void) {
     RUN(test_levels_added_later);
     RUN(test_application_max_level_kept);
     RUN(test_texture_targets);
+    RUN(test_seamless_cube);
     hfx_device_destroy(dev);
     test_gl_destroy(gl);
     return test_summary();

@@ -665,6 +665,35 @@ static void fxc_outputs(void) {
     free(seed);
 }
 
+/* fxc's switches that change nothing give the same bytes; /Op is --no-preshaders. */
+static void fxc_switches(void) {
+    char *seed = test_seed_path("phong.fx");
+    if (!seed) return;
+    char a[1024], b[1024];
+    snprintf(a, sizeof a, "%s/plain.fxo", tmp);
+    snprintf(b, sizeof b, "%s/switches.fxo", tmp);
+    EXPECT_STATUS(0, "/T fx_2_0 /Fo '%s' '%s'", a, seed);
+    EXPECT_STATUS(0, "/T fx_2_0 /nologo /Zi /Od /O3 /Gec /Gfa /Gfp /Ges /Gis /Gpp /Vi /Vd /LD /Fo '%s' '%s'", b, seed);
+    size_t sa = 0, sb = 0;
+    char *da = test_read_file(a, &sa), *db = test_read_file(b, &sb);
+    CHECK(da && db && sa == sb && sa > 0 && memcmp(da, db, sa) == 0);
+    free(da), free(db);
+    snprintf(a, sizeof a, "%s/nopre.hfxo", tmp);
+    snprintf(b, sizeof b, "%s/op.hfxo", tmp);
+    EXPECT_STATUS(0, "--no-preshaders -o '%s' '%s'", a, seed);
+    EXPECT_STATUS(0, "/Op -o '%s' '%s'", b, seed);
+    da = test_read_file(a, &sa), db = test_read_file(b, &sb);
+    CHECK(da && db && sa == sb && memcmp(da, db, sa) == 0);
+    free(da), free(db);
+    snprintf(b, sizeof b, "%s/pre.hfxo", tmp);
+    EXPECT_STATUS(0, "-o '%s' '%s'", b, seed);
+    db = test_read_file(b, &sb);
+    da = test_read_file(a, &sa);
+    CHECK(da && db && (sa != sb || memcmp(da, db, sa) != 0)); /* phong.fx has preshaders: /Op changes the file */
+    free(da), free(db);
+    free(seed);
+}
+
 int main(void) {
     test_require_seeds();
     const char *build = getenv("HFX_BUILD_DIR");
@@ -680,6 +709,7 @@ int main(void) {
     RUN(emit_glsl_shows_preshaders);
     RUN(one_entry_point);
     RUN(fxc_outputs);
+    RUN(fxc_switches);
     RUN(defines_and_include_dirs);
     RUN(ast_werror_and_targets);
     RUN(dump_ir_after_a_pass);

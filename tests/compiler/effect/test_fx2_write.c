@@ -179,6 +179,42 @@ static void expressions_round_trip(void) {
     hfxc_result_free(r);
 }
 
+/* The state of sampler leaf `leaf` named `name` (its int value), or -1. */
+static int sampler_state_of(const hfx_fx_effect *fx, uint32_t leaf, const char *name) {
+    uint32_t si = fx->params[leaf].sampler;
+    if (si >= fx->sampler_count) return -1;
+    const hfx_fx_sampler *s = &fx->samplers[si];
+    for (uint32_t i = 0; i < s->state_count; i++)
+        if (fx->states[s->first_state + i].id == state_id(name)) return fx->states[s->first_state + i].i;
+    return -1;
+}
+
+/* A sampler array: each element's block follows the one before in the file (readers step from
+ * one to the next), so element 1 keeps its own states: MinFilter = Point (D3DTEXF_POINT, 1) on
+ * SA[0], AddressU = Wrap (D3DTADDRESS_WRAP, 1) and MagFilter = Linear (2) on SA[1], both on T2. */
+static void sampler_array_round_trip(void) {
+    hfxc_result *r, *back;
+    const hfx_fx_effect *fx = compile_round_trip(
+        "texture T2;\nsampler2D SA[2] = { sampler_state { Texture = <T2>; MinFilter = Point; },\n"
+        "  sampler_state { Texture = <T2>; AddressU = Wrap; MagFilter = Linear; } };\n"
+        "technique T { pass P { CullMode = None; } }\n", &r, &back);
+    uint32_t sa = fx ? hfx_fx_param_find(fx, "SA") : HFX_NONE;
+    CHECK(sa != HFX_NONE);
+    if (sa != HFX_NONE) {
+        uint32_t e0 = fx->params[sa].first_child, e1 = e0 + 1, t2 = hfx_fx_param_find(fx, "T2");
+        CHECK_INT(fx->params[sa].child_count, 2);
+        CHECK_INT(sampler_state_of(fx, e0, "MinFilter"), 1);
+        CHECK_INT(sampler_state_of(fx, e0, "AddressU"), -1);
+        CHECK_INT(sampler_state_of(fx, e1, "AddressU"), 1);
+        CHECK_INT(sampler_state_of(fx, e1, "MagFilter"), 2);
+        CHECK_INT(sampler_state_of(fx, e1, "MinFilter"), -1);
+        CHECK(fx->params[e0].sampler < fx->sampler_count && fx->samplers[fx->params[e0].sampler].texture_param == t2);
+        CHECK(fx->params[e1].sampler < fx->sampler_count && fx->samplers[fx->params[e1].sampler].texture_param == t2);
+    }
+    hfxc_result_free(back);
+    hfxc_result_free(r);
+}
+
 /* An expression FXLVM cannot say (a shift): a located error, nothing written. */
 static void inexpressible_expression(void) {
     hfxc_result *r = compile("int Index = 2;\ntechnique T { pass P {\n  StencilRef = (Index << 2); } }\n");
@@ -398,6 +434,7 @@ int main(void) {
     RUN(tiny_effect_bytes);
     RUN(expressions_round_trip);
     RUN(inexpressible_expression);
+    RUN(sampler_array_round_trip);
     RUN(null_shaders_and_state_only_passes);
     RUN(shaders_from_the_hook);
     RUN(compiled_sources_need_the_back_end);

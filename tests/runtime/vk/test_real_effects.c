@@ -50,8 +50,11 @@ static const char *SAMPLERS =
     "float4 Plain(float2 uv : TEXCOORD0) : COLOR0 { return tex2D(TextureSampler, uv) + Add; }\n"
     "float4 Cube(float2 uv : TEXCOORD0) : COLOR0 { return texCUBE(Env, Dir) + Add; }\n"
     "float4 Volume(float2 uv : TEXCOORD0) : COLOR0 { return tex3D(Vol, float3(uv, W)) + Add; }\n"
+    "textureCUBE EnvT;\n"
+    "samplerCUBE EnvLinear = sampler_state { Texture = <EnvT>; MinFilter = Linear; MagFilter = Linear; };\n"
+    "float4 Seam(float2 uv : TEXCOORD0) : COLOR0 { return texCUBE(EnvLinear, Dir) + Add; }\n"
     "#define T(name) technique name##T { pass P { PixelShader = compile ps_2_0 name(); } }\n"
-    "T(ByRegister) T(Plain) T(Cube) T(Volume)\n";
+    "T(ByRegister) T(Plain) T(Cube) T(Volume) T(Seam)\n";
 
 /* No texture set: every sampler, whatever its dimension, reads (0, 0, 0, 1) as in D3D9 (and on
  * GL, texture object 0), so each technique draws Add + (0, 0, 0, 1). */
@@ -95,6 +98,13 @@ static void cube_and_volume(void) {
         CHECK_INT(vk_draw(V, fx, "CubeT", &FULL, 1, CLEAR), 0);
         CHECK_PIXEL(V, 32, 32, faces[4 * f], faces[4 * f + 1], faces[4 * f + 2], 255);
     }
+    /* filtered across the face edge, as GL does (tests/runtime/test_texture.c, test_seamless_cube):
+     * (1, 0.8, 0) is on +X at t = 0.1, 0.6 of +X's texel and 0.4 of +Y's: (153, 0, 102) */
+    static const float seam[3] = {1, 0.8f, 0};
+    CHECK_INT(hfx_param_set_texture_vk(hfx_effect_param(fx, "EnvT"), cube.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL), 0);
+    CHECK_INT(hfx_param_set_floats(hfx_effect_param(fx, "Dir"), seam, 3), 0);
+    CHECK_INT(vk_draw(V, fx, "SeamT", &FULL, 1, CLEAR), 0);
+    CHECK_PIXEL(V, 32, 32, 153, 0, 102, 255);
     CHECK_INT(vk_draw(V, fx, "VolumeT", &FULL, 1, CLEAR), 0);
     CHECK_PIXEL(V, 32, 32, 255, 0, 0, 255);
     CHECK_INT(hfx_param_set_float(hfx_effect_param(fx, "W"), 0.75f), 0);
