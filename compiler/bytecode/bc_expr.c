@@ -659,8 +659,58 @@ static bool matrix_update(bc_gen *g, const ir_expr *e) {
     return true;
 }
 
+/* Component j of an l-value as a one-component lval: a matrix swizzle's element (the row-major
+ * binding's slot `row`, component `col`), or a vector l-value's j-th written component. */
+static bool component_lval(bc_gen *g, const ir_expr *a, unsigned j, lval *l) {
+    if (a->kind == IE_SWIZZLE && a->a[0]->type->kind == TY_MATRIX) {
+        const ir_expr *m = a->a[0];
+        if (j >= a->comp_count || !lval_of(g, m, l) || l->n) return false;
+        l->first += a->comps[j] / m->type->cols;
+        l->count = 1;
+        l->comps[0] = (uint8_t)(a->comps[j] % m->type->cols);
+        l->n = 1;
+        return true;
+    }
+    if (!lval_of(g, a, l) || l->count != 1) return false;
+    l->comps[0] = l->n ? l->comps[j < l->n ? j : 0] : (uint8_t)j;
+    l->n = 1;
+    return true;
+}
+
+static unsigned components(const hfx_type *t) { return t->kind == TY_VECTOR ? t->cols : 1; }
+
+/* m._11_22 = v (the IR spells the left side a matrix swizzle, or a construct of one-element
+ * swizzles): each component written where it lives; reading the left side would give a gathered
+ * copy that the writes would miss. */
+static bc_obj assign_components(bc_gen *g, const ir_expr *e) {
+    const ir_expr *lhs = e->a[0];
+    bool construct = lhs->kind == IE_CONSTRUCT;
+    if (e->op != OP_NONE) {
+        hfx_bc_fail(g, e->loc, X_BC_UNSUPPORTED, "the bytecode writer does not update these matrix components yet");
+        return (bc_obj){0};
+    }
+    bc_obj src = hfx_bc_expr(g, e->a[1]);
+    unsigned at = 0, parts = construct ? lhs->n : 1;
+    for (unsigned p = 0; p < parts && src.count && !g->failed; p++) {
+        const ir_expr *a = construct ? lhs->a[p] : lhs;
+        unsigned n = construct ? components(a->type) : lhs->comp_count;
+        for (unsigned j = 0; j < n && !g->failed; j++, at++) {
+            lval l;
+            if (!component_lval(g, a, j, &l)) {
+                hfx_bc_fail(g, e->loc, X_BC_UNSUPPORTED, "the bytecode writer does not write these components yet");
+                break;
+            }
+            assign_slots(g, &l, one(g, hfx_bc_scalar_of(src.slot[0], at)), false);
+        }
+    }
+    hfx_bc_release_obj(g, src);
+    return hfx_bc_expr(g, lhs);
+}
+
 static bc_obj assign(bc_gen *g, const ir_expr *e) {
     const ir_expr *lhs = e->a[0];
+    if ((lhs->kind == IE_SWIZZLE && lhs->a[0]->type->kind == TY_MATRIX) || lhs->kind == IE_CONSTRUCT)
+        return assign_components(g, e);
     if (lhs->kind == IE_VAR) {
         bc_binding *b = hfx_bc_bind(g, lhs->var);
         if (b && b->is_const) { /* a counter written with a computed value: give it a register */

@@ -212,8 +212,25 @@ bool hfx_bc_straight_return(const ir_stmt *body) {
     return true;
 }
 
-/* Parameters, samplers and private globals, in the order the stage lists them. */
+/* The c register a parameter's `register(c#)` gives this shader (`register(vs, c13)` in a vertex
+ * shader, `register(ps, c14)` in a pixel shader), or -1. */
+static int explicit_const(const bc_gen *g, const ir_var *v) {
+    char buf[32];
+    const char *reg = hfx_register_for(v->decl ? v->decl->reg : NULL, g->profile, buf, sizeof buf);
+    return reg && (reg[0] == 'c' || reg[0] == 'C') && reg[1] >= '0' && reg[1] <= '9' ? atoi(reg + 1) : -1;
+}
+
+/* Parameters, samplers and private globals, in the order the stage lists them. A parameter
+ * without a register takes the first free run that no later parameter's register asks for. */
 void hfx_bc_bind_globals(bc_gen *g) {
+    uint8_t reserved[BC_MAX_CONSTS] = {0};
+    for (uint32_t i = 0; i < g->sh->global_count; i++) {
+        const ir_var *v = g->sh->globals[i];
+        int first = v->kind == IRV_UNIFORM ? explicit_const(g, v) : -1;
+        bool cols = !(v->mods & MOD_ROW_MAJOR) && !(v->decl && (v->decl->mods & MOD_ROW_MAJOR));
+        for (uint32_t k = 0; first >= 0 && k < hfx_bc_slots(v->type, cols) && first + k < BC_MAX_CONSTS; k++)
+            reserved[first + k] = 1;
+    }
     for (uint32_t i = 0; i < g->sh->global_count && !g->failed; i++) {
         const ir_var *v = g->sh->globals[i];
         if (v->kind == IRV_SAMPLER) {
@@ -229,14 +246,11 @@ void hfx_bc_bind_globals(bc_gen *g) {
         } else if (v->kind == IRV_UNIFORM) {
             bool cols = !(v->mods & MOD_ROW_MAJOR) && !(v->decl && (v->decl->mods & MOD_ROW_MAJOR));
             uint32_t n = hfx_bc_slots(v->type, cols);
-            int first = -1;
-            const char *reg = v->decl ? v->decl->reg : NULL;
-            if (reg && (reg[0] == 'c' || reg[0] == 'C')) first = atoi(reg + 1);
-            else if (reg && strchr(reg, ',')) { const char *c = strchr(reg, ',') + 1; if (*c == 'c') first = atoi(c + 1); }
+            int first = explicit_const(g, v);
             if (first < 0)
                 for (uint32_t r = 0; r + n <= g->max_consts && first < 0; r++) {
                     uint32_t k = 0;
-                    while (k < n && !g->cused[r + k]) k++;
+                    while (k < n && !g->cused[r + k] && !reserved[r + k]) k++;
                     if (k == n) first = (int)r;
                 }
             if (first < 0 || !hfx_bc_reserve_consts(g, (uint16_t)first, (uint16_t)n)) {
@@ -536,6 +550,49 @@ static void capture_return(bc_gen *g, const ir_expr *e) {
     g->capture = NULL;
 }
 
+/* A return in flattened code. Every side of every if runs, so after the first return under a
+ * condition, g->done holds 1 where the function has returned, and a later return (after the if,
+ * or in the next unrolled iteration) takes the return value only where the code runs (g->cond)
+ * and done is 0, then adds that to done. The first return writes the value unmasked: before it
+ * the value is undefined, and HLSL makes every path return, so where it did not run a later
+ * return will. */
+static void gen_return(bc_gen *g, const ir_expr *e) {
+    bc_obj v = hfx_bc_expr(g, e);
+    if (!g->done.n) {
+        hfx_bc_assign(g, *g->ret, v, e->type, false);
+        bc_val c = g->cond;
+        c.own = false;
+        if (c.n) g->done = hfx_bc_op1(g, D3D9_MOV, 1, c); /* a register of its own: later returns add to it */
+        return;
+    }
+    bc_obj val = hfx_bc_alloc_obj(g, e->type);
+    hfx_bc_assign(g, val, v, e->type, false);
+    bc_val d = g->done, now = g->cond;
+    d.own = now.own = false;
+    bc_val not_done = hfx_bc_not(g, d);
+    if (now.n) {
+        bc_val nd = not_done;
+        nd.own = false;
+        now = hfx_bc_op2(g, D3D9_MUL, 1, now, nd); /* where this return runs and none ran before */
+        not_done.own = true;
+        hfx_bc_release(g, not_done);
+    } else {
+        now = not_done;
+    }
+    for (uint32_t k = 0; k < g->ret->count && k < val.count && !g->failed; k++) {
+        bc_val x = now, t = val.slot[k], r = g->ret->slot[k];
+        x.own = t.own = r.own = false;
+        hfx_bc_store(g, g->ret->slot[k], hfx_bc_select(g, x, t, r), false);
+    }
+    for (uint32_t k = 0; k < val.count; k++) val.slot[k].own = true;
+    hfx_bc_release_obj(g, val);
+    bc_val n = now;
+    n.own = false;
+    hfx_bc_store(g, g->done, hfx_bc_op2(g, D3D9_ADD, 1, d, n), false);
+    now.own = true;
+    hfx_bc_release(g, now);
+}
+
 static void gen_stmt(bc_gen *g, const ir_stmt *s) {
     if (g->failed) return;
     g->loc = s->loc;
@@ -551,7 +608,7 @@ static void gen_stmt(bc_gen *g, const ir_stmt *s) {
     case IS_FOR: case IS_WHILE: case IS_DO: gen_loop(g, s); break;
     case IS_RETURN:
         if (s->expr && g->capture) capture_return(g, s->expr);
-        else if (s->expr && g->ret) hfx_bc_assign(g, *g->ret, hfx_bc_expr(g, s->expr), s->expr->type, false);
+        else if (s->expr && g->ret) gen_return(g, s->expr);
         break;
     case IS_DISCARD: gen_discard(g); break;
     case IS_BREAK:
@@ -609,9 +666,13 @@ void hfx_bc_call(bc_gen *g, const ir_expr *e, bc_obj *out) {
     g->ret = straight ? NULL : &ret;
     g->capture = straight ? &ret : NULL;
     g->capture_mark = g->bind_count;
+    bc_val saved_done = g->done;
+    g->done = (bc_val){0}; /* the callee's own returns */
     g->depth++;
     gen_body(g, f->body);
     g->depth--;
+    if (g->done.n) { g->done.own = true; hfx_bc_release(g, g->done); }
+    g->done = saved_done;
     g->ret = saved_ret;
     g->capture = saved_capture;
     g->capture_mark = saved_mark;

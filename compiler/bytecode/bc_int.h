@@ -67,6 +67,7 @@ typedef struct bc_gen {
     bc_obj *capture;          /* or: a straight callee's returned value, taken as it is */
     uint32_t capture_mark;    /* the callee's first binding */
     bc_val cond;              /* flattening: the condition the current code runs under (n == 0: always) */
+    bc_val done;              /* flattening: 1 where the current function has returned (n == 0: nowhere yet) */
     int last_fresh;           /* instruction that wrote a fresh temporary whole, or -1 */
     uint32_t inputs, outputs, samplers;
     uint32_t depth;           /* inlined calls, against recursion */

@@ -257,7 +257,12 @@ static void dump_var_line(dump *d, const hfx_decl *v) {
     dump_type(d, v->type);
     putf(d, " %s", v->name ? v->name : "<unnamed>");
     if (v->semantic) putf(d, " : %s", v->semantic);
-    if (v->reg) putf(d, " : register(%s)", v->reg);
+    for (const char *r = v->reg; r && *r;) { /* one `: register(...)` for each written */
+        const char *end = strchr(r, ';');
+        int n = end ? (int)(end - r) : (int)strlen(r);
+        putf(d, " : register(%.*s)", n, r);
+        r += n + (end != NULL);
+    }
 }
 
 static void dump_var(dump *d, const char *what, const hfx_decl *v, int level) {

@@ -20,6 +20,7 @@
 #define HFX_AST_H
 
 #include <stdbool.h>
+#include <stddef.h>
 #include <stdint.h>
 
 #include "base/diag.h"
@@ -166,7 +167,8 @@ struct hfx_decl {
     const hfx_type *type;      /* VAR, PARAM, TYPEDEF (the aliased type), STRUCT (the struct type) */
     uint32_t mods;             /* MOD_* (storage class, in/out/uniform, row_major...) */
     const char *semantic;      /* NULL when none */
-    const char *reg;           /* `register(c0)`: "c0"; `register(ps, c1)`: "ps,c1" (the last one written); NULL when none */
+    const char *reg;           /* `register(c0)`: "c0"; `register(ps, c1)`: "ps,c1"; several joined by ';'
+                                * ("vs,c13;ps,c14"): hfx_register_for picks a shader's; NULL when none */
     hfx_annotation_ast *annotations; uint32_t annotation_count;
     hfx_expr *init;            /* initializer or parameter default; NULL when none */
     hfx_func *func;            /* FUNC */
@@ -187,6 +189,10 @@ hfx_ast *hfx_parse(hfx_arena *arena, hfx_diags *diags, hfx_types *types, struct 
 
 /* A readable dump of the tree (ast.c), for hfxc --ast and tests. malloc'ed. */
 char *hfx_ast_dump(const hfx_ast *ast);
+/* The reservation among a declaration's `reg` that applies to a shader of `profile` ("vs_2_0",
+ * "ps_3_0"): `register(ps, c1)` in a pixel shader, else the unqualified `register(c1)`; copied
+ * into buf ("c1"); NULL when none applies (or it does not fit). */
+const char *hfx_register_for(const char *reg, const char *profile, char *buf, size_t cap);
 /* The evaluator's operator for op; false for the ones it has none of (++, --, OP_NONE). */
 bool hfx_op_ev(hfx_op op, hfx_ev_op *out);
 

@@ -166,7 +166,7 @@ uint32_t hfx_pb_more_mods(parse_ctx *ctx, uint32_t mods, uint32_t more, hfx_loc 
 parse_declarator *hfx_pb_declarator(parse_ctx *ctx, const char *name, hfx_loc loc);
 parse_declarator *hfx_pb_decl_dims(parse_ctx *ctx, parse_declarator *d, parse_vec dims);
 parse_declarator *hfx_pb_decl_semantic(parse_declarator *d, const char *semantic);
-parse_declarator *hfx_pb_decl_register(parse_declarator *d, const char *reg);
+parse_declarator *hfx_pb_decl_register(parse_ctx *ctx, parse_declarator *d, const char *reg);
 parse_declarator *hfx_pb_decl_annotations(parse_ctx *ctx, parse_declarator *d, parse_vec annotations);
 parse_declarator *hfx_pb_decl_init(parse_declarator *d, hfx_expr *init);
 parse_vec hfx_pb_vars(parse_ctx *ctx, parse_specs *specs, parse_vec declarators, bool global);

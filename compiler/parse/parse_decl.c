@@ -1,6 +1,7 @@
 /* parse_decl.c: declarations, functions, techniques and statements for parser.y. One
  * hfx_decl per declarator; lists collected in parse_vec become exact arrays here. */
 #include <string.h>
+#include <strings.h>
 
 #include "parse/parse_ctx.h"
 
@@ -27,9 +28,35 @@ parse_declarator *hfx_pb_decl_semantic(parse_declarator *d, const char *semantic
     return d;
 }
 
-parse_declarator *hfx_pb_decl_register(parse_declarator *d, const char *reg) {
-    if (d) d->reg = reg;
+/* Every reservation is kept (`: register(vs, c13) : register(ps, c14)`, FNA's stock effects):
+ * each shader takes its own profile's (hfx_register_for). */
+parse_declarator *hfx_pb_decl_register(parse_ctx *ctx, parse_declarator *d, const char *reg) {
+    if (d) d->reg = d->reg && reg ? hfx_arena_printf(ctx->arena, "%s;%s", d->reg, reg) : reg;
     return d;
+}
+
+const char *hfx_register_for(const char *reg, const char *profile, char *buf, size_t cap) {
+    const char *any = NULL, *mine = NULL;
+    size_t any_n = 0, mine_n = 0;
+    for (const char *e = reg; e && *e;) {
+        const char *end = strchr(e, ';'), *comma = strchr(e, ',');
+        if (!end) end = e + strlen(e);
+        if (!comma || comma > end) any = e, any_n = (size_t)(end - e);
+        else {
+            size_t n = (size_t)(comma - e);
+            if (profile && strncasecmp(e, profile, n) == 0 && (!profile[n] || profile[n] == '_')) {
+                for (mine = comma + 1; *mine == ' '; mine++) {}
+                mine_n = (size_t)(end - mine);
+            }
+        }
+        e = *end ? end + 1 : end;
+    }
+    const char *pick = mine ? mine : any;
+    size_t n = mine ? mine_n : any_n;
+    if (!pick || n >= cap) return NULL;
+    memcpy(buf, pick, n);
+    buf[n] = 0;
+    return buf;
 }
 
 parse_declarator *hfx_pb_decl_annotations(parse_ctx *ctx, parse_declarator *d, parse_vec annotations) {

@@ -180,10 +180,10 @@ dims
 decl_post
     : decl_head
     | decl_post ':' IDENT                    { $$ = hfx_pb_decl_semantic($1, $3.text); }
-    | decl_post ':' REGISTER '(' IDENT ')'   { $$ = hfx_pb_decl_register($1, $5.text); }
-    | decl_post ':' REGISTER '(' IDENT ',' IDENT ')' { $$ = hfx_pb_decl_register($1, hfx_arena_printf(ctx->arena, "%s,%s", $5.text, $7.text)); }
-    | decl_post ':' REGISTER '(' IDENT '[' expr ']' ')' { $$ = hfx_pb_decl_register($1, $5.text); }
-    | decl_post ':' REGISTER '(' IDENT ',' IDENT '[' expr ']' ')' { $$ = hfx_pb_decl_register($1, $7.text); }
+    | decl_post ':' REGISTER '(' IDENT ')'   { $$ = hfx_pb_decl_register(ctx, $1, $5.text); }
+    | decl_post ':' REGISTER '(' IDENT ',' IDENT ')' { $$ = hfx_pb_decl_register(ctx, $1, hfx_arena_printf(ctx->arena, "%s,%s", $5.text, $7.text)); }
+    | decl_post ':' REGISTER '(' IDENT '[' expr ']' ')' { $$ = hfx_pb_decl_register(ctx, $1, $5.text); }
+    | decl_post ':' REGISTER '(' IDENT ',' IDENT '[' expr ']' ')' { $$ = hfx_pb_decl_register(ctx, $1, $7.text); }
     | decl_post annotations                  { $$ = hfx_pb_decl_annotations(ctx, $1, $2); }
     ;
 

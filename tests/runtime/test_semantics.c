@@ -15,8 +15,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "effect/fx2_write.h"
 #include "files.h"
 #include "gl_context.h"
+#include "hfx/hfxc.h"
 #include "rt_support.h"
 #include "test.h"
 
@@ -35,7 +37,9 @@ typedef struct row {
 
 /* MODE_VERTEX: the row in the vertex shader (parameters), its R passed on flat to the pixel shader.
  * MODE_UNIFORM runs without preshaders (the GPU computes); MODE_PRESHADER with them. */
-enum { MODE_UNIFORM = 1, MODE_CONST = 2, MODE_VERTEX = 4, MODE_PRESHADER = 8 };
+enum { MODE_UNIFORM = 1, MODE_CONST = 2, MODE_VERTEX = 4, MODE_PRESHADER = 8, MODE_FX2 = 16 };
+/* MODE_FX2: the parameters' source compiled as `hfxc /T fx_2_0` does (D3D9 bytecode), written as
+ * fx_2_0, loaded back through fx_2_0's reader (bytecode -> IR -> GLSL) and drawn: the round trip. */
 
 static int count_of(const char *s, const char *word) {
     int n = 0;
@@ -59,7 +63,8 @@ typedef struct runner {
     GLuint fbo, target, quad, quad_buffer;
     GLuint tex2d, texcube, tex3d, tex1d; /* the textures of T2, TC, T3 and T1D (see README) */
     int rows, failures;
-    int runs[4];                    /* per mode: parameters, static const, vertex shader, preshaders */
+    int runs[5];                    /* per mode: parameters, static const, vertex shader, preshaders, fx_2_0 */
+    int fx2_refused;                /* MODE_FX2 runs the bytecode writer refused */
 } runner;
 
 /* The inputs every row may read; values chosen so that no two components are equal and signs vary. */
@@ -113,6 +118,7 @@ static int parse_expect(row *r, char *s) {
     if (comment) *comment = 0;
     r->tol = 1e-5;
     r->modes = MODE_UNIFORM | MODE_CONST | MODE_VERTEX | MODE_PRESHADER;
+    bool no_fx2 = false;
     for (char *tok = strtok(s, " \t"); tok; tok = strtok(NULL, " \t")) {
         if (strcmp(tok, "error") == 0) {
             char *code = strtok(NULL, " \t");
@@ -124,12 +130,15 @@ static int parse_expect(row *r, char *s) {
             r->modes = MODE_UNIFORM | MODE_VERTEX | MODE_PRESHADER;
         } else if (strcmp(tok, "@c") == 0) {
             r->modes = MODE_CONST;
+        } else if (strcmp(tok, "@nofx2") == 0) {
+            no_fx2 = true;
         } else {
             if (r->count == MAX_EXPECT || !parse_value(tok, &r->expect[r->count])) return 0;
             r->count++;
         }
     }
     if (r->error[0] || pixel_only(r->body)) r->modes &= ~MODE_VERTEX;
+    if (!r->error[0] && !no_fx2 && (r->modes & MODE_UNIFORM)) r->modes |= MODE_FX2; /* errors: the front end's, once */
     return r->error[0] || r->count > 0;
 }
 
@@ -203,7 +212,7 @@ static int near(double got, double want, double tol) {
 static void report(const row *r, int mode, const char *what, const char *src) {
     fprintf(stderr, "%s:%d: [%s] %s: %s\n%s", r->file, r->line,
             mode == MODE_UNIFORM ? "parameters" : mode == MODE_CONST ? "static const"
-            : mode == MODE_VERTEX ? "vertex shader" : "preshaders",
+            : mode == MODE_VERTEX ? "vertex shader" : mode == MODE_FX2 ? "via fx_2_0" : "preshaders",
             r->body, what, getenv("HFX_SEMANTICS_VERBOSE") ? src : "");
 }
 
@@ -244,11 +253,49 @@ static int check_error(const row *r, int mode, hfx_effect *fx, const char *error
     return 1;
 }
 
+/* MODE_FX2's load: NULL with *refused set when the bytecode writer refuses the shader (a gap of
+ * the D3D9 back end, counted and listed, not a wrong value); other failures in *errors. */
+static hfx_effect *load_via_fx2(runner *t, const char *src, char **errors, bool *refused) {
+    hfxc_options co = {.flags = HFXC_PACK_UNIFORMS | HFXC_NO_PRESHADERS | HFXC_D3D9_BYTECODE};
+    hfxc_result *r = hfxc_compile_memory(src, strlen(src), "row.fx", &co);
+    const struct hfx_fx_effect *compiled = r ? hfxc_result_effect(r) : NULL;
+    hfx_effect *fx = NULL;
+    void *data = NULL;
+    size_t size = 0;
+    char why[1024] = "";
+    *refused = false;
+    if (!compiled) {
+        *errors = r ? hfxc_diagnostics_text(r) : NULL;
+        *refused = true;
+    } else if (hfx_fx2_write(compiled, "row.fx", NULL, &data, &size, why, sizeof why) != 0) {
+        *errors = strdup(why);
+    } else {
+        hfx_load_options opt = {0};
+        opt.no_preshaders = true;
+        char *e = NULL;
+        fx = hfx_effect_load_memory(t->dev, data, size, "row.fxo", &opt, &e);
+        *errors = e ? strdup(e) : NULL;
+        hfx_free(e);
+    }
+    free(data);
+    hfxc_result_free(r);
+    return fx;
+}
+
 static int run_mode(runner *t, const row *r, int mode) {
-    char *src = row_source(r, mode), *errors = NULL;
+    char *src = row_source(r, mode == MODE_FX2 ? MODE_UNIFORM : mode), *errors = NULL;
     hfx_load_options opt = {0};
     opt.no_preshaders = mode != MODE_PRESHADER;
-    hfx_effect *fx = hfx_effect_load_memory(t->dev, src, strlen(src), "row.fx", &opt, &errors);
+    bool refused = false;
+    hfx_effect *fx = mode == MODE_FX2 ? load_via_fx2(t, src, &errors, &refused)
+                                      : hfx_effect_load_memory(t->dev, src, strlen(src), "row.fx", &opt, &errors);
+    if (refused) {
+        t->fx2_refused++;
+        if (getenv("HFX_SEMANTICS_VERBOSE")) report(r, mode, errors ? errors : "refused\n", src);
+        free(errors); /* hfxc's text: malloc'ed */
+        free(src);
+        return 1;
+    }
     int ok;
     float px[4] = {0};
     if (r->error[0]) ok = check_error(r, mode, fx, errors, src);
@@ -256,14 +303,15 @@ static int run_mode(runner *t, const row *r, int mode) {
     else if (!draw(t, fx, px)) { report(r, mode, "apply or draw failed\n", src); ok = 0; }
     else ok = check_values(r, mode, px, src);
     if (fx) hfx_effect_destroy(fx);
-    hfx_free(errors);
+    if (mode == MODE_FX2) free(errors);
+    else hfx_free(errors);
     free(src);
     return ok;
 }
 
 static void run_row(runner *t, row *r) {
     int ok = 1;
-    for (int mode = MODE_UNIFORM, k = 0; mode <= MODE_PRESHADER; mode <<= 1, k++)
+    for (int mode = MODE_UNIFORM, k = 0; mode <= MODE_FX2; mode <<= 1, k++)
         if (r->modes & mode) ok &= run_mode(t, r, mode), t->runs[k]++;
     t->rows++;
     if (!ok) t->failures++;
@@ -387,7 +435,8 @@ static void semantics_tables(runner *t) {
     CHECK(matched > 0);
     CHECK(t->rows > 0);
     printf("%d rows, %d failed (runs: %d with parameters, %d with static consts, %d in the vertex shader, %d with "
-           "preshaders)\n", t->rows, t->failures, t->runs[0], t->runs[1], t->runs[2], t->runs[3]);
+           "preshaders, %d via fx_2_0 of which %d refused by the bytecode writer)\n", t->rows, t->failures, t->runs[0],
+           t->runs[1], t->runs[2], t->runs[3], t->runs[4], t->fx2_refused);
     CHECK_INT(t->failures, 0);
 }
 

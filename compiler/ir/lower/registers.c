@@ -21,19 +21,6 @@ static void bank_sizes(const char *profile, uint32_t *c, uint32_t *s) {
 
 typedef struct reservation { const ir_var *v; char bank; uint32_t first, count; } reservation;
 
-/* The reservation that applies to a profile: `register(c0)`, or `register(ps, c1)` when the
- * shader is a pixel shader (ps, ps_3_0...); NULL for another profile's. A declaration keeps only
- * the last reservation written (`: register(vs, c0) : register(ps, c1)`): the others' shaders
- * are not checked. */
-static const char *reg_for(const char *reg, const char *profile) {
-    const char *comma = reg ? strchr(reg, ',') : NULL;
-    if (!comma) return reg;
-    size_t n = (size_t)(comma - reg);
-    if (!profile || strncasecmp(reg, profile, n) != 0 || (profile[n] && profile[n] != '_')) return NULL;
-    while (*++comma == ' ') {}
-    return comma;
-}
-
 static bool parse_reg(const char *reg, char *bank, uint32_t *index) {
     if (!reg || (reg[0] != 'c' && reg[0] != 'C' && reg[0] != 's' && reg[0] != 'S') || reg[1] < '0' || reg[1] > '9') return false;
     char *end;
@@ -52,7 +39,10 @@ void hfx_ir_pass_registers(ir_ctx *c, ir_shader *sh) {
     for (uint32_t i = 0; i < sh->global_count; i++) {
         const ir_var *v = sh->globals[i];
         reservation x = {v, 0, 0, 0};
-        if ((v->kind != IRV_UNIFORM && v->kind != IRV_SAMPLER) || !v->decl || !parse_reg(reg_for(v->decl->reg, profile), &x.bank, &x.first)) continue;
+        char buf[32]; /* the reservation for this shader's profile (`register(ps, c1)`, else `register(c1)`) */
+        if ((v->kind != IRV_UNIFORM && v->kind != IRV_SAMPLER) || !v->decl ||
+            !parse_reg(hfx_register_for(v->decl->reg, profile, buf, sizeof buf), &x.bank, &x.first))
+            continue;
         /* the first register only: fxc allocates the registers a shader reads, and FNA's
          * EnvironmentMapEffect puts a float3x3 on the fourth column of a float4x4 whose first
          * three columns its shaders read */

@@ -115,6 +115,35 @@ static void ps_3_0_reflect_pow_select(void) {
             "\n// approximately 15 instruction slots used (0 texture, 15 arithmetic)\n");
 }
 
+/* `register(vs, c3) : register(ps, c1)` (FNA's stock effects write every parameter so): each
+ * stage takes its own reservation; a parameter without one takes the first register no
+ * parameter reserves for that stage (c0 here, though A and B come first). Before, the last
+ * reservation written served both stages: A at c1 in the vertex shader, on top of B. */
+static void per_stage_registers(void) {
+    static const char src[] = "float4 A : register(vs, c3) : register(ps, c1);\nfloat4 B : register(vs, c1);\nfloat4 C;\n"
+                              "float4 main(float4 p : POSITION) : POSITION { return p * A + B + C; }\n";
+    static const char ps_src[] = "float4 A : register(vs, c3) : register(ps, c1);\nfloat4 C;\n"
+                                 "float4 main(float4 c : COLOR0) : COLOR0 { return c * A + C; }\n";
+    listing(ps_src, "ps_2_0",
+            "//   float4 A;\n//   float4 C;\n//\n//\n// Registers:\n//\n"
+            "//   Name         Reg   Size\n//   ------------ ----- ----\n"
+            "//   A            c1       1\n//   C            c0       1\n//\n\n",
+            "    ps_2_0\n"
+            "    dcl v0\n"
+            "    mad r0, v0, c1, c0\n" /* c * A + C */
+            "    mov oC0, r0\n"
+            "\n// approximately 2 instruction slots used (0 texture, 2 arithmetic)\n");
+    listing(src, "vs_2_0",
+            "//   float4 A;\n//   float4 B;\n//   float4 C;\n//\n//\n// Registers:\n//\n"
+            "//   Name         Reg   Size\n//   ------------ ----- ----\n"
+            "//   A            c3       1\n//   B            c1       1\n//   C            c0       1\n//\n\n",
+            "    vs_2_0\n"
+            "    dcl_position v0\n"
+            "    mad r0, v0, c3, c1\n" /* p * A + B */
+            "    add oPos, r0, c0\n"   /* + C */
+            "\n// approximately 2 instruction slots used\n");
+}
+
 static void refused(const char *src, const char *profile, const char *message) {
     bool ok;
     char *text = compile(src, profile, &ok);
@@ -160,6 +189,7 @@ int main(void) {
     RUN(vs_2_0_transform_and_mad);
     RUN(ps_2_0_clip_and_saturate);
     RUN(ps_3_0_reflect_pow_select);
+    RUN(per_stage_registers);
     RUN(limits);
     return test_summary();
 }

@@ -35,12 +35,26 @@ static void semantics_and_registers(void) {
     tp_result *r = tp_parse("sampler s : register(s0);\n"
                             "float4 c : register(c12);\n"
                             "float4 k : register(vs, c3);\n"
-                            "float4 x : COLOR : register(c1);\n");
+                            "float4 x : COLOR : register(c1);\n"
+                            "float3 e : register(vs, c13) : register(ps, c14);\n");
     CHECK_STR(r->errors, "");
     CHECK_STR(r->dump, "var sampler s : register(s0)\n"
                        "var float4 c : register(c12)\n"
                        "var float4 k : register(vs,c3)\n" /* the profile kept: lower/registers.c checks it */
-                       "var float4 x : COLOR : register(c1)\n");
+                       "var float4 x : COLOR : register(c1)\n"
+                       "var float3 e : register(vs,c13) : register(ps,c14)\n"); /* both kept (FNA's stock effects) */
+    /* each shader takes its own profile's reservation, else the unqualified one */
+    char buf[16];
+    hfx_decl *e = tp_find(r, "e"), *k = tp_find(r, "k"), *c = tp_find(r, "c");
+    CHECK(e && k && c);
+    if (e && k && c) {
+        CHECK_STR(hfx_register_for(e->reg, "vs_2_0", buf, sizeof buf), "c13");
+        CHECK_STR(hfx_register_for(e->reg, "ps_3_0", buf, sizeof buf), "c14");
+        CHECK(hfx_register_for(k->reg, "ps_2_0", buf, sizeof buf) == NULL);
+        CHECK_STR(hfx_register_for(k->reg, "vs_3_0", buf, sizeof buf), "c3");
+        CHECK_STR(hfx_register_for(c->reg, "ps_2_0", buf, sizeof buf), "c12");
+        CHECK(hfx_register_for(c->reg, "ps_2_0", buf, 3) == NULL); /* "c12" does not fit in 3 bytes */
+    }
     hfx_decl *x = tp_find(r, "x");
     CHECK(x && x->semantic && x->reg);
     if (x) {
