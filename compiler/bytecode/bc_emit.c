@@ -138,13 +138,28 @@ static bc_val widened(bc_val v, unsigned n) {
     return v;
 }
 
-/* x * 0, dot(x, 0), x + 0, 0 * y + z: no instruction (fxc folds them as well). */
+/* A def register's ones. */
+static bool is_one(const bc_gen *g, const bc_val *v) {
+    if (v->type != D3D9_REG_CONST || v->rel || v->mod) return false;
+    for (uint32_t d = 0; d < g->def_count; d++)
+        if (g->defs[d].num == v->num) {
+            for (unsigned i = 0; i < v->n; i++) if (g->defs[d].v[v->sw[i]] != 1) return false;
+            return true;
+        }
+    return false;
+}
+
+/* x * 0, dot(x, 0), x + 0, 0 * y + z, x * 1: no instruction (fxc folds them as well). */
 static bool folded(bc_gen *g, uint16_t op, unsigned n, const bc_val *src, unsigned count, bc_val *out) {
     int keep = -1;
     bool zero = false;
     switch (op) {
-    case D3D9_MUL: case D3D9_DP3: case D3D9_DP4:
+    case D3D9_MUL:
+        keep = is_one(g, &src[0]) && src[1].n >= src[0].n ? 1 : is_one(g, &src[1]) && src[0].n >= src[1].n ? 0 : -1;
+        /* fall through */
+    case D3D9_DP3: case D3D9_DP4:
         zero = hfx_bc_is_zero(g, &src[0]) || hfx_bc_is_zero(g, &src[1]);
+        if (zero) keep = -1;
         break;
     case D3D9_DP2ADD: case D3D9_MAD:
         if (hfx_bc_is_zero(g, &src[0]) || hfx_bc_is_zero(g, &src[1])) keep = 2;
@@ -163,6 +178,10 @@ static bool folded(bc_gen *g, uint16_t op, unsigned n, const bc_val *src, unsign
 bc_val hfx_bc_op(bc_gen *g, uint16_t op, unsigned n, const bc_val *src, unsigned count) {
     bc_val f;
     if (folded(g, op, n, src, count, &f)) return f;
+    if (op == D3D9_MAD && hfx_bc_is_zero(g, &src[2])) { /* y * z + 0: a mul */
+        hfx_bc_release(g, src[2]);
+        return hfx_bc_op(g, D3D9_MUL, n, src, 2);
+    }
     int r = hfx_bc_temp(g);
     bc_val d = hfx_bc_reg(D3D9_REG_TEMP, (uint16_t)(r < 0 ? 0 : r), n);
     d.own = r >= 0;

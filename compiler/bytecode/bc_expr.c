@@ -602,6 +602,65 @@ static bool assign_slots(bc_gen *g, const lval *l, bc_obj src, bool sat) {
     return true;
 }
 
+/* Slot k of matrix m in the layout `cols` (a view when m has it; a splat stays a view). */
+static bc_val layout_slot(bc_gen *g, bc_obj m, const hfx_type *t, bool cols, unsigned k) {
+    if (m.cols == cols) {
+        bc_val v = m.slot[k < m.count ? k : 0];
+        v.own = false;
+        return v;
+    }
+    unsigned n = cols ? t->rows : t->cols;
+    bc_val parts[4];
+    bool splat = true;
+    for (unsigned i = 0; i < n; i++) {
+        parts[i] = cols ? hfx_bc_matrix_elem(m, i, k) : hfx_bc_matrix_elem(m, k, i);
+        splat &= parts[i].type == parts[0].type && parts[i].num == parts[0].num && parts[i].mod == parts[0].mod &&
+                 parts[i].sw[0] == parts[0].sw[0] && !parts[i].rel;
+    }
+    if (!splat) return gather(g, parts, n);
+    bc_val v = parts[0];
+    v.n = (uint8_t)n;
+    for (unsigned c = 1; c < 4; c++) v.sw[c] = v.sw[0];
+    return v;
+}
+
+/* m += x (or -=, or += x * w) on a matrix variable: computed in x's layout, so that a column_major
+ * parameter's columns (skinning's Bones[i] * w) add up without a transpose, and the variable takes
+ * the result's registers. Under a flattened condition the variable keeps its layout (both sides
+ * of the if must agree). */
+static bool matrix_update(bc_gen *g, const ir_expr *e) {
+    const ir_expr *lhs = e->a[0], *rhs = e->a[1], *m = rhs, *w = NULL;
+    bc_binding *b = lhs->kind == IE_VAR ? hfx_bc_bind(g, lhs->var) : NULL;
+    if (!b || b->is_const || b->var->kind == IRV_UNIFORM || (e->op != OP_ADD && e->op != OP_SUB) || b->obj.count > 64)
+        return false;
+    const hfx_type *t = e->type;
+    if (e->op == OP_ADD && rhs->kind == IE_BINARY && rhs->op == OP_MUL && rhs->type->kind == TY_MATRIX)
+        for (int s = 0; s < 2 && !w; s++)
+            if (rhs->a[s]->kind == IE_CONVERT && rhs->a[s]->a[0]->type->kind == TY_SCALAR) { w = rhs->a[s]->a[0]; m = rhs->a[1 - s]; }
+    bc_obj r = hfx_bc_expr(g, m);
+    bc_val wv = w ? hfx_bc_expr1(g, w) : zero_c(g);
+    bool cols = g->cond.n ? b->obj.cols : r.cols;
+    unsigned count = cols ? t->cols : t->rows;
+    bc_obj o = {HFX_NEW_ARRAY(g->c->arena, bc_val, count), count, cols};
+    for (unsigned k = 0; k < count; k++) {
+        bc_val cur = layout_slot(g, b->obj, t, cols, k), x = layout_slot(g, r, t, cols, k), ww = wv;
+        ww.own = false;
+        o.slot[k] = w ? hfx_bc_op3(g, D3D9_MAD, x.n, x, ww, cur) : binary_vals(g, e->op, cur, x, t);
+        if (!o.slot[k].own || o.slot[k].type != D3D9_REG_TEMP || o.slot[k].mod) o.slot[k] = hfx_bc_op1(g, D3D9_MOV, o.slot[k].n, o.slot[k]);
+    }
+    hfx_bc_release(g, wv);
+    hfx_bc_release_obj(g, r);
+    for (uint32_t k = 0; k < b->obj.count; k++) {
+        bc_val old = b->obj.slot[k];
+        old.own = (b->owned >> k & 1) && old.type == D3D9_REG_TEMP;
+        hfx_bc_release(g, old);
+    }
+    b->obj = o;
+    b->owned = 0;
+    for (uint32_t k = 0; k < count; k++) { b->owned |= 1ull << k; b->obj.slot[k].own = false; }
+    return true;
+}
+
 /* Component j of an l-value as a one-component lval: a matrix swizzle's element (the row-major
  * binding's slot `row`, component `col`), or a vector l-value's j-th written component. */
 static bool component_lval(bc_gen *g, const ir_expr *a, unsigned j, lval *l) {
@@ -680,6 +739,18 @@ static bc_obj assign(bc_gen *g, const ir_expr *e) {
         dst = hfx_bc_expr(g, lhs);
         hfx_bc_assign(g, dst, src, e->type, sat);
         return dst;
+    }
+    if (e->op != OP_NONE && lhs->type->kind == TY_MATRIX && matrix_update(g, e)) return hfx_bc_expr(g, lhs);
+    if (e->op != OP_NONE && lhs->type->kind != TY_MATRIX && lval_of(g, lhs, &l)) {
+        /* x op= y as x = x op y: the current value is read where it is (a zero it starts as
+         * folds away, a product added is one mad) and the result taken as an assignment's */
+        bc_val cur = hfx_bc_expr1(g, lhs), r;
+        cur.own = false;
+        if (e->op == OP_ADD && is_mul(e->a[1]))
+            r = hfx_bc_op3(g, D3D9_MAD, width(e->type), hfx_bc_expr1(g, e->a[1]->a[0]), hfx_bc_expr1(g, e->a[1]->a[1]), cur);
+        else r = binary_vals(g, e->op, cur, hfx_bc_expr1(g, e->a[1]), e->type);
+        if (lval_of(g, lhs, &l)) assign_slots(g, &l, one(g, r), false);
+        return hfx_bc_expr(g, lhs);
     }
     if (lval_of(g, lhs, &l)) /* a compound assignment or a matrix: writable temporaries first */
         for (uint32_t k = 0; k < l.count; k++) own_slot(g, l.b, l.first + k, true);

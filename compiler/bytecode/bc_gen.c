@@ -635,6 +635,16 @@ static void gen_stmt(bc_gen *g, const ir_stmt *s) {
     }
 }
 
+/* An argument a written parameter may take as it is: inputs and constants (copied when written)
+ * or fresh temporaries of its own, in the parameter's row layout. */
+static bool cow_arg(bc_gen *g, bc_obj a) {
+    if (a.cols || a.count > 64) return false;
+    for (uint32_t k = 0; k < a.count; k++)
+        if (!hfx_bc_immutable(g, &a.slot[k]) && !(a.slot[k].own && a.slot[k].type == D3D9_REG_TEMP && !a.slot[k].mod))
+            return false;
+    return true;
+}
+
 /* An inlined call: parameters bound to the arguments (or to copies, when the callee writes them). */
 void hfx_bc_call(bc_gen *g, const ir_expr *e, bc_obj *out) {
     const ir_func *f = e->fn;
@@ -648,6 +658,13 @@ void hfx_bc_call(bc_gen *g, const ir_expr *e, bc_obj *out) {
         if (is_out && !(p->mods & MOD_IN)) { add_bind(g, p, hfx_bc_alloc_obj(g, p->type)); continue; }
         bc_obj a = is_out ? outs[i] : hfx_bc_expr(g, e->a[i]);
         if (!hfx_bc_writes_param(g, f, p) && !is_out) { /* read only: the argument's registers serve */
+            uint64_t owned = 0;
+            for (uint32_t k = 0; k < a.count && k < 64; k++) if (a.slot[k].own) owned |= 1ull << k;
+            bc_binding *b = add_bind(g, p, a);
+            if (b) b->owned = owned;
+            continue;
+        }
+        if (cow_arg(g, a)) { /* registers nothing else names: written in place or copied on write */
             uint64_t owned = 0;
             for (uint32_t k = 0; k < a.count && k < 64; k++) if (a.slot[k].own) owned |= 1ull << k;
             bc_binding *b = add_bind(g, p, a);

@@ -145,20 +145,18 @@ bool hfx_bc_flow_loop(bc_gen *g, const ir_stmt *s);
 bool hfx_bc_flow_if(bc_gen *g, const ir_stmt *s);           /* an if inside a real loop that breaks: if_comp / endif */
 void hfx_bc_flow_break(bc_gen *g, const ir_stmt *s);
 bool hfx_bc_loop_index(bc_gen *g, bc_obj o, const ir_expr *idx, uint32_t per, bc_obj *out); /* c[aL + n] */
-/* Temporaries' live components after each instruction, following if / else / loop / break. */
-void hfx_bc_live(const bc_gen *g, uint8_t (*after)[BC_MAX_TEMPS]);
-void hfx_bc_dead_code_flow(bc_gen *g);
-/* hfx_bc_renumber's segments held open across the loop / if at instruction i. */
-bool hfx_bc_hold_segments(const bc_gen *g, uint32_t i, uint8_t (*live_after)[BC_MAX_TEMPS], int32_t *open, uint32_t *held,
-                          int32_t *seg_start, int32_t *seg_end, uint32_t *segs, uint32_t max);                      /* hfx_bc_dead_code where the code has flow */
-/* The flow instruction closing / continuing the block opened at `at` (loop: its endloop). */
-uint32_t hfx_bc_flow_end(const bc_gen *g, uint32_t at);
 
 /* --- bc_peep.c --- */
-unsigned hfx_bc_read_comps(const d3d9_inst *in, const d3d9_src *s); /* the components in reads of s */
 void hfx_bc_sink(bc_gen *g);                                 /* copies folded into the instructions they copy */
-uint32_t hfx_bc_renumber(bc_gen *g);                         /* temporaries renumbered by span; how many */
 void hfx_bc_dead_code(bc_gen *g);                            /* instructions whose results nothing reads */
+
+/* --- bc_alloc.c --- */
+/* Per instruction, the components of each temporary read later on some path (NULL: out of
+ * memory); dead (optional, one per instruction): writes nothing reads, which read nothing. */
+uint8_t (*hfx_bc_liveness(bc_gen *g, bool *dead))[BC_MAX_TEMPS];
+unsigned hfx_bc_read_comps(const bc_gen *g, const d3d9_inst *in, unsigned k); /* components source k reads */
+bool hfx_bc_droppable(const d3d9_inst *in);                  /* only writes a temporary */
+uint32_t hfx_bc_renumber(bc_gen *g);                         /* temporaries packed by component; how many */
 void hfx_bc_prune_constants(bc_gen *g);                      /* parameters and defs nothing reads */
 
 /* --- bc_intrin.c --- */

@@ -13,6 +13,11 @@ static bool reads(const d3d9_inst *in, unsigned type, unsigned num) {
     return false;
 }
 
+static bool flow(const d3d9_inst *in) {
+    const d3d9_op_info *info = hfx_d3d9_op_find(in->op);
+    return info && (info->flags & D3D9_OPF_FLOW);
+}
+
 static bool writes(const d3d9_inst *in, unsigned type, unsigned num) {
     return in->has_dst && in->op != D3D9_TEXKILL && in->dst.type == type && in->dst.num == num;
 }
@@ -37,7 +42,10 @@ static bool dead_after(const bc_gen *g, uint32_t at, unsigned num, unsigned mask
             mask &= ~(unsigned)in->dst.mask;
             if (!mask) return true;
         }
-        if (hfx_d3d9_op_find(in->op)->flags & D3D9_OPF_FLOW) return false; /* the value may flow elsewhere */
+        if (flow(in)) { /* a loop may read it again at its top: ask the liveness that follows the flow */
+            uint8_t (*live)[BC_MAX_TEMPS] = num < BC_MAX_TEMPS ? hfx_bc_liveness((bc_gen *)g, NULL) : NULL;
+            return live && !(live[at][num] & mask);
+        }
     }
     return true;
 }
@@ -84,7 +92,7 @@ static bool try_sink(bc_gen *g, uint32_t at) {
     unsigned remaining = mask;
     for (uint32_t i = at; i-- > 0 && remaining;) {
         d3d9_inst *in = &g->insts[i];
-        if (hfx_d3d9_op_find(in->op)->flags & D3D9_OPF_FLOW) return false; /* writers in this block only */
+        if (flow(in)) return false; /* writers in another block: not this copy's */
         bool w = writes(in, D3D9_REG_TEMP, T);
         if (reads(in, D3D9_REG_TEMP, T)) return false;
         /* the target must be left alone while the writers run (the first writer may read it:
@@ -118,107 +126,12 @@ void hfx_bc_sink(bc_gen *g) {
         if (!try_sink(g, i)) i++;
 }
 
-
-/* Temporaries renumbered by the values they hold: a register's value ends where none of its
- * components is read again (backward liveness; the code has no loops), the next write starts
- * another; values are then given the fewest registers, first come first served. */
-uint32_t hfx_bc_renumber(bc_gen *g) {
-    uint32_t n = g->inst_count;
-    uint8_t (*live_after)[BC_MAX_TEMPS] = (uint8_t (*)[BC_MAX_TEMPS])hfx_arena_alloc_raw(g->c->arena, (size_t)(n ? n : 1) * BC_MAX_TEMPS);
-    unsigned live[BC_MAX_TEMPS] = {0};
-    if (g->has_flow) hfx_bc_live(g, live_after);
-    for (uint32_t i = g->has_flow ? 0 : n; i-- > 0;) {
-        const d3d9_inst *in = &g->insts[i];
-        for (unsigned r = 0; r < BC_MAX_TEMPS; r++) live_after[i][r] = (uint8_t)live[r];
-        if (writes(in, D3D9_REG_TEMP, in->dst.num) && in->dst.type == D3D9_REG_TEMP && in->dst.num < BC_MAX_TEMPS && !in->predicated)
-            live[in->dst.num] &= ~(unsigned)in->dst.mask;
-        for (unsigned k = 0; k < in->src_count; k++)
-            if (in->src[k].type == D3D9_REG_TEMP && in->src[k].num < BC_MAX_TEMPS) live[in->src[k].num] |= hfx_bc_read_comps(in, &in->src[k]);
-        if (in->op == D3D9_TEXKILL && in->dst.type == D3D9_REG_TEMP && in->dst.num < BC_MAX_TEMPS) live[in->dst.num] |= 0xf;
-    }
-    enum { MAX_SEGS = 4096 };
-    int32_t open[BC_MAX_TEMPS];
-    for (unsigned r = 0; r < BC_MAX_TEMPS; r++) open[r] = -1;
-    int32_t *seg_start = HFX_NEW_ARRAY(g->c->arena, int32_t, MAX_SEGS), *seg_end = HFX_NEW_ARRAY(g->c->arena, int32_t, MAX_SEGS);
-    int32_t *dst_seg = HFX_NEW_ARRAY(g->c->arena, int32_t, n ? n : 1), *src_seg = HFX_NEW_ARRAY(g->c->arena, int32_t, (n ? n : 1) * 4);
-    uint32_t segs = 0, held[BC_MAX_TEMPS] = {0};
-    for (uint32_t i = 0; i < n; i++) {
-        const d3d9_inst *in = &g->insts[i];
-        if (g->has_flow && hfx_bc_hold_segments(g, i, live_after, open, held, seg_start, seg_end, &segs, MAX_SEGS))
-            return BC_MAX_TEMPS + 1;
-        dst_seg[i] = -1;
-        for (unsigned k = 0; k < 4; k++) src_seg[i * 4 + k] = -1;
-        for (unsigned r = 0; r < BC_MAX_TEMPS; r++) {
-            bool dst = in->has_dst && in->dst.type == D3D9_REG_TEMP && in->dst.num == r;
-            bool src = false;
-            for (unsigned k = 0; k < in->src_count; k++) src |= in->src[k].type == D3D9_REG_TEMP && in->src[k].num == r;
-            if (!dst && !src) continue;
-            if (open[r] < 0) {
-                if (segs == MAX_SEGS) return BC_MAX_TEMPS + 1;
-                open[r] = (int32_t)segs;
-                seg_start[segs] = (int32_t)i;
-                segs++;
-            }
-            if (seg_end[open[r]] < (int32_t)i) seg_end[open[r]] = (int32_t)i;
-            if (dst) dst_seg[i] = open[r];
-            for (unsigned k = 0; k < in->src_count; k++)
-                if (in->src[k].type == D3D9_REG_TEMP && in->src[k].num == r) src_seg[i * 4 + k] = open[r];
-            if (!live_after[i][r] && i >= held[r]) open[r] = -1;
-        }
-    }
-    int32_t *color = HFX_NEW_ARRAY(g->c->arena, int32_t, segs ? segs : 1);
-    int32_t busy_until[BC_MAX_TEMPS];
-    uint32_t count = 0;
-    for (uint32_t s = 0; s < segs; s++) { /* segments are numbered by start */
-        unsigned c = 0;
-        while (c < count && busy_until[c] > seg_start[s]) c++; /* read at i, written at i: one register */
-        if (c == count) {
-            if (count == BC_MAX_TEMPS) return BC_MAX_TEMPS + 1;
-            count++;
-        }
-        color[s] = (int32_t)c;
-        busy_until[c] = seg_end[s];
-    }
-    for (uint32_t i = 0; i < n; i++) {
-        d3d9_inst *in = &g->insts[i];
-        if (dst_seg[i] >= 0) in->dst.num = (uint16_t)color[dst_seg[i]];
-        for (unsigned k = 0; k < in->src_count; k++)
-            if (src_seg[i * 4 + k] >= 0) in->src[k].num = (uint16_t)color[src_seg[i * 4 + k]];
-    }
-    return count;
-}
-
-/* The source components an instruction reads (componentwise: those its mask writes). */
-unsigned hfx_bc_read_comps(const d3d9_inst *in, const d3d9_src *s) {
-    unsigned mask = 0;
-    const d3d9_op_info *info = hfx_d3d9_op_find(in->op);
-    bool componentwise = in->has_dst && info && !(info->flags & (D3D9_OPF_TEX | D3D9_OPF_SCALAR | D3D9_OPF_MATRIX)) &&
-                         in->op != D3D9_DP3 && in->op != D3D9_DP4 && in->op != D3D9_DP2ADD && in->op != D3D9_NRM &&
-                         in->op != D3D9_CRS && in->op != D3D9_SINCOS && in->op != D3D9_LIT && in->op != D3D9_TEXKILL;
-    for (unsigned c = 0; c < 4; c++)
-        if (!componentwise || (in->dst.mask >> c & 1)) mask |= 1u << (s->swizzle >> (2 * c) & 3);
-    return mask;
-}
-
 /* Instructions whose temporaries nothing reads afterwards are dropped (a variant's unused
- * outputs, a select's unread side); the code has no loops, so one walk back suffices. */
+ * outputs, a select's unread side), over the shader's flow (bc_alloc.c's liveness). */
 void hfx_bc_dead_code(bc_gen *g) {
-    if (g->has_flow) { hfx_bc_dead_code_flow(g); return; }
-    unsigned live[BC_MAX_TEMPS] = {0};
     uint32_t n = g->inst_count;
     bool *drop = HFX_NEW_ARRAY(g->c->arena, bool, n ? n : 1);
-    for (uint32_t i = n; i-- > 0;) {
-        d3d9_inst *in = &g->insts[i];
-        bool temp = in->has_dst && in->op != D3D9_TEXKILL && in->dst.type == D3D9_REG_TEMP && in->dst.num < BC_MAX_TEMPS;
-        if (temp && !(live[in->dst.num] & in->dst.mask) && !(hfx_d3d9_op_find(in->op)->flags & D3D9_OPF_FLOW)) {
-            drop[i] = true;
-            continue;
-        }
-        if (temp && !in->predicated) live[in->dst.num] &= ~(unsigned)in->dst.mask;
-        for (unsigned k = 0; k < in->src_count; k++)
-            if (in->src[k].type == D3D9_REG_TEMP && in->src[k].num < BC_MAX_TEMPS) live[in->src[k].num] |= hfx_bc_read_comps(in, &in->src[k]);
-        if (in->op == D3D9_TEXKILL && in->dst.type == D3D9_REG_TEMP && in->dst.num < BC_MAX_TEMPS) live[in->dst.num] |= 0xf;
-    }
+    if (!drop || !hfx_bc_liveness(g, drop)) return;
     uint32_t k = 0;
     for (uint32_t i = 0; i < n; i++) if (!drop[i]) g->insts[k++] = g->insts[i];
     g->inst_count = k;

@@ -42,13 +42,10 @@ static void gen_entry(bc_gen *g) {
         bc_obj o = {0};
         if (is_in) o = hfx_bc_obj_inputs(g, in, nin, p, p->type);
         if (is_out) outs[i] = hfx_bc_obj_outputs(g, out, nout, p, p->type);
-        bool written = hfx_bc_writes_param(g, f, p);
-        if (is_out || written) { /* inputs are read only, outputs write only: a copy the body uses */
-            bc_obj c = hfx_bc_alloc_obj(g, p->type);
-            if (is_in) hfx_bc_assign(g, c, o, p->type, false);
-            o = c;
-        }
-        hfx_bc_bind_entry(g, p, o, is_out || written);
+        /* outputs are write only: temporaries the body writes; an input the body writes is
+         * copied slot by slot when written (the bindings copy on write) */
+        if (!is_in) o = hfx_bc_alloc_obj(g, p->type);
+        hfx_bc_bind_entry(g, p, o, !is_in);
     }
     bc_obj ret = {0}, regs = {0};
     if (f->ret && f->ret->kind != TY_VOID) {

@@ -19,9 +19,13 @@
  *              FogColor (0, 0, 1) * 0.75: (0.53229, 0.42471, 0.42260), alpha 0.75. */
 #include <math.h>
 #include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
+#include "effect.h"
 #include "gl_context.h"
+#include "hfx/hfxc.h"
 #include "rt_check.h"
 #include "rt_support.h"
 #include "test.h"
@@ -175,6 +179,40 @@ static void every_shader_index(void) {
     hfx_effect_destroy(fx);
 }
 
+/* The same probes with every shader sent through the D3D9 bytecode back end and read back
+ * (source -> vs_2_0 / ps_2_0 bytecode -> hfx's reader -> GLSL): its register allocation (values
+ * packed into shared registers' components), its skinning by columns, its folds. */
+static void every_shader_index_through_d3d9(void) {
+    hfxc_options co;
+    memset(&co, 0, sizeof co);
+    co.targets = 1u << HFX_TARGET_GLSL330;
+    co.flags = HFXC_VIA_D3D9 | HFXC_PACK_UNIFORMS;
+    hfxc_result *r = hfxc_compile_file(HFX_SOURCE_DIR "/fx/basic_lighting.fx", &co);
+    const hfx_fx_effect *compiled = r ? hfxc_result_effect(r) : NULL;
+    if (!compiled) {
+        char *text = r ? hfxc_diagnostics_text(r) : NULL;
+        printf("%s\n", text ? text : "");
+        free(text);
+    }
+    CHECK(compiled != NULL);
+    void *data = NULL;
+    size_t size = 0;
+    hfx_effect *fx = NULL;
+    char *errors = NULL;
+    if (compiled && hfx_fx_write_hfxo(compiled, &data, &size) == 0)
+        fx = hfx_effect_load_memory(dev, data, size, "basic_lighting.fx", NULL, &errors);
+    if (compiled && !fx) printf("%s\n", errors ? errors : "");
+    CHECK(fx != NULL);
+    if (fx) {
+        set_scene(fx);
+        for (int index = 0; index < 14; index++) check_index(fx, index);
+        hfx_effect_destroy(fx);
+    }
+    hfx_free(errors);
+    free(data);
+    hfxc_result_free(r);
+}
+
 static void make_texture(void) {
     static const unsigned char rgba[4] = {128, 128, 255, 255};
     g.GenTextures(1, &texture);
@@ -192,6 +230,7 @@ int main(void) {
     make_texture();
     RUN(reference_matches_the_worked_example);
     RUN(every_shader_index);
+    RUN(every_shader_index_through_d3d9);
     g.DeleteTextures(1, &texture);
     hfx_device_destroy(dev);
     test_gl_destroy(gl);

@@ -102,15 +102,15 @@ static void ps_3_0_reflect_pow_select(void) {
             "    dcl_texcoord v0.xyz\n"
             "    dcl_texcoord1 v1.xyz\n"
             "    nrm r0.xyz, v0\n"
-            "    dp3 r1.x, r0, c0\n"                /* d */
-            "    dp3 r2.x, r0, -c0\n"               /* reflect(i = -L, N): dot(N, i) */
-            "    add r2.x, r2.x, r2.x\n"            /* 2 dot(N, i) */
-            "    mad r0.xyz, r0, -r2.x, -c0\n"      /* i - 2 dot(N, i) N, over N (read first) */
+            "    dp3 r0.w, r0, c0\n"               /* d, packed beside N (r0.w is free) */
+            "    dp3 r1.x, r0, -c0\n"              /* reflect(i = -L, N): dot(N, i) */
+            "    add r1.x, r1.x, r1.x\n"           /* 2 dot(N, i) */
+            "    mad r0.xyz, r0, -r1.x, -c0\n"     /* i - 2 dot(N, i) N, over N (read first), d kept in .w */
             "    dp3_sat r0.x, r0, v1\n"
             "    pow r0.x, r0.x, c1.x\n"
-            "    cmp r2.x, -r1.x, c2.x, c2.y\n"     /* d > 0 is 0 - d < 0 (0 - d folded to -d): (-d >= 0) ? 0 : 1 */
-            "    cmp oC0.x, -r2.x, c2.x, r0.x\n"    /* the select: (-c >= 0) ? 0 : s */
-            "    mov oC0.y, r1.x\n"
+            "    cmp r0.y, -r0.w, c2.x, c2.y\n"    /* d > 0 is 0 - d < 0 (0 - d folded to -d): (-d >= 0) ? 0 : 1; r0.y is dead after the dp3 */
+            "    cmp oC0.x, -r0.y, c2.x, r0.x\n"   /* the select: (-c >= 0) ? 0 : s */
+            "    mov oC0.y, r0.w\n"
             "    mov oC0.zw, c2.xyxy\n"
             "\n// approximately 15 instruction slots used (0 texture, 15 arithmetic)\n");
 }
@@ -143,7 +143,9 @@ static void ps_3_0_parameter_loop(void) {
 
 /* A while loop with a break in ps_3_0: `rep` over defi's 255 passes (no counter for aL to
  * follow), the condition as break_ge at the top (x.x < Limit negated), `if (x.y > 2) break;` as
- * one break_gt; slots: rep 3, break_comp 3 each, endrep 2. */
+ * one break_gt; slots: rep 3, break_comp 3 each, endrep 2. x lives in r0 across the loop: its
+ * new value (r1) goes back to r0 before the break and at the pass's end, two movs fxc would
+ * not need (the copies' sinking stops at the break; left for later), 16 slots in all. */
 static void ps_3_0_while_break(void) {
     listing("float4 K;\nfloat Limit;\n"
             "float4 main(float4 c : COLOR0) : COLOR0 {\n    float4 x = c;\n"
@@ -159,11 +161,13 @@ static void ps_3_0_while_break(void) {
             "    mov r0, v0\n"
             "    rep i0\n"
             "      break_ge r0.x, c0.x\n"
-            "      add r0, r0, c1\n"
-            "      break_gt r0.y, c2.y\n"
+            "      add r1, r0, c1\n"
+            "      mov r0, r1\n"
+            "      break_gt r1.y, c2.y\n"
+            "      mov r0, r1\n"
             "    endrep\n"
             "    mov oC0, r0\n"
-            "\n// approximately 14 instruction slots used (0 texture, 14 arithmetic)\n");
+            "\n// approximately 16 instruction slots used (0 texture, 16 arithmetic)\n");
 }
 
 /* vs_2_0's static loop: `rep i0` runs Count's i register (INT4 in the CTAB) times; the counter,

@@ -1,0 +1,198 @@
+/* test_bc_alloc.c: the bytecode back end's temporaries (compiler/bytecode/bc_alloc.c) and the
+ * folds that keep values out of them. Shaders compiled through the fxc path (/T, /E) and their
+ * code compared as exact text, each instruction and register worked out by hand in a comment;
+ * the liveness over flow control checked on a hand-made instruction list (the writer flattens
+ * every if and unrolls every loop, so only such a list has a loop to check). */
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bytecode/bc_int.h"
+#include "hfx/hfxc.h"
+#include "test.h"
+
+/* The listing's code, from the version line on (the CTAB comment is test_bytecode.c's). */
+static char *code_of(const char *src, const char *profile) {
+    hfxc_options o = {.entry = "main", .profile = profile};
+    hfxc_result *r = hfxc_compile_memory(src, strlen(src), "t.fx", &o);
+    size_t size = 0;
+    const void *code = hfxc_result_bytecode(r, &size);
+    char *text = NULL;
+    if (hfxc_result_ok(r) && code) {
+        char *diags = NULL;
+        text = hfxc_disassemble(code, size, "t.vso", &diags);
+        free(diags);
+    } else text = hfxc_diagnostics_text(r);
+    hfxc_result_free(r);
+    char *at = text ? strstr(text, "\n    ") : NULL;
+    char *out = strdup(at ? at + 1 : text ? text : "");
+    free(text);
+    return out;
+}
+
+static void code_is(const char *src, const char *profile, const char *want) {
+    char *text = code_of(src, profile);
+    CHECK_STR(text, want);
+    free(text);
+}
+
+/* Four scalars live at once share one register, one component each (one register per value
+ * would take four). 8 slots: four dp4 and the four products, written straight to oPos. */
+static void scalars_share_a_register(void) {
+    code_is("float4 A, B, C, D;\n"
+            "float4 main(float4 p : POSITION) : POSITION {\n"
+            "    float a = dot(p, A);\n    float b = dot(p, B);\n    float c = dot(p, C);\n    float d = dot(p, D);\n"
+            "    return float4(a * b, b * c, c * d, d * a);\n}\n",
+            "vs_2_0",
+            "    vs_2_0\n"
+            "    dcl_position v0\n"
+            "    dp4 r0.x, v0, c0\n"
+            "    dp4 r0.y, v0, c1\n"         /* b: r0.x is still live, b takes the next free component */
+            "    dp4 r0.z, v0, c2\n"
+            "    dp4 r0.w, v0, c3\n"
+            "    mul oPos.x, r0.x, r0.y\n"
+            "    mul oPos.y, r0.y, r0.z\n"
+            "    mul oPos.z, r0.z, r0.w\n"
+            "    mul oPos.w, r0.w, r0.x\n"
+            "\n// approximately 8 instruction slots used\n");
+}
+
+/* c.rgb *= t.rgb on a copy of an input: the copy takes only the component the product does not
+ * write (mov r0.w, v0.w, not a mov of all four), and the product writes the texel's register,
+ * which dies there. 4 slots: texld, mul, mov, and ps_2_0's mov to oC0 (oC0 takes only a mov). */
+static void copy_on_write_takes_only_what_is_kept(void) {
+    code_is("sampler S;\n"
+            "float4 main(float2 uv : TEXCOORD0, float4 col : COLOR0) : COLOR0 {\n"
+            "    float4 c = col;\n    c.rgb *= tex2D(S, uv).rgb;\n    return c;\n}\n",
+            "ps_2_0",
+            "    ps_2_0\n"
+            "    dcl t0.xy\n"
+            "    dcl v0\n"
+            "    dcl_2d s0\n"
+            "    texld r0, t0, s0\n"
+            "    mul r0.xyz, v0, r0\n"
+            "    mov r0.w, v0.w\n"
+            "    mov oC0, r0\n"
+            "\n// approximately 4 instruction slots used (1 texture, 3 arithmetic)\n");
+}
+
+/* Two-bone skinning as XNA's SkinnedEffect writes it: the float4x3 bones are column_major, three
+ * registers of four (one per column); skin += Bones[i] * w adds them up by columns, a mul for
+ * the first bone (0 + x * w: the zero folds) and a mad for the second, and mul(p, skin) is one
+ * dp4 per column. 18 slots: per bone the index times 3 and mova (2) and three columns (3): 10;
+ * the position's three dp4 and its w of 1: 4; WorldViewProj's four dp4: 4. Four temporaries:
+ * the three columns and the second index (r0.x is a column's by then). */
+static void skinning_by_columns(void) {
+    code_is("float4x3 Bones[4];\nfloat4x4 WorldViewProj;\n"
+            "void main(float4 p : POSITION, int4 i : BLENDINDICES, float4 w : BLENDWEIGHT, out float4 o : POSITION) {\n"
+            "    float4x3 skin = 0;\n"
+            "    skin += Bones[i.x] * w.x;\n"
+            "    skin += Bones[i.y] * w.y;\n"
+            "    o = mul(float4(mul(p, skin), 1), WorldViewProj);\n}\n",
+            "vs_2_0",
+            "    vs_2_0\n"
+            "    def c16, 0, 3, 1, 0\n"
+            "    dcl_position v0\n"
+            "    dcl_blendindices v1\n"
+            "    dcl_blendweight v2\n"
+            "    mul r0.x, v1.x, c16.y\n"   /* three registers a bone */
+            "    mova a0.x, r0.x\n"
+            "    mul r0, c0[a0.x], v2.x\n"  /* column 0 of Bones[i.x] * w.x */
+            "    mul r1, c1[a0.x], v2.x\n"
+            "    mul r2, c2[a0.x], v2.x\n"
+            "    mul r3.x, v1.y, c16.y\n"
+            "    mova a0.x, r3.x\n"
+            "    mad r0, c0[a0.x], v2.y, r0\n"
+            "    mad r1, c1[a0.x], v2.y, r1\n"
+            "    mad r2, c2[a0.x], v2.y, r2\n"
+            "    dp4 r0.x, v0, r0\n"        /* mul(p, skin).x: p . column 0 */
+            "    dp4 r0.y, v0, r1\n"
+            "    dp4 r0.z, v0, r2\n"
+            "    mov r0.w, c16.z\n"
+            "    dp4 oPos.x, r0, c12\n"
+            "    dp4 oPos.y, r0, c13\n"
+            "    dp4 oPos.z, r0, c14\n"
+            "    dp4 oPos.w, r0, c15\n"
+            "\n// approximately 18 instruction slots used\n");
+}
+
+/* lit += x * y starting from (Lit)0 is one mul, not a mov of zero and a mad; x * 1 is x. 2 slots. */
+static void compound_assignment_folds(void) {
+    code_is("float4 K;\n"
+            "float4 main(float4 col : COLOR0) : COLOR0 {\n"
+            "    float4 s = 0;\n    s += col * K;\n    return s * 1;\n}\n",
+            "ps_2_0",
+            "    ps_2_0\n"
+            "    dcl v0\n"
+            "    mul r0, v0, c0\n"
+            "    mov oC0, r0\n"
+            "\n// approximately 2 instruction slots used (0 texture, 2 arithmetic)\n");
+}
+
+/* --- liveness over flow, on a hand-made list --- */
+
+static d3d9_inst inst(uint16_t op, int dst, unsigned mask, int s0, uint8_t sw0, int s1, uint8_t sw1) {
+    d3d9_inst in;
+    memset(&in, 0, sizeof in);
+    in.op = op;
+    if (dst >= 0) { in.has_dst = true; in.dst = (d3d9_dst){.type = D3D9_REG_TEMP, .num = (uint16_t)dst, .mask = (uint8_t)mask}; }
+    int s[2] = {s0, s1};
+    uint8_t sw[2] = {sw0, sw1};
+    for (int k = 0; k < 2; k++) {
+        if (s[k] == -1) continue;
+        in.src[in.src_count++] = s[k] >= 100 ? (d3d9_src){.type = D3D9_REG_CONST, .num = (uint16_t)(s[k] - 100), .swizzle = sw[k]}
+                                             : (d3d9_src){.type = D3D9_REG_TEMP, .num = (uint16_t)s[k], .swizzle = sw[k]};
+    }
+    return in;
+}
+
+/* x = 0; rep { y = x + 1; x = y; } out = y: the copy x = y is read only by the next iteration
+ * (a walk in order sees no later read and would drop it), and x must keep its register through
+ * the loop while y lives beside it: both fit one register, x in .x and y in .y. */
+static void loop_carried_value(void) {
+    hfx_arena arena;
+    hfx_arena_init(&arena);
+    ir_ctx c;
+    memset(&c, 0, sizeof c);
+    c.arena = &arena;
+    bc_gen g;
+    memset(&g, 0, sizeof g);
+    g.c = &c;
+    enum { X = 0x00, Y = 0x55 }; /* .xxxx, .yyyy */
+    d3d9_inst code[] = {
+        inst(D3D9_MOV, 5, 1, 100, X, -1, 0),  /* r5.x = c0.x (0) */
+        inst(D3D9_REP, -1, 0, -1, 0, -1, 0),
+        inst(D3D9_ADD, 7, 1, 5, X, 100, Y),   /* r7.x = r5.x + c0.y (1) */
+        inst(D3D9_MOV, 5, 1, 7, X, -1, 0),    /* r5.x = r7.x: read at the loop's top only */
+        inst(D3D9_ENDREP, -1, 0, -1, 0, -1, 0),
+        inst(D3D9_MOV, 9, 0xf, 7, X, -1, 0),  /* a read after the loop keeps r7 */
+        inst(D3D9_MOV, 8, 1, 100, X, -1, 0),  /* dead: nothing reads r8 */
+    };
+    code[1].src[code[1].src_count++] = (d3d9_src){.type = D3D9_REG_CONSTINT, .num = 0};
+    code[5].has_dst = true;
+    code[5].dst = (d3d9_dst){.type = D3D9_REG_RASTOUT, .num = 0, .mask = 0xf};
+    g.insts = code;
+    g.inst_count = g.inst_cap = sizeof code / sizeof *code;
+    hfx_bc_dead_code(&g);
+    CHECK_INT(g.inst_count, 6);               /* only the write to r8 goes */
+    CHECK_INT(g.insts[3].op, D3D9_MOV);
+    CHECK_INT(hfx_bc_renumber(&g), 1);        /* one register: x and y packed */
+    CHECK_INT(g.insts[0].dst.num, 0);
+    CHECK_INT(g.insts[0].dst.mask, 1);        /* x in r0.x */
+    CHECK_INT(g.insts[2].dst.mask, 2);        /* y in r0.y (x is live through the loop) */
+    CHECK_INT(g.insts[2].src[0].swizzle, X);  /* reads x */
+    CHECK_INT(g.insts[3].dst.mask, 1);        /* the copy: r0.x = r0.y */
+    CHECK_INT(g.insts[3].src[0].swizzle, Y);
+    CHECK_INT(g.insts[5].src[0].swizzle, Y);
+    hfx_arena_free(&arena);
+}
+
+int main(void) {
+    RUN(scalars_share_a_register);
+    RUN(copy_on_write_takes_only_what_is_kept);
+    RUN(skinning_by_columns);
+    RUN(compound_assignment_folds);
+    RUN(loop_carried_value);
+    return test_summary();
+}
