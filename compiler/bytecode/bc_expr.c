@@ -780,6 +780,9 @@ static bc_obj assign(bc_gen *g, const ir_expr *e) {
 }
 
 static bc_obj incdec(bc_gen *g, const ir_expr *e) {
+    lval l; /* writable temporaries first: an input (PSIn.TexCoords.y--) is copied on write */
+    if (lval_of(g, e->a[0], &l))
+        for (uint32_t k = 0; k < l.count; k++) own_slot(g, l.b, l.first + k, true);
     bc_obj dst = hfx_bc_expr(g, e->a[0]);
     bc_val cur = dst.slot[0];
     cur.own = false;
