@@ -12,6 +12,8 @@
 
 #include "bench.h"
 #include "effect.h"
+#include "bytes.h"
+#include "effect/fx2_int.h"
 #include "effect/fx2_write.h"
 #include "files.h"
 #include "hfx/hfxc.h"
@@ -39,7 +41,7 @@ static void one(const char *path, int repeats, totals *t) {
     size_t size;
     char *data = test_read_file(path, &size);
     if (!data) return;
-    bool binary = size >= 4 && (uint8_t)data[3] == 0xfe && (uint8_t)data[2] == 0xff;
+    bool binary = size >= 4 && hfx_le32(data) == FX2_MAGIC; /* an fxc binary: read, not compiled */
     hfxc_options opt = {.flags = HFXC_PACK_UNIFORMS | HFXC_NO_SELF_CHECK};
     double t0 = thread_now();
     hfxc_result *base = binary ? NULL : hfxc_compile_memory(data, size, path, &opt);
