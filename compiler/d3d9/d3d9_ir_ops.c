@@ -166,11 +166,15 @@ static ir_expr *sincos(d3d9_tx *t, const d3d9_inst *in) {
 /* The value an arithmetic instruction computes, as float4 (before the write mask). */
 static ir_expr *arith(d3d9_tx *t, const d3d9_inst *in) {
     const d3d9_src *s = in->src;
-    ir_expr *a = in->src_count > 0 && in->op != D3D9_SINCOS && !(hfx_d3d9_op_find(in->op)->flags & D3D9_OPF_MATRIX)
-               ? hfx_d3d9_tx_read(t, &s[0]) : NULL;
-    ir_expr *b = in->src_count > 1 && in->op != D3D9_TEX && in->op != D3D9_TEXLDL && in->op != D3D9_TEXLDD &&
-                 in->op != D3D9_SINCOS && !(hfx_d3d9_op_find(in->op)->flags & D3D9_OPF_MATRIX) ? hfx_d3d9_tx_read(t, &s[1]) : NULL;
-    ir_expr *c = in->src_count > 2 && in->op != D3D9_SINCOS && in->op != D3D9_TEXLDD ? hfx_d3d9_tx_read(t, &s[2]) : NULL;
+    bool whole = in->op != D3D9_SINCOS && !(hfx_d3d9_op_find(in->op)->flags & D3D9_OPF_MATRIX);
+    bool want_a = in->src_count > 0 && whole;
+    bool want_b = in->src_count > 1 && whole && in->op != D3D9_TEX && in->op != D3D9_TEXLDL && in->op != D3D9_TEXLDD;
+    bool want_c = in->src_count > 2 && in->op != D3D9_SINCOS && in->op != D3D9_TEXLDD;
+    ir_expr *a = want_a ? hfx_d3d9_tx_read(t, &s[0]) : NULL;
+    ir_expr *b = want_b ? hfx_d3d9_tx_read(t, &s[1]) : NULL;
+    ir_expr *c = want_c ? hfx_d3d9_tx_read(t, &s[2]) : NULL;
+    /* a source that could not be read has its error already; nothing is built on it */
+    if ((want_a && !a) || (want_b && !b) || (want_c && !c)) return NULL;
     const hfx_type *f4 = t->f4;
     switch (in->op) {
     case D3D9_MOV: return a;

@@ -570,6 +570,25 @@ static void subroutines_refused_at_instruction(void) {
     close_fixture(&x);
 }
 
+/* A source the translator cannot read (here v0 with the `!` modifier, 13, which only a predicate
+ * register takes) is refused at that instruction: crs once built its cross product on the missing
+ * value (found by fuzz_d3d9). Words: version 0, dcl 1-3, crs at word 4 (byte 300 + 16). */
+static void unreadable_source_refused(void) {
+    fixture x;
+    open_fixture(&x, true);
+    static const uint32_t vs[] = {VS(3, 0), OP(0x1f, 2), 0x80000000u, DST(R_INPUT, 0, 0xf),
+                                  OP(0x21, 3), DST(R_TEMP, 0, 0x7), SRC(R_INPUT, 0, XYZW), SRCM(R_INPUT, 0, XYZW, 13),
+                                  END_TOKEN};
+    d3d9_shader *s = decode(&x, vs, sizeof vs / 4, 300);
+    hfx_fx_program prog;
+    CHECK_INT(hfx_codegen_d3d9_program(x.cg, s, NULL, false, &prog), -1);
+    char *text = hfx_diags_format(&x.diags, 0);
+    CHECK_STR(text, "t.fxb(0,316): error X5006: source modifier 13 is not supported here\n");
+    free(text);
+    hfx_fx_program_clear(&prog);
+    close_fixture(&x);
+}
+
 /* fxc's ob# / oi# preshader outputs (d3d9_preshader_out.file B and I) drive `if b0` and
  * `rep i3`: the b register is the preshader's x != 0, the i register its components truncated.
  *     def c0, 0.25, 0.5, 0.75, 1;  def c1, 0.125, 0, 0, 0
@@ -634,6 +653,7 @@ int main(void) {
     RUN(old_forms_refused_with_location);
     RUN(vs_ps_3_0_flow_drawn);
     RUN(subroutines_refused_at_instruction);
+    RUN(unreadable_source_refused);
     RUN(preshader_registers);
     RUN(preshader_bool_and_int_registers);
     RUN(parameter_bound_loops_drawn);
