@@ -16,10 +16,10 @@
 # HFX_ORACLE_SIZE=WxH changes the size; HFX_ORACLE_KEEP=1 keeps the pictures (path printed).
 set -uo pipefail
 [ $# -ge 2 ] && [ $# -le 3 ] || { echo "usage: scripts/fx2_oracle.sh BUILD_DIR FOLDER [PARAMS]" >&2; exit 2; }
-here=$(cd "$(dirname "$0")/.." && pwd)
-build=$(cd "$1" && pwd) folder=$(cd "$2" && pwd) params=${3:-$here/scripts/fx2_oracle.params}
+here=$(cd "$(dirname "$0")" && pwd)
+build=$(cd "$1" && pwd) folder=$(cd "$2" && pwd) params=${3:-$here/fx2_oracle.params}
 export hfxc=$build/compiler/hfxc view=$build/tools/hfxview/hfxview size=${HFX_ORACLE_SIZE:-128x128}
-export diff_py=$here/scripts/png_diff.py
+export diff_py=$here/png_diff.py
 [ -x "$hfxc" ] && [ -x "$view" ] || { echo "no hfxc / hfxview in $build (build first)" >&2; exit 2; }
 export out; out=$(mktemp -d /tmp/hfx-oracle-XXXXXX)
 [ -n "${HFX_ORACLE_KEEP:-}" ] || trap 'rm -rf "$out"' EXIT
@@ -81,67 +81,71 @@ expand() {
     done
     printf '%s' "${label:--}"; printf '\t%s' "${a[@]}"; echo
 }
-    done
-    if [ $sweep_i -lt 0 ]; then printf -- '-'; printf '\t%s' "${a[@]}"; echo; return; fi
-    for ((v = lo; v <= hi; v++)); do
-        a[sweep_i]="$name=$v"
-        printf '%s' "$name=$v"; printf '\t%s' "${a[@]}"; echo
-    done
-}
 
-# One picture pair: "alike|DIFFER MAX COUNT binary#technique/pass variant".
+# One effect: both converted, then for each variant each side drawn once by hfxview
+# (--technique all --pass each: every pass alone into OUT.T.P.png), the pairs compared. Prints
+# "alike|DIFFER|FAILED MAX COUNT binary#T:technique/P variant" per pass, or one FAILED line.
 one() {
-    local job=$1 rel tech name pass label
-    IFS=$'\t' read -r rel tech name pass label rest <<<"$job"
-    local -a extra=(); [ -n "$rest" ] && IFS=$'\t' read -ra extra <<<"$rest"
-    local key; key=$(echo "$rel.$tech.$pass.$label" | tr '/=' '__')
-    local d=$out/${rel//\//_}
-    "$view" "$d/src.hfxo" --technique "$tech" --pass "$pass" --size "$size" "${extra[@]}" \
-        -o "$out/png/$key.src.png" >"$out/log/$key.src" 2>&1
-    "$view" "$d/bin.hfxo" --technique "$tech" --pass "$pass" --size "$size" "${extra[@]}" \
-        -o "$out/png/$key.bin.png" >"$out/log/$key.bin" 2>&1
-    local r verdict; r=$(python3 "$diff_py" "$out/png/$key.src.png" "$out/png/$key.bin.png")
-    case $r in
-        missing|size) verdict=FAILED r="- -" ;;
-        *) [ "${r%% *}" -le 2 ] && verdict=alike || verdict=DIFFER ;;
-    esac
-    printf '%-6s %3s %5s %s#%s:%s/%s %s\n' "$verdict" ${r} "$rel" "$tech" "$name" "$pass" "$label"
+    local rel=$1 src=$2 d=$out/${1//\//_} v
+    mkdir -p "$d"
+    if ! "$hfxc" --quiet -o "$d/bin.hfxo" "$folder/$rel" >"$d/bin.log" 2>&1; then
+        echo "FAILED - - $rel: the binary does not load: $(grep -m1 error "$d/bin.log")"; return
+    fi
+    if ! "$hfxc" --quiet -o "$d/src.hfxo" "$folder/$src" >"$d/src.log" 2>&1; then
+        echo "FAILED - - $rel: $src does not compile: $(grep -m1 error "$d/src.log")"; return
+    fi
+    "$view" "$d/bin.hfxo" --list >"$d/list" 2>/dev/null
+    local n=0
+    while IFS= read -r v; do
+        local label rest; IFS=$'\t' read -r label rest <<<"$v"
+        local -a extra=(); [ -n "$rest" ] && IFS=$'\t' read -ra extra <<<"$rest"
+        n=$((n + 1))
+        for side in src bin; do
+            "$view" "$d/$side.hfxo" --technique all --pass each --size "$size" "${extra[@]}" \
+                -o "$d/$side.$n.png" >"$d/$side.$n.out" 2>"$d/$side.$n.log"
+        done
+        # the binary's passes (the reference): "pass T P NAME" after "technique T NAME"
+        local -a keys=() names=() pngs=()
+        while read -r kind t p name; do
+            [ "$kind" = pass ] || continue
+            keys+=("$t") names+=("$name/$p")
+            pngs+=("$d/src.$n.$t.$p.png" "$d/bin.$n.$t.$p.png")
+        done < <(awk '$1 == "technique" { print "technique", $2, $3 } $1 == "pass" { print }' "$d/bin.$n.out" |
+                 while read -r kind t p name; do
+                     if [ "$kind" = technique ]; then tn=${p:--}; else echo "pass $t $p $tn"; fi
+                 done)
+        [ ${#pngs[@]} -gt 0 ] || { echo "FAILED - - $rel: no pass drawn ($label): $(head -c 200 "$d/bin.$n.log")"; continue; }
+        local i=0 r verdict
+        while read -r r; do
+            case $r in
+                missing|size) verdict=FAILED r="- -" ;;
+                *) [ "${r%% *}" -le 2 ] && verdict=alike || verdict=DIFFER ;;
+            esac
+            printf '%-6s %3s %5s %s#%s %s\n' "$verdict" ${r} "$rel" "${keys[i]}:${names[i]}" "$label"
+            i=$((i + 1))
+        done < <(python3 "$diff_py" "${pngs[@]}")
+    done < <(args_of "$rel" | known_only "$d/list" | variants)
 }
-export -f one
+export -f one args_of known_only variants expand
+export folder params
 
-mkdir -p "$out/png" "$out/log"
+mkdir -p "$out"
 jobs=$out/jobs
 : >"$jobs"
-effects=0 unpaired=0 broken=0
+unpaired=0
 while IFS= read -r -d '' f; do
     rel=${f#"$folder"/}
     src=$(source_of "$rel")
     if [ -z "$src" ]; then echo "NOSRC  $rel: no source found"; unpaired=$((unpaired + 1)); continue; fi
-    d=$out/${rel//\//_}; mkdir -p "$d"
-    if ! "$hfxc" --quiet -o "$d/bin.hfxo" "$f" >"$d/bin.log" 2>&1; then
-        echo "FAILED $rel: the binary does not load: $(grep -m1 error "$d/bin.log")"; broken=$((broken + 1)); continue
-    fi
-    if ! "$hfxc" --quiet -o "$d/src.hfxo" "$folder/$src" >"$d/src.log" 2>&1; then
-        echo "FAILED $rel: $src does not compile: $(grep -m1 error "$d/src.log")"; broken=$((broken + 1)); continue
-    fi
-    effects=$((effects + 1))
-    "$view" "$d/bin.hfxo" --list >"$d/list" 2>/dev/null
-    mapfile -t vars < <(args_of "$rel" | known_only "$d/list" | variants)
-    # techniques and their pass counts, from the binary (the reference)
-    awk '/^technique /{t++; name[t] = $2 == "" ? "-" : $2} /^  pass /{n[t]++} END {for (i = 1; i <= t; i++) if (n[i]) print i - 1, name[i], n[i]}' "$d/list" |
-    while read -r t name n; do
-        for ((p = 0; p < n; p++)); do
-            for v in "${vars[@]}"; do
-                printf '%s\t%s\t%s\t%s\t%s\n' "$rel" "$t" "$name" "$p" "$v" >>"$jobs"
-            done
-        done
-    done
+    printf '%s\t%s\n' "$rel" "$src" >>"$jobs"
 done < <(find "$folder" -type f \( -iname '*.fxb' -o -iname '*.efb' -o -iname '*.fxo' \) -print0 | sort -z)
 
-xargs -d '\n' -P "${HFX_ORACLE_JOBS:-2}" -I{} bash -c 'one "$@"' _ {} <"$jobs" | sort -k4 | tee "$out/table.txt"
-awk -v e="$effects" -v u="$unpaired" -v b="$broken" '
+xargs -d '\n' -P "${HFX_ORACLE_JOBS:-2}" -I{} bash -c 'IFS=$'"'\t'"' read -r rel src <<<"$1"; one "$rel" "$src"' _ {} <"$jobs" |
+    sort -k4 | tee "$out/table.txt"
+awk -v e="$(wc -l <"$jobs")" -v u="$unpaired" '
+    $2 == "-" && $1 == "FAILED" { broken++; next }
     { n++ } $1 == "alike" { a++ } $1 == "DIFFER" { d++ } $1 == "FAILED" { f++ }
-    END { printf "%d effects (%d without a source, %d not loaded): %d pictures compared, %d alike, %d differ, %d failed to draw\n",
-                 e, u, b, n, a, d, f }' "$out/table.txt"
+    END { printf "%d binaries with a source (%d without; %d not loaded or compiled): %d passes compared, %d alike, %d differ, %d not drawn\n",
+                 e, u, broken, n, a, d, f }' "$out/table.txt"
 [ -n "${HFX_ORACLE_KEEP:-}" ] && echo "pictures and logs in $out"
 exit 0

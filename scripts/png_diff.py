@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-# png_diff.py A.png B.png: the largest difference of any channel (RGBA, 0..255) between two
-# pictures of the same size and how many pixels differ by more than 2/255 in some channel,
-# printed as "MAX COUNT"; "size" when the sizes differ, "missing" when one cannot be read.
+# png_diff.py A.png B.png [A2.png B2.png ...]: for each pair, the largest difference of any
+# channel (RGBA, 0..255) between two pictures of the same size and how many pixels differ by
+# more than 2/255 in some channel, printed as "MAX COUNT" a line; "size" when the sizes
+# differ, "missing" when one cannot be read.
 # scripts/fx2_oracle.sh uses it; the standard library only (png_class.py's reader).
 import os, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -25,6 +26,7 @@ def diff(a_path, b_path):
     return f'{worst} {count}'
 
 if __name__ == '__main__':
-    if len(sys.argv) != 3:
-        sys.exit('usage: png_diff.py A.png B.png')
-    print(diff(sys.argv[1], sys.argv[2]))
+    if len(sys.argv) < 3 or len(sys.argv) % 2 == 0:
+        sys.exit('usage: png_diff.py A.png B.png [A2.png B2.png ...]')
+    for i in range(1, len(sys.argv), 2):
+        print(diff(sys.argv[i], sys.argv[i + 1]))
