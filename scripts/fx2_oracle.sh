@@ -143,9 +143,10 @@ done < <(find "$folder" -type f \( -iname '*.fxb' -o -iname '*.efb' -o -iname '*
 xargs -d '\n' -P "${HFX_ORACLE_JOBS:-2}" -I{} bash -c 'IFS=$'"'\t'"' read -r rel src <<<"$1"; one "$rel" "$src"' _ {} <"$jobs" |
     sort -k4 | tee "$out/table.txt"
 awk -v e="$(wc -l <"$jobs")" -v u="$unpaired" '
-    $2 == "-" && $1 == "FAILED" { broken++; next }
+    $1 == "FAILED" && /: the binary does not load|does not compile/ { broken++; next }
+    $1 == "FAILED" && /: no pass drawn/ { undrawn++; next }
     { n++ } $1 == "alike" { a++ } $1 == "DIFFER" { d++ } $1 == "FAILED" { f++ }
-    END { printf "%d binaries with a source (%d without; %d not loaded or compiled): %d passes compared, %d alike, %d differ, %d not drawn\n",
-                 e, u, broken, n, a, d, f }' "$out/table.txt"
+    END { printf "%d binaries with a source (%d without, %d not loaded or compiled): %d passes compared, %d alike, %d differ, %d not drawn (%d variants drew nothing)\n",
+                 e, u, broken, n, a, d, f, undrawn }' "$out/table.txt"
 [ -n "${HFX_ORACLE_KEEP:-}" ] && echo "pictures and logs in $out"
 exit 0
