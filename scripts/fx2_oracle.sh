@@ -5,12 +5,15 @@
 # fetches nothing: docs/fx2.md says how). Each binary's source is the .fx whose path ends with
 # the longest run of the binary's last path components (FNA/Deferred/Fog.efb ->
 # Deferred/Fog.fx, FXB/BasicEffect.fxb -> HLSL/BasicEffect.fx). Both are converted once
-# (hfxc -o X.hfxo), then every pass of every technique is drawn from each by hfxview (its
-# parameter binding, the same on both sides, 128x128, the sphere unless the binding picks the
-# screen) and the two pictures compared channel by channel (scripts/png_diff.py).
-# PARAMS (default: scripts/fx2_oracle.params) has lines "GLOB hfxview-arguments...": the
-# arguments for binaries whose path below FOLDER matches GLOB (every matching line adds to
-# them); `--set NAME=A..B` draws each integer from A to B (a ShaderIndex sweep).
+# (hfxc -o X.hfxo), then every pass of every technique is drawn alone from each by one hfxview
+# per side and variant (--technique all --pass each; its parameter binding, the same on both
+# sides, 128x128, the sphere unless the binding or PARAMS picks another mesh) and the pictures
+# compared channel by channel (scripts/png_diff.py). Effects run two at a time
+# (HFX_ORACLE_JOBS). PARAMS (default: fx2_oracle.params beside this script) has lines
+# "GLOB hfxview-arguments...": the arguments for binaries whose path below FOLDER matches GLOB
+# (every matching line adds to them; a --set of a parameter the effect lacks is dropped);
+# `--set NAME=A..B[,REST]` draws each integer from A to B (a ShaderIndex sweep; several sweeps:
+# every combination).
 # Prints one line per technique / pass / variant: "alike" or "DIFFER", the largest channel
 # difference (0..255) and the number of pixels off by more than 2/255, then the totals.
 # HFX_ORACLE_SIZE=WxH changes the size; HFX_ORACLE_KEEP=1 keeps the pictures (path printed).
