@@ -11,12 +11,12 @@ static bc_obj new_obj(bc_gen *g, uint32_t n) {
     return o;
 }
 
-static bool has_matrix(const hfx_type *t) {
+bool hfx_bc_has_matrix(const hfx_type *t) {
     switch (t->kind) {
     case TY_MATRIX: return true;
-    case TY_ARRAY: return has_matrix(t->elem);
+    case TY_ARRAY: return hfx_bc_has_matrix(t->elem);
     case TY_STRUCT:
-        for (uint32_t i = 0; i < t->st->field_count; i++) if (has_matrix(t->st->fields[i].type)) return true;
+        for (uint32_t i = 0; i < t->st->field_count; i++) if (hfx_bc_has_matrix(t->st->fields[i].type)) return true;
         return false;
     default: return false;
     }
@@ -111,7 +111,7 @@ bc_obj hfx_bc_reshape(bc_gen *g, const ir_expr *e) {
 
 /* o in the row layout (a column_major member's columns turned into rows). */
 static bc_obj rows_of(bc_gen *g, bc_obj o, const hfx_type *t) {
-    if (!o.cols || !has_matrix(t)) { o.cols = false; return o; }
+    if (!o.cols || !hfx_bc_has_matrix(t)) { o.cols = false; return o; }
     bc_val *comps = HFX_NEW_ARRAY(g->c->arena, bc_val, MAX_COMPS);
     uint32_t n = 0, at = 0, pos = 0;
     components(&o, t, &at, comps, &n);
@@ -285,4 +285,27 @@ bool hfx_bc_assign_dynamic(bc_gen *g, const ir_expr *e, bc_obj *out) {
     hfx_bc_release_obj(g, src);
     *out = hfx_bc_expr(g, e->a[0]);
     return true;
+}
+
+/* --- layouts --- */
+
+static void assign_member(bc_gen *g, bc_obj dst, bc_obj src, const hfx_type *t, bool sat, uint32_t *ds, uint32_t *ss) {
+    if (t->kind == TY_STRUCT) {
+        for (uint32_t i = 0; i < t->st->field_count; i++) assign_member(g, dst, src, t->st->fields[i].type, sat, ds, ss);
+        return;
+    }
+    if (t->kind == TY_ARRAY) {
+        for (uint32_t i = 0; i < t->array_len; i++) assign_member(g, dst, src, t->elem, sat, ds, ss);
+        return;
+    }
+    uint32_t dn = hfx_bc_slots(t, dst.cols), sn = hfx_bc_slots(t, src.cols);
+    if (*ds + dn <= dst.count && *ss + sn <= src.count)
+        hfx_bc_assign(g, (bc_obj){dst.slot + *ds, dn, dst.cols}, (bc_obj){src.slot + *ss, sn, src.cols}, t, sat);
+    *ds += dn;
+    *ss += sn;
+}
+
+void hfx_bc_assign_members(bc_gen *g, bc_obj dst, bc_obj src, const hfx_type *t, bool sat) {
+    uint32_t ds = 0, ss = 0;
+    assign_member(g, dst, src, t, sat, &ds, &ss);
 }

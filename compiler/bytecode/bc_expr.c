@@ -499,26 +499,34 @@ static bc_obj convert(bc_gen *g, const ir_expr *e) {
  * slot (comps, n; n == 0: whole slots). False when it is none of those. */
 typedef bc_lval lval;
 
+static bool lval_path(bc_gen *g, const ir_expr *e, lval *l);
+
+/* A binding in the column layout (an interface struct holding a matrix) is written only outside
+ * its matrices. */
 static bool lval_of(bc_gen *g, const ir_expr *e, lval *l) {
+    return lval_path(g, e, l) && (!l->b->obj.cols || !hfx_bc_has_matrix(e->type));
+}
+
+static bool lval_path(bc_gen *g, const ir_expr *e, lval *l) {
     double k;
     switch (e->kind) {
     case IE_VAR:
         l->b = hfx_bc_bind(g, e->var);
-        if (!l->b || l->b->is_const || l->b->obj.cols || l->b->var->kind == IRV_UNIFORM) return false;
+        if (!l->b || l->b->is_const || (l->b->obj.cols && e->type->kind == TY_MATRIX) || l->b->var->kind == IRV_UNIFORM) return false;
         l->first = 0;
         l->count = l->b->obj.count;
         l->n = 0;
         return l->count <= 64;
     case IE_FIELD: {
-        if (!lval_of(g, e->a[0], l) || l->n) return false;
+        if (!lval_path(g, e->a[0], l) || l->n) return false;
         const hfx_type *t = e->a[0]->type;
-        for (uint32_t i = 0; i < e->field; i++) l->first += hfx_bc_slots(t->st->fields[i].type, false);
-        l->count = hfx_bc_slots(t->st->fields[e->field].type, false);
+        for (uint32_t i = 0; i < e->field; i++) l->first += hfx_bc_slots(t->st->fields[i].type, l->b->obj.cols);
+        l->count = hfx_bc_slots(t->st->fields[e->field].type, l->b->obj.cols);
         return true;
     }
     case IE_INDEX: {
         const hfx_type *t = e->a[0]->type;
-        if (!hfx_bc_try_const(g, e->a[1], &k) || k < 0 || !lval_of(g, e->a[0], l) || l->n) return false;
+        if (!hfx_bc_try_const(g, e->a[1], &k) || k < 0 || !lval_path(g, e->a[0], l) || l->n) return false;
         if (t->kind == TY_VECTOR) { /* v[k]: v.x, v.y... */
             if (k >= t->cols || l->count != 1) return false;
             l->comps[0] = (uint8_t)hfx_ev_uint(k);
@@ -526,19 +534,19 @@ static bool lval_of(bc_gen *g, const ir_expr *e, lval *l) {
             return true;
         }
         if (t->kind == TY_ARRAY) {
-            uint32_t per = hfx_bc_slots(t->elem, false);
+            uint32_t per = hfx_bc_slots(t->elem, l->b->obj.cols);
             if (k >= t->array_len) return false;
             l->first += hfx_ev_uint(k) * per;
             l->count = per;
             return true;
         }
-        if (t->kind != TY_MATRIX || k >= t->rows) return false;
+        if (t->kind != TY_MATRIX || k >= t->rows || l->b->obj.cols) return false;
         l->first += hfx_ev_uint(k);
         l->count = 1;
         return true;
     }
     case IE_SWIZZLE:
-        if (e->a[0]->type->kind == TY_MATRIX || !lval_of(g, e->a[0], l) || l->n || l->count != 1) return false;
+        if (e->a[0]->type->kind == TY_MATRIX || !lval_path(g, e->a[0], l) || l->n || l->count != 1) return false;
         for (unsigned i = 0; i < e->comp_count; i++) l->comps[i] = e->comps[i];
         l->n = e->comp_count;
         return true;

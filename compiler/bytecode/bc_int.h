@@ -152,6 +152,9 @@ bc_obj hfx_bc_reshape(bc_gen *g, const ir_expr *e);           /* a cast between 
 /* o[idx] (o of type t: vector, matrix or array) for an index the compiler cannot fold. */
 bc_obj hfx_bc_index_select(bc_gen *g, bc_obj o, const hfx_type *t, const ir_expr *idx);
 bool hfx_bc_addressable(const bc_gen *g, bc_obj o);           /* c registers in a row a vertex shader's a0 can index */
+bool hfx_bc_has_matrix(const hfx_type *t);                    /* t is or holds a matrix */
+/* dst = src for a struct or array holding matrices, when the two layouts differ: member by member. */
+void hfx_bc_assign_members(bc_gen *g, bc_obj dst, bc_obj src, const hfx_type *t, bool sat);
 bool hfx_bc_assign_dynamic(bc_gen *g, const ir_expr *e, bc_obj *out); /* false: e's target has no computed index */
 
 /* --- bc_flow.c --- */
