@@ -217,19 +217,20 @@ static ir_expr *with_index(bc_gen *g, const ir_expr *e, uint32_t depth, uint32_t
     return r;
 }
 
-/* 1 where i == k, else 0. */
-static bc_val equals(bc_gen *g, bc_val i, uint32_t k) {
+/* 1 where i == k, else 0; raw (pixel shaders): -(i - k)^2, >= 0 only where i == k, for cmp. */
+static bc_val equals(bc_gen *g, bc_val i, uint32_t k, bool raw) {
     i.own = false;
     bc_val d = k ? hfx_bc_op2(g, D3D9_ADD, 1, i, hfx_bc_constf(g, -(float)k)) : i, dd = d;
     dd.own = false;
     bc_val sq = hfx_bc_op2(g, D3D9_MUL, 1, d, dd), s2 = sq;
     s2.own = false;
+    if (raw) return hfx_bc_neg(sq);
     if (g->stage == D3D9_VS) return hfx_bc_op2(g, D3D9_SGE, 1, hfx_bc_neg(sq), s2);
     return hfx_bc_op3(g, D3D9_CMP, 1, hfx_bc_neg(sq), hfx_bc_constf(g, 1), hfx_bc_constf(g, 0));
 }
 
-/* lhs (no computed index left) = cond ? lhs op src : lhs. */
-static void store_if(bc_gen *g, const ir_expr *lhs, hfx_op op, bc_obj src, bc_val cond) {
+/* lhs (no computed index left) = cond ? lhs op src : lhs (raw: cond >= 0 instead of cond == 1). */
+static void store_if(bc_gen *g, const ir_expr *lhs, hfx_op op, bc_obj src, bc_val cond, bool raw) {
     bc_lval l;
     if (!hfx_bc_lval(g, lhs, &l)) {
         hfx_bc_fail(g, lhs->loc, X_BC_UNSUPPORTED, "the bytecode writer does not write this l-value by a computed index yet");
@@ -253,7 +254,7 @@ static void store_if(bc_gen *g, const ir_expr *lhs, hfx_op op, bc_obj src, bc_va
         }
         bc_val old = t, c = cond;
         old.own = c.own = false;
-        hfx_bc_store(g, t, hfx_bc_select(g, c, v, old), false);
+        hfx_bc_store(g, t, raw ? hfx_bc_op3(g, D3D9_CMP, t.n, c, v, old) : hfx_bc_select(g, c, v, old), false);
     }
 }
 
@@ -261,11 +262,19 @@ static void store_if(bc_gen *g, const ir_expr *lhs, hfx_op op, bc_obj src, bc_va
 static void store_dynamic(bc_gen *g, const ir_expr *lhs, hfx_op op, bc_obj src, bc_val cond) {
     uint32_t depth;
     const ir_expr *p = computed_index(g, lhs, &depth);
-    if (!p) { store_if(g, lhs, op, src, cond); return; }
+    if (!p) { store_if(g, lhs, op, src, cond, false); return; }
     uint32_t per, n = elements(p->a[0]->type, false, &per);
     bc_val i = hfx_bc_expr1(g, p->a[1]);
+    uint32_t inner;
+    bool raw = g->stage == D3D9_PS && !cond.n && !computed_index(g, with_index(g, lhs, depth, 0), &inner);
     for (uint32_t k = 0; k < n && !g->failed; k++) {
-        bc_val c = equals(g, i, k);
+        bc_val c = equals(g, i, k, raw);
+        if (raw) {
+            store_if(g, with_index(g, lhs, depth, k), op, src, c, true);
+            c.mod = 0;
+            hfx_bc_release(g, c);
+            continue;
+        }
         if (cond.n) {
             bc_val oc = cond;
             oc.own = false;
@@ -282,6 +291,7 @@ bool hfx_bc_assign_dynamic(bc_gen *g, const ir_expr *e, bc_obj *out) {
     if (!computed_index(g, e->a[0], &depth)) return false;
     bc_obj src = rows_of(g, hfx_bc_expr(g, e->a[1]), e->a[1]->type);
     store_dynamic(g, e->a[0], e->op, src, (bc_val){0});
+    if (e->op == OP_NONE) { *out = src; return true; } /* the value assigned (no read back of every element) */
     hfx_bc_release_obj(g, src);
     *out = hfx_bc_expr(g, e->a[0]);
     return true;
