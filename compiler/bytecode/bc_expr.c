@@ -351,14 +351,12 @@ static bc_obj index_of(bc_gen *g, const ir_expr *e) {
         uint32_t per = hfx_bc_slots(t->elem, o.cols);
         bc_obj by_aL;
         if (!hfx_bc_try_const(g, e->a[1], &k) && hfx_bc_loop_index(g, o, e->a[1], per, &by_aL)) return by_aL;
-        if (!hfx_bc_try_const(g, e->a[1], &k)) return relative(g, o, e->a[1], per);
+        if (!hfx_bc_try_const(g, e->a[1], &k))
+            return hfx_bc_addressable(g, o) ? relative(g, o, e->a[1], per) : hfx_bc_index_select(g, o, t, e->a[1]);
         uint32_t i = k < 0 || k >= t->array_len ? 0 : hfx_ev_uint(k);
         return sub(g, o, i * per, per);
     }
-    if (!hfx_bc_try_const(g, e->a[1], &k)) {
-        hfx_bc_fail(g, e->loc, X_BC_UNSUPPORTED, "the bytecode writer does not index a vector or matrix by a computed index yet");
-        return o;
-    }
+    if (!hfx_bc_try_const(g, e->a[1], &k)) return hfx_bc_index_select(g, o, t, e->a[1]);
     unsigned i = k < 0 ? 0 : hfx_ev_uint(k);
     if (t->kind == TY_MATRIX && !o.cols) return sub(g, o, i < o.count ? i : 0, 1);
     if (t->kind == TY_MATRIX) return one(g, hfx_bc_matrix_row(g, o, t, i < t->rows ? i : 0));
@@ -400,10 +398,7 @@ static bc_obj construct(bc_gen *g, const ir_expr *e) {
     uint32_t n = 0;
     bool all_const = true;
     bc_val *vals = HFX_NEW_ARRAY(g->c->arena, bc_val, e->n ? e->n : 1);
-    if (t->kind == TY_STRUCT || t->kind == TY_ARRAY) {
-        hfx_bc_fail(g, e->loc, X_BC_UNSUPPORTED, "the bytecode writer does not construct structs or arrays yet");
-        return one(g, zero_c(g));
-    }
+    if (t->kind == TY_STRUCT || t->kind == TY_ARRAY) return hfx_bc_construct_aggregate(g, e);
     for (uint32_t i = 0; i < e->n; i++) {
         double k;
         all_const &= e->a[i]->kind == IE_CONST || (e->a[i]->type->kind == TY_SCALAR && hfx_bc_try_const(g, e->a[i], &k));
@@ -486,8 +481,7 @@ static bc_obj convert(bc_gen *g, const ir_expr *e) {
     }
     if (to->kind == TY_STRUCT || to->kind == TY_ARRAY || to->kind == TY_MATRIX || from->kind == TY_MATRIX) {
         if (hfx_type_equal(to, from)) return hfx_bc_expr(g, e->a[0]);
-        hfx_bc_fail(g, e->loc, X_BC_UNSUPPORTED, "the bytecode writer does not convert between these types yet");
-        return one(g, zero_c(g));
+        return hfx_bc_reshape(g, e);
     }
     bc_val v = hfx_bc_expr1(g, e->a[0]);
     unsigned n = width(to);
@@ -503,28 +497,36 @@ static bc_obj convert(bc_gen *g, const ir_expr *e) {
 
 /* The binding slots an l-value names: a variable, its fields, constant indexes, a swizzle of one
  * slot (comps, n; n == 0: whole slots). False when it is none of those. */
-typedef struct lval { bc_binding *b; uint32_t first, count; uint8_t comps[4], n; } lval;
+typedef bc_lval lval;
 
+static bool lval_path(bc_gen *g, const ir_expr *e, lval *l);
+
+/* A binding in the column layout (an interface struct holding a matrix) is written only outside
+ * its matrices. */
 static bool lval_of(bc_gen *g, const ir_expr *e, lval *l) {
+    return lval_path(g, e, l) && (!l->b->obj.cols || !hfx_bc_has_matrix(e->type));
+}
+
+static bool lval_path(bc_gen *g, const ir_expr *e, lval *l) {
     double k;
     switch (e->kind) {
     case IE_VAR:
         l->b = hfx_bc_bind(g, e->var);
-        if (!l->b || l->b->is_const || l->b->obj.cols || l->b->var->kind == IRV_UNIFORM) return false;
+        if (!l->b || l->b->is_const || (l->b->obj.cols && e->type->kind == TY_MATRIX) || l->b->var->kind == IRV_UNIFORM) return false;
         l->first = 0;
         l->count = l->b->obj.count;
         l->n = 0;
         return l->count <= 64;
     case IE_FIELD: {
-        if (!lval_of(g, e->a[0], l) || l->n) return false;
+        if (!lval_path(g, e->a[0], l) || l->n) return false;
         const hfx_type *t = e->a[0]->type;
-        for (uint32_t i = 0; i < e->field; i++) l->first += hfx_bc_slots(t->st->fields[i].type, false);
-        l->count = hfx_bc_slots(t->st->fields[e->field].type, false);
+        for (uint32_t i = 0; i < e->field; i++) l->first += hfx_bc_slots(t->st->fields[i].type, l->b->obj.cols);
+        l->count = hfx_bc_slots(t->st->fields[e->field].type, l->b->obj.cols);
         return true;
     }
     case IE_INDEX: {
         const hfx_type *t = e->a[0]->type;
-        if (!hfx_bc_try_const(g, e->a[1], &k) || k < 0 || !lval_of(g, e->a[0], l) || l->n) return false;
+        if (!hfx_bc_try_const(g, e->a[1], &k) || k < 0 || !lval_path(g, e->a[0], l) || l->n) return false;
         if (t->kind == TY_VECTOR) { /* v[k]: v.x, v.y... */
             if (k >= t->cols || l->count != 1) return false;
             l->comps[0] = (uint8_t)hfx_ev_uint(k);
@@ -532,19 +534,19 @@ static bool lval_of(bc_gen *g, const ir_expr *e, lval *l) {
             return true;
         }
         if (t->kind == TY_ARRAY) {
-            uint32_t per = hfx_bc_slots(t->elem, false);
+            uint32_t per = hfx_bc_slots(t->elem, l->b->obj.cols);
             if (k >= t->array_len) return false;
             l->first += hfx_ev_uint(k) * per;
             l->count = per;
             return true;
         }
-        if (t->kind != TY_MATRIX || k >= t->rows) return false;
+        if (t->kind != TY_MATRIX || k >= t->rows || l->b->obj.cols) return false;
         l->first += hfx_ev_uint(k);
         l->count = 1;
         return true;
     }
     case IE_SWIZZLE:
-        if (e->a[0]->type->kind == TY_MATRIX || !lval_of(g, e->a[0], l) || l->n || l->count != 1) return false;
+        if (e->a[0]->type->kind == TY_MATRIX || !lval_path(g, e->a[0], l) || l->n || l->count != 1) return false;
         for (unsigned i = 0; i < e->comp_count; i++) l->comps[i] = e->comps[i];
         l->n = e->comp_count;
         return true;
@@ -711,6 +713,8 @@ static bc_obj assign_components(bc_gen *g, const ir_expr *e) {
 
 static bc_obj assign(bc_gen *g, const ir_expr *e) {
     const ir_expr *lhs = e->a[0];
+    bc_obj dyn;
+    if (hfx_bc_assign_dynamic(g, e, &dyn)) return dyn;
     if ((lhs->kind == IE_SWIZZLE && lhs->a[0]->type->kind == TY_MATRIX) || lhs->kind == IE_CONSTRUCT)
         return assign_components(g, e);
     if (lhs->kind == IE_VAR) {
@@ -883,3 +887,8 @@ void hfx_bc_assign_expr(bc_gen *g, const ir_expr *lhs, bc_obj src, uint64_t owne
         for (uint32_t k = 0; k < l.count; k++) own_slot(g, l.b, l.first + k, true);
     hfx_bc_assign(g, hfx_bc_expr(g, lhs), src, lhs->type, false);
 }
+
+bool hfx_bc_lval(bc_gen *g, const ir_expr *e, bc_lval *l) { return lval_of(g, e, l); }
+void hfx_bc_own_slot(bc_gen *g, bc_binding *b, uint32_t k, bool keep) { own_slot(g, b, k, keep); }
+bc_val hfx_bc_binary(bc_gen *g, hfx_op op, bc_val a, bc_val b, const hfx_type *t) { return binary_vals(g, op, a, b, t); }
+bc_val hfx_bc_gather(bc_gen *g, const bc_val *parts, unsigned n) { return gather(g, parts, n); }

@@ -57,6 +57,7 @@ bc_obj hfx_bc_alloc_obj(bc_gen *g, const hfx_type *t) {
 
 /* Matrices are copied element by element when the layouts differ. */
 void hfx_bc_assign(bc_gen *g, bc_obj dst, bc_obj src, const hfx_type *t, bool sat) {
+    if (dst.cols != src.cols && t->kind != TY_MATRIX && hfx_bc_has_matrix(t)) { hfx_bc_assign_members(g, dst, src, t, sat); return; }
     if (t->kind == TY_MATRIX && dst.cols != src.cols) {
         unsigned outer = dst.cols ? t->cols : t->rows, inner = dst.cols ? t->rows : t->cols;
         for (unsigned k = 0; k < outer && k < dst.count; k++)
@@ -174,30 +175,60 @@ static bc_val output_reg(bc_gen *g, const ir_leaf *l) {
     return v;
 }
 
-/* The slot of a leaf in its root's flattened type. */
-static int leaf_slot(const ir_leaf *l, const hfx_type *t) {
-    if (l->indexed || l->matrix_type) return -1;
-    uint32_t k = 0;
-    for (uint32_t d = 0; d < l->depth; d++) {
-        if (t->kind != TY_STRUCT || l->fields[d] >= t->st->field_count) return -1;
-        for (uint32_t i = 0; i < l->fields[d]; i++) k += hfx_bc_slots(t->st->fields[i].type, false);
-        t = t->st->fields[l->fields[d]].type;
+/* The entry's leaves of one parameter (or of the return value), in ir_iface.c's order, placed
+ * into the slots of its type: a matrix with a semantic takes a register per column (D3D9's
+ * column_major packing: `float4x4 m : TEXCOORD1` is TEXCOORD1..4, its columns), an array a
+ * register per element. */
+typedef struct iface_walk { const ir_leaf *l; int n, at; const ir_var *p; bool out; } iface_walk;
+
+static const ir_leaf *next_leaf(iface_walk *w) {
+    while (w->at < w->n && w->l[w->at].root != w->p) w->at++;
+    return w->at < w->n ? &w->l[w->at++] : NULL;
+}
+
+static bool place_leaf(bc_gen *g, iface_walk *w, bc_obj *o, uint32_t slot, unsigned width) {
+    const ir_leaf *l = next_leaf(w);
+    if (!l || slot >= o->count || hfx_type_components(l->type) != width) return false;
+    o->slot[slot] = w->out ? output_reg(g, l) : input_reg(g, l);
+    return true;
+}
+
+static bool place(bc_gen *g, iface_walk *w, const hfx_type *t, bc_obj *o, uint32_t slot) {
+    switch (t->kind) {
+    case TY_STRUCT:
+        for (uint32_t i = 0; i < t->st->field_count && !g->failed; i++) {
+            const hfx_field *f = &t->st->fields[i];
+            bool none = w->out && !f->semantic && f->type->kind != TY_STRUCT; /* goes nowhere (ir_iface.c) */
+            if (!none && !place(g, w, f->type, o, slot)) return false;
+            slot += hfx_bc_slots(f->type, o->cols);
+        }
+        return true;
+    case TY_ARRAY:
+        for (uint32_t i = 0; i < t->array_len && !g->failed; i++)
+            if (!place(g, w, t->elem, o, slot + i * hfx_bc_slots(t->elem, o->cols))) return false;
+        return true;
+    case TY_MATRIX:
+        if (t->rows < 2 || t->cols < 2 || t->rows != t->cols) return false;
+        for (uint32_t r = 0; r < t->rows && !g->failed; r++)
+            if (!place_leaf(g, w, o, slot + r, t->cols)) return false;
+        return true;
+    case TY_SCALAR: case TY_VECTOR: return place_leaf(g, w, o, slot, hfx_type_components(t));
+    default: return false;
     }
-    return t->kind == TY_SCALAR || t->kind == TY_VECTOR ? (int)k : -1;
 }
 
 /* The registers of the entry's parameter p (or of its return value, p NULL). */
 static bc_obj interface_obj(bc_gen *g, const ir_leaf *l, int n, const ir_var *p, const hfx_type *t, bool out) {
-    bc_obj o = new_obj(g, hfx_bc_slots(t, false));
-    for (uint32_t k = 0; k < o.count; k++) o.slot[k] = hfx_bc_reg(D3D9_REG_TEMP, 0, hfx_bc_slot_width(t, false, k));
-    for (int i = 0; i < n && !g->failed; i++) {
-        if (l[i].root != p) continue;
-        int k = leaf_slot(&l[i], t);
-        if (k < 0 || (uint32_t)k >= o.count) {
-            hfx_bc_fail(g, l[i].loc, X_BC_UNSUPPORTED, "the bytecode writer does not handle '%s' here yet (a matrix or array with a semantic)", l[i].semantic);
-            break;
-        }
-        o.slot[k] = out ? output_reg(g, &l[i]) : input_reg(g, &l[i]);
+    bool cols = hfx_bc_has_matrix(t);
+    bc_obj o = new_obj(g, hfx_bc_slots(t, cols));
+    o.cols = cols;
+    for (uint32_t k = 0; k < o.count; k++) o.slot[k] = hfx_bc_reg(D3D9_REG_TEMP, 0, hfx_bc_slot_width(t, cols, k));
+    iface_walk w = {l, n, 0, p, out};
+    if (!place(g, &w, t, &o, 0) && !g->failed) {
+        const ir_leaf *at = w.at > 0 && w.at <= n ? &l[w.at - 1] : NULL;
+        for (int i = 0; !at && i < n; i++) if (l[i].root == p) at = &l[i];
+        hfx_bc_fail(g, at ? at->loc : g->loc, X_BC_UNSUPPORTED, "the bytecode writer does not handle '%s' here yet (a matrix with a semantic that is not square)",
+                    at ? at->semantic : "?");
     }
     return o;
 }

@@ -138,6 +138,25 @@ bc_val hfx_bc_select(bc_gen *g, bc_val c, bc_val a, bc_val b);  /* c (0 / 1) ? a
 bool hfx_bc_try_const(bc_gen *g, const ir_expr *e, double *out);
 bc_val hfx_bc_per_comp(bc_gen *g, uint16_t op, bc_val a, const bc_val *b); /* op on each component (rcp, rsq, exp, log, pow) */
 
+/* The binding slots an l-value names: a variable, its fields, constant indexes, a swizzle of one
+ * slot (comps, n; n == 0: whole slots). */
+typedef struct bc_lval { bc_binding *b; uint32_t first, count; uint8_t comps[4], n; } bc_lval;
+bool hfx_bc_lval(bc_gen *g, const ir_expr *e, bc_lval *l);    /* false when e is none of those */
+void hfx_bc_own_slot(bc_gen *g, bc_binding *b, uint32_t k, bool keep); /* slot k writable (kept when keep) */
+bc_val hfx_bc_binary(bc_gen *g, hfx_op op, bc_val a, bc_val b, const hfx_type *t);
+bc_val hfx_bc_gather(bc_gen *g, const bc_val *parts, unsigned n); /* one-component parts into a temporary */
+
+/* --- bc_aggregate.c --- */
+bc_obj hfx_bc_construct_aggregate(bc_gen *g, const ir_expr *e); /* a struct or array from its members */
+bc_obj hfx_bc_reshape(bc_gen *g, const ir_expr *e);           /* a cast between shapes: components in order */
+/* o[idx] (o of type t: vector, matrix or array) for an index the compiler cannot fold. */
+bc_obj hfx_bc_index_select(bc_gen *g, bc_obj o, const hfx_type *t, const ir_expr *idx);
+bool hfx_bc_addressable(const bc_gen *g, bc_obj o);           /* c registers in a row a vertex shader's a0 can index */
+bool hfx_bc_has_matrix(const hfx_type *t);                    /* t is or holds a matrix */
+/* dst = src for a struct or array holding matrices, when the two layouts differ: member by member. */
+void hfx_bc_assign_members(bc_gen *g, bc_obj dst, bc_obj src, const hfx_type *t, bool sat);
+bool hfx_bc_assign_dynamic(bc_gen *g, const ir_expr *e, bc_obj *out); /* false: e's target has no computed index */
+
 /* --- bc_flow.c --- */
 /* A loop the unroller cannot unroll (its condition is not a constant), written as a loop with
  * loop / rep / break (SM3, vs_2_x), or false when the caller should unroll it. init already ran. */

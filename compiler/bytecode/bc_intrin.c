@@ -399,9 +399,10 @@ static bc_obj transpose(bc_gen *g, const ir_expr *e) {
 static bc_obj sincos_intrin(bc_gen *g, const ir_expr *e) {
     bc_val x = hfx_bc_expr1(g, e->a[0]);
     bc_val s = sincos_val(g, keep(x), 1), c = sincos_val(g, x, 0);
-    bc_obj so = hfx_bc_expr(g, e->a[1]), co = hfx_bc_expr(g, e->a[2]);
-    hfx_bc_store(g, so.slot[0], s, false);
-    hfx_bc_store(g, co.slot[0], c, false);
+    /* as assignments: a variable still naming its zero def (or an input) takes a temporary
+     * first; storing into the registers it names would write a c (or v) register */
+    hfx_bc_assign_expr(g, e->a[1], one(g, s), 1);
+    hfx_bc_assign_expr(g, e->a[2], one(g, c), 1);
     return one(g, hfx_bc_reg(BC_REG_NONE, 0, 1)); /* void */
 }
 

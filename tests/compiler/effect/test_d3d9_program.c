@@ -390,6 +390,30 @@ static void parameter_bound_loops_drawn(void) {
     close_fixture(&x);
 }
 
+/* Matrices and arrays with semantics between hfx's vs_2_0 and ps_2_0 (a register per column of
+ * m, oT0..3 / t0..3; one per element of w, oT4..5 / t4..5) and a computed index in the pixel
+ * shader (selects over Colors' registers), read back and drawn. m's rows: Offset, Offset * 2,
+ * (0.1, 0.2, 0.3, 0.4), (0, 0, 0, 1); w = {Offset, 0.5}; Offset = (0.3, 0.1, 0.05, 0.6):
+ * x = m[2].x + m[1].w / 4 = 0.1 + 1.2 / 4 = 0.4, y = m[2].y + w[1].y / 10 = 0.25,
+ * z = m[2].z + Colors[(int)(w[1].x * 2)].z = 0.3 + Colors[1].z = 0.6, w = m[0].x + m[3].w / 10 = 0.4. */
+static void semantic_matrices_and_indexes_drawn(void) {
+    fixture x;
+    open_fixture(&x, false);
+    d3d9_shader *vs = compiled(&x, "float4x4 M; float4 Offset;\n"
+                                   "void main(float4 p : POSITION, out float4 o : POSITION, out float4x4 m : TEXCOORD0,\n"
+                                   "          out float4 w[2] : TEXCOORD4) {\n"
+                                   "    o = mul(p, M);\n"
+                                   "    m = float4x4(Offset, Offset * 2, float4(0.1, 0.2, 0.3, 0.4), float4(0, 0, 0, 1));\n"
+                                   "    w[0] = Offset;\n    w[1] = 0.5;\n}\n", "vs_2_0", 0);
+    d3d9_shader *ps = compiled(&x, "float4 Colors[2];\n"
+                                   "float4 main(float4x4 m : TEXCOORD0, float4 w[2] : TEXCOORD4) : COLOR0 {\n"
+                                   "    return float4(m[2].x + m[1].w * 0.25, m[2].y + w[1].y * 0.1,\n"
+                                   "                  m[2].z + Colors[(int)(w[1].x * 2)].z, m[0].x + m[3].w * 0.1);\n}\n",
+                               "ps_2_0", 1024);
+    draw_pair(&x, vs, ps, (const float[4]){0.4f, 0.25f, 0.6f, 0.4f});
+    close_fixture(&x);
+}
+
 /* A register the shader's PRES block computes (d3d9_shader.pres, filled by the effect reader): the
  * program gets a preshader entry with the code, the GLSL reads it from hfx_c. */
 static void preshader_registers(void) {
@@ -657,6 +681,7 @@ int main(void) {
     RUN(preshader_registers);
     RUN(preshader_bool_and_int_registers);
     RUN(parameter_bound_loops_drawn);
+    RUN(semantic_matrices_and_indexes_drawn);
     if (gl) test_gl_destroy(gl);
     return test_summary();
 }
