@@ -129,6 +129,8 @@ static bc_val gather(bc_gen *g, const bc_val *parts, unsigned n) {
     return d;
 }
 
+bc_val hfx_bc_gather(bc_gen *g, const bc_val *parts, unsigned n) { return gather(g, parts, n); }
+
 bc_val hfx_bc_matrix_row(bc_gen *g, bc_obj m, const hfx_type *t, unsigned row) {
     if (!m.cols) return m.slot[row < m.count ? row : 0];
     bc_val parts[4];
@@ -210,6 +212,8 @@ static bc_val trunc_val(bc_gen *g, bc_val x) {
     hfx_bc_release(g, x);
     return r;
 }
+
+bc_val hfx_bc_trunc(bc_gen *g, bc_val x) { return trunc_val(g, x); }
 
 static bool is_float(const hfx_type *t) { return t->base == B_FLOAT || t->base == B_HALF || t->base == B_DOUBLE || t->base == B_MIN16FLOAT; }
 
@@ -486,8 +490,7 @@ static bc_obj convert(bc_gen *g, const ir_expr *e) {
     }
     if (to->kind == TY_STRUCT || to->kind == TY_ARRAY || to->kind == TY_MATRIX || from->kind == TY_MATRIX) {
         if (hfx_type_equal(to, from)) return hfx_bc_expr(g, e->a[0]);
-        hfx_bc_fail(g, e->loc, X_BC_UNSUPPORTED, "the bytecode writer does not convert between these types yet");
-        return one(g, zero_c(g));
+        return hfx_bc_regroup(g, e);
     }
     bc_val v = hfx_bc_expr1(g, e->a[0]);
     unsigned n = width(to);

@@ -137,6 +137,8 @@ bc_val hfx_bc_not(bc_gen *g, bc_val a);
 bc_val hfx_bc_select(bc_gen *g, bc_val c, bc_val a, bc_val b);  /* c (0 / 1) ? a : b */
 bool hfx_bc_try_const(bc_gen *g, const ir_expr *e, double *out);
 bc_val hfx_bc_per_comp(bc_gen *g, uint16_t op, bc_val a, const bc_val *b); /* op on each component (rcp, rsq, exp, log, pow) */
+bc_val hfx_bc_trunc(bc_gen *g, bc_val x);                     /* toward zero: floor or ceil by the sign */
+bc_val hfx_bc_gather(bc_gen *g, const bc_val *parts, unsigned n); /* scalars into a fresh temporary */
 
 /* --- bc_flow.c --- */
 /* A loop the unroller cannot unroll (its condition is not a constant), written as a loop with
@@ -160,9 +162,19 @@ uint32_t hfx_bc_renumber(bc_gen *g);                         /* temporaries pack
 void hfx_bc_prune_constants(bc_gen *g);                      /* parameters and defs nothing reads */
 
 /* --- bc_intrin.c --- */
+typedef bc_val (*bc_intrin_fn)(bc_gen *g, const ir_expr *e, bc_val *a);
+/* A row of the intrinsics' table: the function writing it; ps_first: the pixel model it needs
+ * (nonzero: pixel shaders only). */
+typedef struct bc_intrin_row { int id; bc_intrin_fn fn; uint8_t ps_first; } bc_intrin_row;
 bc_obj hfx_bc_intrinsic(bc_gen *g, const ir_expr *e);
+bc_val hfx_bc_cross(bc_gen *g, bc_val a, bc_val b);
 bc_val hfx_bc_dot(bc_gen *g, bc_val a, bc_val b);
 bc_val hfx_bc_floor(bc_gen *g, bc_val x);
 bc_val hfx_bc_fmod(bc_gen *g, bc_val a, bc_val b);            /* fxc's: frc(|a / b|) with a / b's sign, times b */
+
+/* --- bc_intrin_math.c --- */
+const bc_intrin_row *hfx_bc_math_row(int intrin);            /* the expansions of values, or NULL */
+bool hfx_bc_math_obj(bc_gen *g, const ir_expr *e, bc_obj *out); /* modf, frexp, determinant, bit casts */
+bc_obj hfx_bc_regroup(bc_gen *g, const ir_expr *e);           /* a conversion between shapes (vector, matrix, array) */
 
 #endif
