@@ -91,8 +91,8 @@ static bc_val atan01(bc_gen *g, bc_val a) {
     return hfx_bc_op2(g, D3D9_MUL, n, a, p);
 }
 
-/* min / max of two magnitudes, the polynomial, and pi/2 - r where lo_first (0 / 1) says the
- * larger one was the numerator's. */
+/* The angle of min(u, v) / max(u, v) for magnitudes u (|x|) and v (|y|): the polynomial, then
+ * pi/2 - r where u < v (the larger magnitude was y's). */
 static bc_val atan_ratio(bc_gen *g, bc_val u, bc_val v) {
     unsigned n = nmax(u, v);
     bc_val mn = hfx_bc_op2(g, D3D9_MIN, n, keep(u), keep(v));
