@@ -271,7 +271,7 @@ static bc_obj tex(bc_gen *g, const ir_expr *e) {
 /* texkill on x (up to three components, the last replicated into the rest). */
 static void kill(bc_gen *g, bc_val x) {
     bc_val k = x;
-    bool plain = x.own && x.type == D3D9_REG_TEMP && !x.mod && x.n == 3;
+    bool plain = x.type == D3D9_REG_TEMP && !x.rel && !x.mod && x.n == 3; /* texkill only reads it */
     for (unsigned i = 0; i < x.n && plain; i++) plain &= x.sw[i] == i;
     if (!plain) {
         bc_val s = x;

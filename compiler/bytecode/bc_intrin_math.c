@@ -186,16 +186,14 @@ static bc_val i_isfinite(bc_gen *g, const ir_expr *e, bc_val *a) {
     if (vs(g)) return hfx_bc_op2(g, D3D9_SGE, m.n, kf(g, FLT_MAX), m);
     return hfx_bc_op3(g, D3D9_CMP, m.n, hfx_bc_op2(g, D3D9_ADD, m.n, hfx_bc_neg(m), kf(g, FLT_MAX)), kf(g, 1), kf(g, 0));
 }
-/* |x| > FLT_MAX; pixel shaders: not finite, and x >= 0 or -x >= 0 (a NaN is neither). */
+/* |x| > FLT_MAX; pixel shaders: |x| / 2 - FLT_MAX >= 0, which only an infinity passes (a NaN
+ * fails every comparison, FLT_MAX itself halves below it). */
 static bc_val i_isinf(bc_gen *g, const ir_expr *e, bc_val *a) {
     (void)e;
-    bc_val x = a[0];
-    bc_val m = hfx_bc_op1(g, D3D9_ABS, x.n, keep(x));
-    if (vs(g)) { hfx_bc_release(g, x); return hfx_bc_op2(g, D3D9_SLT, m.n, kf(g, FLT_MAX), m); }
-    bc_val d = hfx_bc_op2(g, D3D9_ADD, m.n, hfx_bc_neg(m), kf(g, FLT_MAX));
-    bc_val ordered = hfx_bc_op3(g, D3D9_CMP, x.n, keep(x), kf(g, 1), hfx_bc_op3(g, D3D9_CMP, x.n, hfx_bc_neg(keep(x)), kf(g, 1), kf(g, 0)));
-    hfx_bc_release(g, x);
-    return hfx_bc_op3(g, D3D9_CMP, d.n, d, kf(g, 0), ordered);
+    bc_val m = hfx_bc_op1(g, D3D9_ABS, a[0].n, a[0]);
+    if (vs(g)) return hfx_bc_op2(g, D3D9_SLT, m.n, kf(g, FLT_MAX), m);
+    bc_val d = hfx_bc_op3(g, D3D9_MAD, m.n, m, kf(g, 0.5f), kf(g, -FLT_MAX));
+    return hfx_bc_op3(g, D3D9_CMP, d.n, d, kf(g, 1), kf(g, 0));
 }
 /* neither x >= 0 nor x < 0 */
 static bc_val i_isnan(bc_gen *g, const ir_expr *e, bc_val *a) {
