@@ -328,16 +328,33 @@ done:
     hfxc_result_free(r);
 }
 
-/* What a real bytecode back end must give: skipped until hfxc's D3D9 back end is wired in. */
+/* hfxc_result_fx2 (the library's /T fx_2_0 /Fo): without HFXC_D3D9_BYTECODE the programs have no
+ * shader to write, and the refusal says so at the pass's compile; with it, the container's
+ * version is fx_2_0's (0xFEFF0901) and its pixel shader is ps_2_0 bytecode (0xFFFF0200). */
 static void compiled_sources_need_the_back_end(void) {
-    hfxc_result *r = compile("float4 PS() : COLOR { return 1; }\ntechnique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n");
-    const hfx_fx_effect *fx = hfxc_result_effect(r);
-    if (fx && fx->program_count && !fx->programs[0].d3d9[HFX_STAGE_FRAGMENT].size)
-        fprintf(stderr, "  (skipped: compiled programs carry no D3D9 bytecode until the back end of issue 32 (h32a) "
-                        "fills hfx_fx_program.d3d9; the hook stands in above)\n");
-    else if (fx && fx->program_count)
-        CHECK_INT(hfx_le32((const uint8_t *)fx->programs[0].d3d9[HFX_STAGE_FRAGMENT].data) >> 16, 0xffff);
+    static const char src[] = "float4 PS() : COLOR { return 1; }\ntechnique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n";
+    hfxc_result *r = compile(src);
+    size_t size = 1;
+    char *why = NULL;
+    void *data = hfxc_result_fx2(r, 0, &size, &why);
+    CHECK(data == NULL && size == 0);
+    CHECK_STR(why ? why : "", "t.fx(2,24): error X9011: pixel shader: no Direct3D 9 bytecode for this shader: compile "
+                              "with HFXC_D3D9_BYTECODE");
+    free(why);
     hfxc_result_free(r);
+    hfxc_options o = {.flags = HFXC_D3D9_BYTECODE};
+    r = hfxc_compile_memory(src, sizeof src - 1, "t.fx", &o);
+    data = hfxc_result_fx2(r, 0, &size, &why);
+    CHECK(data != NULL && size > 8 && why == NULL);
+    const hfx_fx_effect *fx = hfxc_result_effect(r);
+    CHECK(fx && fx->program_count == 1 && fx->programs[0].d3d9[HFX_STAGE_FRAGMENT].size >= 4);
+    if (data) CHECK_INT(hfx_le32(data), 0xFEFF0901u);
+    if (fx && fx->program_count == 1 && fx->programs[0].d3d9[HFX_STAGE_FRAGMENT].size >= 4)
+        CHECK_INT(hfx_le32((const uint8_t *)fx->programs[0].d3d9[HFX_STAGE_FRAGMENT].data), 0xFFFF0200u);
+    free(data);
+    free(why);
+    hfxc_result_free(r);
+    CHECK(hfxc_result_fx2(NULL, 0, &size, &why) == NULL && why == NULL); /* no result, nothing to say */
 }
 
 /* data (an fxc container) read, written, read: the same listing, values and variants. */
