@@ -129,6 +129,8 @@ static bc_val gather(bc_gen *g, const bc_val *parts, unsigned n) {
     return d;
 }
 
+bc_val hfx_bc_gather(bc_gen *g, const bc_val *parts, unsigned n) { return gather(g, parts, n); }
+
 bc_val hfx_bc_matrix_row(bc_gen *g, bc_obj m, const hfx_type *t, unsigned row) {
     if (!m.cols) return m.slot[row < m.count ? row : 0];
     bc_val parts[4];
@@ -210,6 +212,8 @@ static bc_val trunc_val(bc_gen *g, bc_val x) {
     hfx_bc_release(g, x);
     return r;
 }
+
+bc_val hfx_bc_trunc(bc_gen *g, bc_val x) { return trunc_val(g, x); }
 
 static bool is_float(const hfx_type *t) { return t->base == B_FLOAT || t->base == B_HALF || t->base == B_DOUBLE || t->base == B_MIN16FLOAT; }
 
@@ -891,4 +895,3 @@ void hfx_bc_assign_expr(bc_gen *g, const ir_expr *lhs, bc_obj src, uint64_t owne
 bool hfx_bc_lval(bc_gen *g, const ir_expr *e, bc_lval *l) { return lval_of(g, e, l); }
 void hfx_bc_own_slot(bc_gen *g, bc_binding *b, uint32_t k, bool keep) { own_slot(g, b, k, keep); }
 bc_val hfx_bc_binary(bc_gen *g, hfx_op op, bc_val a, bc_val b, const hfx_type *t) { return binary_vals(g, op, a, b, t); }
-bc_val hfx_bc_gather(bc_gen *g, const bc_val *parts, unsigned n) { return gather(g, parts, n); }

@@ -137,6 +137,8 @@ bc_val hfx_bc_not(bc_gen *g, bc_val a);
 bc_val hfx_bc_select(bc_gen *g, bc_val c, bc_val a, bc_val b);  /* c (0 / 1) ? a : b */
 bool hfx_bc_try_const(bc_gen *g, const ir_expr *e, double *out);
 bc_val hfx_bc_per_comp(bc_gen *g, uint16_t op, bc_val a, const bc_val *b); /* op on each component (rcp, rsq, exp, log, pow) */
+bc_val hfx_bc_trunc(bc_gen *g, bc_val x);                     /* toward zero: floor or ceil by the sign */
+bc_val hfx_bc_gather(bc_gen *g, const bc_val *parts, unsigned n); /* scalars into a fresh temporary */
 
 /* The binding slots an l-value names: a variable, its fields, constant indexes, a swizzle of one
  * slot (comps, n; n == 0: whole slots). */
@@ -144,7 +146,6 @@ typedef struct bc_lval { bc_binding *b; uint32_t first, count; uint8_t comps[4],
 bool hfx_bc_lval(bc_gen *g, const ir_expr *e, bc_lval *l);    /* false when e is none of those */
 void hfx_bc_own_slot(bc_gen *g, bc_binding *b, uint32_t k, bool keep); /* slot k writable (kept when keep) */
 bc_val hfx_bc_binary(bc_gen *g, hfx_op op, bc_val a, bc_val b, const hfx_type *t);
-bc_val hfx_bc_gather(bc_gen *g, const bc_val *parts, unsigned n); /* one-component parts into a temporary */
 
 /* --- bc_aggregate.c --- */
 bc_obj hfx_bc_construct_aggregate(bc_gen *g, const ir_expr *e); /* a struct or array from its members */
@@ -179,9 +180,18 @@ uint32_t hfx_bc_renumber(bc_gen *g);                         /* temporaries pack
 void hfx_bc_prune_constants(bc_gen *g);                      /* parameters and defs nothing reads */
 
 /* --- bc_intrin.c --- */
+typedef bc_val (*bc_intrin_fn)(bc_gen *g, const ir_expr *e, bc_val *a);
+/* A row of the intrinsics' table: the function writing it; ps_first: the pixel model it needs
+ * (nonzero: pixel shaders only). */
+typedef struct bc_intrin_row { int id; bc_intrin_fn fn; uint8_t ps_first; } bc_intrin_row;
 bc_obj hfx_bc_intrinsic(bc_gen *g, const ir_expr *e);
+bc_val hfx_bc_cross(bc_gen *g, bc_val a, bc_val b);
 bc_val hfx_bc_dot(bc_gen *g, bc_val a, bc_val b);
 bc_val hfx_bc_floor(bc_gen *g, bc_val x);
 bc_val hfx_bc_fmod(bc_gen *g, bc_val a, bc_val b);            /* fxc's: frc(|a / b|) with a / b's sign, times b */
+
+/* --- bc_intrin_math.c --- */
+const bc_intrin_row *hfx_bc_math_row(int intrin);            /* the expansions of values, or NULL */
+bool hfx_bc_math_obj(bc_gen *g, const ir_expr *e, bc_obj *out); /* modf, frexp, determinant, bit casts */
 
 #endif

@@ -3,8 +3,6 @@
  * Intrinsics without a row are refused with X5006, never guessed. */
 #include "bytecode/bc_int.h"
 
-typedef bc_val (*bc_intrin_fn)(bc_gen *g, const ir_expr *e, bc_val *a);
-
 static bc_obj one(bc_gen *g, bc_val v) {
     bc_obj o = {HFX_NEW(g->c->arena, bc_val), 1, false};
     o.slot[0] = v;
@@ -119,9 +117,9 @@ static bc_val i_reflect(bc_gen *g, const ir_expr *e, bc_val *a) { /* i - 2 dot(n
     hfx_bc_release(g, d);
     return hfx_bc_op3(g, D3D9_MAD, a[0].n, a[1], hfx_bc_neg(d2), a[0]);
 }
-static bc_val i_cross(bc_gen *g, const ir_expr *e, bc_val *a) { /* a.yzx * b.zxy - a.zxy * b.yzx */
-    (void)e;
-    bc_val x = a[0], y = a[1], x1 = keep(x), y1 = keep(y), x2 = keep(x), y2 = keep(y);
+static bc_val i_cross(bc_gen *g, const ir_expr *e, bc_val *a) { (void)e; return hfx_bc_cross(g, a[0], a[1]); }
+bc_val hfx_bc_cross(bc_gen *g, bc_val x, bc_val y) { /* a.yzx * b.zxy - a.zxy * b.yzx */
+    bc_val x1 = keep(x), y1 = keep(y), x2 = keep(x), y2 = keep(y);
     static const uint8_t yzx[3] = {1, 2, 0}, zxy[3] = {2, 0, 1};
     for (int i = 0; i < 3; i++) {
         x1.sw[i] = x.sw[zxy[i]]; y1.sw[i] = y.sw[yzx[i]];
@@ -192,6 +190,11 @@ static bc_val sincos_val(bc_gen *g, bc_val x, int which) {
 static bc_val i_fmod(bc_gen *g, const ir_expr *e, bc_val *a) { (void)e; return hfx_bc_fmod(g, a[0], a[1]); }
 static bc_val i_sin(bc_gen *g, const ir_expr *e, bc_val *a) { (void)e; return sincos_val(g, a[0], 1); }
 static bc_val i_cos(bc_gen *g, const ir_expr *e, bc_val *a) { (void)e; return sincos_val(g, a[0], 0); }
+static bc_val i_tan(bc_gen *g, const ir_expr *e, bc_val *a) { /* sin / cos */
+    (void)e;
+    bc_val s = sincos_val(g, keep(a[0]), 1), c = sincos_val(g, a[0], 0);
+    return hfx_bc_op2(g, D3D9_MUL, s.n, s, hfx_bc_per_comp(g, D3D9_RCP, c, NULL));
+}
 static bc_val i_radians(bc_gen *g, const ir_expr *e, bc_val *a) {
     float k = e->intrin == HFX_INTR_RADIANS ? 0.0174532924f : 57.2957802f;
     return hfx_bc_op2(g, D3D9_MUL, a[0].n, a[0], hfx_bc_constf(g, k));
@@ -265,18 +268,12 @@ static bc_obj tex(bc_gen *g, const ir_expr *e) {
     return one(g, r);
 }
 
-static bc_obj clip(bc_gen *g, const ir_expr *e) {
-    if (g->stage != D3D9_PS) { hfx_bc_fail(g, e->loc, X_BC_UNSUPPORTED, "clip in a vertex shader"); return one(g, hfx_bc_constf(g, 0)); }
-    bc_val x = hfx_bc_expr1(g, e->a[0]);
-    if (x.n > 3) {
-        hfx_bc_fail(g, e->loc, X_BC_UNSUPPORTED, "the bytecode writer clips on up to three components (texkill's)");
-        return one(g, hfx_bc_constf(g, 0));
-    }
-    if (g->cond.n) x = hfx_bc_select(g, keep(g->cond), x, hfx_bc_constf(g, 0));
+/* texkill on x (up to three components, the last replicated into the rest). */
+static void kill(bc_gen *g, bc_val x) {
     bc_val k = x;
-    bool plain = x.own && x.type == D3D9_REG_TEMP && !x.mod && x.n == 3;
+    bool plain = x.type == D3D9_REG_TEMP && !x.rel && !x.mod && x.n == 3; /* texkill only reads it */
     for (unsigned i = 0; i < x.n && plain; i++) plain &= x.sw[i] == i;
-    if (!plain) { /* replicate the last component into the rest */
+    if (!plain) {
         bc_val s = x;
         s.n = 4;
         for (unsigned i = x.n; i < 4; i++) s.sw[i] = x.sw[x.n - 1];
@@ -284,6 +281,20 @@ static bc_obj clip(bc_gen *g, const ir_expr *e) {
     }
     hfx_bc_emit(g, D3D9_TEXKILL, &k, 0xf, NULL, 0);
     hfx_bc_release(g, k);
+}
+
+/* clip: texkill tests three components; a float4 takes two (xyz, then w), as fxc writes it. */
+static bc_obj clip(bc_gen *g, const ir_expr *e) {
+    if (g->stage != D3D9_PS) { hfx_bc_fail(g, e->loc, X_BC_UNSUPPORTED, "clip in a vertex shader"); return one(g, hfx_bc_constf(g, 0)); }
+    bc_val x = hfx_bc_expr1(g, e->a[0]);
+    if (g->cond.n) x = hfx_bc_select(g, keep(g->cond), x, hfx_bc_constf(g, 0));
+    if (x.n > 3) {
+        bc_val xyz = keep(x), w = hfx_bc_scalar_of(x, 3);
+        xyz.n = 3;
+        kill(g, xyz);
+        kill(g, w);
+        hfx_bc_release(g, x);
+    } else kill(g, x);
     return one(g, hfx_bc_reg(BC_REG_NONE, 0, 1)); /* void */
 }
 
@@ -396,13 +407,18 @@ static bc_obj transpose(bc_gen *g, const ir_expr *e) {
 }
 
 /* Intrinsics with out arguments. */
-static bc_obj sincos_intrin(bc_gen *g, const ir_expr *e) {
-    bc_val x = hfx_bc_expr1(g, e->a[0]);
-    bc_val s = sincos_val(g, keep(x), 1), c = sincos_val(g, x, 0);
-    /* as assignments: a variable still naming its zero def (or an input) takes a temporary
-     * first; storing into the registers it names would write a c (or v) register */
-    hfx_bc_assign_expr(g, e->a[1], one(g, s), 1);
-    hfx_bc_assign_expr(g, e->a[2], one(g, c), 1);
+static bc_obj sincos_intrin(bc_gen *g, const ir_expr *e) { /* by slots: a matrix componentwise */
+    bc_obj x = hfx_bc_expr(g, e->a[0]);
+    bc_obj so = {HFX_NEW_ARRAY(g->c->arena, bc_val, x.count ? x.count : 1), x.count, x.cols}, co = so;
+    co.slot = HFX_NEW_ARRAY(g->c->arena, bc_val, x.count ? x.count : 1);
+    uint64_t owned = 0;
+    for (uint32_t k = 0; k < x.count && !g->failed; k++) {
+        so.slot[k] = sincos_val(g, keep(x.slot[k]), 1);
+        co.slot[k] = sincos_val(g, x.slot[k], 0);
+        if (so.slot[k].own && k < 64) owned |= 1ull << k;
+    }
+    hfx_bc_assign_expr(g, e->a[1], so, owned); /* the out arguments written as assignments are */
+    hfx_bc_assign_expr(g, e->a[2], co, owned);
     return one(g, hfx_bc_reg(BC_REG_NONE, 0, 1)); /* void */
 }
 
@@ -419,8 +435,6 @@ static bc_obj lerp(bc_gen *g, const ir_expr *e) {
     return one(g, hfx_bc_op3(g, D3D9_MAD, n, t, d, a));
 }
 
-typedef struct bc_intrin_row { int id; bc_intrin_fn fn; uint8_t ps_first; } bc_intrin_row;
-
 /* The column: intrinsic -> the function writing it (ps_first: the pixel model it needs). */
 static const bc_intrin_row rows[] = {
     {HFX_INTR_ABS, i_abs, 0}, {HFX_INTR_MAX, i_max, 0}, {HFX_INTR_MIN, i_min, 0}, {HFX_INTR_CLAMP, i_clamp, 0},
@@ -430,7 +444,7 @@ static const bc_intrin_row rows[] = {
     {HFX_INTR_LOG10, i_log, 0}, {HFX_INTR_POW, i_pow, 0}, {HFX_INTR_SATURATE, i_saturate, 0},
     {HFX_INTR_NORMALIZE, i_normalize, 0}, {HFX_INTR_LENGTH, i_length, 0}, {HFX_INTR_DISTANCE, i_distance, 0},
     {HFX_INTR_REFLECT, i_reflect, 0}, {HFX_INTR_CROSS, i_cross, 0}, {HFX_INTR_STEP, i_step, 0},
-    {HFX_INTR_SMOOTHSTEP, i_smoothstep, 0}, {HFX_INTR_SIN, i_sin, 0}, {HFX_INTR_COS, i_cos, 0},
+    {HFX_INTR_SMOOTHSTEP, i_smoothstep, 0}, {HFX_INTR_SIN, i_sin, 0}, {HFX_INTR_COS, i_cos, 0}, {HFX_INTR_TAN, i_tan, 0},
     {HFX_INTR_RADIANS, i_radians, 0}, {HFX_INTR_DEGREES, i_radians, 0}, {HFX_INTR_DDX, i_ddx, D3D9_SM(2, 1)},
     {HFX_INTR_DDY, i_ddx, D3D9_SM(2, 1)}, {HFX_INTR_FMOD, i_fmod, 0}, {HFX_INTR_ANY, i_any, 0}, {HFX_INTR_SIGN, i_sign, 0},
 };
@@ -446,20 +460,24 @@ bc_obj hfx_bc_intrinsic(bc_gen *g, const ir_expr *e) {
     case HFX_INTR_SINCOS: return sincos_intrin(g, e);
     default: break;
     }
-    for (size_t r = 0; r < sizeof rows / sizeof *rows; r++) {
-        if (rows[r].id != (int)e->intrin) continue;
-        if (g->stage == D3D9_PS && rows[r].ps_first > g->model) {
+    bc_obj o;
+    if (hfx_bc_math_obj(g, e, &o)) return o;
+    const bc_intrin_row *row = hfx_bc_math_row((int)e->intrin);
+    for (size_t r = 0; r < sizeof rows / sizeof *rows && !row; r++)
+        if (rows[r].id == (int)e->intrin) row = &rows[r];
+    if (row) {
+        if (g->stage == D3D9_PS && row->ps_first > g->model) {
             hfx_bc_fail(g, e->loc, 4121, "%s needs ps_2_a or a higher model than %s", info->name, g->profile);
             return one(g, hfx_bc_constf(g, 0));
         }
-        if (g->stage == D3D9_VS && rows[r].ps_first) {
+        if (g->stage == D3D9_VS && row->ps_first) {
             hfx_bc_fail(g, e->loc, 4121, "%s is for pixel shaders only", info->name);
             return one(g, hfx_bc_constf(g, 0));
         }
         bc_val a[4];
         for (uint32_t i = 0; i < e->n && i < 4; i++) a[i] = hfx_bc_expr1(g, e->a[i]);
         if (g->failed) return one(g, hfx_bc_constf(g, 0));
-        return one(g, rows[r].fn(g, e, a));
+        return one(g, row->fn(g, e, a));
     }
     hfx_bc_fail(g, e->loc, X_BC_UNSUPPORTED, "the bytecode writer does not expand %s yet", info ? info->name : "this intrinsic");
     return one(g, hfx_bc_constf(g, 0));
