@@ -236,6 +236,63 @@ static void backward(fold *f) {
     }
 }
 
+/* A reader's modifier over the copy's: what it reads of the copy's source (false: none). */
+static bool compose(unsigned outer, unsigned inner, uint8_t *out) {
+    static const uint8_t neg[] = {[D3D9_SMOD_NONE] = D3D9_SMOD_NEG, [D3D9_SMOD_NEG] = D3D9_SMOD_NONE,
+                                  [D3D9_SMOD_ABS] = D3D9_SMOD_ABSNEG, [D3D9_SMOD_ABSNEG] = D3D9_SMOD_ABS};
+    if (inner != D3D9_SMOD_NONE && inner != D3D9_SMOD_NEG && inner != D3D9_SMOD_ABS && inner != D3D9_SMOD_ABSNEG) return false;
+    switch (outer) {
+    case D3D9_SMOD_NONE: *out = (uint8_t)inner; return true;
+    case D3D9_SMOD_NEG: *out = neg[inner]; return true;
+    case D3D9_SMOD_ABS: *out = D3D9_SMOD_ABS; return true;
+    case D3D9_SMOD_ABSNEG: *out = D3D9_SMOD_ABSNEG; return true;
+    default: return false;
+    }
+}
+
+/* Reader source s reads the copy's source instead; not when the reader already reads another
+ * register of that file (the models' read ports: one c or v register an instruction in vs_2_0). */
+static bool forward_read(const d3d9_inst *copy, d3d9_inst *rd, unsigned k) {
+    const d3d9_src *from = &copy->src[0];
+    for (unsigned j = 0; j < rd->src_count; j++)
+        if (j != k && rd->src[j].type == from->type &&
+            (rd->src[j].num != from->num || rd->src[j].relative || from->relative))
+            return false;
+    uint8_t mod;
+    if (!compose(rd->src[k].mod, from->mod, &mod)) return false;
+    uint8_t sw = 0;
+    for (unsigned p = 0; p < 4; p++) sw |= (uint8_t)((from->swizzle >> (2 * (rd->src[k].swizzle >> (2 * p) & 3)) & 3) << (2 * p));
+    d3d9_src nw = *from;
+    nw.mod = mod;
+    nw.swizzle = sw;
+    rd->src[k] = nw;
+    return true;
+}
+
+/* A copy `mov rT, X` of a constant or an input read before rT or X changes: its readers read X (the copy then dies):
+ * `x *= y` on a parameter's value no longer moves the parameter into a temporary first. */
+static void forward_copies(bc_gen *g) {
+    for (uint32_t i = 0; i < g->inst_count; i++) {
+        const d3d9_inst *m = &g->insts[i];
+        if (m->op != D3D9_MOV || m->predicated || m->dst.mods || m->dst.type != D3D9_REG_TEMP || m->dst.relative ||
+            m->dst.num >= BC_MAX_TEMPS || m->src[0].type == D3D9_REG_TEMP ||
+            (m->src[0].relative && m->src[0].rel_type != D3D9_REG_ADDR))
+            continue; /* a temporary's copy: the allocator coalesces it where its source ends */
+        unsigned valid = m->dst.mask, T = m->dst.num;
+        for (uint32_t j = i + 1; j < g->inst_count && valid; j++) {
+            d3d9_inst *rd = &g->insts[j];
+            if (flow(rd)) break;
+            for (unsigned k = 0; k < rd->src_count && k < 4 && eligible(rd); k++)
+                if (is_temp(&rd->src[k]) && rd->src[k].num == T && (hfx_bc_read_comps(g, rd, k) & ~valid) == 0)
+                    forward_read(m, rd, k);
+            if (!rd->has_dst || rd->op == D3D9_TEXKILL) continue;
+            if (rd->dst.type == m->src[0].type && (rd->dst.num == m->src[0].num || rd->dst.relative)) break;
+            if (rd->op == D3D9_MOVA && m->src[0].relative) break;
+            if (rd->dst.type == D3D9_REG_TEMP && rd->dst.num == T) valid &= ~(unsigned)rd->dst.mask;
+        }
+    }
+}
+
 void hfx_bc_fold(bc_gen *g) {
     uint32_t n = g->inst_count;
     if (!n || g->failed) return;
@@ -250,4 +307,5 @@ void hfx_bc_fold(bc_gen *g) {
     uint32_t k = 0;
     for (uint32_t i = 0; i < n; i++) if (!f.del[i]) g->insts[k++] = g->insts[i];
     g->inst_count = k;
+    forward_copies(g);
 }
