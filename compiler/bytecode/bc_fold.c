@@ -127,7 +127,7 @@ static bool evaluate(const fold *f, const d3d9_inst *in, unsigned p, float *out)
     }
 }
 
-/* x + 0 * y, x * 1, x + 0 on every written component: a mov of x. */
+/* x + 0 * y, x * 1, x + 0 on every written component: a mov of x; dp4 with 0 * w: dp3. */
 static void simplify(const fold *f, d3d9_inst *in) {
     unsigned m = in->dst.mask;
     int keep = -1;
@@ -140,6 +140,10 @@ static void simplify(const fold *f, d3d9_inst *in) {
         keep = zero ? 2 : -1;
     } else if (in->op == D3D9_MUL) keep = all_lanes(f, in, 1, m, 1) ? 0 : all_lanes(f, in, 0, m, 1) ? 1 : -1;
     else if (in->op == D3D9_ADD) keep = all_lanes(f, in, 1, m, 0) ? 0 : all_lanes(f, in, 0, m, 0) ? 1 : -1;
+    else if (in->op == D3D9_DP4) { /* the w products 0 (a normal widened to float4 with 0): dp3 */
+        float w;
+        if (product(f, in, 0, 1, 3, &w) && w == 0) in->op = D3D9_DP3;
+    }
     if (keep < 0 || in->predicated) return;
     in->op = D3D9_MOV;
     in->src[0] = in->src[keep];
