@@ -297,6 +297,90 @@ static void forward_copies(bc_gen *g) {
     }
 }
 
+/* A temporary no instruction touches (a scratch register; the allocator packs it), or -1. */
+static int unused_temp(const bc_gen *g) {
+    uint32_t used = 0;
+    for (uint32_t i = 0; i < g->inst_count; i++) {
+        const d3d9_inst *in = &g->insts[i];
+        if (in->has_dst && in->dst.type == D3D9_REG_TEMP && in->dst.num < 32) used |= 1u << in->dst.num;
+        for (unsigned k = 0; k < in->src_count && k < 4; k++)
+            if (in->src[k].type == D3D9_REG_TEMP && in->src[k].num < 32) used |= 1u << in->src[k].num;
+    }
+    for (int r = 0; r < BC_MAX_TEMPS; r++) if (!(used >> r & 1)) return r; /* renumbered later */
+    return -1;
+}
+
+/* `mul rX.x, vI.c, K; mova a0.x, rX.x` with rX.x read by the mova only: one bone's index. */
+static bool index_pair(const bc_gen *g, uint32_t at, uint32_t end) {
+    const d3d9_inst *w = &g->insts[at], *m = &g->insts[at + 1];
+    if (at + 1 >= end || w->op != D3D9_MUL || w->predicated || w->dst.mods || w->dst.type != D3D9_REG_TEMP ||
+        w->dst.mask != 1 || w->src[0].type != D3D9_REG_INPUT || w->src[0].relative || w->src[0].mod ||
+        w->src[1].type != D3D9_REG_CONST || w->src[1].relative || m->op != D3D9_MOVA || m->predicated ||
+        m->dst.mask != 1 || m->src[0].type != D3D9_REG_TEMP || m->src[0].num != w->dst.num || m->src[0].mod ||
+        (m->src[0].swizzle & 3) != 0)
+        return false;
+    for (uint32_t j = at + 2; j < g->inst_count; j++) {
+        const d3d9_inst *in = &g->insts[j];
+        if (flow(in)) return false;
+        for (unsigned k = 0; k < in->src_count && k < 4; k++)
+            if (in->src[k].type == D3D9_REG_TEMP && in->src[k].num == w->dst.num && (hfx_bc_read_comps(g, in, k) & 1)) return false;
+        if (in->has_dst && in->dst.type == D3D9_REG_TEMP && in->dst.num == w->dst.num && (in->dst.mask & 1)) return true;
+    }
+    return true;
+}
+
+/* Bones' indices scaled and moved into a0 one by one (mul, mova per bone) become one mul and one
+ * mova of up to four components, as fxc writes skinning: each bone's reads take its own a0
+ * component (c[a0.y + n]). The indices come from one input register, scaled by one constant. */
+void hfx_bc_merge_mova(bc_gen *g) {
+    if (g->stage != D3D9_VS) return;
+    uint32_t pairs[4], n = 0, end = g->inst_count;
+    for (uint32_t i = 0; i < end; i++) {
+        const d3d9_inst *in = &g->insts[i];
+        if (flow(in)) { if (n) end = i; break; }
+        if (in->op == D3D9_MOVA || (in->has_dst && in->dst.type == D3D9_REG_ADDR)) {
+            if (i == 0 || !index_pair(g, i - 1, end) || n == 4) { if (n) end = i; break; }
+            pairs[n++] = i - 1;
+        }
+    }
+    if (n < 2) return;
+    const d3d9_inst *first = &g->insts[pairs[0]];
+    unsigned mask = 0;
+    for (uint32_t k = 0; k < n; k++) {
+        const d3d9_inst *w = &g->insts[pairs[k]];
+        unsigned comp = w->src[0].swizzle & 3;
+        if (w->src[0].num != first->src[0].num || w->src[1].num != first->src[1].num ||
+            w->src[1].swizzle != first->src[1].swizzle || w->src[1].mod != first->src[1].mod || (mask >> comp & 1))
+            return;
+        mask |= 1u << comp;
+    }
+    int t = unused_temp(g);
+    if (t < 0) return;
+    uint32_t next = 1;
+    for (uint32_t i = pairs[0]; i < g->inst_count; i++) { /* a0.x's readers: the lane of the bone before them */
+        d3d9_inst *in = &g->insts[i];
+        if (next < n && i == pairs[next]) next++;
+        uint8_t lane = (uint8_t)(g->insts[pairs[next - 1]].src[0].swizzle & 3);
+        for (unsigned k = 0; k < in->src_count && k < 4; k++)
+            if (in->src[k].relative && in->src[k].rel_type == D3D9_REG_ADDR) in->src[k].rel_comp = lane;
+        if (in->dst.relative && in->dst.rel_type == D3D9_REG_ADDR) in->dst.rel_comp = lane;
+    }
+    d3d9_inst *w = &g->insts[pairs[0]], *m = &g->insts[pairs[0] + 1];
+    w->dst.num = (uint16_t)t;
+    w->dst.mask = (uint8_t)mask;
+    w->src[0].swizzle = 0xe4;
+    w->src[1].swizzle = hfx_bc_tidy(w->src[1].swizzle, 1, false);
+    m->dst.mask = (uint8_t)mask;
+    m->src[0].num = (uint16_t)t;
+    m->src[0].swizzle = 0xe4;
+    uint32_t k = 0;
+    for (uint32_t i = 0, p = 1; i < g->inst_count; i++) {
+        if (p < n && i == pairs[p]) { i++; p++; continue; }
+        g->insts[k++] = g->insts[i];
+    }
+    g->inst_count = k;
+}
+
 void hfx_bc_fold(bc_gen *g) {
     uint32_t n = g->inst_count;
     if (!n || g->failed) return;

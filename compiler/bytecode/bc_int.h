@@ -163,6 +163,7 @@ uint8_t hfx_bc_tidy(uint8_t sw, unsigned positions, bool dot);
 
 /* --- bc_fold.c --- */
 void hfx_bc_fold(bc_gen *g);                                 /* constants followed component by component */
+void hfx_bc_merge_mova(bc_gen *g);                           /* bones' indices in one mova a0.xyzw */
 
 /* --- bc_intrin.c --- */
 bc_obj hfx_bc_intrinsic(bc_gen *g, const ir_expr *e);
