@@ -553,16 +553,29 @@ static void pass_variants(fx2_reader *r, uint32_t pass, const stage_src s[2]) {
     }
 }
 
-static void pass_program(fx2_reader *r, uint32_t pass) {
+/* The stages the passes of a technique have set so far: a pass that names no VertexShader
+ * (or PixelShader) keeps the previous pass's, as a D3D9 device keeps its shaders between
+ * passes (the builder's keep_held, docs/conventions.md); a stage picked from an array at
+ * Apply is not carried. */
+typedef struct held_stages {
+    stage_src s[2];
+    bool held[2];
+} held_stages;
+
+static void pass_program(fx2_reader *r, uint32_t pass, held_stages *held) {
     hfx_fx_effect *fx = r->fx;
     hfx_fx_pass *pa = &fx->passes[pass];
     stage_src s[2] = {{NULL, HFX_NONE, HFX_NONE, 0}, {NULL, HFX_NONE, HFX_NONE, 0}};
-    bool any = false;
+    bool any = false, set[2] = {false, false};
     for (uint32_t i = 0; i < pa->state_count; i++) {
         const fx2_raw *raw = &r->raws[r->pass_raw_first[pass] + i];
         if (!is_shader_op(raw->op)) continue;
         s[raw->op == OP_PIXELSHADER] = stage_of(r, raw);
-        any = true;
+        set[raw->op == OP_PIXELSHADER] = any = true;
+    }
+    for (int k = 0; k < 2; k++) {
+        if (!set[k] && held->held[k]) s[k] = held->s[k], any = true;
+        if (set[k]) held->s[k] = s[k], held->held[k] = s[k].array == HFX_NONE;
     }
     if (!any) return;
     if (s[0].array != HFX_NONE || s[1].array != HFX_NONE) {
@@ -581,7 +594,12 @@ bool hfx_fx2_finish(fx2_reader *r) {
     for (uint32_t i = 0; i < r->raw_count && !r->failed; i++) resolve(r, &r->raws[i]);
     if (r->flags & HFX_FX2_DECODE_ONLY) return !r->failed;
     shader_params(r);
-    for (uint32_t p = 0; p < r->fx->pass_count && !r->failed; p++) pass_program(r, p);
+    for (uint32_t t = 0; t < r->fx->technique_count && !r->failed; t++) {
+        const hfx_fx_technique *te = &r->fx->techniques[t];
+        held_stages held = {{{NULL, HFX_NONE, HFX_NONE, 0}, {NULL, HFX_NONE, HFX_NONE, 0}}, {false, false}};
+        for (uint32_t p = te->first_pass; p < te->first_pass + te->pass_count && !r->failed; p++)
+            pass_program(r, p, &held);
+    }
     if (!r->failed && !r->diags->errors) self_check(r);
     if (!r->failed && !r->diags->errors) { /* the SPIR-V step of compiled effects, glslang's memory its own */
         hfx_arena_escape_off(r->arena);

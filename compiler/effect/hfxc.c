@@ -12,6 +12,7 @@
 #include "effect/build.h"
 #include "effect/codegen.h"
 #include "effect/fx2.h"
+#include "effect/fx2_write.h"
 #include "check/check.h"
 #include "effect.h"
 #include "ir/ir.h"
@@ -208,6 +209,30 @@ const struct hfx_fx_effect *hfxc_result_effect(const hfxc_result *r) { return r 
 const void *hfxc_result_bytecode(const hfxc_result *r, size_t *size) {
     *size = r && r->bytecode ? (size_t)r->bytecode_words * 4 : 0;
     return r ? r->bytecode : NULL;
+}
+
+/* A program compiled without HFXC_D3D9_BYTECODE has no shader to write. */
+static int no_bytecode(void *ctx, const hfx_fx_effect *fx, uint32_t program, int stage, const void **data, size_t *size,
+                       char *err, size_t err_size) {
+    (void)ctx, (void)fx, (void)program, (void)stage, (void)data, (void)size;
+    snprintf(err, err_size, "no Direct3D 9 bytecode for this shader: compile with HFXC_D3D9_BYTECODE");
+    return -1;
+}
+
+void *hfxc_result_fx2(const hfxc_result *r, int row_major, size_t *size, char **errors) {
+    *size = 0;
+    if (errors) *errors = NULL;
+    const hfx_fx_effect *fx = hfxc_result_effect(r);
+    if (!fx) {
+        if (errors) *errors = r ? hfxc_diagnostics_text(r) : NULL;
+        return NULL;
+    }
+    hfx_fx2_write_options opt = {no_bytecode, NULL, row_major ? 1 : -1};
+    void *out = NULL;
+    char err[2048] = "";
+    if (hfx_fx2_write(fx, fx->source_name ? fx->source_name : "effect", &opt, &out, size, err, sizeof err) == 0) return out;
+    if (errors) *errors = strdup(err);
+    return NULL;
 }
 
 struct hfx_fx_effect *hfxc_result_take_effect(hfxc_result *r) {

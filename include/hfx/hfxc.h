@@ -78,6 +78,10 @@ HFX_API struct hfx_fx_effect *hfxc_result_take_effect(hfxc_result *r);   /* call
 /* With a vs_* / ps_* profile and an entry (fxc /T /E): the shader's D3D9 bytecode (little-endian
  * words as fxc writes them, *size bytes, living as long as r); NULL otherwise. */
 HFX_API const void *hfxc_result_bytecode(const hfxc_result *r, size_t *size);
+/* The effect as fxc's fx_2_0 container (fxc /T fx_2_0 /Fo; compile with HFXC_D3D9_BYTECODE),
+ * matrices without a packing keyword row-major when row_major (/Zpr): malloc'ed, *size bytes;
+ * NULL with the messages in *errors (free() it; errors may be NULL) when there is none to write. */
+HFX_API void *hfxc_result_fx2(const hfxc_result *r, int row_major, size_t *size, char **errors);
 HFX_API char *hfxc_result_ast_dump(const hfxc_result *r);                /* readable AST; free() it */
 /* With hfxc_options.dump_ir: each stage's IR after that pass, in the order the passes ran, each
  * dump opened by `// after PASS: file(line,col)` (where its compile is); free() it. */

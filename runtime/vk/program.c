@@ -71,7 +71,7 @@ int hfx_vk_spirv_valid(const struct hfx_vk_device *vk, const uint32_t *words, si
 /* Vulkan leaves invalid SPIR-V undefined (a driver may crash or hang on it), so a module the
  * validator refuses is the effect's load error and never reaches vkCreateShaderModule. Size and
  * magic first: the cheap refusal of what is not SPIR-V at all. */
-static int check_module(hfx_shared *sh, uint32_t index, const hfx_fx_code *code, const char *what) {
+static int check_module(hfx_shared *sh, uint32_t index, const hfx_fx_code *code, const char *what, bool *block) {
     const uint32_t *words = (const uint32_t *)(const void *)code->data;
     char user[160], reason[256];
     if (!code->data || code->size < 20 || code->size % 4)
@@ -84,12 +84,18 @@ static int check_module(hfx_shared *sh, uint32_t index, const hfx_fx_code *code,
     if (!hfx_vk_spirv_valid(sh->dev->vk, words, code->size / 4, reason))
         return hfx_rt_fail(sh->dev, HFX_ERR_LOAD, "%s: %s: the %s shader's SPIR-V is not valid for Vulkan 1.0: %s",
                            name_of(sh), user, what, reason);
+    /* valid SPIR-V may still name descriptors the pipeline layout lacks, which a driver need not survive */
+    const char *slot = hfx_vk_check_slots(words, code->size / 4, sh->fx->programs[index].sampler_count, block);
+    if (slot)
+        return hfx_rt_fail(sh->dev, HFX_ERR_LOAD, "%s: %s: the %s shader's SPIR-V declares %s", name_of(sh), user, what,
+                           slot);
     return HFX_OK;
 }
 
-static int make_module(hfx_shared *sh, uint32_t index, const hfx_fx_code *code, const char *what, VkShaderModule *out) {
+static int make_module(hfx_shared *sh, uint32_t index, const hfx_fx_code *code, const char *what, bool *block,
+                       VkShaderModule *out) {
     struct hfx_vk_device *vk = sh->dev->vk;
-    int rc = check_module(sh, index, code, what);
+    int rc = check_module(sh, index, code, what, block);
     if (rc) return rc;
     VkShaderModuleCreateInfo ci = {.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO, .codeSize = code->size,
                                    .pCode = (const uint32_t *)(const void *)code->data};
@@ -212,10 +218,13 @@ int hfx_vk_program_build(hfx_shared *sh, uint32_t index) {
     if (fp->sampler_count > 32)
         return hfx_rt_fail(sh->dev, HFX_ERR_LOAD, "%s: a program samples more than 32 samplers", name_of(sh));
     p->sampler_count = fp->sampler_count;
-    int rc = make_module(sh, index, &fp->code[HFX_STAGE_VERTEX][HFX_TARGET_SPIRV_VK], "vertex", &p->vs);
-    if (!rc) rc = make_module(sh, index, &fp->code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV_VK], "pixel", &p->fs);
+    bool block = false;
+    int rc = make_module(sh, index, &fp->code[HFX_STAGE_VERTEX][HFX_TARGET_SPIRV_VK], "vertex", &block, &p->vs);
+    if (!rc) rc = make_module(sh, index, &fp->code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV_VK], "pixel", &block, &p->fs);
     if (!rc) rc = hfx_vk_outputs_make(sh->dev, &fp->code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV_VK], p);
     if (!rc) rc = read_block(&b, fp);
+    if (!rc && block && !p->block_size)
+        rc = hfx_rt_fail(sh->dev, HFX_ERR_LOAD, "%s: a shader's uniform block has no members", name_of(sh));
     if (!rc) rc = map_uniforms(&b, fp);
     if (!rc) rc = make_layouts(sh, p);
     hfx_vk_block_free(&b.block);

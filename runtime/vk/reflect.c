@@ -12,10 +12,10 @@
 
 enum {
     OP_NAME = 5, OP_MEMBER_NAME = 6, OP_TYPE_BOOL = 20, OP_TYPE_INT = 21, OP_TYPE_FLOAT = 22, OP_TYPE_VECTOR = 23,
-    OP_TYPE_MATRIX = 24, OP_TYPE_ARRAY = 28, OP_TYPE_STRUCT = 30, OP_TYPE_POINTER = 32, OP_CONSTANT = 43,
+    OP_TYPE_MATRIX = 24, OP_TYPE_SAMPLED_IMAGE = 27, OP_TYPE_ARRAY = 28, OP_TYPE_STRUCT = 30, OP_TYPE_POINTER = 32, OP_CONSTANT = 43,
     OP_VARIABLE = 59, OP_DECORATE = 71, OP_MEMBER_DECORATE = 72,
     DEC_ARRAY_STRIDE = 6, DEC_MATRIX_STRIDE = 7, DEC_BINDING = 33, DEC_SET = 34, DEC_OFFSET = 35,
-    STORAGE_UNIFORM = 2, MAX_DEPTH = 8
+    STORAGE_UNIFORM_CONSTANT = 0, STORAGE_UNIFORM = 2, MAX_DEPTH = 8
 };
 
 typedef struct module {
@@ -200,6 +200,46 @@ int hfx_vk_reflect_block(const uint32_t *words, size_t count, vk_block *out) {
     free(m.def), free(m.stride), free(m.binding), free(m.set);
     if (rc) hfx_vk_block_free(out);
     return rc;
+}
+
+/* Whether one variable's descriptor decorations name a slot of the layout: set 0, the uniform
+ * block at HFX_VK_BINDING_BLOCK, samplers at HFX_VK_BINDING_SAMPLER0 + k, k < sampler_count. */
+static const char *variable_slot_error(const module *m, uint32_t id, uint32_t storage, uint32_t sampler_count,
+                                       bool *block) {
+    bool decorated = m->set[id] >= 0 || m->binding[id] >= 0;
+    if (storage != STORAGE_UNIFORM && storage != STORAGE_UNIFORM_CONSTANT) return decorated ? "a descriptor outside a uniform" : NULL;
+    if (m->set[id] != 0) return "a descriptor set other than 0";
+    const uint32_t *ptr = def_of(m, m->w[m->def[id] + 1]), *pointee = ptr && (ptr[0] >> 16) >= 4 ? def_of(m, ptr[3]) : NULL;
+    uint32_t want = storage == STORAGE_UNIFORM ? OP_TYPE_STRUCT : OP_TYPE_SAMPLED_IMAGE;
+    if (!pointee || (pointee[0] & 0xffffu) != want) return "a descriptor of another type than the layout's";
+    if (storage == STORAGE_UNIFORM) {
+        *block = true;
+        return m->binding[id] == HFX_VK_BINDING_BLOCK ? NULL : "a uniform block at another binding than the effect's";
+    }
+    int32_t k = m->binding[id] - HFX_VK_BINDING_SAMPLER0;
+    return k >= 0 && (uint32_t)k < sampler_count ? NULL : "a sampler binding the program does not have";
+}
+
+const char *hfx_vk_check_slots(const uint32_t *words, size_t count, uint32_t sampler_count, bool *block) {
+    if (!words || count < 5 || words[0] != 0x07230203u || words[3] > (1u << 22)) return "not SPIR-V";
+    module m = {words, count, words[3], NULL, NULL, NULL, NULL, NULL, 0};
+    m.def = calloc(m.bound, sizeof *m.def);
+    m.stride = calloc(m.bound, sizeof *m.stride);
+    m.binding = malloc(m.bound * sizeof *m.binding);
+    m.set = malloc(m.bound * sizeof *m.set);
+    const char *why = "out of memory";
+    if (m.def && m.stride && m.binding && m.set) {
+        memset(m.binding, 0xff, m.bound * sizeof *m.binding);
+        memset(m.set, 0xff, m.bound * sizeof *m.set);
+        why = each(&m, index_ids) ? "a malformed instruction" : NULL;
+        for (uint32_t id = 1; !why && id < m.bound; id++) {
+            const uint32_t *v = def_of(&m, id);
+            if (v && (v[0] & 0xffffu) == OP_VARIABLE && (v[0] >> 16) >= 4)
+                why = variable_slot_error(&m, id, v[3], sampler_count, block);
+        }
+    }
+    free(m.def), free(m.stride), free(m.binding), free(m.set);
+    return why;
 }
 
 void hfx_vk_block_free(vk_block *b) {

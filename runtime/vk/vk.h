@@ -236,6 +236,9 @@ typedef struct vk_block {
 } vk_block;
 int hfx_vk_reflect_block(const uint32_t *words, size_t count, vk_block *out); /* 0, or -1 (bad or no memory) */
 void hfx_vk_block_free(vk_block *b);
+/* NULL when every descriptor a module declares is a slot of the program's layout (set 0: the block,
+ * samplers below sampler_count; *block set when it declares the block), else why not. */
+const char *hfx_vk_check_slots(const uint32_t *words, size_t count, uint32_t sampler_count, bool *block);
 
 /* program.c */
 int hfx_vk_program_build(hfx_shared *sh, uint32_t index);

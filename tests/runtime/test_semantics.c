@@ -15,7 +15,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "effect/fx2_write.h"
 #include "files.h"
 #include "gl_context.h"
 #include "hfx/hfxc.h"
@@ -258,18 +257,11 @@ static int check_error(const row *r, int mode, hfx_effect *fx, const char *error
 static hfx_effect *load_via_fx2(runner *t, const char *src, char **errors, bool *refused) {
     hfxc_options co = {.flags = HFXC_PACK_UNIFORMS | HFXC_NO_PRESHADERS | HFXC_D3D9_BYTECODE};
     hfxc_result *r = hfxc_compile_memory(src, strlen(src), "row.fx", &co);
-    const struct hfx_fx_effect *compiled = r ? hfxc_result_effect(r) : NULL;
     hfx_effect *fx = NULL;
-    void *data = NULL;
     size_t size = 0;
-    char why[1024] = "";
-    *refused = false;
-    if (!compiled) {
-        *errors = r ? hfxc_diagnostics_text(r) : NULL;
-        *refused = true;
-    } else if (hfx_fx2_write(compiled, "row.fx", NULL, &data, &size, why, sizeof why) != 0) {
-        *errors = strdup(why);
-    } else {
+    void *data = hfxc_result_fx2(r, 0, &size, errors);
+    *refused = !hfxc_result_effect(r); /* the writer itself refusing is a failure */
+    if (data) {
         hfx_load_options opt = {0};
         opt.no_preshaders = true;
         char *e = NULL;

@@ -360,6 +360,44 @@ static void every_technique(void) {
     free(png), free(cmd), free(out), free(path);
 }
 
+/* --technique all --pass each: every pass alone into OUT.T.P.png, "pass T P NAME" on stdout
+ * (scripts/fx2_oracle.sh's mode): pass 1 of A is blue alone, not pass 0's red under it. */
+static void every_pass(void) {
+    static const char fx[] =
+        "float4x4 MatrixTransform;\n"
+        "float4 VS(float4 p : POSITION0) : POSITION0 { return mul(p, MatrixTransform); }\n"
+        "float4 Red() : COLOR0 { return float4(1, 0, 0, 1); }\n"
+        "float4 Blue() : COLOR0 { return float4(0, 0, 1, 0.5); }\n"
+        "technique A { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 Red(); }\n"
+        "  pass Q { AlphaBlendEnable = true; SrcBlend = SrcAlpha; DestBlend = InvSrcAlpha;\n"
+        "           VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 Blue(); } }\n"
+        "technique B { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 Red(); } }\n";
+    char *path = view_format("%s/passes.fx", tmp), *out = NULL;
+    FILE *f = fopen(path, "w");
+    if (f) fputs(fx, f), fclose(f);
+    char *cmd = view_format("%s %s --technique all --pass each -o %s/passes.png --size 16x16 --background 0,1,0",
+                            hfxview, path, tmp);
+    CHECK_INT(view_run(cmd, &out), 0);
+    CHECK_CONTAINS(out, "technique 0 A\npass 0 0 P\npass 0 1 Q\ntechnique 1 B\npass 1 0 P\n");
+    static const struct { const char *file; int r, g, b; } want[] = {
+        {"passes.0.0.png", 255, 0, 0}, /* red alone */
+        {"passes.0.1.png", 0, 128, 128}, /* blue at alpha 0.5 over the green clear: (0, 0.5, 0.5) */
+        {"passes.1.0.png", 255, 0, 0},
+    };
+    for (size_t i = 0; i < sizeof want / sizeof *want; i++) {
+        view_png img;
+        char *png = view_format("%s/%s", tmp, want[i].file);
+        if (view_png_read(&img, png) == 0) {
+            CHECK(view_pixel_near(&img, 8, 8, want[i].r, want[i].g, want[i].b, 1));
+            view_png_free(&img);
+        } else {
+            CHECK(0);
+        }
+        free(png);
+    }
+    free(cmd), free(out), free(path);
+}
+
 int main(void) {
     test_gl *gl = test_gl_create(4, 4);
     if (!gl) test_skip("no OSMesa context");
@@ -386,6 +424,7 @@ int main(void) {
         RUN(skinned_effect_shows_its_mesh);
         RUN(directx_names_light_the_sphere);
         RUN(every_technique);
+        RUN(every_pass);
         test_remove_dir(tmp);
         free(tmp);
         free(hfxview);

@@ -99,7 +99,13 @@ static void usage_errors(void) {
     CHECK_STR(err, "--size takes WIDTHxHEIGHT, not: '512'");
     CHECK_INT(parse(&o, err, sizeof err, (const char *[]){"a.fx", "--size", "0x10", NULL}), -1);
     CHECK_INT(parse(&o, err, sizeof err, (const char *[]){"a.fx", "--pass", "first", NULL}), -1);
-    CHECK_STR(err, "--pass takes 'all' or a pass number, not: 'first'");
+    CHECK_STR(err, "--pass takes 'all', 'each' or a pass number, not: 'first'");
+    CHECK_INT(parse(&o, err, sizeof err, (const char *[]){"a.fx", "--pass", "-2", NULL}), -1);
+    CHECK_STR(err, "--pass takes 'all', 'each' or a pass number, not: '-2'");
+    CHECK_INT(parse(&o, err, sizeof err, (const char *[]){"a.fx", "--pass", "each", NULL}), -1);
+    CHECK_STR(err, "--pass each writes one picture a pass: it goes with --technique all");
+    CHECK_INT(parse(&o, err, sizeof err, (const char *[]){"a.fx", "--pass", "each", "--technique", "all", NULL}), 0);
+    CHECK_INT(o.pass, HV_PASS_EACH);
     CHECK_INT(parse(&o, err, sizeof err, (const char *[]){"a.fx", "--camera", "eye=1,2", NULL}), -1);
     CHECK_STR(err, "--camera takes eye=x,y,z,at=x,y,z[,up=x,y,z][,fov=deg], not: 'eye=1,2'");
     CHECK_INT(parse(&o, err, sizeof err, (const char *[]){"a.fx", "--light", "spot=1,2,3", NULL}), -1);
@@ -119,7 +125,7 @@ static void light_direction(void) {
     CHECK_INT(parse(&o, err, sizeof err, (const char *[]){"a.fx", "--light", "dir=0,-1,0", "--pass=all", NULL}), 0);
     CHECK_INT(o.light_direction_given, 1);
     CHECK_NEAR(o.light_direction.y, -1, 0);
-    CHECK_INT(o.pass, -1);
+    CHECK_INT(o.pass, HV_PASS_ALL);
 }
 
 int main(void) {

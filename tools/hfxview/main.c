@@ -328,26 +328,44 @@ static int run_vulkan(viewer *v) {
 }
 #endif
 
+/* One picture of draw_every_technique: OUT.T.png, or OUT.T.P.png for pass P (pass >= 0). */
+static int draw_one(viewer *v, const char *out, size_t stem, size_t technique, int pass) {
+    char path[1024];
+    if (pass < 0) snprintf(path, sizeof path, "%.*s.%zu.png", (int)stem, out, technique);
+    else snprintf(path, sizeof path, "%.*s.%zu.%d.png", (int)stem, out, technique, pass);
+    v->opt.output = path;
+    int rc = draw(v);
+    if (rc == EXIT_OK) rc = save_png(v);
+    v->opt.output = out;
+    return rc;
+}
+
 /* --technique all: every technique into OUT.N.png (N its index, OUT the -o path less ".png"),
- * with a line "technique N NAME" for each on stdout; for surveys (scripts/corpus.sh). The
- * first failure's status, after trying them all. */
+ * with a line "technique N NAME" for each on stdout; for surveys (scripts/corpus.sh). With
+ * --pass each, every pass alone into OUT.N.P.png, each with a line "pass N P NAME": one
+ * process for a whole effect (scripts/fx2_oracle.sh). The first failure's status, after
+ * trying them all. */
 static int draw_every_technique(viewer *v) {
     const char *out = v->opt.output ? v->opt.output : "hfxview.png";
     size_t n = hfx_effect_technique_count(v->fx), stem = strlen(out);
-    int worst = EXIT_OK;
+    int worst = EXIT_OK, each = v->opt.pass == HV_PASS_EACH;
     if (stem > 4 && !strcmp(out + stem - 4, ".png")) stem -= 4;
     for (size_t i = 0; i < n; i++) {
-        char path[1024];
-        snprintf(path, sizeof path, "%.*s.%zu.png", (int)stem, out, i);
         v->technique = hfx_effect_technique_at(v->fx, i);
         printf("technique %zu %s\n", i, hfx_technique_name(v->technique));
         fflush(stdout);
-        v->opt.output = path;
-        int rc = draw(v);
-        if (rc == EXIT_OK) rc = save_png(v);
-        if (worst == EXIT_OK) worst = rc;
+        size_t passes = each ? hfx_technique_pass_count(v->technique) : 1;
+        for (size_t p = 0; p < passes; p++) {
+            if (each) {
+                printf("pass %zu %zu %s\n", i, p, hfx_pass_name(hfx_technique_pass(v->technique, p)));
+                fflush(stdout);
+                v->opt.pass = (int)p;
+            }
+            int rc = draw_one(v, out, stem, i, each ? (int)p : -1);
+            if (worst == EXIT_OK) worst = rc;
+        }
+        if (each) v->opt.pass = HV_PASS_EACH;
     }
-    v->opt.output = out;
     return worst;
 }
 

@@ -10,7 +10,8 @@
 const char *hv_usage(void) {
     return "usage: hfxview EFFECT.fx|EFFECT.hfxo [-o OUT.png] [options]\n"
            "  --technique NAME|N|all    technique to draw (default: the first); all: each to OUT.N.png\n"
-           "  --pass all|N              draw every pass in order (default) or only pass N\n"
+           "  --pass all|N|each         draw every pass in order (default) or only pass N; each (with\n"
+           "                            --technique all): every pass alone to OUT.N.P.png\n"
            "  --mesh NAME|FILE.obj      sphere (default), plane, quad, cube, torus, teapot, screen (the\n"
            "                            image in pixels, for post-processing), or an OBJ file\n"
            "  --size WxH                image size (default 512x512)\n"
@@ -35,7 +36,7 @@ const char *hv_usage(void) {
 
 void hv_options_defaults(hv_options *o) {
     memset(o, 0, sizeof *o);
-    o->pass = -1;
+    o->pass = HV_PASS_ALL;
     o->mesh = "sphere";
     o->width = o->height = 512;
     o->eye = hv_vec3_make(0.0f, 1.0f, 3.0f);
@@ -187,8 +188,10 @@ int hv_options_parse(hv_options *o, int argc, char **argv, char *err, size_t err
             if (!*v) return fail(err, errlen, "missing technique after", a);
             o->technique = v;
         } else if (TAKE("--pass")) {
-            if (!strcmp(v, "all")) o->pass = -1;
-            else if (!parse_int(v, &o->pass)) return fail(err, errlen, "--pass takes 'all' or a pass number, not", v);
+            if (!strcmp(v, "all")) o->pass = HV_PASS_ALL;
+            else if (!strcmp(v, "each")) o->pass = HV_PASS_EACH;
+            else if (!parse_int(v, &o->pass) || o->pass < 0)
+                return fail(err, errlen, "--pass takes 'all', 'each' or a pass number, not", v);
         } else if (TAKE("--mesh")) {
             if (!*v) return fail(err, errlen, "missing mesh after", a);
             o->mesh = v;
@@ -235,6 +238,10 @@ int hv_options_parse(hv_options *o, int argc, char **argv, char *err, size_t err
     }
     if (!o->input && !o->help) {
         snprintf(err, errlen, "no effect file given");
+        return -1;
+    }
+    if (o->pass == HV_PASS_EACH && !(o->technique && !strcmp(o->technique, "all")) && !o->list) {
+        snprintf(err, errlen, "--pass each writes one picture a pass: it goes with --technique all");
         return -1;
     }
     return 0;

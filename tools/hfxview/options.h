@@ -6,13 +6,16 @@
 
 #include "vmath.h"
 
+enum { HV_PASS_ALL = -1, HV_PASS_EACH = -2 }; /* hv_options.pass besides a pass number */
+
 typedef struct hv_kv { const char *name, *value; } hv_kv; /* NAME=VALUE, pointing into argv */
 
 typedef struct hv_options {
     const char *input;       /* the .fx or .hfxo */
     const char *output;      /* the PNG; NULL: the input's base name + .png */
     const char *technique;   /* name or index; NULL: the first */
-    int pass;                /* -1: every pass in order, else only pass N */
+    int pass;                /* HV_PASS_ALL: every pass in order, HV_PASS_EACH: each alone
+                                (with --technique all), else only pass N */
     const char *mesh;        /* built-in name or .obj path */
     int mesh_given;          /* --mesh: else an effect in pixels (SpriteEffect) gets "screen" */
     int width, height;

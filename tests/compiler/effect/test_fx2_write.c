@@ -328,16 +328,74 @@ done:
     hfxc_result_free(r);
 }
 
-/* What a real bytecode back end must give: skipped until hfxc's D3D9 back end is wired in. */
-static void compiled_sources_need_the_back_end(void) {
-    hfxc_result *r = compile("float4 PS() : COLOR { return 1; }\ntechnique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n");
-    const hfx_fx_effect *fx = hfxc_result_effect(r);
-    if (fx && fx->program_count && !fx->programs[0].d3d9[HFX_STAGE_FRAGMENT].size)
-        fprintf(stderr, "  (skipped: compiled programs carry no D3D9 bytecode until the back end of issue 32 (h32a) "
-                        "fills hfx_fx_program.d3d9; the hook stands in above)\n");
-    else if (fx && fx->program_count)
-        CHECK_INT(hfx_le32((const uint8_t *)fx->programs[0].d3d9[HFX_STAGE_FRAGMENT].data) >> 16, 0xffff);
+/* A pass that names no shader keeps the previous pass's, as a D3D9 device keeps its shaders
+ * (DigitalRise's terrain effects: pass Restore { FillMode = SOLID; CullMode = CCW; } after
+ * a wireframe pass): the reader gives pass B pass A's program, C (= NULL) none, D (after C)
+ * none, and the next technique's first pass starts with nothing held, as the builder does for
+ * the source. */
+static void state_only_passes_keep_the_shaders(void) {
+    static const char text[] =
+        "float4 VS(float4 p : POSITION) : POSITION { return p; }\n"
+        "float4 PS() : COLOR { return float4(0.25, 0.75, 0, 1); }\n"
+        "technique T { pass A { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); }\n"
+        "  pass B { CullMode = CW; } pass C { VertexShader = NULL; PixelShader = NULL; } pass D { ZEnable = false; } }\n"
+        "technique U { pass E { CullMode = None; } }\n";
+    hfxc_result *r = compile(text);
+    const hfx_fx_effect *src = hfxc_result_effect(r);
+    CHECK(src != NULL);
+    if (!src) goto done;
+    CHECK(src->passes[1].program == src->passes[0].program); /* the builder's rule, the reference */
+    tokens t = {0};
+    fxb_vs_passthrough(&t.vs);
+    fxb_ps_colour(&t.ps, 0.25f, 0.75f);
+    hfx_fx2_write_options opt = {hook, &t, 0};
+    hfxc_result *back = round_trip(src, &opt, NULL, NULL);
+    const hfx_fx_effect *fx = hfxc_result_effect(back);
+    CHECK(fx != NULL);
+    if (fx) {
+        CHECK_INT(fx->pass_count, 5);
+        CHECK_INT(fx->program_count, 1);
+        CHECK_INT(fx->passes[0].program, 0);
+        CHECK_INT(fx->passes[1].program, 0);
+        CHECK_INT(fx->passes[1].state_count, 1); /* CullMode alone: the kept program is no state */
+        CHECK_INT(fx->passes[2].program, HFX_NONE);
+        CHECK_INT(fx->passes[3].program, HFX_NONE);
+        CHECK_INT(fx->passes[4].program, HFX_NONE);
+    }
+    hfxc_result_free(back);
+    free(t.vs.d);
+    free(t.ps.d);
+done:
     hfxc_result_free(r);
+}
+
+/* hfxc_result_fx2 (the library's /T fx_2_0 /Fo): without HFXC_D3D9_BYTECODE the programs have no
+ * shader to write, and the refusal says so at the pass's compile; with it, the container's
+ * version is fx_2_0's (0xFEFF0901) and its pixel shader is ps_2_0 bytecode (0xFFFF0200). */
+static void compiled_sources_need_the_back_end(void) {
+    static const char src[] = "float4 PS() : COLOR { return 1; }\ntechnique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n";
+    hfxc_result *r = compile(src);
+    size_t size = 1;
+    char *why = NULL;
+    void *data = hfxc_result_fx2(r, 0, &size, &why);
+    CHECK(data == NULL && size == 0);
+    CHECK_STR(why ? why : "", "t.fx(2,24): error X9011: pixel shader: no Direct3D 9 bytecode for this shader: compile "
+                              "with HFXC_D3D9_BYTECODE");
+    free(why);
+    hfxc_result_free(r);
+    hfxc_options o = {.flags = HFXC_D3D9_BYTECODE};
+    r = hfxc_compile_memory(src, sizeof src - 1, "t.fx", &o);
+    data = hfxc_result_fx2(r, 0, &size, &why);
+    CHECK(data != NULL && size > 8 && why == NULL);
+    const hfx_fx_effect *fx = hfxc_result_effect(r);
+    CHECK(fx && fx->program_count == 1 && fx->programs[0].d3d9[HFX_STAGE_FRAGMENT].size >= 4);
+    if (data) CHECK_INT(hfx_le32(data), 0xFEFF0901u);
+    if (fx && fx->program_count == 1 && fx->programs[0].d3d9[HFX_STAGE_FRAGMENT].size >= 4)
+        CHECK_INT(hfx_le32((const uint8_t *)fx->programs[0].d3d9[HFX_STAGE_FRAGMENT].data), 0xFFFF0200u);
+    free(data);
+    free(why);
+    hfxc_result_free(r);
+    CHECK(hfxc_result_fx2(NULL, 0, &size, &why) == NULL && why == NULL); /* no result, nothing to say */
 }
 
 /* data (an fxc container) read, written, read: the same listing, values and variants. */
@@ -437,6 +495,7 @@ int main(void) {
     RUN(sampler_array_round_trip);
     RUN(null_shaders_and_state_only_passes);
     RUN(shaders_from_the_hook);
+    RUN(state_only_passes_keep_the_shaders);
     RUN(compiled_sources_need_the_back_end);
     RUN(hand_laid_containers_round_trip);
     RUN(sample_folder_round_trip);

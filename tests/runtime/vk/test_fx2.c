@@ -9,7 +9,6 @@
 #include <string.h>
 
 #include "effect.h"
-#include "effect/fx2_write.h"
 #include "hfx/hfxc.h"
 #include "vk_draw.h"
 
@@ -34,15 +33,10 @@ static void *fx2_of_source(size_t *size) {
     opt.targets = 1u << HFX_TARGET_GLSL330;
     opt.flags = HFXC_D3D9_BYTECODE; /* what hfxc /T fx_2_0 /Fo asks for */
     hfxc_result *r = hfxc_compile_memory(source, sizeof source - 1, "tint.fx", &opt);
-    const hfx_fx_effect *fx = r ? hfxc_result_effect(r) : NULL;
-    void *out = NULL;
-    char why[512] = "";
-    if (!fx || hfx_fx2_write(fx, "tint.fx", NULL, &out, size, why, sizeof why) != 0) {
-        char *text = r ? hfxc_diagnostics_text(r) : NULL;
-        fprintf(stderr, "tint.fx as fx_2_0: %s%s\n", text ? text : "", why);
-        free(text);
-        out = NULL;
-    }
+    char *why = NULL;
+    void *out = hfxc_result_fx2(r, 0, size, &why);
+    if (!out) fprintf(stderr, "tint.fx as fx_2_0: %s\n", why ? why : "");
+    free(why);
     hfxc_result_free(r);
     CHECK(out != NULL);
     return out;

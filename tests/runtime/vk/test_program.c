@@ -1,6 +1,7 @@
 /* test_program.c (Vulkan): a .hfxo whose SPIR-V for Vulkan is corrupted is refused at load with
  * the validator's reason, naming the effect, pass and stage, before the driver sees the module
- * (runtime/vk/program.c); the same file uncorrupted loads and draws. The .hfxo is written by
+ * (runtime/vk/program.c), as is valid SPIR-V naming descriptors the pipeline layout lacks; the
+ * same file uncorrupted loads and draws. The .hfxo is written by
  * the compiler's own writer, so its CRC is right and only the module is wrong. */
 #include <stdio.h>
 #include <stdlib.h>
@@ -79,6 +80,64 @@ static void bad_import_refused(void) {
                                   "1.0: Invalid extended instruction import 'G?SL.std.450'");
 }
 
+static const char tinted[] = "float4 Tint; texture Tex; sampler S = sampler_state { Texture = <Tex>; };\n"
+                             "float4 VS(float4 p : POSITION) : POSITION { return p; }\n"
+                             "float4 PS(float2 t : TEXCOORD0) : COLOR { return tex2D(S, t) * Tint; }\n"
+                             "technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n";
+
+/* The .hfxo of `tinted` with the pixel shader's first `OpDecorate %v <decoration> <from>` made to
+ * say `to`: valid SPIR-V still, but naming a descriptor the program's pipeline layout lacks. */
+static void *hfxo_decorated(uint32_t decoration, uint32_t from, uint32_t to, size_t *size) {
+    hfxc_options opt = {0};
+    opt.targets = 1u << HFX_TARGET_SPIRV_VK;
+    hfxc_result *r = hfxc_compile_memory(tinted, sizeof tinted - 1, "tinted.fx", &opt);
+    hfx_fx_effect *fx = hfxc_result_take_effect(r);
+    hfxc_result_free(r);
+    CHECK(fx != NULL && fx->program_count == 1);
+    if (!fx || fx->program_count != 1) return hfx_fx_effect_free(fx), NULL;
+    hfx_fx_code *ps = &fx->programs[0].code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV_VK];
+    uint32_t *w = (uint32_t *)(void *)ps->data, n = (uint32_t)(ps->size / 4), found = 0;
+    for (uint32_t i = 5; i < n && !found && (w[i] >> 16);) {
+        if (w[i] == (4u << 16 | 71u) && w[i + 2] == decoration && w[i + 3] == from) w[i + 3] = to, found = 1;
+        i += w[i] >> 16;
+    }
+    CHECK(found);
+    void *out = NULL;
+    CHECK(hfx_fx_write_hfxo(fx, &out, size) == 0);
+    hfx_fx_effect_free(fx);
+    return out;
+}
+
+static void check_decoration_refused(uint32_t decoration, uint32_t from, uint32_t to, const char *expected) {
+    size_t size = 0;
+    char *errors = NULL;
+    void *bytes = hfxo_decorated(decoration, from, to, &size);
+    hfx_effect *fx = load(bytes, size, &errors);
+    CHECK(fx == NULL);
+    CHECK_STR(errors ? errors : "", expected);
+    hfx_free(errors);
+    hfx_effect_destroy(fx);
+}
+
+/* SPIR-V's validator takes any DescriptorSet and Binding; a pipeline layout without them is
+ * undefined behaviour, and lavapipe crashed on set 880045673 (found by fuzz_runtime_vk). The
+ * layout has set 0: the block at binding 0 (decoration 33, Binding) and one sampler at 1. */
+static void foreign_descriptors_refused(void) {
+    check_decoration_refused(34, 0, 880045673u, "tinted.fx: technique 'T', pass 'P': the pixel shader's SPIR-V "
+                                                "declares a descriptor set other than 0");
+    check_decoration_refused(33, 1, 5, "tinted.fx: technique 'T', pass 'P': the pixel shader's SPIR-V declares a "
+                                       "sampler binding the program does not have");
+    check_decoration_refused(33, 0, 2, "tinted.fx: technique 'T', pass 'P': the pixel shader's SPIR-V declares a "
+                                       "uniform block at another binding than the effect's");
+    size_t size = 0;
+    char *errors = NULL;
+    void *bytes = hfxo_decorated(33, 1, 1, &size); /* unchanged: loads */
+    hfx_effect *fx = load(bytes, size, &errors);
+    CHECK(fx != NULL);
+    hfx_free(errors);
+    hfx_effect_destroy(fx);
+}
+
 /* The device still works after the refusals, and the uncorrupted file draws its red. */
 static void valid_draws(void) {
     size_t size = 0;
@@ -100,6 +159,7 @@ int main(void) {
     RUN(no_magic_refused);
     RUN(bad_bound_refused);
     RUN(bad_import_refused);
+    RUN(foreign_descriptors_refused);
     RUN(valid_draws);
     vk_suite_end(V, layout); /* the validation layer saw no invalid module */
     return test_summary();

@@ -8,7 +8,6 @@
 #include <sys/stat.h>
 
 #include "effect.h"
-#include "effect/fx2_write.h"
 #include "files.h"
 #include "hfx/hfxc.h"
 #include "scene_gpu.h"
@@ -203,7 +202,7 @@ static hfx_effect *load_via_hfxo(seed_scene *s, const char *seed_file, const cha
     opt.target = s->target;
     if (s->via_hfxo == 2) co.flags |= HFXC_VIA_D3D9 | HFXC_PACK_UNIFORMS; /* source -> D3D9 bytecode -> reader -> GLSL */
     if (s->via_hfxo == 3) co.flags |= HFXC_D3D9_BYTECODE; /* source -> fx_2_0 (hfxc /T fx_2_0 /Fo) -> fx_2_0's loader */
-    char why[1024] = "";
+    char *why = NULL;
     hfxc_result *r = hfxc_compile_file(path, s->target == HFX_TARGET_GLSL330 && s->via_hfxo < 2 ? NULL : &co);
     const struct hfx_fx_effect *compiled = r ? hfxc_result_effect(r) : NULL;
     void *data = NULL;
@@ -214,14 +213,15 @@ static hfx_effect *load_via_hfxo(seed_scene *s, const char *seed_file, const cha
         char *text = r ? hfxc_diagnostics_text(r) : NULL;
         seed_note(s, "compiling %s failed: %s", seed_file, text ? text : "");
         free(text);
-    } else if (s->via_hfxo == 3 ? hfx_fx2_write(compiled, seed_file, NULL, &data, &size, why, sizeof why) != 0
+    } else if (s->via_hfxo == 3 ? !(data = hfxc_result_fx2(r, 0, &size, &why))
                                  : hfx_fx_write_hfxo(compiled, &data, &size) != 0) {
-        seed_note(s, "writing %s as %s failed: %s", seed_file, s->via_hfxo == 3 ? "fx_2_0" : ".hfxo", why);
+        seed_note(s, "writing %s as %s failed: %s", seed_file, s->via_hfxo == 3 ? "fx_2_0" : ".hfxo", why ? why : "");
     } else {
         fx = hfx_effect_load_memory(s->dev, data, size, seed_file, &opt, &errors);
         if (!fx) seed_note(s, "loading %s from .hfxo failed: %s", seed_file, errors && *errors ? errors : hfx_device_last_error(s->dev));
     }
     hfx_free(errors);
+    free(why);
     free(data);
     hfxc_result_free(r);
     return fx;
