@@ -122,7 +122,7 @@ static void successors(const bc_gen *g, uint32_t (*succ)[2]) {
 
 /* Unread swizzle positions as bc_emit.c's src_of leaves them (the read value when they all
  * read one, else their own component; dot products repeat their last). */
-static uint8_t tidy(uint8_t sw, unsigned positions, bool dot) {
+uint8_t hfx_bc_tidy(uint8_t sw, unsigned positions, bool dot) {
     uint8_t c[4];
     int first = -1, last = -1;
     bool same = true, ident = true;
@@ -181,7 +181,7 @@ uint8_t (*hfx_bc_liveness(bc_gen *g, bool *dead))[BC_MAX_TEMPS] {
             if (dead[i] || !keep || keep == x->dst.mask) continue;
             x->dst.mask = (uint8_t)keep;
             if (componentwise(x))
-                for (unsigned k = 0; k < x->src_count; k++) x->src[k].swizzle = tidy(x->src[k].swizzle, keep, false);
+                for (unsigned k = 0; k < x->src_count; k++) x->src[k].swizzle = hfx_bc_tidy(x->src[k].swizzle, keep, false);
         }
     for (uint32_t i = 0; i < n; i++) /* the back edges: what the top of a body needs stays live through it */
         if ((g->insts[i].op == D3D9_LOOP || g->insts[i].op == D3D9_REP) && succ[i][1] <= n)
@@ -343,7 +343,7 @@ static void rewrite(const bc_gen *g, d3d9_inst *in, const segs *S, uint32_t i) {
             for (unsigned p = 0; p < 4; p++) nw |= (uint8_t)(s->map[sw >> (2 * p) & 3] << (2 * p));
             in->src[k].swizzle = nw;
         }
-        if (remap || (moved && componentwise(in))) in->src[k].swizzle = tidy(in->src[k].swizzle, pos[k], !componentwise(in));
+        if (remap || (moved && componentwise(in))) in->src[k].swizzle = hfx_bc_tidy(in->src[k].swizzle, pos[k], !componentwise(in));
     }
 }
 

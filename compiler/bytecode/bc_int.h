@@ -178,6 +178,12 @@ unsigned hfx_bc_read_comps(const bc_gen *g, const d3d9_inst *in, unsigned k); /*
 bool hfx_bc_droppable(const d3d9_inst *in);                  /* only writes a temporary */
 uint32_t hfx_bc_renumber(bc_gen *g);                         /* temporaries packed by component; how many */
 void hfx_bc_prune_constants(bc_gen *g);                      /* parameters and defs nothing reads */
+/* A swizzle's unread positions as src_of leaves them (dot: repeating the last read one). */
+uint8_t hfx_bc_tidy(uint8_t sw, unsigned positions, bool dot);
+
+/* --- bc_fold.c --- */
+void hfx_bc_fold(bc_gen *g);                                 /* constants followed component by component */
+void hfx_bc_merge_mova(bc_gen *g);                           /* bones' indices in one mova a0.xyzw */
 
 /* --- bc_intrin.c --- */
 typedef bc_val (*bc_intrin_fn)(bc_gen *g, const ir_expr *e, bc_val *a);

@@ -111,9 +111,11 @@ const uint32_t *hfx_bc_write(ir_ctx *c, const ir_shader *sh, const char *profile
     hfx_bc_bind_globals(&g);
     if (!g.failed) gen_entry(&g);
     if (g.failed) return NULL;
+    hfx_bc_fold(&g);
     hfx_bc_dead_code(&g);
     hfx_bc_sink(&g);
     hfx_bc_dead_code(&g);
+    hfx_bc_merge_mova(&g);
     hfx_bc_prune_constants(&g);
     uint32_t temps = hfx_bc_renumber(&g);
     if (temps > hfx_bc_temp_limit(&g)) {

@@ -80,9 +80,9 @@ static void copy_on_write_takes_only_what_is_kept(void) {
 /* Two-bone skinning as XNA's SkinnedEffect writes it: the float4x3 bones are column_major, three
  * registers of four (one per column); skin += Bones[i] * w adds them up by columns, a mul for
  * the first bone (0 + x * w: the zero folds) and a mad for the second, and mul(p, skin) is one
- * dp4 per column. 18 slots: per bone the index times 3 and mova (2) and three columns (3): 10;
- * the position's three dp4 and its w of 1: 4; WorldViewProj's four dp4: 4. Four temporaries:
- * the three columns and the second index (r0.x is a column's by then). */
+ * dp4 per column. 16 slots: both indices times 3 and one mova a0.xy (2), per bone three columns (3): 8;
+ * the position's three dp4 and its w of 1: 4; WorldViewProj's four dp4: 4. Three temporaries:
+ * the three columns (r0.xy, the indices, is a column's once a0 holds them). */
 static void skinning_by_columns(void) {
     code_is("float4x3 Bones[4];\nfloat4x4 WorldViewProj;\n"
             "void main(float4 p : POSITION, int4 i : BLENDINDICES, float4 w : BLENDWEIGHT, out float4 o : POSITION) {\n"
@@ -96,16 +96,14 @@ static void skinning_by_columns(void) {
             "    dcl_position v0\n"
             "    dcl_blendindices v1\n"
             "    dcl_blendweight v2\n"
-            "    mul r0.x, v1.x, c16.y\n"   /* three registers a bone */
-            "    mova a0.x, r0.x\n"
+            "    mul r0.xy, v1, c16.y\n"   /* three registers a bone, both indices at once */
+            "    mova a0.xy, r0\n"
             "    mul r0, c0[a0.x], v2.x\n"  /* column 0 of Bones[i.x] * w.x */
             "    mul r1, c1[a0.x], v2.x\n"
             "    mul r2, c2[a0.x], v2.x\n"
-            "    mul r3.x, v1.y, c16.y\n"
-            "    mova a0.x, r3.x\n"
-            "    mad r0, c0[a0.x], v2.y, r0\n"
-            "    mad r1, c1[a0.x], v2.y, r1\n"
-            "    mad r2, c2[a0.x], v2.y, r2\n"
+            "    mad r0, c0[a0.y], v2.y, r0\n"
+            "    mad r1, c1[a0.y], v2.y, r1\n"
+            "    mad r2, c2[a0.y], v2.y, r2\n"
             "    dp4 r0.x, v0, r0\n"        /* mul(p, skin).x: p . column 0 */
             "    dp4 r0.y, v0, r1\n"
             "    dp4 r0.z, v0, r2\n"
@@ -114,7 +112,7 @@ static void skinning_by_columns(void) {
             "    dp4 oPos.y, r0, c13\n"
             "    dp4 oPos.z, r0, c14\n"
             "    dp4 oPos.w, r0, c15\n"
-            "\n// approximately 18 instruction slots used\n");
+            "\n// approximately 16 instruction slots used\n");
 }
 
 /* lit += x * y starting from (Lit)0 is one mul, not a mov of zero and a mad; x * 1 is x. 2 slots. */

@@ -270,8 +270,9 @@ static void limits(void) {
 }
 
 /* A pixel shader writing its input (t.y--): ps_2_0's t registers cannot be written, so the
- * input is copied to a temporary where it is written (mov r0.xy, t0), then decremented
- * (add r0.y, r0.y, -1) and returned as t.xyxy: 3 arithmetic slots. The copy was once missed
+ * input goes to a temporary where it is written: x copied (mov r0.x, t0.x), y decremented from
+ * the input itself (add r0.y, t0.y, -1: the copy's reader reads what it copied, bc_fold.c), and
+ * returned as t.xyxy: 3 arithmetic slots. The copy was once missed
  * for ++ / -- and the shader failed its own validation (X5999). */
 static void ps_2_0_written_input(void) {
     bool ok;
@@ -281,8 +282,8 @@ static void ps_2_0_written_input(void) {
             "    ps_2_0\n"
             "    def c0, -1, 0, 0, 0\n"
             "    dcl t0.xy\n"
-            "    mov r0.xy, t0\n"
-            "    add r0.y, r0.y, c0.x\n"
+            "    mov r0.x, t0.x\n"
+            "    add r0.y, t0.y, c0.x\n"
             "    mov oC0, r0.xyxy\n"
             "\n// approximately 3 instruction slots used (0 texture, 3 arithmetic)\n");
     free(text);
