@@ -75,7 +75,8 @@ static void ps_2_0_vector_read(void) {
 }
 
 /* a[K] = 0.5 on a copy of an input: each component written under K == k, tested as
- * -(K - k)^2 >= 0 by the cmp that writes it (add, mul, cmp per component; k = 0 needs no add). */
+ * -(K - k)^2 >= 0 by the cmp that writes it (add, mul, cmp per component; k = 0 needs no add);
+ * the copy itself is gone, each cmp reading the input's component in place (bc_fold.c). */
 static void ps_2_0_vector_write(void) {
     expect(
         "int K;\n"
@@ -101,20 +102,19 @@ static void ps_2_0_vector_write(void) {
         "    def c2, -3, 0, 0, 0\n"
         "    dcl t0\n"
         "    mul r0.x, c0.x, c0.x\n"
-        "    mov r1, t0\n"
-        "    cmp r1.x, -r0.x, c1.y, r1.x\n"
-        "    add r0.x, c0.x, c1.z\n"
-        "    mul r0.x, r0.x, r0.x\n"
-        "    cmp r1.y, -r0.x, c1.y, r1.y\n"
-        "    add r0.x, c0.x, c1.w\n"
-        "    mul r0.x, r0.x, r0.x\n"
-        "    cmp r1.z, -r0.x, c1.y, r1.z\n"
-        "    add r0.x, c0.x, c2.x\n"
-        "    mul r0.x, r0.x, r0.x\n"
-        "    cmp r1.w, -r0.x, c1.y, r1.w\n"
-        "    mov oC0, r1\n"
+        "    cmp r0.x, -r0.x, c1.y, t0.x\n"
+        "    add r1.x, c0.x, c1.z\n"
+        "    mul r1.x, r1.x, r1.x\n"
+        "    cmp r0.y, -r1.x, c1.y, t0.y\n"
+        "    add r1.x, c0.x, c1.w\n"
+        "    mul r1.x, r1.x, r1.x\n"
+        "    cmp r0.z, -r1.x, c1.y, t0.z\n"
+        "    add r1.x, c0.x, c2.x\n"
+        "    mul r1.x, r1.x, r1.x\n"
+        "    cmp r0.w, -r1.x, c1.y, t0.w\n"
+        "    mov oC0, r0\n"
         "\n"
-        "// approximately 13 instruction slots used (0 texture, 13 arithmetic)\n");
+        "// approximately 12 instruction slots used (0 texture, 12 arithmetic)\n");
 }
 
 /* A struct built from an initialiser list, copied and updated: its slots are views of the
@@ -131,8 +131,8 @@ static void ps_2_0_struct_copy(void) {
         "    ps_2_0\n"
         "    def c0, 0, 1, 0, 0\n"
         "    dcl t0\n"
-        "    mov r0.xy, t0.yzzw\n"
         "    add r0.z, t0.x, c0.y\n"
+        "    mov r0.xy, t0.yzzw\n"
         "    mov r0.w, t0.x\n"
         "    mov oC0, r0\n"
         "\n"
