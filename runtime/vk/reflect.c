@@ -181,23 +181,30 @@ static uint32_t block_type(const module *m) {
     return 0;
 }
 
+/* Indexes a module's ids and decorations: 0; -1 when it is not SPIR-V, malformed or memory ran out. */
+static int module_open(module *m, const uint32_t *words, size_t count, vk_block *out) {
+    memset(m, 0, sizeof *m);
+    if (!words || count < 5 || words[0] != 0x07230203u || words[3] > (1u << 22)) return -1;
+    *m = (module){words, count, words[3], NULL, NULL, NULL, NULL, out, 0};
+    m->def = calloc(m->bound, sizeof *m->def);
+    m->stride = calloc(m->bound, sizeof *m->stride);
+    m->binding = malloc(m->bound * sizeof *m->binding);
+    m->set = malloc(m->bound * sizeof *m->set);
+    if (!m->def || !m->stride || !m->binding || !m->set) return -1;
+    memset(m->binding, 0xff, m->bound * sizeof *m->binding);
+    memset(m->set, 0xff, m->bound * sizeof *m->set);
+    return each(m, index_ids);
+}
+
+static void module_close(module *m) { free(m->def), free(m->stride), free(m->binding), free(m->set); }
+
 int hfx_vk_reflect_block(const uint32_t *words, size_t count, vk_block *out) {
     memset(out, 0, sizeof *out);
-    if (!words || count < 5 || words[0] != 0x07230203u || words[3] > (1u << 22)) return -1;
-    module m = {words, count, words[3], NULL, NULL, NULL, NULL, out, 0};
-    m.def = calloc(m.bound, sizeof *m.def);
-    m.stride = calloc(m.bound, sizeof *m.stride);
-    m.binding = malloc(m.bound * sizeof *m.binding);
-    m.set = malloc(m.bound * sizeof *m.set);
-    int rc = -1;
-    if (m.def && m.stride && m.binding && m.set) {
-        memset(m.binding, 0xff, m.bound * sizeof *m.binding);
-        memset(m.set, 0xff, m.bound * sizeof *m.set);
-        rc = each(&m, index_ids);
-        uint32_t st = rc ? 0 : block_type(&m);
-        if (st) rc = walk_struct(&m, st, 0, "", 0);
-    }
-    free(m.def), free(m.stride), free(m.binding), free(m.set);
+    module m;
+    int rc = module_open(&m, words, count, out);
+    uint32_t st = rc ? 0 : block_type(&m);
+    if (st) rc = walk_struct(&m, st, 0, "", 0);
+    module_close(&m);
     if (rc) hfx_vk_block_free(out);
     return rc;
 }
@@ -221,24 +228,14 @@ static const char *variable_slot_error(const module *m, uint32_t id, uint32_t st
 }
 
 const char *hfx_vk_check_slots(const uint32_t *words, size_t count, uint32_t sampler_count, bool *block) {
-    if (!words || count < 5 || words[0] != 0x07230203u || words[3] > (1u << 22)) return "not SPIR-V";
-    module m = {words, count, words[3], NULL, NULL, NULL, NULL, NULL, 0};
-    m.def = calloc(m.bound, sizeof *m.def);
-    m.stride = calloc(m.bound, sizeof *m.stride);
-    m.binding = malloc(m.bound * sizeof *m.binding);
-    m.set = malloc(m.bound * sizeof *m.set);
-    const char *why = "out of memory";
-    if (m.def && m.stride && m.binding && m.set) {
-        memset(m.binding, 0xff, m.bound * sizeof *m.binding);
-        memset(m.set, 0xff, m.bound * sizeof *m.set);
-        why = each(&m, index_ids) ? "a malformed instruction" : NULL;
-        for (uint32_t id = 1; !why && id < m.bound; id++) {
-            const uint32_t *v = def_of(&m, id);
-            if (v && (v[0] & 0xffffu) == OP_VARIABLE && (v[0] >> 16) >= 4)
-                why = variable_slot_error(&m, id, v[3], sampler_count, block);
-        }
+    module m;
+    const char *why = module_open(&m, words, count, NULL) ? "an unreadable module" : NULL;
+    for (uint32_t id = 1; !why && id < m.bound; id++) {
+        const uint32_t *v = def_of(&m, id);
+        if (v && (v[0] & 0xffffu) == OP_VARIABLE && (v[0] >> 16) >= 4)
+            why = variable_slot_error(&m, id, v[3], sampler_count, block);
     }
-    free(m.def), free(m.stride), free(m.binding), free(m.set);
+    module_close(&m);
     return why;
 }
 
