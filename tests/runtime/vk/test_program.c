@@ -19,23 +19,36 @@ static const char red[] = "float4 VS(float4 p : POSITION) : POSITION { return p;
                           "float4 PS() : COLOR { return float4(1, 0, 0, 1); }\n"
                           "technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n";
 
-/* The .hfxo of `red` with word `word` of pass P's pixel shader module set to `value`
- * (word UINT32_MAX: unchanged). */
-static void *hfxo_with(uint32_t word, uint32_t value, size_t *size) {
+/* src compiled for Vulkan alone, owned by the caller; NULL (and a failed check) otherwise. */
+static hfx_fx_effect *compiled(const char *src, size_t len, const char *name) {
     hfxc_options opt = {0};
     opt.targets = 1u << HFX_TARGET_SPIRV_VK;
-    hfxc_result *r = hfxc_compile_memory(red, sizeof red - 1, "red.fx", &opt);
+    hfxc_result *r = hfxc_compile_memory(src, len, name, &opt);
     hfx_fx_effect *fx = hfxc_result_take_effect(r);
     hfxc_result_free(r);
     CHECK(fx != NULL && fx->program_count == 1);
-    if (!fx || fx->program_count != 1) return hfx_fx_effect_free(fx), NULL;
-    hfx_fx_code *ps = &fx->programs[0].code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV_VK];
-    CHECK(ps->size >= 20 && ps->size % 4 == 0);
-    if (word != UINT32_MAX && word < ps->size / 4) memcpy(ps->data + 4 * word, &value, 4);
+    if (fx && fx->program_count == 1) return fx;
+    hfx_fx_effect_free(fx);
+    return NULL;
+}
+
+/* fx written as .hfxo (malloc'ed, *size bytes) and freed. */
+static void *as_hfxo(hfx_fx_effect *fx, size_t *size) {
     void *out = NULL;
     CHECK(hfx_fx_write_hfxo(fx, &out, size) == 0);
     hfx_fx_effect_free(fx);
     return out;
+}
+
+/* The .hfxo of `red` with word `word` of pass P's pixel shader module set to `value`
+ * (word UINT32_MAX: unchanged). */
+static void *hfxo_with(uint32_t word, uint32_t value, size_t *size) {
+    hfx_fx_effect *fx = compiled(red, sizeof red - 1, "red.fx");
+    if (!fx) return NULL;
+    hfx_fx_code *ps = &fx->programs[0].code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV_VK];
+    CHECK(ps->size >= 20 && ps->size % 4 == 0);
+    if (word != UINT32_MAX && word < ps->size / 4) memcpy(ps->data + 4 * word, &value, 4);
+    return as_hfxo(fx, size);
 }
 
 /* Loads the .hfxo; NULL with *errors set when refused. */
@@ -46,16 +59,21 @@ static hfx_effect *load(void *bytes, size_t size, char **errors) {
     return fx;
 }
 
-static void check_refused(uint32_t word, uint32_t value, const char *expected) {
-    size_t size = 0;
+/* bytes (freed) refused at load with `expected`, which the device's last error repeats. */
+static void refused_as(void *bytes, size_t size, const char *expected) {
     char *errors = NULL;
-    void *bytes = hfxo_with(word, value, &size);
     hfx_effect *fx = load(bytes, size, &errors);
     CHECK(fx == NULL);
     CHECK_STR(errors ? errors : "", expected);
     CHECK_STR(hfx_device_last_error(test_vk_device(V)), expected);
     hfx_free(errors);
     hfx_effect_destroy(fx);
+}
+
+static void check_refused(uint32_t word, uint32_t value, const char *expected) {
+    size_t size = 0;
+    void *bytes = hfxo_with(word, value, &size);
+    refused_as(bytes, size, expected);
 }
 
 /* Word 0 is the magic number 0x07230203: anything else is not SPIR-V, refused before the
@@ -88,13 +106,8 @@ static const char tinted[] = "float4 Tint; texture Tex; sampler S = sampler_stat
 /* The .hfxo of `tinted` with the pixel shader's first `OpDecorate %v <decoration> <from>` made to
  * say `to`: valid SPIR-V still, but naming a descriptor the program's pipeline layout lacks. */
 static void *hfxo_decorated(uint32_t decoration, uint32_t from, uint32_t to, size_t *size) {
-    hfxc_options opt = {0};
-    opt.targets = 1u << HFX_TARGET_SPIRV_VK;
-    hfxc_result *r = hfxc_compile_memory(tinted, sizeof tinted - 1, "tinted.fx", &opt);
-    hfx_fx_effect *fx = hfxc_result_take_effect(r);
-    hfxc_result_free(r);
-    CHECK(fx != NULL && fx->program_count == 1);
-    if (!fx || fx->program_count != 1) return hfx_fx_effect_free(fx), NULL;
+    hfx_fx_effect *fx = compiled(tinted, sizeof tinted - 1, "tinted.fx");
+    if (!fx) return NULL;
     hfx_fx_code *ps = &fx->programs[0].code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV_VK];
     uint32_t *w = (uint32_t *)(void *)ps->data, n = (uint32_t)(ps->size / 4), found = 0;
     for (uint32_t i = 5; i < n && !found && (w[i] >> 16);) {
@@ -102,21 +115,13 @@ static void *hfxo_decorated(uint32_t decoration, uint32_t from, uint32_t to, siz
         i += w[i] >> 16;
     }
     CHECK(found);
-    void *out = NULL;
-    CHECK(hfx_fx_write_hfxo(fx, &out, size) == 0);
-    hfx_fx_effect_free(fx);
-    return out;
+    return as_hfxo(fx, size);
 }
 
 static void check_decoration_refused(uint32_t decoration, uint32_t from, uint32_t to, const char *expected) {
     size_t size = 0;
-    char *errors = NULL;
     void *bytes = hfxo_decorated(decoration, from, to, &size);
-    hfx_effect *fx = load(bytes, size, &errors);
-    CHECK(fx == NULL);
-    CHECK_STR(errors ? errors : "", expected);
-    hfx_free(errors);
-    hfx_effect_destroy(fx);
+    refused_as(bytes, size, expected);
 }
 
 /* SPIR-V's validator takes any DescriptorSet and Binding; a pipeline layout without them is
