@@ -9,29 +9,14 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bc_listing.h"
 #include "hfx/hfxc.h"
 #include "test.h"
 
-/* The listing of `main` compiled for `profile`, or the messages when it fails (malloc'ed). */
-static char *compile(const char *src, const char *profile, bool *ok) {
-    hfxc_options o = {.entry = "main", .profile = profile};
-    hfxc_result *r = hfxc_compile_memory(src, strlen(src), "t.fx", &o);
-    size_t size = 0;
-    const void *code = hfxc_result_bytecode(r, &size);
-    *ok = hfxc_result_ok(r) && code;
-    char *text = NULL;
-    if (*ok) {
-        char *diags = NULL;
-        text = hfxc_disassemble(code, size, "t.vso", &diags);
-        free(diags);
-    } else text = hfxc_diagnostics_text(r);
-    hfxc_result_free(r);
-    return text;
-}
 
 static void expect(const char *src, const char *profile, const char *want) {
     bool ok;
-    char *text = compile(src, profile, &ok);
+    char *text = bc_listing(src, profile, &ok);
     CHECK(ok);
     CHECK_STR(text, want);
     free(text);
@@ -287,7 +272,7 @@ static void ps_2_0_array_and_matrix_inputs(void) {
  * must go to temporaries of their own (once stored into the c register: X5999 in ps_3_0). */
 static void ps_3_0_sincos_out_arguments(void) {
     bool ok;
-    char *text = compile("float4 main(float4 v : TEXCOORD0) : COLOR0 { float s, c; sincos(v.x, s, c); return float4(s, c, 0, 1); }\n",
+    char *text = bc_listing("float4 main(float4 v : TEXCOORD0) : COLOR0 { float s, c; sincos(v.x, s, c); return float4(s, c, 0, 1); }\n",
                          "ps_3_0", &ok);
     CHECK(ok);
     CHECK(text && strstr(text, "sincos r") != NULL);
