@@ -181,6 +181,11 @@ void hfx_bc_prune_constants(bc_gen *g);                      /* parameters and d
 /* A swizzle's unread positions as src_of leaves them (dot: repeating the last read one). */
 uint8_t hfx_bc_tidy(uint8_t sw, unsigned positions, bool dot);
 
+/* --- bc_ports.c --- */
+/* Registers an instruction reads over the model's read ports copied into temporaries before it;
+ * temps: the renumbered temporaries' count. Returns the count after. */
+uint32_t hfx_bc_read_ports(bc_gen *g, uint32_t temps);
+
 /* --- bc_fold.c --- */
 void hfx_bc_fold(bc_gen *g);                                 /* constants followed component by component */
 void hfx_bc_merge_mova(bc_gen *g);                           /* bones' indices in one mova a0.xyzw */

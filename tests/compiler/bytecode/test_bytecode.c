@@ -45,9 +45,10 @@ static void vs_2_0_transform_and_mad(void) {
             "    dp4 oPos.y, v0, c1\n"
             "    dp4 oPos.z, v0, c2\n"
             "    dp4 oPos.w, v0, c3\n"
-            "    mad oD0, c4, c5.x, c5.y\n" /* Tint * 0.5 + 0.25 */
-            "    mov oT0.xy, v1\n"
-            "\n// approximately 6 instruction slots used\n");
+            "    mov r0.xy, c5\n"           /* vs_2_0 reads one c register an instruction: of Tint (c4) */
+            "    mad oD0, c4, r0.x, r0.y\n" /* and the def (c5) the cheaper copied, its .xy read */
+            "    mov oT0.xy, v1\n"          /* Tint * 0.5 + 0.25 */
+            "\n// approximately 7 instruction slots used\n");
 }
 
 static void ps_2_0_clip_and_saturate(void) {
@@ -190,18 +191,20 @@ static void per_stage_registers(void) {
             "//   A            c1       1\n//   C            c0       1\n//\n\n",
             "    ps_2_0\n"
             "    dcl v0\n"
-            "    mad r0, v0, c1, c0\n" /* c * A + C */
+            "    mov r0, c1\n"           /* ps_2_0 reads one c register an instruction: A first of two alike */
+            "    mad r0, v0, r0, c0\n"   /* c * A + C */
             "    mov oC0, r0\n"
-            "\n// approximately 2 instruction slots used (0 texture, 2 arithmetic)\n");
+            "\n// approximately 3 instruction slots used (0 texture, 3 arithmetic)\n");
     listing(src, "vs_2_0",
             "//   float4 A;\n//   float4 B;\n//   float4 C;\n//\n//\n// Registers:\n//\n"
             "//   Name         Reg   Size\n//   ------------ ----- ----\n"
             "//   A            c3       1\n//   B            c1       1\n//   C            c0       1\n//\n\n",
             "    vs_2_0\n"
             "    dcl_position v0\n"
-            "    mad r0, v0, c3, c1\n" /* p * A + B */
+            "    mov r0, c3\n"         /* vs_2_0's one c register an instruction: A copied */
+            "    mad r0, v0, r0, c1\n" /* p * A + B */
             "    add oPos, r0, c0\n"   /* + C */
-            "\n// approximately 2 instruction slots used\n");
+            "\n// approximately 3 instruction slots used\n");
 }
 
 static void refused(const char *src, const char *profile, const char *message) {
