@@ -181,6 +181,9 @@ void hfx_bc_prune_constants(bc_gen *g);                      /* parameters and d
 /* A swizzle's unread positions as src_of leaves them (dot: repeating the last read one). */
 uint8_t hfx_bc_tidy(uint8_t sw, unsigned positions, bool dot);
 
+/* --- bc_mad.c --- */
+void hfx_bc_fuse_mad(bc_gen *g);                              /* a mul's temporary added once: a mad */
+
 /* --- bc_ports.c --- */
 /* Registers an instruction reads over the model's read ports copied into temporaries before it;
  * temps: the renumbered temporaries' count. Returns the count after. */

@@ -112,6 +112,7 @@ const uint32_t *hfx_bc_write(ir_ctx *c, const ir_shader *sh, const char *profile
     if (!g.failed) gen_entry(&g);
     if (g.failed) return NULL;
     hfx_bc_fold(&g);
+    hfx_bc_fuse_mad(&g);
     hfx_bc_dead_code(&g);
     hfx_bc_sink(&g);
     hfx_bc_dead_code(&g);

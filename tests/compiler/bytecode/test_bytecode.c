@@ -262,6 +262,25 @@ static void vs_2_0_normalize_output(void) {
             "\n// approximately 7 instruction slots used\n");
 }
 
+/* A product kept in a variable and added afterwards is one mad (the mul and the add of a plain
+ * walk: 4 slots; EnvironmentMapEffect's envmap * alpha - color, fxc's `mad r0.xyz, r0, r1.w, -r1`). */
+static void ps_2_0_product_then_add(void) {
+    listing("sampler S;\nfloat4 K;\nfloat4 main(float2 uv : TEXCOORD0, float4 c : COLOR0) : COLOR0 {\n"
+            "    float4 e = tex2D(S, uv) * c.a;\n    return e - K;\n}\n",
+            "ps_2_0",
+            "//   float4 K;\n//   sampler2D S;\n//\n//\n// Registers:\n//\n"
+            "//   Name         Reg   Size\n//   ------------ ----- ----\n"
+            "//   S            s0       1\n//   K            c0       1\n//\n\n",
+            "    ps_2_0\n"
+            "    dcl t0.xy\n"
+            "    dcl v0\n"
+            "    dcl_2d s0\n"
+            "    texld r0, t0, s0\n"
+            "    mad r0, r0, v0.w, -c0\n" /* tex * c.a - K */
+            "    mov oC0, r0\n"
+            "\n// approximately 3 instruction slots used (1 texture, 2 arithmetic)\n");
+}
+
 static void refused(const char *src, const char *profile, const char *message) {
     bool ok;
     char *text = bc_listing(src, profile, &ok);
@@ -335,6 +354,7 @@ static void ps_2_0_written_input(void) {
 int main(void) {
     RUN(ps_2_0_compare_select);
     RUN(vs_2_0_normalize_output);
+    RUN(ps_2_0_product_then_add);
     RUN(vs_2_0_transform_and_mad);
     RUN(ps_2_0_clip_and_saturate);
     RUN(ps_3_0_parameter_loop);
