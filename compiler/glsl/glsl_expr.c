@@ -571,7 +571,20 @@ static void print_swizzle(gp *p, const ir_expr *e, int max) {
         return;
     }
     if (hfx_glsl_is_matrix(x->type)) {
-        unsigned cols = x->type->cols;
+        unsigned cols = x->type->cols, row = e->comps[0] / cols, same = 1;
+        while (same < n && e->comps[same] / cols == row) same++;
+        if (same == n && n > 1) { /* one HLSL row, which is one GLSL column: m[r] and its components (a
+                            translated D3D9 register is one, and drivers compile a gather slower) */
+            hfx_glsl_expr(p, x, PREC_POSTFIX);
+            hfx_sb_printf(p->out, "[%u]", row);
+            bool whole = n == cols;
+            for (unsigned i = 0; i < n && whole; i++) whole = e->comps[i] % cols == i;
+            if (!whole) {
+                hfx_sb_put(p->out, ".");
+                for (unsigned i = 0; i < n; i++) hfx_sb_printf(p->out, "%c", "xyzw"[e->comps[i] % cols]);
+            }
+            return;
+        }
         if (n > 1) hfx_sb_printf(p->out, "%s(", hfx_glsl_type(p, e->type));
         for (unsigned i = 0; i < n; i++) {
             if (i) hfx_sb_put(p->out, ", ");
