@@ -39,7 +39,8 @@ done
 effects=("$@")
 frame=xna; [ -z "${BEGIN_END:-}" ] || frame=begin-end
 # a mojo_compare from before --frame takes no such option: its frames are begin-end
-"$compare" --frame xna 2>&1 | grep -q 'usage.*--frame' || frame=
+usage=$("$compare" --frame xna 2>&1 || true)
+[[ $usage == *"[--frame"* ]] || frame=
 [ ${#effects[@]} -gt 0 ] || effects=(BasicEffect AlphaTestEffect DualTextureEffect EnvironmentMapEffect SkinnedEffect SpriteEffect)
 # Variants (ShaderIndex values the C# classes use) and the values docs/stock-effects.md draws with.
 args_of() {

@@ -291,6 +291,10 @@ static void count(run *r, hfx_technique *t, size_t ti, int variant, int mojo) {
     mj_reset(r->mojo); /* after the other side's draws */
     hfx_device_sync(r->dev);
     if (!mojo) bind_once(r, t);
+    /* xna frames leave the effect's program and units bound: one Begin / End around them, not
+     * counted, hands the other side the GL state the begin-end frames leave */
+    int around = !mojo && !r->begin_end;
+    if (around) hfx_effect_begin(r->fx);
     for (int i = 0; i < 2; i++) mojo ? draw_mojo(r, t, ti, 0, NULL) : draw_hfx(r, t, NULL);
     r->gl.Finish();
     if (r->perf >= 0) ioctl(r->perf, PERF_EVENT_IOC_RESET, 0), ioctl(r->perf, PERF_EVENT_IOC_ENABLE, 0);
@@ -303,6 +307,7 @@ static void count(run *r, hfx_technique *t, size_t ti, int variant, int mojo) {
     uint64_t n = 0;
     if (r->perf >= 0 && ioctl(r->perf, PERF_EVENT_IOC_DISABLE, 0) == 0 && read(r->perf, &n, sizeof n) == sizeof n)
         printf("count %s %llu\n", label, (unsigned long long)n);
+    if (around) hfx_effect_end(r->fx);
 }
 
 static int one(run *r, hfx_technique *t, size_t ti, int variant) {

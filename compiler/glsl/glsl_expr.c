@@ -609,21 +609,48 @@ static bool paddable_read(const gp *p, const ir_expr *e) {
            hfx_glsl_packed_reg(p, x->var) == HFX_NONE;
 }
 
+static int32_t padded_index(const gp *p, const ir_var *v) {
+    for (uint32_t i = 0; i < p->padded_count; i++)
+        if (p->padded[i] == v) return (int32_t)i;
+    return -1;
+}
+
 static void note_padded(ir_ctx *c, ir_expr **slot, void *data) {
     gp *p = data;
-    if (!paddable_read(p, *slot) || hfx_glsl_is_padded(p, (*slot)->a[0]->var)) return;
+    if (!paddable_read(p, *slot) || padded_index(p, (*slot)->a[0]->var) >= 0) return;
     if (HFX_ARENA_GROW(c->arena, p->padded, p->padded_count, p->padded_cap, 4)) p->padded[p->padded_count++] = (*slot)->a[0]->var;
 }
 
-void hfx_glsl_find_padded(gp *p) {
-    for (uint32_t i = 0; p->sh && i < p->sh->func_count; i++) hfx_ir_walk_stmt_exprs(p->c, p->sh->funcs[i]->body, note_padded, p);
+/* uses[2k] counts every read of padded[k], uses[2k + 1] those that index it. */
+typedef struct { gp *p; uint32_t *uses; } use_count;
+
+static void count_uses(ir_ctx *c, ir_expr **slot, void *data) {
+    (void)c;
+    use_count *u = data;
+    const ir_expr *e = *slot;
+    int32_t k;
+    if (e && e->kind == IE_VAR && (k = padded_index(u->p, e->var)) >= 0) u->uses[2 * k]++;
+    if (e && e->kind == IE_INDEX && e->a[0]->kind == IE_VAR && (k = padded_index(u->p, e->a[0]->var)) >= 0) u->uses[2 * k + 1]++;
 }
 
-bool hfx_glsl_is_padded(const gp *p, const ir_var *v) {
-    for (uint32_t i = 0; i < p->padded_count; i++)
-        if (p->padded[i] == v) return true;
-    return false;
+/* Only arrays read element by element: one passed whole to a function, or copied, keeps its
+ * type (and its guarded reads). */
+void hfx_glsl_find_padded(gp *p) {
+    for (uint32_t i = 0; p->sh && i < p->sh->func_count; i++) hfx_ir_walk_stmt_exprs(p->c, p->sh->funcs[i]->body, note_padded, p);
+    if (!p->padded_count) return;
+    use_count u = {p, hfx_arena_alloc(p->c->arena, (size_t)p->padded_count * 2 * sizeof *u.uses)};
+    if (!u.uses) { p->padded_count = 0; return; }
+    memset(u.uses, 0, (size_t)p->padded_count * 2 * sizeof *u.uses);
+    for (uint32_t i = 0; i < p->sh->func_count; i++) hfx_ir_walk_stmt_exprs(p->c, p->sh->funcs[i]->body, count_uses, &u);
+    for (uint32_t i = 0; i < p->sh->global_count; i++) /* static initialisers, run in main */
+        if (p->sh->globals[i]->init) hfx_ir_walk_expr(p->c, &p->sh->globals[i]->init, count_uses, &u);
+    uint32_t kept = 0;
+    for (uint32_t k = 0; k < p->padded_count; k++)
+        if (u.uses[2 * k] == u.uses[2 * k + 1]) p->padded[kept++] = p->padded[k];
+    p->padded_count = kept;
 }
+
+bool hfx_glsl_is_padded(const gp *p, const ir_var *v) { return padded_index(p, v) >= 0; }
 
 /* arr[min(uint(i), len)] (arr[min(i, len)] for an index known not to be negative): the element
  * past the end is the padding's zero. */
