@@ -5,7 +5,8 @@
  * - ps_1_x / ps_2_x inputs are the colour registers v0-v1 (COLOR0, COLOR1) and the texture
  *   coordinate registers t0-t7 (TEXCOORD0..7); VPOS and VFACE are ps_3_0's. An input is
  *   refused only when the entry reads it: a vertex shader's output struct with a POSITION
- *   member is the usual pixel input of ps_2_0 effects, and fxc declares what is read.
+ *   member is the usual pixel input of ps_2_0 effects, and fxc declares what is read (a
+ *   struct handed to a function: the members that function reads, as fxc inlines it).
  * - ps_3_0 inputs are v0-v9 with any usage and index 0..15 (dcl_usage), except POSITION0,
  *   the one fxc keeps for the position (its message: "Legal indices are in [1,15]").
  * - pixel outputs are oC0-oC3 (COLOR0..3) and oDepth (DEPTH0), in every model.
@@ -63,33 +64,52 @@ static int check_in(ir_ctx *c, const ir_leaf *l, const char *what, const char *p
 typedef struct read_path { const ir_var *root; uint32_t fields[IR_LEAF_DEPTH]; uint32_t depth; } read_path;
 typedef struct reads { read_path *items; uint32_t count, cap; } reads;
 
-static void note_reads(ir_ctx *c, reads *r, const ir_func *entry, const ir_expr *e) {
-    if (!e) return;
-    if (e->kind == IE_FIELD || e->kind == IE_VAR) {
-        uint32_t chain[32], n = 0;
-        const ir_expr *x = e;
-        for (; x->kind == IE_FIELD && n < 32; x = x->a[0]) chain[n++] = x->field;
-        if (x->kind == IE_VAR) {
-            for (uint32_t i = 0; i < entry->param_count; i++) {
-                if (entry->params[i] != x->var || !HFX_ARENA_GROW(c->arena, r->items, r->count, r->cap, 8)) continue;
-                read_path *p = &r->items[r->count++];
-                *p = (read_path){x->var, {0}, 0};
-                while (n && p->depth < IR_LEAF_DEPTH) p->fields[p->depth++] = chain[--n];
-            }
-            return;
-        }
-    }
-    for (uint32_t i = 0; i < e->n; i++) note_reads(c, r, entry, e->a[i]);
+/* What is being followed: `var` (an entry parameter, or a callee's parameter it was handed to)
+ * stands for root's value at the fields of `at`. fxc inlines calls, so a struct handed whole to
+ * a function reads the members that function reads. */
+typedef struct follow { const ir_var *var; read_path at; unsigned depth; } follow;
+
+static void reads_in_stmt(ir_ctx *c, reads *r, const follow *f, const ir_stmt *s);
+
+/* e's field chain down to f->var: how many fields (in `chain`, innermost last), or -1. */
+static int chain_to(const ir_expr *e, const follow *f, uint32_t chain[32]) {
+    int n = 0;
+    for (; e->kind == IE_FIELD; e = e->a[0])
+        if (n < 32) chain[n++] = e->field;
+    return e->kind == IE_VAR && e->var == f->var ? n : -1;
 }
 
-static void note_stmt_reads(ir_ctx *c, reads *r, const ir_func *entry, const ir_stmt *s) {
+static read_path extend(const follow *f, const uint32_t chain[32], int n) {
+    read_path p = f->at;
+    while (n && p.depth < IR_LEAF_DEPTH) p.fields[p.depth++] = chain[--n];
+    return p;
+}
+
+static void reads_in(ir_ctx *c, reads *r, const follow *f, const ir_expr *e) {
+    if (!e) return;
+    uint32_t chain[32];
+    int n = chain_to(e, f, chain);
+    if (n >= 0) {
+        if (HFX_ARENA_GROW(c->arena, r->items, r->count, r->cap, 8)) r->items[r->count++] = extend(f, chain, n);
+        return;
+    }
+    for (uint32_t i = 0; i < e->n; i++) {
+        const ir_expr *a = e->a[i];
+        int k = e->kind == IE_CALL && e->fn && i < e->fn->param_count && f->depth < 16 ? chain_to(a, f, chain) : -1;
+        if (k < 0) { reads_in(c, r, f, a); continue; }
+        follow inner = {e->fn->params[i], extend(f, chain, k), f->depth + 1};
+        reads_in_stmt(c, r, &inner, e->fn->body);
+    }
+}
+
+static void reads_in_stmt(ir_ctx *c, reads *r, const follow *f, const ir_stmt *s) {
     if (!s) return;
-    note_reads(c, r, entry, s->expr);
-    note_reads(c, r, entry, s->step);
-    note_stmt_reads(c, r, entry, s->init);
-    for (uint32_t i = 0; i < s->count; i++) note_stmt_reads(c, r, entry, s->body[i]);
-    note_stmt_reads(c, r, entry, s->then_s);
-    note_stmt_reads(c, r, entry, s->else_s);
+    reads_in(c, r, f, s->expr);
+    reads_in(c, r, f, s->step);
+    reads_in_stmt(c, r, f, s->init);
+    for (uint32_t i = 0; i < s->count; i++) reads_in_stmt(c, r, f, s->body[i]);
+    reads_in_stmt(c, r, f, s->then_s);
+    reads_in_stmt(c, r, f, s->else_s);
 }
 
 /* Whether a read covers the leaf: the same parameter, one field path a prefix of the other. */
@@ -131,7 +151,10 @@ static int check_semantics(ir_ctx *c, const ir_shader *sh) {
         for (int i = 0; i < n; i++) bad += check_in(c, &l[i], "output", profile, ps_out);
     if ((n = leaves_of(c, sh, false, &l)) <= 0) return bad;
     reads r = {0};
-    note_stmt_reads(c, &r, sh->entry, sh->entry->body);
+    for (uint32_t i = 0; i < sh->entry->param_count; i++) {
+        follow f = {sh->entry->params[i], {sh->entry->params[i], {0}, 0}, 0};
+        reads_in_stmt(c, &r, &f, sh->entry->body);
+    }
     for (int i = 0; i < n; i++) {
         if (!is_read(&r, &l[i])) continue;
         if (major < 3) bad += check_in(c, &l[i], "input", profile, ps2_in);
