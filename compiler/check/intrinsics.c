@@ -289,6 +289,12 @@ static bool match_rule(hfx_types *t, const hfx_intrinsic_info *info, const hfx_t
     return rules[info->sig].fn(&r, m);
 }
 
+/* float, float1 and float1x1 hold the same one value: an out argument may be any of them. */
+static bool one_component_alike(const hfx_type *a, const hfx_type *b) {
+    return hfx_type_is_numeric(a) && hfx_type_is_numeric(b) && a->base == b->base && hfx_type_components(a) == 1 &&
+           hfx_type_components(b) == 1;
+}
+
 bool hfx_intrinsic_match_args(hfx_types *t, int id, const hfx_type *const *args, unsigned n,
                               hfx_intrinsic_match *out) {
     const hfx_intrinsic_info *info = hfx_intrinsic_info_of(id);
@@ -301,7 +307,8 @@ bool hfx_intrinsic_match_args(hfx_types *t, int id, const hfx_type *const *args,
     for (unsigned i = 0; i < n; i++) {
         hfx_conv c = hfx_conv_classify(args[i], out->params[i], false);
         if (!c.ok) return false;
-        if (out->out[i] && !hfx_type_equal(args[i], out->params[i])) return false;
+        if (out->out[i] && !hfx_type_equal(args[i], out->params[i]) && !one_component_alike(args[i], out->params[i]))
+            return false;
         if (c.truncates && info->sig != SIG_MUL) out->truncates = true;
         out->cost += hfx_conv_cost(c);
     }

@@ -49,7 +49,7 @@ static void missing_return_semantic(void) {
 static void odd_color_semantic_is_reported(void) {
     char *d = diagnostics(VS "float4 ps() : COLOR0x { return 1; }\n"
                           "technique T { pass P { VertexShader = compile vs_3_0 vs(); PixelShader = compile ps_3_0 ps(); } }\n");
-    CHECK_STR(d, "e.fx(2,8): error X3094: 'COLOR0X0': invalid pixel shader output semantic\n");
+    CHECK_STR(d, "e.fx(2,8): error X4502: invalid ps_3_0 output semantic 'COLOR0X0'\n"); /* fxc's number (ir/lower/model.c) */
     free(d);
 }
 
