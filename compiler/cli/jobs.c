@@ -248,7 +248,8 @@ static void compile_one(const cli_options *o, cli_job *job, hfxc_session *sessio
             warn_missing_targets(o, job, job->effect);
             size_t size = 0;
             const void *code = hfxc_result_bytecode(r, &size);
-            if (code && o->format == CLI_FORMAT_FXC) write_shader(o, job, code, size); /* fxc /T vs_* | ps_* /Fo: the shader, as fxc writes it */
+            /* fxc /T vs_* | ps_* /Fo: the shader, as fxc writes it; /Fc alone: only its listing */
+            if (code && (o->format == CLI_FORMAT_FXC || (o->entry && !o->output && o->listing))) write_shader(o, job, code, size);
             else write_hfxo(o, job, job->effect);
             emit_glsl(o, job, job->effect);
             if (job->ok && o->depfile && !cli_write_depfile(o, job->input, r, &job->error)) job->ok = false;
