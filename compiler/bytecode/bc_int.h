@@ -185,6 +185,11 @@ void hfx_bc_prune_constants(bc_gen *g);                      /* parameters and d
 /* A swizzle's unread positions as src_of leaves them (dot: repeating the last read one). */
 uint8_t hfx_bc_tidy(uint8_t sw, unsigned positions, bool dot);
 
+/* --- bc_sched.c --- */
+/* The temporaries packed (hfx_bc_renumber); when they are more than the model's, the code is
+ * first reordered so that each value is computed just before it is read. How many. */
+uint32_t hfx_bc_allocate(bc_gen *g);
+
 /* --- bc_fold.c --- */
 void hfx_bc_fold(bc_gen *g);                                 /* constants followed component by component */
 void hfx_bc_merge_mova(bc_gen *g);                           /* bones' indices in one mova a0.xyzw */
