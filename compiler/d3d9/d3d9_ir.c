@@ -326,6 +326,13 @@ static ir_expr *const_register(d3d9_tx *t, unsigned num) {
     return hfx_d3d9_tx_const4(t, (const float[4]){0, 0, 0, 0});
 }
 
+/* Whether a `def` sets c register num. */
+static bool def_at(const d3d9_shader *s, unsigned num) {
+    for (uint32_t i = 0; i < s->inst_count; i++)
+        if (s->insts[i].op == D3D9_DEF && s->insts[i].dst.num == num) return true;
+    return false;
+}
+
 /* The register file for relative reads: every c register up to the highest one declared or
  * defined, filled once at the start. */
 static ir_var *register_file(d3d9_tx *t) {
@@ -360,8 +367,26 @@ static ir_expr *int_op(d3d9_tx *t, hfx_op op, ir_expr *a, int k) {
     return hfx_ir_new_binary(t->c, op, t->i1, a, hfx_ir_const_scalar(t->c, t->i1, k, t->loc));
 }
 
+/* `type local = e;` declared where the instruction that reads it is; the local's value. */
+static ir_expr *held(d3d9_tx *t, const char *name, ir_expr *e) {
+    ir_var *v = HFX_NEW(t->c->arena, ir_var);
+    v->kind = IRV_LOCAL;
+    v->name = v->glsl = hfx_arena_printf(t->c->arena, "%s%u", name, t->held_count++);
+    v->decl = fake_decl(t, DECL_VAR, v->name, e->type, 0, NULL);
+    v->type = e->type;
+    v->param = HFX_NONE;
+    ir_stmt *s = hfx_ir_new_stmt(t->c, IS_DECL, t->loc);
+    s->var = v;
+    s->expr = e;
+    hfx_d3d9_tx_add(t, t->depth, s);
+    return hfx_d3d9_tx_var(t, v);
+}
+
 /* A relative read inside an array constant (fxc's indexing of `float4x3 Bones[72]`): the
- * element and, for matrices, the row or column, from the index; past the array it reads zero. */
+ * element and, for matrices, the row or column, from the index; past the array it reads zero.
+ * The element (bounds-checked) and the register within it are read once into locals: a column
+ * register gathers one component of each row, and repeating the checked read and the division
+ * for each made skinned shaders far longer for drivers to compile (bench/bench_fx2_load). */
 static ir_expr *array_register(d3d9_tx *t, uint32_t i, ir_expr *idx) {
     const d3d9_constant *k = &t->s->constants[i];
     const hfx_type *el = constant_type(t, k);
@@ -370,11 +395,13 @@ static ir_expr *array_register(d3d9_tx *t, uint32_t i, ir_expr *idx) {
     ir_var *v = constant_var(t, i, IRV_UNIFORM, hfx_type_array(t->c->types, el, k->elements));
     if (!v) return NULL;
     ir_expr *off = int_op(t, OP_SUB, idx, k->reg);
+    if (per > 1) off = held(t, "hfx_rel_reg", off);
     ir_expr *e = hfx_ir_new_expr(t->c, IE_INDEX, el, t->loc, 2);
     e->a[0] = hfx_d3d9_tx_var(t, v);
     e->a[1] = per > 1 ? int_op(t, OP_DIV, off, (int)per) : off;
     e->range = IR_RANGE_ANY;
     if (k->cls != 2 && k->cls != 3) return register_value(t, e);
+    e = held(t, "hfx_rel_elem", e);
     ir_expr *j = int_op(t, OP_MOD, hfx_ir_clone_expr(t->c, off), (int)per);
     if (k->cls == 2) { /* row j */
         ir_expr *row = hfx_ir_new_expr(t->c, IE_INDEX, hfx_type_vector(t->c->types, el->base, el->cols), t->loc, 2);
@@ -383,15 +410,16 @@ static ir_expr *array_register(d3d9_tx *t, uint32_t i, ir_expr *idx) {
         row->range = IR_RANGE_IN_BOUNDS;
         return register_value(t, row);
     }
+    j = held(t, "hfx_rel_comp", j);
     ir_expr *col = hfx_ir_new_expr(t->c, IE_CONSTRUCT, hfx_type_vector(t->c->types, el->base, el->rows), t->loc, el->rows);
     for (unsigned q = 0; q < el->rows; q++) { /* column j: element q of each row */
         ir_expr *row = hfx_ir_new_expr(t->c, IE_INDEX, hfx_type_vector(t->c->types, el->base, el->cols), t->loc, 2);
-        row->a[0] = q ? hfx_ir_clone_expr(t->c, e) : e;
+        row->a[0] = hfx_ir_clone_expr(t->c, e);
         row->a[1] = hfx_ir_const_scalar(t->c, t->i1, q, t->loc);
         row->range = IR_RANGE_IN_BOUNDS;
         ir_expr *c = hfx_ir_new_expr(t->c, IE_INDEX, hfx_type_scalar(t->c->types, el->base), t->loc, 2);
         c->a[0] = row;
-        c->a[1] = q ? hfx_ir_clone_expr(t->c, j) : j;
+        c->a[1] = hfx_ir_clone_expr(t->c, j);
         c->range = IR_RANGE_IN_BOUNDS;
         col->a[q] = c;
     }
@@ -725,6 +753,95 @@ static ir_shader *finish(d3d9_tx *t) {
     return sh;
 }
 
+static bool same_src(const d3d9_src *a, const d3d9_src *b) {
+    return a->type == b->type && a->mod == b->mod && a->swizzle == b->swizzle && a->relative == b->relative &&
+           a->num == b->num && a->rel_type == b->rel_type && a->rel_comp == b->rel_comp && a->rel_num == b->rel_num;
+}
+
+/* The CTAB constant whose registers m.num .. m.num + count - 1 are, as a float matrix (no array)
+ * with `width` components a register, read whole (no index, modifier or swizzle) and not under a
+ * def or a preshader; -1 otherwise. *off: m.num's register within it. */
+static int matrix_constant(const d3d9_tx *t, const d3d9_src *m, unsigned count, unsigned width, unsigned *off) {
+    if (m->type != D3D9_REG_CONST || m->relative || m->mod != D3D9_SMOD_NONE || m->swizzle != 0xe4) return -1;
+    int c = constant_at(t->s, D3D9_RS_FLOAT4, m->num);
+    if (c < 0) return -1;
+    const d3d9_constant *k = &t->s->constants[c];
+    if (k->elements > 1 || k->type != 3 || (k->cls != 2 && k->cls != 3)) return -1;
+    unsigned per = k->cls == 3 ? k->cols : k->rows;
+    *off = m->num - k->reg;
+    if ((k->cls == 3 ? k->rows : k->cols) != width || *off + count > per) return -1;
+    for (unsigned q = 0; q < count; q++)
+        if (preshader_of(t->s, D3D9_PRE_C, m->num + q) >= 0 || def_at(t->s, m->num + q)) return -1;
+    return c;
+}
+
+/* dot(v, register j of M) for every register j of matrix constant c at once: mul(v, M) when the
+ * registers are M's columns, mul(M, v) when they are its rows; as float4. */
+static ir_expr *matrix_product(d3d9_tx *t, uint32_t c, const d3d9_src *vs, unsigned width) {
+    const d3d9_constant *k = &t->s->constants[c];
+    const hfx_type *el = constant_type(t, k);
+    ir_var *mv = el ? constant_var(t, c, IRV_UNIFORM, el) : NULL;
+    ir_expr *v = mv ? hfx_d3d9_tx_read(t, vs) : NULL;
+    if (!v) return NULL;
+    if (width == 3) {
+        static const uint8_t xyz[3] = {0, 1, 2};
+        v = hfx_d3d9_tx_swizzle(t, v, xyz, 3);
+    }
+    bool cols = k->cls == 3;
+    ir_expr *e = hfx_ir_new_expr(t->c, IE_INTRIN, hfx_type_vector(t->c->types, B_FLOAT, cols ? el->cols : el->rows), t->loc, 2);
+    e->intrin = HFX_INTR_MUL;
+    e->a[cols ? 0 : 1] = v;
+    e->a[cols ? 1 : 0] = hfx_d3d9_tx_var(t, mv);
+    return hfx_d3d9_tx_float4(t, e);
+}
+
+ir_expr *hfx_d3d9_tx_matrix_mul(d3d9_tx *t, const d3d9_src *v, const d3d9_src *m, unsigned width, unsigned count) {
+    unsigned off;
+    int c = matrix_constant(t, m, count, width, &off);
+    return c >= 0 && off == 0 ? matrix_product(t, (uint32_t)c, v, width) : NULL;
+}
+
+/* Whether `next` continues the run `first` starts, as its m-th instruction. */
+static bool run_continues(const d3d9_inst *first, const d3d9_inst *next, unsigned off, unsigned m) {
+    return next->op == first->op && !next->predicated && !next->coissue && next->dst.type == first->dst.type &&
+           next->dst.num == first->dst.num && next->dst.mods == first->dst.mods && next->dst.shift == 0 &&
+           !next->dst.relative && next->dst.mask == 1u << (off + m) && same_src(&next->src[0], &first->src[0]) &&
+           next->src[1].type == D3D9_REG_CONST && next->src[1].num == first->src[1].num + m &&
+           !next->src[1].relative && next->src[1].mod == D3D9_SMOD_NONE && next->src[1].swizzle == 0xe4;
+}
+
+/* fxc writes mul(v, M) as one dp4 (dp3) per register of M: `dp4 r0.x, v0, c0; dp4 r0.y, v0, c1;
+ * ...`. The number of instructions from i that do so for one matrix parameter (component j from
+ * its register j, v not the register written), if 2 or more, else 0; *c its CTAB constant. Read
+ * back as one mul, the GLSL is the source's `M * v` instead of a gather of every register's
+ * components, which drivers take several times longer to compile (bench/bench_fx2_load). */
+static unsigned matrix_run(const d3d9_tx *t, uint32_t i, uint32_t *c) {
+    const d3d9_inst *in = &t->s->insts[i];
+    const d3d9_src *v = &in->src[0];
+    if ((in->op != D3D9_DP4 && in->op != D3D9_DP3) || in->predicated || in->coissue || in->dst.shift ||
+        in->dst.relative || v->relative || (v->type == in->dst.type && v->num == in->dst.num))
+        return 0;
+    unsigned width = in->op == D3D9_DP4 ? 4 : 3, off, n = 1;
+    if (matrix_constant(t, &in->src[1], 1, width, &off) < 0 || in->dst.mask != 1u << off) return 0;
+    while (off + n < 4 && i + n < t->s->inst_count && run_continues(in, &t->s->insts[i + n], off, n)) n++;
+    int k = n >= 2 ? matrix_constant(t, &in->src[1], n, width, &off) : -1;
+    if (k < 0) return 0;
+    *c = (uint32_t)k;
+    return n;
+}
+
+/* The n instructions matrix_run found: dst.(their components) = the product's. */
+static void translate_matrix_run(d3d9_tx *t, const d3d9_inst *in, uint32_t c, unsigned n) {
+    ir_expr *e = matrix_product(t, c, &in->src[0], in->op == D3D9_DP4 ? 4 : 3);
+    if (!e) {
+        if (!t->failed) hfx_d3d9_tx_fail(t, "%s could not be translated", hfx_d3d9_op_find(in->op)->name);
+        return;
+    }
+    d3d9_dst d = in->dst;
+    d.mask = (uint8_t)(((1u << n) - 1) * in->dst.mask);
+    hfx_d3d9_tx_write(t, &d, e);
+}
+
 struct ir_shader *hfx_d3d9_to_ir(struct ir_ctx *c, const d3d9_shader *s, bool packed) {
     d3d9_tx t;
     memset(&t, 0, sizeof t);
@@ -734,7 +851,14 @@ struct ir_shader *hfx_d3d9_to_ir(struct ir_ctx *c, const d3d9_shader *s, bool pa
     if (!model_supported(&t)) return NULL;
     for (uint32_t i = 0; i < s->inst_count && !t.failed; i++) {
         t.loc = (hfx_loc){s->file_index, 0, s->base + s->insts[i].offset};
-        hfx_d3d9_tx_inst(&t, &s->insts[i]);
+        uint32_t k;
+        unsigned n = matrix_run(&t, i, &k);
+        if (n) {
+            translate_matrix_run(&t, &s->insts[i], k, n);
+            i += n - 1;
+        } else {
+            hfx_d3d9_tx_inst(&t, &s->insts[i]);
+        }
     }
     if (t.failed) return NULL;
     if (t.depth != 1) { hfx_d3d9_tx_fail(&t, "flow control does not close"); return NULL; }

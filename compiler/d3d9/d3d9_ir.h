@@ -28,6 +28,7 @@ typedef struct d3d9_tx {
     ir_var **params; uint32_t param_count, param_cap;
     hfx_loc loc;              /* the instruction being translated */
     uint32_t regfile_size;
+    unsigned held_count;      /* locals made by held(), for unique names */
     bool failed, pack;
 } d3d9_tx;
 
@@ -46,6 +47,10 @@ ir_var *hfx_d3d9_tx_local(d3d9_tx *t, const char *name, const hfx_type *ty); /* 
 ir_var *hfx_d3d9_tx_texcoord(d3d9_tx *t, unsigned n);                /* the TEXCOORDn input parameter */
 bool hfx_d3d9_tx_ps1(const d3d9_tx *t);                              /* ps_1_1 .. ps_1_4 */
 void hfx_d3d9_tx_write(d3d9_tx *t, const d3d9_dst *d, ir_expr *value); /* dst.mask = value.mask, with _sat */
+/* mul of source v (width components) by the matrix parameter whose registers m .. m + count - 1
+ * are, from its first (m4x4 family), as float4; NULL (no error) when they are not such a whole
+ * parameter: the caller then reads register by register. */
+ir_expr *hfx_d3d9_tx_matrix_mul(d3d9_tx *t, const d3d9_src *v, const d3d9_src *m, unsigned width, unsigned count);
 void hfx_d3d9_tx_add(d3d9_tx *t, uint32_t block, ir_stmt *s);        /* appends s to blocks[block] */
 void hfx_d3d9_tx_emit(d3d9_tx *t, ir_expr *e);                        /* e as a statement of the current block */
 

@@ -37,6 +37,8 @@ static ir_expr *dot(d3d9_tx *t, ir_expr *a, ir_expr *b, unsigned n) {
 /* m4x4 family: component k = dot(src0, c[base + k]) over `width` components, for `rows` rows. */
 static ir_expr *matrix(d3d9_tx *t, const d3d9_inst *in, unsigned width, unsigned rows) {
     if (in->src[1].relative || in->src[1].mod) { hfx_d3d9_tx_fail(t, "a modified matrix operand is not supported yet"); return NULL; }
+    ir_expr *whole = hfx_d3d9_tx_matrix_mul(t, &in->src[0], &in->src[1], width, rows);
+    if (whole || t->failed) return whole; /* one product, as the source's mul */
     ir_expr *v = hfx_d3d9_tx_read(t, &in->src[0]);
     if (!v) return NULL;
     ir_expr *e = hfx_ir_new_expr(t->c, IE_CONSTRUCT, t->f4, t->loc, 4);

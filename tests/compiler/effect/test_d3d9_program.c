@@ -666,6 +666,58 @@ static void preshader_bool_and_int_registers(void) {
     close_fixture(&x);
 }
 
+/* fxc's mul(v, M) as a dp4 per register (vs_2_0: dp4 oPos.x, v0, c0 ... dp4 oPos.w, v0, c3, M
+ * column-major) is read as one product of the parameter; dp4 r0.x, r0, c0; dp4 r0.y, r0, c1
+ * is not (the second reads the r0.x the first wrote) and keeps D3D9's order. */
+static size_t columns_vs_tokens(uint32_t *w) {
+    static const ctab_const k[] = {{"M", 2, 0, 4, 3, 3, 4, 4, 1}, {"Tint", 2, 4, 1, 1, 3, 1, 4, 1}};
+    size_t n = 0;
+    w[n++] = VS(2, 0);
+    n += put_ctab(w + n, "hand", k, 2);
+    const uint32_t code[] = {
+        OP(0x1f, 2), 0x80000000u, DST(R_INPUT, 0, 0xf),
+        OP(0x09, 3), DST(R_RASTOUT, 0, 0x1), SRC(R_INPUT, 0, XYZW), SRC(R_CONST, 0, XYZW),
+        OP(0x09, 3), DST(R_RASTOUT, 0, 0x2), SRC(R_INPUT, 0, XYZW), SRC(R_CONST, 1, XYZW),
+        OP(0x09, 3), DST(R_RASTOUT, 0, 0x4), SRC(R_INPUT, 0, XYZW), SRC(R_CONST, 2, XYZW),
+        OP(0x09, 3), DST(R_RASTOUT, 0, 0x8), SRC(R_INPUT, 0, XYZW), SRC(R_CONST, 3, XYZW),
+        OP(0x01, 2), DST(R_TEMP, 0, 0xf), SRC(R_CONST, 4, XYZW),
+        OP(0x09, 3), DST(R_TEMP, 0, 0x1), SRC(R_TEMP, 0, XYZW), SRC(R_CONST, 0, XYZW),
+        OP(0x09, 3), DST(R_TEMP, 0, 0x2), SRC(R_TEMP, 0, 0x00), SRC(R_CONST, 3, XYZW),
+        OP(0x01, 2), DST(R_ATTROUT, 0, 0xf), SRC(R_TEMP, 0, XYZW),
+        END_TOKEN};
+    memcpy(w + n, code, sizeof code);
+    return n + sizeof code / 4;
+}
+
+static void matrix_columns_drawn(void) {
+    fixture x;
+    open_fixture(&x, false);
+    static const uint32_t ps[] = {PS(2, 0), OP(0x1f, 2), 0x80000000u, DST(R_INPUT, 0, 0xf),
+                                  OP(0x01, 2), DST(R_COLOROUT, 0, 0xf), SRC(R_INPUT, 0, XYZW), END_TOKEN};
+    uint32_t vw[256];
+    hfx_fx_program prog;
+    int rc = hfx_codegen_d3d9_program(x.cg, decode(&x, vw, columns_vs_tokens(vw), 0),
+                                      decode(&x, ps, sizeof ps / 4, 1024), false, &prog);
+    CHECK_INT(rc, 0);
+    if (rc == 0) {
+        const char *vs = prog.code[0][HFX_TARGET_GLSL330].data;
+        CHECK(strstr(vs, "hfx_out_POSITION0 = M * hfx_in_POSITION0;") != NULL); /* one product */
+        const char *d = strstr(vs, "dot("); /* the r0 pair stays two dot products */
+        CHECK(d && (d = strstr(d + 1, "dot(")) && !strstr(d + 1, "dot("));
+        if (gl) {
+            unsigned char left[4], right[4];
+            draw(&prog, x.fx, left, right);
+            /* M moves the quad right by 0.5 (2 of 8 pixels): column 0 stays clear */
+            near(left, 0, 0, 0, 0);
+            /* c0 = M's column 0 = (1, 0, 0, 0.5), c3 = (0, 0, 0, 1); r0 = Tint = (0.2, 0.4, 0.6, 0.8);
+             * r0.x = dot(r0, c0) = 0.2 + 0.4 = 0.6; r0.y = dot(r0.xxxx, c3) = the new r0.x = 0.6 */
+            near(right, 0.6f, 0.6f, 0.6f, 0.8f);
+        }
+        hfx_fx_program_clear(&prog);
+    }
+    close_fixture(&x);
+}
+
 int main(void) {
     gl = test_gl_create(W, H);
     if (gl) CHECK_INT(test_gl_fns_load(&f), 0);
@@ -682,6 +734,7 @@ int main(void) {
     RUN(preshader_bool_and_int_registers);
     RUN(parameter_bound_loops_drawn);
     RUN(semantic_matrices_and_indexes_drawn);
+    RUN(matrix_columns_drawn);
     if (gl) test_gl_destroy(gl);
     return test_summary();
 }
