@@ -185,6 +185,9 @@ void hfx_bc_prune_constants(bc_gen *g);                      /* parameters and d
 /* A swizzle's unread positions as src_of leaves them (dot: repeating the last read one). */
 uint8_t hfx_bc_tidy(uint8_t sw, unsigned positions, bool dot);
 
+/* --- bc_mad.c --- */
+void hfx_bc_fuse_mad(bc_gen *g);                             /* mul then the add reading it: one mad */
+
 /* --- bc_sched.c --- */
 /* The temporaries packed (hfx_bc_renumber); when they are more than the model's, the code is
  * first reordered so that each value is computed just before it is read. How many. */

@@ -116,6 +116,7 @@ const uint32_t *hfx_bc_write(ir_ctx *c, const ir_shader *sh, const char *profile
     hfx_bc_sink(&g);
     hfx_bc_dead_code(&g);
     hfx_bc_merge_mova(&g);
+    hfx_bc_fuse_mad(&g);
     hfx_bc_prune_constants(&g);
     uint32_t temps = hfx_bc_allocate(&g);
     if (temps > hfx_bc_temp_limit(&g)) {
