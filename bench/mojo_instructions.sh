@@ -6,9 +6,12 @@
 # frame a clear, the side's Apply (hfx's; MojoShader's CommitChanges, ProgramReady and vertex
 # attributes; hfx's attributes stay bound in the mesh's VAO, as an engine keeps them) and one
 # draw of hfxview's sphere (SpriteEffect: the screen rectangle) into 128x128, XNA's default
-# states; the two pictures compared (largest channel difference, /255).
+# states; the two pictures compared (largest channel difference, /255). hfx's frames are drawn
+# as FNA draws (XNA 4's Apply, no Begin / End, hfx_device_sync after the application's own GL
+# state; MojoShader's side begins without saving state, as FNA3D does); BEGIN_END=1 wraps hfx's
+# frames in hfx_effect_begin / end instead (D3DX's save and restore: see mojo_compare.c).
 #
-#   [CALLGRIND=1] bench/mojo_instructions.sh BUILD [Effect ...]     (all six when none given)
+#   [CALLGRIND=1] [BEGIN_END=1] bench/mojo_instructions.sh BUILD [Effect ...]     (all six when none given)
 #
 # By default the kernel's counter of user-space instructions (perf_event_open, what `perf stat -e
 # instructions:u` reads) brackets the frames: a few minutes for the 97 variants, counts within a
@@ -34,6 +37,10 @@ for f in $($fna ls-tree -r --name-only HEAD | grep 'StockEffects/\(HLSL\|FXB\)/'
     $fna show "HEAD:$f" > "$src/$(basename "$f")"
 done
 effects=("$@")
+frame=xna; [ -z "${BEGIN_END:-}" ] || frame=begin-end
+# a mojo_compare from before --frame takes no such option: its frames are begin-end
+usage=$("$compare" --frame xna 2>&1 || true)
+[[ $usage == *"[--frame"* ]] || frame=
 [ ${#effects[@]} -gt 0 ] || effects=(BasicEffect AlphaTestEffect DualTextureEffect EnvironmentMapEffect SkinnedEffect SpriteEffect)
 # Variants (ShaderIndex values the C# classes use) and the values docs/stock-effects.md draws with.
 args_of() {
@@ -51,7 +58,7 @@ for fx in "${effects[@]}"; do
     if [ -n "${CALLGRIND:-}" ]; then
         # shellcheck disable=SC2086
         (cd "$src" && LP_NUM_THREADS=0 valgrind --tool=callgrind --separate-threads=yes --instr-atstart=no \
-            --callgrind-out-file="$out/$fx.cg" "$compare" --bench 20 $pre "$fx.fxb" "$fx.fx" $post > "$out/$fx.txt" 2>&1) || true
+            --callgrind-out-file="$out/$fx.cg" "$compare" --bench 20 ${frame:+--frame $frame} $pre "$fx.fxb" "$fx.fx" $post > "$out/$fx.txt" 2>&1) || true
         # Each dump: "desc: Trigger: Client Request: LABEL", then "summary: N": as `count LABEL N`.
         for ((i = 1; ; i++)); do [ -e "$out/$fx.cg.$i-01" ] || break
             awk '/^desc: Trigger: Client Request: / { l = $0; sub(/^desc: Trigger: Client Request: /, "", l) }
@@ -62,7 +69,7 @@ for fx in "${effects[@]}"; do
         # up to 10x more on hfx's side.
         for run in 1 2; do
             # shellcheck disable=SC2086
-            (cd "$src" && LP_NUM_THREADS=0 "$compare" --bench 20 $pre "$fx.fxb" "$fx.fx" $post > "$out/$fx.txt" 2>&1) || true
+            (cd "$src" && LP_NUM_THREADS=0 "$compare" --bench 20 ${frame:+--frame $frame} $pre "$fx.fxb" "$fx.fx" $post > "$out/$fx.txt" 2>&1) || true
         done
     fi
 done

@@ -3,8 +3,8 @@
  * profile: MojoShader's glsl120 needs it), with hfxview's mesh, camera, parameter bindings and
  * textures on both sides. Run by hand; built only with -DMOJOSHADER_DIR (bench/mojo/README.md).
  *
- *   mojo_compare [--vary NAME=FIRST..LAST] [--out DIR] [--bench N] [--profile P] EFFECT.fxo
- *                SOURCE.fx [hfxview options: --size, --mesh, --set, -D, -I...]
+ *   mojo_compare [--vary NAME=FIRST..LAST] [--out DIR] [--bench N] [--frame xna|begin-end] [--profile P]
+ *                EFFECT.fxo SOURCE.fx [hfxview options: --size, --mesh, --set, -D, -I...]
  *
  * For every technique that has a pass (and every value of --vary's parameter, XNA's ShaderIndex),
  * prints `alike|DIFFER max=M over=K technique variant`: M the largest channel difference
@@ -12,7 +12,8 @@
  * FNA draws with the one bound before); --out DIR writes both pictures of a difference.
  * --bench N: each side draws N frames between a reset and a dump labelled
  * "effect|technique|variant|side" under callgrind, and prints `count LABEL INSTRUCTIONS` from the
- * kernel's counter (bench/mojo_instructions.sh). Exit: 0 all alike, 1 a difference,
+ * kernel's counter (bench/mojo_instructions.sh); hfx's frames as --frame says (bench_frame:
+ * xna, the default, as FNA draws; begin-end, with hfx_effect_begin / end around the draw). Exit: 0 all alike, 1 a difference,
  * 2 usage, 3 MojoShader refused the effect, 4 hfx did not load the source. */
 #define _GNU_SOURCE 1 /* syscall (perf_event_open) */
 #include "gl.h" /* glcorearb.h before osmesa.h, as context.c does */
@@ -58,6 +59,7 @@ enum { EXIT_ALIKE = 0, EXIT_DIFFER = 1, EXIT_USAGE = 2, EXIT_MOJO = 3, EXIT_HFX 
 typedef struct run {
     const char *fxo, *out_dir, *profile, *vary;
     int first, last, bench;
+    int begin_end;            /* --frame begin-end: hfx's benchmark frames save and restore state */
     hv_options opt;
     OSMesaContext osmesa;
     unsigned char *pixels;
@@ -83,7 +85,7 @@ static void *osmesa_loader(const char *name) {
 
 static int usage(const char *msg) {
     fprintf(stderr, "mojo_compare: %s\nusage: mojo_compare [--vary NAME=FIRST..LAST] [--out DIR] [--bench N] "
-                    "[--profile P] EFFECT.fxo SOURCE.fx [hfxview options]\n", msg);
+                    "[--frame xna|begin-end] [--profile P] EFFECT.fxo SOURCE.fx [hfxview options]\n", msg);
     return EXIT_USAGE;
 }
 
@@ -95,6 +97,9 @@ static int parse(run *r, int argc, char **argv) {
         if (!strcmp(argv[i], "--out")) r->out_dir = argv[i + 1];
         else if (!strcmp(argv[i], "--profile")) r->profile = argv[i + 1];
         else if (!strcmp(argv[i], "--bench")) r->bench = atoi(argv[i + 1]);
+        else if (!strcmp(argv[i], "--frame") && (!strcmp(argv[i + 1], "xna") || !strcmp(argv[i + 1], "begin-end")))
+            r->begin_end = !strcmp(argv[i + 1], "begin-end");
+        else if (!strcmp(argv[i], "--frame")) return usage("--frame xna|begin-end");
         else if (!strcmp(argv[i], "--vary")) {
             const char *eq = strchr(argv[i + 1], '=');
             if (!eq || sscanf(eq + 1, "%d..%d", &r->first, &r->last) != 2) return usage("--vary NAME=FIRST..LAST");
@@ -192,16 +197,23 @@ static int draw_technique(run *r, hfx_technique *t) {
 
 /* A benchmark frame as an engine draws: the vertex arrays were bound once for the pass's
  * program (bind_once), so each frame is Apply and the draw call; hfxview's drawing looks every
- * attribute up by semantic on every draw, which cost more than the shaders' difference. */
+ * attribute up by semantic on every draw, which cost more than the shaders' difference.
+ * As FNA draws (XNA 4's EffectPass.Apply, no Begin / End: FNA3D begins MojoShader's effect
+ * without saving state, as the MojoShader side does here), nothing is restored after the draw:
+ * hfx_device_sync, because the application set GL state itself (docs/runtime.md), then Apply.
+ * hfx_effect_begin / end would put the application's program, textures and samplers back every
+ * frame, and each change of those makes llvmpipe copy its ~33 KB fragment state at the next
+ * clear and draw (1.8% of SpriteEffect's frame; --frame begin-end measures it). */
 static int bench_frame(run *r, hfx_technique *t) {
-    int rc = HFX_OK;
+    int rc = HFX_OK, begin_end = r->begin_end;
     hv_set_default_states(&r->gl);
-    hfx_effect_begin(r->fx);
+    if (begin_end) hfx_effect_begin(r->fx);
+    else hfx_device_sync(r->dev);
     r->gl.BindVertexArray(r->gpu.vao);
     for (size_t i = 0; i < hfx_technique_pass_count(t) && rc == HFX_OK; i++)
         if ((rc = hfx_pass_apply(hfx_technique_pass(t, i))) == HFX_OK)
             r->gl.DrawElements(GL_TRIANGLES, r->gpu.index_count, GL_UNSIGNED_INT, NULL);
-    hfx_effect_end(r->fx);
+    if (begin_end) hfx_effect_end(r->fx);
     r->gl.BindVertexArray(0);
     return rc;
 }
@@ -279,6 +291,10 @@ static void count(run *r, hfx_technique *t, size_t ti, int variant, int mojo) {
     mj_reset(r->mojo); /* after the other side's draws */
     hfx_device_sync(r->dev);
     if (!mojo) bind_once(r, t);
+    /* xna frames leave the effect's program and units bound: one Begin / End around them, not
+     * counted, hands the other side the GL state the begin-end frames leave */
+    int around = !mojo && !r->begin_end;
+    if (around) hfx_effect_begin(r->fx);
     for (int i = 0; i < 2; i++) mojo ? draw_mojo(r, t, ti, 0, NULL) : draw_hfx(r, t, NULL);
     r->gl.Finish();
     if (r->perf >= 0) ioctl(r->perf, PERF_EVENT_IOC_RESET, 0), ioctl(r->perf, PERF_EVENT_IOC_ENABLE, 0);
@@ -291,6 +307,7 @@ static void count(run *r, hfx_technique *t, size_t ti, int variant, int mojo) {
     uint64_t n = 0;
     if (r->perf >= 0 && ioctl(r->perf, PERF_EVENT_IOC_DISABLE, 0) == 0 && read(r->perf, &n, sizeof n) == sizeof n)
         printf("count %s %llu\n", label, (unsigned long long)n);
+    if (around) hfx_effect_end(r->fx);
 }
 
 static int one(run *r, hfx_technique *t, size_t ti, int variant) {

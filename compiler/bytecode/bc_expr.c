@@ -179,6 +179,25 @@ static bc_val compare(bc_gen *g, hfx_op op, bc_val a, bc_val b) {
     return hfx_bc_op3(g, D3D9_CMP, n, d, op == OP_GE ? one_c(g) : zero_c(g), op == OP_GE ? zero_c(g) : one_c(g));
 }
 
+/* `a < b ? x : y` in a pixel shader: one cmp on a - b (>= 0 picks y), not the comparison's 0 / 1
+ * and a cmp on it, as fxc writes it (>: b - a < 0; <=: b - a >= 0; >=: a - b >= 0). Vectors and
+ * scalars; matrices, structs and arrays take the general path. */
+static bool select_compare(bc_gen *g, const ir_expr *e, bc_obj *out) {
+    const ir_expr *c = e->a[0];
+    if (g->stage != D3D9_PS || (e->type->kind != TY_SCALAR && e->type->kind != TY_VECTOR) || c->kind != IE_BINARY ||
+        (c->op != OP_LT && c->op != OP_GT && c->op != OP_LE && c->op != OP_GE))
+        return false;
+    bc_val a = hfx_bc_expr1(g, c->a[0]), b = hfx_bc_expr1(g, c->a[1]);
+    hfx_op op = c->op;
+    if (op == OP_GT || op == OP_LE) { bc_val t = a; a = b; b = t; op = op == OP_GT ? OP_LT : OP_GE; }
+    unsigned n = a.n > b.n ? a.n : b.n;
+    bc_val d = is_zero_const(g, &b) ? a : hfx_bc_op2(g, D3D9_ADD, n, a, hfx_bc_neg(b));
+    bc_val x = hfx_bc_expr1(g, e->a[1]), y = hfx_bc_expr1(g, e->a[2]);
+    unsigned m = x.n > y.n ? x.n : y.n;
+    *out = one(g, op == OP_LT ? hfx_bc_op3(g, D3D9_CMP, m, d, y, x) : hfx_bc_op3(g, D3D9_CMP, m, d, x, y));
+    return true;
+}
+
 /* --- arithmetic --- */
 
 /* v's values when it reads a def register (its modifier applied), for folding. */
@@ -857,6 +876,8 @@ bc_obj hfx_bc_expr(bc_gen *g, const ir_expr *e) {
         return incdec(g, e);
     case IE_BINARY: return binary(g, e);
     case IE_SELECT: {
+        bc_obj fused;
+        if (select_compare(g, e, &fused)) return fused;
         bc_val c = hfx_bc_expr1(g, e->a[0]);
         bc_obj a = hfx_bc_expr(g, e->a[1]), b = hfx_bc_expr(g, e->a[2]);
         bc_obj o = {HFX_NEW_ARRAY(g->c->arena, bc_val, a.count ? a.count : 1), a.count, false};

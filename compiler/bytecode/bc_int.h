@@ -186,7 +186,12 @@ void hfx_bc_prune_constants(bc_gen *g);                      /* parameters and d
 uint8_t hfx_bc_tidy(uint8_t sw, unsigned positions, bool dot);
 
 /* --- bc_mad.c --- */
-void hfx_bc_fuse_mad(bc_gen *g);                             /* mul then the add reading it: one mad */
+void hfx_bc_fuse_mad(bc_gen *g);                              /* a mul's temporary added once: a mad */
+
+/* --- bc_ports.c --- */
+/* Registers an instruction reads over the model's read ports copied into temporaries before it;
+ * temps: the renumbered temporaries' count. Returns the count after. */
+uint32_t hfx_bc_read_ports(bc_gen *g, uint32_t temps);
 
 /* --- bc_sched.c --- */
 /* The temporaries packed (hfx_bc_renumber); when they are more than the model's, the code is

@@ -267,8 +267,40 @@ static bc_obj tex(bc_gen *g, const ir_expr *e) {
     return one(g, r);
 }
 
+/* A scalar the last instruction just computed into a fresh temporary, computed into all four
+ * components there instead (each source's component replicated): texkill reads it without a
+ * mov, as fxc's `cmp r1, r1.w, c0.w, c0.z` / `texkill r1`. */
+static bool widen_last(bc_gen *g, bc_val *x) {
+    if (x->n != 1 || x->type != D3D9_REG_TEMP || x->mod || x->rel || !x->own || g->last_fresh < 0 ||
+        (uint32_t)g->last_fresh + 1 != g->inst_count)
+        return false;
+    d3d9_inst *in = &g->insts[g->last_fresh];
+    const d3d9_op_info *info = hfx_d3d9_op_find(in->op);
+    unsigned c = x->sw[0];
+    if (!info || !in->has_dst || in->predicated || in->dst.type != D3D9_REG_TEMP || in->dst.num != x->num ||
+        in->dst.mask != 1u << c || (info->flags & (D3D9_OPF_FLOW | D3D9_OPF_MATRIX | D3D9_OPF_TEX)))
+        return false;
+    switch (in->op) {
+    case D3D9_ADD: case D3D9_MUL: case D3D9_MAD: case D3D9_CMP: case D3D9_MIN: case D3D9_MAX: case D3D9_MOV:
+    case D3D9_FRC: case D3D9_LRP: case D3D9_ABS:
+        for (unsigned k = 0; k < in->src_count; k++) in->src[k].swizzle = (uint8_t)((in->src[k].swizzle >> (2 * c) & 3) * 0x55u);
+        break;
+    case D3D9_DP3: case D3D9_DP4: case D3D9_RCP: case D3D9_RSQ: case D3D9_EXP: case D3D9_LOG: break;
+    default: return false;
+    }
+    in->dst.mask = 0xf;
+    *x = hfx_bc_reg(D3D9_REG_TEMP, x->num, 4);
+    x->own = true;
+    return true;
+}
+
 /* texkill on x (up to three components, the last replicated into the rest). */
 static void kill(bc_gen *g, bc_val x) {
+    if (widen_last(g, &x)) {
+        hfx_bc_emit(g, D3D9_TEXKILL, &x, 0xf, NULL, 0);
+        hfx_bc_release(g, x);
+        return;
+    }
     bc_val k = x;
     bool plain = x.type == D3D9_REG_TEMP && !x.rel && !x.mod && x.n == 3; /* texkill only reads it */
     for (unsigned i = 0; i < x.n && plain; i++) plain &= x.sw[i] == i;

@@ -25,7 +25,9 @@ static bool writes(const d3d9_inst *in, unsigned type, unsigned num) {
 /* Instructions whose destination must stay a temporary (or has a fixed mask). */
 static bool movable_writer(const bc_gen *g, const d3d9_inst *in, unsigned to_type) {
     switch (in->op) {
-    case D3D9_SINCOS: case D3D9_NRM: case D3D9_CRS: case D3D9_LIT: case D3D9_MOVA: case D3D9_TEXKILL:
+    case D3D9_NRM: /* into an output: written as dp3 / rsq / mul (expand_nrm) */
+        return !in->dst.relative && !in->predicated && !in->dst.mods;
+    case D3D9_SINCOS: case D3D9_CRS: case D3D9_LIT: case D3D9_MOVA: case D3D9_TEXKILL:
     case D3D9_TEX: case D3D9_TEXLDL: case D3D9_TEXLDD: case D3D9_DSX: case D3D9_DSY:
         return to_type == D3D9_REG_TEMP && in->op != D3D9_MOVA && in->op != D3D9_TEXKILL && in->op != D3D9_SINCOS &&
                !(g->stage == D3D9_PS && g->model < D3D9_SM(3, 0) && (in->op == D3D9_TEX)) ;
@@ -80,6 +82,38 @@ static void move_component(d3d9_inst *w, unsigned from, unsigned to) {
     w->dst.mask = (uint8_t)(1u << to);
 }
 
+/* nrm rT.xyz, S whose value only a copy into output X reads: dp3 rT.x, S, S / rsq rT.x, rT.x /
+ * mul X.xyz, rT.x, S where the nrm was, as fxc writes a normal into an output (3 slots, against
+ * nrm's 3 and the mov). S must not be rT (the dp3 would overwrite what the mul reads). */
+static bool expand_nrm(bc_gen *g, uint32_t w, uint32_t at) {
+    d3d9_inst nrm = g->insts[w], mov = g->insts[at];
+    const d3d9_src *S = &nrm.src[0];
+    if (nrm.dst.type != D3D9_REG_TEMP || (S->type == D3D9_REG_TEMP && S->num == nrm.dst.num)) return false;
+    if (!HFX_ARENA_GROW(g->c->arena, g->insts, g->inst_count, g->inst_cap, 64)) return false;
+    memmove(&g->insts[at], &g->insts[at + 1], (g->inst_count - at - 1) * sizeof *g->insts); /* the mov goes */
+    memmove(&g->insts[w + 3], &g->insts[w + 1], (g->inst_count - 1 - w - 1) * sizeof *g->insts);
+    g->inst_count++;
+    d3d9_src t = {.type = D3D9_REG_TEMP, .num = nrm.dst.num}; /* rT.x */
+    d3d9_inst *dp = &g->insts[w], *rsq = dp + 1, *mul = dp + 2;
+    *dp = nrm;
+    dp->op = D3D9_DP3;
+    dp->dst.mask = 1;
+    dp->src[1] = *S;
+    dp->src_count = 2;
+    *rsq = nrm;
+    rsq->op = D3D9_RSQ;
+    rsq->dst.mask = 1;
+    rsq->src[0] = t;
+    rsq->src_count = 1;
+    *mul = nrm;
+    mul->op = D3D9_MUL;
+    mul->dst = mov.dst;
+    mul->src[0] = t;
+    mul->src[1] = *S;
+    mul->src_count = 2;
+    return true;
+}
+
 static bool try_sink(bc_gen *g, uint32_t at) {
     d3d9_inst *m = &g->insts[at];
     int from;
@@ -108,6 +142,8 @@ static bool try_sink(bc_gen *g, uint32_t at) {
         remaining &= ~(unsigned)in->dst.mask;
     }
     if (remaining || !n || (from >= 0 && n != 1)) return false;
+    if (g->insts[writers[0]].op == D3D9_NRM && to != D3D9_REG_TEMP)
+        return n == 1 && from < 0 && expand_nrm(g, writers[0], at);
     if (from >= 0) {
         const d3d9_op_info *info = hfx_d3d9_op_find(g->insts[writers[0]].op);
         if (!info || (info->flags & (D3D9_OPF_TEX | D3D9_OPF_MATRIX)) || g->insts[writers[0]].op == D3D9_DP2ADD) return false;

@@ -165,7 +165,9 @@ static uint32_t read_inst(d3d9_reader *r, uint32_t i) {
     in->coissue = (tok >> 30) & 1;
     in->predicated = (tok >> 28) & 1;
     in->offset = i * 4;
+    uint32_t errors = r->diags->errors;
     hfx_d3d9_read_operands(r, in, op, i, len);
+    if (r->diags->errors == errors) hfx_d3d9_check_ports(r, in, op, i);
     track_flow(r, op, i);
     count_loops(r);
     return i + 1 + len;

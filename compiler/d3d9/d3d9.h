@@ -211,6 +211,23 @@ int hfx_d3d9_disassemble_blob(hfx_arena *arena, hfx_diags *diags, const d3d9_inp
  * how `hfxc --disassemble` tells a raw shader blob (.vso, .pso, fxc /T ps_2_0) from an effect. */
 bool hfx_d3d9_is_shader(const void *data, size_t size);
 
+/* Read ports (Microsoft's "Registers" table of each model): how many different registers of a
+ * type one instruction may read. SM2 / SM3: r 3, every other type 1 (vPos and vFace are one each);
+ * ps_1_1..1_3: c 2, v 2, r 2, t 2 (1_1) or 3; ps_1_4: c 2, v 2, r 3, t 1. */
+unsigned hfx_d3d9_read_ports(d3d9_stage stage, uint8_t model, unsigned type);
+
+/* Whether source k of `in` takes a read port: SM2's sincos reads its two macro constants
+ * (D3DSINCOSCONST1 / 2, fxc's c registers beside the angle) apart from the ports. */
+bool hfx_d3d9_port_source(const d3d9_inst *in, uint8_t model, unsigned k);
+
+/* Whether two sources read the same register (type, number, and the index of a relative one). */
+bool hfx_d3d9_same_register(const d3d9_src *a, const d3d9_src *b);
+
+/* The first register type `in` reads more different registers of than the model's read ports
+ * allow, or -1; *count: how many it reads. The reader refuses such an instruction (X5003), as
+ * D3D9's runtime does; the bytecode writer copies one of them into a temporary first. */
+int hfx_d3d9_port_excess(d3d9_stage stage, uint8_t model, const d3d9_inst *in, unsigned *count);
+
 /* Instruction slots fxc counts for s (its listing's "approximately N"): arithmetic and texture. */
 void hfx_d3d9_count_slots(const d3d9_shader *s, uint32_t *arith, uint32_t *tex);
 

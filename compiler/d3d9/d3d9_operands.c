@@ -2,6 +2,8 @@
  * and stage have (Microsoft's "Registers" pages per model). */
 #include "d3d9/d3d9_int.h"
 
+#include <stdio.h>
+
 /* The register type of a parameter token: bits 28-30 and 11-12. */
 static unsigned reg_type(uint32_t t) { return ((t >> 28) & 7) | ((t >> 8) & 0x18); }
 
@@ -166,4 +168,91 @@ void hfx_d3d9_read_operands(d3d9_reader *r, d3d9_inst *in, const d3d9_op_info *o
     if (c.short_) hfx_d3d9_fail(r, i, X_D3D9_OPERAND, "%s needs %u operand tokens, has %u", op->name, want, len);
     else if (c.at != c.end) hfx_d3d9_fail(r, i, X_D3D9_OPERAND, "%s has %u operand tokens, expected %u", op->name,
                                       len, c.at - i - 1);
+}
+
+/* --- read ports --- */
+
+unsigned hfx_d3d9_read_ports(d3d9_stage st, uint8_t m, unsigned type) {
+    if (st == D3D9_PS && m < D3D9_SM(2, 0)) switch (type) { /* ps_1_x's "Read Port Limit" table */
+        case D3D9_REG_CONST: case D3D9_REG_INPUT: return 2;
+        case D3D9_REG_TEMP: return m == D3D9_SM(1, 4) ? 3 : 2;
+        case D3D9_REG_ADDR: return m == D3D9_SM(1, 1) ? 2 : m == D3D9_SM(1, 4) ? 1 : 3;
+        default: return 1;
+        }
+    return type == D3D9_REG_TEMP ? 3 : type == D3D9_REG_MISC ? 2 : 1;
+}
+
+bool hfx_d3d9_port_source(const d3d9_inst *in, uint8_t m, unsigned k) {
+    return !(in->op == D3D9_SINCOS && m < D3D9_SM(3, 0) && k > 0);
+}
+
+bool hfx_d3d9_same_register(const d3d9_src *a, const d3d9_src *b) {
+    if (a->type != b->type || a->num != b->num || a->relative != b->relative) return false;
+    return !a->relative || (a->rel_type == b->rel_type && a->rel_num == b->rel_num && a->rel_comp == b->rel_comp);
+}
+
+/* Sources of `in` that take a port, texkill's operand (its destination token) among them. */
+static unsigned port_sources(const d3d9_inst *in, uint8_t m, d3d9_src *out) {
+    unsigned n = 0;
+    for (unsigned k = 0; k < in->src_count && k < 4; k++)
+        if (hfx_d3d9_port_source(in, m, k)) out[n++] = in->src[k];
+    if (in->op == D3D9_TEXKILL && in->has_dst)
+        out[n++] = (d3d9_src){.type = in->dst.type, .num = in->dst.num, .relative = in->dst.relative,
+                              .rel_type = in->dst.rel_type, .rel_num = in->dst.rel_num, .rel_comp = in->dst.rel_comp};
+    return n;
+}
+
+int hfx_d3d9_port_excess(d3d9_stage st, uint8_t m, const d3d9_inst *in, unsigned *count) {
+    d3d9_src s[5];
+    unsigned n = port_sources(in, m, s);
+    for (unsigned k = 0; k < n; k++) {
+        bool first = true; /* each type counted once, at its first source */
+        for (unsigned j = 0; j < k; j++) first &= s[j].type != s[k].type;
+        if (!first) continue;
+        unsigned distinct = 0;
+        for (unsigned j = k; j < n; j++) {
+            bool fresh = s[j].type == s[k].type;
+            for (unsigned i = k; i < j && fresh; i++) fresh = !hfx_d3d9_same_register(&s[i], &s[j]);
+            distinct += fresh;
+        }
+        if (distinct > hfx_d3d9_read_ports(st, m, s[k].type)) {
+            *count = distinct;
+            return s[k].type;
+        }
+    }
+    return -1;
+}
+
+/* A register as fxc's listing names it: c5, c5[a0.x], t0, vFace. */
+static void put_reg(char *buf, size_t size, d3d9_stage st, const d3d9_src *s) {
+    static const char *const names[] = {"r", "v", "c", "a", "oPos", "oD", "o", "i", "oC", "oDepth", "s", "c", "c", "c",
+                                        "b", "aL", "h", "vPos", "l", "p"};
+    const char *name = s->type < 20 ? names[s->type] : "?";
+    if (s->type == D3D9_REG_ADDR && st == D3D9_PS) name = "t";
+    if (s->type == D3D9_REG_MISC) { snprintf(buf, size, "%s", s->num ? "vFace" : "vPos"); return; }
+    if (!s->relative) { snprintf(buf, size, "%s%u", name, s->num); return; }
+    if (s->rel_type == D3D9_REG_LOOP) snprintf(buf, size, "%s%u[aL]", name, s->num);
+    else snprintf(buf, size, "%s%u[a0.%c]", name, s->num, "xyzw"[s->rel_comp & 3]);
+}
+
+void hfx_d3d9_check_ports(d3d9_reader *r, const d3d9_inst *in, const d3d9_op_info *op, uint32_t at) {
+    unsigned count;
+    d3d9_stage st = r->sh->stage;
+    uint8_t m = r->sh->model;
+    int type = hfx_d3d9_port_excess(st, m, in, &count);
+    if (type < 0) return;
+    d3d9_src s[5];
+    unsigned n = port_sources(in, m, s), listed = 0;
+    char regs[96] = "", one[24];
+    for (unsigned k = 0; k < n; k++) {
+        bool fresh = s[k].type == (unsigned)type;
+        for (unsigned j = 0; j < k && fresh; j++) fresh = !hfx_d3d9_same_register(&s[j], &s[k]);
+        if (!fresh) continue;
+        put_reg(one, sizeof one, st, &s[k]);
+        if (listed++) strcat(regs, ", ");
+        strcat(regs, one);
+    }
+    unsigned ports = hfx_d3d9_read_ports(st, m, (unsigned)type);
+    hfx_d3d9_fail(r, at, X_D3D9_OPERAND, "%s reads %u different registers (%s); %s has %u read port%s for them",
+                  op->name, count, regs, hfx_d3d9_model_name(st, m), ports, ports == 1 ? "" : "s");
 }

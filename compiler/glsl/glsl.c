@@ -472,7 +472,10 @@ static void declare_uniform(gp *p, const ir_var *v) {
     int k = v->param != HFX_NONE && !p->spirv ? switch_number(p, v) : -1;
     if (k >= 0) hfx_sb_printf(p->out, "#ifdef HFX_SWITCH_%d\nconst bool %s = HFX_SWITCH_%d;\n#else\n", k, v->glsl, k);
     sbuf decl = {.arena = p->c->arena};
-    hfx_glsl_decl(p, &decl, v->type, v->glsl);
+    if (hfx_glsl_is_padded(p, v)) /* one zero element past the end (hfx_glsl_find_padded) */
+        hfx_glsl_decl(p, &decl, v->type->elem, hfx_arena_printf(p->c->arena, "%s[%u]", v->glsl, v->type->array_len + 1));
+    else
+        hfx_glsl_decl(p, &decl, v->type, v->glsl);
     hfx_glsl_uniform(p, v, v->glsl, decl.d ? decl.d : "", is_sampler_type(v->type));
     if (k >= 0) hfx_sb_put(p->out, "#endif\n");
 }
@@ -540,6 +543,7 @@ char *hfx_glsl_print(ir_ctx *c, const ir_shader *sh, ir_stage stage, const glsl_
         if (p.in_count < 0 || p.out_count < 0) return NULL;
     }
     p.out = &decls;
+    hfx_glsl_find_padded(&p);
     if (sh) declare_globals(&p);
     p.out = &funcs;
     if (sh) {

@@ -571,7 +571,20 @@ static void print_swizzle(gp *p, const ir_expr *e, int max) {
         return;
     }
     if (hfx_glsl_is_matrix(x->type)) {
-        unsigned cols = x->type->cols;
+        unsigned cols = x->type->cols, row = e->comps[0] / cols, same = 1;
+        while (same < n && e->comps[same] / cols == row) same++;
+        if (same == n && n > 1) { /* one HLSL row, which is one GLSL column: m[r] and its components (a
+                            translated D3D9 register is one, and drivers compile a gather slower) */
+            hfx_glsl_expr(p, x, PREC_POSTFIX);
+            hfx_sb_printf(p->out, "[%u]", row);
+            bool whole = n == cols;
+            for (unsigned i = 0; i < n && whole; i++) whole = e->comps[i] % cols == i;
+            if (!whole) {
+                hfx_sb_put(p->out, ".");
+                for (unsigned i = 0; i < n; i++) hfx_sb_printf(p->out, "%c", "xyzw"[e->comps[i] % cols]);
+            }
+            return;
+        }
         if (n > 1) hfx_sb_printf(p->out, "%s(", hfx_glsl_type(p, e->type));
         for (unsigned i = 0; i < n; i++) {
             if (i) hfx_sb_put(p->out, ", ");
@@ -597,6 +610,72 @@ static const char *guard_test(const gp *p, const ir_expr *e, const char **suffix
     }
     if (!p->legacy) return hfx_arena_printf(p->c->arena, "uint(i) >= %uu", len);
     return hfx_arena_printf(p->c->arena, "i < 0 || i >= %u", len);
+}
+
+/* e reads a uniform array declared on its own at an index not proved inside it: the reads
+ * hfx_glsl_find_padded pads, where GLSL has uint and the text is not SPIR-V's. */
+static bool paddable_read(const gp *p, const ir_expr *e) {
+    if (!e || e->kind != IE_INDEX || p->legacy || p->spirv) return false;
+    const ir_expr *x = e->a[0];
+    return x->kind == IE_VAR && x->var->kind == IRV_UNIFORM &&
+           x->type->kind == TY_ARRAY && !hfx_ir_is_const(e->a[1]) && e->range != IR_RANGE_IN_BOUNDS &&
+           hfx_glsl_packed_reg(p, x->var) == HFX_NONE;
+}
+
+static int32_t padded_index(const gp *p, const ir_var *v) {
+    for (uint32_t i = 0; i < p->padded_count; i++)
+        if (p->padded[i] == v) return (int32_t)i;
+    return -1;
+}
+
+static void note_padded(ir_ctx *c, ir_expr **slot, void *data) {
+    gp *p = data;
+    if (!paddable_read(p, *slot) || padded_index(p, (*slot)->a[0]->var) >= 0) return;
+    if (HFX_ARENA_GROW(c->arena, p->padded, p->padded_count, p->padded_cap, 4)) p->padded[p->padded_count++] = (*slot)->a[0]->var;
+}
+
+/* uses[2k] counts every read of padded[k], uses[2k + 1] those that index it. */
+typedef struct { gp *p; uint32_t *uses; } use_count;
+
+static void count_uses(ir_ctx *c, ir_expr **slot, void *data) {
+    (void)c;
+    use_count *u = data;
+    const ir_expr *e = *slot;
+    int32_t k;
+    if (e && e->kind == IE_VAR && (k = padded_index(u->p, e->var)) >= 0) u->uses[2 * k]++;
+    if (e && e->kind == IE_INDEX && e->a[0]->kind == IE_VAR && (k = padded_index(u->p, e->a[0]->var)) >= 0) u->uses[2 * k + 1]++;
+}
+
+/* Only arrays read element by element: one passed whole to a function, or copied, keeps its
+ * type (and its guarded reads). */
+void hfx_glsl_find_padded(gp *p) {
+    for (uint32_t i = 0; p->sh && i < p->sh->func_count; i++) hfx_ir_walk_stmt_exprs(p->c, p->sh->funcs[i]->body, note_padded, p);
+    if (!p->padded_count) return;
+    use_count u = {p, hfx_arena_alloc(p->c->arena, (size_t)p->padded_count * 2 * sizeof *u.uses)};
+    if (!u.uses) { p->padded_count = 0; return; }
+    memset(u.uses, 0, (size_t)p->padded_count * 2 * sizeof *u.uses);
+    for (uint32_t i = 0; i < p->sh->func_count; i++) hfx_ir_walk_stmt_exprs(p->c, p->sh->funcs[i]->body, count_uses, &u);
+    for (uint32_t i = 0; i < p->sh->global_count; i++) /* static initialisers, run in main */
+        if (p->sh->globals[i]->init) hfx_ir_walk_expr(p->c, &p->sh->globals[i]->init, count_uses, &u);
+    uint32_t kept = 0;
+    for (uint32_t k = 0; k < p->padded_count; k++)
+        if (u.uses[2 * k] == u.uses[2 * k + 1]) p->padded[kept++] = p->padded[k];
+    p->padded_count = kept;
+}
+
+bool hfx_glsl_is_padded(const gp *p, const ir_var *v) { return padded_index(p, v) >= 0; }
+
+/* arr[min(uint(i), len)] (arr[min(i, len)] for an index known not to be negative): the element
+ * past the end is the padding's zero. */
+static void print_padded_read(gp *p, const ir_expr *e) {
+    uint32_t len = e->a[0]->type->array_len;
+    bool nonneg = e->range == IR_RANGE_NONNEG && e->a[1]->type->base == B_INT;
+    hfx_glsl_expr(p, e->a[0], PREC_POSTFIX);
+    hfx_sb_put(p->out, nonneg ? "[min(" : "[min(uint(");
+    bool conv = e->a[1]->type->base != B_INT;
+    if (conv) hfx_sb_put(p->out, "int(");
+    hfx_glsl_expr(p, e->a[1], PREC_ASSIGN);
+    hfx_sb_printf(p->out, nonneg ? "%s, %u)]" : "%s), %uu)]", conv ? ")" : "", len);
 }
 
 /* Reads of a uniform array at a dynamic (or out of range) index return zero past the end,
@@ -632,7 +711,8 @@ static void print_index(gp *p, const ir_expr *e, int max) {
         (!hfx_ir_is_const(i) ? e->range != IR_RANGE_IN_BOUNDS : i->cval[0] < 0 || i->cval[0] >= x->type->array_len)) {
         bool saved = p->lvalue;
         p->lvalue = false;
-        print_guarded_read(p, e);
+        if (paddable_read(p, e) && hfx_glsl_is_padded(p, x->var)) print_padded_read(p, e);
+        else print_guarded_read(p, e);
         p->lvalue = saved;
         return;
     }

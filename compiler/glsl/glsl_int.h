@@ -33,6 +33,7 @@ typedef struct gp {
     bool vulkan;              /* HFX_TARGET_SPIRV_VK */
     const ir_var **bools; uint32_t bool_count, bool_cap; /* SPIR-V (GL): bool uniforms declared as int */
     size_t block_at; bool has_block; /* Vulkan: where the uniform block goes in the declarations */
+    const ir_var **padded; uint32_t padded_count, padded_cap; /* hfx_glsl_find_padded */
 } gp;
 
 /* Expression precedence, GLSL's: lower binds tighter. */
@@ -46,7 +47,14 @@ bool hfx_glsl_is_matrix(const hfx_type *t);                 /* a matrix GLSL kee
 void hfx_glsl_zero(gp *p, const hfx_type *t);               /* a zero value of t */
 void hfx_glsl_expr(gp *p, const ir_expr *e, int max_prec);
 void hfx_glsl_lvalue(gp *p, const ir_expr *e, int max_prec); /* an expression that is written */
-bool hfx_glsl_helper(gp *p, const char *key);               /* true when key is new: print its text into p->helpers */
+bool hfx_glsl_helper(gp *p, const char *key);
+/* Uniform arrays the stage reads at an index that may leave them (GLSL 330 / ES 300, arrays
+ * declared on their own): each is declared one element longer, that element is never uploaded
+ * and so stays zero (GL zeroes uniforms at link), and a read is arr[min(uint(i), len)]: D3D9's
+ * zero past either end in one instruction, where a compare and a select of every component of
+ * the element cost 0.5% of SkinnedEffect's four-bone frame on llvmpipe (issue 37). */
+void hfx_glsl_find_padded(gp *p);
+bool hfx_glsl_is_padded(const gp *p, const ir_var *v);               /* true when key is new: print its text into p->helpers */
 void hfx_glsl_error(gp *p, hfx_loc loc, const char *msg);
 
 /* glsl_pack.c: HFXC_PACK_UNIFORMS (packed parameters read from `uniform vec4 hfx_c[K]`). */

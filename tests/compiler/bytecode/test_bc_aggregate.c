@@ -27,8 +27,9 @@ static void expect(const char *src, const char *profile, const char *rest) {
 }
 
 /* v[K] for a parameter K: a chain of selects, element k taken where K - (k - 0.5) >= 0, the last
- * that holds winning: add r0.x = K - 0.5, cmp picks v.y over v.x, then v.z, v.w (2 slots each);
- * the float result is returned splatted. */
+ * that holds winning: add r0.y = K - 0.5, cmp picks v.y over v.x, then v.z, v.w (2 slots each);
+ * the float result is returned splatted. K (c0) and the def (c1) are two c registers, one more
+ * than ps_2_0's read port: K is copied into r0.x once, and the three adds read it there. */
 static void ps_2_0_vector_read(void) {
     expect(
         "int K;\n"
@@ -49,20 +50,23 @@ static void ps_2_0_vector_read(void) {
         "    ps_2_0\n"
         "    def c1, -0.5, -1.5, -2.5, 0\n"
         "    dcl t0\n"
-        "    add r0.x, c0.x, c1.x\n"
-        "    cmp r0.x, r0.x, t0.y, t0.x\n"
-        "    add r0.y, c0.x, c1.y\n"
-        "    cmp r0.x, r0.y, t0.z, r0.x\n"
-        "    add r0.y, c0.x, c1.z\n"
-        "    cmp r0.x, r0.y, t0.w, r0.x\n"
-        "    mov oC0, r0.x\n"
+        "    mov r0.x, c0.x\n"
+        "    add r0.y, r0.x, c1.x\n"
+        "    cmp r0.y, r0.y, t0.y, t0.x\n"
+        "    add r0.z, r0.x, c1.y\n"
+        "    cmp r0.y, r0.z, t0.z, r0.y\n"
+        "    add r0.z, r0.x, c1.z\n"
+        "    cmp r0.y, r0.z, t0.w, r0.y\n"
+        "    mov oC0, r0.y\n"
         "\n"
-        "// approximately 7 instruction slots used (0 texture, 7 arithmetic)\n");
+        "// approximately 8 instruction slots used (0 texture, 8 arithmetic)\n");
 }
 
 /* a[K] = 0.5 on a copy of an input: each component written under K == k, tested as
  * -(K - k)^2 >= 0 by the cmp that writes it (add, mul, cmp per component; k = 0 needs no add);
- * the copy itself is gone, each cmp reading the input's component in place (bc_fold.c). */
+ * the copy itself is gone, each cmp reading the input's component in place (bc_fold.c). K - k
+ * reads K's c0 and the def's c1 / c2, two c registers (ps_2_0 reads one an instruction): K is
+ * copied into r1.x once (K * K reads c0 alone). */
 static void ps_2_0_vector_write(void) {
     expect(
         "int K;\n"
@@ -86,18 +90,19 @@ static void ps_2_0_vector_write(void) {
         "    dcl t0\n"
         "    mul r0.x, c0.x, c0.x\n"
         "    cmp r0.x, -r0.x, c1.y, t0.x\n"
-        "    add r1.x, c0.x, c1.z\n"
-        "    mul r1.x, r1.x, r1.x\n"
-        "    cmp r0.y, -r1.x, c1.y, t0.y\n"
-        "    add r1.x, c0.x, c1.w\n"
-        "    mul r1.x, r1.x, r1.x\n"
-        "    cmp r0.z, -r1.x, c1.y, t0.z\n"
-        "    add r1.x, c0.x, c2.x\n"
+        "    mov r1.x, c0.x\n"
+        "    add r1.y, r1.x, c1.z\n"
+        "    mul r1.y, r1.y, r1.y\n"
+        "    cmp r0.y, -r1.y, c1.y, t0.y\n"
+        "    add r1.y, r1.x, c1.w\n"
+        "    mul r1.y, r1.y, r1.y\n"
+        "    cmp r0.z, -r1.y, c1.y, t0.z\n"
+        "    add r1.x, r1.x, c2.x\n"
         "    mul r1.x, r1.x, r1.x\n"
         "    cmp r0.w, -r1.x, c1.y, t0.w\n"
         "    mov oC0, r0\n"
         "\n"
-        "// approximately 12 instruction slots used (0 texture, 12 arithmetic)\n");
+        "// approximately 13 instruction slots used (0 texture, 13 arithmetic)\n");
 }
 
 /* A struct built from an initialiser list, copied and updated: its slots are views of the
@@ -119,7 +124,9 @@ static void ps_2_0_struct_copy(void) {
         "// approximately 4 instruction slots used (0 texture, 4 arithmetic)\n");
 }
 
-/* Colors[K] in a pixel shader (no a0 in ps_2_0): selects over the array's registers. */
+/* Colors[K] in a pixel shader (no a0 in ps_2_0): selects over the array's registers. ps_2_0
+ * reads one c register an instruction: K (c3) is copied once for K - 0.5 and K - 1.5 (the def
+ * c4), and Colors[1] (c1) for the cmp that also reads Colors[0] (c0; the first of two alike). */
 static void ps_2_0_parameter_array_read(void) {
     expect(
         "float4 Colors[3];\n"
@@ -143,14 +150,16 @@ static void ps_2_0_parameter_array_read(void) {
         "    ps_2_0\n"
         "    def c4, -0.5, -1.5, 0, 0\n"
         "    dcl t0\n"
-        "    add r0.x, c3.x, c4.x\n"
-        "    cmp r0, r0.x, c1, c0\n"
-        "    add r1.x, c3.x, c4.y\n"
-        "    cmp r0, r1.x, c2, r0\n"
-        "    mul r0, r0, t0\n"
-        "    mov oC0, r0\n"
+        "    mov r0.x, c3.x\n"
+        "    add r1.x, r0.x, c4.x\n"
+        "    mov r2, c1\n"
+        "    cmp r1, r1.x, r2, c0\n"
+        "    add r0.x, r0.x, c4.y\n"
+        "    cmp r1, r0.x, c2, r1\n"
+        "    mul r1, r1, t0\n"
+        "    mov oC0, r1\n"
         "\n"
-        "// approximately 6 instruction slots used (0 texture, 6 arithmetic)\n");
+        "// approximately 8 instruction slots used (0 texture, 8 arithmetic)\n");
 }
 
 /* Colors[K] in a vertex shader: mova then c[a0.x + 0]. */
@@ -183,7 +192,8 @@ static void vs_2_0_parameter_array_read(void) {
 }
 
 /* float4x4 world : TEXCOORD1 takes TEXCOORD1..4, its columns (D3D9's column_major packing, as
- * instancing streams it): mul(p, world) is a dp4 per column register, world[1] the .y of each. */
+ * instancing streams it): mul(p, world) is a dp4 per column register, world[1] the .y of each.
+ * vs_2_0 reads one v register an instruction: p is copied into r0 once for the four dp4. */
 static void vs_2_0_matrix_input(void) {
     expect(
         "float4x4 ViewProj;\n"
@@ -214,20 +224,22 @@ static void vs_2_0_matrix_input(void) {
         "    mov oT0.y, v2.y\n"
         "    mov oT0.z, v3.y\n"
         "    mov oT0.w, v4.y\n"
-        "    dp4 r0.x, v0, v1\n"
-        "    dp4 r0.y, v0, v2\n"
-        "    dp4 r0.z, v0, v3\n"
-        "    dp4 r0.w, v0, v4\n"
-        "    dp4 oPos.x, r0, c0\n"
-        "    dp4 oPos.y, r0, c1\n"
-        "    dp4 oPos.z, r0, c2\n"
-        "    dp4 oPos.w, r0, c3\n"
+        "    mov r0, v0\n"
+        "    dp4 r1.x, r0, v1\n"
+        "    dp4 r1.y, r0, v2\n"
+        "    dp4 r1.z, r0, v3\n"
+        "    dp4 r1.w, r0, v4\n"
+        "    dp4 oPos.x, r1, c0\n"
+        "    dp4 oPos.y, r1, c1\n"
+        "    dp4 oPos.z, r1, c2\n"
+        "    dp4 oPos.w, r1, c3\n"
         "\n"
-        "// approximately 12 instruction slots used\n");
+        "// approximately 13 instruction slots used\n");
 }
 
 /* float4 w[2] : TEXCOORD1 is t1, t2; float4x4 m : TEXCOORD3 is t3..t6 by columns, so row 2 of m
- * is gathered from their .z. */
+ * is gathered from their .z. ps_2_0 reads one t register an instruction: v.x (t0, one component
+ * against t2's four) is copied for the mad. */
 static void ps_2_0_array_and_matrix_inputs(void) {
     expect(
         "float4 main(float4 v : TEXCOORD0, float4 w[2] : TEXCOORD1, float4x4 m : TEXCOORD3) : COLOR0 { return w[1] + m[2] * v.x; }\n",
@@ -245,10 +257,11 @@ static void ps_2_0_array_and_matrix_inputs(void) {
         "    mov r0.y, t4.z\n"
         "    mov r0.z, t5.z\n"
         "    mov r0.w, t6.z\n"
-        "    mad r0, r0, t0.x, t2\n"
+        "    mov r1.x, t0.x\n"
+        "    mad r0, r0, r1.x, t2\n"
         "    mov oC0, r0\n"
         "\n"
-        "// approximately 6 instruction slots used (0 texture, 6 arithmetic)\n");
+        "// approximately 7 instruction slots used (0 texture, 7 arithmetic)\n");
 }
 
 /* sincos into new variables: they name a def register's zero until written, and the results

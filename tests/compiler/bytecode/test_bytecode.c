@@ -45,9 +45,10 @@ static void vs_2_0_transform_and_mad(void) {
             "    dp4 oPos.y, v0, c1\n"
             "    dp4 oPos.z, v0, c2\n"
             "    dp4 oPos.w, v0, c3\n"
-            "    mad oD0, c4, c5.x, c5.y\n" /* Tint * 0.5 + 0.25 */
-            "    mov oT0.xy, v1\n"
-            "\n// approximately 6 instruction slots used\n");
+            "    mov r0.xy, c5\n"           /* vs_2_0 reads one c register an instruction: of Tint (c4) */
+            "    mad oD0, c4, r0.x, r0.y\n" /* and the def (c5) the cheaper copied, its .xy read */
+            "    mov oT0.xy, v1\n"          /* Tint * 0.5 + 0.25 */
+            "\n// approximately 7 instruction slots used\n");
 }
 
 static void ps_2_0_clip_and_saturate(void) {
@@ -64,12 +65,11 @@ static void ps_2_0_clip_and_saturate(void) {
             "    dcl v0\n"
             "    dcl_2d s0\n"
             "    texld r0, t0, s0\n"
-            "    add r1.x, r0.w, -c1.y\n"   /* t.a - 0.5 */
-            "    mov r1, r1.x\n"            /* texkill tests x, y and z of a register */
+            "    add r1, r0.w, -c1.y\n"     /* t.a - 0.5 into all of r1: texkill tests its x, y and z */
             "    texkill r1\n"
             "    mad_sat r0, r0, v0, c0\n"  /* reads t, then writes its register */
             "    mov oC0, r0\n"
-            "\n// approximately 6 instruction slots used (2 texture, 4 arithmetic)\n");
+            "\n// approximately 5 instruction slots used (2 texture, 3 arithmetic)\n");
 }
 
 static void ps_3_0_reflect_pow_select(void) {
@@ -93,11 +93,10 @@ static void ps_3_0_reflect_pow_select(void) {
             "    mad r0.xyz, r0, -r1.x, -c0\n"     /* i - 2 dot(N, i) N, over N (read first), d kept in .w */
             "    dp3_sat r0.x, r0, v1\n"
             "    pow r0.x, r0.x, c1.x\n"
-            "    cmp r0.y, -r0.w, c2.x, c2.y\n"    /* d > 0 is 0 - d < 0 (0 - d folded to -d): (-d >= 0) ? 0 : 1; r0.y is dead after the dp3 */
-            "    cmp oC0.x, -r0.y, c2.x, r0.x\n"   /* the select: (-c >= 0) ? 0 : s */
+            "    cmp oC0.x, -r0.w, c2.x, r0.x\n"   /* d > 0 ? s : 0 is 0 - d < 0 (0 - d folded to -d): (-d >= 0) ? 0 : s */
             "    mov oC0.y, r0.w\n"
             "    mov oC0.zw, c2.xyxy\n"
-            "\n// approximately 15 instruction slots used (0 texture, 15 arithmetic)\n");
+            "\n// approximately 14 instruction slots used (0 texture, 14 arithmetic)\n");
 }
 
 /* A loop bounded by a parameter in ps_3_0, as fxc writes it: the counter i in a temporary tested
@@ -190,18 +189,96 @@ static void per_stage_registers(void) {
             "//   A            c1       1\n//   C            c0       1\n//\n\n",
             "    ps_2_0\n"
             "    dcl v0\n"
-            "    mad r0, v0, c1, c0\n" /* c * A + C */
+            "    mov r0, c1\n"           /* ps_2_0 reads one c register an instruction: A first of two alike */
+            "    mad r0, v0, r0, c0\n"   /* c * A + C */
             "    mov oC0, r0\n"
-            "\n// approximately 2 instruction slots used (0 texture, 2 arithmetic)\n");
+            "\n// approximately 3 instruction slots used (0 texture, 3 arithmetic)\n");
     listing(src, "vs_2_0",
             "//   float4 A;\n//   float4 B;\n//   float4 C;\n//\n//\n// Registers:\n//\n"
             "//   Name         Reg   Size\n//   ------------ ----- ----\n"
             "//   A            c3       1\n//   B            c1       1\n//   C            c0       1\n//\n\n",
             "    vs_2_0\n"
             "    dcl_position v0\n"
-            "    mad r0, v0, c3, c1\n" /* p * A + B */
+            "    mov r0, c3\n"         /* vs_2_0's one c register an instruction: A copied */
+            "    mad r0, v0, r0, c1\n" /* p * A + B */
             "    add oPos, r0, c0\n"   /* + C */
-            "\n// approximately 2 instruction slots used\n");
+            "\n// approximately 3 instruction slots used\n");
+}
+
+/* A select on a comparison in a pixel shader is one cmp on the difference, as fxc writes it:
+ * a < K.x ? K.z : K.w is (a - K.x >= 0) ? K.w : K.z, and clip's scalar is computed into the
+ * whole register texkill tests (its sources' .x / .w / .z replicated), no mov between; x >= A.x
+ * ? c : B is (x - A.x >= 0) ? c : B. Before: the comparison's 0 / 1 (add, cmp), a cmp on it, and
+ * clip's mov r1, r1.x (2 more slots each). */
+static void ps_2_0_compare_select(void) {
+    listing("sampler S;\nfloat4 K;\nfloat4 main(float2 uv : TEXCOORD0) : COLOR0 {\n"
+            "    float4 c = tex2D(S, uv);\n    clip(c.a < K.x ? K.z : K.w);\n    return c;\n}\n",
+            "ps_2_0",
+            "//   float4 K;\n//   sampler2D S;\n//\n//\n// Registers:\n//\n"
+            "//   Name         Reg   Size\n//   ------------ ----- ----\n"
+            "//   S            s0       1\n//   K            c0       1\n//\n\n",
+            "    ps_2_0\n"
+            "    dcl t0.xy\n"
+            "    dcl_2d s0\n"
+            "    texld r0, t0, s0\n"
+            "    add r1.x, r0.w, -c0.x\n"    /* c.a - K.x */
+            "    cmp r1, r1.x, c0.w, c0.z\n" /* >= 0: K.w, else K.z; all four components */
+            "    texkill r1\n"
+            "    mov oC0, r0\n"
+            "\n// approximately 5 instruction slots used (2 texture, 3 arithmetic)\n");
+    listing("float4 A;\nfloat4 B;\nfloat4 main(float4 c : COLOR0) : COLOR0 {\n    return c.x >= A.x ? c : B;\n}\n",
+            "ps_2_0",
+            "//   float4 A;\n//   float4 B;\n//\n//\n// Registers:\n//\n"
+            "//   Name         Reg   Size\n//   ------------ ----- ----\n"
+            "//   A            c0       1\n//   B            c1       1\n//\n\n",
+            "    ps_2_0\n"
+            "    dcl v0\n"
+            "    add r0.x, v0.x, -c0.x\n" /* c.x - A.x */
+            "    cmp r0, r0.x, v0, c1\n"  /* >= 0: c, else B */
+            "    mov oC0, r0\n"
+            "\n// approximately 3 instruction slots used (0 texture, 3 arithmetic)\n");
+}
+
+/* normalize into an output: nrm's macro written out, dp3 / rsq / mul, the mul writing oT0 (3
+ * slots, where nrm is 3 and a mov into oT0 a fourth); the length's square and its rsq take r0.w
+ * beside the vector, as fxc's `dp3 r0.w, r0, r0` / `rsq r0.w, r0.w` / `mul oT1.xyz, r0.w, r0`. */
+static void vs_2_0_normalize_output(void) {
+    listing("float3x3 W;\nvoid main(float4 p : POSITION, float3 n : NORMAL, out float4 oPos : POSITION,\n"
+            "          out float3 oN : TEXCOORD0) {\n    oPos = p;\n    oN = normalize(mul(n, W));\n}\n",
+            "vs_2_0",
+            "//   float3x3 W;\n//\n//\n// Registers:\n//\n"
+            "//   Name         Reg   Size\n//   ------------ ----- ----\n"
+            "//   W            c0       3\n//\n\n",
+            "    vs_2_0\n"
+            "    dcl_position v0\n"
+            "    dcl_normal v1\n"
+            "    dp3 r0.x, v1, c0\n" /* mul(n, W): a dp3 per column register */
+            "    dp3 r0.y, v1, c1\n"
+            "    dp3 r0.z, v1, c2\n"
+            "    dp3 r0.w, r0, r0\n" /* |v|^2 */
+            "    rsq r0.w, r0.w\n"
+            "    mul oT0.xyz, r0.w, r0\n"
+            "    mov oPos, v0\n"
+            "\n// approximately 7 instruction slots used\n");
+}
+
+/* A product kept in a variable and added afterwards is one mad (the mul and the add of a plain
+ * walk: 4 slots; EnvironmentMapEffect's envmap * alpha - color, fxc's `mad r0.xyz, r0, r1.w, -r1`). */
+static void ps_2_0_product_then_add(void) {
+    listing("sampler S;\nfloat4 K;\nfloat4 main(float2 uv : TEXCOORD0, float4 c : COLOR0) : COLOR0 {\n"
+            "    float4 e = tex2D(S, uv) * c.a;\n    return e - K;\n}\n",
+            "ps_2_0",
+            "//   float4 K;\n//   sampler2D S;\n//\n//\n// Registers:\n//\n"
+            "//   Name         Reg   Size\n//   ------------ ----- ----\n"
+            "//   S            s0       1\n//   K            c0       1\n//\n\n",
+            "    ps_2_0\n"
+            "    dcl t0.xy\n"
+            "    dcl v0\n"
+            "    dcl_2d s0\n"
+            "    texld r0, t0, s0\n"
+            "    mad r0, r0, v0.w, -c0\n" /* tex * c.a - K */
+            "    mov oC0, r0\n"
+            "\n// approximately 3 instruction slots used (1 texture, 2 arithmetic)\n");
 }
 
 static void refused(const char *src, const char *profile, const char *message) {
@@ -279,6 +356,9 @@ static void ps_2_0_written_input(void) {
 }
 
 int main(void) {
+    RUN(ps_2_0_compare_select);
+    RUN(vs_2_0_normalize_output);
+    RUN(ps_2_0_product_then_add);
     RUN(vs_2_0_transform_and_mad);
     RUN(ps_2_0_clip_and_saturate);
     RUN(ps_3_0_parameter_loop);

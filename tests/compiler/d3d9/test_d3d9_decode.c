@@ -74,7 +74,7 @@ static void vs_3_0_listing(void) {
         OP(0x1f, 2), 0x80000005u, DST(R_OUTPUT, 1, 0x3),                       /* dcl_texcoord o1.xy */
         OP(0x14, 3), DST(R_OUTPUT, 0, 0xf), SRC(R_INPUT, 0, XYZW), SRC(R_CONST, 0, XYZW),
         OP(0x04, 4), DST(R_OUTPUT, 1, 0x3), SRC(R_INPUT, 1, XYZW), SRC(R_CONST, 5, 0),
-        SRCM(R_CONST, 6, SW(1, 2, 2, 3), 1),
+        SRCM(R_CONST, 5, SW(1, 2, 2, 3), 1),   /* one c register: vs_3_0's read port */
         OP(0x26, 1), SRC(R_CONSTINT, 0, XYZW),                                 /* rep i0 */
         OP(0x02, 3), DST(R_TEMP, 0, 0xf), SRC(R_TEMP, 0, XYZW), SRC(R_CONST, 4, 0),
         OPC(0x29, 2, 4), SRC(R_TEMP, 0, 0), SRC(R_CONST, 4, 0x55),             /* if_lt */
@@ -131,7 +131,7 @@ static void vs_3_0_listing(void) {
               "    dcl_position o0\n"
               "    dcl_texcoord o1.xy\n"
               "    m4x4 o0, v0, c0\n"
-              "    mad o1.xy, v1, c5.x, -c6.yzzw\n"
+              "    mad o1.xy, v1, c5.x, -c5.yzzw\n"
               "    rep i0\n"
               "      add r0, r0, c4.x\n"
               "      if_lt r0.x, c4.y\n"
@@ -219,6 +219,45 @@ static void errors_located(void) {
             "t.vso(0,8): error X5002: break is not allowed in ps_2_0\n");
 }
 
+/* Read ports (Microsoft's "Registers" tables): SM2 / SM3 read one c, one v, one t register an
+ * instruction (the same one any number of times), SM2's sincos its two macro constants beside;
+ * ps_1_x two c and two v. Each refused instruction is located at its token and names what it
+ * reads. */
+static void read_ports(void) {
+    static const uint32_t vs[] = {
+        VS(2, 0),
+        OP(0x1f, 2), 0x80000000u, DST(R_INPUT, 0, 0xf),
+        OP(0x1f, 2), 0x80000003u, DST(R_INPUT, 1, 0xf),
+        OP(0x04, 4), DST(R_TEMP, 0, 0xf), SRC(R_INPUT, 0, XYZW), SRC(R_CONST, 0, XYZW), SRC(R_CONST, 1, XYZW),
+        OP(0x04, 4), DST(R_TEMP, 0, 0xf), SRC(R_CONST, 2, 0), SRC(R_CONST, 2, XYZW), SRC(R_INPUT, 0, XYZW),
+        OP(0x08, 3), DST(R_TEMP, 1, 0x1), SRC(R_INPUT, 0, XYZW), SRC(R_INPUT, 1, XYZW),
+        OP(0x25, 4), DST(R_TEMP, 2, 0x3), SRC(R_TEMP, 0, 0), SRC(R_CONST, 3, XYZW), SRC(R_CONST, 4, XYZW),
+        OP(0x2e, 2), DST(R_ADDR, 0, 0x1), SRC(R_INPUT, 1, 0),
+        OP(0x05, 4), DST(R_TEMP, 3, 0xf), SRC(R_CONST, 5, XYZW) | REL, SRC(R_ADDR, 0, 0), SRC(R_CONST, 5, XYZW),
+        END_TOKEN};
+    RUN_ERR(vs,
+            "t.vso(0,28): error X5003: mad reads 2 different registers (c0, c1); vs_2_0 has 1 read port for them\n"
+            "t.vso(0,68): error X5003: dp3 reads 2 different registers (v0, v1); vs_2_0 has 1 read port for them\n"
+            "t.vso(0,116): error X5003: mul reads 2 different registers (c5[a0.x], c5); vs_2_0 has 1 read port for them\n");
+    static const uint32_t ps[] = {
+        PS(2, 0),
+        OP(0x1f, 2), 0x80000000u, DST(R_ADDR, 0, 0xf),
+        OP(0x1f, 2), 0x80000000u, DST(R_ADDR, 1, 0xf),
+        OP(0x02, 3), DST(R_TEMP, 0, 0xf), SRC(R_ADDR, 0, XYZW), SRC(R_ADDR, 1, XYZW),
+        OP(0x05, 3), DST(R_TEMP, 0, 0xf), SRC(R_ADDR, 1, XYZW), SRC(R_ADDR, 1, 0xff),
+        OP(0x12, 4), DST(R_TEMP, 0, 0xf), SRC(R_TEMP, 0, XYZW), SRC(R_CONST, 0, XYZW), SRC(R_CONST, 1, XYZW),
+        END_TOKEN};
+    RUN_ERR(ps,
+            "t.vso(0,28): error X5003: add reads 2 different registers (t0, t1); ps_2_0 has 1 read port for them\n"
+            "t.vso(0,60): error X5003: lrp reads 2 different registers (c0, c1); ps_2_0 has 1 read port for them\n");
+    static const uint32_t ps11[] = {
+        PS(1, 1),
+        0x04, DST(R_TEMP, 0, 0xf), SRC(R_INPUT, 1, XYZW), SRC(R_CONST, 2, XYZW), SRC(R_INPUT, 0, XYZW),
+        0x04, DST(R_TEMP, 0, 0xf), SRC(R_CONST, 0, XYZW), SRC(R_CONST, 1, XYZW), SRC(R_CONST, 2, XYZW),
+        END_TOKEN};
+    RUN_ERR(ps11, "t.vso(0,24): error X5003: mad reads 3 different registers (c0, c1, c2); ps_1_1 has 2 read ports for them\n");
+}
+
 static void shader_detection(void) {
     static const uint32_t ps[] = {PS(2, 0), END_TOKEN}, vs11[] = {VS(1, 1), END_TOKEN}, vs10[] = {VS(1, 0), END_TOKEN};
     static const uint32_t fx[] = {0xfeff0901u, 0}; /* an fx_2_0 effect's version word */
@@ -235,5 +274,6 @@ int main(void) {
     RUN(vs_3_0_listing);
     RUN(ps_1_x_listing);
     RUN(errors_located);
+    RUN(read_ports);
     return test_summary();
 }

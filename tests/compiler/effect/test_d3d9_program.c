@@ -62,7 +62,8 @@ static d3d9_shader *decode(fixture *x, const uint32_t *w, size_t n, uint32_t bas
     return s;
 }
 
-/* vs_2_0: m4x4 oPos, v0, c0 (M, column-major); mov oT0.xy, v1; mul oD0, c4, c5.x (Tint * Scale);
+/* vs_2_0: m4x4 oPos, v0, c0 (M, column-major); mov oT0.xy, v1; mov r0.x, c5.x; mul oD0, c4, r0.x
+ * (Tint * Scale: one c register an instruction, vs_2_0's read port);
  * mova a0.x, c8.x (def 1); mov oD1, c6[a0.x] (Colors[1]); mov oT1, c4[a0.x] (c5: Scale, through the
  * register file, Tint being no array). */
 static size_t vs_tokens(uint32_t *w) {
@@ -77,7 +78,8 @@ static size_t vs_tokens(uint32_t *w) {
         OP(0x1f, 2), 0x80000005u, DST(R_INPUT, 1, 0xf),
         OP(0x14, 3), DST(R_RASTOUT, 0, 0xf), SRC(R_INPUT, 0, XYZW), SRC(R_CONST, 0, XYZW),
         OP(0x01, 2), DST(R_OUTPUT, 0, 0x3), SRC(R_INPUT, 1, XYZW),
-        OP(0x05, 3), DST(R_ATTROUT, 0, 0xf), SRC(R_CONST, 4, XYZW), SRC(R_CONST, 5, 0),
+        OP(0x01, 2), DST(R_TEMP, 0, 0x1), SRC(R_CONST, 5, 0),
+        OP(0x05, 3), DST(R_ATTROUT, 0, 0xf), SRC(R_CONST, 4, XYZW), SRC(R_TEMP, 0, 0),
         OP(0x2e, 2), DST(R_ADDR, 0, 0x1), SRC(R_CONST, 8, 0),
         OP(0x01, 3), DST(R_ATTROUT, 1, 0xf), SRC(R_CONST, 6, XYZW) | REL, SRC(R_ADDR, 0, 0),
         OP(0x01, 3), DST(R_OUTPUT, 1, 0xf), SRC(R_CONST, 4, XYZW) | REL, SRC(R_ADDR, 0, 0),
@@ -86,7 +88,8 @@ static size_t vs_tokens(uint32_t *w) {
     return n + sizeof code / 4;
 }
 
-/* ps_2_0: def c1, 0.5, 0.25, 2, -1; mad r0, v0, c1.x, c0 (Offset); add r0.z, r0.z, v1.z;
+/* ps_2_0: def c1, 0.5, 0.25, 2, -1; mov r2, c0 (Offset: one c register an instruction, ps_2_0's
+ * read port); mad r0, v0, c1.x, r2; add r0.z, r0.z, v1.z;
  * rsq r1.x, c1.w; mul r0.w, r0.w, r1.x; cmp r0.y, c1.w, c1.x, c1.y; dcl t1; add r0.x, r0.x, t1.x;
  * mov oC0, r0. */
 static size_t ps_tokens(uint32_t *w) {
@@ -98,7 +101,8 @@ static size_t ps_tokens(uint32_t *w) {
         OP(0x51, 5), DST(R_CONST, 1, 0xf), fbits(0.5f), fbits(0.25f), fbits(2), fbits(-1),
         OP(0x1f, 2), 0x80000000u, DST(R_INPUT, 0, 0xf),
         OP(0x1f, 2), 0x80000000u, DST(R_INPUT, 1, 0xf),
-        OP(0x04, 4), DST(R_TEMP, 0, 0xf), SRC(R_INPUT, 0, XYZW), SRC(R_CONST, 1, 0), SRC(R_CONST, 0, XYZW),
+        OP(0x01, 2), DST(R_TEMP, 2, 0xf), SRC(R_CONST, 0, XYZW),
+        OP(0x04, 4), DST(R_TEMP, 0, 0xf), SRC(R_INPUT, 0, XYZW), SRC(R_CONST, 1, 0), SRC(R_TEMP, 2, XYZW),
         OP(0x02, 3), DST(R_TEMP, 0, 0x4), SRC(R_TEMP, 0, 0xaa), SRC(R_INPUT, 1, 0xaa),
         OP(0x07, 2), DST(R_TEMP, 1, 0x1), SRC(R_CONST, 1, 0xff),
         OP(0x05, 3), DST(R_TEMP, 0, 0x8), SRC(R_TEMP, 0, 0xff), SRC(R_TEMP, 1, 0),

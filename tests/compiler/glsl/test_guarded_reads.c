@@ -1,8 +1,10 @@
 /* test_guarded_reads.c: the guard on a uniform array read at a dynamic index (zero past either
  * end, as D3D9). Only the upper end when the index is a for counter that starts at a
  * non-negative constant and only goes up; no guard when such a counter's constant bound keeps
- * it inside the array (lower/ranges.c); else one unsigned compare where GLSL has uint, two in
- * GLSL 110. */
+ * it inside the array (lower/ranges.c). Where GLSL has uint (330, ES 300) the array is declared
+ * one element longer, never uploaded and so zero, and the read clamps into it: arr[min(uint(i),
+ * 4u)] sends both ends there (a negative int is a large uint), arr[min(i, 4)] the upper end; GLSL
+ * 110 keeps a helper with one compare per end. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -44,20 +46,29 @@ static void check_guard(const char *loop, hfx_target target, const char *helper,
     free(fs);
 }
 
-static const char UNSIGNED_HELPER[] = "float hfx_read_arr(int i)\n{\n    if (uint(i) >= 4u) return 0.0;\n    return arr[i];\n}\n";
 static const char BOTH_ENDS_110[] = "float hfx_read_arr(int i)\n{\n    if (i < 0 || i >= 4) return 0.0;\n    return arr[i];\n}\n";
 static const char UPPER_END[] =
     "float hfx_readbelow_arr(int i)\n{\n    if (i >= 4) return 0.0;\n    return arr[i];\n}\n";
 
-/* An index nothing is known of, where GLSL has uint: one unsigned compare for both ends. */
-static void one_unsigned_compare(void) {
-    check_guard("s += arr[n];", HFX_TARGET_GLSL330, UNSIGNED_HELPER, "s += hfx_read_arr(n);");
-    check_guard("s += arr[n];", HFX_TARGET_GLSLES300, UNSIGNED_HELPER, "s += hfx_read_arr(n);");
+/* GLSL 330 / ES 300: the padded declaration, no helper, and the clamped read. */
+static void check_padded(const char *loop, hfx_target target, const char *read) {
+    char *fs = pixel_glsl(loop, target);
+    CHECK(fs != NULL);
+    CHECK_CONTAINS(fs, "\nuniform float arr[5];\n");
+    CHECK(fs && !strstr(fs, "hfx_read"));
+    CHECK_CONTAINS(fs, read);
+    free(fs);
+}
+
+/* An index nothing is known of, where GLSL has uint: one unsigned clamp for both ends. */
+static void one_unsigned_clamp(void) {
+    check_padded("s += arr[n];", HFX_TARGET_GLSL330, "s += arr[min(uint(n), 4u)];");
+    check_padded("s += arr[n];", HFX_TARGET_GLSLES300, "s += arr[min(uint(n), 4u)];");
 }
 
 /* A counter from 0 (or 1) up, below a bound it cannot step past: only the upper end. */
 static void counter_drops_the_lower_half(void) {
-    check_guard("for (int i = 0; i < n; i++) s += arr[i];", HFX_TARGET_GLSL330, UPPER_END, "s += hfx_readbelow_arr(i);");
+    check_padded("for (int i = 0; i < n; i++) s += arr[i];", HFX_TARGET_GLSL330, "s += arr[min(i, 4)];");
     check_guard("s += arr[n];", HFX_TARGET_GLSL110, BOTH_ENDS_110, "s += hfx_read_arr(n);");
     check_guard("for (int i = 0; i < n; i++) s += arr[i];", HFX_TARGET_GLSL110, UPPER_END,
                 "s += hfx_readbelow_arr(i);");
@@ -76,21 +87,21 @@ static void constant_bound_drops_the_guard(void) {
  * a counter the body writes, an index computed from the counter, `<=` a bound that is not
  * constant (i could step past INT_MAX), and the counter after the loop. */
 static void out_of_range_keeps_the_guard(void) {
-    check_guard("for (int i = 0; i < 5; i++) s += arr[i];", HFX_TARGET_GLSLES300, UPPER_END, "hfx_readbelow_arr(i)");
+    check_padded("for (int i = 0; i < 5; i++) s += arr[i];", HFX_TARGET_GLSLES300, "arr[min(i, 4)]");
     check_guard("for (int i = 0; i < 5; i++) s += arr[i];", HFX_TARGET_GLSL110, UPPER_END, "hfx_readbelow_arr(i)");
-    check_guard("for (int i = -1; i < 4; i++) s += arr[i];", HFX_TARGET_GLSL330, UNSIGNED_HELPER, "hfx_read_arr(i)");
+    check_padded("for (int i = -1; i < 4; i++) s += arr[i];", HFX_TARGET_GLSL330, "arr[min(uint(i), 4u)]");
     check_guard("for (int i = -1; i < 4; i++) s += arr[i];", HFX_TARGET_GLSL110, BOTH_ENDS_110, "hfx_read_arr(i)");
     check_guard("for (int i = 0; i < 4; i++) { s += arr[i]; i -= n; }", HFX_TARGET_GLSL110, BOTH_ENDS_110,
                 "hfx_read_arr(i)");
     check_guard("for (int i = 0; i < 3; i++) s += arr[i + 1];", HFX_TARGET_GLSL110, BOTH_ENDS_110,
                 "hfx_read_arr(i + 1)");
     check_guard("for (int i = 0; i <= n; i++) s += arr[i];", HFX_TARGET_GLSL110, BOTH_ENDS_110, "hfx_read_arr(i)");
-    check_guard("int i; for (i = 0; i < 4; i++) s += arr[i]; s += arr[i];", HFX_TARGET_GLSL330, UNSIGNED_HELPER,
-                "s += hfx_read_arr(i);");
+    check_padded("int i; for (i = 0; i < 4; i++) s += arr[i]; s += arr[i];", HFX_TARGET_GLSL330,
+                 "s += arr[min(uint(i), 4u)];");
 }
 
 int main(void) {
-    RUN(one_unsigned_compare);
+    RUN(one_unsigned_clamp);
     RUN(counter_drops_the_lower_half);
     RUN(constant_bound_drops_the_guard);
     RUN(out_of_range_keeps_the_guard);

@@ -129,7 +129,9 @@ static void registers_by_hand(void) {
             CHECK_CONTAINS(vs, "    World = mat4(hfx_c[4], hfx_c[5], hfx_c[6], hfx_c[7]);\n");
             CHECK_CONTAINS(vs, "    Offset = hfx_c[3].xy;\n");
             CHECK_CONTAINS(vs, "uniform int Count;\n");
-            CHECK_CONTAINS(vs, "uniform vec4 Palette[2];\n");
+            /* read at Count, which nothing bounds: one zero element past its end (glsl_expr.c) */
+            CHECK_CONTAINS(vs, "uniform vec4 Palette[3];\n");
+            CHECK_CONTAINS(vs, "o.Color = Palette[min(uint(Count), 2u)] + Sun.Color;\n");
             CHECK_CONTAINS(vs, "uniform Light Sun;\n");
             CHECK_CONTAINS(fs, "uniform bool Enabled;\n");
             /* packed values first: the static and the written copy are made from them */
