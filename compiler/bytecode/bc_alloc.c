@@ -138,46 +138,62 @@ uint8_t hfx_bc_tidy(uint8_t sw, unsigned positions, bool dot) {
     return (uint8_t)(c[0] | c[1] << 2 | c[2] << 4 | c[3] << 6);
 }
 
+uint32_t hfx_bc_temp_span(const bc_gen *g) {
+    uint32_t span = 0;
+    for (uint32_t i = 0; i < g->inst_count; i++) {
+        const d3d9_inst *in = &g->insts[i];
+        if (in->has_dst && is_temp(in->dst.type, in->dst.num) && in->dst.num >= span) span = in->dst.num + 1u;
+        for (unsigned k = 0; k < in->src_count && k < 4; k++)
+            if (is_temp(in->src[k].type, in->src[k].num) && in->src[k].num >= span) span = in->src[k].num + 1u;
+    }
+    return span ? span : 1;
+}
+
+/* What instruction x needs live before it, given o live after it (*gone: x's writes are all dead). */
+static void step_back(const bc_gen *g, const d3d9_inst *x, const uint8_t *o, uint8_t *v, uint32_t span, bool *gone) {
+    memcpy(v, o, span);
+    *gone = hfx_bc_droppable(x) && !(o[x->dst.num] & x->dst.mask);
+    if (*gone) return;
+    d3d9_inst t = *x; /* what it reads when it writes only the components read later */
+    if (shrinkable(x)) t.dst.mask &= o[x->dst.num];
+    if (kills(x)) v[x->dst.num] &= (uint8_t)~x->dst.mask;
+    for (unsigned k = 0; k < x->src_count; k++)
+        if (is_temp(x->src[k].type, x->src[k].num)) v[x->src[k].num] |= (uint8_t)hfx_bc_read_comps(g, &t, k);
+    if (x->op == D3D9_TEXKILL && is_temp(x->dst.type, x->dst.num)) v[x->dst.num] |= x->dst.mask;
+}
+
 /* live[i][r]: the components of rN read after instruction i before being written, on some path.
  * An instruction whose written components are all dead reads nothing (so a chain that only
  * feeds dead code dies whole); *dead marks those. A loop keeps what is live at its top alive
- * through its whole body (the back edge). */
-uint8_t (*hfx_bc_liveness(bc_gen *g, bool *dead))[BC_MAX_TEMPS] {
-    uint32_t n = g->inst_count;
-    uint8_t (*out)[BC_MAX_TEMPS] = (uint8_t (*)[BC_MAX_TEMPS])hfx_arena_alloc_raw(g->c->arena, (size_t)(n + 1) * BC_MAX_TEMPS);
-    uint8_t (*in)[BC_MAX_TEMPS] = (uint8_t (*)[BC_MAX_TEMPS])hfx_arena_alloc_raw(g->c->arena, (size_t)(n + 1) * BC_MAX_TEMPS);
+ * through its whole body (the back edge). Rows of span bytes: the temporaries the code uses. */
+uint8_t *hfx_bc_liveness(bc_gen *g, bool *dead, uint32_t *span_out) {
+    uint32_t n = g->inst_count, span = hfx_bc_temp_span(g);
+    size_t rows = (size_t)(n + 1) * span;
+    uint8_t *out = (uint8_t *)hfx_arena_alloc_raw(g->c->arena, rows), *in = (uint8_t *)hfx_arena_alloc_raw(g->c->arena, rows);
+    uint8_t *o = (uint8_t *)hfx_arena_alloc_raw(g->c->arena, 2 * (size_t)span), *v = o ? o + span : NULL;
     uint32_t (*succ)[2] = (uint32_t (*)[2])hfx_arena_alloc_raw(g->c->arena, (size_t)(n ? n : 1) * sizeof *succ);
-    if (!out || !in || !succ) return NULL;
-    memset(out, 0, (size_t)(n + 1) * BC_MAX_TEMPS);
-    memset(in, 0, (size_t)(n + 1) * BC_MAX_TEMPS);
+    if (!out || !in || !o || !succ) return NULL;
+    memset(out, 0, rows);
+    memset(in, 0, rows);
     successors(g, succ);
     for (bool changed = true; changed;) {
         changed = false;
         for (uint32_t i = n; i-- > 0;) {
-            const d3d9_inst *x = &g->insts[i];
-            uint8_t o[BC_MAX_TEMPS], v[BC_MAX_TEMPS];
-            memcpy(o, in[succ[i][0] <= n ? succ[i][0] : n], BC_MAX_TEMPS);
-            if (succ[i][1] <= n) for (unsigned r = 0; r < BC_MAX_TEMPS; r++) o[r] |= in[succ[i][1]][r];
-            memcpy(v, o, BC_MAX_TEMPS);
-            bool gone = hfx_bc_droppable(x) && !(o[x->dst.num] & x->dst.mask);
+            memcpy(o, &in[(size_t)(succ[i][0] <= n ? succ[i][0] : n) * span], span);
+            if (succ[i][1] <= n)
+                for (uint32_t r = 0; r < span; r++) o[r] |= in[(size_t)succ[i][1] * span + r];
+            bool gone;
+            step_back(g, &g->insts[i], o, v, span, &gone);
             if (dead) dead[i] = gone;
-            if (!gone) {
-                d3d9_inst t = *x; /* what it reads when it writes only the components read later */
-                if (shrinkable(x)) t.dst.mask &= o[x->dst.num];
-                if (kills(x)) v[x->dst.num] &= (uint8_t)~x->dst.mask;
-                for (unsigned k = 0; k < x->src_count; k++)
-                    if (is_temp(x->src[k].type, x->src[k].num)) v[x->src[k].num] |= (uint8_t)hfx_bc_read_comps(g, &t, k);
-                if (x->op == D3D9_TEXKILL && is_temp(x->dst.type, x->dst.num)) v[x->dst.num] |= x->dst.mask;
-            }
-            if (memcmp(o, out[i], BC_MAX_TEMPS) || memcmp(v, in[i], BC_MAX_TEMPS)) changed = true;
-            memcpy(out[i], o, BC_MAX_TEMPS);
-            memcpy(in[i], v, BC_MAX_TEMPS);
+            if (memcmp(o, &out[(size_t)i * span], span) || memcmp(v, &in[(size_t)i * span], span)) changed = true;
+            memcpy(&out[(size_t)i * span], o, span);
+            memcpy(&in[(size_t)i * span], v, span);
         }
     }
     if (dead) /* writes trimmed to what is read (dead code's caller keeps the result) */
         for (uint32_t i = 0; i < n; i++) {
             d3d9_inst *x = &g->insts[i];
-            unsigned keep = shrinkable(x) ? x->dst.mask & out[i][x->dst.num] : x->dst.mask;
+            unsigned keep = shrinkable(x) ? x->dst.mask & out[(size_t)i * span + x->dst.num] : x->dst.mask;
             if (dead[i] || !keep || keep == x->dst.mask) continue;
             x->dst.mask = (uint8_t)keep;
             if (componentwise(x))
@@ -186,7 +202,8 @@ uint8_t (*hfx_bc_liveness(bc_gen *g, bool *dead))[BC_MAX_TEMPS] {
     for (uint32_t i = 0; i < n; i++) /* the back edges: what the top of a body needs stays live through it */
         if ((g->insts[i].op == D3D9_LOOP || g->insts[i].op == D3D9_REP) && succ[i][1] <= n)
             for (uint32_t j = i; j < succ[i][1] - 1 && j < n; j++)
-                for (unsigned r = 0; r < BC_MAX_TEMPS; r++) out[j][r] |= in[i + 1][r];
+                for (uint32_t r = 0; r < span; r++) out[(size_t)j * span + r] |= in[(size_t)(i + 1) * span + r];
+    if (span_out) *span_out = span;
     return out;
 }
 
@@ -218,13 +235,13 @@ static void touch(bc_gen *g, segs *S, int32_t *open, uint32_t i, unsigned r, uns
 }
 
 /* A segment opens at its register's first touch and closes where none of its components is live. */
-static bool build_segments(bc_gen *g, uint8_t (*live)[BC_MAX_TEMPS], segs *S) {
+static bool build_segments(bc_gen *g, const uint8_t *live, uint32_t span, segs *S) {
     uint32_t n = g->inst_count;
-    int32_t open[BC_MAX_TEMPS];
-    for (unsigned r = 0; r < BC_MAX_TEMPS; r++) open[r] = -1;
+    int32_t *open = HFX_NEW_ARRAY(g->c->arena, int32_t, span);
     S->dst = HFX_NEW_ARRAY(g->c->arena, int32_t, n ? n : 1);
     S->src = HFX_NEW_ARRAY(g->c->arena, int32_t, (n ? n : 1) * 4);
-    if (!S->dst || !S->src) return false;
+    if (!open || !S->dst || !S->src) return false;
+    for (uint32_t r = 0; r < span; r++) open[r] = -1;
     for (uint32_t i = 0; i < n; i++) {
         const d3d9_inst *in = &g->insts[i];
         S->dst[i] = -1;
@@ -233,9 +250,9 @@ static bool build_segments(bc_gen *g, uint8_t (*live)[BC_MAX_TEMPS], segs *S) {
             if (is_temp(in->src[k].type, in->src[k].num))
                 touch(g, S, open, i, in->src[k].num, hfx_bc_read_comps(g, in, k), &S->src[i * 4 + k]);
         if (in->has_dst && is_temp(in->dst.type, in->dst.num)) touch(g, S, open, i, in->dst.num, in->dst.mask, &S->dst[i]);
-        for (unsigned r = 0; r < BC_MAX_TEMPS; r++)
+        for (uint32_t r = 0; r < span; r++)
             if (open[r] >= 0) {
-                if (live[i][r]) S->s[open[r]].end = i;
+                if (live[(size_t)i * span + r]) S->s[open[r]].end = i;
                 else open[r] = -1;
             }
     }
@@ -269,8 +286,9 @@ static bool coalesce(const bc_gen *g, const segs *S, seg *s, int32_t (*busy)[4])
 /* Registers for the segments, first fit by start: a fixed segment needs its own components free,
  * a movable one as many free components as it has. busy[p][c]: the last instruction using it. */
 static uint32_t color(const bc_gen *g, segs *S) {
-    int32_t busy[BC_MAX_TEMPS][4];
-    uint32_t count = 0;
+    int32_t (*busy)[4] = (int32_t (*)[4])hfx_arena_alloc_raw(g->c->arena, (size_t)(S->n ? S->n : 1) * sizeof *busy);
+    uint32_t count = 0; /* at most one register a segment */
+    if (!busy) return BC_MAX_TEMPS + 1;
     for (uint32_t k = 0; k < S->n; k++) {
         seg *s = &S->s[k];
         if (coalesce(g, S, s, busy)) continue;
@@ -278,7 +296,7 @@ static uint32_t color(const bc_gen *g, segs *S) {
         uint32_t p = 0;
         for (;; p++) {
             if (p == count) {
-                if (count == BC_MAX_TEMPS) return BC_MAX_TEMPS + 1;
+                if (count == S->n || count == BC_MAX_TEMPS) return BC_MAX_TEMPS + 1;
                 for (unsigned c = 0; c < 4; c++) busy[count][c] = -1;
                 count++;
             }
@@ -359,9 +377,10 @@ static bool self_copy(const d3d9_inst *in) {
 
 /* Temporaries renumbered: segments packed into the fewest registers; how many. */
 uint32_t hfx_bc_renumber(bc_gen *g) {
-    uint8_t (*live)[BC_MAX_TEMPS] = hfx_bc_liveness(g, NULL);
+    uint32_t span;
+    uint8_t *live = hfx_bc_liveness(g, NULL, &span);
     segs S = {0};
-    if (!live || !build_segments(g, live, &S)) return BC_MAX_TEMPS + 1;
+    if (!live || !build_segments(g, live, span, &S)) return BC_MAX_TEMPS + 1;
     uint32_t count = color(g, &S);
     if (count > BC_MAX_TEMPS) return count;
     uint32_t k = 0;

@@ -23,23 +23,33 @@ unsigned hfx_bc_temp_limit(const bc_gen *g) {
 }
 
 /* Round robin: a register freed long ago rather than just now, so that copies can still be
- * sunk into their writers (bc_peep.c); hfx_bc_renumber gives the final, fewest numbers. */
+ * sunk into their writers (bc_peep.c); hfx_bc_renumber gives the final, fewest numbers. The
+ * numbers are virtual: when all of the space is held it doubles (the model's limit is checked
+ * on the allocator's registers, not here). */
 int hfx_bc_temp(bc_gen *g) {
-    for (unsigned k = 0; k < BC_MAX_TEMPS; k++) {
-        unsigned r = (g->next_temp + k) % BC_MAX_TEMPS;
-        if (g->temps_used & (1u << r)) continue;
-        g->next_temp = r + 1;
-
-        g->temps_used |= 1u << r;
-        if (r + 1 > g->temps_peak) g->temps_peak = r + 1;
-        return (int)r;
+    if (!g->temps_used) {
+        g->temps_used = HFX_NEW_ARRAY(g->c->arena, uint8_t, BC_MAX_TEMPS);
+        g->temp_space = 32;
+        if (!g->temps_used) { hfx_bc_fail(g, g->loc, X_BC_TEMPS, "out of memory"); return -1; }
+    }
+    for (;;) {
+        for (unsigned k = 0; k < g->temp_space; k++) {
+            unsigned r = (g->next_temp + k) % g->temp_space;
+            if (g->temps_used[r]) continue;
+            g->next_temp = r + 1;
+            g->temps_used[r] = 1;
+            return (int)r;
+        }
+        if (g->temp_space == BC_MAX_TEMPS) break;
+        g->next_temp = g->temp_space; /* the new half is all free */
+        g->temp_space *= 2;
     }
     hfx_bc_fail(g, g->loc, X_BC_TEMPS, "this shader needs more than %u temporary registers at once", BC_MAX_TEMPS);
     return -1;
 }
 
 void hfx_bc_release(bc_gen *g, bc_val v) {
-    if (v.own && v.type == D3D9_REG_TEMP && v.num < BC_MAX_TEMPS) g->temps_used &= ~(1u << v.num);
+    if (v.own && v.type == D3D9_REG_TEMP && v.num < BC_MAX_TEMPS && g->temps_used) g->temps_used[v.num] = 0;
 }
 
 void hfx_bc_release_obj(bc_gen *g, bc_obj o) {

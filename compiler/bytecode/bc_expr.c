@@ -200,13 +200,38 @@ static bool select_compare(bc_gen *g, const ir_expr *e, bc_obj *out) {
 
 /* --- arithmetic --- */
 
-/* Per component: rcp, rsq, exp, log take one component each. */
+/* v's values when it reads a def register (its modifier applied), for folding. */
+static bool def_values(const bc_gen *g, bc_val v, float *out) {
+    if (v.type != D3D9_REG_CONST || v.rel || (v.mod != D3D9_SMOD_NONE && v.mod != D3D9_SMOD_NEG)) return false;
+    for (uint32_t d = 0; d < g->def_count; d++)
+        if (g->defs[d].num == v.num) {
+            for (unsigned i = 0; i < v.n; i++) out[i] = v.mod == D3D9_SMOD_NEG ? -g->defs[d].v[v.sw[i]] : g->defs[d].v[v.sw[i]];
+            return true;
+        }
+    return false;
+}
+
+/* Per component: rcp, rsq, exp, log take one component each; components reading the same
+ * source components share one instruction (its result is replicated to the whole mask: x / 16
+ * on a float4 is one rcp, as fxc writes it). The reciprocal of a literal is a literal. */
 bc_val hfx_bc_per_comp(bc_gen *g, uint16_t op, bc_val a, const bc_val *b) {
+    float k[4];
+    if (op == D3D9_RCP && !b && def_values(g, a, k)) {
+        bool nonzero = true;
+        for (unsigned i = 0; i < a.n; i++) { nonzero &= k[i] != 0; k[i] = 1.0f / k[i]; }
+        if (nonzero) return hfx_bc_const(g, k, a.n);
+    }
     int r = hfx_bc_temp(g);
     bc_val d = hfx_bc_reg(D3D9_REG_TEMP, (uint16_t)(r < 0 ? 0 : r), a.n);
     for (unsigned i = 0; i < a.n; i++) {
+        unsigned mask = 1u << i;
+        bool done = false;
+        for (unsigned j = 0; j < i; j++) done |= a.sw[j] == a.sw[i] && (!b || b->sw[j < b->n ? j : 0] == b->sw[i < b->n ? i : 0]);
+        if (done) continue;
+        for (unsigned j = i + 1; j < a.n; j++)
+            if (a.sw[j] == a.sw[i] && (!b || b->sw[j < b->n ? j : 0] == b->sw[i < b->n ? i : 0])) mask |= 1u << j;
         bc_val s[2] = {hfx_bc_scalar_of(a, i), b ? hfx_bc_scalar_of(*b, i) : hfx_bc_scalar_of(a, i)};
-        hfx_bc_emit(g, op, &d, 1u << i, s, b ? 2 : 1);
+        hfx_bc_emit(g, op, &d, mask, s, b ? 2 : 1);
     }
     hfx_bc_release(g, a);
     if (b) hfx_bc_release(g, *b);

@@ -14,7 +14,8 @@ typedef struct known { uint8_t mask; float v[4]; } known;
 
 typedef struct fold {
     bc_gen *g;
-    known t[BC_MAX_TEMPS];         /* what each temporary's components hold at this point */
+    known *t;                      /* what each temporary's components hold at this point (span of them) */
+    uint32_t span;                 /* temporaries the code uses */
     known (*src)[4];               /* per instruction: its sources' registers as they were read */
     uint8_t *res;                  /* per instruction: the components whose result is known */
     bool *del;
@@ -25,7 +26,7 @@ static bool flow(const d3d9_inst *in) {
     return info && (info->flags & D3D9_OPF_FLOW);
 }
 
-static bool is_temp(const d3d9_src *s) { return s->type == D3D9_REG_TEMP && s->num < BC_MAX_TEMPS && !s->relative; }
+static bool is_temp(const d3d9_src *s) { return s->type == D3D9_REG_TEMP && s->num < BC_MAX_TEMPS && !s->relative; } /* below span */
 
 /* Operations this pass evaluates or whose operands it may replace by literals. */
 static bool lanewise(unsigned op) {
@@ -164,7 +165,7 @@ static void forward(fold *f) {
     bc_gen *g = f->g;
     for (uint32_t i = 0; i < g->inst_count; i++) {
         d3d9_inst *in = &g->insts[i];
-        if (flow(in)) { memset(f->t, 0, sizeof f->t); continue; }
+        if (flow(in)) { memset(f->t, 0, f->span * sizeof *f->t); continue; }
         if (eligible(in)) simplify(f, in);
         for (unsigned k = 0; k < in->src_count && k < 4; k++)
             if (is_temp(&in->src[k])) f->src[i][k] = f->t[in->src[k].num];
@@ -211,12 +212,12 @@ static bool to_literal(fold *f, d3d9_inst *in, unsigned k, const known *kn, unsi
  * the register (a reader that reads only known components reads a literal). */
 static void backward(fold *f) {
     bc_gen *g = f->g;
-    uint8_t need[BC_MAX_TEMPS];
-    memset(need, 0, sizeof need);
+    uint8_t *need = HFX_NEW_ARRAY(g->c->arena, uint8_t, f->span);
+    if (!need) return;
     for (uint32_t i = g->inst_count; i-- > 0;) {
         d3d9_inst *in = &g->insts[i];
         if (f->del[i]) continue;
-        if (flow(in)) { memset(need, 0xf, sizeof need); continue; }
+        if (flow(in)) { memset(need, 0xf, f->span); continue; }
         bool temp_dst = in->has_dst && in->op != D3D9_TEXKILL && in->dst.type == D3D9_REG_TEMP &&
                         in->dst.num < BC_MAX_TEMPS && !in->dst.relative;
         unsigned mask = in->dst.mask;
@@ -299,15 +300,8 @@ static void forward_copies(bc_gen *g) {
 
 /* A temporary no instruction touches (a scratch register; the allocator packs it), or -1. */
 static int unused_temp(const bc_gen *g) {
-    uint32_t used = 0;
-    for (uint32_t i = 0; i < g->inst_count; i++) {
-        const d3d9_inst *in = &g->insts[i];
-        if (in->has_dst && in->dst.type == D3D9_REG_TEMP && in->dst.num < 32) used |= 1u << in->dst.num;
-        for (unsigned k = 0; k < in->src_count && k < 4; k++)
-            if (in->src[k].type == D3D9_REG_TEMP && in->src[k].num < 32) used |= 1u << in->src[k].num;
-    }
-    for (int r = 0; r < BC_MAX_TEMPS; r++) if (!(used >> r & 1)) return r; /* renumbered later */
-    return -1;
+    uint32_t span = hfx_bc_temp_span(g);
+    return span < BC_MAX_TEMPS ? (int)span : -1; /* renumbered later */
 }
 
 /* `mul rX.x, vI.c, K; mova a0.x, rX.x` with rX.x read by the mova only: one bone's index. */
@@ -384,11 +378,12 @@ void hfx_bc_merge_mova(bc_gen *g) {
 void hfx_bc_fold(bc_gen *g) {
     uint32_t n = g->inst_count;
     if (!n || g->failed) return;
-    fold f = {.g = g};
+    fold f = {.g = g, .span = hfx_bc_temp_span(g)};
+    f.t = HFX_NEW_ARRAY(g->c->arena, known, f.span);
     f.src = (known (*)[4])hfx_arena_alloc_raw(g->c->arena, (size_t)n * sizeof *f.src);
     f.res = HFX_NEW_ARRAY(g->c->arena, uint8_t, n);
     f.del = HFX_NEW_ARRAY(g->c->arena, bool, n);
-    if (!f.src || !f.res || !f.del) return;
+    if (!f.t || !f.src || !f.res || !f.del) return;
     memset(f.src, 0, (size_t)n * sizeof *f.src);
     forward(&f);
     backward(&f);

@@ -12,7 +12,9 @@
 #include "d3d9/d3d9.h"
 
 enum { BC_REG_NONE = 0xff }; /* an input the model has no register for: an error when read */
-enum { BC_MAX_TEMPS = 32, BC_MAX_CONSTS = 256, BC_MAX_VARS = 4096 };
+/* BC_MAX_TEMPS: the generator's virtual temporaries (any number it needs, up to the token's
+ * 11-bit register number); the allocator packs them into the model's few (hfx_bc_temp_limit). */
+enum { BC_MAX_TEMPS = 2048, BC_MAX_CONSTS = 256, BC_MAX_VARS = 4096 };
 /* fxc's codes where it has one (X3511 loops it cannot unroll, X4505 temporaries, X5608 / X5609
  * instruction slots); X5006 what the writer does not handle, X5610 constant registers (hfx's own). */
 enum { X_BC_UNSUPPORTED = 5006, X_BC_TEMPS = 4505, X_BC_CONSTS = 5610, X_BC_LOOP = 3511 };
@@ -54,8 +56,8 @@ typedef struct bc_gen {
     bool ps2;                 /* ps_2_x: t and v inputs */
     hfx_loc loc;
     d3d9_inst *insts; uint32_t inst_count, inst_cap;
-    uint32_t temps_used;      /* bitmask of live r registers */
-    uint32_t temps_peak;
+    uint8_t *temps_used;      /* per virtual temporary: held by a value (BC_MAX_TEMPS of them) */
+    unsigned temp_space;      /* the numbers hfx_bc_temp cycles through: 32, doubled when all are held */
     unsigned next_temp;       /* where hfx_bc_temp looks first */
     uint8_t cused[BC_MAX_CONSTS];  /* c registers taken by parameters or defs */
     uint32_t max_consts;
@@ -172,8 +174,10 @@ void hfx_bc_dead_code(bc_gen *g);                            /* instructions who
 
 /* --- bc_alloc.c --- */
 /* Per instruction, the components of each temporary read later on some path (NULL: out of
- * memory); dead (optional, one per instruction): writes nothing reads, which read nothing. */
-uint8_t (*hfx_bc_liveness(bc_gen *g, bool *dead))[BC_MAX_TEMPS];
+ * memory): live[i * *span + r]; dead (optional, one per instruction): writes nothing reads,
+ * which read nothing. */
+uint8_t *hfx_bc_liveness(bc_gen *g, bool *dead, uint32_t *span);
+uint32_t hfx_bc_temp_span(const bc_gen *g);                  /* 1 + the highest temporary number the code uses */
 unsigned hfx_bc_read_comps(const bc_gen *g, const d3d9_inst *in, unsigned k); /* components source k reads */
 bool hfx_bc_droppable(const d3d9_inst *in);                  /* only writes a temporary */
 uint32_t hfx_bc_renumber(bc_gen *g);                         /* temporaries packed by component; how many */
@@ -188,6 +192,11 @@ void hfx_bc_fuse_mad(bc_gen *g);                              /* a mul's tempora
 /* Registers an instruction reads over the model's read ports copied into temporaries before it;
  * temps: the renumbered temporaries' count. Returns the count after. */
 uint32_t hfx_bc_read_ports(bc_gen *g, uint32_t temps);
+
+/* --- bc_sched.c --- */
+/* The temporaries packed (hfx_bc_renumber); when they are more than the model's, the code is
+ * first reordered so that each value is computed just before it is read. How many. */
+uint32_t hfx_bc_allocate(bc_gen *g);
 
 /* --- bc_fold.c --- */
 void hfx_bc_fold(bc_gen *g);                                 /* constants followed component by component */

@@ -147,8 +147,7 @@ static bc_val i_smoothstep(bc_gen *g, const ir_expr *e, bc_val *a) { /* t = satu
     bc_val rw = hfx_bc_per_comp(g, D3D9_RCP, w, NULL);
     bc_val d = hfx_bc_op2(g, D3D9_ADD, n, a[2], hfx_bc_neg(a[0]));
     bc_val t = hfx_bc_op2(g, D3D9_MUL, n, d, rw);
-    if (!hfx_bc_can_sat(g)) t = i_saturate(g, e, &t);
-    else if (t.own && g->inst_count && g->insts[g->inst_count - 1].dst.num == t.num) g->insts[g->inst_count - 1].dst.mods |= D3D9_DMOD_SAT;
+    t = i_saturate(g, e, &t); /* _sat on the product, or a mov_sat when it folded to a literal or a copy */
     bc_val k = hfx_bc_op3(g, D3D9_MAD, n, keep(t), hfx_bc_constf(g, -2), hfx_bc_constf(g, 3));
     bc_val t2 = hfx_bc_op2(g, D3D9_MUL, n, keep(t), t);
     return hfx_bc_op2(g, D3D9_MUL, n, t2, k);

@@ -63,9 +63,10 @@ void hfx_bc_fuse_mad(bc_gen *g) {
         for (unsigned k = 0; k < 2; k++) {
             int m = product_of(g, i, k);
             if (m < 0) continue;
-            uint8_t (*live)[BC_MAX_TEMPS] = hfx_bc_liveness(g, NULL);
+            uint32_t span;
+            const uint8_t *live = hfx_bc_liveness(g, NULL, &span);
             const d3d9_src *t = &in->src[k];
-            if (!live || (live[i][t->num] & hfx_bc_read_comps(g, in, k))) continue; /* read again later */
+            if (!live || t->num >= span || (live[(size_t)i * span + t->num] & hfx_bc_read_comps(g, in, k))) continue; /* read again later */
             bool again = false; /* read between the mul and the add */
             for (uint32_t j = (uint32_t)m + 1; j < i && !again; j++)
                 for (unsigned s = 0; s < g->insts[j].src_count; s++)

@@ -45,8 +45,9 @@ static bool dead_after(const bc_gen *g, uint32_t at, unsigned num, unsigned mask
             if (!mask) return true;
         }
         if (flow(in)) { /* a loop may read it again at its top: ask the liveness that follows the flow */
-            uint8_t (*live)[BC_MAX_TEMPS] = num < BC_MAX_TEMPS ? hfx_bc_liveness((bc_gen *)g, NULL) : NULL;
-            return live && !(live[at][num] & mask);
+            uint32_t span;
+            const uint8_t *live = hfx_bc_liveness((bc_gen *)g, NULL, &span);
+            return live && num < span && !(live[(size_t)at * span + num] & mask);
         }
     }
     return true;
@@ -167,7 +168,7 @@ void hfx_bc_sink(bc_gen *g) {
 void hfx_bc_dead_code(bc_gen *g) {
     uint32_t n = g->inst_count;
     bool *drop = HFX_NEW_ARRAY(g->c->arena, bool, n ? n : 1);
-    if (!drop || !hfx_bc_liveness(g, drop)) return;
+    if (!drop || !hfx_bc_liveness(g, drop, NULL)) return;
     uint32_t k = 0;
     for (uint32_t i = 0; i < n; i++) if (!drop[i]) g->insts[k++] = g->insts[i];
     g->inst_count = k;

@@ -128,6 +128,70 @@ static void compound_assignment_folds(void) {
             "\n// approximately 2 instruction slots used (0 texture, 2 arithmetic)\n");
 }
 
+/* forty variables, each the previous times A[i]: the generator holds a virtual temporary for each
+ * until the end of main (40 at once, more than the 32 it once numbered), but only one value is
+ * live at a time, so all of it runs in r0: mul r0, v0, c0, then r0 *= c1..c38, and the last
+ * product written straight to oPos. 40 slots. */
+static void forty_virtual_temporaries_in_one_register(void) {
+    static char src[4096], want[4096];
+    size_t n = (size_t)sprintf(src, "float4 A[40];\nfloat4 main(float4 p : POSITION) : POSITION {\n    float4 x0 = p * A[0];\n");
+    for (int i = 1; i < 40; i++) n += (size_t)sprintf(src + n, "    float4 x%d = x%d * A[%d];\n", i, i - 1, i);
+    sprintf(src + n, "    return x39;\n}\n");
+    n = (size_t)sprintf(want, "    vs_2_0\n    dcl_position v0\n    mul r0, v0, c0\n");
+    for (int i = 1; i < 39; i++) n += (size_t)sprintf(want + n, "    mul r0, r0, c%d\n", i);
+    sprintf(want + n, "    mul oPos, r0, c39\n\n// approximately 40 instruction slots used\n");
+    code_is(src, "vs_2_0", want);
+}
+
+/* thirteen products, then their maximum: computed in order they hold thirteen registers before
+ * the first max (vs_2_0 has 12); reordered, each product is computed just before the max that
+ * reads it: r0 = s1, r1 = s0, r0 = max(s0, s1), then r1 = sK, r0 = max(r0, r1) for K = 2..12,
+ * the last written to oPos. 2 registers, 25 slots. */
+static void products_computed_where_read(void) {
+    static char src[2048], want[2048];
+    size_t n = (size_t)sprintf(src, "float4 A[13];\nfloat4 main(float4 p : POSITION) : POSITION {\n");
+    for (int i = 0; i < 13; i++) n += (size_t)sprintf(src + n, "    float4 s%d = p * A[%d];\n", i, i);
+    n += (size_t)sprintf(src + n, "    return ");
+    for (int i = 1; i < 13; i++) n += (size_t)sprintf(src + n, "max(");
+    n += (size_t)sprintf(src + n, "s0");
+    for (int i = 1; i < 13; i++) n += (size_t)sprintf(src + n, ", s%d)", i);
+    sprintf(src + n, ";\n}\n");
+    n = (size_t)sprintf(want, "    vs_2_0\n    dcl_position v0\n    mul r0, v0, c1\n    mul r1, v0, c0\n    max r0, r1, r0\n");
+    for (int i = 2; i < 12; i++) n += (size_t)sprintf(want + n, "    mul r1, v0, c%d\n    max r0, r0, r1\n", i);
+    sprintf(want + n, "    mul r1, v0, c12\n    max oPos, r0, r1\n\n// approximately 25 instruction slots used\n");
+    code_is(src, "vs_2_0", want);
+}
+
+/* The same products summed: each product but s1 goes into the add that reads it, a mad
+ * (bc_mad.c): r0 = s1, then r0 = v0 * cK + r0 for K = 0, 2..12. 1 register, 13 slots. */
+static void products_added_as_mads(void) {
+    static char src[2048], want[2048];
+    size_t n = (size_t)sprintf(src, "float4 A[13];\nfloat4 main(float4 p : POSITION) : POSITION {\n");
+    for (int i = 0; i < 13; i++) n += (size_t)sprintf(src + n, "    float4 s%d = p * A[%d];\n", i, i);
+    n += (size_t)sprintf(src + n, "    return s0");
+    for (int i = 1; i < 13; i++) n += (size_t)sprintf(src + n, " + s%d", i);
+    sprintf(src + n, ";\n}\n");
+    n = (size_t)sprintf(want, "    vs_2_0\n    dcl_position v0\n    mul r0, v0, c1\n    mad r0, v0, c0, r0\n");
+    for (int i = 2; i < 12; i++) n += (size_t)sprintf(want + n, "    mad r0, v0, c%d, r0\n", i);
+    sprintf(want + n, "    mad oPos, v0, c12, r0\n\n// approximately 13 instruction slots used\n");
+    code_is(src, "vs_2_0", want);
+}
+
+/* c / 16 reads the literal 1/16 = 0.0625 (no rcp); c / (float4)x is one rcp of c0.x written to
+ * all four components (x replicated), then its mul; c * 0.0625 goes into the add as a mad: 4
+ * arithmetic slots with the mov to oC0. The def keeps 16 beside 0.0625 (read in .y). */
+static void reciprocals_of_literals_and_scalars(void) {
+    code_is("float x;\nfloat4 main(float4 c : COLOR0) : COLOR0 { return c / 16 + c / (float4)x; }\n", "ps_2_0",
+            "    ps_2_0\n"
+            "    def c1, 16, 0.0625, 0, 0\n"
+            "    dcl v0\n"
+            "    rcp r0, c0.x\n"
+            "    mul r0, v0, r0\n"
+            "    mad r0, v0, c1.y, r0\n"
+            "    mov oC0, r0\n"
+            "\n// approximately 4 instruction slots used (0 texture, 4 arithmetic)\n");
+}
+
 /* --- liveness over flow, on a hand-made list --- */
 
 static d3d9_inst inst(uint16_t op, int dst, unsigned mask, int s0, uint8_t sw0, int s1, uint8_t sw1) {
@@ -192,5 +256,9 @@ int main(void) {
     RUN(skinning_by_columns);
     RUN(compound_assignment_folds);
     RUN(loop_carried_value);
+    RUN(forty_virtual_temporaries_in_one_register);
+    RUN(products_computed_where_read);
+    RUN(products_added_as_mads);
+    RUN(reciprocals_of_literals_and_scalars);
     return test_summary();
 }

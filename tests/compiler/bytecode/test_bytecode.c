@@ -303,15 +303,18 @@ static void limits(void) {
     CHECK(ok);
     CHECK_CONTAINS(text, "// approximately 71 instruction slots used (0 texture, 71 arithmetic)\n");
     free(text);
-    /* thirteen products live at once before they are multiplied (summed, they would be one mad
-     * chain): vs_2_0 has 12 temporaries */
+    /* thirteen products summed, then multiplied by the sum one by one: each is computed before
+     * the add that first reads it, but all thirteen stay live until their mul; after the last
+     * add: the sum and s0..s12, 14 registers (vs_2_0 has 12) */
     static char src[2048];
     size_t n = (size_t)sprintf(src, "float4 A[13];\nfloat4 main(float4 p : POSITION) : POSITION {\n");
     for (int i = 0; i < 13; i++) n += (size_t)sprintf(src + n, "    float4 s%d = p * A[%d];\n", i, i);
-    n += (size_t)sprintf(src + n, "    return s0");
-    for (int i = 1; i < 13; i++) n += (size_t)sprintf(src + n, " * s%d", i);
+    n += (size_t)sprintf(src + n, "    float4 t = s0");
+    for (int i = 1; i < 13; i++) n += (size_t)sprintf(src + n, " + s%d", i);
+    n += (size_t)sprintf(src + n, ";\n    return t");
+    for (int i = 0; i < 13; i++) n += (size_t)sprintf(src + n, " * s%d", i);
     sprintf(src + n, ";\n}\n");
-    refused(src, "vs_2_0", "t.fx(2,8): error X4505: this shader needs 13 temporary registers; vs_2_0 has 12\n");
+    refused(src, "vs_2_0", "t.fx(2,8): error X4505: this shader needs 14 temporary registers; vs_2_0 has 12\n");
     /* ps_2_0 has no loops: one bounded by a parameter cannot be unrolled (fxc: X3511) */
     refused("int N;\nfloat4 K;\nfloat4 main(float4 c : COLOR0) : COLOR0 {\n    float4 x = c;\n"
             "    for (int i = 0; i < N; i++) x += K;\n    return x;\n}\n",
