@@ -200,6 +200,7 @@ uint32_t hfx_bc_allocate(bc_gen *g);
 
 /* --- bc_fold.c --- */
 void hfx_bc_fold(bc_gen *g);                                 /* constants followed component by component */
+void hfx_bc_replicate_scalars(bc_gen *g);                    /* scalar instructions read replicate swizzles */
 void hfx_bc_merge_mova(bc_gen *g);                           /* bones' indices in one mova a0.xyzw */
 
 /* --- bc_intrin.c --- */

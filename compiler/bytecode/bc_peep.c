@@ -198,3 +198,20 @@ void hfx_bc_prune_constants(bc_gen *g) {
         if (g->defs[i].num < BC_MAX_CONSTS && read[g->defs[i].num]) g->defs[k++] = g->defs[i];
     g->def_count = k;
 }
+
+/* D3D9's scalar instructions (rcp, rsq, exp, log, pow, sincos) must read their sources with a
+ * replicate swizzle (`rsq r1.x, r1.x`); the reader and MojoShader refuse any other. After the
+ * passes that renumber components, make each such source the replicate of the component its
+ * first position names, the one these instructions read. */
+void hfx_bc_replicate_scalars(bc_gen *g) {
+    for (uint32_t i = 0; i < g->inst_count; i++) {
+        d3d9_inst *in = &g->insts[i];
+        unsigned n = 0;
+        switch (in->op) {
+        case D3D9_RCP: case D3D9_RSQ: case D3D9_EXP: case D3D9_LOG: case D3D9_EXPP: case D3D9_LOGP: case D3D9_SINCOS: n = 1; break;
+        case D3D9_POW: n = 2; break;
+        default: break;
+        }
+        for (unsigned k = 0; k < n && k < in->src_count; k++) in->src[k].swizzle = (uint8_t)((in->src[k].swizzle & 3u) * 0x55u);
+    }
+}

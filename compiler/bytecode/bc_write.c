@@ -120,6 +120,7 @@ const uint32_t *hfx_bc_write(ir_ctx *c, const ir_shader *sh, const char *profile
     hfx_bc_prune_constants(&g);
     uint32_t temps = hfx_bc_allocate(&g);
     temps = hfx_bc_read_ports(&g, temps);
+    hfx_bc_replicate_scalars(&g);
     if (temps > hfx_bc_temp_limit(&g)) {
         hfx_error(c->diags, at, X_BC_TEMPS, "this shader needs %u temporary registers; %s has %u", temps, m->name,
                   hfx_bc_temp_limit(&g));

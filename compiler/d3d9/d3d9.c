@@ -168,6 +168,7 @@ static uint32_t read_inst(d3d9_reader *r, uint32_t i) {
     uint32_t errors = r->diags->errors;
     hfx_d3d9_read_operands(r, in, op, i, len);
     if (r->diags->errors == errors) hfx_d3d9_check_ports(r, in, op, i);
+    if (r->diags->errors == errors) hfx_d3d9_check_scalar_sources(r, in, op, i);
     track_flow(r, op, i);
     count_loops(r);
     return i + 1 + len;

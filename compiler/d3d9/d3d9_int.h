@@ -36,6 +36,7 @@ void hfx_d3d9_operand_counts(const d3d9_op_info *op, uint8_t model, unsigned *ds
 void hfx_d3d9_read_operands(d3d9_reader *r, d3d9_inst *in, const d3d9_op_info *op, uint32_t i, uint32_t len);
 /* The model's read ports (hfx_d3d9_port_excess): an error at word `at` naming the registers. */
 void hfx_d3d9_check_ports(d3d9_reader *r, const d3d9_inst *in, const d3d9_op_info *op, uint32_t at);
+void hfx_d3d9_check_scalar_sources(d3d9_reader *r, const d3d9_inst *in, const d3d9_op_info *op, uint32_t at);
 
 /* --- d3d9_ctab.c --- */
 void hfx_d3d9_read_ctab(d3d9_reader *r, const d3d9_comment *c, uint32_t at);

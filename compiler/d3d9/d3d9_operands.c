@@ -256,3 +256,25 @@ void hfx_d3d9_check_ports(d3d9_reader *r, const d3d9_inst *in, const d3d9_op_inf
     hfx_d3d9_fail(r, at, X_D3D9_OPERAND, "%s reads %u different registers (%s); %s has %u read port%s for them",
                   op->name, count, regs, hfx_d3d9_model_name(st, m), ports, ports == 1 ? "" : "s");
 }
+
+/* --- scalar sources --- */
+
+/* rcp, rsq, exp, log, expp, logp, pow and sincos read one component: from vs_2_0 / ps_2_0 on,
+ * Microsoft's instruction pages require it named by a replicate swizzle (`rsq r0.x, r1.y`). */
+void hfx_d3d9_check_scalar_sources(d3d9_reader *r, const d3d9_inst *in, const d3d9_op_info *op, uint32_t at) {
+    if (r->sh->model < D3D9_SM(2, 0)) return;
+    unsigned n = 0;
+    switch (in->op) {
+    case D3D9_RCP: case D3D9_RSQ: case D3D9_EXP: case D3D9_LOG: case D3D9_EXPP: case D3D9_LOGP: case D3D9_SINCOS: n = 1; break;
+    case D3D9_POW: n = 2; break;
+    default: return;
+    }
+    for (unsigned k = 0; k < n && k < in->src_count; k++) {
+        uint8_t sw = in->src[k].swizzle;
+        if (sw == (uint8_t)((sw & 3u) * 0x55u)) continue;
+        char reg[24];
+        put_reg(reg, sizeof reg, r->sh->stage, &in->src[k]);
+        hfx_d3d9_fail(r, at, X_D3D9_OPERAND, "%s reads %s without a replicate swizzle (.x, .y, .z or .w)", op->name, reg);
+        return;
+    }
+}

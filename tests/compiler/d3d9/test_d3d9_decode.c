@@ -258,6 +258,20 @@ static void read_ports(void) {
     RUN_ERR(ps11, "t.vso(0,24): error X5003: mad reads 3 different registers (c0, c1, c2); ps_1_1 has 2 read ports for them\n");
 }
 
+/* From SM2 on, rcp / rsq / exp / log / pow / sincos name their one component by a replicate
+ * swizzle (Microsoft's instruction pages); any other swizzle is refused at the instruction. */
+static void scalar_sources(void) {
+    static const uint32_t ps[] = {
+        PS(2, 0),
+        OP(0x07, 2), DST(R_TEMP, 0, 0x1), SRC(R_TEMP, 1, XYZW),
+        OP(0x07, 2), DST(R_TEMP, 0, 0x2), SRC(R_TEMP, 1, 0x55),
+        OP(0x20, 3), DST(R_TEMP, 0, 0x1), SRC(R_TEMP, 1, 0), SRC(R_TEMP, 2, 0x1b),
+        END_TOKEN};
+    RUN_ERR(ps,
+            "t.vso(0,4): error X5003: rsq reads r1 without a replicate swizzle (.x, .y, .z or .w)\n"
+            "t.vso(0,28): error X5003: pow reads r2 without a replicate swizzle (.x, .y, .z or .w)\n");
+}
+
 static void shader_detection(void) {
     static const uint32_t ps[] = {PS(2, 0), END_TOKEN}, vs11[] = {VS(1, 1), END_TOKEN}, vs10[] = {VS(1, 0), END_TOKEN};
     static const uint32_t fx[] = {0xfeff0901u, 0}; /* an fx_2_0 effect's version word */
@@ -275,5 +289,6 @@ int main(void) {
     RUN(ps_1_x_listing);
     RUN(errors_located);
     RUN(read_ports);
+    RUN(scalar_sources);
     return test_summary();
 }
