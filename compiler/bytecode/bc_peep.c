@@ -204,14 +204,7 @@ void hfx_bc_prune_constants(bc_gen *g) {
  * passes that renumber components, make each such source the replicate of the component its
  * first position names, the one these instructions read. */
 void hfx_bc_replicate_scalars(bc_gen *g) {
-    for (uint32_t i = 0; i < g->inst_count; i++) {
-        d3d9_inst *in = &g->insts[i];
-        unsigned n = 0;
-        switch (in->op) {
-        case D3D9_RCP: case D3D9_RSQ: case D3D9_EXP: case D3D9_LOG: case D3D9_EXPP: case D3D9_LOGP: case D3D9_SINCOS: n = 1; break;
-        case D3D9_POW: n = 2; break;
-        default: break;
-        }
-        for (unsigned k = 0; k < n && k < in->src_count; k++) in->src[k].swizzle = (uint8_t)((in->src[k].swizzle & 3u) * 0x55u);
-    }
+    for (uint32_t i = 0; i < g->inst_count; i++)
+        for (unsigned k = 0, n = hfx_d3d9_scalar_sources(&g->insts[i]); k < n; k++)
+            g->insts[i].src[k].swizzle = (uint8_t)((g->insts[i].src[k].swizzle & 3u) * 0x55u);
 }

@@ -222,6 +222,9 @@ bool hfx_d3d9_port_source(const d3d9_inst *in, uint8_t model, unsigned k);
 
 /* Whether two sources read the same register (type, number, and the index of a relative one). */
 bool hfx_d3d9_same_register(const d3d9_src *a, const d3d9_src *b);
+/* How many of the instruction's sources are read as one component (D3D9_OPF_SCALAR: all of pow's,
+ * sincos's first), which from SM2 on must carry a replicate swizzle; 0 for other instructions. */
+unsigned hfx_d3d9_scalar_sources(const d3d9_inst *in);
 
 /* The first register type `in` reads more different registers of than the model's read ports
  * allow, or -1; *count: how many it reads. The reader refuses such an instruction (X5003), as

@@ -259,17 +259,16 @@ void hfx_d3d9_check_ports(d3d9_reader *r, const d3d9_inst *in, const d3d9_op_inf
 
 /* --- scalar sources --- */
 
-/* rcp, rsq, exp, log, expp, logp, pow and sincos read one component: from vs_2_0 / ps_2_0 on,
- * Microsoft's instruction pages require it named by a replicate swizzle (`rsq r0.x, r1.y`). */
+unsigned hfx_d3d9_scalar_sources(const d3d9_inst *in) {
+    if (!(hfx_d3d9_op_find(in->op)->flags & D3D9_OPF_SCALAR)) return 0;
+    return in->op == D3D9_SINCOS ? 1 : in->src_count; /* SM2's sincos: two constants follow */
+}
+
+/* From vs_2_0 / ps_2_0 on, Microsoft's instruction pages require a scalar instruction's sources
+ * to name their one component by a replicate swizzle (`rsq r0.x, r1.y`). */
 void hfx_d3d9_check_scalar_sources(d3d9_reader *r, const d3d9_inst *in, const d3d9_op_info *op, uint32_t at) {
     if (r->sh->model < D3D9_SM(2, 0)) return;
-    unsigned n = 0;
-    switch (in->op) {
-    case D3D9_RCP: case D3D9_RSQ: case D3D9_EXP: case D3D9_LOG: case D3D9_EXPP: case D3D9_LOGP: case D3D9_SINCOS: n = 1; break;
-    case D3D9_POW: n = 2; break;
-    default: return;
-    }
-    for (unsigned k = 0; k < n && k < in->src_count; k++) {
+    for (unsigned k = 0, n = hfx_d3d9_scalar_sources(in); k < n; k++) {
         uint8_t sw = in->src[k].swizzle;
         if (sw == (uint8_t)((sw & 3u) * 0x55u)) continue;
         char reg[24];
