@@ -58,10 +58,11 @@ struct hfx_device {
     struct hfx_vk_device *vk;      /* runtime/vk/: the Vulkan device's state, NULL on GL */
     char error[1024];
     uint64_t stamp;                /* last parameter version handed out */
-    /* The pass whose Apply ran last, when it was a program-only pass and the back end has set
-     * no other state since: applying it again only needs the parameters changed since (GL's
-     * short way; Vulkan leaves it NULL). Anything that changes the device's state (another
-     * pass, begin / end, the viewport) clears it, and so does freeing the pass's effect. */
+    /* The pass whose Apply ran last, when the back end has set no other state since: applying
+     * it again only needs the parameters changed since. GL: a program-only pass; Vulkan: a pass
+     * whose render states read no parameter (its pipeline is kept, not looked up again). Anything
+     * that changes the device's state (another pass, begin / end, the viewport, a render state
+     * set by hand) clears it, and so does freeing or reloading the pass's effect. */
     const struct hfx_pass *applied;
     hfx_rs_value rs[HFX_ST_COUNT_];/* D3D render states as the passes set them */
     float max_anisotropy;          /* 0 without anisotropic filtering (state_values.c clamps to it) */

@@ -34,8 +34,8 @@ static uint32_t selected(const hfx_effect *fx, const hfx_fx_pass *fp, uint32_t i
     return HFX_NONE;
 }
 
-/* The pass's program: its own, or the shader-array variant its selectors pick now. */
-static int choose_program(hfx_pass *p, uint32_t *out, int *kept) {
+/* The pass's program: its own (*fixed), or the shader-array variant its selectors pick now. */
+static int choose_program(hfx_pass *p, uint32_t *out, int *kept, int *fixed) {
     const hfx_fx_effect *e = p->fx->sh->fx;
     const hfx_fx_pass *fp = &e->passes[p->index];
     int variants = 0;
@@ -43,6 +43,7 @@ static int choose_program(hfx_pass *p, uint32_t *out, int *kept) {
     *out = fp->program;
     *kept = !variants && fp->program >= e->program_count && p->fx->vk->last_program;
     if (*kept) *out = p->fx->vk->last_program - 1; /* the shaders stay set */
+    *fixed = !variants && !*kept;
     if (!variants)
         return *out < e->program_count ? HFX_OK : fail(p->fx->dev, HFX_ERR_NOT_FOUND, "the pass sets no shaders");
     uint32_t vs = selected(p->fx, fp, HFX_ST_VERTEXSHADER), ps = selected(p->fx, fp, HFX_ST_PIXELSHADER);
@@ -53,13 +54,17 @@ static int choose_program(hfx_pass *p, uint32_t *out, int *kept) {
                        "compiler reached by the driving parameter exist)", (int)vs, (int)ps);
 }
 
+/* chosen_seen for a pass whose program is its own, whatever the parameters hold. */
+#define FIXED_PROGRAM UINT64_MAX
+
 /* The same, worked out again only after a parameter changed (the change log grew): a game's
- * per-draw Apply does not re-run the selectors or scan the variants. */
+ * per-draw Apply does not re-run the selectors or scan the variants; a pass without shader
+ * arrays, never again. */
 static int program_of(hfx_pass *p, uint32_t *out) {
     uint64_t now = p->fx->log_len + 1;
-    if (p->chosen_seen == now) return *out = p->chosen_index, HFX_OK;
-    int kept = 0, rc = choose_program(p, out, &kept);
-    if (rc == HFX_OK && !kept) p->chosen_index = *out, p->chosen_seen = now; /* kept: the last Apply's, may change */
+    if (p->chosen_seen == now || p->chosen_seen == FIXED_PROGRAM) return *out = p->chosen_index, HFX_OK;
+    int kept = 0, fixed = 0, rc = choose_program(p, out, &kept, &fixed);
+    if (rc == HFX_OK && !kept) p->chosen_index = *out, p->chosen_seen = fixed ? FIXED_PROGRAM : now;
     return rc;
 }
 
@@ -223,6 +228,48 @@ int hfx_vk_pass_apply(hfx_pass *p) {
                        "with hfx_pass_apply_vk");
 }
 
+/* The target's fields the pipeline depends on (the viewport and scissor are dynamic states). */
+static int same_pipeline_target(const hfx_vk_target *a, const hfx_vk_target *b) {
+    return a->render_pass == b->render_pass && a->subpass == b->subpass && a->color_count == b->color_count &&
+           a->depth_format == b->depth_format && a->samples == b->samples && a->layout == b->layout &&
+           memcmp(a->color_formats, b->color_formats, a->color_count * sizeof *a->color_formats) == 0;
+}
+
+/* Render states that read no parameter: applying the pass again writes the same values. */
+static int states_fixed(const hfx_effect *fx, const hfx_fx_pass *fp) {
+    const hfx_fx_effect *e = fx->sh->fx;
+    for (uint32_t i = 0; i < fp->state_count && fp->first_state + i < e->state_count; i++) {
+        const hfx_fx_state *st = &e->states[fp->first_state + i];
+        const hfx_state_info *info = hfx_state_by_id(st->id);
+        if (info && info->scope == HFX_SS_RENDER && (st->kind == HFX_FX_VALUE_PARAM || st->kind == HFX_FX_VALUE_EXPR))
+            return 0;
+    }
+    return 1;
+}
+
+/* The pipeline for prog: on the short way (the same pass again, on a target of the same formats,
+ * with no state set since) the last one, without building and comparing its key; otherwise
+ * looked up, and the pass becomes the device's last when its render states read no parameter. */
+static int pipeline_of(hfx_pass *p, const vk_program *prog, uint32_t index, const hfx_vk_target *t, int quick,
+                       const vk_pso **out) {
+    hfx_device *dev = p->fx->dev;
+    struct hfx_vk_device *vk = dev->vk;
+    if (quick && vk->quick_program == index && vk->last_pso < vk->pso_count) {
+        *out = &vk->psos[vk->last_pso];
+        return HFX_OK;
+    }
+    vk_pso_key key;
+    key_of(dev, prog, t, &key);
+    int rc = hfx_vk_pipeline(dev, &key, out);
+    if (rc) return rc;
+    if (states_fixed(p->fx, &p->fx->sh->fx->passes[p->index])) {
+        dev->applied = p;
+        vk->quick_target = *t;
+        vk->quick_program = index;
+    }
+    return HFX_OK;
+}
+
 /* Apply recorded into cmd; hfx_pass_apply_vk has checked that the device is Vulkan's and that
  * cmd and t are set. */
 static int apply_vk(hfx_pass *p, VkCommandBuffer cmd, const hfx_vk_target *t) {
@@ -232,7 +279,11 @@ static int apply_vk(hfx_pass *p, VkCommandBuffer cmd, const hfx_vk_target *t) {
     const char *bad = check_target(t);
     if (bad) return fail(dev, HFX_ERR_COUNT, bad);
     const hfx_fx_pass *fp = &fx->sh->fx->passes[p->index];
-    apply_render_states(fx, fp);
+    int quick = dev->applied == p && same_pipeline_target(&dev->vk->quick_target, t);
+    if (!quick) { /* the device's states are this pass's already on the short way */
+        dev->applied = NULL;
+        apply_render_states(fx, fp);
+    }
     uint32_t index;
     int changed = 0, rc = program_of(p, &index);
     if (rc) return rc;
@@ -243,10 +294,8 @@ static int apply_vk(hfx_pass *p, VkCommandBuffer cmd, const hfx_vk_target *t) {
     if (rc) return rc;
     hfx_vk_uniforms_update(fx, prog, b, t);
     if ((rc = update_resources(dev, prog, b, changed))) return rc;
-    vk_pso_key key;
-    key_of(dev, prog, t, &key);
     const vk_pso *pso;
-    if ((rc = hfx_vk_pipeline(dev, &key, &pso))) return rc;
+    if ((rc = pipeline_of(p, prog, index, t, quick, &pso))) return rc;
     record(dev, cmd, prog, b, pso, t);
     fx->vk->last_program = index + 1;
     return HFX_OK;

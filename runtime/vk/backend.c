@@ -71,6 +71,7 @@ static int vk_effect_begin(hfx_effect *e) {
 
 static int vk_effect_end(hfx_effect *e) {
     memcpy(e->dev->rs, e->vk->saved, sizeof e->vk->saved);
+    e->dev->applied = NULL; /* the states changed under the last pass */
     return HFX_OK;
 }
 

@@ -297,6 +297,7 @@ int hfx_device_set_render_state_vk(hfx_device *dev, const char *state, int value
     memset(&st, 0, sizeof st);
     st.id = info->id, st.kind = HFX_FX_VALUE_INT, st.i = value, st.count = 1;
     hfx_rs_resolve(NULL, &st, &dev->rs[info->id]);
+    dev->applied = NULL; /* the last pass's pipeline may no longer fit */
     return HFX_OK;
 }
 
@@ -304,5 +305,6 @@ int hfx_device_reset_render_states_vk(hfx_device *dev) {
     if (!dev) return HFX_ERR_NULL;
     if (!dev->vk) return hfx_rt_fail(dev, HFX_ERR_NOT_FOUND, "hfx_device_reset_render_states_vk: not a Vulkan device");
     hfx_rs_defaults(dev->rs);
+    dev->applied = NULL;
     return HFX_OK;
 }

@@ -266,6 +266,7 @@ void hfx_vk_pipelines_forget(hfx_device *dev, const void *program) {
     }
     vk->pso_count = kept;
     vk->last_pso = UINT32_MAX;
+    dev->applied = NULL; /* its pipeline may be gone */
 }
 
 void hfx_vk_pipelines_free(hfx_device *dev) {
@@ -273,5 +274,6 @@ void hfx_vk_pipelines_free(hfx_device *dev) {
     for (uint32_t i = 0; i < vk->pso_count; i++) vk->fn.DestroyPipeline(vk->device, vk->psos[i].pipeline, NULL);
     free(vk->psos);
     vk->psos = NULL;
+    dev->applied = NULL;
     vk->pso_count = vk->pso_cap = 0;
 }

@@ -146,7 +146,8 @@ static void scan_log(hfx_effect *fx, const vk_program *p, vk_bound *b) {
     if (dirty) b->dirty = 1;
 }
 
-static void put(vk_bound *b, int32_t at, const void *v, size_t n) {
+/* Inline, so the compare of a constant size is a load and a compare, not a call. */
+static inline void put(vk_bound *b, int32_t at, const void *v, size_t n) {
     if (at < 0 || memcmp(b->image + at, v, n) == 0) return;
     memcpy(b->image + at, v, n);
     b->dirty = 1;

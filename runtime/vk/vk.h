@@ -113,6 +113,10 @@ struct hfx_vk_device {
     size_t slices_written, sets_written; /* hfx_device_writes_vk */
     vk_pso_key last_key;            /* the last Apply's key and pipeline: most Applies repeat it */
     uint32_t last_pso;              /* index in psos, UINT32_MAX: none */
+    /* Apply's short way (apply.c): while hfx_device.applied is set, that pass's render states are
+     * what the device holds and last_pso is its pipeline for this program and target. */
+    hfx_vk_target quick_target;     /* the target it was applied for */
+    uint32_t quick_program;         /* and the program it chose */
     vk_sampler_entry *samplers;
     uint32_t sampler_count, sampler_cap;
     int mirror_once;                /* samplerMirrorClampToEdge */

@@ -39,7 +39,8 @@ static const char *SRC =
     "technique FactorParam { pass P { AlphaBlendEnable = true; SrcBlend = BlendFactor; DestBlend = Zero;\n"
     "  BlendFactor = <Factor>; WITH(PS) } }\n"
     "technique Mask { pass P { ColorWriteEnable = Red | Alpha; WITH(PS) } }\n"
-    "technique Scissor { pass P { ScissorTestEnable = true; WITH(Green) } }\n";
+    "technique Scissor { pass P { ScissorTestEnable = true; WITH(Green) } }\n"
+    "technique Plain { pass P { WITH(Green) } }\n";
 
 /* The clear colour (0.2, 0.4, 0.6, 1) is 51, 102, 153, 255 in the image. */
 static const float CLEAR[4] = {0.2f, 0.4f, 0.6f, 1.0f};
@@ -145,6 +146,39 @@ static void pipelines_cached(void) {
     CHECK_INT(hfx_device_pipelines_created_vk(test_vk_device(V)), before);
 }
 
+/* The pass Plain applied for one counter-clockwise quad, then, in the same command buffer
+ * and with no begin / end between, again after CullMode = None (1) was set by hand: Apply's
+ * short way (the same pass again keeps its pipeline) must see the hand-set state. D3D9's
+ * default CullMode = CCW culls the first quad (the clear colour stays on the left half); the
+ * second, on the right half, is green. Applying Plain a third time with nothing changed makes
+ * no pipeline. */
+static void short_way_sees_hand_states(void) {
+    const vk_quad q[2] = {{-1, -1, 0, 1, 0.5f, 1, 1, 1}, {0, -1, 1, 1, 0.5f, 1, 1, 1}};
+    vk_vertex verts[12];
+    vk_quad_vertices(&q[0], verts), vk_quad_vertices(&q[1], verts + 6);
+    test_vk_buffer vb;
+    CHECK(test_vk_buffer_make(V, verts, sizeof verts, &vb));
+    hfx_device *dev = test_vk_device(V);
+    hfx_pass *pass = hfx_technique_pass(hfx_effect_technique(FX, "Plain"), 0);
+    CHECK_INT(hfx_device_reset_render_states_vk(dev), HFX_OK);
+    VkCommandBuffer cmd = test_vk_begin(V, CLEAR);
+    VkDeviceSize zero = 0;
+    for (uint32_t i = 0; i < 2; i++) {
+        if (i == 1) CHECK_INT(hfx_device_set_render_state_vk(dev, "CullMode", 1), HFX_OK);
+        CHECK_INT(hfx_pass_apply_vk(pass, cmd, test_vk_target(V)), HFX_OK);
+        vkCmdBindVertexBuffers(cmd, 0, 1, &vb.buffer, &zero);
+        vkCmdDraw(cmd, 6, 1, 6 * i, 0);
+    }
+    size_t made = hfx_device_pipelines_created_vk(dev);
+    CHECK_INT(hfx_pass_apply_vk(pass, cmd, test_vk_target(V)), HFX_OK);
+    CHECK_INT(hfx_device_pipelines_created_vk(dev), made);
+    CHECK_INT(test_vk_end(V), 0);
+    CHECK_PIXEL(V, 16, 32, 51, 102, 153, 255);
+    CHECK_PIXEL(V, 48, 32, 0, 255, 0, 255);
+    test_vk_buffer_free(V, &vb);
+    CHECK_INT(hfx_device_reset_render_states_vk(dev), HFX_OK);
+}
+
 int main(void) {
     hfx_vertex_layout *layout;
     V = vk_suite_begin(64, 64, &layout);
@@ -159,6 +193,7 @@ int main(void) {
     RUN(scissor);
     RUN(dynamic_blend_factor);
     RUN(pipelines_cached);
+    RUN(short_way_sees_hand_states);
     hfx_effect_destroy(FX);
     int messages = vk_suite_end(V, layout);
     return test_summary() || messages;
