@@ -9,6 +9,9 @@
  *   changed range in one call; the raw loop sets each changed element, one call each, as a
  *   hand-written renderer over that shader does. "raw-range" is the floor for reference: one
  *   call over the range with no bookkeeping at all, the values written in place (one float each).
+ * - floor: the calls loop_hfx makes (one set per parameter, one Apply) into functions that do
+ *   nothing, then raw-range's one call: what an API of that shape costs at the least, so
+ *   floor/range bounds from below what hfx-packed can reach against raw-range.
  * The raw loops look up locations and the entry point once and bind the program only when
  * their shadow of the binding differs (so neither side calls glUseProgram in the loop); hfx
  * holds its parameter handles from hfx_effect_param, looked up once too.
@@ -17,7 +20,7 @@
  *       which on a shared machine counts other processes' time) and user-space instructions
  *       (perf_event_open) per iteration, best of five rounds after one round not kept
  *   ./bench_apply ITER LOOP N             one loop alone, LOOP = hfx | raw | hfx-packed | raw-packed |
- *       raw-range, for callgrind: valgrind --tool=callgrind --toggle-collect=loop_hfx (or loop_raw,
+ *       raw-range | floor, for callgrind: valgrind --tool=callgrind --toggle-collect=loop_hfx (or loop_raw,
  *       loop_raw_range) counts the loop alone; ITER 1000 gives instructions x 1000. */
 #define _DEFAULT_SOURCE /* syscall, for bench.h's instruction counter */
 #include <stdio.h>
@@ -157,6 +160,30 @@ static void loop_raw_range(layout *l, long iters, int n) {
     }
 }
 
+/* What any API that takes one call per parameter set and one per Apply costs at the least: the
+ * same calls as loop_hfx into functions that do nothing, then the one glUniform4fv over the
+ * range. Its ratio to raw-range (or raw at 1 change) is the floor for hfx's. */
+static __attribute__((noinline)) int empty_set(hfx_param *p, const float *v, size_t n) {
+    __asm__ volatile("" : : "r"(p), "r"(v), "r"(n) : "memory");
+    return 0;
+}
+static __attribute__((noinline)) int empty_apply(hfx_pass *p) {
+    __asm__ volatile("" : : "r"(p) : "memory");
+    return 0;
+}
+
+static void loop_floor(layout *l, long iters, int n) {
+    uniform4fv_fn uniform4fv = (uniform4fv_fn)test_gl_proc("glUniform4fv");
+    for (long k = 0; k < iters; k++) {
+        for (int i = 0; i < n; i++) {
+            values[i][0] = (float)k + 0.75f;
+            empty_set(l->params[i], values[i], 4);
+        }
+        empty_apply(l->pass);
+        uniform4fv(l->loc[0], n, values[0]);
+    }
+}
+
 typedef struct run {
     const char *name;
     int packed;
@@ -165,7 +192,7 @@ typedef struct run {
 
 static const run runs[] = {
     {"hfx", 0, loop_hfx}, {"raw", 0, loop_raw}, {"hfx-packed", 1, loop_hfx}, {"raw-packed", 1, loop_raw},
-    {"raw-range", 1, loop_raw_range},
+    {"raw-range", 1, loop_raw_range}, {"floor", 1, loop_floor},
 };
 enum { RUNS = sizeof runs / sizeof runs[0] };
 
@@ -202,13 +229,13 @@ static void print_ratio(double a, double b) {
 static void print_table(const figure fig[3][RUNS], const int counts[3], int what) {
     printf("%-8s", "changed");
     for (int r = 0; r < RUNS; r++) printf(" %11s", runs[r].name);
-    printf(" %11s %11s %11s\n", "hfx/raw", "pk/raw-pk", "pk/range");
+    printf(" %11s %11s %11s %11s\n", "hfx/raw", "pk/raw-pk", "pk/range", "floor/range");
     for (int c = 0; c < 3; c++) {
         double v[RUNS];
         for (int r = 0; r < RUNS; r++) v[r] = what ? fig[c][r].instructions : fig[c][r].ns;
         printf("%-8d", counts[c]);
         for (int r = 0; r < RUNS; r++) printf(" %11.1f", v[r]);
-        print_ratio(v[0], v[1]), print_ratio(v[2], v[3]), print_ratio(v[2], v[4]);
+        print_ratio(v[0], v[1]), print_ratio(v[2], v[3]), print_ratio(v[2], v[4]), print_ratio(v[5], v[4]);
         printf("\n");
     }
 }

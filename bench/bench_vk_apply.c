@@ -9,7 +9,7 @@
  *
  *   ./bench_vk_apply [ITER]          N = 1, 10, 100: this thread's CPU time and user-space
  *       instructions (perf_event_open) per Apply, best of five rounds after one not kept
- *   ./bench_vk_apply ITER LOOP N     one loop alone, LOOP = hfx | raw, for callgrind
+ *   ./bench_vk_apply ITER LOOP N     one loop alone, LOOP = hfx | raw | floor, for callgrind
  *       (valgrind --tool=callgrind --toggle-collect=run_hfx, or run_raw: instructions x ITER). */
 #define _DEFAULT_SOURCE /* syscall, for bench.h's instruction counter */
 #include <stdio.h>
@@ -69,7 +69,18 @@ static void run_hfx(test_vk *v, VkCommandBuffer cmd, hfx_effect *fx, hfx_param *
     }
 }
 
-static void run_raw(test_vk *v, VkCommandBuffer cmd, raw_loop *r, int n, int iter) {
+/* The floor of an API of hfx's shape (one call per parameter set, one per Apply): the raw loop
+ * plus those calls into functions that do nothing. */
+static __attribute__((noinline)) int empty_set(const void *p, const float *v, size_t n) {
+    __asm__ volatile("" : : "r"(p), "r"(v), "r"(n) : "memory");
+    return 0;
+}
+static __attribute__((noinline)) int empty_apply(const void *p, VkCommandBuffer cmd, const hfx_vk_target *t) {
+    __asm__ volatile("" : : "r"(p), "r"(cmd), "r"(t) : "memory");
+    return 0;
+}
+
+static void run_raw(test_vk *v, VkCommandBuffer cmd, raw_loop *r, int n, int iter, int floor) {
     const hfx_vk_target *t = test_vk_target(v);
     float value[4] = {0, 0, 0, 1};
     VkViewport vp = {0, 0, (float)t->width, (float)t->height, 0, 1};
@@ -81,6 +92,8 @@ static void run_raw(test_vk *v, VkCommandBuffer cmd, raw_loop *r, int n, int ite
         }
         value[0] = (float)i;
         for (int k = 0; k < n; k++) memcpy(r->image + r->at[k], value, 16);
+        for (int k = 0; floor && k < n; k++) empty_set(r->image + r->at[k], value, 4);
+        if (floor) empty_apply(r, cmd, t);
         uint32_t offset = r->used;
         memcpy(r->map + offset, r->image, r->size);
         r->used += (r->size + r->align - 1) & ~(r->align - 1);
@@ -139,13 +152,13 @@ typedef struct figure {
 } figure;
 
 static figure best_of(test_vk *v, VkCommandBuffer cmd, hfx_effect *fx, hfx_param **params, raw_loop *r, int n, int iter,
-                      int counter) {
+                      int counter, int floor) {
     figure best = {1e30, 1e30};
     for (int round = 0; round <= ROUNDS; round++) {
         uint64_t i0 = instructions_read(counter);
         double t0 = thread_now();
         if (fx) run_hfx(v, cmd, fx, params, n, iter);
-        else run_raw(v, cmd, r, n, iter);
+        else run_raw(v, cmd, r, n, iter, floor);
         double t = thread_now() - t0;
         uint64_t i = instructions_read(counter) - i0;
         if (round == 0) continue;
@@ -159,13 +172,17 @@ static void measure(test_vk *v, VkCommandBuffer cmd, hfx_effect *fx, hfx_param *
     static const int ns[3] = {1, 10, 100};
     int counter = instructions_open();
     printf("set + hfx_pass_apply_vk against raw Vulkan (one buffer write and the binds), per Apply, best of %d rounds "
-           "of %d\n%-8s %10s %10s %8s %12s %12s %8s\n", ROUNDS, iter, "changed", "hfx ns", "raw ns", "ratio",
-           "hfx instr", "raw instr", "ratio");
+           "of %d (floor: raw plus a call per set and per Apply into functions that do nothing)\n%-8s %10s %10s %8s "
+           "%12s %12s %8s %12s %8s\n", ROUNDS, iter, "changed", "hfx ns", "raw ns", "ratio", "hfx instr", "raw instr",
+           "ratio", "floor instr", "ratio");
     for (int k = 0; k < 3; k++) {
-        figure h = best_of(v, cmd, fx, params, r, ns[k], iter, counter);
-        figure w = best_of(v, cmd, NULL, NULL, r, ns[k], iter, counter);
+        figure h = best_of(v, cmd, fx, params, r, ns[k], iter, counter, 0);
+        figure w = best_of(v, cmd, NULL, NULL, r, ns[k], iter, counter, 0);
+        figure f = best_of(v, cmd, NULL, NULL, r, ns[k], iter, counter, 1);
         printf("%-8d %10.1f %10.1f %7.3fx", ns[k], h.ns, w.ns, h.ns / w.ns);
-        if (counter >= 0) printf(" %12.1f %12.1f %7.3fx\n", h.instructions, w.instructions, h.instructions / w.instructions);
+        if (counter >= 0)
+            printf(" %12.1f %12.1f %7.3fx %12.1f %7.3fx\n", h.instructions, w.instructions, h.instructions / w.instructions,
+                   f.instructions, f.instructions / w.instructions);
         else printf(" %12s %12s %8s\n", "-", "-", "-");
     }
     if (counter >= 0) close(counter);
@@ -195,7 +212,7 @@ int main(int argc, char **argv) {
     run_hfx(v, cmd, fx, params, 1, 1); /* makes the pipeline the raw loop borrows */
     if (!raw_setup(v, fx, &r)) return printf("raw setup failed\n"), 1;
     if (argc > 3 && !strcmp(argv[2], "hfx")) run_hfx(v, cmd, fx, params, atoi(argv[3]), iter);
-    else if (argc > 3) run_raw(v, cmd, &r, atoi(argv[3]), iter);
+    else if (argc > 3) run_raw(v, cmd, &r, atoi(argv[3]), iter, !strcmp(argv[2], "floor"));
     else measure(v, cmd, fx, params, &r, iter);
     printf("pipelines created: %zu\n", hfx_device_pipelines_created_vk(test_vk_device(v)));
     vkDestroyDescriptorPool(fx->dev->vk->device, r.pool, NULL);
