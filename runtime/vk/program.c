@@ -140,6 +140,20 @@ static int check_interface(hfx_shared *sh, uint32_t index, const hfx_fx_program 
     return hfx_rt_fail(sh->dev, HFX_ERR_LOAD, "%s: %s: the shaders' interface has %s", name_of(sh), user, why);
 }
 
+/* Each sampler binding's dimension: the effect sampler's, unless a module samples it as another. */
+static int read_sampler_dims(hfx_shared *sh, const hfx_fx_program *fp, vk_program *p) {
+    for (uint32_t k = 0; k < p->sampler_count; k++) {
+        uint32_t s = fp->samplers[k].sampler;
+        p->sampler_dims[k] = (uint8_t)(s < sh->fx->sampler_count ? sh->fx->samplers[s].dim : HFX_FX_DIM_2D);
+    }
+    for (int st = 0; st < HFX_STAGE_COUNT; st++) {
+        const hfx_fx_code *c = &fp->code[st][HFX_TARGET_SPIRV_VK];
+        if (hfx_vk_sampler_dims((const uint32_t *)(const void *)c->data, c->size / 4, p->sampler_dims, p->sampler_count))
+            return hfx_rt_fail(sh->dev, HFX_ERR_LOAD, "%s: a shader's SPIR-V could not be read", name_of(sh));
+    }
+    return HFX_OK;
+}
+
 static const vk_leaf *find_leaf(const vk_block *b, const char *path) {
     for (uint32_t i = 0; i < b->count; i++)
         if (strcmp(b->leaves[i].path, path) == 0) return &b->leaves[i];
@@ -259,6 +273,7 @@ int hfx_vk_program_build(hfx_shared *sh, uint32_t index) {
     int rc = make_module(sh, index, &fp->code[HFX_STAGE_VERTEX][HFX_TARGET_SPIRV_VK], "vertex", &block, &p->vs);
     if (!rc) rc = make_module(sh, index, &fp->code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV_VK], "pixel", &block, &p->fs);
     if (!rc) rc = check_interface(sh, index, fp);
+    if (!rc) rc = read_sampler_dims(sh, fp, p);
     if (!rc) rc = hfx_vk_outputs_make(sh->dev, &fp->code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV_VK], p);
     if (!rc) rc = read_block(&b, fp);
     if (!rc && block && !p->block_size)
