@@ -149,10 +149,55 @@ static void pick_element(ir_ctx *c, ir_expr **slot, void *data) {
     *slot = r;
 }
 
+/* ---- local samplers ---- */
+
+/* D3D9 has no sampler values: a local sampler names a sampler register, so it must be set where
+ * it is declared (`sampler2D s = Global;`, which reads as Global) and never again. One declared
+ * without a value and read is fxc's read-before-write error, X4000 (Microsoft's list of HLSL
+ * errors: "the specified variable is used without having been completely initialized"). */
+typedef struct alias { const ir_var *local; ir_var *target; } alias;
+
+static void put_alias(ir_ctx *c, ir_expr **slot, void *data) {
+    (void)c;
+    const alias *a = data;
+    if ((*slot)->kind == IE_VAR && (*slot)->var == a->local) (*slot)->var = a->target;
+}
+
+/* Whether the declaration at b->body[at] of a local sampler went (its reads now read its value). */
+static bool local_sampler(ir_ctx *c, ir_func *f, ir_stmt *b, uint32_t at) {
+    const ir_stmt *d = b->body[at];
+    if (d->kind != IS_DECL || !d->var || d->var->kind != IRV_LOCAL || d->var->type->kind != TY_SAMPLER) return false;
+    ir_uses u = {d->var, false, 0, 0, NULL};
+    hfx_ir_count_uses(&u, f->body);
+    if (u.writes || (d->expr && d->expr->kind != IE_VAR)) return false;
+    if (!d->expr && u.reads) {
+        hfx_error(c->diags, (*u.slot)->loc, 4000, "variable '%s' used without having been completely initialized", d->var->name);
+        return false;
+    }
+    if (d->expr) { /* the value it names, where it is read */
+        alias a = {d->var, d->expr->var};
+        hfx_ir_walk_stmt_exprs(c, f->body, put_alias, &a);
+    }
+    hfx_ir_remove_stmt(b, at);
+    return true;
+}
+
+static void local_samplers(ir_ctx *c, ir_func *f, ir_stmt *s) {
+    if (!s) return;
+    for (uint32_t i = 0; i < s->count; i++) {
+        if (s->kind == IS_BLOCK && local_sampler(c, f, s, i)) { i--; continue; }
+        local_samplers(c, f, s->body[i]);
+    }
+    local_samplers(c, f, s->init);
+    local_samplers(c, f, s->then_s);
+    local_samplers(c, f, s->else_s);
+}
+
 void hfx_ir_pass_samplers(ir_ctx *c, ir_shader *sh) {
     pick p = {sh};
     for (uint32_t i = 0; i < sh->func_count; i++) {
         ir_func *f = sh->funcs[i];
+        local_samplers(c, f, f->body);
         f->body = unroll_in(c, f->body);
         hfx_ir_walk_stmt_exprs(c, f->body, pick_element, &p);
     }
