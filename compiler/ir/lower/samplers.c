@@ -8,6 +8,8 @@
  * constant after folding becomes element k's own sampler, as ir.c does for a literal k. An
  * index that stays computed is left to limits.c's X3512. This runs on every back end's IR: GLSL
  * and the D3D9 bytecode writer both see the element samplers only. */
+#include <strings.h>
+
 #include "eval.h"
 #include "ir/ir.h"
 
@@ -101,7 +103,8 @@ static ir_stmt *unroll(ir_ctx *c, ir_stmt *s) {
     const ir_var *v;
     double start, step;
     int trips = hfx_ir_loop_trips(s, &v, &start, &step);
-    if (trips < 0 || v->hoisted || jumps(s->then_s)) return s;
+    /* [loop] asks fxc to keep the loop: its index stays computed (X3512) */
+    if (trips < 0 || v->hoisted || jumps(s->then_s) || (s->hint && strcasecmp(s->hint, "loop") == 0)) return s;
     indexed x = {v, false};
     hfx_ir_walk_stmt_exprs(c, s->then_s, note_index, &x);
     if (!x.found) return s;
