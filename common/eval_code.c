@@ -162,16 +162,8 @@ static bool table(hfx_ev_value *index, hfx_ev_base b, uint32_t n, const uint32_t
     return true;
 }
 
-/* An element of a parameter array. Past either end it is zero, as the GPU reads it: D3D9's
- * "reads from out-of-range registers return (0.0, 0.0, 0.0, 0.0)", which hfx's shaders give past
- * the array (the GLSL printer's guarded reads), so a preshader computing the read on the CPU
- * agrees with the shader that would compute it on the GPU. */
 static bool element(hfx_ev_value *index, hfx_ev_base b, uint32_t n, const uint32_t *w, const uint32_t *values) {
-    int32_t k = hfx_ev_int(hfx_ev_convert(index->base, HFX_EV_INT, index->c[0]));
-    if (k < 0 || (uint32_t)k >= w[1]) {
-        *index = (hfx_ev_value){b, (uint8_t)n, {0}};
-        return true;
-    }
+    uint32_t k = clamped_index(index->base, index->c[0], w[1]);
     load(index, b, n, values + w[0] + (size_t)k * w[2]);
     return true;
 }
