@@ -101,6 +101,7 @@ struct hfx_vk_device {
     VkDevice device;
     VkPhysicalDeviceMemoryProperties memory;
     VkDeviceSize ubo_align, first_chunk;
+    uint32_t max_attributes, max_varyings, max_colors; /* vertex inputs, locations between the stages, pixel outputs */
     float max_anisotropy;           /* 0 unless the device was created with samplerAnisotropy */
     int fill_modes;                 /* fillModeNonSolid */
     uint32_t frame_count, frame;    /* frames in flight, the current one */
