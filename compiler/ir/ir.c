@@ -169,9 +169,25 @@ static ir_var *lookup_var(builder *b, const hfx_expr *e) {
 
 static ir_func *build_func(builder *b, const hfx_func *f, hfx_loc use);
 
-/* `S[1]` of a sampler array parameter with a constant index: the element's own sampler (each
- * element of `sampler S[2] = {...}` is a sampler of the effect), one GLSL sampler per element
- * read. NULL when e is no such read. */
+/* Element k of the sampler array parameter d (in range): each element of `sampler S[2] = {...}`
+ * is a sampler of the effect, one GLSL sampler per element read. NULL: out of memory. */
+ir_var *hfx_ir_sampler_element(ir_ctx *c, ir_shader *sh, const hfx_decl *d, uint32_t k) {
+    uint32_t param = c->fx->params[d->index].first_child + k;
+    for (uint32_t i = 0; i < sh->global_count; i++)
+        if (sh->globals[i]->kind == IRV_SAMPLER && sh->globals[i]->param == param) return sh->globals[i];
+    ir_var *v = HFX_NEW(c->arena, ir_var);
+    ir_var **globals = grow(c->arena, sh->globals, &sh->global_cap, sh->global_count, sizeof *sh->globals);
+    if (!v || !globals) return NULL;
+    *v = (ir_var){.kind = IRV_SAMPLER, .name = d->name, .type = d->type->elem, .mods = d->mods, .param = param,
+                  .decl = d, .dim = d->type->elem->dim};
+    v->glsl = hfx_arena_printf(c->arena, "%s_%u", hfx_glsl_name(c->arena, d->name), (unsigned)k);
+    sh->globals = globals;
+    sh->globals[sh->global_count++] = v;
+    return v;
+}
+
+/* `S[1]` of a sampler array parameter with a constant index: the element's own sampler. NULL
+ * when e is no such read (lower/samplers.c takes the indexes that fold to constants later). */
 static ir_expr *sampler_element(builder *b, const hfx_expr *e) {
     const hfx_expr *base = e->args[0], *index = e->args[1];
     const hfx_decl *d = base->kind == EX_IDENT ? base->sym : NULL;
@@ -180,17 +196,8 @@ static ir_expr *sampler_element(builder *b, const hfx_expr *e) {
         d->type->elem->kind != TY_SAMPLER || index->kind != EX_INT || index->ival < 0 ||
         index->ival >= (int64_t)fx->params[d->index].child_count)
         return NULL;
-    uint32_t param = fx->params[d->index].first_child + (uint32_t)index->ival;
-    ir_var *v = NULL;
-    for (uint32_t i = 0; i < b->sh->global_count && !v; i++)
-        if (b->sh->globals[i]->kind == IRV_SAMPLER && b->sh->globals[i]->param == param) v = b->sh->globals[i];
-    if (!v) {
-        v = new_var(b, IRV_SAMPLER, d, d->type->elem);
-        v->param = param;
-        v->dim = d->type->elem->dim;
-        v->glsl = hfx_arena_printf(b->c->arena, "%s_%u", hfx_glsl_name(b->c->arena, d->name), (unsigned)index->ival);
-        add_global(b, v);
-    }
+    ir_var *v = hfx_ir_sampler_element(b->c, b->sh, d, (uint32_t)index->ival);
+    if (!v) return NULL;
     ir_expr *r = hfx_ir_new_expr(b->c, IE_VAR, v->type, e->loc, 0);
     r->var = v;
     return r;

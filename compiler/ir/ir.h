@@ -208,7 +208,11 @@ void hfx_ir_pass_licm(ir_ctx *c, ir_shader *sh);       /* loop-invariant work to
 void hfx_ir_pass_ranges(ir_ctx *c, ir_shader *sh);     /* array reads a loop counter keeps in range */
 void hfx_ir_pass_registers(ir_ctx *c, ir_shader *sh); /* register(cN) reservations of what the stage reads: X4500, X4509 */
 int hfx_ir_pass_check(ir_ctx *c, ir_shader *sh);   /* target limits: reports what GLSL cannot express */
-int hfx_ir_check_model(ir_ctx *c, ir_shader *sh);  /* model.c, run by check: semantics (X4502) and [unroll] loops (X3511) the profile refuses */
+int hfx_ir_check_model(ir_ctx *c, ir_shader *sh);
+int hfx_ir_loop_trips(const ir_stmt *s, const ir_var **counter, double *start, double *step); /* model.c */
+void hfx_ir_pass_samplers(ir_ctx *c, ir_shader *sh);
+/* Element k of the sampler array parameter d, as its own sampler (one per element; ir.c). */
+ir_var *hfx_ir_sampler_element(ir_ctx *c, ir_shader *sh, const hfx_decl *d, uint32_t k);  /* model.c, run by check: semantics (X4502) and [unroll] loops (X3511) the profile refuses */
 void hfx_ir_pass_uses(ir_ctx *c, ir_shader *sh);
 void hfx_ir_pass_preshade(ir_ctx *c, ir_shader *sh);    /* uniform-only work to preshaders (when packing) */
 void hfx_ir_pass_forward(ir_ctx *c, ir_shader *sh);     /* single-use locals forward, mul chains regrouped (readies preshade) */

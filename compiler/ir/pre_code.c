@@ -197,17 +197,42 @@ static void table(pc *p, const ir_expr *e) {
         for (unsigned k = 0; k < n; k++) put(p, hfx_evc_bits(b, arr->a[i]->cval[k]));
 }
 
+/* ELEMENT: the index, clamped into the array (a state value's selector, as D3D9 indexes it). */
+static void element(pc *p, const ir_expr *e, const hfx_fx_param *arr) {
+    const hfx_fx_param *el = &p->c->fx->params[arr->first_child];
+    emit(p, e->a[1]);
+    put(p, hfx_evc_word(HFX_EVC_ELEMENT, base_of(e->type), el->words));
+    put(p, el->offset);
+    put(p, arr->elements);
+    put(p, arr->words / arr->elements);
+}
+
+/* A preshader's element read: zero past either end, as the shader it stands for reads it (the
+ * GLSL printer's guarded reads; D3D9: "reads from out-of-range registers return (0.0, 0.0, 0.0,
+ * 0.0)"), so that moving the read to the CPU does not change its value:
+ * (int)i >= 0 && (int)i < count ? arr[i] : 0. */
+static void guarded_element(pc *p, const ir_expr *e, const hfx_fx_param *arr) {
+    ir_ctx *c = p->c;
+    const hfx_type *it = hfx_type_scalar(c->types, B_INT), *bt = hfx_type_scalar(c->types, B_BOOL);
+    ir_expr *i = hfx_ir_new_convert(c, it, e->a[1]);
+    ir_expr *zero = hfx_ir_new_expr(c, IE_CONST, e->type, e->loc, 0);
+    ir_expr *low = hfx_ir_new_binary(c, OP_GE, bt, i, hfx_ir_const_scalar(c, it, 0, e->loc));
+    ir_expr *high = hfx_ir_new_binary(c, OP_LT, bt, i, hfx_ir_const_scalar(c, it, arr->elements, e->loc));
+    ir_expr *in = low && high ? hfx_ir_new_binary(c, OP_AND, bt, low, high) : NULL;
+    if (!zero || !in) { p->ok = false; return; }
+    element(p, e, arr);
+    emit(p, zero); /* a new constant's components are 0 */
+    emit(p, in);
+    put(p, hfx_evc_word(HFX_EVC_SELECT, 0, 0));
+}
+
 /* A vector element or a matrix row at a constant index; an element of a parameter array. */
 static void index_of(pc *p, const ir_expr *e) {
     if (table_read(e)) { table(p, e); return; }
     const hfx_fx_param *arr = param_array(p->c, e->a[0]);
     if (arr) {
-        const hfx_fx_param *el = &p->c->fx->params[arr->first_child];
-        emit(p, e->a[1]);
-        put(p, hfx_evc_word(HFX_EVC_ELEMENT, base_of(e->type), el->words));
-        put(p, el->offset);
-        put(p, arr->elements);
-        put(p, arr->words / arr->elements);
+        if (!p->value) { guarded_element(p, e, arr); return; }
+        element(p, e, arr);
         return;
     }
     const hfx_type *t = e->a[0]->type;

@@ -77,7 +77,16 @@ hfx_expr *hfx_pb_int(parse_ctx *ctx, const char *text, hfx_loc loc) {
     hfx_expr *e = hfx_pb_expr(ctx, EX_INT, loc);
     errno = 0;
     unsigned long long v = strtoull(text, NULL, 0); /* 0x.., 0.. octal; u/l suffixes stop it */
-    if (errno == ERANGE) v = UINT64_MAX;
+    bool range = errno == ERANGE;
+    if (range || v > UINT32_MAX) {
+        /* fxc's lexer keeps the low 32 bits, with a warning (Microsoft's list of HLSL errors and
+         * warnings: 1002 / 1003 / 1004, "a hex / an octal / a decimal value was truncated to 32
+         * bits"), so 4294967297 is 1 wherever it is used, a float included */
+        bool hex = text[0] == '0' && (text[1] == 'x' || text[1] == 'X'), octal = !hex && text[0] == '0';
+        hfx_warning(ctx->diags, loc, hex ? 1002 : octal ? 1003 : 1004, "%s value truncated to 32 bits",
+                    hex ? "hex" : octal ? "octal" : "decimal");
+        v = range ? UINT32_MAX : v & UINT32_MAX; /* past 64 bits: strtoull kept none of them */
+    }
     e->ival = (int64_t)v;
     e->is_unsigned = strpbrk(text, "uU") != NULL || v > INT32_MAX;
     return e;

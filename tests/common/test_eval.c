@@ -70,6 +70,22 @@ static const binary_row binary_rows[] = {
     {HFX_EV_EQ, B, 1, 1, 1, 1}, {HFX_EV_OR, B, 0, 1, 1, 1}, {HFX_EV_ADD, B, 1, 1, 0, 0},
 };
 
+/* Comparisons with NaN and infinities as Direct3D 10's "Floating-point rules" give them (the
+ * one rule Microsoft documents): EQ, GT, GE, LT, LE with a NaN are false, NE is true; +INF is
+ * above every finite value. The folder and the preshaders compute with these. */
+static void nan_comparisons(void) {
+    static const struct { hfx_ev_op op; double x, y, want; } rows[] = {
+        {HFX_EV_LT, NAN, 1, 0}, {HFX_EV_GT, NAN, -1, 0}, {HFX_EV_LE, 1, NAN, 0}, {HFX_EV_GE, NAN, NAN, 0},
+        {HFX_EV_EQ, NAN, NAN, 0}, {HFX_EV_NE, NAN, NAN, 1}, {HFX_EV_NE, NAN, 1, 1},
+        {HFX_EV_GT, INFINITY, FLT_MAX, 1}, {HFX_EV_LT, -INFINITY, -FLT_MAX, 1}, {HFX_EV_EQ, INFINITY, INFINITY, 1},
+    };
+    for (size_t i = 0; i < sizeof rows / sizeof rows[0]; i++) {
+        double got = -1;
+        CHECK(hfx_ev_binary(rows[i].op, HFX_EV_FLOAT, rows[i].x, rows[i].y, &got));
+        CHECK(got == rows[i].want);
+    }
+}
+
 static void binary_operators(void) {
     for (size_t i = 0; i < sizeof binary_rows / sizeof binary_rows[0]; i++) {
         const binary_row *r = &binary_rows[i];
@@ -216,6 +232,7 @@ int main(void) {
     RUN(conversions);
     RUN(to_integers);
     RUN(binary_operators);
+    RUN(nan_comparisons);
     RUN(unary_operators);
     RUN(scalar_intrinsics);
     RUN(vector_intrinsics);

@@ -2,18 +2,6 @@
  * in the printer). */
 #include "ir/ir.h"
 
-/* What a sampler array's index reads: parameters of the effect, or anything else a later
- * unrolling or folding (loop counters, static consts) could still make a literal. */
-typedef struct index_reads { bool uniform, other; } index_reads;
-
-static void note_index_read(ir_ctx *c, ir_expr **slot, void *data) {
-    (void)c;
-    const ir_expr *e = *slot;
-    index_reads *r = data;
-    if (e->kind == IE_VAR && e->var->kind == IRV_UNIFORM) r->uniform = true;
-    else if (e->kind == IE_VAR || e->kind == IE_CALL) r->other = true;
-}
-
 static void check_expr(ir_ctx *c, ir_expr **slot, void *data) {
     ir_expr *e = *slot;
     int *bad = data;
@@ -42,12 +30,9 @@ static void check_expr(ir_ctx *c, ir_expr **slot, void *data) {
             }
     }
     if (e->kind == IE_INDEX && e->a[0]->type->kind == TY_ARRAY && e->a[0]->type->elem->kind == TY_SAMPLER) {
-        /* fxc needs a literal index once it has unrolled and folded: one computed from the
-         * effect's parameters alone never becomes one */
-        index_reads r = {false, false};
-        hfx_ir_walk_expr(c, &e->a[1], note_index_read, &r);
-        if (r.uniform && !r.other) hfx_error(c->diags, e->loc, 3512, "sampler array index must be a literal expression");
-        else hfx_error(c->diags, e->loc, X_UNSUPPORTED, "arrays of samplers are not supported");
+        /* the samplers pass took every index that unrolling and folding make a literal, as fxc
+         * needs; what is left stays computed on the GPU, which D3D9 cannot index samplers by */
+        hfx_error(c->diags, e->loc, 3512, "sampler array index must be a literal expression");
         (*bad)++;
     }
 }

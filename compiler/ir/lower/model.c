@@ -214,6 +214,28 @@ static bool exits(const ir_stmt *s) {
     return exits(s->init) || exits(s->then_s) || exits(s->else_s);
 }
 
+/* How many times the for loop s runs, when fxc can count it as it unrolls: a counter that
+ * starts at a constant and steps by one, tested against a constant, and no break or return or
+ * write of the counter in the body; -1 otherwise (or past fxc's 1024 iterations). */
+int hfx_ir_loop_trips(const ir_stmt *s, const ir_var **counter, double *start, double *step) {
+    const ir_var *v = NULL;
+    double at;
+    const ir_expr *e = s->expr;
+    if (s->kind != IS_FOR || !counter_start(s->init, &v, &at) || !counter_step(s->step, v, step) || !e ||
+        e->kind != IE_BINARY || exits(s->then_s))
+        return -1;
+    ir_uses u = {v, true, 0, 0, NULL};
+    hfx_ir_count_uses(&u, s->then_s);
+    bool left = is_var(e->a[0], v);
+    if (u.writes || (!left && !is_var(e->a[1], v)) || !hfx_ir_is_const(e->a[left ? 1 : 0])) return -1;
+    double b = e->a[left ? 1 : 0]->cval[0];
+    *counter = v;
+    *start = at;
+    for (int k = 0; k <= UNROLL_LIMIT; k++, at += *step)
+        if (!(left ? compare(e->op, at, b) : compare(e->op, b, at))) return k;
+    return -1;
+}
+
 /* Whether fxc cannot unroll this [unroll] loop (see the top). */
 static bool cannot_unroll(const ir_stmt *s) {
     const ir_var *v = NULL;

@@ -41,6 +41,7 @@ static const pass_row ROWS[] = {
     STAGE("lvalues", hfx_ir_pass_lvalues, WHEN_ALWAYS, "m._11_22 = v: a constructor of single components as the target"),
     STAGE("fold", hfx_ir_pass_fold, WHEN_ALWAYS, "constant folding and propagation of const variables"),
     STAGE("calls", hfx_ir_pass_calls, WHEN_ALWAYS, "f(x, 1): a copy of f with the 1 bound, as fxc inlines it (folds again)"),
+    STAGE("samplers", hfx_ir_pass_samplers, WHEN_ALWAYS, "S[i] of a sampler array: loops i counts unrolled, constant indexes an element's sampler"),
     STAGE("dce", hfx_ir_pass_dce, WHEN_ALWAYS, "if (false) branches, code after return, unreached functions go"),
     STAGE("once", hfx_ir_pass_once, WHEN_ALWAYS, "pow(x, 3) as fxc's products; coordinates read twice computed once"),
     STAGE("flatten", hfx_ir_pass_flatten, WHEN_ALWAYS, "a small if / else choosing a local's value becomes a select"),

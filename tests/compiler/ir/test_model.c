@@ -106,11 +106,26 @@ static void unroll_needs_a_count(void) {
     expect_ok(VS LOOP_PS("[unroll]", "N", "if (i > 4) break; s += 1;") PASS("vs_3_0", "ps_3_0"));
 }
 
+/* A local sampler names a sampler register: declared without one and read, it is fxc's X4000
+ * (Microsoft's list of HLSL errors and warnings: "the specified variable is used without having
+ * been completely initialized"), at the read; one set where it is declared reads as its value. */
+static void local_samplers(void) {
+    const char *g = "texture T; sampler2D G = sampler_state { Texture = <T>; };\n";
+    char src[1024];
+    snprintf(src, sizeof src, "%s" VS "float4 ps(float2 uv : TEXCOORD0) : COLOR { sampler2D s; return tex2D(s, uv); }\n%s", g,
+             PASS("vs_2_0", "ps_2_0"));
+    expect_error(src, "m.fx(3,70): error X4000: variable 's' used without having been completely initialized");
+    snprintf(src, sizeof src, "%s" VS "float4 ps(float2 uv : TEXCOORD0) : COLOR { sampler2D s = G; sampler2D u; return tex2D(s, uv); }\n%s",
+             g, PASS("vs_2_0", "ps_2_0"));
+    expect_ok(src); /* s reads as G; u, never read, is nothing */
+}
+
 int main(void) {
     RUN(ps2_reads_fog);
     RUN(ps2_position_only_when_read);
     RUN(ps3_inputs);
     RUN(outputs);
     RUN(unroll_needs_a_count);
+    RUN(local_samplers);
     return test_summary();
 }

@@ -232,6 +232,22 @@ static void hundred_thousand_lines(void) {
     tp_free(r);
 }
 
+/* An integer literal past 32 bits keeps its low 32, with fxc's warning by base (Microsoft's list
+ * of HLSL errors and warnings: 1002 hex, 1003 octal, 1004 decimal "value was truncated to 32
+ * bits"); 4294967295 fits and warns nothing. */
+static void literals_past_32_bits(void) {
+    expect_errors("static const int a = 4294967297;\nstatic const int b = 0x1FFFFFFFF;\nstatic const int c = 0777777777777;\n"
+                  "static const uint d = 4294967295;\nstatic const int e = 99999999999999999999999;\n",
+                  "t.fx(1,22): warning X1004: decimal value truncated to 32 bits\n"
+                  "t.fx(2,22): warning X1002: hex value truncated to 32 bits\n"
+                  "t.fx(3,22): warning X1003: octal value truncated to 32 bits\n"
+                  "t.fx(5,22): warning X1004: decimal value truncated to 32 bits\n");
+    tp_result *r = tp_parse("static const int a = 4294967297;\n");
+    const hfx_decl *a = tp_find(r, "a");
+    CHECK(a && a->init && a->init->ival == 1);
+    tp_free(r);
+}
+
 int main(void) {
     RUN(missing_semicolon);
     RUN(token_kinds_in_messages);
@@ -244,5 +260,6 @@ int main(void) {
     RUN(deep_nesting_is_an_error);
     RUN(long_but_shallow_is_fine);
     RUN(hundred_thousand_lines);
+    RUN(literals_past_32_bits);
     return test_summary();
 }
