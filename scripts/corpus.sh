@@ -22,7 +22,10 @@
 #                                           99% of the pixels are within 2/255 in every channel;
 #                                           prints a line per technique, the validation layer's
 #                                           messages, and `alike A / drawn D`;
-#                                           HFX_CORPUS_EVERY=N takes every Nth root effect only
+#                                           HFX_CORPUS_EVERY=N takes every Nth root effect only;
+#                                           then the same techniques on the web page in headless
+#                                           Chromium (scripts/web_corpus.js, the site of
+#                                           scripts/web.sh in BUILD/web) against GL's pictures
 #
 # BUILD is a build folder of this checkout (default build/test). Output files go to a
 # temporary folder (kept: its path is printed), PNGs under <tmp>/png for a contact sheet.
@@ -142,6 +145,33 @@ compare() {
             printf "%d techniques with validation messages (%d messages)\n", noisy, messages
             printf "alike %d / drawn %d (%.1f%%)\n", alike, gl, gl ? 100 * alike / gl : 0
         }' "$out/table.txt"
+    compare_web "$dir" "$build" "$out"
+}
+
+# The same techniques on the web page (scripts/web_corpus.js, headless Chromium, the site
+# $build/web that scripts/web.sh builds), each against GL's picture: "WEB alike share effect#t".
+# Skipped (with why) without Chromium, the site or playwright-core.
+compare_web() {
+    local dir=$1 build=$2 out=$3
+    [ -x /usr/bin/chromium ] || { echo "web page: skipped (no /usr/bin/chromium)"; return 0; }
+    [ -f "$build/web/index.html" ] || { echo "web page: skipped (no site in $build/web: scripts/web.sh)"; return 0; }
+    [ -d "$here/web/node_modules/playwright-core" ] || { echo "web page: skipped (npm ci in web/)"; return 0; }
+    awk '$1 == "ok" { print $6 }' "$out/table.txt" > "$out/web-list.txt"
+    node "$here/scripts/web_corpus.js" --site "$build/web" --corpus "$dir" --list "$out/web-list.txt" \
+        --out "$out/png" > "$out/web-log.txt" 2>&1
+    export -f alike_share
+    while read -r state line rest; do
+        local name png share=- same=-
+        name=$(echo "${line%#*}" | tr '/' '_') png=$out/png/$name.${line##*#}
+        if [ "$state" = ok ]; then
+            share=$(alike_share "$png.gl.png" "$png.web.png")
+            same=$(awk -v s="$share" 'BEGIN { print (s >= 0.99 ? "alike" : "DIFFER") }')
+        fi
+        printf "%-4s %-6s %-6s %s %s\n" "$state" "$same" "$share" "$line" "$rest"
+    done < <(grep -E "^(ok|FAIL) " "$out/web-log.txt") | tee "$out/web-table.txt"
+    awk '{ n++ } $1 == "ok" { drew++ } $2 == "alike" { alike++ }
+         END { printf "web page: drew %d of the %d techniques GL drew; alike %d / %d (%.1f%%)\n",
+               drew, n, alike, n, n ? 100 * alike / n : 0 }' "$out/web-table.txt"
 }
 
 # Every technique of one effect (one hfxview run, --technique all): lines

@@ -310,6 +310,8 @@ function downloadHfxo() {
 Object.assign(page, {
   selectEffect, setParam, setMesh,
   setCamera(yaw, pitch, distance) { state.camera = {yaw, pitch, distance}; requestRender(); },
+  // Time parameters fixed at `seconds` (< 0: the page's clock again), as hfxview's headless 1 s.
+  setClock(seconds) { call("hfxw_set_clock", null, ["number"], [seconds]); requestRender(); },
   edit(text) { editor.setText(text); },
   renderNow() { render(); },
   // The panel rebuilt from the effect's current values (after setParam from outside the panel).

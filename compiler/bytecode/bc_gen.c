@@ -55,10 +55,31 @@ bc_obj hfx_bc_alloc_obj(bc_gen *g, const hfx_type *t) {
     return o;
 }
 
+/* src in temporaries of its own when it reads a temporary dst writes: an element-by-element copy
+ * between the layouts must read everything before it writes (`m = transpose(m)` is a view of m's
+ * own registers; copied in place, the later rows read elements the earlier ones overwrote). */
+static bc_obj unalias(bc_gen *g, bc_obj dst, bc_obj src) {
+    bool alias = false;
+    for (uint32_t k = 0; k < dst.count && !alias; k++)
+        for (uint32_t i = 0; i < src.count && !alias; i++)
+            alias = dst.slot[k].type == D3D9_REG_TEMP && src.slot[i].type == D3D9_REG_TEMP && dst.slot[k].num == src.slot[i].num;
+    if (!alias) return src;
+    bc_obj c = new_obj(g, src.count);
+    c.cols = src.cols;
+    for (uint32_t i = 0; i < src.count; i++) {
+        bc_val s = src.slot[i];
+        s.own = false;
+        c.slot[i] = hfx_bc_op1(g, D3D9_MOV, s.n, s);
+    }
+    hfx_bc_release_obj(g, src);
+    return c;
+}
+
 /* Matrices are copied element by element when the layouts differ. */
 void hfx_bc_assign(bc_gen *g, bc_obj dst, bc_obj src, const hfx_type *t, bool sat) {
     if (dst.cols != src.cols && t->kind != TY_MATRIX && hfx_bc_has_matrix(t)) { hfx_bc_assign_members(g, dst, src, t, sat); return; }
     if (t->kind == TY_MATRIX && dst.cols != src.cols) {
+        src = unalias(g, dst, src);
         unsigned outer = dst.cols ? t->cols : t->rows, inner = dst.cols ? t->rows : t->cols;
         for (unsigned k = 0; k < outer && k < dst.count; k++)
             for (unsigned j = 0; j < inner; j++) {

@@ -224,6 +224,17 @@ static bc_val i_sign(bc_gen *g, const ir_expr *e, bc_val *a) { /* (x > 0) - (x <
     return hfx_bc_op2(g, D3D9_ADD, n, pos, hfx_bc_neg(neg));
 }
 
+/* A 1D coordinate t as (t, 0.5): D3D9 has no 1D textures (a sampler is declared 2D and texld
+ * reads .xy), so tex1D samples the middle row of the 2D texture that stands for it, as the GLSL
+ * back end's `vec2(t, 0.5)` does; left unwritten, .y was whatever the register held (MojoShader's
+ * GLSL then read an uninitialised component, which llvmpipe crashed on). */
+static bc_val one_d(bc_gen *g, bc_val t) {
+    bc_val parts[2] = {t, hfx_bc_constf(g, 0.5f)};
+    bc_val uv = hfx_bc_gather(g, parts, 2);
+    hfx_bc_release(g, t);
+    return uv;
+}
+
 /* Sampling: texld (texldp / texldb by the control bits), texldl, texldd. ps_2_0 reads the
  * coordinate from a register with no swizzle. */
 static bc_obj tex(bc_gen *g, const ir_expr *e) {
@@ -243,6 +254,7 @@ static bc_obj tex(bc_gen *g, const ir_expr *e) {
         return one(g, hfx_bc_constf(g, 0));
     }
     bc_val uv = hfx_bc_expr1(g, e->a[1]);
+    if (uv.n == 1) uv = one_d(g, uv);
     bool plain = uv.type == D3D9_REG_TEMP || uv.type == D3D9_REG_ADDR || uv.type == D3D9_REG_INPUT;
     for (unsigned i = 0; i < uv.n; i++) plain &= uv.sw[i] == i;
     if (!plain || uv.mod || (g->model < D3D9_SM(3, 0) && uv.type == D3D9_REG_INPUT && g->stage == D3D9_PS)) {

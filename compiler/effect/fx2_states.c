@@ -72,6 +72,15 @@ void hfx_fx2_state_value(fx2_reader *r, const fx2_raw *raw, hfx_fx_state *st) {
         return;
     }
     const fx2_type *t = &raw->type;
+    if (t->klass == PC_OBJECT && t->type >= PT_SAMPLER && t->type <= PT_SAMPLERCUBE) {
+        /* A sampler's value is a block (state count, records): fxc's `Sampler[0] = <S>` leaves it
+         * empty and names S in a resource; a block of its own is not read (hfx has no inline one). */
+        uint32_t count;
+        if (!hfx_fx2_u32(r, raw->value_at, &count, "state value")) return;
+        st->kind = count ? HFX_FX_VALUE_UNSUPPORTED : HFX_FX_VALUE_PARAM;
+        st->ref = HFX_NONE;
+        return;
+    }
     if (t->klass == PC_OBJECT) {
         uint32_t id;
         if (!hfx_fx2_u32(r, raw->value_at, &id, "state value")) return;

@@ -343,7 +343,10 @@ static bool state(writer *w, const hfx_fx_state *s, const place *at, uint32_t *o
         if (!p) return false;
         if (p->klass == HFX_CLASS_OBJECT) *type = plain_typedef(w, (uint32_t)p->type, PC_OBJECT, 0, 0);
         else *type = plain_typedef(w, p->type == HFX_TYPE_FLOAT ? PT_FLOAT : PT_INT, PC_SCALAR, 1, 1);
-        *value = u32(w, &w->data, new_object(w));
+        /* A sampler's value is a block (state count, records), not an object id: `Sampler[0] =
+         * (S)` is an empty block, the resource naming S, as D3DX and MojoShader read it. */
+        bool sampler = p->klass == HFX_CLASS_OBJECT && p->type >= HFX_TYPE_SAMPLER && p->type <= HFX_TYPE_SAMPLERCUBE;
+        *value = u32(w, &w->data, sampler ? 0 : new_object(w));
         char path[512];
         param_path(w->fx, s->ref, path, sizeof path);
         resource_at(w, at, USE_PARAM, path, (uint32_t)strlen(path) + 1);

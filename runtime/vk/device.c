@@ -199,6 +199,13 @@ static void read_limits(struct hfx_vk_device *vk, const hfx_vulkan_desc *d) {
     vk->fn.GetPhysicalDeviceProperties(vk->phys, &props);
     vk->fn.GetPhysicalDeviceMemoryProperties(vk->phys, &vk->memory);
     vk->ubo_align = props.limits.minUniformBufferOffsetAlignment ? props.limits.minUniformBufferOffsetAlignment : 256;
+    const VkPhysicalDeviceLimits *lim = &props.limits;
+    vk->max_attributes = lim->maxVertexInputAttributes;
+    uint32_t comps = lim->maxVertexOutputComponents < lim->maxFragmentInputComponents ? lim->maxVertexOutputComponents
+                                                                                       : lim->maxFragmentInputComponents;
+    vk->max_varyings = comps / 4;
+    vk->max_colors = lim->maxFragmentOutputAttachments < lim->maxColorAttachments ? lim->maxFragmentOutputAttachments
+                                                                                  : lim->maxColorAttachments;
     const VkPhysicalDeviceFeatures *feat = d->enabled_features;
     vk->max_anisotropy = feat && feat->samplerAnisotropy ? props.limits.maxSamplerAnisotropy : 0.0f;
     vk->fill_modes = feat && feat->fillModeNonSolid;

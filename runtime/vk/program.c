@@ -13,6 +13,7 @@
 #include <spirv-tools/libspirv.h>
 #undef kDefaultMaxIdBound
 
+#include "spirv_iface.h"
 #include "spirv_loc.h"
 #include "vk/vk.h"
 
@@ -101,6 +102,56 @@ static int make_module(hfx_shared *sh, uint32_t index, const hfx_fx_code *code, 
                                    .pCode = (const uint32_t *)(const void *)code->data};
     VkResult r = vk->fn.CreateShaderModule(vk->device, &ci, NULL, out);
     return r == VK_SUCCESS ? HFX_OK : hfx_vk_fail(sh->dev, r, "vkCreateShaderModule");
+}
+
+/* Whether the attributes the pipeline binds (vertex_input_of: the first VK_MAX_ATTRIBUTES, at
+ * their own locations) feed every input the vertex shader reads, on locations the device has. */
+static const char *attributes_feed(const hfx_fx_program *fp, const hfx_spirv_iface *in, uint32_t max) {
+    uint8_t given[HFX_SPIRV_MAX_LOCATIONS] = {0};
+    for (uint32_t a = 0; a < fp->attribute_count && a < VK_MAX_ATTRIBUTES; a++) {
+        int32_t l = fp->attributes[a].location;
+        if (l < 0 || (uint32_t)l >= max || (uint32_t)l >= HFX_SPIRV_MAX_LOCATIONS) return "an attribute location past the device's";
+        if (given[l]++) return "two attributes on one location";
+    }
+    for (uint32_t l = 0; l < in->end; l++)
+        if (in->kind[l] && !given[l]) return "a vertex shader input no attribute provides";
+    return NULL;
+}
+
+/* SPIRV-Tools checks each module alone; the two stages must also agree with each other, with the
+ * program's attributes and with the device's limits, or pipeline creation is undefined (lavapipe
+ * writes out of bounds on a location past its tables). Checked once, when the program is built. */
+static int check_interface(hfx_shared *sh, uint32_t index, const hfx_fx_program *fp) {
+    const struct hfx_vk_device *vk = sh->dev->vk;
+    const hfx_fx_code *vs = &fp->code[HFX_STAGE_VERTEX][HFX_TARGET_SPIRV_VK], *fs = &fp->code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV_VK];
+    const uint32_t *vw = (const uint32_t *)(const void *)vs->data, *fw = (const uint32_t *)(const void *)fs->data;
+    hfx_spirv_iface vin, vout, fin, fout;
+    const char *why = hfx_spirv_interface(vw, vs->size / 4, 0, &vin);
+    if (!why) why = hfx_spirv_interface(vw, vs->size / 4, 1, &vout);
+    if (!why) why = hfx_spirv_interface(fw, fs->size / 4, 0, &fin);
+    if (!why) why = hfx_spirv_interface(fw, fs->size / 4, 1, &fout);
+    if (!why && (vout.end > vk->max_varyings || fin.end > vk->max_varyings)) why = "more varyings than the device has";
+    if (!why && fout.end > vk->max_colors) why = "more colour outputs than the device has";
+    if (!why) why = hfx_spirv_interface_fed(&vout, &fin);
+    if (!why) why = attributes_feed(fp, &vin, vk->max_attributes);
+    if (!why) return HFX_OK;
+    char user[160];
+    program_user(sh->fx, index, user, sizeof user);
+    return hfx_rt_fail(sh->dev, HFX_ERR_LOAD, "%s: %s: the shaders' interface has %s", name_of(sh), user, why);
+}
+
+/* Each sampler binding's dimension: the effect sampler's, unless a module samples it as another. */
+static int read_sampler_dims(hfx_shared *sh, const hfx_fx_program *fp, vk_program *p) {
+    for (uint32_t k = 0; k < p->sampler_count; k++) {
+        uint32_t s = fp->samplers[k].sampler;
+        p->sampler_dims[k] = (uint8_t)(s < sh->fx->sampler_count ? sh->fx->samplers[s].dim : HFX_FX_DIM_2D);
+    }
+    for (int st = 0; st < HFX_STAGE_COUNT; st++) {
+        const hfx_fx_code *c = &fp->code[st][HFX_TARGET_SPIRV_VK];
+        if (hfx_vk_sampler_dims((const uint32_t *)(const void *)c->data, c->size / 4, p->sampler_dims, p->sampler_count))
+            return hfx_rt_fail(sh->dev, HFX_ERR_LOAD, "%s: a shader's SPIR-V could not be read", name_of(sh));
+    }
+    return HFX_OK;
 }
 
 static const vk_leaf *find_leaf(const vk_block *b, const char *path) {
@@ -221,6 +272,8 @@ int hfx_vk_program_build(hfx_shared *sh, uint32_t index) {
     bool block = false;
     int rc = make_module(sh, index, &fp->code[HFX_STAGE_VERTEX][HFX_TARGET_SPIRV_VK], "vertex", &block, &p->vs);
     if (!rc) rc = make_module(sh, index, &fp->code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV_VK], "pixel", &block, &p->fs);
+    if (!rc) rc = check_interface(sh, index, fp);
+    if (!rc) rc = read_sampler_dims(sh, fp, p);
     if (!rc) rc = hfx_vk_outputs_make(sh->dev, &fp->code[HFX_STAGE_FRAGMENT][HFX_TARGET_SPIRV_VK], p);
     if (!rc) rc = read_block(&b, fp);
     if (!rc && block && !p->block_size)

@@ -11,7 +11,7 @@
 #include "vk/vk.h"
 
 enum {
-    OP_NAME = 5, OP_MEMBER_NAME = 6, OP_TYPE_BOOL = 20, OP_TYPE_INT = 21, OP_TYPE_FLOAT = 22, OP_TYPE_VECTOR = 23,
+    OP_NAME = 5, OP_MEMBER_NAME = 6, OP_TYPE_BOOL = 20, OP_TYPE_IMAGE = 25, OP_TYPE_INT = 21, OP_TYPE_FLOAT = 22, OP_TYPE_VECTOR = 23,
     OP_TYPE_MATRIX = 24, OP_TYPE_SAMPLED_IMAGE = 27, OP_TYPE_ARRAY = 28, OP_TYPE_STRUCT = 30, OP_TYPE_POINTER = 32, OP_CONSTANT = 43,
     OP_VARIABLE = 59, OP_DECORATE = 71, OP_MEMBER_DECORATE = 72,
     DEC_ARRAY_STRIDE = 6, DEC_MATRIX_STRIDE = 7, DEC_BINDING = 33, DEC_SET = 34, DEC_OFFSET = 35,
@@ -44,7 +44,7 @@ static int has_result_type(uint32_t op) { return op == OP_CONSTANT || op == OP_V
 
 static void index_ids(const module *m, uint32_t op, const uint32_t *w, uint32_t n, size_t at) {
     uint32_t id = has_result_type(op) ? (n > 2 ? w[2] : 0) : (n > 1 ? w[1] : 0);
-    int defines = (op >= OP_TYPE_BOOL && op <= OP_TYPE_POINTER) || has_result_type(op);
+    int defines = (op >= OP_TYPE_BOOL && op <= OP_TYPE_POINTER) || has_result_type(op); /* OpTypeImage too */
     if (defines && id < m->bound) m->def[id] = (uint32_t)at;
     if (op == OP_DECORATE && n >= 4 && w[1] < m->bound) {
         if (w[2] == DEC_ARRAY_STRIDE) m->stride[w[1]] = w[3];
@@ -237,6 +237,31 @@ const char *hfx_vk_check_slots(const uint32_t *words, size_t count, uint32_t sam
     }
     module_close(&m);
     return why;
+}
+
+/* SPIR-V's Dim of an OpTypeImage (1D 0, 2D 1, 3D 2, Cube 3) as hfx_fx_dim. */
+static uint8_t fx_dim(uint32_t spirv_dim) {
+    static const uint8_t dims[4] = {HFX_FX_DIM_1D, HFX_FX_DIM_2D, HFX_FX_DIM_3D, HFX_FX_DIM_CUBE};
+    return spirv_dim < 4 ? dims[spirv_dim] : HFX_FX_DIM_2D;
+}
+
+/* A program's uniform may sample one effect sampler as another dimension than the effect's
+ * record says (DigitalRise's VolumetricLight: tex2Dlod in one function, texCUBElod in
+ * another): the module's own image type is what its binding needs. */
+int hfx_vk_sampler_dims(const uint32_t *words, size_t count, uint8_t *dims, uint32_t dim_count) {
+    module m;
+    int rc = module_open(&m, words, count, NULL);
+    for (uint32_t id = 1; !rc && id < m.bound; id++) {
+        const uint32_t *v = def_of(&m, id);
+        if (!v || (v[0] & 0xffffu) != OP_VARIABLE || (v[0] >> 16) < 4 || v[3] != STORAGE_UNIFORM_CONSTANT) continue;
+        int32_t k = m.binding[id] - HFX_VK_BINDING_SAMPLER0;
+        const uint32_t *ptr = def_of(&m, v[1]), *si = ptr && (ptr[0] >> 16) >= 4 ? def_of(&m, ptr[3]) : NULL;
+        const uint32_t *im = si && (si[0] & 0xffffu) == OP_TYPE_SAMPLED_IMAGE && (si[0] >> 16) >= 3 ? def_of(&m, si[2]) : NULL;
+        if (k >= 0 && (uint32_t)k < dim_count && im && (im[0] & 0xffffu) == OP_TYPE_IMAGE && (im[0] >> 16) >= 4)
+            dims[k] = fx_dim(im[3]);
+    }
+    module_close(&m);
+    return rc;
 }
 
 void hfx_vk_block_free(vk_block *b) {

@@ -101,6 +101,7 @@ struct hfx_vk_device {
     VkDevice device;
     VkPhysicalDeviceMemoryProperties memory;
     VkDeviceSize ubo_align, first_chunk;
+    uint32_t max_attributes, max_varyings, max_colors; /* vertex inputs, locations between the stages, pixel outputs */
     float max_anisotropy;           /* 0 unless the device was created with samplerAnisotropy */
     int fill_modes;                 /* fillModeNonSolid */
     uint32_t frame_count, frame;    /* frames in flight, the current one */
@@ -161,6 +162,7 @@ typedef struct vk_program {
     vk_upload *uploads;
     uint32_t upload_count;
     uint32_t sampler_count;         /* bindings HFX_VK_BINDING_SAMPLER0.. */
+    uint8_t sampler_dims[32];       /* per binding: the hfx_fx_dim the modules sample it with (reflect.c) */
     const hfx_fx_program *fp;
 } vk_program;
 
@@ -238,6 +240,9 @@ int hfx_vk_reflect_block(const uint32_t *words, size_t count, vk_block *out); /*
 void hfx_vk_block_free(vk_block *b);
 /* NULL when every descriptor a module declares is a slot of the program's layout (set 0: the block,
  * samplers below sampler_count; *block set when it declares the block), else why not. */
+/* Sets dims[k] to the hfx_fx_dim of sampler binding HFX_VK_BINDING_SAMPLER0 + k (k < count) that
+ * the module declares; leaves the others. 0, or -1 when the module cannot be read. */
+int hfx_vk_sampler_dims(const uint32_t *words, size_t count, uint8_t *dims, uint32_t dim_count);
 const char *hfx_vk_check_slots(const uint32_t *words, size_t count, uint32_t sampler_count, bool *block);
 
 /* program.c */

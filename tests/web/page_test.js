@@ -12,6 +12,7 @@
 //   - a PNG picked for a texture, several files opened with an #include among them, files
 //     dropped (with the include, and without it: X1507), an OBJ mesh, the GLSL tab, the .hfxo download;
 //   - an fx_2_0 binary dropped (hfxc /T fx_2_0 /Fo of a source here): drawn, ShaderIndex switching;
+//   - hfxview's default 2D, cube and volume textures; time parameters on a fixed clock;
 //   - screenshots of three seeds, and the page's timings (first picture, compile).
 // Exit 77 (skip) only when Chromium cannot start or the seed corpus is absent.
 //   node page_test.js --site DIR --expect WEB_EXPECT --shots DIR [--hfxc HFXC]
@@ -245,6 +246,59 @@ async function droppedFiles(page) {
   check(texts.includes(want) && (await files()) === "flat.fx", `dropped flat.fx alone: ${JSON.stringify(texts)} (want ${want})`);
   const marks = await page.evaluate(() => [...document.querySelectorAll(".cm-lintRange-error")].map((e) => e.textContent));
   check(marks.includes("#"), `the editor marks the #include (${JSON.stringify(marks)})`);
+}
+
+// Textures the application never set get hfxview's defaults of their kind (image.h: 8 x 8
+// squares of (235, 235, 235) and (90, 90, 100) on 256 texels, each cube face the same, a 32^3
+// volume of 4^3 cubes), so that the page draws an effect as hfxview does; and time parameters
+// follow the page's clock, or a fixed one (hfxPage.setClock, what scripts/web_corpus.js uses).
+// Point sampling at a square's centre: the cube's +X face at direction (1, -0.125, -0.375)
+// is u = (0.375 + 1) / 2 = 0.6875, v = (0.125 + 1) / 2 = 0.5625 (D3D's face orientation:
+// u from -z, v from -y), texel (176, 144), square (5, 4): odd, dark; the volume at texel
+// (12.5, 4.5, 4.5) is cube (1, 0, 0): odd, dark; the 2D texture at (0.1875, 0.0625) is square
+// (1, 0): odd, dark, and at (0.0625, 0.0625) square (0, 0): light. Time at 1 s: frac(1 / 4) =
+// 0.25 of red; at 2 s, 0.5.
+const DEFAULTS = `float4x4 WorldViewProj : WorldViewProjection;
+float Time;
+texture2D Flat; sampler2D S2 = sampler_state { Texture = <Flat>; MinFilter = Point; MagFilter = Point; MipFilter = None; };
+textureCUBE Sky; samplerCUBE SC = sampler_state { Texture = <Sky>; MinFilter = Point; MagFilter = Point; MipFilter = None; };
+texture3D Vol; sampler3D S3 = sampler_state { Texture = <Vol>; MinFilter = Point; MagFilter = Point; MipFilter = None; };
+float4 VS(float3 p : POSITION) : POSITION { return mul(float4(p, 1), WorldViewProj); }
+float4 Light() : COLOR { return tex2D(S2, float2(0.0625, 0.0625)); }
+float4 Dark() : COLOR { return tex2D(S2, float2(0.1875, 0.0625)); }
+float4 Cube() : COLOR { return texCUBE(SC, float3(1, -0.125, -0.375)); }
+float4 Volume() : COLOR { return tex3D(S3, float3(12.5, 4.5, 4.5) / 32); }
+float4 Clock() : COLOR { return float4(frac(Time / 4), 0, 0, 1); }
+technique Light { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 Light(); } }
+technique Dark { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 Dark(); } }
+technique Cube { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 Cube(); } }
+technique Volume { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 Volume(); } }
+technique Clock { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 Clock(); } }
+`;
+
+async function defaultTextures(page) {
+  await page.setInputFiles("#open-files", [{name: "defaults.fx", mimeType: "text/plain", buffer: Buffer.from(DEFAULTS)}]);
+  await page.waitForFunction(() => document.getElementById("technique").options.length === 5, null, {timeout: 10000}).catch(() => {});
+  const centre = (t, clock) => page.evaluate(async ({t, clock}) => {
+    const p = window.hfxPage, tech = document.getElementById("technique");
+    await p.setMesh("plane");
+    p.setCamera(0, 60, 3);
+    tech.value = String(t);
+    tech.dispatchEvent(new Event("change"));
+    if (clock !== undefined) p.setClock(clock);
+    p.renderNow();
+    return p.pixel(256, 256);
+  }, {t, clock});
+  const light = [235 / 255, 235 / 255, 235 / 255, 1], dark = [90 / 255, 90 / 255, 100 / 255, 1];
+  for (const [t, name, want] of [[0, "2D, square (0, 0)", light], [1, "2D, square (1, 0)", dark], [2, "cube", dark], [3, "volume", dark]]) {
+    const got = await centre(t);
+    check(near(got, want), `default ${name} texture: centre ${show(got)} expected ${showWant(want)}`);
+  }
+  for (const [clock, want] of [[1, [0.25, 0, 0, 1]], [2, [0.5, 0, 0, 1]]]) {
+    const got = await centre(4, clock);
+    check(near(got, want), `Time with the clock fixed at ${clock} s: centre ${show(got)} expected ${showWant(want)}`);
+  }
+  await page.evaluate(() => window.hfxPage.setClock(-1));
 }
 
 // An effect compiled to fx_2_0 (hfx's own binary: hfxc /T fx_2_0 /Fo, the container and
@@ -532,6 +586,7 @@ async function main() {
   await glslAndDownload(page);
   await droppedFiles(page);
   await droppedBinary(page);
+  await defaultTextures(page);
   await screenshots(page);
   await browser.close();
   console.log(failures ? `${failures} check(s) failed` : "all checks passed");

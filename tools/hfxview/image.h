@@ -21,6 +21,14 @@ static inline int hv_image_face_count(const hv_image *img) { return img->faces >
 
 int hv_image_load(hv_image *img, const char *path, char *err, size_t errlen); /* 0, or -1 with err */
 int hv_image_write_png(const hv_image *img, const char *path);              /* 0, or -1 */
+/* The default textures' two colours (dark 0: light grey, 1: bluish dark grey) and the 2D one's
+ * size and squares, shared by hfxview and the web page (web/wasm/draw.c) so that their pictures
+ * of the same effect compare (scripts/corpus.sh compare). */
+enum { HV_CHECKER_SIZE = 256, HV_CHECKER_CELLS = 8 };
+static inline const unsigned char *hv_checker_colour(int dark) {
+    static const unsigned char light[4] = {235, 235, 235, 255}, grey[4] = {90, 90, 100, 255};
+    return dark ? grey : light;
+}
 /* A checkerboard of cells x cells squares in two colours: the default texture, visible at a glance. */
 int hv_image_checker(hv_image *img, int size, int cells, const unsigned char a[4], const unsigned char b[4]);
 /* A size^3 volume of cells^3 cubes in two colours: the default volume texture. */

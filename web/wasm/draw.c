@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "bind.h"
+#include "image.h"
 #include "mesh.h"
 #include "options.h"
 #include "session.h"
@@ -26,18 +27,21 @@ unsigned hfxw_texture_rgba(hfxw_session *s, const unsigned char *rgba, int width
     return tex;
 }
 
-/* 8 x 8 squares of 16 texels, white and grey: an untextured effect still shows its mapping. */
-static unsigned make_checker(hfxw_session *s) {
-    enum { N = 128 };
+/* hfxview's default textures (textures.c, image.h), texel for texel: an untextured effect still
+ * shows its mapping, and the page's picture of it is hfxview's. The checker is also the cube's
+ * every face; the volume is 32^3 texels of 4^3 cubes. */
+static unsigned make_default(hfxw_session *s, int kind) {
+    enum { N = HV_CHECKER_SIZE, CELL = HV_CHECKER_SIZE / HV_CHECKER_CELLS, V = 32, VCELL = 8 };
     unsigned char *px = malloc(N * N * 4);
     if (!px) return 0;
-    for (int y = 0; y < N; y++)
-        for (int x = 0; x < N; x++) {
-            unsigned char v = ((x / 16) + (y / 16)) % 2 ? 255 : 96;
-            unsigned char *p = px + (y * N + x) * 4;
-            p[0] = p[1] = p[2] = v, p[3] = 255;
-        }
-    unsigned tex = hfxw_texture_rgba(s, px, N, N);
+    hv_image img = {kind == 3 ? V : N, kind == 3 ? V : N, kind == 3 ? V : 1, 1, px};
+    unsigned char *p = px;
+    for (int z = 0; z < img.depth; z++)
+        for (int y = 0; y < img.height; y++)
+            for (int x = 0; x < img.width; x++, p += 4)
+                memcpy(p, hv_checker_colour(kind == 3 ? (x / VCELL + y / VCELL + z / VCELL) & 1 : (x / CELL + y / CELL) & 1), 4);
+    unsigned tex = kind == 3 ? hv_texture_3d(&s->gl, &img) : kind == 6 ? hv_texture_cube(&s->gl, &img)
+                                                                       : hfxw_texture_rgba(s, px, N, N);
     free(px);
     return tex;
 }
@@ -47,7 +51,7 @@ int hfxw_draw_init(hfxw_session *s) {
     hv_options o;
     hv_options_defaults(&o);
     memcpy(s->clear, o.background, sizeof s->clear); /* XNA's CornflowerBlue, as hfxview clears */
-    s->checker = make_checker(s);
+    s->checker = make_default(s, 2), s->cube = make_default(s, 6), s->volume = make_default(s, 3);
     s->yaw = 0, s->pitch = 20, s->distance = 3;
     s->width = s->height = 512;
     char err[128];
@@ -81,7 +85,8 @@ static void scene_of(const hfxw_session *s, int width, int height, hv_scene *sc)
     o.eye = orbit_eye(s);
     o.width = width, o.height = height;
     hv_scene_from_options(sc, &o);
-    sc->time = (float)((emscripten_get_now() - s->start_ms) / 1000.0); /* the clock runs on the page */
+    /* the clock runs on the page, unless fixed (hfxw_set_clock) */
+    sc->time = (float)(s->clock_s >= 0 ? s->clock_s : (emscripten_get_now() - s->start_ms) / 1000.0);
 }
 
 void hfxw_bind_scene(hfxw_session *s, int width, int height) {
@@ -103,13 +108,15 @@ static void bind_view(hfxw_session *s, int width, int height) {
     hv_bind_view(s->fx, &sc);
 }
 
-/* Every texture parameter still empty gets the checker. */
+/* Every texture parameter still empty gets hfxview's default of its kind. */
 void hfxw_bind_default_textures(hfxw_session *s) {
     for (size_t i = 0; i < hfx_effect_param_count(s->fx); i++) {
         hfx_param *p = hfx_effect_param_at(s->fx, i);
         unsigned have = 0;
-        if (hfx_param_texture_target(p) != GL_TEXTURE_2D) continue;
-        if (hfx_param_get_texture(p, &have) == HFX_OK && !have) hfx_param_set_texture(p, s->checker);
+        unsigned target = hfx_param_texture_target(p);
+        unsigned tex = target == GL_TEXTURE_2D ? s->checker : target == GL_TEXTURE_CUBE_MAP ? s->cube
+                       : target == GL_TEXTURE_3D ? s->volume : 0;
+        if (tex && hfx_param_get_texture(p, &have) == HFX_OK && !have) hfx_param_set_texture(p, tex);
     }
 }
 

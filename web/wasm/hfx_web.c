@@ -33,6 +33,7 @@ EMSCRIPTEN_KEEPALIVE int hfxw_init(const char *canvas) {
     session.context = emscripten_webgl_create_context(canvas, &a);
     if (session.context <= 0 || emscripten_webgl_make_context_current(session.context) != EMSCRIPTEN_RESULT_SUCCESS)
         return -1;
+    session.clock_s = -1;
     session.dev = hfx_device_create_gl(hfxw_gl_proc);
     if (!session.dev) return -1;
     return hfxw_draw_init(&session);
@@ -153,6 +154,10 @@ EMSCRIPTEN_KEEPALIVE void hfxw_render(int width, int height) {
 EMSCRIPTEN_KEEPALIVE void hfxw_set_camera(float yaw, float pitch, float distance) {
     session.yaw = yaw, session.pitch = pitch, session.distance = distance;
 }
+
+/* Time parameters read `seconds` from now on (hfxview's headless 1 s, for comparing pictures);
+ * a negative value lets the page's clock run again. */
+EMSCRIPTEN_KEEPALIVE void hfxw_set_clock(double seconds) { session.clock_s = seconds; }
 
 EMSCRIPTEN_KEEPALIVE void hfxw_set_technique(int technique, int pass) {
     session.technique = technique, session.pass = pass;

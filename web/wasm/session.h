@@ -22,7 +22,7 @@ typedef struct hfxw_session {
     int blend_add;           /* the application adds passes 2.. to the first (hfxview --blend-passes add) */
     hv_gl gl;                /* hfxview's GL table over WebGL 2, for its drawing code (render.c) */
     hv_gpu_mesh mesh;
-    unsigned checker;        /* the default texture */
+    unsigned checker, cube, volume; /* the default 2D, cube and volume textures (hfxview's) */
     unsigned textures[64];   /* textures the page made for parameters, to free with the effect */
     size_t texture_count;
     float yaw, pitch, distance; /* orbit camera around the origin, degrees and units */
@@ -31,6 +31,7 @@ typedef struct hfxw_session {
     const char **bound;      /* how bind.c bound each top-level parameter (NULL: not bound), for the panel */
     size_t bound_count;
     double start_ms;         /* when the effect loaded: time parameters count from it */
+    double clock_s;          /* < 0: the page's clock runs; else the time parameters' fixed value (hfxw_set_clock) */
     char *answer;            /* the last JSON handed to JavaScript (freed on the next answer) */
     char message[256];       /* the last setter's error, "" when it worked */
 } hfxw_session;

@@ -331,6 +331,23 @@ static void out_arguments_and_shapes(void) {
     NEAR4(o, 3, 4, 1, 2, 0);
 }
 
+/* m = transpose(m) in place: the transposed view reads the registers the copy writes, so they are
+ * read first (a parallel copy). m's rows 2 (1, 2, 3), 2 (4, 1, 2), 2 (3, 4, 1) for x = (1, 2, 3, 4),
+ * transposed: (2, 8, 6), (4, 2, 8), (6, 4, 2) (DigitalRise-style tangent frames and the Apress
+ * terrain's `tangentSpace = transpose(tangentSpace)` lost their third row to the overwrite). */
+static void transpose_in_place(void) {
+    float o[4];
+    const float x[4] = {1, 2, 3, 4};
+    for (int stage = 0; stage < 2; stage++) {
+        const char *body = "float3x3 m = float3x3(x.xyz, x.wxy, x.zwx) * 2; m = transpose(m); return float4(m[0], m[1].x);";
+        (stage ? vs : ps)(body, x, o);
+        NEAR4(o, 2, 8, 6, 4, 0);
+        (stage ? vs : ps)("float3x3 m = float3x3(x.xyz, x.wxy, x.zwx) * 2; m = transpose(m); return float4(m[2], m[1].z);",
+                          x, o);
+        NEAR4(o, 6, 4, 2, 8, 0);
+    }
+}
+
 int main(void) {
     RUN(inverse_sine_cosine);
     RUN(inverse_tangent);
@@ -343,5 +360,6 @@ int main(void) {
     RUN(casts);
     RUN(clip_four);
     RUN(out_arguments_and_shapes);
+    RUN(transpose_in_place);
     return test_summary();
 }

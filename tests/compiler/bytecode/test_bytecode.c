@@ -281,6 +281,25 @@ static void ps_2_0_product_then_add(void) {
             "\n// approximately 3 instruction slots used (1 texture, 2 arithmetic)\n");
 }
 
+/* tex1D: D3D9 has no 1D textures (the sampler is declared 2D, texld reads .xy), so the
+ * coordinate is (x, 0.5), the middle row of the 2D texture standing for the 1D one, as the GLSL
+ * back end samples it; .y must be written (MojoShader's GLSL read it uninitialised). */
+static void ps_2_0_tex1d(void) {
+    listing("sampler1D S;\nfloat4 main(float x : TEXCOORD0) : COLOR0 { return tex1D(S, x); }\n", "ps_2_0",
+            "//   sampler1D S;\n//\n//\n// Registers:\n//\n"
+            "//   Name         Reg   Size\n//   ------------ ----- ----\n"
+            "//   S            s0       1\n//\n\n",
+            "    ps_2_0\n"
+            "    def c0, 0.5, 0, 0, 0\n"
+            "    dcl t0.x\n"
+            "    dcl_2d s0\n"             /* D3D9's sampler types: 2D, cube, volume */
+            "    mov r0.x, t0.x\n"        /* ps_2_0 samples at a temporary with no swizzle */
+            "    mov r0.y, c0.x\n"        /* the row: 0.5 */
+            "    texld r1, r0, s0\n"
+            "    mov oC0, r1\n"
+            "\n// approximately 4 instruction slots used (1 texture, 3 arithmetic)\n");
+}
+
 static void refused(const char *src, const char *profile, const char *message) {
     bool ok;
     char *text = bc_listing(src, profile, &ok);
@@ -367,5 +386,6 @@ int main(void) {
     RUN(per_stage_registers);
     RUN(limits);
     RUN(ps_2_0_written_input);
+    RUN(ps_2_0_tex1d);
     return test_summary();
 }

@@ -70,6 +70,17 @@ static const hfx_fx_effect *compile_round_trip(const char *text, hfxc_result **r
     return fx;
 }
 
+/* The written bytes against the words worked out by hand, each difference printed. */
+static void check_words(const void *data, size_t size, const uint32_t *expect, size_t n) {
+    CHECK_INT(size, 4 * n);
+    for (size_t i = 0; i < size / 4 && i < n; i++) {
+        uint32_t w;
+        memcpy(&w, (const uint8_t *)data + 4 * i, 4);
+        if (w != expect[i]) fprintf(stderr, "word %zu: 0x%x, expected 0x%x\n", i, w, expect[i]);
+        CHECK_INT(w, expect[i]);
+    }
+}
+
 /* float Ref = 0.5; one technique, one pass, CullMode = None: every word, by hand. The data
  * (offsets from byte 8) is: 0x00 the empty name; 0x04 "Ref" (length 4, 2 words); 0x0c Ref's
  * typedef (float 3, scalar 0, name 0x04, no semantic, no elements, 1 row, 1 column); 0x28 its
@@ -103,15 +114,109 @@ static void tiny_effect_bytes(void) {
         0x34, 0, 1,                                          /* pass P */
         8, 0, 0x3c, 0x58,                                    /* CullMode = None */
         0, 0};                                               /* strings, resources */
-    CHECK_INT(size, sizeof expect);
-    for (size_t i = 0; i < size / 4 && i < sizeof expect / 4; i++) {
-        uint32_t w;
-        memcpy(&w, (const uint8_t *)data + 4 * i, 4);
-        if (w != expect[i]) fprintf(stderr, "word %zu: 0x%x, expected 0x%x\n", i, w, expect[i]);
-        CHECK_INT(w, expect[i]);
-    }
+    check_words(data, size, expect, sizeof expect / 4);
     free(data);
 done:
+    hfxc_result_free(r);
+}
+
+/* A pass naming a sampler and a texture: `Sampler[0] = (S); Texture[1] = <Tex>;`. D3DX reads a
+ * sampler-typed value as a block (state count, then records; Wine's d3dx_parse_value and
+ * MojoShader's readvalue alike), a texture-typed one as an object id: so Sampler[0]'s value is an
+ * empty block (count 0), its resource (usage 1) naming S, and Texture[1]'s is a fresh object id
+ * (3) with its resource naming Tex. The data: 0x00 ""; 0x04 "Tex"; 0x0c Tex's typedef (texture 5,
+ * object 4, name 0x04); 0x20 its object id 1; 0x24 "S"; 0x2c S's typedef (sampler 10, object 4,
+ * name 0x24); 0x40 the typedef of S's Texture record (texture, anonymous); 0x54 its object id 2;
+ * 0x58 S's block (1 record: Texture = 164, index 0, 0x40, 0x54); 0x6c "T"; 0x74 "P"; 0x7c the
+ * Sampler state's typedef (sampler, anonymous); 0x90 its empty block; 0x94 the Texture state's
+ * typedef; 0xa8 its object id 3. The structure at 0xac: 2 parameters, 1 technique, no shaders,
+ * 4 object ids (0..3); Tex, S; T; P with 2 states (178 = Sampler index 0; 164 = Texture index 1);
+ * no strings; 3 resources: S's Texture record (parameter 1, element 0, state 0) "Tex", the pass's
+ * state 0 "S", state 1 "Tex" (technique, pass, element -1, state, usage 1, size, the name). */
+static void sampler_and_texture_states_bytes(void) {
+    hfxc_result *r = compile("texture Tex;\nsampler S = sampler_state { Texture = <Tex>; };\n"
+                             "technique T { pass P { Sampler[0] = (S); Texture[1] = <Tex>; } }\n");
+    const hfx_fx_effect *fx = hfxc_result_effect(r);
+    CHECK(fx != NULL);
+    if (!fx) goto done;
+    void *data;
+    size_t size;
+    char err[256];
+    CHECK_INT(hfx_fx2_write(fx, "t.fx", NULL, &data, &size, err, sizeof err), 0);
+    const uint32_t none = 0xffffffffu, tex = 0x00786554u, s = 0x53u;
+    const uint32_t expect[] = {
+        0xfeff0901u, 0xac,         /* magic, the structure's offset */
+        0,                         /* 0x00: "" */
+        4, tex,                    /* 0x04: "Tex" */
+        5, 4, 0x04, 0, 0,          /* 0x0c: texture Tex */
+        1,                         /* 0x20: object 1 */
+        2, s,                      /* 0x24: "S" */
+        10, 4, 0x24, 0, 0,         /* 0x2c: sampler S */
+        5, 4, 0, 0, 0,             /* 0x40: its Texture record's typedef */
+        2,                         /* 0x54: object 2 */
+        1, 164, 0, 0x40, 0x54,     /* 0x58: S's block */
+        2, 0x54,                   /* 0x6c: "T" */
+        2, 0x50,                   /* 0x74: "P" */
+        10, 4, 0, 0, 0,            /* 0x7c: Sampler[0]'s typedef */
+        0,                         /* 0x90: an empty sampler block */
+        5, 4, 0, 0, 0,             /* 0x94: Texture[1]'s typedef */
+        3,                         /* 0xa8: object 3 */
+        2, 1, 0, 4,                /* 0xac: counts */
+        0x0c, 0x20, 0, 0,          /* Tex */
+        0x2c, 0x58, 0, 0,          /* S */
+        0x6c, 0, 1,                /* technique T */
+        0x74, 0, 2,                /* pass P */
+        178, 0, 0x7c, 0x90,        /* Sampler[0] = (S) */
+        164, 1, 0x94, 0xa8,        /* Texture[1] = <Tex> */
+        0, 3,                      /* strings, resources */
+        none, 1, 0, 0, 1, 4, tex,  /* S's Texture = <Tex> */
+        0, 0, none, 0, 1, 2, s,    /* Sampler[0] = (S) */
+        0, 0, none, 1, 1, 4, tex}; /* Texture[1] = <Tex> */
+    check_words(data, size, expect, sizeof expect / 4);
+    free(data);
+done:
+    hfxc_result_free(r);
+}
+
+/* The state of sampler leaf `leaf` named `name` (its int value), or -1. */
+static int sampler_state_of(const hfx_fx_effect *fx, uint32_t leaf, const char *name) {
+    uint32_t si = fx->params[leaf].sampler;
+    if (si >= fx->sampler_count) return -1;
+    const hfx_fx_sampler *s = &fx->samplers[si];
+    for (uint32_t i = 0; i < s->state_count; i++)
+        if (fx->states[s->first_state + i].id == state_id(name)) return fx->states[s->first_state + i].i;
+    return -1;
+}
+
+/* The same pass read back by hfx's reader: Sampler[0] names S (whose block keeps its Texture, so
+ * the pass binds S's states and Tex on unit 0, as runtime/gl/passes.c applies it) and Texture[1]
+ * names Tex; `<S>` reads as `(S)`. */
+static void sampler_states_round_trip(void) {
+    hfxc_result *r, *back;
+    const hfx_fx_effect *fx = compile_round_trip(
+        "texture Tex;\nsampler S = sampler_state { Texture = <Tex>; MinFilter = Point; };\n"
+        "sampler S2 = sampler_state { Texture = <Tex>; };\n"
+        "technique T { pass P { Sampler[0] = (S); Sampler[2] = <S2>; Texture[1] = <Tex>; } }\n", &r, &back);
+    if (fx) {
+        uint32_t tex = hfx_fx_param_find(fx, "Tex"), s = hfx_fx_param_find(fx, "S"), s2 = hfx_fx_param_find(fx, "S2");
+        CHECK_INT(fx->passes[0].state_count, 3);
+        const hfx_fx_state *st = &fx->states[fx->passes[0].first_state];
+        CHECK_INT(st[0].id, state_id("Sampler"));
+        CHECK_INT(st[0].index, 0);
+        CHECK_INT(st[0].kind, HFX_FX_VALUE_PARAM);
+        CHECK_INT(st[0].ref, s);
+        CHECK_INT(st[1].id, state_id("Sampler"));
+        CHECK_INT(st[1].index, 2);
+        CHECK_INT(st[1].kind, HFX_FX_VALUE_PARAM);
+        CHECK_INT(st[1].ref, s2);
+        CHECK_INT(st[2].id, state_id("Texture"));
+        CHECK_INT(st[2].index, 1);
+        CHECK_INT(st[2].kind, HFX_FX_VALUE_PARAM);
+        CHECK_INT(st[2].ref, tex);
+        CHECK(fx->params[s].sampler < fx->sampler_count && fx->samplers[fx->params[s].sampler].texture_param == tex);
+        CHECK_INT(sampler_state_of(fx, s, "MinFilter"), 1); /* D3DTEXF_POINT */
+    }
+    hfxc_result_free(back);
     hfxc_result_free(r);
 }
 
@@ -177,16 +282,6 @@ static void expressions_round_trip(void) {
     }
     hfxc_result_free(back);
     hfxc_result_free(r);
-}
-
-/* The state of sampler leaf `leaf` named `name` (its int value), or -1. */
-static int sampler_state_of(const hfx_fx_effect *fx, uint32_t leaf, const char *name) {
-    uint32_t si = fx->params[leaf].sampler;
-    if (si >= fx->sampler_count) return -1;
-    const hfx_fx_sampler *s = &fx->samplers[si];
-    for (uint32_t i = 0; i < s->state_count; i++)
-        if (fx->states[s->first_state + i].id == state_id(name)) return fx->states[s->first_state + i].i;
-    return -1;
 }
 
 /* A sampler array: each element's block follows the one before in the file (readers step from
@@ -490,6 +585,8 @@ static void sample_folder_round_trip(void) {
 
 int main(void) {
     RUN(tiny_effect_bytes);
+    RUN(sampler_and_texture_states_bytes);
+    RUN(sampler_states_round_trip);
     RUN(expressions_round_trip);
     RUN(inexpressible_expression);
     RUN(sampler_array_round_trip);

@@ -1,6 +1,7 @@
 /* test_program.c (Vulkan): a .hfxo whose SPIR-V for Vulkan is corrupted is refused at load with
  * the validator's reason, naming the effect, pass and stage, before the driver sees the module
- * (runtime/vk/program.c), as is valid SPIR-V naming descriptors the pipeline layout lacks; the
+ * (runtime/vk/program.c), as is valid SPIR-V naming descriptors the pipeline layout lacks, or
+ * whose stages' interfaces disagree with each other, the attributes or the device; the
  * same file uncorrupted loads and draws. The .hfxo is written by
  * the compiler's own writer, so its CRC is right and only the module is wrong. */
 #include <stdio.h>
@@ -143,6 +144,58 @@ static void foreign_descriptors_refused(void) {
     hfx_effect_destroy(fx);
 }
 
+static const char passed[] = "void VS(float4 p : POSITION, float2 t : TEXCOORD0, out float4 op : POSITION,\n"
+                             "        out float2 ot : TEXCOORD0) { op = p; ot = t; }\n"
+                             "float4 PS(float2 t : TEXCOORD0) : COLOR { return float4(t, 0, 1); }\n"
+                             "technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n";
+
+/* `passed` with the nth `OpDecorate %v Location <from>` (decoration 30) of the stage's module made
+ * to say `to`, or (stage -1) its program's attribute at location `from` moved to `to`. */
+static void *hfxo_located(int stage, uint32_t nth, uint32_t from, uint32_t to, size_t *size) {
+    hfx_fx_effect *fx = compiled(passed, sizeof passed - 1, "passed.fx");
+    if (!fx) return NULL;
+    uint32_t found = 0;
+    hfx_fx_program *prog = &fx->programs[0];
+    for (uint32_t a = 0; stage < 0 && a < prog->attribute_count; a++)
+        if (prog->attributes[a].location == (int32_t)from && !found++) prog->attributes[a].location = (int32_t)to;
+    hfx_fx_code *code = stage < 0 ? NULL : &prog->code[stage][HFX_TARGET_SPIRV_VK];
+    uint32_t *w = code ? (uint32_t *)(void *)code->data : NULL, n = code ? (uint32_t)(code->size / 4) : 0;
+    for (uint32_t i = 5; i < n && found <= nth && (w[i] >> 16);) {
+        if (w[i] == (4u << 16 | 71u) && w[i + 2] == 30 && w[i + 3] == from && found++ == nth) w[i + 3] = to;
+        i += w[i] >> 16;
+    }
+    CHECK(found > (stage < 0 ? 0 : nth));
+    return as_hfxo(fx, size);
+}
+
+static void check_located_refused(int stage, uint32_t nth, uint32_t from, uint32_t to, const char *why) {
+    size_t size = 0;
+    void *bytes = hfxo_located(stage, nth, from, to, &size);
+    char expected[256];
+    snprintf(expected, sizeof expected, "passed.fx: technique 'T', pass 'P': the shaders' interface has %s", why);
+    refused_as(bytes, size, expected);
+}
+
+/* Each module is valid alone; the pipeline joining them is not. lavapipe wrote out of bounds on
+ * a vertex output at Location 0x40000001 (found by fuzz_runtime_vk); the validation layer
+ * reports a pixel input nothing writes (InputNotProduced) and a vertex input no attribute feeds.
+ * In `passed`'s vertex shader, Location 0 is POSITION0's input, then TEXCOORD0's output; the
+ * pixel shader reads TEXCOORD0 at Location 0; the program's attributes are POSITION0 at 0 and
+ * TEXCOORD0 at 8 (D3D9's usage order). */
+static void interface_refused(void) {
+    check_located_refused(HFX_STAGE_VERTEX, 1, 0, 0x40000001u, "an interface location past the last one a device has");
+    check_located_refused(HFX_STAGE_FRAGMENT, 0, 0, 1, "a pixel shader input no vertex shader output writes");
+    check_located_refused(HFX_STAGE_VERTEX, 0, 0, 3, "a vertex shader input no attribute provides");
+    check_located_refused(-1, 0, 0, 8, "two attributes on one location");
+    check_located_refused(-1, 0, 8, 4000, "an attribute location past the device's");
+    size_t size = 0;
+    char *errors = NULL;
+    hfx_effect *fx = load(hfxo_located(HFX_STAGE_FRAGMENT, 0, 0, 0, &size), size, &errors); /* unchanged: loads */
+    CHECK(fx != NULL);
+    hfx_free(errors);
+    hfx_effect_destroy(fx);
+}
+
 /* The device still works after the refusals, and the uncorrupted file draws its red. */
 static void valid_draws(void) {
     size_t size = 0;
@@ -165,6 +218,7 @@ int main(void) {
     RUN(bad_bound_refused);
     RUN(bad_import_refused);
     RUN(foreign_descriptors_refused);
+    RUN(interface_refused);
     RUN(valid_draws);
     vk_suite_end(V, layout); /* the validation layer saw no invalid module */
     return test_summary();

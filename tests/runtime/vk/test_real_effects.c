@@ -172,6 +172,41 @@ static void pass_without_shaders(void) {
     hfx_effect_destroy(fx);
 }
 
+/* One untyped texture and sampler, sampled as 2D by one technique and as a cube by another
+ * (DigitalRise's VolumetricLight: tex2Dlod for spotlights, texCUBElod for point lights). The
+ * effect's sampler record has one dimension, which hfx_param_texture_target tells the
+ * application; it sets a view of that kind. The program sampling the other kind reads what GL's
+ * empty target of that kind gives, (0, 0, 0, 1), not that view (the validation layer's
+ * viewType-07752): red + Add saturates to (255, 127.5, 191.25), (0, 0, 0, 1) + Add is Add. */
+static const char *TWO_KINDS =
+    "texture Light;\n"
+    "sampler LightSampler = sampler_state { Texture = <Light>; };\n"
+    "float4 Add = float4(0.25, 0.5, 0.75, 0);\n"
+    "float4 Flat(float2 uv : TEXCOORD0) : COLOR0 { return tex2D(LightSampler, uv) + Add; }\n"
+    "float4 Round(float2 uv : TEXCOORD0) : COLOR0 { return texCUBE(LightSampler, float3(1, 0, 0)) + Add; }\n"
+    "technique FlatT { pass P { PixelShader = compile ps_2_0 Flat(); } }\n"
+    "technique RoundT { pass P { PixelShader = compile ps_2_0 Round(); } }\n";
+
+static void one_sampler_two_kinds(void) {
+    hfx_effect *fx = vk_load(V, TWO_KINDS);
+    if (!fx) return;
+    hfx_param *light = hfx_effect_param(fx, "Light");
+    unsigned target = hfx_param_texture_target(light);
+    int cube = target == 0x8513; /* GL_TEXTURE_CUBE_MAP; else GL_TEXTURE_2D */
+    CHECK(cube || target == 0x0DE1);
+    static const unsigned char red[6 * 4] = {255, 0, 0, 255, 255, 0, 0, 255, 255, 0, 0, 255,
+                                             255, 0, 0, 255, 255, 0, 0, 255, 255, 0, 0, 255};
+    test_vk_texture tex;
+    CHECK(test_vk_texture_make_kind(V, cube ? TEST_VK_CUBE : TEST_VK_2D, 1, 1, 1, 0, red, &tex));
+    CHECK_INT(hfx_param_set_texture_vk(light, tex.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL), 0);
+    CHECK_INT(vk_draw(V, fx, "FlatT", &FULL, 1, CLEAR), 0);
+    CHECK_PIXEL(V, 32, 32, cube ? 63.75 : 255, 127.5, 191.25, 255);
+    CHECK_INT(vk_draw(V, fx, "RoundT", &FULL, 1, CLEAR), 0);
+    CHECK_PIXEL(V, 32, 32, cube ? 255 : 63.75, 127.5, 191.25, 255);
+    hfx_effect_destroy(fx);
+    test_vk_texture_free(V, &tex);
+}
+
 int main(void) {
     hfx_vertex_layout *layout;
     V = vk_suite_begin(64, 64, &layout);
@@ -181,6 +216,7 @@ int main(void) {
     RUN(missing_inputs);
     RUN(more_outputs_than_targets);
     RUN(pass_without_shaders);
+    RUN(one_sampler_two_kinds);
     int messages = vk_suite_end(V, layout);
     return test_summary() || messages;
 }
