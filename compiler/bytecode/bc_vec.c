@@ -123,6 +123,19 @@ static bool combine(bc_gen *g, const d3d9_inst *a, const d3d9_inst *b, d3d9_inst
     return true;
 }
 
+/* The def registers as they were before a merge was tried: literals it made for nothing go. */
+typedef struct literals { uint32_t count; uint8_t last_used; } literals;
+
+static void forget(bc_gen *g, const literals *l) {
+    for (uint32_t d = l->count; d < g->def_count; d++)
+        if (g->defs[d].num < BC_MAX_CONSTS) g->cused[g->defs[d].num] = 0;
+    g->def_count = l->count;
+    if (!l->count) return;
+    bc_def *d = &g->defs[l->count - 1];
+    for (unsigned k = l->last_used; k < 4; k++) d->v[k] = 0; /* the listing shows all four */
+    d->used = l->last_used;
+}
+
 /* b (after a) computed with a as one instruction, at a's place (1) or at b's (2); 0: not. */
 static int try_merge(bc_gen *g, uint32_t ia, uint32_t ib) {
     const d3d9_inst *a = &g->insts[ia], *b = &g->insts[ib];
@@ -135,6 +148,7 @@ static int try_merge(bc_gen *g, uint32_t ia, uint32_t ib) {
     bool at_a = movable(g, ib, ia), at_b = !at_a && movable(g, ia, ib);
     if (!at_a && !at_b) return 0;
     d3d9_inst m, c, d;
+    literals before = {g->def_count, g->def_count ? g->defs[g->def_count - 1].used : 0};
     bool ok = combine(g, a, b, &m);
     for (unsigned k = 0; k < 2 && !ok && copy; k++) {
         if (as_op(g, a, b->op, k, &c)) ok = combine(g, &c, b, &m);
@@ -142,7 +156,10 @@ static int try_merge(bc_gen *g, uint32_t ia, uint32_t ib) {
     }
     if (!ok && a->op == D3D9_MOV && b->op == D3D9_MOV && as_op(g, a, D3D9_MUL, 0, &c) && as_op(g, b, D3D9_MUL, 0, &d))
         ok = combine(g, &c, &d, &m); /* copies of one register, negated in some lanes: one mul by +-1 */
-    if (!ok) return 0;
+    if (!ok) {
+        forget(g, &before);
+        return 0;
+    }
     uint32_t keep = at_a ? ia : ib, drop = at_a ? ib : ia;
     g->insts[keep] = m;
     memmove(&g->insts[drop], &g->insts[drop + 1], (g->inst_count - drop - 1) * sizeof *g->insts);

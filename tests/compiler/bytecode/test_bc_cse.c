@@ -68,7 +68,7 @@ static void offset_built_once(void) {
             "float4 main(float2 uv : TEXCOORD0) : COLOR0 {\n"
             "    return tex2D(S, uv + float2(Pos, 0) * Blur) + tex2D(S, uv - float2(Pos, 0) * Blur);\n}\n",
             "    ps_2_0\n"
-            "    def c2, 0, 1, 0, 0\n"
+            "    def c2, 0, 0, 0, 0\n"
             "    dcl t0.xy\n"
             "    dcl_2d s0\n"
             "    mov r0.x, c0.x\n"             /* float2(Pos, 0) */
@@ -91,7 +91,7 @@ static void sine_computed_once(void) {
     const char *first = strstr(text, "sincos");
     CHECK(first != NULL);
     CHECK(first && strstr(first + 1, "sincos") == NULL);
-    CHECK(strstr(text, "    mov r0.x, r1.y\n    mul r0.y, r1.y, c1.z\n") != NULL); /* a, and b = the same sine * 0.5 */
+    CHECK(strstr(text, "    mov r0.x, r1.y\n    mul r0.y, r0.x, c1.z\n") != NULL); /* a, and b = the same sine * 0.5 (c1.z) */
     CHECK(strstr(text, "(0 texture, 17 arithmetic)") != NULL);
     free(text);
 }
