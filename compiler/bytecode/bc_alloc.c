@@ -32,7 +32,7 @@ static bool componentwise(const d3d9_inst *in) {
 }
 
 /* The swizzle positions source k reads. */
-static unsigned read_positions(const bc_gen *g, const d3d9_inst *in, unsigned k) {
+unsigned hfx_bc_read_positions(const bc_gen *g, const d3d9_inst *in, unsigned k) {
     switch (in->op) {
     case D3D9_DP3: case D3D9_NRM: case D3D9_CRS: return 0x7;
     case D3D9_DP4: return 0xf;
@@ -60,7 +60,7 @@ static unsigned comps_of(uint8_t swizzle, unsigned positions) {
 }
 
 unsigned hfx_bc_read_comps(const bc_gen *g, const d3d9_inst *in, unsigned k) {
-    return comps_of(in->src[k].swizzle, read_positions(g, in, k));
+    return comps_of(in->src[k].swizzle, hfx_bc_read_positions(g, in, k));
 }
 
 static bool is_temp(unsigned type, unsigned num) { return type == D3D9_REG_TEMP && num < BC_MAX_TEMPS; }
@@ -333,7 +333,7 @@ static bool identity_map(const seg *s) {
 static void rewrite(const bc_gen *g, d3d9_inst *in, const segs *S, uint32_t i) {
     const seg *d = S->dst[i] >= 0 ? &S->s[S->dst[i]] : NULL;
     unsigned pos[4];
-    for (unsigned k = 0; k < in->src_count && k < 4; k++) pos[k] = read_positions(g, in, k);
+    for (unsigned k = 0; k < in->src_count && k < 4; k++) pos[k] = hfx_bc_read_positions(g, in, k);
     bool moved = d && !identity_map(d);
     if (moved) {
         if (componentwise(in))
@@ -349,7 +349,7 @@ static void rewrite(const bc_gen *g, d3d9_inst *in, const segs *S, uint32_t i) {
         unsigned mask = 0;
         for (unsigned c = 0; c < 4; c++) if (in->dst.mask >> c & 1) mask |= 1u << d->map[c];
         in->dst.mask = (uint8_t)mask;
-        for (unsigned k = 0; k < in->src_count && k < 4; k++) pos[k] = read_positions(g, in, k);
+        for (unsigned k = 0; k < in->src_count && k < 4; k++) pos[k] = hfx_bc_read_positions(g, in, k);
     }
     if (d) in->dst.num = d->phys;
     for (unsigned k = 0; k < in->src_count && k < 4; k++) {

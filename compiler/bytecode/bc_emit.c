@@ -240,6 +240,20 @@ static bc_def *new_def(bc_gen *g) {
 
 static bool same_float(float a, float b) { return memcmp(&a, &b, sizeof a) == 0; }
 
+bool hfx_bc_literal_fits(const bc_gen *g, const float *v, unsigned n) {
+    if (free_const((bc_gen *)g) >= 0) return true;
+    for (uint32_t d = 0; d < g->def_count; d++) {
+        unsigned k = 0;
+        for (; k < n; k++) {
+            unsigned c = 0;
+            while (c < g->defs[d].used && !same_float(g->defs[d].v[c], v[k])) c++;
+            if (c == g->defs[d].used) break;
+        }
+        if (k == n) return true;
+    }
+    return false;
+}
+
 /* A literal's components: taken from the def registers when one holds them all, else a new
  * register (scalars share registers, four to a register, as fxc packs them). */
 bc_val hfx_bc_const(bc_gen *g, const float *v, unsigned n) {

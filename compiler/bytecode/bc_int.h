@@ -102,6 +102,7 @@ bc_val hfx_bc_op2(bc_gen *g, uint16_t op, unsigned n, bc_val a, bc_val b);
 bc_val hfx_bc_op3(bc_gen *g, uint16_t op, unsigned n, bc_val a, bc_val b, bc_val c);
 bc_val hfx_bc_const(bc_gen *g, const float *v, unsigned n);    /* a def register's components */
 bc_val hfx_bc_constf(bc_gen *g, float v);
+bool hfx_bc_literal_fits(const bc_gen *g, const float *v, unsigned n); /* hfx_bc_const(v, n) cannot run out of registers */
 bool hfx_bc_can_sat(const bc_gen *g);                         /* the _sat modifier: pixel shaders and vs_3_0 */
 bool hfx_bc_is_zero(const bc_gen *g, const bc_val *v);        /* a def register's zeros */
 /* Writes value v into the components of target t (t.sw: the register component of each). */
@@ -179,11 +180,18 @@ void hfx_bc_dead_code(bc_gen *g);                            /* instructions who
 uint8_t *hfx_bc_liveness(bc_gen *g, bool *dead, uint32_t *span);
 uint32_t hfx_bc_temp_span(const bc_gen *g);                  /* 1 + the highest temporary number the code uses */
 unsigned hfx_bc_read_comps(const bc_gen *g, const d3d9_inst *in, unsigned k); /* components source k reads */
+unsigned hfx_bc_read_positions(const bc_gen *g, const d3d9_inst *in, unsigned k); /* swizzle positions it reads */
 bool hfx_bc_droppable(const d3d9_inst *in);                  /* only writes a temporary */
 uint32_t hfx_bc_renumber(bc_gen *g);                         /* temporaries packed by component; how many */
 void hfx_bc_prune_constants(bc_gen *g);                      /* parameters and defs nothing reads */
 /* A swizzle's unread positions as src_of leaves them (dot: repeating the last read one). */
 uint8_t hfx_bc_tidy(uint8_t sw, unsigned positions, bool dot);
+
+/* --- bc_cse.c --- */
+bool hfx_bc_cse(bc_gen *g);                                   /* values computed twice read once; true: code changed */
+
+/* --- bc_vec.c --- */
+void hfx_bc_vectorize(bc_gen *g);                             /* one op per component of a register: one op */
 
 /* --- bc_mad.c --- */
 void hfx_bc_fuse_mad(bc_gen *g);                              /* a mul's temporary added once: a mad */
@@ -192,6 +200,7 @@ void hfx_bc_fuse_mad(bc_gen *g);                              /* a mul's tempora
 /* Registers an instruction reads over the model's read ports copied into temporaries before it;
  * temps: the renumbered temporaries' count. Returns the count after. */
 uint32_t hfx_bc_read_ports(bc_gen *g, uint32_t temps);
+void hfx_bc_gather_literals(bc_gen *g);                       /* literals one instruction reads in one def */
 
 /* --- bc_sched.c --- */
 /* The temporaries packed (hfx_bc_renumber); when they are more than the model's, the code is

@@ -124,6 +124,60 @@ static bool fix_all(bc_gen *g, unsigned spare, bool reuse) {
     return changed;
 }
 
+static int def_index(const bc_gen *g, const d3d9_src *s) {
+    if (s->type != D3D9_REG_CONST || s->relative) return -1;
+    for (uint32_t d = 0; d < g->def_count; d++)
+        if (g->defs[d].num == s->num) return (int)d;
+    return -1;
+}
+
+/* An instruction reading literals from two def registers (`cmp r0, r1, c3.z, c2.w`: a 1 and a 0
+ * packed apart) reads them from one def holding both: no copy, no slot. Only when every constant
+ * it reads is a literal (a parameter would still need its port). */
+static void gather_one(bc_gen *g, d3d9_inst *in) {
+    unsigned count;
+    if (hfx_d3d9_port_excess(g->stage, g->model, in, &count) != D3D9_REG_CONST) return;
+    float v[4];
+    unsigned n = 0;
+    for (unsigned k = 0; k < in->src_count && k < 4; k++) {
+        if (!hfx_d3d9_port_source(in, g->model, k) || in->src[k].type != D3D9_REG_CONST) continue;
+        int d = def_index(g, &in->src[k]);
+        if (d < 0) return;
+        unsigned pos = hfx_bc_read_positions(g, in, k);
+        for (unsigned p = 0; p < 4; p++) {
+            if (!(pos >> p & 1)) continue;
+            float x = g->defs[d].v[in->src[k].swizzle >> (2 * p) & 3];
+            unsigned i = 0;
+            while (i < n && memcmp(&v[i], &x, sizeof x)) i++;
+            if (i == n && n == 4) return;
+            if (i == n) v[n++] = x;
+        }
+    }
+    if (!hfx_bc_literal_fits(g, v, n)) return;
+    bc_val lit = hfx_bc_const(g, v, n);
+    if (g->failed) return;
+    for (unsigned k = 0; k < in->src_count && k < 4; k++) {
+        d3d9_src *s = &in->src[k];
+        if (!hfx_d3d9_port_source(in, g->model, k) || s->type != D3D9_REG_CONST) continue;
+        const bc_def *d = &g->defs[def_index(g, s)];
+        unsigned pos = hfx_bc_read_positions(g, in, k);
+        uint8_t sw = s->swizzle;
+        for (unsigned p = 0; p < 4; p++) {
+            if (!(pos >> p & 1)) continue;
+            float x = d->v[s->swizzle >> (2 * p) & 3];
+            unsigned i = 0;
+            while (memcmp(&v[i], &x, sizeof x)) i++;
+            sw = (uint8_t)((sw & ~(3u << (2 * p))) | (unsigned)lit.sw[i] << (2 * p));
+        }
+        s->num = lit.num;
+        s->swizzle = hfx_bc_tidy(sw, pos, in->op == D3D9_DP3 || in->op == D3D9_DP4 || in->op == D3D9_DP2ADD);
+    }
+}
+
+void hfx_bc_gather_literals(bc_gen *g) {
+    for (uint32_t i = 0; i < g->inst_count && !g->failed; i++) gather_one(g, &g->insts[i]);
+}
+
 uint32_t hfx_bc_read_ports(bc_gen *g, uint32_t temps) {
     if (temps >= BC_MAX_TEMPS) return temps;
     uint32_t n = g->inst_count;

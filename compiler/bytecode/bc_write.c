@@ -89,6 +89,58 @@ static bool verify(bc_gen *g, const bc_model *m, const uint32_t *w, uint32_t n, 
     return true;
 }
 
+/* The code and the constants as they are before a pass the writer may take back. */
+typedef struct bc_saved { d3d9_inst *insts; uint32_t inst_count; bc_ctab *ctab; uint32_t ctab_count; bc_def *defs; uint32_t def_count; } bc_saved;
+
+static bool save(bc_gen *g, bc_saved *s) {
+    s->inst_count = g->inst_count;
+    s->ctab_count = g->ctab_count;
+    s->def_count = g->def_count;
+    s->insts = HFX_NEW_ARRAY(g->c->arena, d3d9_inst, g->inst_count ? g->inst_count : 1);
+    s->ctab = HFX_NEW_ARRAY(g->c->arena, bc_ctab, g->ctab_count ? g->ctab_count : 1);
+    s->defs = HFX_NEW_ARRAY(g->c->arena, bc_def, g->def_count ? g->def_count : 1);
+    if (!s->insts || !s->ctab || !s->defs) return false;
+    memcpy(s->insts, g->insts, g->inst_count * sizeof *g->insts);
+    memcpy(s->ctab, g->ctab, g->ctab_count * sizeof *g->ctab);
+    memcpy(s->defs, g->defs, g->def_count * sizeof *g->defs);
+    return true;
+}
+
+static void restore(bc_gen *g, const bc_saved *s) { /* the arrays only shrank since (their space stays) */
+    memcpy(g->insts, s->insts, s->inst_count * sizeof *g->insts);
+    memcpy(g->ctab, s->ctab, s->ctab_count * sizeof *g->ctab);
+    memcpy(g->defs, s->defs, s->def_count * sizeof *g->defs);
+    g->inst_count = s->inst_count;
+    g->ctab_count = s->ctab_count;
+    g->def_count = s->def_count;
+}
+
+/* Fewer instructions, as fxc writes them: copies sunk into their writers, per-component
+ * operations on one register as one (then a mad where a product is added), values computed twice
+ * read once (twice: a value read from elsewhere frees a copy the first pass kept). */
+static void shorten(bc_gen *g) {
+    hfx_bc_sink(g);
+    hfx_bc_vectorize(g);
+    hfx_bc_fuse_mad(g);
+    hfx_bc_dead_code(g);
+    for (int pass = 0; pass < 2 && hfx_bc_cse(g); pass++) hfx_bc_dead_code(g);
+}
+
+/* From the selected code to registers: copies folded, bones' indices merged, unread constants
+ * dropped, temporaries packed, read ports met. How many temporaries. */
+static uint32_t finish(bc_gen *g) {
+    hfx_bc_dead_code(g);
+    hfx_bc_sink(g);
+    hfx_bc_dead_code(g);
+    hfx_bc_merge_mova(g);
+    hfx_bc_gather_literals(g);
+    hfx_bc_prune_constants(g);
+    uint32_t temps = hfx_bc_allocate(g);
+    temps = hfx_bc_read_ports(g, temps);
+    hfx_bc_replicate_scalars(g);
+    return temps;
+}
+
 const uint32_t *hfx_bc_write(ir_ctx *c, const ir_shader *sh, const char *profile, uint32_t *count) {
     bc_gen g;
     memset(&g, 0, sizeof g);
@@ -114,13 +166,14 @@ const uint32_t *hfx_bc_write(ir_ctx *c, const ir_shader *sh, const char *profile
     hfx_bc_fold(&g);
     hfx_bc_fuse_mad(&g);
     hfx_bc_dead_code(&g);
-    hfx_bc_sink(&g);
-    hfx_bc_dead_code(&g);
-    hfx_bc_merge_mova(&g);
-    hfx_bc_prune_constants(&g);
-    uint32_t temps = hfx_bc_allocate(&g);
-    temps = hfx_bc_read_ports(&g, temps);
-    hfx_bc_replicate_scalars(&g);
+    bc_saved saved;
+    bool undo = save(&g, &saved);
+    if (undo) shorten(&g);
+    uint32_t temps = finish(&g);
+    if (undo && temps > hfx_bc_temp_limit(&g)) { /* values read once live longer: without, when they do not fit */
+        restore(&g, &saved);
+        temps = finish(&g);
+    }
     if (temps > hfx_bc_temp_limit(&g)) {
         hfx_error(c->diags, at, X_BC_TEMPS, "this shader needs %u temporary registers; %s has %u", temps, m->name,
                   hfx_bc_temp_limit(&g));

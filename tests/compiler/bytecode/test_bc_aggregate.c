@@ -106,7 +106,8 @@ static void ps_2_0_vector_write(void) {
 }
 
 /* A struct built from an initialiser list, copied and updated: its slots are views of the
- * input (no mov until the return gathers them), t.a += 1 the only arithmetic. */
+ * input (no mov until the return gathers them), t.a += 1 the only arithmetic; the gathering
+ * copies join it as adds of -0 (exact: x + -0 is x for every x, -0 included). */
 static void ps_2_0_struct_copy(void) {
     expect(
         "struct S { float a; float2 b; };\n"
@@ -114,14 +115,12 @@ static void ps_2_0_struct_copy(void) {
         "ps_2_0",
         "\n"
         "    ps_2_0\n"
-        "    def c0, 0, 1, 0, 0\n"
+        "    def c0, 0, 1, -0, 0\n"
         "    dcl t0\n"
-        "    add r0.z, t0.x, c0.y\n"
-        "    mov r0.xy, t0.yzzw\n"
-        "    mov r0.w, t0.x\n"
+        "    add r0, t0.yzxx, c0.zzyz\n" /* (v.y + -0, v.z + -0, v.x + 1, v.x + -0): the copies joined to the add */
         "    mov oC0, r0\n"
         "\n"
-        "// approximately 4 instruction slots used (0 texture, 4 arithmetic)\n");
+        "// approximately 2 instruction slots used (0 texture, 2 arithmetic)\n");
 }
 
 /* Colors[K] in a pixel shader (no a0 in ps_2_0): selects over the array's registers. ps_2_0
