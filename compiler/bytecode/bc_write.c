@@ -100,16 +100,17 @@ static bool save(bc_gen *g, bc_saved *s) {
     s->ctab = HFX_NEW_ARRAY(g->c->arena, bc_ctab, g->ctab_count ? g->ctab_count : 1);
     s->defs = HFX_NEW_ARRAY(g->c->arena, bc_def, g->def_count ? g->def_count : 1);
     if (!s->insts || !s->ctab || !s->defs) return false;
-    memcpy(s->insts, g->insts, g->inst_count * sizeof *g->insts);
-    memcpy(s->ctab, g->ctab, g->ctab_count * sizeof *g->ctab);
-    memcpy(s->defs, g->defs, g->def_count * sizeof *g->defs);
+    /* memcpy's pointers must not be NULL even for 0 bytes, and an empty array is */
+    if (g->inst_count) memcpy(s->insts, g->insts, g->inst_count * sizeof *g->insts);
+    if (g->ctab_count) memcpy(s->ctab, g->ctab, g->ctab_count * sizeof *g->ctab);
+    if (g->def_count) memcpy(s->defs, g->defs, g->def_count * sizeof *g->defs);
     return true;
 }
 
 static void restore(bc_gen *g, const bc_saved *s) { /* the arrays only shrank since (their space stays) */
-    memcpy(g->insts, s->insts, s->inst_count * sizeof *g->insts);
-    memcpy(g->ctab, s->ctab, s->ctab_count * sizeof *g->ctab);
-    memcpy(g->defs, s->defs, s->def_count * sizeof *g->defs);
+    if (s->inst_count) memcpy(g->insts, s->insts, s->inst_count * sizeof *g->insts);
+    if (s->ctab_count) memcpy(g->ctab, s->ctab, s->ctab_count * sizeof *g->ctab);
+    if (s->def_count) memcpy(g->defs, s->defs, s->def_count * sizeof *g->defs);
     g->inst_count = s->inst_count;
     g->ctab_count = s->ctab_count;
     g->def_count = s->def_count;
