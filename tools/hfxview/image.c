@@ -82,33 +82,6 @@ int hv_image_write_png(const hv_image *img, const char *path) {
     return 0;
 }
 
-int hv_image_checker(hv_image *img, int size, int cells, const unsigned char a[4], const unsigned char b[4]) {
-    memset(img, 0, sizeof *img);
-    img->width = img->height = size;
-    img->rgba = malloc((size_t)size * (size_t)size * 4);
-    if (!img->rgba) return -1;
-    int cell = size / (cells > 0 ? cells : 1);
-    if (cell < 1) cell = 1;
-    for (int y = 0; y < size; y++)
-        for (int x = 0; x < size; x++)
-            memcpy(img->rgba + ((size_t)y * size + x) * 4, ((x / cell + y / cell) & 1) ? b : a, 4);
-    return 0;
-}
-
-int hv_image_checker_3d(hv_image *img, int size, int cells, const unsigned char a[4], const unsigned char b[4]) {
-    memset(img, 0, sizeof *img);
-    img->width = img->height = img->depth = size;
-    img->rgba = malloc(hv_image_face_bytes(img));
-    if (!img->rgba) return -1;
-    int cell = size / (cells > 0 ? cells : 1);
-    if (cell < 1) cell = 1;
-    unsigned char *p = img->rgba;
-    for (int z = 0; z < size; z++)
-        for (int y = 0; y < size; y++)
-            for (int x = 0; x < size; x++, p += 4) memcpy(p, ((x / cell + y / cell + z / cell) & 1) ? b : a, 4);
-    return 0;
-}
-
 void hv_image_free(hv_image *img) {
     free(img->rgba); /* stbi_load's buffer comes from malloc too (STBI_MALLOC default) */
     memset(img, 0, sizeof *img);

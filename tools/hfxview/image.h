@@ -21,14 +21,11 @@ static inline int hv_image_face_count(const hv_image *img) { return img->faces >
 
 int hv_image_load(hv_image *img, const char *path, char *err, size_t errlen); /* 0, or -1 with err */
 int hv_image_write_png(const hv_image *img, const char *path);              /* 0, or -1 */
-/* The default textures' two colours (dark 0: light grey, 1: bluish dark grey) and the 2D one's
- * size and squares, shared by hfxview and the web page (web/wasm/draw.c) so that their pictures
- * of the same effect compare (scripts/corpus.sh compare). */
-enum { HV_CHECKER_SIZE = 256, HV_CHECKER_CELLS = 8 };
-static inline const unsigned char *hv_checker_colour(int dark) {
-    static const unsigned char light[4] = {235, 235, 235, 255}, grey[4] = {90, 90, 100, 255};
-    return dark ? grey : light;
-}
+/* The default texture (checker.c), the same in hfxview and the web page (web/wasm/draw.c) so
+ * that their pictures of an effect compare (scripts/corpus.sh compare): 256 x 256 texels of 8 x 8
+ * squares, light (235, 235, 235) at (0, 0) and bluish dark grey (90, 90, 100); a cube map has it
+ * on every face; volume: 32^3 texels of 4^3 cubes. 0, or -1 when memory ran out. */
+int hv_image_default(hv_image *img, int volume);
 /* A checkerboard of cells x cells squares in two colours: the default texture, visible at a glance. */
 int hv_image_checker(hv_image *img, int size, int cells, const unsigned char a[4], const unsigned char b[4]);
 /* A size^3 volume of cells^3 cubes in two colours: the default volume texture. */

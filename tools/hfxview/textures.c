@@ -36,11 +36,8 @@ static uint64_t make(const hv_texture_maker *m, const hv_image *img, tex_kind ki
 /* The default texture of each kind: a checkerboard (a checkered volume for 3D), never black. */
 static uint64_t checker(hv_textures *t, const hv_texture_maker *gl, tex_kind kind) {
     if (t->checker[kind]) return t->checker[kind];
-    const unsigned char *light = hv_checker_colour(0), *dark = hv_checker_colour(1);
     hv_image img;
-    int rc = kind == KIND_3D ? hv_image_checker_3d(&img, 32, 4, light, dark)
-                             : hv_image_checker(&img, HV_CHECKER_SIZE, HV_CHECKER_CELLS, light, dark);
-    if (rc != 0) return 0;
+    if (hv_image_default(&img, kind == KIND_3D) != 0) return 0;
     t->checker[kind] = track(t, make(gl, &img, kind));
     hv_image_free(&img);
     return t->checker[kind];

@@ -27,22 +27,14 @@ unsigned hfxw_texture_rgba(hfxw_session *s, const unsigned char *rgba, int width
     return tex;
 }
 
-/* hfxview's default textures (textures.c, image.h), texel for texel: an untextured effect still
- * shows its mapping, and the page's picture of it is hfxview's. The checker is also the cube's
- * every face; the volume is 32^3 texels of 4^3 cubes. */
+/* hfxview's default textures (image.h), texel for texel: an untextured effect still shows its
+ * mapping, and the page's picture of it is hfxview's. kind: 2, 6 (cube) or 3 (volume). */
 static unsigned make_default(hfxw_session *s, int kind) {
-    enum { N = HV_CHECKER_SIZE, CELL = HV_CHECKER_SIZE / HV_CHECKER_CELLS, V = 32, VCELL = 8 };
-    unsigned char *px = malloc(N * N * 4);
-    if (!px) return 0;
-    hv_image img = {kind == 3 ? V : N, kind == 3 ? V : N, kind == 3 ? V : 1, 1, px};
-    unsigned char *p = px;
-    for (int z = 0; z < img.depth; z++)
-        for (int y = 0; y < img.height; y++)
-            for (int x = 0; x < img.width; x++, p += 4)
-                memcpy(p, hv_checker_colour(kind == 3 ? (x / VCELL + y / VCELL + z / VCELL) & 1 : (x / CELL + y / CELL) & 1), 4);
+    hv_image img;
+    if (hv_image_default(&img, kind == 3) != 0) return 0;
     unsigned tex = kind == 3 ? hv_texture_3d(&s->gl, &img) : kind == 6 ? hv_texture_cube(&s->gl, &img)
-                                                                       : hfxw_texture_rgba(s, px, N, N);
-    free(px);
+                                                                       : hfxw_texture_rgba(s, img.rgba, img.width, img.height);
+    free(img.rgba);
     return tex;
 }
 
