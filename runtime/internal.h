@@ -204,6 +204,10 @@ struct hfx_effect {
 };
 
 /* A top-level parameter's value changed: a new version, and an entry in the change log. */
+/* The hfx_fx_dim (1D as 2D) of the first sampler that samples parameter `param` or is it, -1 when
+ * none: what hfx_param_texture_target tells the application where the back end does not choose. */
+int hfx_rt_texture_dim(const hfx_fx_effect *fx, uint32_t param);
+
 static inline void hfx_rt_mark_changed(hfx_effect *fx, uint32_t root) {
     fx->stamps[root] = ++*fx->stamp;
     fx->log[fx->log_len++ & fx->log_mask] = root;

@@ -282,19 +282,23 @@ int hfx_param_get_texture(const hfx_param *p, unsigned int *out) {
  * device (hfx.h): written out so the core needs no GL header. */
 enum { TARGET_2D = 0x0DE1, TARGET_3D = 0x806F, TARGET_CUBE = 0x8513 };
 
+int hfx_rt_texture_dim(const hfx_fx_effect *fx, uint32_t param) {
+    for (uint32_t i = 0; i < fx->sampler_count; i++) {
+        const hfx_fx_sampler *s = &fx->samplers[i];
+        if (s->texture_param == param || s->param == param) return s->dim == HFX_FX_DIM_1D ? HFX_FX_DIM_2D : (int)s->dim;
+    }
+    return -1;
+}
+
 /* The target the passes bind the texture on: the back end's answer where it binds textures
  * itself (GL); otherwise (Vulkan) the dimension its samplers are sampled with. */
 unsigned int hfx_param_texture_target(const hfx_param *p) {
     if (!p || !is_texture_like(info(p))) return 0;
     const hfx_backend *be = p->fx->dev->be;
     if (be->texture_target) return be->texture_target(p);
-    const hfx_fx_effect *fx = p->fx->sh->fx;
-    for (uint32_t i = 0; i < fx->sampler_count; i++) {
-        const hfx_fx_sampler *s = &fx->samplers[i];
-        if (s->texture_param != p->index && s->param != p->index) continue;
-        return s->dim == HFX_FX_DIM_CUBE ? TARGET_CUBE : s->dim == HFX_FX_DIM_3D ? TARGET_3D : TARGET_2D;
-    }
-    return 0;
+    int dim = hfx_rt_texture_dim(p->fx->sh->fx, p->index);
+    if (dim < 0) return 0;
+    return dim == HFX_FX_DIM_CUBE ? TARGET_CUBE : dim == HFX_FX_DIM_3D ? TARGET_3D : TARGET_2D;
 }
 
 /* Lookup and description. */

@@ -105,12 +105,6 @@ static int sampler_of(hfx_effect *fx, uint32_t index, VkSampler *out) {
     return hfx_vk_sampler(fx->dev, &d, out);
 }
 
-/* The dimension hfx_param_texture_target gives the application for texture parameter p. */
-static uint8_t told_dim(const hfx_param *p) {
-    unsigned target = hfx_param_texture_target(p);
-    return target == 0x8513u ? HFX_FX_DIM_CUBE : target == 0x806Fu ? HFX_FX_DIM_3D : HFX_FX_DIM_2D; /* GL's CUBE_MAP, 3D */
-}
-
 /* What each sampler binding holds now; *changed when that differs from the set's. */
 static int gather_textures(hfx_effect *fx, const hfx_fx_pass *fp, const vk_program *p, vk_bound *b, int *changed) {
     for (uint32_t k = 0; k < p->sampler_count; k++) {
@@ -120,9 +114,10 @@ static int gather_textures(hfx_effect *fx, const hfx_fx_pass *fp, const vk_progr
         VkImageView view = (VkImageView)(uintptr_t)fx->textures[t];
         VkImageLayout layout = (VkImageLayout)fx->texture_layouts[t];
         uint8_t dim = p->sampler_dims[k] == HFX_FX_DIM_1D ? HFX_FX_DIM_2D : p->sampler_dims[k];
-        /* The application's view is of the kind hfx_param_texture_target told it; a program that
-         * samples the texture as another kind reads what GL's empty target of that kind gives. */
-        if (view && told_dim(&fx->params[t]) != dim) view = VK_NULL_HANDLE;
+        /* The application's view is of the kind hfx_param_texture_target told it (the table made
+         * at load); a program that samples the texture as another kind reads what GL's empty
+         * target of that kind gives. */
+        if (view && fx->sh->vk->texture_dims[t] != (int8_t)dim) view = VK_NULL_HANDLE;
         if (!view) { /* none set: the default of the sampler's dimension, (0, 0, 0, 1) as D3D9 */
             view = fx->dev->vk->defaults[dim <= HFX_FX_DIM_CUBE ? dim : HFX_FX_DIM_2D].view;
             layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;

@@ -14,7 +14,13 @@ static int vk_shared_build(hfx_shared *sh, hfx_target target) {
     if (!sh->vk) return hfx_rt_fail(sh->dev, HFX_ERR_MEMORY, "out of memory");
     sh->vk->programs = calloc(fx->program_count ? fx->program_count : 1, sizeof *sh->vk->programs);
     sh->vk->samplers = calloc(fx->sampler_count ? fx->sampler_count : 1, sizeof *sh->vk->samplers);
-    if (!sh->vk->programs || !sh->vk->samplers) return hfx_rt_fail(sh->dev, HFX_ERR_MEMORY, "out of memory");
+    sh->vk->texture_dims = malloc(fx->param_count ? fx->param_count : 1);
+    if (!sh->vk->programs || !sh->vk->samplers || !sh->vk->texture_dims)
+        return hfx_rt_fail(sh->dev, HFX_ERR_MEMORY, "out of memory");
+    for (uint32_t i = 0; i < fx->param_count; i++) { /* no sampler names it (a pass's Texture[n]): 2D */
+        int dim = hfx_rt_texture_dim(fx, i);
+        sh->vk->texture_dims[i] = (int8_t)(dim < 0 ? HFX_FX_DIM_2D : dim);
+    }
     for (uint32_t i = 0; i < fx->program_count; i++) {
         sh->vk->program_count = i + 1;
         int rc = hfx_vk_program_build(sh, i);
@@ -32,6 +38,7 @@ static void vk_shared_release(hfx_shared *sh) {
     }
     free(sh->vk->programs);
     free(sh->vk->samplers);
+    free(sh->vk->texture_dims);
     free(sh->vk);
     sh->vk = NULL;
 }

@@ -181,6 +181,7 @@ struct hfx_vk_shared {
     vk_program *programs;
     uint32_t program_count;
     vk_fx_sampler *samplers;
+    int8_t *texture_dims;           /* per parameter: hfx_rt_texture_dim (2D when none), what the application was told */
 };
 
 /* Per instance, per program: the uniform block as this instance's values make it, and the
