@@ -204,10 +204,6 @@ struct hfx_effect {
 };
 
 /* A top-level parameter's value changed: a new version, and an entry in the change log. */
-/* The hfx_fx_dim (1D as 2D) of the first sampler that samples parameter `param` or is it, -1 when
- * none: what hfx_param_texture_target tells the application where the back end does not choose. */
-int hfx_rt_texture_dim(const hfx_fx_effect *fx, uint32_t param);
-
 static inline void hfx_rt_mark_changed(hfx_effect *fx, uint32_t root) {
     fx->stamps[root] = ++*fx->stamp;
     fx->log[fx->log_len++ & fx->log_mask] = root;
@@ -231,6 +227,9 @@ void hfx_sampler_desc_of(const hfx_fx_effect *fx, uint32_t sampler, hfx_sampler_
                          uint32_t *n);
 
 /* params.c */
+/* The hfx_fx_dim (1D as 2D) of the first sampler that samples parameter `param` or is it, -1 when
+ * none: what hfx_param_texture_target tells the application where the back end does not choose. */
+int hfx_rt_texture_dim(const hfx_fx_effect *fx, uint32_t param);
 void hfx_rt_param_changed(hfx_effect *fx, uint32_t root);
 uint32_t hfx_rt_param_accept(const hfx_fx_param *i);
 
