@@ -195,6 +195,7 @@ void hfx_bc_vectorize(bc_gen *g);                             /* one op per comp
 
 /* --- bc_mad.c --- */
 void hfx_bc_fuse_mad(bc_gen *g);                              /* a mul's temporary added once: a mad */
+void hfx_bc_nrm_into_adds(bc_gen *g);                         /* a nrm only adds read: dp3 / rsq and mads */
 
 /* --- bc_ports.c --- */
 /* Registers an instruction reads over the model's read ports copied into temporaries before it;

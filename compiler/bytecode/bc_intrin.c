@@ -70,11 +70,28 @@ static bc_val i_log(bc_gen *g, const ir_expr *e, bc_val *a) {
     bc_val l = hfx_bc_per_comp(g, D3D9_LOG, a[0], NULL);
     return hfx_bc_op2(g, D3D9_MUL, l.n, l, hfx_bc_constf(g, k));
 }
+/* Distinct components of x (with y's beside them when y): the instructions hfx_bc_per_comp writes. */
+static unsigned distinct_lanes(const bc_val *x, const bc_val *y) {
+    unsigned count = 0;
+    for (unsigned i = 0; i < x->n; i++) {
+        bool seen = false;
+        for (unsigned j = 0; j < i; j++) seen |= x->sw[j] == x->sw[i] && (!y || y->sw[j] == y->sw[i]);
+        count += !seen;
+    }
+    return count;
+}
+
+/* pow is a macro of three slots (log, mul, exp: |x|^y, as log reads |x| too), one component each;
+ * over a vector, fxc writes a log per component, one mul and an exp per component when that is
+ * shorter (three lights' specular: 7 slots, not 9). Each lane's operations are pow's own. */
 static bc_val i_pow(bc_gen *g, const ir_expr *e, bc_val *a) {
     (void)e;
     bc_val b = a[1];
     if (b.n < a[0].n) { for (unsigned i = b.n; i < 4; i++) b.sw[i] = b.sw[0]; b.n = a[0].n; }
-    return hfx_bc_per_comp(g, D3D9_POW, a[0], &b);
+    unsigned pows = distinct_lanes(&a[0], &b), logs = distinct_lanes(&a[0], NULL);
+    if (logs + 1 + a[0].n >= 3 * pows) return hfx_bc_per_comp(g, D3D9_POW, a[0], &b);
+    bc_val l = hfx_bc_per_comp(g, D3D9_LOG, a[0], NULL);
+    return hfx_bc_per_comp(g, D3D9_EXP, hfx_bc_op2(g, D3D9_MUL, l.n, l, b), NULL);
 }
 static bc_val i_saturate(bc_gen *g, const ir_expr *e, bc_val *a) {
     (void)e;

@@ -35,11 +35,23 @@ static bool movable_writer(const bc_gen *g, const d3d9_inst *in, unsigned to_typ
     }
 }
 
+/* Components of temporary T instruction `in` reads (0xf: read as an index). */
+static unsigned reads_temp(const bc_gen *g, const d3d9_inst *in, unsigned T) {
+    unsigned m = 0;
+    for (unsigned k = 0; k < in->src_count && k < 4; k++) {
+        const d3d9_src *s = &in->src[k];
+        if (s->relative && s->rel_type == D3D9_REG_TEMP && s->rel_num == T) m |= 0xf;
+        if (s->type == D3D9_REG_TEMP && s->num == T) m |= s->relative ? 0xf : hfx_bc_read_comps(g, in, k);
+    }
+    if (in->op == D3D9_TEXKILL && in->dst.type == D3D9_REG_TEMP && in->dst.num == T) m |= 0xf;
+    return m;
+}
+
 /* The temporary's components in mask are not read after instruction at (before being rewritten). */
 static bool dead_after(const bc_gen *g, uint32_t at, unsigned num, unsigned mask) {
     for (uint32_t i = at + 1; i < g->inst_count; i++) {
         const d3d9_inst *in = &g->insts[i];
-        if (reads(in, D3D9_REG_TEMP, num)) return false;
+        if (reads_temp(g, in, num) & mask) return false;
         if (writes(in, D3D9_REG_TEMP, num)) {
             mask &= ~(unsigned)in->dst.mask;
             if (!mask) return true;
@@ -62,15 +74,29 @@ static bool plain_copy(const d3d9_inst *m, int *from) {
     for (unsigned c = 0; c < 4; c++)
         if ((m->dst.mask >> c & 1) && (s->swizzle >> (2 * c) & 3) != c) identity = false;
     if (identity) return true;
+    /* one component copied into every lane of the mask (`mov oD1.xyz, r0.x`) */
     unsigned d = 0;
     while (d < 4 && !(m->dst.mask >> d & 1)) d++;
-    if (m->dst.mask != 1u << d) return false;
     *from = s->swizzle >> (2 * d) & 3;
+    for (unsigned c = d; c < 4; c++)
+        if ((m->dst.mask >> c & 1) && (s->swizzle >> (2 * c) & 3) != (unsigned)*from) return false;
     return true;
 }
 
-/* Writer w of component `from` writes component `to` instead: a replicated result (dp4, rcp...)
- * just changes its mask; a componentwise one reads its sources' component for `to` too. */
+/* A replicated result (dp4, rcp...) or a componentwise operation: one value in any lanes. */
+static bool replicable(const d3d9_inst *w) {
+    const d3d9_op_info *info = hfx_d3d9_op_find(w->op);
+    switch (w->op) {
+    case D3D9_DP3: case D3D9_DP4: case D3D9_MOV: case D3D9_ADD: case D3D9_MUL: case D3D9_MAD: case D3D9_MIN:
+    case D3D9_MAX: case D3D9_SLT: case D3D9_SGE: case D3D9_CMP: case D3D9_FRC: case D3D9_LRP: case D3D9_ABS:
+        return true;
+    default: return info && (info->flags & D3D9_OPF_SCALAR) && w->op != D3D9_SINCOS;
+    }
+}
+
+/* Writer w of component `from` writes the components of `to` instead: a replicated result (dp4,
+ * rcp...) just changes its mask; a componentwise one reads its sources' component for `from` in
+ * each of them. */
 static void move_component(d3d9_inst *w, unsigned from, unsigned to) {
     const d3d9_op_info *info = hfx_d3d9_op_find(w->op);
     bool replicated = w->op == D3D9_DP3 || w->op == D3D9_DP4 || w->op == D3D9_DP2ADD || (info->flags & D3D9_OPF_SCALAR);
@@ -79,7 +105,7 @@ static void move_component(d3d9_inst *w, unsigned from, unsigned to) {
             unsigned c = w->src[i].swizzle >> (2 * from) & 3;
             w->src[i].swizzle = (uint8_t)(c * 0x55u);
         }
-    w->dst.mask = (uint8_t)(1u << to);
+    w->dst.mask = (uint8_t)to;
 }
 
 /* nrm rT.xyz, S whose value only a copy into output X reads: dp3 rT.x, S, S / rsq rT.x, rT.x /
@@ -114,6 +140,33 @@ static bool expand_nrm(bc_gen *g, uint32_t w, uint32_t at) {
     return true;
 }
 
+/* The copy at `at` of temporary T into (to, num): the instructions back to `first` that computed
+ * what it copies, found walking back (what they read of T computed there too: an accumulation
+ * `mul T, ...` / `mad T, ..., T` is renamed whole). 0 writers: not possible. */
+static uint32_t chain(const bc_gen *g, uint32_t at, unsigned T, unsigned mask, uint32_t *writers, uint32_t *first) {
+    const d3d9_inst *m = &g->insts[at];
+    unsigned to = m->dst.type, need = mask;
+    uint32_t n = 0;
+    for (uint32_t i = at; i-- > 0 && need;) {
+        const d3d9_inst *in = &g->insts[i];
+        if (flow(in)) return 0; /* writers in another block: not this copy's */
+        bool w = writes(in, D3D9_REG_TEMP, T);
+        unsigned r = reads_temp(g, in, T);
+        if (r && to != D3D9_REG_TEMP) return 0; /* outputs are write only */
+        if (w && ((in->dst.mask & ~mask) || !movable_writer(g, in, to) || n == 64)) return 0;
+        if (w && !(in->dst.mask & need)) return 0; /* a dead write of components a later writer replaces: leave it */
+        if (w) writers[n++] = i;
+        if (w) need &= ~(unsigned)in->dst.mask;
+        need |= r;
+        /* the target must be left alone while the writers run (the first of them may read it:
+         * it reads before it writes) */
+        if ((writes(in, to, m->dst.num) && !w && (in->dst.mask & m->dst.mask)) || (reads(in, to, m->dst.num) && need))
+            return 0;
+        *first = i;
+    }
+    return need ? 0 : n;
+}
+
 static bool try_sink(bc_gen *g, uint32_t at) {
     d3d9_inst *m = &g->insts[at];
     int from;
@@ -123,36 +176,29 @@ static bool try_sink(bc_gen *g, uint32_t at) {
     if (to == D3D9_REG_TEMP && m->dst.num == T) return false;
     if (!dead_after(g, at, T, mask)) return false;
     unsigned target_mask = m->dst.mask;
-    uint32_t writers[64], n = 0;
-    unsigned remaining = mask;
-    for (uint32_t i = at; i-- > 0 && remaining;) {
-        d3d9_inst *in = &g->insts[i];
-        if (flow(in)) return false; /* writers in another block: not this copy's */
-        bool w = writes(in, D3D9_REG_TEMP, T);
-        if (reads(in, D3D9_REG_TEMP, T)) return false;
-        /* the target must be left alone while the writers run (the first writer may read it:
-         * it reads before it writes) */
-        bool completes = w && !(remaining & ~(unsigned)in->dst.mask);
-        if ((writes(in, to, m->dst.num) && !w && (in->dst.mask & target_mask)) || (reads(in, to, m->dst.num) && !completes))
-            return false;
-        if (!w) continue;
-        if ((in->dst.mask & ~mask) || !movable_writer(g, in, to) || n == 64) return false;
-        if (in->dst.mask & remaining) writers[n++] = i;
-        else return false; /* a dead write of components a later writer replaces: leave it */
-        remaining &= ~(unsigned)in->dst.mask;
-    }
-    if (remaining || !n || (from >= 0 && n != 1)) return false;
+    uint32_t writers[64], first = at, n = chain(g, at, T, mask, writers, &first);
+    if (!n) return false;
+    bool reread = false;
+    for (uint32_t i = first; i < at; i++) reread |= reads_temp(g, &g->insts[i], T) != 0;
     if (g->insts[writers[0]].op == D3D9_NRM && to != D3D9_REG_TEMP)
         return n == 1 && from < 0 && expand_nrm(g, writers[0], at);
     if (from >= 0) {
-        const d3d9_op_info *info = hfx_d3d9_op_find(g->insts[writers[0]].op);
-        if (!info || (info->flags & (D3D9_OPF_TEX | D3D9_OPF_MATRIX)) || g->insts[writers[0]].op == D3D9_DP2ADD) return false;
-        move_component(&g->insts[writers[0]], (unsigned)from, __builtin_ctz(target_mask));
+        d3d9_inst *w = &g->insts[writers[0]];
+        const d3d9_op_info *info = hfx_d3d9_op_find(w->op);
+        if (n != 1 || reread || !info || (info->flags & (D3D9_OPF_TEX | D3D9_OPF_MATRIX)) || w->op == D3D9_DP2ADD) return false;
+        if ((target_mask & (target_mask - 1)) && !replicable(w)) return false;
+        move_component(w, (unsigned)from, target_mask);
     }
     for (uint32_t k = 0; k < n; k++) {
         g->insts[writers[k]].dst.type = (uint8_t)to;
         g->insts[writers[k]].dst.num = m->dst.num;
     }
+    for (uint32_t i = first; i < at && reread; i++)
+        for (unsigned k = 0; k < g->insts[i].src_count && k < 4; k++)
+            if (g->insts[i].src[k].type == D3D9_REG_TEMP && g->insts[i].src[k].num == T) {
+                g->insts[i].src[k].type = (uint8_t)to;
+                g->insts[i].src[k].num = m->dst.num;
+            }
     memmove(m, m + 1, (g->inst_count - at - 1) * sizeof *m);
     g->inst_count--;
     return true;

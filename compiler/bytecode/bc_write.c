@@ -123,6 +123,7 @@ static void shorten(bc_gen *g) {
     hfx_bc_sink(g);
     hfx_bc_vectorize(g);
     hfx_bc_fuse_mad(g);
+    hfx_bc_nrm_into_adds(g);
     hfx_bc_dead_code(g);
     for (int pass = 0; pass < 2 && hfx_bc_cse(g); pass++) hfx_bc_dead_code(g);
 }
@@ -137,6 +138,7 @@ static uint32_t finish(bc_gen *g) {
     hfx_bc_gather_literals(g);
     hfx_bc_prune_constants(g);
     uint32_t temps = hfx_bc_allocate(g);
+    hfx_bc_vectorize(g);
     temps = hfx_bc_read_ports(g, temps);
     hfx_bc_replicate_scalars(g);
     return temps;

@@ -29,7 +29,9 @@ static void expect(const char *src, const char *profile, const char *rest) {
 /* v[K] for a parameter K: a chain of selects, element k taken where K - (k - 0.5) >= 0, the last
  * that holds winning: add r0.y = K - 0.5, cmp picks v.y over v.x, then v.z, v.w (2 slots each);
  * the float result is returned splatted. K (c0) and the def (c1) are two c registers, one more
- * than ps_2_0's read port: K is copied into r0.x once, and the three adds read it there. */
+ * than ps_2_0's read port: K is copied into r0.x once, and the three adds read it there. Once
+ * registers are given, the first two adds (K - 0.5 into r0.y, K - 1.5 into r0.z, nothing between
+ * reading r0.z) are one add: `add r0.yz, r0.x, c1.xxyw`. */
 static void ps_2_0_vector_read(void) {
     expect(
         "int K;\n"
@@ -51,15 +53,14 @@ static void ps_2_0_vector_read(void) {
         "    def c1, -0.5, -1.5, -2.5, 0\n"
         "    dcl t0\n"
         "    mov r0.x, c0.x\n"
-        "    add r0.y, r0.x, c1.x\n"
+        "    add r0.yz, r0.x, c1.xxyw\n"
         "    cmp r0.y, r0.y, t0.y, t0.x\n"
-        "    add r0.z, r0.x, c1.y\n"
         "    cmp r0.y, r0.z, t0.z, r0.y\n"
         "    add r0.z, r0.x, c1.z\n"
         "    cmp r0.y, r0.z, t0.w, r0.y\n"
         "    mov oC0, r0.y\n"
         "\n"
-        "// approximately 8 instruction slots used (0 texture, 8 arithmetic)\n");
+        "// approximately 7 instruction slots used (0 texture, 7 arithmetic)\n");
 }
 
 /* a[K] = 0.5 on a copy of an input: each component written under K == k, tested as

@@ -38,7 +38,7 @@ static void code_is(const char *src, const char *profile, const char *want) {
 }
 
 /* Four scalars live at once share one register, one component each (one register per value
- * would take four). 8 slots: four dp4 and the four products, written straight to oPos. */
+ * would take four). 5 slots: four dp4 and the four products as one mul straight to oPos. */
 static void scalars_share_a_register(void) {
     code_is("float4 A, B, C, D;\n"
             "float4 main(float4 p : POSITION) : POSITION {\n"
@@ -51,11 +51,10 @@ static void scalars_share_a_register(void) {
             "    dp4 r0.y, v0, c1\n"         /* b: r0.x is still live, b takes the next free component */
             "    dp4 r0.z, v0, c2\n"
             "    dp4 r0.w, v0, c3\n"
-            "    mul oPos.x, r0.x, r0.y\n"
-            "    mul oPos.y, r0.y, r0.z\n"
-            "    mul oPos.z, r0.z, r0.w\n"
-            "    mul oPos.w, r0.w, r0.x\n"
-            "\n// approximately 8 instruction slots used\n");
+            /* the four products, once the scalars share r0, are one mul (bc_vec.c after the
+             * allocation): lane x r0.x * r0.y, y r0.y * r0.z, z r0.z * r0.w, w r0.w * r0.x */
+            "    mul oPos, r0, r0.yzwx\n"
+            "\n// approximately 5 instruction slots used\n");
 }
 
 /* c.rgb *= t.rgb on a copy of an input: the copy takes only the component the product does not
@@ -250,6 +249,52 @@ static void loop_carried_value(void) {
     hfx_arena_free(&arena);
 }
 
+/* A scalar copied into three components of an output (`float4(s, s, s, 1)`): the mul computing
+ * s writes oD0.xyz itself, each lane reading the component it read for s (c1.x), not a
+ * temporary and a `mov oD0.xyz, r0.x`. 4 slots. */
+static void scalar_splat_written_in_place(void) {
+    code_is("float4 A, B;\n"
+            "float4 main(float4 p : POSITION, out float4 d : COLOR0) : POSITION {\n"
+            "    float s = dot(p, A) * B.x;\n    d = float4(s, s, s, 1);\n    return p;\n}\n",
+            "vs_2_0",
+            "    vs_2_0\n"
+            "    def c2, 0, 1, 0, 0\n"
+            "    dcl_position v0\n"
+            "    dp4 r0.x, v0, c0\n"         /* dot(p, A) */
+            "    mul oD0.xyz, r0.x, c1.x\n"  /* times B.x, into the three lanes */
+            "    mov oD0.w, c2.y\n"          /* the 1 */
+            "    mov oPos, v0\n"
+            "\n// approximately 4 instruction slots used\n");
+}
+
+/* A skinned position (`p.xyz = mul(p, s)`, s a float4x3 variable, row_major rows c0..c3 times
+ * w.x) is a mul / mad chain accumulating into one temporary; the copy into p.xyz (whose w is
+ * v0.w) is folded into the whole chain, each mad reading the running sum where p is: 13 slots,
+ * no `mov r1.xyz, r0`. */
+static void accumulation_written_in_place(void) {
+    code_is("row_major float4x3 B[2];\nfloat4x4 W;\n"
+            "float4 main(float4 p : POSITION, float4 w : BLENDWEIGHT) : POSITION {\n"
+            "    float4x3 s = B[0] * w.x;\n    p.xyz = mul(p, s);\n    return mul(p, W);\n}\n",
+            "vs_2_0",
+            "    vs_2_0\n"
+            "    dcl_position v0\n"
+            "    dcl_blendweight v1\n"
+            "    mul r0.xyz, c0, v1.x\n"     /* s's rows: B[0] times w.x */
+            "    mul r1.xyz, c1, v1.x\n"
+            "    mul r2.xyz, c2, v1.x\n"
+            "    mul r3.xyz, c3, v1.x\n"
+            "    mul r0.xyz, v0.x, r0\n"     /* p.x s[0] + p.y s[1] + p.z s[2] + p.w s[3], into p.xyz */
+            "    mad r0.xyz, v0.y, r1, r0\n"
+            "    mad r0.xyz, v0.z, r2, r0\n"
+            "    mad r0.xyz, v0.w, r3, r0\n"
+            "    mov r0.w, v0.w\n"
+            "    dp4 oPos.x, r0, c8\n"       /* W: c8..c11 (B takes c0..c7) */
+            "    dp4 oPos.y, r0, c9\n"
+            "    dp4 oPos.z, r0, c10\n"
+            "    dp4 oPos.w, r0, c11\n"
+            "\n// approximately 13 instruction slots used\n");
+}
+
 int main(void) {
     RUN(scalars_share_a_register);
     RUN(copy_on_write_takes_only_what_is_kept);
@@ -260,5 +305,7 @@ int main(void) {
     RUN(products_computed_where_read);
     RUN(products_added_as_mads);
     RUN(reciprocals_of_literals_and_scalars);
+    RUN(scalar_splat_written_in_place);
+    RUN(accumulation_written_in_place);
     return test_summary();
 }

@@ -158,11 +158,62 @@ static void literals_from_one_def(void) {
     hfx_arena_free(&arena);
 }
 
+/* pow of a float3 (fxc's three lights' specular): pow is a three-slot macro per component (9
+ * slots); a log per component, one mul by the exponents and an exp per component are 7. */
+static void vector_pow_by_log_and_exp(void) {
+    code_is("float3 E;\n"
+            "float4 main(float3 b : TEXCOORD0) : COLOR0 { return float4(pow(b, E), 1); }\n",
+            "    ps_2_0\n"
+            "    def c1, 1, 0, 0, 0\n"
+            "    dcl t0.xyz\n"
+            "    log r0.x, t0.x\n"          /* log2 |b| per component */
+            "    log r0.y, t0.y\n"
+            "    log r0.z, t0.z\n"
+            "    mul r0.xyz, r0, c0\n"      /* times E (c0) */
+            "    exp r1.x, r0.x\n"          /* 2^(E log2 |b|) = |b|^E */
+            "    exp r1.y, r0.y\n"
+            "    exp r1.z, r0.z\n"
+            "    mov r1.w, c1.x\n"          /* the 1 */
+            "    mov oC0, r1\n"
+            "\n// approximately 9 instruction slots used (0 texture, 9 arithmetic)\n");
+}
+
+/* A normalized vector only adds read (v = normalize(E - p), then v - L0, v - L1: half vectors):
+ * nrm's mul by rsq(dot(x, x)) goes into the adds as mads, as fxc writes it: dp3 / rsq, then
+ * mad r1 = (E - p) * rsq - L0 (c1) and the same - L1 (c2). 15 slots (the nrm and two adds were
+ * 5 of 16). */
+static void normalize_folded_into_adds(void) {
+    code_is("float3 E, L0, L1;\n"
+            "float4 main(float3 p : TEXCOORD0, float3 n : TEXCOORD1) : COLOR0 {\n"
+            "    float3 v = normalize(E - p);\n"
+            "    float3 h0 = normalize(v - L0);\n"
+            "    float3 h1 = normalize(v - L1);\n"
+            "    return float4(dot(h0, n), dot(h1, n), 0, 1);\n}\n",
+            "    ps_2_0\n"
+            "    def c3, 0, 1, 0, 0\n"
+            "    dcl t0.xyz\n"
+            "    dcl t1.xyz\n"
+            "    add r0.xyz, c0, -t0\n"     /* E - p */
+            "    dp3 r0.w, r0, r0\n"        /* |E - p|^2 */
+            "    rsq r0.w, r0.w\n"
+            "    mad r1.xyz, r0, r0.w, -c1\n" /* v - L0 */
+            "    nrm r2.xyz, r1\n"          /* h0: read by a dp3, kept as nrm */
+            "    mad r0.xyz, r0, r0.w, -c2\n" /* v - L1 */
+            "    nrm r1.xyz, r0\n"
+            "    dp3 r0.x, r2, t1\n"
+            "    dp3 r0.y, r1, t1\n"
+            "    mov r0.zw, c3.xyxy\n"      /* (0, 1) */
+            "    mov oC0, r0\n"
+            "\n// approximately 15 instruction slots used (0 texture, 15 arithmetic)\n");
+}
+
 int main(void) {
     RUN(negated_copies_read_in_place);
     RUN(offset_built_once);
     RUN(sine_computed_once);
     RUN(equal_sides_selected_once);
     RUN(literals_from_one_def);
+    RUN(vector_pow_by_log_and_exp);
+    RUN(normalize_folded_into_adds);
     return test_summary();
 }

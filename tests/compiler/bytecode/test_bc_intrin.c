@@ -194,6 +194,18 @@ static void exponentials(void) {
     NEAR4(o, 4, 7, -1, 1, 1e-6); /* e^240 overflows: 1 - 2 / (inf + 1) is still 1 */
 }
 
+/* pow over a vector is written as a log per component, one mul, an exp per component (fxc's
+ * shorter form; bc_intrin.c): |x|^y in each lane. (2, -3, 0.5, 0) ^ (3, 2, 2, 2) = (8, 9, 0.25, 0):
+ * -3 as |-3| (D3D9's pow and log read |x|), 0 as 2^(2 * -inf) = 0. Both stages. */
+static void vector_powers(void) {
+    float o[4];
+    const float x[4] = {2, -3, 0.5f, 0};
+    for (int stage = 0; stage < 2; stage++) {
+        (stage ? vs : ps)("return pow(x, float4(3, 2, 2, 2));", x, o);
+        NEAR4(o, 8, 9, 0.25, 0, 1e-5);
+    }
+}
+
 /* trunc toward zero; modf keeps the sign in both parts (-2.5: -0.5 and -2); frexp: 6 = 0.75 *
  * 2^3, 4 = 0.5 * 2^3, -0.25 = -0.5 * 2^-1, 0 gives 0 and 0. */
 static void parts_of_numbers(void) {
@@ -352,6 +364,7 @@ int main(void) {
     RUN(inverse_sine_cosine);
     RUN(inverse_tangent);
     RUN(exponentials);
+    RUN(vector_powers);
     RUN(parts_of_numbers);
     RUN(lighting_helpers);
     RUN(determinants);
