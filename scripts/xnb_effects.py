@@ -78,7 +78,7 @@ def main():
             os.remove(path)
             out = beside_source(path)
             if blob is not None and not os.path.exists(out[:-4] + ".fx"):
-                why = "no source " + out[:-4] + ".fx"
+                blob, why = None, "no source " + out[:-4] + ".fx"
             if blob is None:
                 if why != "not an effect":
                     print(f"{path}: {why}")
