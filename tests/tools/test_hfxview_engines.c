@@ -227,12 +227,12 @@ static void near_plane_fits(void) {
 /* A mirror plane's normal (DigitalRise's ReflectionNormal) is the world's up; an animation's tween
  * its end; Riemer's cloud cover his 1.1; a wave's Frequency and a Length (divisors) 1, an
  * Amplitude 0.05; half the viewport (MomoXna's gViewHalfDim : VIEWPORT_HALF_DIMENSION) 64 x 64;
- * values the effect gives are kept. */
+ * a billboard's Width and Height 1; a Depth to clear to 1; values the effect gives are kept. */
 static void normals_tweens_waves_half_sizes(void) {
     hfx_effect *fx = load("float3 ReflectionNormal;\nfloat4 PlaneNormal = float4(1, 0, 0, 0);\nfloat tween4;\n"
                           "float xOvercast;\nfloat Frequency;\nfloat ClothLength;\nfloat Amplitude;\n"
                           "float2 gViewHalfDim : VIEWPORT_HALF_DIMENSION;\nfloat2 HalfScreenSize;\n"
-                          "float2 ViewportHalf = float2(3, 4);\n");
+                          "float2 ViewportHalf = float2(3, 4);\nfloat _width;\nfloat _height;\nfloat Depth;\n");
     if (!fx) return;
     hv_bind_scene(fx, &scene);
     expect(fx, "ReflectionNormal", (const float[3]){0, 1, 0}, 3);
@@ -245,6 +245,9 @@ static void normals_tweens_waves_half_sizes(void) {
     expect(fx, "gViewHalfDim", (const float[2]){64, 64}, 2);
     expect(fx, "HalfScreenSize", (const float[2]){64, 64}, 2);
     expect(fx, "ViewportHalf", (const float[2]){64, 64}, 2); /* follows the viewport like ViewportSize */
+    expect(fx, "_width", (const float[1]){1}, 1); /* DigitalRise's billboard size */
+    expect(fx, "_height", (const float[1]){1}, 1);
+    expect(fx, "Depth", (const float[1]){1}, 1); /* ClearGBuffer's: the far plane, as Clear's 1 */
     CHECK(hv_effect_wants_pixels(fx)); /* a half viewport and no matrix: the effect maps pixels */
     hfx_effect_destroy(fx);
 }

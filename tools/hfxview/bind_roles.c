@@ -97,6 +97,8 @@ static const struct { const char *stem; role r; float v; } roles[] = {
     {"samplecount", R_SCALAR, 16}, {"stepsize", R_SCALAR, 1.0f / 32},
     {"wavelength", R_SCALAR, 1}, {"wavelengths", R_SCALAR, 1}, /* divisors: waves of one unit */
     {"waveheight", R_SCALAR, 0.05f}, {"waveheights", R_SCALAR, 0.05f},
+    {"width", R_SCALAR, 1}, {"height", R_SCALAR, 1}, /* a billboard's or quad's size (DigitalRise's _width) */
+    {"depth", R_SCALAR, 1}, {"cleardepth", R_SCALAR, 1}, /* a depth to clear to: the far plane, as Clear's 1 */
     {"tween", R_SCALAR, 1}, /* an animation's interpolation factor: its end, the whole effect */
     {"overcast", R_SCALAR, 1.1f}, /* Riemer's XNA tutorials' clouds: pow(noise, xOvercast), his 1.1 */
     {"scenenodetype", R_SCALAR, 1}, /* DigitalRise: 1 a static object (G-buffer depth positive), the one mesh */
