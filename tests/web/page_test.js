@@ -296,7 +296,7 @@ async function includeFolders(page) {
 // post-processing effect that maps pixel positions through ViewportSize itself (DigitalRise's
 // ScreenToProjection) gets the picture's rectangle in pixels, uv 0..1 from the top left; its
 // pixel shader writes uv, so pixel (128, 384) of 512 x 512 reads (0.25, 0.75) (within 2/255
-// whether the centre is at 128 or 128.5), the top-left corner about 0. On the sphere the same
+// whether the centre is at 128 or 128.5), pixel (4, 4) near the top left 4.25 / 512. On the sphere the same
 // effect would cover a dot at the top left. The next effect, with a camera, gets the sphere back.
 const SCREEN_PASS = `float2 ViewportSize;
 void VS(float4 p : POSITION, float2 uv : TEXCOORD0, out float4 o : POSITION, out float2 t : TEXCOORD0) {
@@ -314,7 +314,7 @@ async function screenMesh(page) {
     window.HFX_EFFECTS.mesh = {"screen.fx": screen, "flat.fx": flat, "colour.fxh": "#define TINT float4(0.25, 0.5, 0.75, 1.0)\n"};
     const a = p.selectEffect("mesh", "screen.fx");
     p.renderNow();
-    const post = {ok: a.ok, probe: p.pixel(128, 384), corner: p.pixel(0, 0)};
+    const post = {ok: a.ok, probe: p.pixel(128, 384), corner: p.pixel(4, 4)};
     const b = p.selectEffect("mesh", "flat.fx");
     p.setCamera(0, 60, 3);
     p.renderNow();
@@ -322,7 +322,8 @@ async function screenMesh(page) {
     return {post, flat: {ok: b.ok, centre: p.pixel(256, 256), corner: p.pixel(0, 0)}};
   }, {screen: SCREEN_PASS, flat: INCLUDING});
   check(r.post.ok && near(r.post.probe, [0.25, 0.75, 0, 1]), `auto mesh, ViewportSize pass: pixel (128, 384) ${show(r.post.probe)} expected ${showWant([0.25, 0.75, 0, 1])}`);
-  check(near(r.post.corner, [0, 0, 0, 1]), `auto mesh, ViewportSize pass: corner ${show(r.post.corner)} expected (0, 0, 0, 255)`);
+  const corner = [4.25 / 512, 4.25 / 512, 0, 1];
+  check(near(r.post.corner, corner), `auto mesh, ViewportSize pass: pixel (4, 4) ${show(r.post.corner)} expected ${showWant(corner)}`);
   check(r.flat.ok && near(r.flat.centre, TINT), `auto mesh, then an effect with a camera: the sphere's centre ${show(r.flat.centre)} is TINT ${showWant(TINT)}`);
   check(!near(r.flat.corner, TINT), `auto mesh, then an effect with a camera: the corner ${show(r.flat.corner)} is not covered`);
 }
