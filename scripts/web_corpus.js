@@ -5,7 +5,7 @@
 // goes into the page's file system with the paths it has there, and the page searches the
 // include folders scripts/corpus.sh gives hfxview (every folder above the effect's, up to the
 // repository's root: a game's working folder). One PNG per technique, and a line per technique:
-//   ok|FAIL effect#technique [first error]
+//   ok|FAIL<tab>effect#technique[<tab>first error]   (tabs: paths may hold spaces)
 //   node scripts/web_corpus.js --site SITE --corpus DIR --list FILE --out DIR
 // FILE holds "effect#technique" lines (effect relative to DIR); PNGs go to
 // OUT/<effect with / as _>.<technique>.web.png. Exit 77 when Chromium cannot start.
@@ -104,16 +104,16 @@ async function main() {
     const [effect, t] = [line.slice(0, line.lastIndexOf("#")), Number(line.slice(line.lastIndexOf("#") + 1))];
     if (effect !== current) (current = effect), (error = await open(page, effect).catch((e) => String(e.message)));
     if (error) {
-      console.log(`FAIL ${line} ${error.split("\n")[0]}`);
+      console.log(`FAIL\t${line}\t${error.split("\n")[0]}`);
       continue;
     }
     const frame = await draw(page, t).catch(() => null);
     if (!frame) {
-      console.log(`FAIL ${line} the page failed to draw`);
+      console.log(`FAIL\t${line}\tthe page failed to draw`);
       continue;
     }
     writePng(frame, path.join(out, `${effect.replace(/\//g, "_")}.${t}.web.png`));
-    console.log(`ok   ${line}`);
+    console.log(`ok\t${line}`);
   }
   await browser.close();
 }
