@@ -388,7 +388,8 @@ Object.assign(page, {
   editorText: () => editor.getText(),
   // The compiler alone on the current effect, `rounds` times after as many warm-up compiles:
   // the mean in ms (hfx_web.c's hfxw_compile_bench; bench/bench_web_compile natively).
-  compileBench: (rounds) => call("hfxw_compile_bench", "number", ["string", "number"], [SRC + state.main, rounds]),
+  compileBench: (rounds) => call("hfxw_compile_bench", "number", ["string", "string", "number"],
+    [SRC + state.main, (state.include || includeFolders(state.main)).join("\n"), rounds]),
   cursor() {
     const st = editor.view.state, at = st.selection.main.head, line = st.doc.lineAt(at);
     return {line: line.number, col: at - line.from + 1};

@@ -13,6 +13,7 @@ typedef hv_tex_kind tex_kind;
 #define KIND_CUBE HV_TEX_CUBE
 #define KIND_3D HV_TEX_3D
 
+/* GL's textures: ids to delete at release. */
 static uint64_t gl_make(void *ctx, const hv_image *img, hv_tex_kind kind) {
     const hv_gl *gl = ctx;
     if (kind == KIND_CUBE) return hv_texture_cube(gl, img);
@@ -47,6 +48,7 @@ static uint64_t from_file(hv_textures *t, const hv_texture_maker *gl, const char
     return id;
 }
 
+/* name in the effect's folder, then in each -I folder (as the effect's #includes are found). */
 static int find_file(const hv_options *o, const char *name, char *out, size_t outlen) {
     if (name[0] == '/') return snprintf(out, outlen, "%s", name), access(out, R_OK) == 0;
     const char *slash = strrchr(o->input, '/');
