@@ -121,7 +121,10 @@ static void successors(const bc_gen *g, uint32_t (*succ)[2]) {
 }
 
 /* Unread swizzle positions as bc_emit.c's src_of leaves them (the read value when they all
- * read one, else their own component; dot products repeat their last). */
+ * read one, else their own component; dot products repeat their last). One position read (rcp,
+ * rsq, exp, log, pow, dp2add's addend: D3D9 wants a replicate swizzle there) is replicated, in
+ * the dot mode too: otherwise an x read was written as the identity, `rsq r1.x, r1`, which the
+ * reader and MojoShader refuse. */
 uint8_t hfx_bc_tidy(uint8_t sw, unsigned positions, bool dot) {
     uint8_t c[4];
     int first = -1, last = -1;
@@ -133,6 +136,7 @@ uint8_t hfx_bc_tidy(uint8_t sw, unsigned positions, bool dot) {
         ident &= c[p] == p;
         last = (int)p;
     }
+    if (first == last) dot = false;
     for (unsigned p = 0; p < 4 && first >= 0; p++)
         if (!(positions >> p & 1)) c[p] = dot ? (ident ? (uint8_t)p : c[last]) : same ? c[first] : (uint8_t)p;
     return (uint8_t)(c[0] | c[1] << 2 | c[2] << 4 | c[3] << 6);

@@ -295,6 +295,21 @@ static void accumulation_written_in_place(void) {
             "\n// approximately 13 instruction slots used\n");
 }
 
+/* hfx_bc_tidy, the unread positions of a swizzle once registers are renumbered: a source of
+ * which one position is read (rsq, rcp, exp, log, pow, dp2add's addend) is the replicate of
+ * it, in the dot products' mode too (D3D9 wants `rsq r1.x, r1.x`; an x read was left as the
+ * identity, `rsq r1.x, r1`, in 18 scalar instructions of 6 corpus effects); a dot product's
+ * three positions keep the identity (`dp3 r0.x, r1, r2`) or repeat their last. Swizzles as
+ * bytes, two bits a position from x up: .xyzw 0xe4, .xxxx 0x00, .yyyy 0x55, .yzxx 0x09. */
+static void one_read_position_replicated(void) {
+    CHECK(hfx_bc_tidy(0xe4, 0x1, true) == 0x00);
+    CHECK(hfx_bc_tidy(0xe4, 0x1, false) == 0x00);
+    CHECK(hfx_bc_tidy(0xe5, 0x1, true) == 0x55); /* .yxzw reading y in position 0 */
+    CHECK(hfx_bc_tidy(0xe4, 0x7, true) == 0xe4);
+    CHECK(hfx_bc_tidy(0x24, 0x7, true) == 0xe4); /* .xyzx reading xyz: the identity */
+    CHECK(hfx_bc_tidy(0xc9, 0x7, true) == 0x09); /* .yzxw reading yzx: w repeats the last, .yzxx */
+}
+
 int main(void) {
     RUN(scalars_share_a_register);
     RUN(copy_on_write_takes_only_what_is_kept);
@@ -307,5 +322,6 @@ int main(void) {
     RUN(reciprocals_of_literals_and_scalars);
     RUN(scalar_splat_written_in_place);
     RUN(accumulation_written_in_place);
+    RUN(one_read_position_replicated);
     return test_summary();
 }
