@@ -70,12 +70,13 @@ static void reads_past_either_end_are_zero(void) {
 /* Both stages read Colors, the vertex stage at an index it cannot bound: GL links a uniform only
  * when both stages declare it alike, so neither pads it (the vertex stage keeps its guarded read;
  * before, it declared Colors[4] against the pixel stage's Colors[3] and the link failed). The
- * vertex colour is Colors[Index + p.z] (z = 0 on the quad), the pixel adds half of Colors[2]:
- * Index 1 gives green + half blue (0, 255, 128); Index 5, past the end, zero + half blue. */
+ * vertex colour is Colors[Index + p.z] (z = 0 on the quad), the pixel adds Colors[2] times the
+ * colour's green (a product with the varying, so Colors stays a pixel uniform, not a
+ * preshader): Index 1 gives green + blue (0, 255, 255); Index 5, past the end, zero (black). */
 static const char both_src[] =
     "float4 Colors[3]; int Index;\n"
     "float4 VS(float4 p : POSITION, out float4 c : COLOR0) : POSITION { c = Colors[Index + (int)p.z]; return p; }\n"
-    "float4 PS(float4 c : COLOR0) : COLOR { return c + Colors[2] * 0.5 + float4(0, 0, 0, 1); }\n"
+    "float4 PS(float4 c : COLOR0) : COLOR { return c + Colors[2] * c.g + float4(0, 0, 0, 1); }\n"
     "technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }\n";
 
 static void draw_both(hfx_effect *fx, int index, int r, int gr, int b) {
@@ -101,8 +102,8 @@ static void an_array_both_stages_read_links(void) {
     if (!fx) return;
     static const float colors[12] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
     CHECK_INT(hfx_param_set_floats(hfx_effect_param(fx, "Colors"), colors, 12), HFX_OK);
-    draw_both(fx, 1, 0, 255, 128);
-    draw_both(fx, 5, 0, 0, 128);
+    draw_both(fx, 1, 0, 255, 255);
+    draw_both(fx, 5, 0, 0, 0);
     hfx_effect_destroy(fx);
 }
 
