@@ -31,7 +31,40 @@ ir_expr *hfx_d3d9_tx_var(d3d9_tx *t, ir_var *v) {
     return e;
 }
 
+/* The value x.comps already is without a swizzle: x itself (every component in order), or the
+ * part a splat or a float4 padding was made from; NULL when there is none. */
+static ir_expr *unswizzled(d3d9_tx *t, ir_expr *x, const uint8_t *comps, unsigned n) {
+    bool in_order = true;
+    unsigned top = 0;
+    for (unsigned k = 0; k < n; k++) {
+        in_order &= comps[k] == k;
+        if (comps[k] > top) top = comps[k];
+    }
+    hfx_type_kind kind = x->type->kind;
+    if (in_order && (kind == TY_VECTOR || kind == TY_SCALAR) && hfx_type_components(x->type) == n) return x;
+    ir_expr *a = x->n ? x->a[0] : NULL;
+    if (x->kind == IE_CONVERT && a && a->type->kind == TY_SCALAR) { /* a splat: n copies of a */
+        const hfx_type *ty = n == 1 ? hfx_type_scalar(t->c->types, x->type->base) : hfx_type_vector(t->c->types, x->type->base, n);
+        return hfx_type_equal(ty, a->type) ? a : hfx_ir_new_convert(t->c, ty, a);
+    }
+    if (x->kind == IE_CONSTRUCT && a && a->type->kind == TY_VECTOR && a->type->base == x->type->base &&
+        top < hfx_type_components(a->type)) /* float4(v, 0...) read inside v */
+        return hfx_d3d9_tx_swizzle(t, a, comps, n);
+    return NULL;
+}
+
+/* x.comps; a swizzle of a swizzle is one, and what unswizzled finds has none. The translator
+ * swizzles every register it reads and every value it writes: without this the GLSL spelled
+ * `vec4(dot(a, b)).x` and `r0.xxxx.x` for each scalar instruction. */
 ir_expr *hfx_d3d9_tx_swizzle(d3d9_tx *t, ir_expr *x, const uint8_t *comps, unsigned n) {
+    uint8_t both[4];
+    if (x->kind == IE_SWIZZLE) {
+        for (unsigned k = 0; k < n; k++) both[k] = x->comps[comps[k]];
+        comps = both;
+        x = x->a[0];
+    }
+    ir_expr *plain = unswizzled(t, x, comps, n);
+    if (plain) return plain;
     hfx_base b = x->type->base;
     ir_expr *e = hfx_ir_new_expr(t->c, IE_SWIZZLE, n == 1 ? hfx_type_scalar(t->c->types, b)
                                                       : hfx_type_vector(t->c->types, b, n), t->loc, 1);
@@ -758,47 +791,61 @@ static bool same_src(const d3d9_src *a, const d3d9_src *b) {
            a->num == b->num && a->rel_type == b->rel_type && a->rel_comp == b->rel_comp && a->rel_num == b->rel_num;
 }
 
-/* The CTAB constant whose registers m.num .. m.num + count - 1 are, as a float matrix (no array)
- * with `width` components a register, read whole (no index, modifier or swizzle) and not under a
- * def or a preshader; -1 otherwise. *off: m.num's register within it. */
-static int matrix_constant(const d3d9_tx *t, const d3d9_src *m, unsigned count, unsigned width, unsigned *off) {
+/* The CTAB constant whose registers m.num .. m.num + count - 1 are, as a float matrix (or one
+ * element of a matrix array) with `width` components a register, read whole (no index, modifier
+ * or swizzle) and not under a def or a preshader; -1 otherwise. *off: m.num's register within the
+ * matrix, *elem: the element (0 for no array). */
+static int matrix_constant(const d3d9_tx *t, const d3d9_src *m, unsigned count, unsigned width, unsigned *off,
+                           unsigned *elem) {
     if (m->type != D3D9_REG_CONST || m->relative || m->mod != D3D9_SMOD_NONE || m->swizzle != 0xe4) return -1;
     int c = constant_at(t->s, D3D9_RS_FLOAT4, m->num);
     if (c < 0) return -1;
     const d3d9_constant *k = &t->s->constants[c];
-    if (k->elements > 1 || k->type != 3 || (k->cls != 2 && k->cls != 3)) return -1;
+    if (k->type != 3 || (k->cls != 2 && k->cls != 3)) return -1;
     unsigned per = k->cls == 3 ? k->cols : k->rows;
-    *off = m->num - k->reg;
-    if ((k->cls == 3 ? k->rows : k->cols) != width || *off + count > per) return -1;
+    *off = (m->num - k->reg) % per;
+    *elem = (m->num - k->reg) / per;
+    if ((k->cls == 3 ? k->rows : k->cols) != width || *off + count > per || m->num + count > k->reg + k->count)
+        return -1; /* past the registers fxc gave the constant: another constant's, or none */
     for (unsigned q = 0; q < count; q++)
         if (preshader_of(t->s, D3D9_PRE_C, m->num + q) >= 0 || def_at(t->s, m->num + q)) return -1;
     return c;
 }
 
-/* dot(v, register j of M) for every register j of matrix constant c at once: mul(v, M) when the
- * registers are M's columns, mul(M, v) when they are its rows; as float4. */
-static ir_expr *matrix_product(d3d9_tx *t, uint32_t c, const d3d9_src *vs, unsigned width) {
+/* dot(v, register j of M) for every register j of matrix constant c (element elem of an array)
+ * at once: mul(v, M) when the registers are M's columns, mul(M, v) when they are its rows; as
+ * float4. */
+static ir_expr *matrix_product(d3d9_tx *t, uint32_t c, unsigned elem, const d3d9_src *vs, unsigned width) {
     const d3d9_constant *k = &t->s->constants[c];
     const hfx_type *el = constant_type(t, k);
-    ir_var *mv = el ? constant_var(t, c, IRV_UNIFORM, el) : NULL;
+    bool array = k->elements > 1;
+    ir_var *mv = el ? constant_var(t, c, IRV_UNIFORM, array ? hfx_type_array(t->c->types, el, k->elements) : el) : NULL;
     ir_expr *v = mv ? hfx_d3d9_tx_read(t, vs) : NULL;
     if (!v) return NULL;
     if (width == 3) {
         static const uint8_t xyz[3] = {0, 1, 2};
         v = hfx_d3d9_tx_swizzle(t, v, xyz, 3);
     }
+    ir_expr *m = hfx_d3d9_tx_var(t, mv);
+    if (array) { /* matrix_constant keeps the registers inside the array */
+        ir_expr *ix = hfx_ir_new_expr(t->c, IE_INDEX, el, t->loc, 2);
+        ix->a[0] = m;
+        ix->a[1] = hfx_ir_const_scalar(t->c, t->i1, elem, t->loc);
+        ix->range = IR_RANGE_IN_BOUNDS;
+        m = ix;
+    }
     bool cols = k->cls == 3;
     ir_expr *e = hfx_ir_new_expr(t->c, IE_INTRIN, hfx_type_vector(t->c->types, B_FLOAT, cols ? el->cols : el->rows), t->loc, 2);
     e->intrin = HFX_INTR_MUL;
     e->a[cols ? 0 : 1] = v;
-    e->a[cols ? 1 : 0] = hfx_d3d9_tx_var(t, mv);
+    e->a[cols ? 1 : 0] = m;
     return hfx_d3d9_tx_float4(t, e);
 }
 
 ir_expr *hfx_d3d9_tx_matrix_mul(d3d9_tx *t, const d3d9_src *v, const d3d9_src *m, unsigned width, unsigned count) {
-    unsigned off;
-    int c = matrix_constant(t, m, count, width, &off);
-    return c >= 0 && off == 0 ? matrix_product(t, (uint32_t)c, v, width) : NULL;
+    unsigned off, elem;
+    int c = matrix_constant(t, m, count, width, &off, &elem);
+    return c >= 0 && off == 0 ? matrix_product(t, (uint32_t)c, elem, v, width) : NULL;
 }
 
 /* Whether `next` continues the run `first` starts, as its m-th instruction. */
@@ -815,24 +862,24 @@ static bool run_continues(const d3d9_inst *first, const d3d9_inst *next, unsigne
  * its register j, v not the register written), if 2 or more, else 0; *c its CTAB constant. Read
  * back as one mul, the GLSL is the source's `M * v` instead of a gather of every register's
  * components, which drivers take several times longer to compile (bench/bench_fx2_load). */
-static unsigned matrix_run(const d3d9_tx *t, uint32_t i, uint32_t *c) {
+static unsigned matrix_run(const d3d9_tx *t, uint32_t i, uint32_t *c, unsigned *elem) {
     const d3d9_inst *in = &t->s->insts[i];
     const d3d9_src *v = &in->src[0];
     if ((in->op != D3D9_DP4 && in->op != D3D9_DP3) || in->predicated || in->coissue || in->dst.shift ||
         in->dst.relative || v->relative || (v->type == in->dst.type && v->num == in->dst.num))
         return 0;
     unsigned width = in->op == D3D9_DP4 ? 4 : 3, off, n = 1;
-    if (matrix_constant(t, &in->src[1], 1, width, &off) < 0 || in->dst.mask != 1u << off) return 0;
+    if (matrix_constant(t, &in->src[1], 1, width, &off, elem) < 0 || in->dst.mask != 1u << off) return 0;
     while (off + n < 4 && i + n < t->s->inst_count && run_continues(in, &t->s->insts[i + n], off, n)) n++;
-    int k = n >= 2 ? matrix_constant(t, &in->src[1], n, width, &off) : -1;
+    int k = n >= 2 ? matrix_constant(t, &in->src[1], n, width, &off, elem) : -1;
     if (k < 0) return 0;
     *c = (uint32_t)k;
     return n;
 }
 
 /* The n instructions matrix_run found: dst.(their components) = the product's. */
-static void translate_matrix_run(d3d9_tx *t, const d3d9_inst *in, uint32_t c, unsigned n) {
-    ir_expr *e = matrix_product(t, c, &in->src[0], in->op == D3D9_DP4 ? 4 : 3);
+static void translate_matrix_run(d3d9_tx *t, const d3d9_inst *in, uint32_t c, unsigned elem, unsigned n) {
+    ir_expr *e = matrix_product(t, c, elem, &in->src[0], in->op == D3D9_DP4 ? 4 : 3);
     if (!e) {
         if (!t->failed) hfx_d3d9_tx_fail(t, "%s could not be translated", hfx_d3d9_op_find(in->op)->name);
         return;
@@ -852,13 +899,10 @@ struct ir_shader *hfx_d3d9_to_ir(struct ir_ctx *c, const d3d9_shader *s, bool pa
     for (uint32_t i = 0; i < s->inst_count && !t.failed; i++) {
         t.loc = (hfx_loc){s->file_index, 0, s->base + s->insts[i].offset};
         uint32_t k;
-        unsigned n = matrix_run(&t, i, &k);
-        if (n) {
-            translate_matrix_run(&t, &s->insts[i], k, n);
-            i += n - 1;
-        } else {
-            hfx_d3d9_tx_inst(&t, &s->insts[i]);
-        }
+        unsigned elem, n = matrix_run(&t, i, &k, &elem);
+        if (n) translate_matrix_run(&t, &s->insts[i], k, elem, n);
+        else if (!(n = hfx_d3d9_tx_scalar_run(&t, i))) hfx_d3d9_tx_inst(&t, &s->insts[i]);
+        if (n) i += n - 1;
     }
     if (t.failed) return NULL;
     if (t.depth != 1) { hfx_d3d9_tx_fail(&t, "flow control does not close"); return NULL; }
