@@ -31,6 +31,52 @@ ir_expr *hfx_d3d9_tx_var(d3d9_tx *t, ir_var *v) {
     return e;
 }
 
+/* Whether the operation of x works component by component, each result component from the same
+ * component of every vector operand (the translator's arithmetic, comparisons, selects). */
+static bool componentwise(const ir_expr *x) {
+    switch (x->kind) {
+    case IE_UNARY: return x->op == OP_NEG;
+    case IE_BINARY: return x->op >= OP_ADD && x->op <= OP_NE && x->op != OP_MOD && (x->op < OP_SHL || x->op > OP_BITXOR);
+    case IE_SELECT: case IE_CONVERT: return true;
+    case IE_INTRIN:
+        switch (x->intrin) {
+        case HFX_INTR_ABS: case HFX_INTR_MIN: case HFX_INTR_MAX: case HFX_INTR_CLAMP: case HFX_INTR_SATURATE:
+        case HFX_INTR_FRAC: case HFX_INTR_EXP2: case HFX_INTR_LOG2: case HFX_INTR_RSQRT: case HFX_INTR_SIGN:
+        case HFX_INTR_LERP: case HFX_INTR_DDX: case HFX_INTR_DDY: case HFX_INTR_ROUND:
+            return true;
+        default: return false;
+        }
+    default: return false;
+    }
+}
+
+/* x.comps with the swizzle moved onto x's operands, when x works component by component on
+ * vectors as wide as itself (scalar operands stay as they are), or onto a constant's values: the
+ * components an instruction's write mask drops are then not computed, and the GLSL says
+ * `r2.w = r4.y * r4.x` for fxc's `mul r2.w, r4.y, r4.x` instead of a float4 product and a pick.
+ * NULL when x is no such expression. */
+static ir_expr *narrowed(d3d9_tx *t, ir_expr *x, const uint8_t *comps, unsigned n) {
+    unsigned width = hfx_type_components(x->type);
+    if (x->type->kind != TY_VECTOR || n >= width) return NULL;
+    const hfx_type *ty = n == 1 ? hfx_type_scalar(t->c->types, x->type->base) : hfx_type_vector(t->c->types, x->type->base, n);
+    if (x->kind == IE_CONST) {
+        ir_expr *e = hfx_ir_new_expr(t->c, IE_CONST, ty, x->loc, 0);
+        for (unsigned k = 0; k < n; k++) e->cval[k] = x->cval[comps[k]];
+        return e;
+    }
+    if (!componentwise(x)) return NULL;
+    for (uint32_t i = 0; i < x->n; i++) {
+        const hfx_type *at = x->a[i]->type;
+        if (!(at->kind == TY_SCALAR || (at->kind == TY_VECTOR && hfx_type_components(at) == width))) return NULL;
+    }
+    ir_expr *e = hfx_ir_new_expr(t->c, x->kind, ty, x->loc, x->n);
+    e->op = x->op;
+    e->intrin = x->intrin;
+    for (uint32_t i = 0; i < x->n; i++)
+        e->a[i] = x->a[i]->type->kind == TY_SCALAR ? x->a[i] : hfx_d3d9_tx_swizzle(t, x->a[i], comps, n);
+    return e;
+}
+
 /* The value x.comps already is without a swizzle: x itself (every component in order), or the
  * part a splat or a float4 padding was made from; NULL when there is none. */
 static ir_expr *unswizzled(d3d9_tx *t, ir_expr *x, const uint8_t *comps, unsigned n) {
@@ -50,7 +96,7 @@ static ir_expr *unswizzled(d3d9_tx *t, ir_expr *x, const uint8_t *comps, unsigne
     if (x->kind == IE_CONSTRUCT && a && a->type->kind == TY_VECTOR && a->type->base == x->type->base &&
         top < hfx_type_components(a->type)) /* float4(v, 0...) read inside v */
         return hfx_d3d9_tx_swizzle(t, a, comps, n);
-    return NULL;
+    return narrowed(t, x, comps, n);
 }
 
 /* x.comps; a swizzle of a swizzle is one, and what unswizzled finds has none. The translator
@@ -848,45 +894,63 @@ ir_expr *hfx_d3d9_tx_matrix_mul(d3d9_tx *t, const d3d9_src *v, const d3d9_src *m
     return c >= 0 && off == 0 ? matrix_product(t, (uint32_t)c, elem, v, width) : NULL;
 }
 
-/* Whether `next` continues the run `first` starts, as its m-th instruction. */
-static bool run_continues(const d3d9_inst *first, const d3d9_inst *next, unsigned off, unsigned m) {
+/* The one component a write mask names, or -1. */
+static int one_component(unsigned mask) { return mask == 1 ? 0 : mask == 2 ? 1 : mask == 4 ? 2 : mask == 8 ? 3 : -1; }
+
+/* Whether `next` continues the run `first` starts, as its m-th instruction, writing a component
+ * the run has not (`written`). */
+static bool run_continues(const d3d9_inst *first, const d3d9_inst *next, unsigned m, unsigned written) {
     return next->op == first->op && !next->predicated && !next->coissue && next->dst.type == first->dst.type &&
            next->dst.num == first->dst.num && next->dst.mods == first->dst.mods && next->dst.shift == 0 &&
-           !next->dst.relative && next->dst.mask == 1u << (off + m) && same_src(&next->src[0], &first->src[0]) &&
-           next->src[1].type == D3D9_REG_CONST && next->src[1].num == first->src[1].num + m &&
-           !next->src[1].relative && next->src[1].mod == D3D9_SMOD_NONE && next->src[1].swizzle == 0xe4;
+           !next->dst.relative && one_component(next->dst.mask) >= 0 && !(next->dst.mask & written) &&
+           same_src(&next->src[0], &first->src[0]) && next->src[1].type == D3D9_REG_CONST &&
+           next->src[1].num == first->src[1].num + m && !next->src[1].relative &&
+           next->src[1].mod == D3D9_SMOD_NONE && next->src[1].swizzle == 0xe4;
 }
 
 /* fxc writes mul(v, M) as one dp4 (dp3) per register of M: `dp4 r0.x, v0, c0; dp4 r0.y, v0, c1;
- * ...`. The number of instructions from i that do so for one matrix parameter (component j from
- * its register j, v not the register written), if 2 or more, else 0; *c its CTAB constant. Read
- * back as one mul, the GLSL is the source's `M * v` instead of a gather of every register's
- * components, which drivers take several times longer to compile (bench/bench_fx2_load). */
+ * ...`. The number of instructions from i that do so for one matrix parameter (or one element of
+ * a matrix array: consecutive registers, each to a component of one register, v not the register
+ * written), if 2 or more, or 1 for a column-major matrix's register (a gather of one component of
+ * each row otherwise), else 0; *c its CTAB constant, *elem the element. Read back as one mul, the
+ * GLSL is the source's `M * v` instead of a gather of every register's components, which drivers
+ * take several times longer to compile (bench/bench_fx2_load). */
 static unsigned matrix_run(const d3d9_tx *t, uint32_t i, uint32_t *c, unsigned *elem) {
     const d3d9_inst *in = &t->s->insts[i];
     const d3d9_src *v = &in->src[0];
     if ((in->op != D3D9_DP4 && in->op != D3D9_DP3) || in->predicated || in->coissue || in->dst.shift ||
-        in->dst.relative || v->relative || (v->type == in->dst.type && v->num == in->dst.num))
+        in->dst.relative || v->relative || (v->type == in->dst.type && v->num == in->dst.num) ||
+        one_component(in->dst.mask) < 0)
         return 0;
-    unsigned width = in->op == D3D9_DP4 ? 4 : 3, off, n = 1;
-    if (matrix_constant(t, &in->src[1], 1, width, &off, elem) < 0 || in->dst.mask != 1u << off) return 0;
-    while (off + n < 4 && i + n < t->s->inst_count && run_continues(in, &t->s->insts[i + n], off, n)) n++;
-    int k = n >= 2 ? matrix_constant(t, &in->src[1], n, width, &off, elem) : -1;
+    unsigned width = in->op == D3D9_DP4 ? 4 : 3, off, n = 1, written = in->dst.mask;
+    int k = matrix_constant(t, &in->src[1], 1, width, &off, elem);
     if (k < 0) return 0;
+    while (off + n < 4 && i + n < t->s->inst_count && run_continues(in, &t->s->insts[i + n], n, written))
+        written |= t->s->insts[i + n++].dst.mask;
+    while (n >= 1 && (k = matrix_constant(t, &in->src[1], n, width, &off, elem)) < 0) n--;
+    if (n == 0 || (n == 1 && t->s->constants[k].cls != 3)) return 0;
     *c = (uint32_t)k;
     return n;
 }
 
-/* The n instructions matrix_run found: dst.(their components) = the product's. */
+/* The n instructions matrix_run found: each dst component = the product's component of its register. */
 static void translate_matrix_run(d3d9_tx *t, const d3d9_inst *in, uint32_t c, unsigned elem, unsigned n) {
     ir_expr *e = matrix_product(t, c, elem, &in->src[0], in->op == D3D9_DP4 ? 4 : 3);
     if (!e) {
         if (!t->failed) hfx_d3d9_tx_fail(t, "%s could not be translated", hfx_d3d9_op_find(in->op)->name);
         return;
     }
+    const d3d9_constant *k = &t->s->constants[c];
+    unsigned first = (in->src[1].num - k->reg) % (k->cls == 3 ? k->cols : k->rows);
+    uint8_t comps[4] = {(uint8_t)first, (uint8_t)first, (uint8_t)first, (uint8_t)first};
     d3d9_dst d = in->dst;
-    d.mask = (uint8_t)(((1u << n) - 1) * in->dst.mask);
-    hfx_d3d9_tx_write(t, &d, e);
+    d.mask = 0;
+    for (unsigned m = 0; m < n; m++) {
+        unsigned mask = in[m].dst.mask;
+        comps[one_component(mask)] = (uint8_t)(first + m);
+        d.mask = (uint8_t)(d.mask | mask);
+    }
+    hfx_d3d9_tx_write(t, &d, hfx_d3d9_tx_swizzle(t, e, comps, 4));
 }
 
 struct ir_shader *hfx_d3d9_to_ir(struct ir_ctx *c, const d3d9_shader *s, bool packed) {

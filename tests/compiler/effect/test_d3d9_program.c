@@ -734,9 +734,10 @@ static int occurrences(const char *text, const char *needle) {
 }
 
 /* fxc's dp4 runs over one element of a matrix array (CascadedShadowMask's ShadowMatrices[i]) are
- * one product of that element too: Mats (c0..c7, column-major) is the identity then M's
- * translation; dp4 oPos.x..w, v0, c4..c7 is Mats[1] * v0; dp4 r1.xyz, r0, c0..c2 (three of
- * Mats[0]'s four registers) is Mats[0] * r0's xyz. */
+ * one product of that element too, whichever components they write: Mats (c0..c7, column-major)
+ * is the identity then M's translation; dp4 oPos.x..w, v0, c4..c7 is Mats[1] * v0;
+ * dp4 r1.y/z/w, r0, c0/c1/c2 (three of Mats[0]'s registers) is (Mats[0] * r0).xyz; a lone
+ * dp4 r1.x, r0, c4 is (Mats[1] * r0).x. */
 static size_t array_matrix_vs_tokens(uint32_t *w) {
     static const ctab_const k[] = {{"Mats", 2, 0, 8, 3, 3, 4, 4, 2}, {"Tint", 2, 8, 1, 1, 3, 1, 4, 1}};
     size_t n = 0;
@@ -749,10 +750,10 @@ static size_t array_matrix_vs_tokens(uint32_t *w) {
         OP(0x09, 3), DST(R_RASTOUT, 0, 0x2), SRC(R_INPUT, 0, XYZW), SRC(R_CONST, 5, XYZW),
         OP(0x09, 3), DST(R_RASTOUT, 0, 0x4), SRC(R_INPUT, 0, XYZW), SRC(R_CONST, 6, XYZW),
         OP(0x09, 3), DST(R_RASTOUT, 0, 0x8), SRC(R_INPUT, 0, XYZW), SRC(R_CONST, 7, XYZW),
-        OP(0x09, 3), DST(R_TEMP, 1, 0x1), SRC(R_TEMP, 0, XYZW), SRC(R_CONST, 0, XYZW),
-        OP(0x09, 3), DST(R_TEMP, 1, 0x2), SRC(R_TEMP, 0, XYZW), SRC(R_CONST, 1, XYZW),
-        OP(0x09, 3), DST(R_TEMP, 1, 0x4), SRC(R_TEMP, 0, XYZW), SRC(R_CONST, 2, XYZW),
-        OP(0x01, 2), DST(R_TEMP, 1, 0x8), SRC(R_CONST, 8, 0xff),
+        OP(0x09, 3), DST(R_TEMP, 1, 0x2), SRC(R_TEMP, 0, XYZW), SRC(R_CONST, 0, XYZW),
+        OP(0x09, 3), DST(R_TEMP, 1, 0x4), SRC(R_TEMP, 0, XYZW), SRC(R_CONST, 1, XYZW),
+        OP(0x09, 3), DST(R_TEMP, 1, 0x8), SRC(R_TEMP, 0, XYZW), SRC(R_CONST, 2, XYZW),
+        OP(0x09, 3), DST(R_TEMP, 1, 0x1), SRC(R_TEMP, 0, XYZW), SRC(R_CONST, 4, XYZW),
         OP(0x01, 2), DST(R_ATTROUT, 0, 0xf), SRC(R_TEMP, 1, XYZW),
         END_TOKEN};
     memcpy(w + n, code, sizeof code);
@@ -773,14 +774,15 @@ static void array_matrix_rows_drawn(void) {
         const char *vs = prog.code[0][HFX_TARGET_GLSL330].data;
         CHECK(strstr(vs, "hfx_out_POSITION0 = Mats[1] * hfx_in_POSITION0;") != NULL);
         CHECK(strstr(vs, "Mats[0] * hfx_r0") != NULL);
+        CHECK(strstr(vs, "Mats[1] * hfx_r0") != NULL);
         CHECK(occurrences(vs, "dot(") == 0);
         if (gl) {
             unsigned char left[4], right[4];
             draw(&prog, x.fx, left, right);
             near(left, 0, 0, 0, 0); /* Mats[1] moved the quad right by 0.5 */
-            /* r1.xyz = the identity's product with Tint (0.2, 0.4, 0.6, 0.8), r1.w = Tint.w; with
-             * Mats[1] instead: (0.2 + 0.5 * 0.8, 0.4, 0.6) */
-            near(right, 0.2f, 0.4f, 0.6f, 0.8f);
+            /* r1.yzw = the identity's product with Tint (0.2, 0.4, 0.6, 0.8): (0.2, 0.4, 0.6);
+             * r1.x = Mats[1]'s register 0 (its column (1, 0, 0, 0.5)) . Tint = 0.2 + 0.4 */
+            near(right, 0.6f, 0.2f, 0.4f, 0.6f);
         }
         hfx_fx_program_clear(&prog);
     }
@@ -840,6 +842,9 @@ static void scalar_runs_drawn(void) {
         CHECK_INT(occurrences(ps, "inversesqrt("), 2);
         /* a scalar result written to one component is written as it is, not splat and picked */
         CHECK(strstr(ps, "hfx_r1.w = min(inversesqrt(") != NULL);
+        /* a write mask narrows the operation: mul r4.x, r0.y, r0.w multiplies one component */
+        CHECK(strstr(ps, "hfx_r4.x = hfx_r0.y * hfx_r0.w;") != NULL);
+        CHECK(strstr(ps, "hfx_r1.z = hfx_r1.z * 0.25;") != NULL);
         if (gl) {
             unsigned char left[4], right[4];
             draw(&prog, x.fx, left, right);
