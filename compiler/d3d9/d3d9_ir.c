@@ -728,6 +728,31 @@ static ir_var *dst_var(d3d9_tx *t, const d3d9_dst *d) {
     }
 }
 
+/* _sat on the register just written (r = value): r = r >= 0 ? min(r, 1) : 0. D3D10 and later
+ * hardware, which runs D3D9 shaders today, saturates NaN to 0 (DigitalRise's ImageBasedLight
+ * with a zero box size kills its pixels through `mul_sat` of NaN and `texkill`); GLSL's clamp
+ * leaves NaN undefined (llvmpipe keeps it), and a select on the comparison does not. The
+ * register is read back rather than the value repeated, so the GLSL grows by one statement. */
+static void saturate_in_place(d3d9_tx *t, ir_expr *lhs) {
+    const hfx_type *ty = lhs->type;
+    unsigned n = hfx_type_components(ty);
+    const hfx_type *bt = n == 1 ? hfx_type_scalar(t->c->types, B_BOOL) : hfx_type_vector(t->c->types, B_BOOL, n);
+    ir_expr *low = hfx_ir_new_binary(t->c, OP_GE, bt, hfx_ir_clone_expr(t->c, lhs), hfx_ir_const_scalar(t->c, ty, 0, t->loc));
+    ir_expr *top = hfx_ir_new_expr(t->c, IE_INTRIN, ty, t->loc, 2);
+    top->intrin = HFX_INTR_MIN;
+    top->a[0] = hfx_ir_clone_expr(t->c, lhs);
+    top->a[1] = hfx_ir_const_scalar(t->c, ty, 1, t->loc);
+    ir_expr *sel = hfx_ir_new_expr(t->c, IE_SELECT, ty, t->loc, 3);
+    sel->a[0] = low;
+    sel->a[1] = top;
+    sel->a[2] = hfx_ir_const_scalar(t->c, ty, 0, t->loc);
+    ir_expr *as = hfx_ir_new_expr(t->c, IE_ASSIGN, ty, t->loc, 2);
+    as->op = OP_NONE;
+    as->a[0] = hfx_ir_clone_expr(t->c, lhs);
+    as->a[1] = sel;
+    hfx_d3d9_tx_emit(t, as);
+}
+
 void hfx_d3d9_tx_write(d3d9_tx *t, const d3d9_dst *d, ir_expr *value) {
     if (!value || t->failed) return;
     if (d->relative) { hfx_d3d9_tx_fail(t, "relative destinations are not supported yet"); return; }
@@ -737,12 +762,13 @@ void hfx_d3d9_tx_write(d3d9_tx *t, const d3d9_dst *d, ir_expr *value) {
         float k = d->shift > 0 ? (float)(1 << d->shift) : 1.0f / (float)(1 << -d->shift);
         value = hfx_ir_new_binary(t->c, OP_MUL, value->type, value, hfx_ir_const_scalar(t->c, value->type, k, t->loc));
     }
-    if (d->mods & D3D9_DMOD_SAT) {
+    bool sat_nan = (d->mods & D3D9_DMOD_SAT) && value->type->base == B_FLOAT;
+    if ((d->mods & D3D9_DMOD_SAT) && !sat_nan) {
         ir_expr *s = hfx_ir_new_expr(t->c, IE_INTRIN, value->type, t->loc, 1);
         s->intrin = HFX_INTR_SATURATE;
         s->a[0] = value;
         value = s;
-    } else if (hfx_d3d9_tx_ps1(t) && value->type->base == B_FLOAT) {
+    } else if (!sat_nan && hfx_d3d9_tx_ps1(t) && value->type->base == B_FLOAT) {
         /* ps_1_x registers hold [-1, 1] (ps_1_4: [-8, 8], D3D's minimum MaxPixelShaderValue) */
         float r = t->s->model == D3D9_SM(1, 4) ? 8.0f : 1.0f;
         ir_expr *c = hfx_ir_new_expr(t->c, IE_INTRIN, value->type, t->loc, 3);
@@ -769,6 +795,7 @@ void hfx_d3d9_tx_write(d3d9_tx *t, const d3d9_dst *d, ir_expr *value) {
     as->a[0] = lhs;
     as->a[1] = rhs;
     hfx_d3d9_tx_emit(t, as);
+    if (sat_nan) saturate_in_place(t, lhs);
 }
 
 static bool model_supported(d3d9_tx *t) {

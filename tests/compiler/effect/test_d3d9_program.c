@@ -855,6 +855,50 @@ static void scalar_runs_drawn(void) {
     close_fixture(&x);
 }
 
+/* _sat takes NaN to 0, as D3D10 and later hardware saturates (GLSL's clamp leaves it undefined):
+ * Colors[0].x (c2.x) is 0, so rcp r0.x, c2.x = +inf and mul r0.x, r0.x, c2.x = NaN, at run time.
+ *   def c0, 0, 2, -1, 0.5; def c1, 1, 0.25, 0, 0
+ *   mov r2, c0; mov r2.x, r0.x; mov_sat r3, r2        r3 = (0, 1, 0, 0.5) (NaN kept: r3.x NaN)
+ *   cmp r3.x, -r3.x, c1.x, c1.y                        -0 >= 0: 1 (NaN >= 0 is false: 0.25)
+ *   mov oC0, r3                                        the pixel: (1, 1, 0, 0.5) */
+static void saturate_nan_drawn(void) {
+    static const ctab_const k[] = {{"Colors", 2, 2, 2, 1, 3, 1, 4, 2}};
+    enum { SAT = 1, NEG = 1 };
+    uint32_t pw[256];
+    size_t n = 0;
+    pw[n++] = PS(2, 0);
+    n += put_ctab(pw + n, "hand", k, 1);
+    const uint32_t code[] = {
+        OP(0x51, 5), DST(R_CONST, 0, 0xf), 0, 0x40000000u /* 2 */, 0xbf800000u /* -1 */, 0x3f000000u /* 0.5 */,
+        OP(0x51, 5), DST(R_CONST, 1, 0xf), 0x3f800000u /* 1 */, 0x3e800000u /* 0.25 */, 0, 0,
+        OP(0x06, 2), DST(R_TEMP, 0, 0x1), SRC(R_CONST, 2, 0x00),
+        OP(0x05, 3), DST(R_TEMP, 0, 0x1), SRC(R_TEMP, 0, 0x00), SRC(R_CONST, 2, 0x00),
+        OP(0x01, 2), DST(R_TEMP, 2, 0xf), SRC(R_CONST, 0, XYZW),
+        OP(0x01, 2), DST(R_TEMP, 2, 0x1), SRC(R_TEMP, 0, 0x00),
+        OP(0x01, 2), DSTM(R_TEMP, 3, 0xf, SAT), SRC(R_TEMP, 2, XYZW),
+        OP(0x58, 4), DST(R_TEMP, 3, 0x1), SRCM(R_TEMP, 3, 0x00, NEG), SRC(R_CONST, 1, 0x00), SRC(R_CONST, 1, 0x55),
+        OP(0x01, 2), DST(R_COLOROUT, 0, 0xf), SRC(R_TEMP, 3, XYZW),
+        END_TOKEN};
+    memcpy(pw + n, code, sizeof code);
+    n += sizeof code / 4;
+    fixture x;
+    open_fixture(&x, false);
+    uint32_t vw[256];
+    hfx_fx_program prog;
+    int rc = hfx_codegen_d3d9_program(x.cg, decode(&x, vw, columns_vs_tokens(vw), 0), decode(&x, pw, n, 1024), false, &prog);
+    CHECK_INT(rc, 0);
+    if (rc == 0) {
+        CHECK(strstr(prog.code[1][HFX_TARGET_GLSL330].data, "clamp(") == NULL);
+        if (gl) {
+            unsigned char left[4], right[4];
+            draw(&prog, x.fx, left, right);
+            near(right, 1, 1, 0, 0.5f);
+        }
+        hfx_fx_program_clear(&prog);
+    }
+    close_fixture(&x);
+}
+
 int main(void) {
     gl = test_gl_create(W, H);
     if (gl) CHECK_INT(test_gl_fns_load(&f), 0);
@@ -874,6 +918,7 @@ int main(void) {
     RUN(matrix_columns_drawn);
     RUN(array_matrix_rows_drawn);
     RUN(scalar_runs_drawn);
+    RUN(saturate_nan_drawn);
     if (gl) test_gl_destroy(gl);
     return test_summary();
 }
