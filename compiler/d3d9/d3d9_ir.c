@@ -728,24 +728,24 @@ static ir_var *dst_var(d3d9_tx *t, const d3d9_dst *d) {
     }
 }
 
-/* _sat on the register just written (r = value): r = r >= 0 ? min(r, 1) : 0. D3D10 and later
- * hardware, which runs D3D9 shaders today, saturates NaN to 0 (DigitalRise's ImageBasedLight
- * with a zero box size kills its pixels through `mul_sat` of NaN and `texkill`); GLSL's clamp
- * leaves NaN undefined (llvmpipe keeps it), and a select on the comparison does not. The
+/* _sat on the register just written (r = value): r = isnan(r) ? 0 : clamp(r, 0, 1). D3D10 and
+ * later hardware, which runs D3D9 shaders today, saturates NaN to 0; GLSL leaves clamp, min and
+ * max of NaN undefined, and a select on a comparison is folded back into them by drivers. The
  * register is read back rather than the value repeated, so the GLSL grows by one statement. */
 static void saturate_in_place(d3d9_tx *t, ir_expr *lhs) {
     const hfx_type *ty = lhs->type;
     unsigned n = hfx_type_components(ty);
     const hfx_type *bt = n == 1 ? hfx_type_scalar(t->c->types, B_BOOL) : hfx_type_vector(t->c->types, B_BOOL, n);
-    ir_expr *low = hfx_ir_new_binary(t->c, OP_GE, bt, hfx_ir_clone_expr(t->c, lhs), hfx_ir_const_scalar(t->c, ty, 0, t->loc));
-    ir_expr *top = hfx_ir_new_expr(t->c, IE_INTRIN, ty, t->loc, 2);
-    top->intrin = HFX_INTR_MIN;
-    top->a[0] = hfx_ir_clone_expr(t->c, lhs);
-    top->a[1] = hfx_ir_const_scalar(t->c, ty, 1, t->loc);
+    ir_expr *nan = hfx_ir_new_expr(t->c, IE_INTRIN, bt, t->loc, 1);
+    nan->intrin = HFX_INTR_ISNAN;
+    nan->a[0] = hfx_ir_clone_expr(t->c, lhs);
+    ir_expr *sat = hfx_ir_new_expr(t->c, IE_INTRIN, ty, t->loc, 1);
+    sat->intrin = HFX_INTR_SATURATE;
+    sat->a[0] = hfx_ir_clone_expr(t->c, lhs);
     ir_expr *sel = hfx_ir_new_expr(t->c, IE_SELECT, ty, t->loc, 3);
-    sel->a[0] = low;
-    sel->a[1] = top;
-    sel->a[2] = hfx_ir_const_scalar(t->c, ty, 0, t->loc);
+    sel->a[0] = nan;
+    sel->a[1] = hfx_ir_const_scalar(t->c, ty, 0, t->loc);
+    sel->a[2] = sat;
     ir_expr *as = hfx_ir_new_expr(t->c, IE_ASSIGN, ty, t->loc, 2);
     as->op = OP_NONE;
     as->a[0] = hfx_ir_clone_expr(t->c, lhs);
