@@ -5,6 +5,7 @@
  * model's limits. */
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "bytecode/bc_int.h"
 
@@ -272,6 +273,39 @@ static int explicit_const(const bc_gen *g, const ir_var *v) {
     return reg && (reg[0] == 'c' || reg[0] == 'C') && reg[1] >= '0' && reg[1] <= '9' ? atoi(reg + 1) : -1;
 }
 
+/* Element k of a sampler array parameter, or -1 for a sampler of its own. */
+static int sampler_element(const bc_gen *g, const ir_var *v) {
+    const hfx_decl *d = v->decl;
+    if (!d || d->type->kind != TY_ARRAY || !g->c->fx || d->index >= g->c->fx->param_count) return -1;
+    return (int)(v->param - g->c->fx->params[d->index].first_child);
+}
+
+/* The s register of the stage's sampler global i. A sampler array takes one run of registers,
+ * element k at the first + k, up to the last element the stage reads, named once in the CTAB
+ * (fxc's form: D3DX binds element k of the parameter to register first + k). */
+static unsigned sampler_register(bc_gen *g, uint32_t i) {
+    const ir_var *v = g->sh->globals[i];
+    int k = sampler_element(g, v);
+    if (k < 0) {
+        if (HFX_ARENA_GROW(g->c->arena, g->ctab, g->ctab_count, g->ctab_cap, 8))
+            g->ctab[g->ctab_count++] = (bc_ctab){v->name, v->type, D3D9_RS_SAMPLER, (uint16_t)g->samplers, 1, false};
+        return g->samplers++;
+    }
+    for (uint32_t j = 0; j < g->ctab_count; j++) /* the run an earlier element opened */
+        if (g->ctab[j].set == D3D9_RS_SAMPLER && g->ctab[j].type == v->decl->type && strcmp(g->ctab[j].name, v->name) == 0)
+            return g->ctab[j].reg + (unsigned)k;
+    int last = k;
+    for (uint32_t j = i + 1; j < g->sh->global_count; j++) {
+        const ir_var *w = g->sh->globals[j];
+        if (w->kind == IRV_SAMPLER && w->decl == v->decl && sampler_element(g, w) > last) last = sampler_element(g, w);
+    }
+    unsigned first = g->samplers;
+    g->samplers += (uint32_t)last + 1;
+    if (HFX_ARENA_GROW(g->c->arena, g->ctab, g->ctab_count, g->ctab_cap, 8))
+        g->ctab[g->ctab_count++] = (bc_ctab){v->name, v->decl->type, D3D9_RS_SAMPLER, (uint16_t)first, (uint16_t)(last + 1), false};
+    return first + (unsigned)k;
+}
+
 /* Parameters, samplers and private globals, in the order the stage lists them. A parameter
  * without a register takes the first free run that no later parameter's register asks for. */
 void hfx_bc_bind_globals(bc_gen *g) {
@@ -287,14 +321,12 @@ void hfx_bc_bind_globals(bc_gen *g) {
         const ir_var *v = g->sh->globals[i];
         if (v->kind == IRV_SAMPLER) {
             bc_obj o = new_obj(g, 1);
-            o.slot[0] = hfx_bc_reg(D3D9_REG_SAMPLER, (uint16_t)g->samplers++, 4);
+            o.slot[0] = hfx_bc_reg(D3D9_REG_SAMPLER, (uint16_t)sampler_register(g, i), 4);
             d3d9_inst d = {.op = D3D9_DCL, .has_dst = true};
             d.sampler_type = v->dim == DIM_CUBE ? 3 : v->dim == DIM_3D ? 4 : 2;
             d.dst = (d3d9_dst){.type = D3D9_REG_SAMPLER, .num = o.slot[0].num, .mask = 0xf};
             add_dcl(g, d);
             add_bind(g, v, o);
-            if (HFX_ARENA_GROW(g->c->arena, g->ctab, g->ctab_count, g->ctab_cap, 8))
-                g->ctab[g->ctab_count++] = (bc_ctab){v->name, v->type, D3D9_RS_SAMPLER, o.slot[0].num, 1, false};
         } else if (v->kind == IRV_UNIFORM) {
             bool cols = !(v->mods & MOD_ROW_MAJOR) && !(v->decl && (v->decl->mods & MOD_ROW_MAJOR));
             uint32_t n = hfx_bc_slots(v->type, cols);
@@ -550,9 +582,30 @@ static bool const_step(bc_gen *g, const ir_expr *e) {
 
 enum { MAX_UNROLL = 1024 };
 
+/* `int i; ... for (i = 0; ...)`: the counter declared before the loop starts at a constant as
+ * one declared in it does, so the unroller can step it (and code after the loop reads its last
+ * value, as fxc's unrolled code does). Only outside flattened or real flow: there its register
+ * is pinned and must stay one. */
+static bool counter_init(bc_gen *g, const ir_stmt *s) {
+    const ir_expr *e = s && s->kind == IS_EXPR ? s->expr : NULL;
+    double k;
+    if (!e || e->kind != IE_ASSIGN || e->op != OP_NONE || e->a[0]->kind != IE_VAR || g->cond.n || g->loop_nest ||
+        g->if_nest || g->loop_region)
+        return false;
+    const ir_var *v = e->a[0]->var;
+    if (v->kind != IRV_LOCAL || v->type->kind != TY_SCALAR || (v->type->base != B_INT && v->type->base != B_UINT) ||
+        !hfx_bc_try_const(g, e->a[1], &k))
+        return false;
+    bc_binding *b = hfx_bc_bind(g, v);
+    if (!b) return false;
+    b->is_const = true;
+    b->konst = k;
+    return true;
+}
+
 static void gen_loop(bc_gen *g, const ir_stmt *s) {
     uint32_t mark = g->bind_count;
-    if (s->init) gen_stmt(g, s->init);
+    if (s->init && !counter_init(g, s->init)) gen_stmt(g, s->init);
     if (!g->failed && hfx_bc_flow_loop(g, s)) {
         end_scope(g, mark);
         return;

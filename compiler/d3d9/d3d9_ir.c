@@ -687,6 +687,25 @@ ir_expr *hfx_d3d9_tx_int4(d3d9_tx *t, unsigned num) {
     return e;
 }
 
+/* Register first + e of a sampler array constant: element e of the array parameter, the
+ * variable the HLSL path makes for S[e] (D3DX binds the elements to the run of registers). */
+static ir_var *array_sampler(d3d9_tx *t, uint32_t k, unsigned e, const hfx_type *elem) {
+    const d3d9_constant *x = &t->s->constants[k];
+    const hfx_fx_effect *fx = t->c->fx;
+    for (uint32_t p = 0; fx && p < fx->top_param_count && p < fx->param_count; p++) {
+        if (!fx->params[p].name || strcmp(fx->params[p].name, x->name) != 0) continue;
+        if (e >= fx->params[p].child_count) break;
+        hfx_decl *d = fake_decl(t, DECL_VAR, x->name, hfx_type_array(t->c->types, elem, fx->params[p].child_count), 0, NULL);
+        d->is_global = true;
+        d->index = p;
+        ir_var *v = hfx_ir_sampler_element(t->c, t->sh, d, e);
+        if (v) v->dim = elem->dim;
+        return v;
+    }
+    hfx_d3d9_tx_fail(t, "sampler constant '%s' names no sampler array of the effect with an element %u", x->name, e);
+    return NULL;
+}
+
 ir_var *hfx_d3d9_tx_sampler(d3d9_tx *t, unsigned num) {
     if (num >= 16) return NULL;
     if (t->samplers[num]) return t->samplers[num];
@@ -696,11 +715,10 @@ ir_var *hfx_d3d9_tx_sampler(d3d9_tx *t, unsigned num) {
     unsigned st = d ? d->sampler_type : t->s->constants[k].type == 14 ? 3 : t->s->constants[k].type == 13 ? 4
                 : t->s->constants[k].type == 11 ? 1 : 2; /* ps_1_x declares no samplers: the CTAB's type */
     hfx_dim dim = st == 2 ? DIM_2D : st == 3 ? DIM_CUBE : st == 4 ? DIM_3D : DIM_1D;
-    if (t->s->constants[k].count > 1 || t->s->constants[k].elements > 1) {
-        hfx_d3d9_tx_fail(t, "sampler arrays are not supported yet");
-        return NULL;
-    }
-    ir_var *v = constant_var(t, (uint32_t)k, IRV_SAMPLER, hfx_type_object(t->c->types, TY_SAMPLER, dim));
+    const hfx_type *ty = hfx_type_object(t->c->types, TY_SAMPLER, dim);
+    if (t->s->constants[k].count > 1 || t->s->constants[k].elements > 1)
+        return t->samplers[num] = array_sampler(t, (uint32_t)k, num - t->s->constants[k].reg, ty);
+    ir_var *v = constant_var(t, (uint32_t)k, IRV_SAMPLER, ty);
     if (v) v->dim = dim;
     return t->samplers[num] = v;
 }

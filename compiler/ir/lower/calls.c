@@ -1,5 +1,5 @@
-/* calls.c: a call with constant arguments gets a copy of its callee with those parameters
- * bound, as fxc (which inlines every call) sees it: PS(uv, ray, LightTypePoint) compiles only
+/* calls.c: a call with constant arguments (or a sampler array) gets a copy of its callee with
+ * those parameters bound, as fxc (which inlines every call) sees it: PS(uv, ray, LightTypePoint) compiles only
  * the point-light branch, so what the other branches sample, and their errors, vanish (fold
  * and dce then remove them). A parameter the callee writes stays a parameter. Copies are
  * shared by calls with the same constants, and named <callee>_hfxK. */
@@ -30,6 +30,15 @@ typedef struct specialiser {
 
 /* An `in` numeric parameter: what a constant argument may replace. */
 static bool bindable_param(const ir_var *p) { return !(p->mods & MOD_OUT) && hfx_type_is_numeric(p->type); }
+
+static bool sampler_array(const hfx_type *t) { return t->kind == TY_ARRAY && t->elem->kind == TY_SAMPLER; }
+
+/* A sampler array passed whole: the callee's S[i] must name one of the effect's samplers (D3D9
+ * has no indexed sampler registers), so the copy reads the caller's array itself, as fxc's
+ * inlining does; the samplers pass then resolves each index. */
+static bool sampler_array_argument(const ir_var *p, const ir_expr *a) {
+    return sampler_array(p->type) && a->kind == IE_VAR && a->var->kind == IRV_UNIFORM && hfx_type_equal(a->type, p->type);
+}
 
 /* What one walk over a function finds: which of its parameters (the first 64) it writes. */
 typedef struct param_writes { const ir_func *fn; uint64_t mask; } param_writes;
@@ -73,6 +82,7 @@ static uint64_t written_mask(ir_ctx *c, specialiser *sp, const ir_func *f) {
 /* Argument i can be bound: a constant for an `in` numeric parameter the callee never writes. */
 static bool bindable(ir_ctx *c, specialiser *sp, const ir_func *f, const ir_expr *call, uint32_t i) {
     const ir_var *p = f->params[i];
+    if (sampler_array_argument(p, call->a[i])) return true;
     return hfx_ir_is_const(call->a[i]) && bindable_param(p) && hfx_type_equal(call->a[i]->type, p->type) &&
            !(written_mask(c, sp, f) & ((uint64_t)1 << i));
 }
@@ -164,7 +174,10 @@ static bool same_constants(const copy *k, const ir_func *f, const ir_expr *call,
     if (k->from != f) return false;
     for (uint32_t i = 0; i < f->param_count; i++) {
         if (bind[i] != (k->args[i] != NULL)) return false;
-        if (bind[i] && memcmp(k->args[i]->cval, call->a[i]->cval, sizeof call->a[i]->cval) != 0) return false;
+        if (!bind[i]) continue;
+        if (k->args[i]->kind == IE_VAR ? k->args[i]->var != call->a[i]->var
+                                       : memcmp(k->args[i]->cval, call->a[i]->cval, sizeof call->a[i]->cval) != 0)
+            return false;
     }
     return true;
 }

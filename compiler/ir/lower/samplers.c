@@ -122,10 +122,47 @@ static ir_stmt *unroll(ir_ctx *c, ir_stmt *s) {
     return b;
 }
 
+/* ---- the counter after an unrolled loop ---- */
+
+typedef struct last_value { const ir_var *counter; const ir_expr *value; } last_value;
+
+static void put_last(ir_ctx *c, ir_expr **slot, void *data) {
+    const last_value *l = data;
+    if ((*slot)->kind == IE_VAR && (*slot)->var == l->counter) *slot = hfx_ir_clone_expr(c, l->value);
+}
+
+static void index_after(ir_ctx *c, ir_expr **slot, void *data) {
+    ir_expr *e = *slot;
+    if (e->kind == IE_INDEX && is_sampler_array(e->a[0])) hfx_ir_walk_expr(c, &e->a[1], put_last, data);
+}
+
+/* `int i; for (i = 0; i < 2; i++) ...; tex2D(S[i], uv)`: a counter declared before the loop
+ * leaves it with its last value, which fxc's unrolled code knows; S[i] in the statements after
+ * the loop (until one writes i) reads that element. Only sampler indexes take the value: what
+ * else reads i is left as written. */
+static void after_loop(ir_ctx *c, const ir_stmt *loop, ir_stmt *block, uint32_t from) {
+    const ir_var *v;
+    double start, step;
+    int trips = hfx_ir_loop_trips(loop, &v, &start, &step);
+    if (trips < 0 || (loop->init && loop->init->kind == IS_DECL && loop->init->var == v)) return;
+    last_value l = {v, hfx_ir_const_scalar(c, v->type, counter_value(v, start, step, trips), loop->loc)};
+    if (!l.value) return;
+    for (uint32_t j = from; j < block->count; j++) {
+        ir_uses u = {v, false, 0, 0, NULL};
+        hfx_ir_count_uses(&u, block->body[j]);
+        if (u.writes) return;
+        hfx_ir_walk_stmt_exprs(c, block->body[j], index_after, &l);
+    }
+}
+
 static ir_stmt *unroll_in(ir_ctx *c, ir_stmt *s) {
     if (!s) return NULL;
     if (s->kind == IS_FOR) s = unroll(c, s);
-    for (uint32_t i = 0; i < s->count; i++) s->body[i] = unroll_in(c, s->body[i]);
+    for (uint32_t i = 0; i < s->count; i++) {
+        ir_stmt *was = s->body[i];
+        s->body[i] = unroll_in(c, was);
+        if (was && was->kind == IS_FOR && s->body[i] != was) after_loop(c, was, s, i + 1);
+    }
     s->then_s = unroll_in(c, s->then_s);
     s->else_s = unroll_in(c, s->else_s);
     return s;

@@ -300,6 +300,44 @@ static void ps_2_0_tex1d(void) {
             "\n// approximately 4 instruction slots used (1 texture, 3 arithmetic)\n");
 }
 
+/* A sampler array is one run of s registers named once in the CTAB: element k at the first + k,
+ * up to the last element read (D3DX binds element k of the parameter to register first + k). S[2]
+ * read first opens the run s0..s2; A, read next, takes s3. */
+static void ps_2_0_sampler_array(void) {
+    listing("sampler2D A;\nsampler2D S[4];\n"
+            "float4 main(float2 uv : TEXCOORD0) : COLOR0 { return tex2D(S[2], uv) + tex2D(A, uv); }\n", "ps_2_0",
+            "//   sampler2D A;\n//   sampler2D S[4];\n//\n//\n// Registers:\n//\n"
+            "//   Name         Reg   Size\n//   ------------ ----- ----\n"
+            "//   S            s0       3\n//   A            s3       1\n//\n\n",
+            "    ps_2_0\n"
+            "    dcl t0.xy\n"
+            "    dcl_2d s2\n"
+            "    dcl_2d s3\n"
+            "    texld r0, t0, s2\n"
+            "    texld r1, t0, s3\n"
+            "    add r0, r0, r1\n"
+            "    mov oC0, r0\n"
+            "\n// approximately 4 instruction slots used (2 texture, 2 arithmetic)\n");
+}
+
+/* `int i; for (i = 0; ...)`: a counter declared before the loop is unrolled as one declared in it
+ * (ps_2_0 has no loops), and the code after the loop reads its last value: s = 4 * 0.25 = 1,
+ * i = 4, i / 4.0 = 1, so the pixel is K * (1, 1, 4, 1). */
+static void ps_2_0_counter_after_loop(void) {
+    listing("float4 K;\nfloat4 main() : COLOR0 { int i; float s = 0; for (i = 0; i < 4; i++) s += 0.25; "
+            "return K * float4(s, i / 4.0, i, 1); }\n",
+            "ps_2_0",
+            "//   float4 K;\n//\n//\n// Registers:\n//\n"
+            "//   Name         Reg   Size\n//   ------------ ----- ----\n"
+            "//   K            c0       1\n//\n\n",
+            "    ps_2_0\n"
+            "    def c1, 0, 0.25, 4, 1\n"
+            "    mov r0, c1.wwzw\n"   /* (1, 1, 4, 1) */
+            "    mul r0, c0, r0\n"
+            "    mov oC0, r0\n"
+            "\n// approximately 3 instruction slots used (0 texture, 3 arithmetic)\n");
+}
+
 static void refused(const char *src, const char *profile, const char *message) {
     bool ok;
     char *text = bc_listing(src, profile, &ok);
@@ -387,5 +425,7 @@ int main(void) {
     RUN(limits);
     RUN(ps_2_0_written_input);
     RUN(ps_2_0_tex1d);
+    RUN(ps_2_0_sampler_array);
+    RUN(ps_2_0_counter_after_loop);
     return test_summary();
 }
