@@ -894,6 +894,7 @@ static int matrix_constant(const d3d9_tx *t, const d3d9_src *m, unsigned count, 
     const d3d9_constant *k = &t->s->constants[c];
     if (k->type != 3 || (k->cls != 2 && k->cls != 3)) return -1;
     unsigned per = k->cls == 3 ? k->cols : k->rows;
+    if (!per) return -1; /* a constant table that says 0 rows or columns */
     *off = (m->num - k->reg) % per;
     *elem = (m->num - k->reg) / per;
     if ((k->cls == 3 ? k->rows : k->cols) != width || *off + count > per || m->num + count > k->reg + k->count)
