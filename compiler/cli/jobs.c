@@ -77,7 +77,7 @@ static bool write_file(const char *path, const void *data, size_t size, char **e
 
 /* /Fo: the raw token stream; /Fc: fxc's listing of it. */
 static void write_shader(const cli_options *o, cli_job *job, const void *code, size_t size) {
-    char *path = o->output ? strdup(o->output) : NULL;
+    char *path = o->output && o->format == CLI_FORMAT_FXC ? strdup(o->output) : NULL;
     if (path && !write_file(path, code, size, &job->error)) job->ok = false;
     free(path);
     if (!o->listing) return;
@@ -88,9 +88,7 @@ static void write_shader(const cli_options *o, cli_job *job, const void *code, s
     free(diags);
 }
 
-static void write_hfxo(const cli_options *o, cli_job *job, const hfx_fx_effect *fx) {
-    cli_write_fxc(o, job, fx); /* /Fo (fxc's format), /Fh, /Fc */
-    if (o->format == CLI_FORMAT_FXC) return;
+static void write_hfxo_file(const cli_options *o, cli_job *job, const hfx_fx_effect *fx) {
     char *path = cli_output_path(o, job->input);
     if (!path) return;
     void *data = NULL;
@@ -100,6 +98,11 @@ static void write_hfxo(const cli_options *o, cli_job *job, const hfx_fx_effect *
     if (job->error) job->ok = false;
     free(data);
     free(path);
+}
+
+static void write_hfxo(const cli_options *o, cli_job *job, const hfx_fx_effect *fx) {
+    cli_write_fxc(o, job, fx); /* /Fo (fxc's format), /Fh, /Fc */
+    if (o->format != CLI_FORMAT_FXC) write_hfxo_file(o, job, fx);
 }
 
 /* The first target the effect carries code for, in the user's order of preference. */
@@ -248,9 +251,12 @@ static void compile_one(const cli_options *o, cli_job *job, hfxc_session *sessio
             warn_missing_targets(o, job, job->effect);
             size_t size = 0;
             const void *code = hfxc_result_bytecode(r, &size);
-            /* fxc /T vs_* | ps_* /Fo: the shader, as fxc writes it; /Fc alone: only its listing */
-            if (code && (o->format == CLI_FORMAT_FXC || (o->entry && !o->output && o->listing))) write_shader(o, job, code, size);
-            else write_hfxo(o, job, job->effect);
+            /* fxc /T vs_* | ps_* /E: /Fo the shader as fxc writes it, /Fc its listing; -o the .hfxo
+             * beside them (/Fc alone writes only the listing) */
+            if (code && o->entry && !o->header) {
+                write_shader(o, job, code, size);
+                if (o->format != CLI_FORMAT_FXC && (o->output || !o->listing)) write_hfxo_file(o, job, job->effect);
+            } else write_hfxo(o, job, job->effect);
             emit_glsl(o, job, job->effect);
             if (job->ok && o->depfile && !cli_write_depfile(o, job->input, r, &job->error)) job->ok = false;
         }

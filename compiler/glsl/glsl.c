@@ -288,6 +288,8 @@ static void feed_input(gp *p, const ir_leaf *l) {
                             "hfx_pos_fixup.z) - 0.5, gl_FragCoord.z, gl_FragCoord.w)");
     } else if (strncmp(l->semantic, "VFACE", 5) == 0) {
         read_as(p, l->type, "vec4(gl_FrontFacing ? 1.0 : -1.0)");
+    } else if (p->io->clamp_ps1_texcoords && p->sh && hfx_glsl_ps1_value_only(p->c, p->sh, l)) {
+        read_as(p, l->type, hfx_arena_printf(p->c->arena, "vec4(clamp(%s.xyz, 0.0, 1.0), 1.0)", varying_name(p, l->semantic)));
     } else {
         read_as(p, l->type, varying_name(p, l->semantic));
     }

@@ -23,6 +23,7 @@ typedef struct glsl_iface {
      * vertex stage does not write them, the pixel stage does not read them, neither declares them. */
     const char **derived; uint32_t derived_count;
     bool clamp_vs_colors;    /* vs_1_1 / vs_2_x COLOR outputs saturate as D3D9's oD0/oD1 */
+    bool clamp_ps1_texcoords; /* ps_1_1..ps_1_3: TEXCOORD inputs read as values saturate (texcoord tN) */
     const hfx_fx_uniform_use *uniforms; uint32_t uniform_count; /* the program's, with their registers */
     uint32_t reg_count;      /* HFXC_PACK_UNIFORMS: size of hfx_c in both stages (0: nothing packed) */
     bool alpha_test;         /* some pass of the effect enables D3D9's alpha test: COLOR0 carries it */
@@ -34,6 +35,9 @@ typedef struct glsl_iface {
     const glsl_record *records[2];
     glsl_record *record;
 } glsl_iface;
+
+/* ps_1_1, ps_1_2 or ps_1_3, whose texcoord instruction clamps (glsl_ps1.c). */
+bool hfx_glsl_ps1_clamps(const char *profile);
 
 /* sem is one of io's derived varyings. */
 bool hfx_glsl_iface_derived(const glsl_iface *io, const char *sem);

@@ -56,6 +56,8 @@ bool hfx_glsl_helper(gp *p, const char *key);
 void hfx_glsl_find_padded(gp *p);
 bool hfx_glsl_is_padded(const gp *p, const ir_var *v);               /* true when key is new: print its text into p->helpers */
 void hfx_glsl_error(gp *p, hfx_loc loc, const char *msg);
+/* glsl_ps1.c: ps_1_1..ps_1_3 read a TEXCOORD input used only as a value clamped to [0, 1]. */
+bool hfx_glsl_ps1_value_only(ir_ctx *c, const ir_shader *sh, const ir_leaf *l); /* l is such an input */
 
 /* glsl_pack.c: HFXC_PACK_UNIFORMS (packed parameters read from `uniform vec4 hfx_c[K]`). */
 uint32_t hfx_glsl_packed_reg(const gp *p, const ir_var *v); /* v's first register, or HFX_NONE */

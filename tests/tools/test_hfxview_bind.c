@@ -27,7 +27,7 @@ static void names_and_semantics(void) {
     float w[16], v[16], p[16], wv[16], vp[16], wvp[16], t[16], inv[16];
     hv_mat4_rotation_y(w, 30 * 3.14159265f / 180); /* --rotate 30 */
     hv_mat4_look_at_rh(v, hv_vec3_make(0, 1, 3), hv_vec3_make(0, 0, 0), hv_vec3_make(0, 1, 0));
-    hv_mat4_perspective_fov_rh(p, 45 * 3.14159265f / 180, 1.0f, 0.1f, 4.0f * sqrtf(10.0f)); /* far: 4 x |eye| */
+    hv_mat4_perspective_fov_rh(p, 45 * 3.14159265f / 180, 1.0f, sqrtf(10.0f) / 4, 4.0f * sqrtf(10.0f)); /* near, far: |eye| / 4, 4 x |eye| */
     hv_mat4_mul(wv, w, v);
     hv_mat4_mul(vp, v, p);
     hv_mat4_mul(wvp, wv, p);

@@ -180,7 +180,7 @@ static void directx_sdk_and_engine_names(void) {
     float proj[16], want[16];
     hv_mat4_mul(want, camera_view, scene.projection);
     expect(fx, "mWorldViewProj", want, 16);
-    hv_mat4_perspective_fov_rh(proj, 60.0f * HV_PI / 180.0f, 1.0f, 0.1f, 20.0f); /* far: 4 x the light's distance */
+    hv_mat4_perspective_fov_rh(proj, 60.0f * HV_PI / 180.0f, 1.0f, 1.25f, 20.0f); /* near, far: 1/4, 4 x the light's distance */
     hv_mat4_mul(want, light_view, proj);
     expect(fx, "g_mLightViewProj", want, 16);
     expect_how(fx, how, "g_mLightViewProj", "name: the light's matrix");
@@ -188,7 +188,7 @@ static void directx_sdk_and_engine_names(void) {
 }
 
 /* Bone palettes get the identity (a float4x3 one its upper-left block); post-processing weights
- * sum to 1; intensities, particle sizes and durations get values only where the effect gave none. */
+ * are a Gaussian kernel summing to 1; intensities, particle sizes and durations get values only where the effect gave none. */
 static void palettes_weights_and_defaults(void) {
     hfx_effect *fx = load(
         "float4x3 Bones[3];\n"
@@ -204,8 +204,16 @@ static void palettes_weights_and_defaults(void) {
     const char *how[16] = {0};
     hv_bind_scene_report(fx, &scene, how, 16);
     expect(fx, "Bones[2]", (const float[12]){1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}, 12);
-    float w[15];
-    for (int i = 0; i < 15; i++) w[i] = 1.0f / 15;
+    /* A Gaussian of one sample's deviation in XNA's bloom order (the centre, then a pair at each
+     * distance), over 15 entries: e^(-d^2 / 2) / S, S = 1 + 2 (e^-0.5 + e^-2 + ... + e^-24.5) =
+     * 2.5066283 (sqrt(2 pi) to 7 digits), so the centre is 0.3989423, the first pair 0.2419707,
+     * the second 0.0539910, the third 0.0044318: the standard normal density. */
+    float w[15], sum = 0;
+    for (int i = 0; i < 15; i++) w[i] = expf(-0.5f * (float)((i + 1) / 2) * (float)((i + 1) / 2));
+    for (int i = 0; i < 15; i++) sum += w[i];
+    for (int i = 0; i < 15; i++) w[i] /= sum;
+    CHECK(fabsf(w[0] - 0.3989423f) < 1e-6f && fabsf(w[2] - 0.2419707f) < 1e-6f);
+    CHECK(fabsf(w[4] - 0.0539910f) < 1e-6f && fabsf(w[6] - 0.0044318f) < 1e-6f);
     expect(fx, "SampleWeights", w, 15);
     expect(fx, "BloomIntensity", (const float[1]){1}, 1);
     expect(fx, "BaseIntensity", (const float[1]){0.75f}, 1);

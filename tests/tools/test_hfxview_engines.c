@@ -4,8 +4,8 @@
  * whole-transform Projection, a shadow-map depth), probed against the effect's equations.
  *
  * The scene: camera at (0, 0, 3) looking at the origin (View = a move of -3 along z), light at
- * (0, 0, 5), a 128 x 128 image, World the identity. The far plane fits the scene: 4 times the
- * eye's distance, 12; near 0.1. */
+ * (0, 0, 5), a 128 x 128 image, World the identity. The planes fit the scene: far 4 times the
+ * eye's distance, 12; near a quarter of it, 0.75 (under half the 2 units to the sphere). */
 #include "test.h"
 
 #include <string.h>
@@ -49,12 +49,12 @@ static void expect(hfx_effect *fx, const char *name, const float *want, size_t n
         }
 }
 
-/* XNA's CreatePerspectiveFieldOfView(45 degrees, 1, 0.1, 12), written out: m[10] = f / (n - f),
+/* XNA's CreatePerspectiveFieldOfView(45 degrees, 1, 0.75, 12), written out: m[10] = f / (n - f),
  * m[14] = n f / (n - f), m[11] = -1. */
 static void projection_45(float p[16]) {
     float y = 1.0f / tanf(22.5f * HV_PI / 180.0f);
     memset(p, 0, 16 * sizeof *p);
-    p[0] = y, p[5] = y, p[10] = 12.0f / (0.1f - 12.0f), p[11] = -1, p[14] = 0.1f * 12.0f / (0.1f - 12.0f);
+    p[0] = y, p[5] = y, p[10] = 12.0f / (0.75f - 12.0f), p[11] = -1, p[14] = 0.75f * 12.0f / (0.75f - 12.0f);
 }
 
 /* The far plane fits the scene (4 x 3 = 12), and what names the camera's planes follows it:
@@ -68,7 +68,7 @@ static void far_plane_and_fog(void) {
     float p[16];
     projection_45(p);
     hv_bind_scene(fx, &scene);
-    expect(fx, "CameraNear", (const float[1]){0.1f}, 1);
+    expect(fx, "CameraNear", (const float[1]){0.75f}, 1);
     expect(fx, "CameraFar", (const float[1]){12}, 1);
     expect(fx, "Projection", p, 16);
     expect(fx, "FogStart", (const float[1]){12}, 1);
@@ -144,12 +144,13 @@ static void iex_matrices(void) {
 }
 
 /* IEX's ShadowProjection is the light's View * Projection (the light at (0, 0, 5): its View a
- * move of -5 along z; a 60 degree square frustum, far 4 x 5 = 20); MatView with a capital M. */
+ * move of -5 along z; a 60 degree square frustum, near 5 / 4 = 1.25, far 4 x 5 = 20); MatView
+ * with a capital M. */
 static void iex_shadow_and_matview(void) {
     hfx_effect *fx = load("float4x4 TransMatrix;\nfloat4x4 ShadowProjection;\nfloat4x4 MatView;\n");
     if (!fx) return;
     float lv[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, -5, 1}, lp[16], want[16];
-    hv_mat4_perspective_fov_rh(lp, 60.0f * HV_PI / 180.0f, 1.0f, 0.1f, 20.0f);
+    hv_mat4_perspective_fov_rh(lp, 60.0f * HV_PI / 180.0f, 1.0f, 1.25f, 20.0f);
     hv_mat4_mul(want, lv, lp);
     hv_bind_scene(fx, &scene);
     expect(fx, "ShadowProjection", want, 16);
@@ -208,6 +209,46 @@ static void light_endings_cones_scales_loops(void) {
     int n = 0;
     CHECK(hfx_param_get_ints(hv_find_param(fx, "Iterations"), &n, 1) == HFX_OK);
     CHECK_INT(n, 32);
+    hfx_effect_destroy(fx);
+}
+
+/* The near plane fits the scene as the far plane does: a quarter of the eye's distance, at most
+ * half way to the unit sphere's nearest point, at least 0.1. */
+static void near_plane_fits(void) {
+    hv_vec3 o = hv_vec3_make(0, 0, 0);
+    CHECK(fabsf(hv_scene_near(hv_vec3_make(0, 0, 3), o) - 0.75f) < 1e-6f);  /* 3 / 4 */
+    CHECK(fabsf(hv_scene_near(hv_vec3_make(0, 0, 5), o) - 1.25f) < 1e-6f);  /* 5 / 4 */
+    CHECK(fabsf(hv_scene_near(hv_vec3_make(0, 0, 2), o) - 0.5f) < 1e-6f);   /* 2 / 4 = (2 - 1) / 2 */
+    CHECK(fabsf(hv_scene_near(hv_vec3_make(0, 0, 1.4f), o) - 0.2f) < 1e-6f); /* (1.4 - 1) / 2 under 0.35 */
+    CHECK(fabsf(hv_scene_near(hv_vec3_make(0, 0, 1.1f), o) - 0.1f) < 1e-6f); /* 0.05 raised to 0.1 */
+    CHECK(fabsf(scene.znear - 0.75f) < 1e-6f);
+}
+
+/* A mirror plane's normal (DigitalRise's ReflectionNormal) is the world's up; an animation's tween
+ * its end; Riemer's cloud cover his 1.1; a wave's Frequency and a Length (divisors) 1, an
+ * Amplitude 0.05; half the viewport (MomoXna's gViewHalfDim : VIEWPORT_HALF_DIMENSION) 64 x 64;
+ * a billboard's Width and Height 1; a Depth to clear to 1; values the effect gives are kept. */
+static void normals_tweens_waves_half_sizes(void) {
+    hfx_effect *fx = load("float3 ReflectionNormal;\nfloat4 PlaneNormal = float4(1, 0, 0, 0);\nfloat tween4;\n"
+                          "float xOvercast;\nfloat Frequency;\nfloat ClothLength;\nfloat Amplitude;\n"
+                          "float2 gViewHalfDim : VIEWPORT_HALF_DIMENSION;\nfloat2 HalfScreenSize;\n"
+                          "float2 ViewportHalf = float2(3, 4);\nfloat _width;\nfloat _height;\nfloat Depth;\n");
+    if (!fx) return;
+    hv_bind_scene(fx, &scene);
+    expect(fx, "ReflectionNormal", (const float[3]){0, 1, 0}, 3);
+    expect(fx, "PlaneNormal", (const float[4]){1, 0, 0, 0}, 4);
+    expect(fx, "tween4", (const float[1]){1}, 1);
+    expect(fx, "xOvercast", (const float[1]){1.1f}, 1);
+    expect(fx, "Frequency", (const float[1]){1}, 1);
+    expect(fx, "ClothLength", (const float[1]){1}, 1);
+    expect(fx, "Amplitude", (const float[1]){0.05f}, 1);
+    expect(fx, "gViewHalfDim", (const float[2]){64, 64}, 2);
+    expect(fx, "HalfScreenSize", (const float[2]){64, 64}, 2);
+    expect(fx, "ViewportHalf", (const float[2]){64, 64}, 2); /* follows the viewport like ViewportSize */
+    expect(fx, "_width", (const float[1]){1}, 1); /* DigitalRise's billboard size */
+    expect(fx, "_height", (const float[1]){1}, 1);
+    expect(fx, "Depth", (const float[1]){1}, 1); /* ClearGBuffer's: the far plane, as Clear's 1 */
+    CHECK(hv_effect_wants_pixels(fx)); /* a half viewport and no matrix: the effect maps pixels */
     hfx_effect_destroy(fx);
 }
 
@@ -270,8 +311,8 @@ static void lone_projection_fills_the_image(void) {
 }
 
 /* DigitalRise's shadow map: (-z_view - CameraNear) / (CameraFar - CameraNear) in red. At the
- * centre the sphere's front is 2 units from the eye: (2 - 0.1) / (12 - 0.1) = 0.15966, 40.7 of
- * 255 (it was 4.8, black, with a far plane of 100). */
+ * centre the sphere's front is 2 units from the eye: (2 - 0.75) / (12 - 0.75) = 0.11111, 28.3 of
+ * 255 (it was 4.8, black, with a far plane of 100 and a near plane of 0.1). */
 static void shadow_map_depth_is_visible(void) {
     static const char fx[] =
         "float4x4 World : WORLD;\nfloat4x4 View : VIEW;\nfloat4x4 Projection : PROJECTION;\n"
@@ -285,7 +326,65 @@ static void shadow_map_depth_is_visible(void) {
         CHECK(0);
         return;
     }
-    CHECK(view_pixel_near(&img, 64, 64, 41, 0, 0, 1));
+    CHECK(view_pixel_near(&img, 64, 64, 28, 0, 0, 1));
+    view_png_free(&img);
+}
+
+/* XNA-Shader-Programming's depth map writes 1 - z/w. At the centre the sphere's front is 2 units
+ * from the eye; with near 0.75 and far 12, z/w = f / (f - n) (1 - n / d) = (12 / 11.25) (1 -
+ * 0.375) = 0.66667, so red 1 - z/w = 0.33333, 85 of 255 (with a near plane of 0.1 it was 0.053,
+ * 13.5, and 9.9 at the fitted far plane's edge of the mesh: black). */
+static void depth_map_one_minus_z_over_w(void) {
+    static const char fx[] =
+        "float4x4 matWorldViewProj;\n"
+        "struct V { float4 p : POSITION0; float d : TEXCOORD0; };\n"
+        "V VS(float4 p : POSITION0) { V o; o.p = mul(p, matWorldViewProj); o.d = 1 - o.p.z / o.p.w; return o; }\n"
+        "float4 PS(float d : TEXCOORD0) : COLOR0 { return float4(d, 0, 0, 1); }\n" TECH;
+    view_png img;
+    if (!run_view(fx, &img)) {
+        CHECK(0);
+        return;
+    }
+    CHECK(view_pixel_near(&img, 64, 64, 85, 0, 0, 1));
+    view_png_free(&img);
+}
+
+/* DigitalRise's log-space blur reads the first 3 of 23 weights and combines samples as
+ * log(sum w_i e^s_i): with every sample s = 1, 1 + log(w0 + w1 + w2). The Gaussian kernel in
+ * XNA's bloom order gives w0 + w1 + w2 = (1 + 2 e^-0.5) / (1 + 2 (e^-0.5 + e^-2 + e^-4.5 + e^-8 +
+ * e^-12.5 + ...)) = 2.21306 / 2.50663 = 0.88288, log = -0.12453: red 0.87547, 223 of 255 (equal
+ * weights gave 1 + log(3 / 23) = -1.04: black). */
+static void log_blur_weights(void) {
+    static const char fx[] =
+        "float4x4 WorldViewProjection;\nfloat Weights[23];\n"
+        "float4 VS(float4 p : POSITION0) : POSITION0 { return mul(p, WorldViewProjection); }\n"
+        "float4 PS() : COLOR0 { return float4(1 + log(Weights[0] + Weights[1] + Weights[2]), 0, 0, 1); }\n" TECH;
+    view_png img;
+    if (!run_view(fx, &img)) {
+        CHECK(0);
+        return;
+    }
+    CHECK(view_pixel_near(&img, 64, 64, 223, 0, 0, 1));
+    view_png_free(&img);
+}
+
+/* MomoXna's text maps pixels with half the viewport as its vertex shader does (Direct3D 9's half
+ * pixel moved back, y flipped about the middle, divided by the half size). The image's
+ * rectangle in pixels lands on the whole image: red in every corner. */
+static void half_viewport_maps_pixels(void) {
+    view_png img;
+    if (!run_view("float2 gViewHalfDim : VIEWPORT_HALF_DIMENSION;\n"
+                  "float4 VS(float4 p : POSITION0) : POSITION0 {\n"
+                  "    float2 q = p.xy - float2(0.5 + gViewHalfDim.x, 0.5); q.y = gViewHalfDim.y - q.y;\n"
+                  "    return float4(q / gViewHalfDim, 0, 1); }\n"
+                  RED_PS "technique T { pass P { CullMode = None; VertexShader = compile vs_2_0 VS();\n"
+                  "    PixelShader = compile ps_2_0 PS(); } }\n", &img)) {
+        CHECK(0);
+        return;
+    }
+    CHECK(view_pixel_near(&img, 0, 0, 255, 0, 0, 0));
+    CHECK(view_pixel_near(&img, 127, 127, 255, 0, 0, 0));
+    CHECK(view_pixel_near(&img, 0, 127, 255, 0, 0, 0));
     view_png_free(&img);
 }
 
@@ -306,6 +405,8 @@ int main(void) {
     RUN(iex_shadow_and_matview);
     RUN(lone_projection_maps_pixels);
     RUN(light_endings_cones_scales_loops);
+    RUN(near_plane_fits);
+    RUN(normals_tweens_waves_half_sizes);
     hfx_device_destroy(dev);
     test_gl_destroy(gl);
     hfxview = view_build_path("tools/hfxview/hfxview");
@@ -315,6 +416,9 @@ int main(void) {
         RUN(iex_effect_shows_its_mesh);
         RUN(shadow_map_depth_is_visible);
         RUN(lone_projection_fills_the_image);
+        RUN(depth_map_one_minus_z_over_w);
+        RUN(log_blur_weights);
+        RUN(half_viewport_maps_pixels);
         test_remove_dir(tmp);
         free(tmp);
         free(hfxview);

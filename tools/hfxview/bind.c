@@ -15,13 +15,19 @@ float hv_scene_far(hv_vec3 eye, hv_vec3 at) {
     return d > 0.25f ? 4.0f * d : 1.0f;
 }
 
+float hv_scene_near(hv_vec3 eye, hv_vec3 at) {
+    float d = hv_vec3_length(hv_vec3_sub(eye, at)), n = 0.25f * d;
+    if (n > 0.5f * (d - 1.0f)) n = 0.5f * (d - 1.0f); /* half way to the unit sphere's nearest point */
+    return n > 0.1f ? n : 0.1f;
+}
+
 void hv_scene_from_options(hv_scene *s, const hv_options *o) {
     memset(s, 0, sizeof *s);
     hv_mat4_rotation_y(s->world, o->yaw_degrees * PI / 180.0f);
     hv_mat4_look_at_rh(s->view, o->eye, o->at, o->up);
     s->width = o->width;
     s->height = o->height;
-    s->znear = 0.1f;
+    s->znear = hv_scene_near(o->eye, o->at);
     s->zfar = hv_scene_far(o->eye, o->at);
     hv_mat4_perspective_fov_rh(s->projection, o->fov_degrees * PI / 180.0f, (float)o->width / (float)o->height,
                                s->znear, s->zfar);
@@ -192,6 +198,7 @@ void hv_light_scene(const hv_scene *s, hv_scene *light) {
     hv_vec3 d = hv_vec3_normalize(hv_vec3_sub(s->at, s->light_position));
     hv_vec3 up = fabsf(d.y) > 0.99f ? hv_vec3_make(0, 0, 1) : hv_vec3_make(0, 1, 0);
     hv_mat4_look_at_rh(light->view, s->light_position, s->at, up);
+    light->znear = hv_scene_near(s->light_position, s->at);
     light->zfar = hv_scene_far(s->light_position, s->at);
     hv_mat4_perspective_fov_rh(light->projection, 60.0f * PI / 180.0f, 1.0f, light->znear, light->zfar);
     light->eye = s->light_position;
@@ -229,6 +236,20 @@ static int is_viewport_size(const char *lower, const hfx_param *p) {
     return !strcmp(lower, "viewport") && hfx_param_rows(p) * hfx_param_columns(p) == 2;
 }
 
+/* Half the viewport's size, as effects that map pixels with (p - half) / half take it: MomoXna's
+ * gViewHalfDim : VIEWPORT_HALF_DIMENSION, a ViewportHalfSize, HalfScreenSize. */
+static int is_half_viewport(hfx_param *p) {
+    char stem[64];
+    const char *sem = hfx_param_semantic(p);
+    hfx_param_class k = hfx_param_get_class(p);
+    if ((k != HFX_CLASS_SCALAR && k != HFX_CLASS_VECTOR) || hfx_param_rows(p) * hfx_param_columns(p) != 2) return 0;
+    for (int i = 0; i < 2; i++) {
+        hv_name_stem(stem, sizeof stem, i ? hfx_param_name(p) : sem ? sem : "");
+        if (strstr(stem, "half") && (strstr(stem, "view") || strstr(stem, "screen"))) return 1;
+    }
+    return 0;
+}
+
 /* DigitalRise's post-processing: a viewport or target size (by name or VIEWPORTSIZE) and no
  * matrix but a projection (read to rebuild depth), so the vertex shader maps pixels itself. */
 static int is_viewport_size_param(hfx_param *p) {
@@ -238,7 +259,7 @@ static int is_viewport_size_param(hfx_param *p) {
     /* Not ScreenResolution and its kin: XNA's post-processing samples read them in pixel
      * shaders drawn by SpriteBatch's own vertex shader, so their passes take clip space. */
     return !strcmp(low, "viewportsize") || !strcmp(low, "viewportpixelsize") || !strcmp(low, "targetsize") ||
-           (sem && (!strcasecmp(sem, "ViewportSize") || !strcasecmp(sem, "ViewportPixelSize")));
+           (sem && (!strcasecmp(sem, "ViewportSize") || !strcasecmp(sem, "ViewportPixelSize"))) || is_half_viewport(p);
 }
 
 /* What the whole effect says about its matrices. iex: it declares IEX's TransMatrix (see
@@ -339,6 +360,10 @@ static const char *bind_one(hfx_param *p, const hv_scene *s, int view_only, cons
     hfx_param_class k = hfx_param_get_class(p);
     if (k == HFX_CLASS_MATRIX && hfx_param_get_type(p) == HFX_TYPE_FLOAT) return bind_matrix(p, s, view_only, f, set);
     hv_lower_copy(low, sizeof low, hfx_param_name(p));
+    if (is_half_viewport(p)) {
+        float half[2] = {0.5f * (float)s->width, 0.5f * (float)s->height};
+        return *set = hv_set_vector(p, half, 2, 0), "name: half the viewport size";
+    }
     if ((k == HFX_CLASS_SCALAR || k == HFX_CLASS_VECTOR) && is_viewport_size(low, p)) {
         float wh[2] = {(float)s->width, (float)s->height};
         return *set = hv_set_vector(p, wh, 2, 0), "name: the viewport size";

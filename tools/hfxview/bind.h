@@ -37,8 +37,14 @@ enum { HV_HEADLESS_TIME_SECONDS = 1 };       /* time parameters in pictures: rep
 /* The far plane fits the scene, as a model viewer fits its clipping planes to what it shows:
  * 4 times the eye's distance from what it looks at (the unit-sphere mesh seen from 3 units
  * sits in the first third of the range), so depth an effect writes normalised by the far plane
- * (shadow maps, G-buffers: depth / CameraFar) spans a visible part of 0..1. Near is 0.1. */
+ * (shadow maps, G-buffers: depth / CameraFar) spans a visible part of 0..1. */
 float hv_scene_far(hv_vec3 eye, hv_vec3 at);
+/* The near plane fits the scene too: a quarter of the eye's distance (0.75 for the default
+ * camera; far / near 16), at most half way to the nearest point of the unit sphere the meshes
+ * fit in, at least 0.1. Depth maps written as z / w or 1 - z / w (XNA-Shader-Programming's
+ * `1 - z/w`) then spread over a visible range: with a near plane of 0.1 the whole mesh sat in
+ * the last 5% of it and came out black. */
+float hv_scene_near(hv_vec3 eye, hv_vec3 at);
 
 void hv_scene_from_options(hv_scene *s, const hv_options *o);
 

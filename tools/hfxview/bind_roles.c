@@ -33,7 +33,7 @@ static const char *const role_phrases[] = {
     NULL, "name: the camera position", "name: light direction", "name: light position", "name: light colour",
     "name: spot target", "name: white (a material or light colour)", "name: grey ambient", "name: a sensible scalar",
     "name: light count", "name: light radius", "name: the clock (seconds)", "name: the frame time",
-    "name: equal weights summing to 1", "name: the particles' viewport scale", "name: the camera's near plane",
+    "name: a Gaussian kernel summing to 1", "name: the particles' viewport scale", "name: the camera's near plane",
     "name: the camera's far plane", "name: the camera's forward direction", "name: the camera's up direction",
     "name: the world's up direction (0, 1, 0)", "name: fog start beyond the far plane (no fog)",
     "name: fog end beyond the far plane (no fog)", "name: the first channel (1, 0, 0, 0)",
@@ -97,6 +97,10 @@ static const struct { const char *stem; role r; float v; } roles[] = {
     {"samplecount", R_SCALAR, 16}, {"stepsize", R_SCALAR, 1.0f / 32},
     {"wavelength", R_SCALAR, 1}, {"wavelengths", R_SCALAR, 1}, /* divisors: waves of one unit */
     {"waveheight", R_SCALAR, 0.05f}, {"waveheights", R_SCALAR, 0.05f},
+    {"width", R_SCALAR, 1}, {"height", R_SCALAR, 1}, /* a billboard's or quad's size (DigitalRise's _width) */
+    {"depth", R_SCALAR, 1}, {"cleardepth", R_SCALAR, 1}, /* a depth to clear to: the far plane, as Clear's 1 */
+    {"tween", R_SCALAR, 1}, /* an animation's interpolation factor: its end, the whole effect */
+    {"overcast", R_SCALAR, 1.1f}, /* Riemer's XNA tutorials' clouds: pow(noise, xOvercast), his 1.1 */
     {"scenenodetype", R_SCALAR, 1}, /* DigitalRise: 1 a static object (G-buffer depth positive), the one mesh */
     {"activelights", R_LIGHT_COUNT, 0}, {"numlights", R_LIGHT_COUNT, 0}, {"lightcount", R_LIGHT_COUNT, 0},
     {"numberoflights", R_LIGHT_COUNT, 0}, {"lightradius", R_RADIUS, 0},
@@ -112,7 +116,10 @@ static const struct { const char *name; float v; } exact_scalars[] = {{"c1", 1},
 /* Endings that say what a name the table lacks is: DigitalRise's PointLightDiffuse and
  * SpotlightDirection a light's, AmbientLightUp the world's up; "SunLight" and "SkyLight" are light
  * colours, "InstanceColor" a colour (white; emission, fog and borders stay black), "Density"
- * and "BumpStrength" weights of 1, "ReflectionTextureSize" a texture's size. */
+ * and "BumpStrength" weights of 1, "ReflectionTextureSize" a texture's size. A vector ending in
+ * Normal (DigitalRise's ReflectionNormal, a mirror plane's) is the world's up, the normal of the
+ * ground plane a viewer shows; a Frequency or Length (divisors: waveLength = ClothLength /
+ * Frequency) 1, an Amplitude a small 0.05. */
 static const struct { const char *ending; role r; float v; } endings[] = {
     {"lightdiffuse", R_LIGHT_COLOR, 0}, {"lightspecular", R_WHITE, 0}, {"lightdirection", R_LIGHT_DIR, 0},
     {"lightposition", R_LIGHT_POS, 0}, {"lightrange", R_SCALAR, 20}, {"up", R_WORLD_UP, 0},
@@ -120,6 +127,7 @@ static const struct { const char *ending; role r; float v; } endings[] = {
     {"strength", R_SCALAR, 1}, {"amount", R_SCALAR, 1}, {"density", R_SCALAR, 1}, {"texturesize", R_SCALAR, 256},
     {"mapsize", R_SCALAR, 256}, {"far", R_FAR, 0}, {"farplane", R_FAR, 0}, {"farclip", R_FAR, 0},
     {"near", R_NEAR, 0}, {"nearplane", R_NEAR, 0}, {"nearclip", R_NEAR, 0},
+    {"normal", R_WORLD_UP, 0}, {"frequency", R_SCALAR, 1}, {"length", R_SCALAR, 1}, {"amplitude", R_SCALAR, 0.05f},
 };
 
 static int ends_in(const char *s, const char *ending) {
@@ -156,10 +164,22 @@ static hv_vec3 array_light_position(const hv_scene *s, size_t k) {
 
 static const float array_light_colors[ARRAY_LIGHTS][4] = {{1.0f, 0.85f, 0.7f, 1}, {0.6f, 0.8f, 1.0f, 1}, {0.7f, 1.0f, 0.7f, 1}};
 
-/* Equal weights summing to 1 (a box filter): with offsets left at zero, a copy of the input. */
+/* Sample k of a blur kernel in the order XNA's bloom sample fills SampleWeights: the centre,
+ * then a pair at each distance (k = 1, 2 at one sample, 3, 4 at two...). */
+static float kernel_weight(size_t k) {
+    float d = (float)((k + 1) / 2);
+    return expf(-0.5f * d * d);
+}
+
+/* A Gaussian kernel of one sample's deviation in that order, summing to 1 over the whole array:
+ * with offsets left at zero a copy of the input, and a technique that reads only the first few
+ * entries (DigitalRise's Logarithmic3..9 over a 23-entry array, combined in log space) still
+ * gets nearly all the weight (0.88 in the first 3) where equal weights gave it 3 / 23. */
 static int set_weights(hfx_param *p) {
     size_t n = hfx_param_elements(p), set = 0;
-    for (size_t k = 0; k < n; k++) set += hv_set_scalar_default(hfx_param_element(p, k), 1.0f / (float)n);
+    float sum = 0;
+    for (size_t k = 0; k < n; k++) sum += kernel_weight(k);
+    for (size_t k = 0; k < n; k++) set += hv_set_scalar_default(hfx_param_element(p, k), kernel_weight(k) / sum);
     return set > 0;
 }
 
