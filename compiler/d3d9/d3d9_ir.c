@@ -748,8 +748,9 @@ static ir_var *dst_var(d3d9_tx *t, const d3d9_dst *d) {
 
 /* _sat on the register just written (r = value): r = isnan(r) ? 0 : clamp(r, 0, 1). D3D10 and
  * later hardware, which runs D3D9 shaders today, saturates NaN to 0; GLSL leaves clamp, min and
- * max of NaN undefined, and a select on a comparison is folded back into them by drivers. The
- * register is read back rather than the value repeated, so the GLSL grows by one statement. */
+ * max of NaN undefined (and an optimiser may turn a select on a comparison into them), isnan
+ * says the case. The register is read back rather than the value repeated, so the GLSL grows by
+ * one statement. */
 static void saturate_in_place(d3d9_tx *t, ir_expr *lhs) {
     const hfx_type *ty = lhs->type;
     unsigned n = hfx_type_components(ty);
