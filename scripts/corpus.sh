@@ -72,13 +72,15 @@ one() {
     printf "%-6s %-6s %-8s %-6s %s\n" "$c330" "$ces" "$val" "$ren" "$fx"
 }
 
-# The share of pixels of two PNGs within 2/255 in every channel (RGB, through ImageMagick's
-# `convert FILE ppm:-`), as a fraction; -1 when their sizes differ or one cannot be read.
+# The share of pixels of two PNGs within 2/255 in every channel (RGB as stored, through
+# ImageMagick's `convert FILE -alpha off ppm:-`: without -alpha off it flattens the picture
+# over white, which hides the colour of transparent pixels), as a fraction; -1 when their
+# sizes differ or one cannot be read.
 alike_share() {
     python3 - "$1" "$2" <<'PY'
 import subprocess, sys
 def load(path):
-    data = subprocess.run(["convert", path, "ppm:-"], capture_output=True, check=True).stdout
+    data = subprocess.run(["convert", path, "-alpha", "off", "ppm:-"], capture_output=True, check=True).stdout
     magic, w, h, _, px = data.split(maxsplit=4)
     return int(w), int(h), px
 try:
@@ -156,11 +158,12 @@ compare_web() {
     [ -x /usr/bin/chromium ] || { echo "web page: skipped (no /usr/bin/chromium)"; return 0; }
     [ -f "$build/web/index.html" ] || { echo "web page: skipped (no site in $build/web: scripts/web.sh)"; return 0; }
     [ -d "$here/web/node_modules/playwright-core" ] || { echo "web page: skipped (npm ci in web/)"; return 0; }
-    awk '$1 == "ok" { print $6 }' "$out/table.txt" > "$out/web-list.txt"
+    # the effect#technique column to the end of the line: paths may hold spaces
+    awk '$1 == "ok" { sub(/^[^ ]+ +[^ ]+ +[^ ]+ +[^ ]+ +[^ ]+ +/, ""); print }' "$out/table.txt" > "$out/web-list.txt"
     node "$here/scripts/web_corpus.js" --site "$build/web" --corpus "$dir" --list "$out/web-list.txt" \
         --out "$out/png" > "$out/web-log.txt" 2>&1
     export -f alike_share
-    while read -r state line rest; do
+    while IFS=$'\t' read -r state line rest; do
         local name png share=- same=-
         name=$(echo "${line%#*}" | tr '/' '_') png=$out/png/$name.${line##*#}
         if [ "$state" = ok ]; then
@@ -168,7 +171,7 @@ compare_web() {
             same=$(awk -v s="$share" 'BEGIN { print (s >= 0.99 ? "alike" : "DIFFER") }')
         fi
         printf "%-4s %-6s %-6s %s %s\n" "$state" "$same" "$share" "$line" "$rest"
-    done < <(grep -E "^(ok|FAIL) " "$out/web-log.txt") | tee "$out/web-table.txt"
+    done < <(grep -E "^(ok|FAIL)"$'\t' "$out/web-log.txt") | tee "$out/web-table.txt"
     awk '{ n++ } $1 == "ok" { drew++ } $2 == "alike" { alike++ }
          END { printf "web page: drew %d of the %d techniques GL drew; alike %d / %d (%.1f%%)\n",
                drew, n, alike, n, n ? 100 * alike / n : 0 }' "$out/web-table.txt"

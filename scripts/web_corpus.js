@@ -1,14 +1,16 @@
 // web_corpus.js: techniques of real effects drawn by the web page (web/, built by scripts/web.sh)
 // in headless Chromium, as `scripts/corpus.sh compare` draws them with hfxview on GL and Vulkan:
 // hfxview's scene and defaults (the page shares its scene code), 128x128, the camera at
-// hfxview's eye (0, 1, 3), time parameters at hfxview's headless 1 s. Each effect's folder goes
-// into the page's file system with the paths it has in its repository, so relative #includes
-// resolve (the page has no -I folders). One PNG per technique, and a line per technique:
-//   ok|FAIL effect#technique [first error]
+// hfxview's eye (0, 1, 3), time parameters at hfxview's headless 1 s. Each effect's repository
+// goes into the page's file system with the paths it has there, and the page searches the
+// include folders scripts/corpus.sh gives hfxview (every folder above the effect's, up to the
+// repository's root: a game's working folder). One PNG per technique, and a line per technique:
+//   ok|FAIL<tab>effect#technique[<tab>first error]   (tabs: paths may hold spaces)
 //   node scripts/web_corpus.js --site SITE --corpus DIR --list FILE --out DIR
 // FILE holds "effect#technique" lines (effect relative to DIR); PNGs go to
 // OUT/<effect with / as _>.<technique>.web.png. Exit 77 when Chromium cannot start.
 "use strict";
+const {execFileSync} = require("child_process");
 const fs = require("fs");
 const path = require("path");
 
@@ -38,23 +40,25 @@ function repositoryFiles(effect) {
     }
   };
   walk(path.join(corpus, repo));
-  return {main: path.relative(repo, effect), files};
+  const main = path.relative(repo, effect), include = [];
+  for (let d = path.dirname(main); d !== "."; d = path.dirname(d)) include.push(path.dirname(d) === "." ? "" : path.dirname(d));
+  return {main, files, include};
 }
 
 // The effect into the page; its first error when it does not compile, else null.
 async function open(page, effect) {
-  const {main, files} = repositoryFiles(effect);
-  return page.evaluate(({main, files}) => {
+  const {main, files, include} = repositoryFiles(effect);
+  return page.evaluate(({main, files, include}) => {
     const bytes = (b) => Uint8Array.from(atob(b), (c) => c.charCodeAt(0));
     window.HFX_EFFECTS.corpus = Object.fromEntries(Object.entries(files).map(([n, b]) => [n, bytes(b)]));
-    const r = window.hfxPage.selectEffect("corpus", main);
+    const r = window.hfxPage.selectEffect("corpus", main, include);
     if (r && r.ok) return null;
     const texts = window.hfxPage.diagnosticsText().filter((t) => t.includes("error"));
     return texts[0] || "no result";
-  }, {main, files});
+  }, {main, files, include});
 }
 
-// Technique t drawn (every pass, as hfxview), the canvas as a PNG data URL.
+// Technique t drawn (every pass, as hfxview): the framebuffer's RGBA bytes (hfxPage.frame).
 async function draw(page, t) {
   return page.evaluate((t) => {
     const tech = document.getElementById("technique");
@@ -62,8 +66,16 @@ async function draw(page, t) {
     tech.dispatchEvent(new Event("change"));
     window.hfxPage.setClock(1);
     window.hfxPage.renderNow();
-    return document.getElementById("view").toDataURL("image/png");
+    return window.hfxPage.frame();
   }, t);
+}
+
+// The frame as a PNG with its bytes as they are (ImageMagick, which corpus.sh compares with).
+function writePng(frame, file) {
+  const raw = file + ".rgba";
+  fs.writeFileSync(raw, Buffer.from(frame.rgba, "base64"));
+  execFileSync("convert", ["-size", `${frame.width}x${frame.height}`, "-depth", "8", "rgba:" + raw, "png32:" + file]);
+  fs.unlinkSync(raw);
 }
 
 async function main() {
@@ -84,6 +96,7 @@ async function main() {
     const c = document.getElementById("view");
     c.width = c.height = 128;
     window.hfxPage.setCamera(0, Math.atan2(1, 3) * 180 / Math.PI, Math.sqrt(10)); // hfxview's eye (0, 1, 3)
+    window.hfxPage.renderNow(); // the session's size is then 128 x 128 when effects load (ViewportSize, the screen mesh)
   });
   const lines = fs.readFileSync(arg("list"), "utf8").split("\n").filter((l) => l.includes("#"));
   let current = null, error = null;
@@ -91,16 +104,16 @@ async function main() {
     const [effect, t] = [line.slice(0, line.lastIndexOf("#")), Number(line.slice(line.lastIndexOf("#") + 1))];
     if (effect !== current) (current = effect), (error = await open(page, effect).catch((e) => String(e.message)));
     if (error) {
-      console.log(`FAIL ${line} ${error.split("\n")[0]}`);
+      console.log(`FAIL\t${line}\t${error.split("\n")[0]}`);
       continue;
     }
-    const url = await draw(page, t).catch(() => null);
-    if (!url) {
-      console.log(`FAIL ${line} the page failed to draw`);
+    const frame = await draw(page, t).catch(() => null);
+    if (!frame) {
+      console.log(`FAIL\t${line}\tthe page failed to draw`);
       continue;
     }
-    fs.writeFileSync(path.join(out, `${effect.replace(/\//g, "_")}.${t}.web.png`), Buffer.from(url.split(",")[1], "base64"));
-    console.log(`ok   ${line}`);
+    writePng(frame, path.join(out, `${effect.replace(/\//g, "_")}.${t}.web.png`));
+    console.log(`ok\t${line}`);
   }
   await browser.close();
 }

@@ -66,11 +66,25 @@ function jumpTo(d) {
   editor.goto(d.line, d.col);
 }
 
+// Include folders for the root: every folder above its own up to the root of what was opened
+// (a dropped folder's top, a built-in group, the corpus runner's repository), as
+// scripts/corpus.sh passes hfxc and hfxview -I for a game's working folder
+// (`#include "DATA\Shader\Blur.inc"` from DATA/Shader/x.fx). Searched after the file's own folder.
+function includeFolders(main) {
+  const parts = main.split("/").slice(0, -1), dirs = [];
+  while (parts.length) {
+    parts.pop();
+    dirs.push(SRC + parts.join("/"));
+  }
+  return dirs.map((d) => d.replace(/\/$/, ""));
+}
+
 function compile() {
   if (!state.main) return null;
   writeFiles();
   const t0 = performance.now();
-  const r = JSON.parse(call("hfxw_compile", "string", ["string"], [SRC + state.main]) || "null");
+  const include = (state.include || includeFolders(state.main)).join("\n");
+  const r = JSON.parse(call("hfxw_compile", "string", ["string", "string"], [SRC + state.main, include]) || "null");
   const ms = performance.now() - t0;
   page.compileMs.push(ms);
   if (r) page.compilerMs = r.compile_ms; // the compiler alone (the rest: .hfxo, load, WebGL link)
@@ -178,9 +192,11 @@ function showFile(name) {
   markEditor();
 }
 
-function setFiles(files, main) {
+// include: the folders (relative to the files' root) to search, instead of includeFolders(main).
+function setFiles(files, main, include) {
   state.files = files;
   state.main = main;
+  state.include = include ? include.map((d) => (SRC + d).replace(/\/$/, "")) : null;
   $("file-list").textContent = "";
   for (const name of files.keys()) $("file-list").append(new Option(name, name));
   showFile(main);
@@ -188,10 +204,10 @@ function setFiles(files, main) {
 }
 
 // A folder of the built-in list (effects.js): its every file, with `name` the root.
-function selectEffect(group, name) {
+function selectEffect(group, name, include) {
   const folder = window.HFX_EFFECTS[group];
   $("effect-list").value = group + "/" + name;
-  return setFiles(new Map(Object.entries(folder)), name);
+  return setFiles(new Map(Object.entries(folder)), name, include);
 }
 
 // Whether bytes start as an effect fxc compiled: fx_2_0's version token, XNA's effect header or
@@ -207,15 +223,36 @@ function binaryNote(name, bytes) {
     "// its shaders' Direct3D 9 bytecode is translated to GLSL ES.\n";
 }
 
+// Files by their path in what was opened: a folder's files (picked with "Open folder…" or
+// dropped) keep their paths under the folder's name, so includes resolve as on disk.
 async function openFiles(list) {
   const files = new Map();
   for (const f of list) {
     const bytes = new Uint8Array(await f.arrayBuffer());
-    files.set(f.name, isBinaryEffect(bytes) ? bytes : new TextDecoder().decode(bytes));
+    files.set(f.path || f.webkitRelativePath || f.name, isBinaryEffect(bytes) ? bytes : new TextDecoder().decode(bytes));
   }
   const names = [...files.keys()];
   const main = names.find((n) => /\.fx$/i.test(n)) || names.find((n) => files.get(n) instanceof Uint8Array) || names[0];
   if (main) setFiles(files, main);
+}
+
+// A drop's files, folders walked (their entries), each as {path, arrayBuffer}.
+async function droppedFiles(dt) {
+  const entries = [...dt.items].map((i) => i.webkitGetAsEntry && i.webkitGetAsEntry()).filter(Boolean);
+  if (!entries.some((e) => e.isDirectory)) return [...dt.files];
+  const out = [];
+  const walk = async (e) => {
+    if (e.isFile) {
+      const f = await new Promise((ok, fail) => e.file(ok, fail));
+      out.push({path: e.fullPath.replace(/^\//, ""), arrayBuffer: () => f.arrayBuffer()});
+    } else if (e.isDirectory) {
+      const reader = e.createReader();
+      for (let batch; (batch = await new Promise((ok, fail) => reader.readEntries(ok, fail))).length;)
+        for (const child of batch) await walk(child);
+    }
+  };
+  for (const e of entries) await walk(e);
+  return out.sort((a, b) => (a.path < b.path ? -1 : 1));
 }
 
 function fillEffectList() {
@@ -279,6 +316,8 @@ function wireControls() {
   });
   $("file-list").addEventListener("change", () => showFile($("file-list").value));
   $("open-files").addEventListener("change", () => openFiles($("open-files").files));
+  $("open-folder").addEventListener("change", () =>
+    openFiles([...$("open-folder").files].sort((a, b) => (a.webkitRelativePath < b.webkitRelativePath ? -1 : 1))));
   $("glsl-stage").addEventListener("change", showGlsl);
   for (const b of document.querySelectorAll(".tabs button[data-tab]"))
     b.addEventListener("click", () => {
@@ -292,7 +331,7 @@ function wireControls() {
   document.addEventListener("drop", (e) => {
     e.preventDefault();
     document.body.classList.remove("dropping");
-    openFiles(e.dataTransfer.files);
+    droppedFiles(e.dataTransfer).then(openFiles);
   });
 }
 
@@ -333,11 +372,24 @@ Object.assign(page, {
     M._free(p);
     requestRender();
   },
+  // The whole frame as the framebuffer holds it: RGBA bytes, top row first, base64. Not the
+  // canvas's toDataURL, which takes the colours as premultiplied by alpha and divides them by
+  // it; hfxview's PNG (scripts/corpus.sh compare) has the framebuffer's bytes.
+  frame() {
+    const canvas = $("view"), gl = canvas.getContext("webgl2"), w = canvas.width, h = canvas.height;
+    const rows = new Uint8Array(w * h * 4), out = new Uint8Array(w * h * 4);
+    gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, rows);
+    for (let y = 0; y < h; y++) out.set(rows.subarray((h - 1 - y) * w * 4, (h - y) * w * 4), y * w * 4);
+    let text = "";
+    for (let i = 0; i < out.length; i += 0x8000) text += String.fromCharCode.apply(null, out.subarray(i, i + 0x8000));
+    return {width: w, height: h, rgba: btoa(text)};
+  },
   lineCount: () => editor.view.state.doc.lines,
   editorText: () => editor.getText(),
   // The compiler alone on the current effect, `rounds` times after as many warm-up compiles:
   // the mean in ms (hfx_web.c's hfxw_compile_bench; bench/bench_web_compile natively).
-  compileBench: (rounds) => call("hfxw_compile_bench", "number", ["string", "number"], [SRC + state.main, rounds]),
+  compileBench: (rounds) => call("hfxw_compile_bench", "number", ["string", "string", "number"],
+    [SRC + state.main, (state.include || includeFolders(state.main)).join("\n"), rounds]),
   cursor() {
     const st = editor.view.state, at = st.selection.main.head, line = st.doc.lineAt(at);
     return {line: line.number, col: at - line.from + 1};

@@ -1,7 +1,8 @@
 /* hfxview --vulkan against hfxview on GL: every seed effect (but multilights.fx, which does not
  * compile) and every fx/ effect, rendered at 128 x 128 on both back ends, must agree within
  * 2/255 on at least 99% of the pixels; the share is printed for each. Each picture takes one
- * pipeline per pass, and the validation layer says nothing (hfxview prints what it says). */
+ * pipeline per pass, and the validation layer says nothing (hfxview prints what it says); a
+ * message it does send makes hfxview exit 1. */
 #include <dirent.h>
 
 #include "files.h"
@@ -87,6 +88,28 @@ static void fx_folder_matches(void) {
     free(dir);
 }
 
+/* A validation-layer message fails hfxview (exit status 1, as a failed effect), not only the
+ * tests: the layer's best-practices checks, switched on from the environment as vkconfig does
+ * (VK_LAYER_ENABLES), warn on every run (VK_EXT_debug_utils is a debugging extension), so
+ * hfxview itself is unchanged. The same run without them exits 0. Without the layer installed
+ * the variable does nothing and there is nothing to check. */
+static void validation_message_fails(void) {
+    char *png = view_format("%s/layer.png", tmp), *out = NULL, *clean = NULL;
+    char *args = view_format("--vulkan %s/fx/ambient.fx -o %s --size 32x32", HFX_SOURCE_DIR, png);
+    char *warned = view_format("VK_LAYER_ENABLES=VK_VALIDATION_FEATURE_ENABLE_BEST_PRACTICES_EXT %s %s", hfxview, args);
+    char *plain = view_format("%s %s", hfxview, args);
+    int rc = view_run(warned, &out), clean_rc = view_run(plain, &clean);
+    CHECK(clean_rc == 0 && clean && !strstr(clean, "vulkan validation:"));
+    if (out && strstr(out, "vulkan validation:")) {
+        CHECK(rc == 1);
+        CHECK(strstr(out, "hfxview: error: the Vulkan validation layer sent ") != NULL);
+        printf("validation: a layer message makes hfxview exit %d\n", rc);
+    } else {
+        printf("validation: not checked (no validation layer: hfxview exited %d without a message)\n", rc);
+    }
+    free(out), free(clean), free(warned), free(plain), free(args), free(png);
+}
+
 int main(void) {
     test_require_seeds();
     hfxview = view_build_path("tools/hfxview/hfxview");
@@ -98,6 +121,7 @@ int main(void) {
     if (rc != 0 && out && strstr(out, "no Vulkan device")) test_skip(out);
     free(out);
     tmp = test_temp_dir();
+    RUN(validation_message_fails);
     RUN(seeds_match);
     RUN(fx_folder_matches);
     printf("gl-vs-vulkan: %d pipelines made for %d Vulkan pictures\n", pipelines, pictures);

@@ -11,6 +11,8 @@
 //   - multilights.fx: X3013 at (204,20); a warning (X3206) listed, marked, clickable;
 //   - a PNG picked for a texture, several files opened with an #include among them, files
 //     dropped (with the include, and without it: X1507), an OBJ mesh, the GLSL tab, the .hfxo download;
+//   - a folder opened: an include found from its root (scripts/corpus.sh's include folders);
+//   - the mesh following the effect as hfxview's (the screen rectangle for a ViewportSize pass);
 //   - an fx_2_0 binary dropped (hfxc /T fx_2_0 /Fo of a source here): drawn, ShaderIndex switching;
 //   - hfxview's default 2D, cube and volume textures; time parameters on a fixed clock;
 //   - screenshots of three seeds, and the page's timings (first picture, compile).
@@ -246,6 +248,84 @@ async function droppedFiles(page) {
   check(texts.includes(want) && (await files()) === "flat.fx", `dropped flat.fx alone: ${JSON.stringify(texts)} (want ${want})`);
   const marks = await page.evaluate(() => [...document.querySelectorAll(".cm-lintRange-error")].map((e) => e.textContent));
   check(marks.includes("#"), `the editor marks the #include (${JSON.stringify(marks)})`);
+}
+
+// Include folders (scripts/corpus.sh's rule for a game's working folder): an effect in
+// game/DATA/Shader includes "DATA\\Shader\\tint.inc", which resolves only from game/, the
+// opened folder's root. The folder picked with "Open folder…" (its files keep their paths):
+// compiled, the centre is the include's TINT; through the page API with no include folders:
+// fxc's X1507 at the #include; with ["game"]: compiled again.
+const WORKING_FOLDER = INCLUDING.replace('#include "colour.fxh"', '#include "DATA\\Shader\\tint.inc"');
+const TINT3 = [0.5, 0.75, 0.25, 1];
+
+async function includeFolders(page) {
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), "hfx-page-"));
+  fs.mkdirSync(path.join(dir, "game/DATA/Shader"), {recursive: true});
+  fs.writeFileSync(path.join(dir, "game/DATA/Shader/flat.fx"), WORKING_FOLDER);
+  fs.writeFileSync(path.join(dir, "game/DATA/Shader/tint.inc"), "#define TINT float4(0.5, 0.75, 0.25, 1.0)\n");
+  await page.evaluate(() => (window.hfxPage.lastResult = null));
+  await page.setInputFiles("#open-folder", path.join(dir, "game"));
+  await page.waitForFunction(() => window.hfxPage.lastResult, null, {timeout: 10000}).catch(() => {});
+  const r = await page.evaluate(async () => {
+    const p = window.hfxPage;
+    await p.setMesh("plane");
+    p.setCamera(0, 60, 3);
+    p.renderNow();
+    return {ok: p.lastResult && p.lastResult.ok, files: [...document.getElementById("file-list").options].map((o) => o.value),
+      centre: p.pixel(256, 256), texts: p.diagnosticsText()};
+  });
+  fs.rmSync(dir, {recursive: true});
+  check(r.ok && r.files.join() === "game/DATA/Shader/flat.fx,game/DATA/Shader/tint.inc",
+    `opened folder game: DATA\\Shader\\tint.inc found from the folder's root (${r.files}; ${r.texts.join(" | ")})`);
+  check(near(r.centre, TINT3), `game/DATA/Shader/flat.fx: centre ${show(r.centre)} is tint.inc's TINT ${showWant(TINT3)}`);
+  const api = await page.evaluate(({fx, inc}) => {
+    const p = window.hfxPage;
+    window.HFX_EFFECTS.folders = {"game/DATA/Shader/flat.fx": fx, "game/DATA/Shader/tint.inc": inc};
+    const none = p.selectEffect("folders", "game/DATA/Shader/flat.fx", []);
+    const noneTexts = p.diagnosticsText();
+    const root = p.selectEffect("folders", "game/DATA/Shader/flat.fx", ["game"]);
+    delete window.HFX_EFFECTS.folders;
+    return {none: none.ok, noneTexts, root: root.ok};
+  }, {fx: WORKING_FOLDER, inc: "#define TINT float4(0.5, 0.75, 0.25, 1.0)\n"});
+  const want = "game/DATA/Shader/flat.fx(1,1): error X1507: failed to open source file: 'DATA\\Shader\\tint.inc'";
+  check(!api.none && api.noneTexts.includes(want), `no include folders: ${JSON.stringify(api.noneTexts)} (want ${want})`);
+  check(api.root, "include folders [\"game\"]: compiled");
+}
+
+// The mesh follows the effect as hfxview's does (--mesh unset; hv_effect_wants_pixels): a
+// post-processing effect that maps pixel positions through ViewportSize itself (DigitalRise's
+// ScreenToProjection) gets the picture's rectangle in pixels, uv 0..1 from the top left; its
+// pixel shader writes uv, so pixel (128, 384) of 512 x 512 reads (0.25, 0.75) (within 2/255
+// whether the centre is at 128 or 128.5), pixel (4, 4) near the top left 4.25 / 512. On the sphere the same
+// effect would cover a dot at the top left. The next effect, with a camera, gets the sphere back.
+const SCREEN_PASS = `float2 ViewportSize;
+void VS(float4 p : POSITION, float2 uv : TEXCOORD0, out float4 o : POSITION, out float2 t : TEXCOORD0) {
+  o = float4(p.x / ViewportSize.x * 2 - 1, 1 - p.y / ViewportSize.y * 2, 0, 1);
+  t = uv;
+}
+float4 PS(float2 t : TEXCOORD0) : COLOR { return float4(t, 0, 1); }
+technique Copy { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+`;
+
+async function screenMesh(page) {
+  const r = await page.evaluate(async ({screen, flat}) => {
+    const p = window.hfxPage;
+    await p.setMesh("auto");
+    window.HFX_EFFECTS.mesh = {"screen.fx": screen, "flat.fx": flat, "colour.fxh": "#define TINT float4(0.25, 0.5, 0.75, 1.0)\n"};
+    const a = p.selectEffect("mesh", "screen.fx");
+    p.renderNow();
+    const post = {ok: a.ok, probe: p.pixel(128, 384), corner: p.pixel(4, 4)};
+    const b = p.selectEffect("mesh", "flat.fx");
+    p.setCamera(0, 60, 3);
+    p.renderNow();
+    delete window.HFX_EFFECTS.mesh;
+    return {post, flat: {ok: b.ok, centre: p.pixel(256, 256), corner: p.pixel(0, 0)}};
+  }, {screen: SCREEN_PASS, flat: INCLUDING});
+  check(r.post.ok && near(r.post.probe, [0.25, 0.75, 0, 1]), `auto mesh, ViewportSize pass: pixel (128, 384) ${show(r.post.probe)} expected ${showWant([0.25, 0.75, 0, 1])}`);
+  const corner = [4.25 / 512, 4.25 / 512, 0, 1];
+  check(near(r.post.corner, corner), `auto mesh, ViewportSize pass: pixel (4, 4) ${show(r.post.corner)} expected ${showWant(corner)}`);
+  check(r.flat.ok && near(r.flat.centre, TINT), `auto mesh, then an effect with a camera: the sphere's centre ${show(r.flat.centre)} is TINT ${showWant(TINT)}`);
+  check(!near(r.flat.corner, TINT), `auto mesh, then an effect with a camera: the corner ${show(r.flat.corner)} is not covered`);
 }
 
 // Textures the application never set get hfxview's defaults of their kind (image.h: 8 x 8
@@ -585,6 +665,8 @@ async function main() {
   await objMesh(page, x);
   await glslAndDownload(page);
   await droppedFiles(page);
+  await includeFolders(page);
+  await screenMesh(page);
   await droppedBinary(page);
   await defaultTextures(page);
   await screenshots(page);

@@ -3,7 +3,6 @@
 
 #include <stdio.h>
 #include <string.h>
-#include <strings.h>
 #include <unistd.h>
 
 #include "image.h"
@@ -13,9 +12,6 @@ typedef hv_tex_kind tex_kind;
 #define KIND_2D HV_TEX_2D
 #define KIND_CUBE HV_TEX_CUBE
 #define KIND_3D HV_TEX_3D
-
-static int is_texture(hfx_param_type t) { return t >= HFX_TYPE_TEXTURE && t <= HFX_TYPE_TEXTURECUBE; }
-static int is_sampler(hfx_param_type t) { return t >= HFX_TYPE_SAMPLER && t <= HFX_TYPE_SAMPLERCUBE; }
 
 /* GL's textures: ids to delete at release. */
 static uint64_t gl_make(void *ctx, const hv_image *img, hv_tex_kind kind) {
@@ -52,34 +48,6 @@ static uint64_t from_file(hv_textures *t, const hv_texture_maker *gl, const char
     return id;
 }
 
-static const char *string_annotation(hfx_param *p, const char *const *names) {
-    for (size_t i = 0; i < hfx_param_annotation_count(p); i++) {
-        hfx_annotation *a = hfx_param_annotation_at(p, i);
-        const char *s = hfx_annotation_string(a);
-        for (size_t n = 0; s && *s && names[n]; n++)
-            if (strcasecmp(hfx_annotation_name(a), names[n]) == 0) return s;
-    }
-    return NULL;
-}
-
-/* Where the passes bind it; else FX Composer's ResourceType; else the declared type. */
-static tex_kind kind_of(hfx_param *p) {
-    switch (hfx_param_texture_target(p)) {
-    case GL_TEXTURE_CUBE_MAP: return KIND_CUBE;
-    case GL_TEXTURE_3D: return KIND_3D;
-    case GL_TEXTURE_2D: return KIND_2D;
-    default: break;
-    }
-    static const char *const type_names[] = {"ResourceType", "Type", NULL};
-    const char *rt = string_annotation(p, type_names);
-    if (rt && strcasecmp(rt, "cube") == 0) return KIND_CUBE;
-    if (rt && (strcasecmp(rt, "3d") == 0 || strcasecmp(rt, "volume") == 0)) return KIND_3D;
-    hfx_param_type type = hfx_param_get_type(p);
-    if (type == HFX_TYPE_TEXTURECUBE || type == HFX_TYPE_SAMPLERCUBE) return KIND_CUBE;
-    if (type == HFX_TYPE_TEXTURE3D || type == HFX_TYPE_SAMPLER3D) return KIND_3D;
-    return KIND_2D;
-}
-
 /* name in the effect's folder, then in each -I folder (as the effect's #includes are found). */
 static int find_file(const hv_options *o, const char *name, char *out, size_t outlen) {
     if (name[0] == '/') return snprintf(out, outlen, "%s", name), access(out, R_OK) == 0;
@@ -97,22 +65,16 @@ static int find_file(const hv_options *o, const char *name, char *out, size_t ou
  * it can be read; else 0 and a note, and the caller falls back to the default. */
 static uint64_t from_annotation(hv_textures *t, const hv_texture_maker *gl, const hv_options *o, hfx_param *p) {
     static const char *const file_names[] = {"ResourceName", "name", "File", "FileName", NULL};
-    const char *name = string_annotation(p, file_names);
+    const char *name = hv_param_string_annotation(p, file_names);
     char path[1024], err[512];
     if (!name) return 0;
     if (!find_file(o, name, path, sizeof path)) {
         fprintf(stderr, "hfxview: note: %s names '%s', not found; using the default texture\n", hfx_param_name(p), name);
         return 0;
     }
-    uint64_t id = from_file(t, gl, path, kind_of(p), err, sizeof err);
+    uint64_t id = from_file(t, gl, path, hv_texture_kind(p), err, sizeof err);
     if (!id) fprintf(stderr, "hfxview: note: %s; using the default texture\n", err);
     return id;
-}
-
-static int has_texture_params(hfx_effect *fx) {
-    for (size_t i = 0; i < hfx_effect_param_count(fx); i++)
-        if (is_texture(hfx_param_get_type(hfx_effect_param_at(fx, i)))) return 1;
-    return 0;
 }
 
 static int bind_given(hv_textures *t, const hv_texture_maker *gl, hfx_effect *fx, const hv_kv *given, char *err, size_t errlen) {
@@ -122,11 +84,11 @@ static int bind_given(hv_textures *t, const hv_texture_maker *gl, hfx_effect *fx
     memcpy(name, given->name, n);
     name[n] = '\0';
     hfx_param *p = hfx_effect_param(fx, name);
-    if (!p || !(is_texture(hfx_param_get_type(p)) || is_sampler(hfx_param_get_type(p)))) {
+    if (!p || !hv_param_is_texture_or_sampler(p)) {
         snprintf(err, errlen, "--texture: the effect has no texture or sampler parameter '%s'", name);
         return -1;
     }
-    uint64_t id = from_file(t, gl, given->value, kind_of(p), err, errlen);
+    uint64_t id = from_file(t, gl, given->value, hv_texture_kind(p), err, errlen);
     if (!id) return -1;
     gl->set(p, id);
     return 0;
@@ -137,16 +99,14 @@ int hv_bind_textures_with(hv_textures *t, const hv_texture_maker *gl, hfx_effect
     memset(t, 0, sizeof *t);
     for (size_t k = 0; k < o->texture_count; k++)
         if (bind_given(t, gl, fx, &o->textures[k], err, errlen) != 0) return -1;
-    /* Samplers only get a texture of their own when no texture parameter can feed them. */
-    int samplers_too = !has_texture_params(fx);
+    int samplers_too = hv_effect_samplers_take_textures(fx);
     for (size_t i = 0; i < hfx_effect_param_count(fx); i++) {
         hfx_param *p = hfx_effect_param_at(fx, i);
-        hfx_param_type type = hfx_param_get_type(p);
         unsigned int current = 0;
-        if (!(is_texture(type) || (samplers_too && is_sampler(type)))) continue;
+        if (!hv_param_takes_texture(p, samplers_too)) continue;
         if (hfx_param_get_texture(p, &current) == HFX_OK && current) continue; /* given above */
         uint64_t id = from_annotation(t, gl, o, p);
-        if (!id) id = checker(t, gl, kind_of(p));
+        if (!id) id = checker(t, gl, hv_texture_kind(p));
         if (id) gl->set(p, id);
     }
     return 0;

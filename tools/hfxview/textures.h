@@ -33,6 +33,17 @@ typedef struct hv_texture_maker {
  * Files named by annotations that cannot be read are a note on stderr and the default. */
 int hv_bind_textures_with(hv_textures *t, const hv_texture_maker *m, hfx_effect *fx, const hv_options *o, char *err,
                           size_t errlen);
+/* hfxview's rule (texture_rule.c, shared with the web page): every texture parameter takes a
+ * texture; samplers take one of their own only when the effect has no texture parameter that
+ * could feed them (hv_effect_samplers_take_textures gives samplers_too). */
+int hv_effect_samplers_take_textures(hfx_effect *fx);
+int hv_param_takes_texture(hfx_param *p, int samplers_too);
+int hv_param_is_texture_or_sampler(hfx_param *p);
+/* The kind of texture p takes: its sampler's target, else a ResourceType / Type annotation
+ * ("cube", "3d", "volume"), else its type; 2D by default. */
+hv_tex_kind hv_texture_kind(hfx_param *p);
+/* The first non-empty string annotation of p named one of names (NULL-terminated), or NULL. */
+const char *hv_param_string_annotation(hfx_param *p, const char *const *names);
 int hv_bind_textures(hv_textures *t, const hv_gl *gl, hfx_effect *fx, const hv_options *o, char *err, size_t errlen);
 void hv_textures_release(hv_textures *t, const hv_gl *gl);
 

@@ -14,6 +14,7 @@
 #include "mesh.h"
 #include "options.h"
 #include "session.h"
+#include "textures.h"
 #include "vmath.h"
 #include "webgl.h"
 
@@ -47,18 +48,40 @@ int hfxw_draw_init(hfxw_session *s) {
     s->yaw = 0, s->pitch = 20, s->distance = 3;
     s->width = s->height = 512;
     char err[128];
-    return hfxw_mesh_set(s, "sphere", err, sizeof err);
+    return hfxw_mesh_set(s, "auto", err, sizeof err);
 }
 
-int hfxw_mesh_set(hfxw_session *s, const char *spec, char *err, size_t errlen) {
-    hv_mesh m;
-    memset(&m, 0, sizeof m);
-    int rc = hv_mesh_load(&m, spec, err, errlen);
+/* m onto the GPU in place of the session's mesh. */
+static int mesh_upload(hfxw_session *s, hv_mesh *m, int rc) {
     if (rc == 0) {
         hv_gpu_mesh_release(&s->gl, &s->mesh);
-        rc = hv_gpu_mesh_upload(&s->gl, &s->mesh, &m);
+        rc = hv_gpu_mesh_upload(&s->gl, &s->mesh, m);
     }
-    hv_mesh_free(&m);
+    hv_mesh_free(m);
+    return rc;
+}
+
+/* spec: "auto" (hfxview's choice for each effect, hfxw_mesh_fit), a built-in name or an .obj path. */
+int hfxw_mesh_set(hfxw_session *s, const char *spec, char *err, size_t errlen) {
+    s->mesh_auto = !strcmp(spec, "auto");
+    s->mesh_screen_w = s->mesh_screen_h = 0;
+    if (s->mesh_auto) spec = "sphere";
+    hv_mesh m;
+    memset(&m, 0, sizeof m);
+    int rc = mesh_upload(s, &m, hv_mesh_load(&m, spec, err, errlen));
+    return rc || !s->mesh_auto ? rc : hfxw_mesh_fit(s, s->width, s->height);
+}
+
+int hfxw_mesh_fit(hfxw_session *s, int width, int height) {
+    if (!s->mesh_auto) return 0;
+    int screen = s->fx && hv_effect_wants_pixels(s->fx);
+    if (screen ? s->mesh_screen_w == width && s->mesh_screen_h == height : !s->mesh_screen_w) return 0;
+    hv_mesh m;
+    memset(&m, 0, sizeof m);
+    char err[128];
+    int rc = mesh_upload(s, &m, screen ? hv_mesh_screen(&m, width, height) : hv_mesh_load(&m, "sphere", err, sizeof err));
+    s->mesh_screen_w = rc == 0 && screen ? width : 0;
+    s->mesh_screen_h = rc == 0 && screen ? height : 0;
     return rc;
 }
 
@@ -100,15 +123,17 @@ static void bind_view(hfxw_session *s, int width, int height) {
     hv_bind_view(s->fx, &sc);
 }
 
-/* Every texture parameter still empty gets hfxview's default of its kind. */
+/* The parameters hfxview gives a texture (textures.h: every texture parameter, samplers only
+ * when no texture parameter could feed them), still empty, get its default of their kind. */
 void hfxw_bind_default_textures(hfxw_session *s) {
+    int samplers_too = hv_effect_samplers_take_textures(s->fx);
     for (size_t i = 0; i < hfx_effect_param_count(s->fx); i++) {
         hfx_param *p = hfx_effect_param_at(s->fx, i);
         unsigned have = 0;
-        unsigned target = hfx_param_texture_target(p);
-        unsigned tex = target == GL_TEXTURE_2D ? s->checker : target == GL_TEXTURE_CUBE_MAP ? s->cube
-                       : target == GL_TEXTURE_3D ? s->volume : 0;
-        if (tex && hfx_param_get_texture(p, &have) == HFX_OK && !have) hfx_param_set_texture(p, tex);
+        if (!hv_param_takes_texture(p, samplers_too)) continue;
+        hv_tex_kind kind = hv_texture_kind(p);
+        unsigned tex = kind == HV_TEX_CUBE ? s->cube : kind == HV_TEX_3D ? s->volume : s->checker;
+        if (hfx_param_get_texture(p, &have) == HFX_OK && !have) hfx_param_set_texture(p, tex);
     }
 }
 
@@ -116,6 +141,7 @@ void hfxw_draw_frame(hfxw_session *s, int width, int height) {
     hv_clear(&s->gl, width, height, s->clear);
     hfx_device_set_viewport(s->dev, 0, 0, width, height);
     if (!s->fx) return;
+    hfxw_mesh_fit(s, width, height); /* the screen rectangle follows the canvas */
     bind_view(s, width, height);
     hfx_technique *t = hfx_effect_technique_at(s->fx, (size_t)s->technique);
     if (t) hv_draw_technique(&s->gl, &s->mesh, s->fx, t, s->pass, s->blend_add, NULL);

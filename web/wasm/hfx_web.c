@@ -78,24 +78,39 @@ static hfx_effect *load_compiled(hfxw_session *s, const hfx_fx_effect *code, voi
     return fx;
 }
 
-/* Compiles path (in the in-memory file system) for GLSL ES 300 and, when it compiles and
- * loads, makes it the session's effect; otherwise the previous one stays. Answers
- * {"ok", "diagnostics": [...], "text", "load_error", "compile_ms"}. */
-static hfxc_options page_options(void) {
+/* The compile's options: GLSL ES 300, packed uniforms, and the include folders (hfxc's -I)
+ * split from `includes`, one folder a line, into dirs (at most max; the rest are dropped). */
+#define HFXW_MAX_INCLUDE_DIRS 32
+static hfxc_options page_options(char *includes, const char **dirs, size_t max) {
     hfxc_options o;
     memset(&o, 0, sizeof o);
     o.targets = 1u << HFX_TARGET_GLSLES300;
     o.flags = HFXC_PACK_UNIFORMS; /* as hfx_effect_load compiles */
+    for (char *line = includes, *next; line && *line && o.include_dir_count < max; line = next) {
+        next = strchr(line, '\n');
+        if (next) *next++ = 0;
+        if (*line) dirs[o.include_dir_count++] = line;
+    }
+    o.include_dirs = dirs;
     return o;
 }
 
-EMSCRIPTEN_KEEPALIVE const char *hfxw_compile(const char *path) {
+/* Compiles path (in the in-memory file system) for GLSL ES 300, searching `includes` (folders,
+ * one a line, as hfxc's -I) after the including file's folder; when it compiles and loads, it
+ * becomes the session's effect, otherwise the previous one stays. Answers
+ * {"ok", "diagnostics": [...], "text", "load_error", "compile_ms"}. */
+EMSCRIPTEN_KEEPALIVE const char *hfxw_compile(const char *path, const char *includes) {
     hfxw_session *s = &session;
-    hfxc_options o = page_options();
+    const char *dirs[HFXW_MAX_INCLUDE_DIRS];
+    char *folders = strdup(includes ? includes : "");
+    hfxc_options o = page_options(folders, dirs, HFXW_MAX_INCLUDE_DIRS);
     double start = emscripten_get_now();
     hfxc_result *r = hfxc_compile_file(path, &o);
     double compiled = emscripten_get_now() - start; /* the compiler alone, to compare with hfxc */
-    if (!r) return hfxw_answer(NULL);
+    if (!r) {
+        free(folders);
+        return hfxw_answer(NULL);
+    }
     hfxw_json j = {0};
     char *text = hfxc_diagnostics_text(r), *why = NULL;
     int ok = hfxc_result_ok(r);
@@ -110,6 +125,7 @@ EMSCRIPTEN_KEEPALIVE const char *hfxw_compile(const char *path) {
             s->technique = 0, s->pass = -1;
             hfxw_bind_default_textures(s);
             hfxw_bind_scene(s, s->width, s->height); /* the panel then shows what the frame uses */
+            hfxw_mesh_fit(s, s->width, s->height);
         } else {
             hfx_fx_effect_free(code);
             free(hfxo);
@@ -125,24 +141,30 @@ EMSCRIPTEN_KEEPALIVE const char *hfxw_compile(const char *path) {
     free(text);
     free(why);
     hfxc_result_free(r);
+    free(folders);
     return hfxw_answer(hfxw_json_take(&j));
 }
 
-/* The compiler alone on path, as hfxw_compile runs it: `rounds` compiles after as many
- * warm-up ones, the mean in ms (bench/bench_web_compile.c is the same loop natively);
+/* The compiler alone on path with the include folders, as hfxw_compile runs it: `rounds`
+ * compiles after as many warm-up ones, the mean in ms (bench/bench_web_compile.c is the same
+ * loop natively);
  * -1 when it does not compile. One clock reading per loop, so the browser's coarse timer
  * (0.1 ms) does not limit the figure. */
-EMSCRIPTEN_KEEPALIVE double hfxw_compile_bench(const char *path, int rounds) {
-    hfxc_options o = page_options();
-    double start = 0;
+EMSCRIPTEN_KEEPALIVE double hfxw_compile_bench(const char *path, const char *includes, int rounds) {
+    const char *dirs[HFXW_MAX_INCLUDE_DIRS];
+    char *folders = strdup(includes ? includes : "");
+    hfxc_options o = page_options(folders, dirs, HFXW_MAX_INCLUDE_DIRS);
+    double start = 0, ms = -1;
     for (int i = 0; i < 2 * rounds; i++) {
         if (i == rounds) start = emscripten_get_now();
         hfxc_result *r = hfxc_compile_file(path, &o);
         int ok = r && hfxc_result_ok(r);
         hfxc_result_free(r);
-        if (!ok) return -1;
+        if (!ok) rounds = 0; /* ends the loop: -1 */
     }
-    return rounds > 0 ? (emscripten_get_now() - start) / rounds : -1;
+    if (rounds > 0) ms = (emscripten_get_now() - start) / rounds;
+    free(folders);
+    return ms;
 }
 
 EMSCRIPTEN_KEEPALIVE void hfxw_render(int width, int height) {
@@ -166,7 +188,8 @@ EMSCRIPTEN_KEEPALIVE void hfxw_set_technique(int technique, int pass) {
 /* 1: the application adds passes 2.. to the first (ONE, ONE, no depth writes), 0: passes as written. */
 EMSCRIPTEN_KEEPALIVE void hfxw_set_blend_add(int on) { session.blend_add = on != 0; }
 
-/* A built-in mesh name or an .obj path in the file system: "" when set, else the message. */
+/* "auto" (hfxview's choice per effect), a built-in mesh name or an .obj path in the file
+ * system: "" when set, else the message. */
 EMSCRIPTEN_KEEPALIVE const char *hfxw_set_mesh(const char *spec) {
     char *err = session.message;
     err[0] = 0;

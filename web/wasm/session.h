@@ -22,6 +22,8 @@ typedef struct hfxw_session {
     int blend_add;           /* the application adds passes 2.. to the first (hfxview --blend-passes add) */
     hv_gl gl;                /* hfxview's GL table over WebGL 2, for its drawing code (render.c) */
     hv_gpu_mesh mesh;
+    int mesh_auto;           /* the mesh follows the effect as hfxview's: its screen rectangle or the sphere */
+    int mesh_screen_w, mesh_screen_h; /* the screen rectangle's size when that is the mesh, else 0 */
     unsigned checker, cube, volume; /* the default 2D, cube and volume textures (hfxview's) */
     unsigned textures[64];   /* textures the page made for parameters, to free with the effect */
     size_t texture_count;
@@ -43,6 +45,9 @@ const char *hfxw_answer(char *json); /* keeps json as the session's answer and r
 int hfxw_draw_init(hfxw_session *s);
 void hfxw_draw_frame(hfxw_session *s, int width, int height);
 int hfxw_mesh_set(hfxw_session *s, const char *spec, char *err, size_t errlen);
+/* With mesh_auto, hfxview's choice for the loaded effect at width x height (hv_effect_wants_pixels:
+ * the image's rectangle in pixels for post-processing and sprite effects, else the sphere). */
+int hfxw_mesh_fit(hfxw_session *s, int width, int height);
 unsigned hfxw_texture_rgba(hfxw_session *s, const unsigned char *rgba, int width, int height);
 void hfxw_bind_default_textures(hfxw_session *s);
 /* World (identity), View, Projection, the camera, and hfxview's default light into every
