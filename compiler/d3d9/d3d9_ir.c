@@ -31,7 +31,86 @@ ir_expr *hfx_d3d9_tx_var(d3d9_tx *t, ir_var *v) {
     return e;
 }
 
+/* Whether the operation of x works component by component, each result component from the same
+ * component of every vector operand (the translator's arithmetic, comparisons, selects). */
+static bool componentwise(const ir_expr *x) {
+    switch (x->kind) {
+    case IE_UNARY: return x->op == OP_NEG;
+    case IE_BINARY: return x->op >= OP_ADD && x->op <= OP_NE && x->op != OP_MOD && (x->op < OP_SHL || x->op > OP_BITXOR);
+    case IE_SELECT: case IE_CONVERT: return true;
+    case IE_INTRIN:
+        switch (x->intrin) {
+        case HFX_INTR_ABS: case HFX_INTR_MIN: case HFX_INTR_MAX: case HFX_INTR_CLAMP: case HFX_INTR_SATURATE:
+        case HFX_INTR_FRAC: case HFX_INTR_EXP2: case HFX_INTR_LOG2: case HFX_INTR_RSQRT: case HFX_INTR_SIGN:
+        case HFX_INTR_LERP: case HFX_INTR_DDX: case HFX_INTR_DDY: case HFX_INTR_ROUND:
+            return true;
+        default: return false;
+        }
+    default: return false;
+    }
+}
+
+/* x.comps with the swizzle moved onto x's operands, when x works component by component on
+ * vectors as wide as itself (scalar operands stay as they are), or onto a constant's values: the
+ * components an instruction's write mask drops are then not computed, and the GLSL says
+ * `r2.w = r4.y * r4.x` for fxc's `mul r2.w, r4.y, r4.x` instead of a float4 product and a pick.
+ * NULL when x is no such expression. */
+static ir_expr *narrowed(d3d9_tx *t, ir_expr *x, const uint8_t *comps, unsigned n) {
+    unsigned width = hfx_type_components(x->type);
+    if (x->type->kind != TY_VECTOR || n >= width) return NULL;
+    const hfx_type *ty = n == 1 ? hfx_type_scalar(t->c->types, x->type->base) : hfx_type_vector(t->c->types, x->type->base, n);
+    if (x->kind == IE_CONST) {
+        ir_expr *e = hfx_ir_new_expr(t->c, IE_CONST, ty, x->loc, 0);
+        for (unsigned k = 0; k < n; k++) e->cval[k] = x->cval[comps[k]];
+        return e;
+    }
+    if (!componentwise(x)) return NULL;
+    for (uint32_t i = 0; i < x->n; i++) {
+        const hfx_type *at = x->a[i]->type;
+        if (!(at->kind == TY_SCALAR || (at->kind == TY_VECTOR && hfx_type_components(at) == width))) return NULL;
+    }
+    ir_expr *e = hfx_ir_new_expr(t->c, x->kind, ty, x->loc, x->n);
+    e->op = x->op;
+    e->intrin = x->intrin;
+    for (uint32_t i = 0; i < x->n; i++)
+        e->a[i] = x->a[i]->type->kind == TY_SCALAR ? x->a[i] : hfx_d3d9_tx_swizzle(t, x->a[i], comps, n);
+    return e;
+}
+
+/* The value x.comps already is without a swizzle: x itself (every component in order), or the
+ * part a splat or a float4 padding was made from; NULL when there is none. */
+static ir_expr *unswizzled(d3d9_tx *t, ir_expr *x, const uint8_t *comps, unsigned n) {
+    bool in_order = true;
+    unsigned top = 0;
+    for (unsigned k = 0; k < n; k++) {
+        in_order &= comps[k] == k;
+        if (comps[k] > top) top = comps[k];
+    }
+    hfx_type_kind kind = x->type->kind;
+    if (in_order && (kind == TY_VECTOR || kind == TY_SCALAR) && hfx_type_components(x->type) == n) return x;
+    ir_expr *a = x->n ? x->a[0] : NULL;
+    if (x->kind == IE_CONVERT && a && a->type->kind == TY_SCALAR) { /* a splat: n copies of a */
+        const hfx_type *ty = n == 1 ? hfx_type_scalar(t->c->types, x->type->base) : hfx_type_vector(t->c->types, x->type->base, n);
+        return hfx_type_equal(ty, a->type) ? a : hfx_ir_new_convert(t->c, ty, a);
+    }
+    if (x->kind == IE_CONSTRUCT && a && a->type->kind == TY_VECTOR && a->type->base == x->type->base &&
+        top < hfx_type_components(a->type)) /* float4(v, 0...) read inside v */
+        return hfx_d3d9_tx_swizzle(t, a, comps, n);
+    return narrowed(t, x, comps, n);
+}
+
+/* x.comps; a swizzle of a swizzle is one, and what unswizzled finds has none. The translator
+ * swizzles every register it reads and every value it writes: without this the GLSL spelled
+ * `vec4(dot(a, b)).x` and `r0.xxxx.x` for each scalar instruction. */
 ir_expr *hfx_d3d9_tx_swizzle(d3d9_tx *t, ir_expr *x, const uint8_t *comps, unsigned n) {
+    uint8_t both[4];
+    if (x->kind == IE_SWIZZLE) {
+        for (unsigned k = 0; k < n; k++) both[k] = x->comps[comps[k]];
+        comps = both;
+        x = x->a[0];
+    }
+    ir_expr *plain = unswizzled(t, x, comps, n);
+    if (plain) return plain;
     hfx_base b = x->type->base;
     ir_expr *e = hfx_ir_new_expr(t->c, IE_SWIZZLE, n == 1 ? hfx_type_scalar(t->c->types, b)
                                                       : hfx_type_vector(t->c->types, b, n), t->loc, 1);
@@ -667,6 +746,32 @@ static ir_var *dst_var(d3d9_tx *t, const d3d9_dst *d) {
     }
 }
 
+/* _sat on the register just written (r = value): r = isnan(r) ? 0 : clamp(r, 0, 1). D3D10 and
+ * later hardware, which runs D3D9 shaders today, saturates NaN to 0; GLSL leaves clamp, min and
+ * max of NaN undefined (and an optimiser may turn a select on a comparison into them), isnan
+ * says the case. The register is read back rather than the value repeated, so the GLSL grows by
+ * one statement. */
+static void saturate_in_place(d3d9_tx *t, ir_expr *lhs) {
+    const hfx_type *ty = lhs->type;
+    unsigned n = hfx_type_components(ty);
+    const hfx_type *bt = n == 1 ? hfx_type_scalar(t->c->types, B_BOOL) : hfx_type_vector(t->c->types, B_BOOL, n);
+    ir_expr *nan = hfx_ir_new_expr(t->c, IE_INTRIN, bt, t->loc, 1);
+    nan->intrin = HFX_INTR_ISNAN;
+    nan->a[0] = hfx_ir_clone_expr(t->c, lhs);
+    ir_expr *sat = hfx_ir_new_expr(t->c, IE_INTRIN, ty, t->loc, 1);
+    sat->intrin = HFX_INTR_SATURATE;
+    sat->a[0] = hfx_ir_clone_expr(t->c, lhs);
+    ir_expr *sel = hfx_ir_new_expr(t->c, IE_SELECT, ty, t->loc, 3);
+    sel->a[0] = nan;
+    sel->a[1] = hfx_ir_const_scalar(t->c, ty, 0, t->loc);
+    sel->a[2] = sat;
+    ir_expr *as = hfx_ir_new_expr(t->c, IE_ASSIGN, ty, t->loc, 2);
+    as->op = OP_NONE;
+    as->a[0] = hfx_ir_clone_expr(t->c, lhs);
+    as->a[1] = sel;
+    hfx_d3d9_tx_emit(t, as);
+}
+
 void hfx_d3d9_tx_write(d3d9_tx *t, const d3d9_dst *d, ir_expr *value) {
     if (!value || t->failed) return;
     if (d->relative) { hfx_d3d9_tx_fail(t, "relative destinations are not supported yet"); return; }
@@ -676,12 +781,13 @@ void hfx_d3d9_tx_write(d3d9_tx *t, const d3d9_dst *d, ir_expr *value) {
         float k = d->shift > 0 ? (float)(1 << d->shift) : 1.0f / (float)(1 << -d->shift);
         value = hfx_ir_new_binary(t->c, OP_MUL, value->type, value, hfx_ir_const_scalar(t->c, value->type, k, t->loc));
     }
-    if (d->mods & D3D9_DMOD_SAT) {
+    bool sat_nan = (d->mods & D3D9_DMOD_SAT) && value->type->base == B_FLOAT;
+    if ((d->mods & D3D9_DMOD_SAT) && !sat_nan) {
         ir_expr *s = hfx_ir_new_expr(t->c, IE_INTRIN, value->type, t->loc, 1);
         s->intrin = HFX_INTR_SATURATE;
         s->a[0] = value;
         value = s;
-    } else if (hfx_d3d9_tx_ps1(t) && value->type->base == B_FLOAT) {
+    } else if (!sat_nan && hfx_d3d9_tx_ps1(t) && value->type->base == B_FLOAT) {
         /* ps_1_x registers hold [-1, 1] (ps_1_4: [-8, 8], D3D's minimum MaxPixelShaderValue) */
         float r = t->s->model == D3D9_SM(1, 4) ? 8.0f : 1.0f;
         ir_expr *c = hfx_ir_new_expr(t->c, IE_INTRIN, value->type, t->loc, 3);
@@ -708,6 +814,7 @@ void hfx_d3d9_tx_write(d3d9_tx *t, const d3d9_dst *d, ir_expr *value) {
     as->a[0] = lhs;
     as->a[1] = rhs;
     hfx_d3d9_tx_emit(t, as);
+    if (sat_nan) saturate_in_place(t, lhs);
 }
 
 static bool model_supported(d3d9_tx *t) {
@@ -776,88 +883,121 @@ static bool same_src(const d3d9_src *a, const d3d9_src *b) {
            a->num == b->num && a->rel_type == b->rel_type && a->rel_comp == b->rel_comp && a->rel_num == b->rel_num;
 }
 
-/* The CTAB constant whose registers m.num .. m.num + count - 1 are, as a float matrix (no array)
- * with `width` components a register, read whole (no index, modifier or swizzle) and not under a
- * def or a preshader; -1 otherwise. *off: m.num's register within it. */
-static int matrix_constant(const d3d9_tx *t, const d3d9_src *m, unsigned count, unsigned width, unsigned *off) {
+/* The CTAB constant whose registers m.num .. m.num + count - 1 are, as a float matrix (or one
+ * element of a matrix array) with `width` components a register, read whole (no index, modifier
+ * or swizzle) and not under a def or a preshader; -1 otherwise. *off: m.num's register within the
+ * matrix, *elem: the element (0 for no array). */
+static int matrix_constant(const d3d9_tx *t, const d3d9_src *m, unsigned count, unsigned width, unsigned *off,
+                           unsigned *elem) {
     if (m->type != D3D9_REG_CONST || m->relative || m->mod != D3D9_SMOD_NONE || m->swizzle != 0xe4) return -1;
     int c = constant_at(t->s, D3D9_RS_FLOAT4, m->num);
     if (c < 0) return -1;
     const d3d9_constant *k = &t->s->constants[c];
-    if (k->elements > 1 || k->type != 3 || (k->cls != 2 && k->cls != 3)) return -1;
+    if (k->type != 3 || (k->cls != 2 && k->cls != 3)) return -1;
     unsigned per = k->cls == 3 ? k->cols : k->rows;
-    *off = m->num - k->reg;
-    if ((k->cls == 3 ? k->rows : k->cols) != width || *off + count > per) return -1;
+    if (!per) return -1; /* a constant table that says 0 rows or columns */
+    *off = (m->num - k->reg) % per;
+    *elem = (m->num - k->reg) / per;
+    if ((k->cls == 3 ? k->rows : k->cols) != width || *off + count > per || m->num + count > k->reg + k->count)
+        return -1; /* past the registers fxc gave the constant: another constant's, or none */
     for (unsigned q = 0; q < count; q++)
         if (preshader_of(t->s, D3D9_PRE_C, m->num + q) >= 0 || def_at(t->s, m->num + q)) return -1;
     return c;
 }
 
-/* dot(v, register j of M) for every register j of matrix constant c at once: mul(v, M) when the
- * registers are M's columns, mul(M, v) when they are its rows; as float4. */
-static ir_expr *matrix_product(d3d9_tx *t, uint32_t c, const d3d9_src *vs, unsigned width) {
+/* dot(v, register j of M) for every register j of matrix constant c (element elem of an array)
+ * at once: mul(v, M) when the registers are M's columns, mul(M, v) when they are its rows; as
+ * float4. */
+static ir_expr *matrix_product(d3d9_tx *t, uint32_t c, unsigned elem, const d3d9_src *vs, unsigned width) {
     const d3d9_constant *k = &t->s->constants[c];
     const hfx_type *el = constant_type(t, k);
-    ir_var *mv = el ? constant_var(t, c, IRV_UNIFORM, el) : NULL;
+    bool array = k->elements > 1;
+    ir_var *mv = el ? constant_var(t, c, IRV_UNIFORM, array ? hfx_type_array(t->c->types, el, k->elements) : el) : NULL;
     ir_expr *v = mv ? hfx_d3d9_tx_read(t, vs) : NULL;
     if (!v) return NULL;
     if (width == 3) {
         static const uint8_t xyz[3] = {0, 1, 2};
         v = hfx_d3d9_tx_swizzle(t, v, xyz, 3);
     }
+    ir_expr *m = hfx_d3d9_tx_var(t, mv);
+    if (array) { /* matrix_constant keeps the registers inside the array */
+        ir_expr *ix = hfx_ir_new_expr(t->c, IE_INDEX, el, t->loc, 2);
+        ix->a[0] = m;
+        ix->a[1] = hfx_ir_const_scalar(t->c, t->i1, elem, t->loc);
+        ix->range = IR_RANGE_IN_BOUNDS;
+        m = ix;
+    }
     bool cols = k->cls == 3;
     ir_expr *e = hfx_ir_new_expr(t->c, IE_INTRIN, hfx_type_vector(t->c->types, B_FLOAT, cols ? el->cols : el->rows), t->loc, 2);
     e->intrin = HFX_INTR_MUL;
     e->a[cols ? 0 : 1] = v;
-    e->a[cols ? 1 : 0] = hfx_d3d9_tx_var(t, mv);
+    e->a[cols ? 1 : 0] = m;
     return hfx_d3d9_tx_float4(t, e);
 }
 
 ir_expr *hfx_d3d9_tx_matrix_mul(d3d9_tx *t, const d3d9_src *v, const d3d9_src *m, unsigned width, unsigned count) {
-    unsigned off;
-    int c = matrix_constant(t, m, count, width, &off);
-    return c >= 0 && off == 0 ? matrix_product(t, (uint32_t)c, v, width) : NULL;
+    unsigned off, elem;
+    int c = matrix_constant(t, m, count, width, &off, &elem);
+    return c >= 0 && off == 0 ? matrix_product(t, (uint32_t)c, elem, v, width) : NULL;
 }
 
-/* Whether `next` continues the run `first` starts, as its m-th instruction. */
-static bool run_continues(const d3d9_inst *first, const d3d9_inst *next, unsigned off, unsigned m) {
+/* The one component a write mask names, or -1. */
+static int one_component(unsigned mask) { return mask == 1 ? 0 : mask == 2 ? 1 : mask == 4 ? 2 : mask == 8 ? 3 : -1; }
+
+/* Whether `next` continues the run `first` starts, as its m-th instruction, writing a component
+ * the run has not (`written`). */
+static bool run_continues(const d3d9_inst *first, const d3d9_inst *next, unsigned m, unsigned written) {
     return next->op == first->op && !next->predicated && !next->coissue && next->dst.type == first->dst.type &&
            next->dst.num == first->dst.num && next->dst.mods == first->dst.mods && next->dst.shift == 0 &&
-           !next->dst.relative && next->dst.mask == 1u << (off + m) && same_src(&next->src[0], &first->src[0]) &&
-           next->src[1].type == D3D9_REG_CONST && next->src[1].num == first->src[1].num + m &&
-           !next->src[1].relative && next->src[1].mod == D3D9_SMOD_NONE && next->src[1].swizzle == 0xe4;
+           !next->dst.relative && one_component(next->dst.mask) >= 0 && !(next->dst.mask & written) &&
+           same_src(&next->src[0], &first->src[0]) && next->src[1].type == D3D9_REG_CONST &&
+           next->src[1].num == first->src[1].num + m && !next->src[1].relative &&
+           next->src[1].mod == D3D9_SMOD_NONE && next->src[1].swizzle == 0xe4;
 }
 
 /* fxc writes mul(v, M) as one dp4 (dp3) per register of M: `dp4 r0.x, v0, c0; dp4 r0.y, v0, c1;
- * ...`. The number of instructions from i that do so for one matrix parameter (component j from
- * its register j, v not the register written), if 2 or more, else 0; *c its CTAB constant. Read
- * back as one mul, the GLSL is the source's `M * v` instead of a gather of every register's
- * components, which drivers take several times longer to compile (bench/bench_fx2_load). */
-static unsigned matrix_run(const d3d9_tx *t, uint32_t i, uint32_t *c) {
+ * ...`. The number of instructions from i that do so for one matrix parameter (or one element of
+ * a matrix array: consecutive registers, each to a component of one register, v not the register
+ * written), if 2 or more, or 1 for a column-major matrix's register (a gather of one component of
+ * each row otherwise), else 0; *c its CTAB constant, *elem the element. Read back as one mul, the
+ * GLSL is the source's `M * v` instead of a gather of every register's components, which drivers
+ * take several times longer to compile (bench/bench_fx2_load). */
+static unsigned matrix_run(const d3d9_tx *t, uint32_t i, uint32_t *c, unsigned *elem) {
     const d3d9_inst *in = &t->s->insts[i];
     const d3d9_src *v = &in->src[0];
     if ((in->op != D3D9_DP4 && in->op != D3D9_DP3) || in->predicated || in->coissue || in->dst.shift ||
-        in->dst.relative || v->relative || (v->type == in->dst.type && v->num == in->dst.num))
+        in->dst.relative || v->relative || (v->type == in->dst.type && v->num == in->dst.num) ||
+        one_component(in->dst.mask) < 0)
         return 0;
-    unsigned width = in->op == D3D9_DP4 ? 4 : 3, off, n = 1;
-    if (matrix_constant(t, &in->src[1], 1, width, &off) < 0 || in->dst.mask != 1u << off) return 0;
-    while (off + n < 4 && i + n < t->s->inst_count && run_continues(in, &t->s->insts[i + n], off, n)) n++;
-    int k = n >= 2 ? matrix_constant(t, &in->src[1], n, width, &off) : -1;
+    unsigned width = in->op == D3D9_DP4 ? 4 : 3, off, n = 1, written = in->dst.mask;
+    int k = matrix_constant(t, &in->src[1], 1, width, &off, elem);
     if (k < 0) return 0;
+    while (off + n < 4 && i + n < t->s->inst_count && run_continues(in, &t->s->insts[i + n], n, written))
+        written |= t->s->insts[i + n++].dst.mask;
+    while (n >= 1 && (k = matrix_constant(t, &in->src[1], n, width, &off, elem)) < 0) n--;
+    if (n == 0 || (n == 1 && t->s->constants[k].cls != 3)) return 0;
     *c = (uint32_t)k;
     return n;
 }
 
-/* The n instructions matrix_run found: dst.(their components) = the product's. */
-static void translate_matrix_run(d3d9_tx *t, const d3d9_inst *in, uint32_t c, unsigned n) {
-    ir_expr *e = matrix_product(t, c, &in->src[0], in->op == D3D9_DP4 ? 4 : 3);
+/* The n instructions matrix_run found: each dst component = the product's component of its register. */
+static void translate_matrix_run(d3d9_tx *t, const d3d9_inst *in, uint32_t c, unsigned elem, unsigned n) {
+    ir_expr *e = matrix_product(t, c, elem, &in->src[0], in->op == D3D9_DP4 ? 4 : 3);
     if (!e) {
         if (!t->failed) hfx_d3d9_tx_fail(t, "%s could not be translated", hfx_d3d9_op_find(in->op)->name);
         return;
     }
+    const d3d9_constant *k = &t->s->constants[c];
+    unsigned first = (in->src[1].num - k->reg) % (k->cls == 3 ? k->cols : k->rows);
+    uint8_t comps[4] = {(uint8_t)first, (uint8_t)first, (uint8_t)first, (uint8_t)first};
     d3d9_dst d = in->dst;
-    d.mask = (uint8_t)(((1u << n) - 1) * in->dst.mask);
-    hfx_d3d9_tx_write(t, &d, e);
+    d.mask = 0;
+    for (unsigned m = 0; m < n; m++) {
+        unsigned mask = in[m].dst.mask;
+        comps[one_component(mask)] = (uint8_t)(first + m);
+        d.mask = (uint8_t)(d.mask | mask);
+    }
+    hfx_d3d9_tx_write(t, &d, hfx_d3d9_tx_swizzle(t, e, comps, 4));
 }
 
 struct ir_shader *hfx_d3d9_to_ir(struct ir_ctx *c, const d3d9_shader *s, bool packed) {
@@ -870,13 +1010,10 @@ struct ir_shader *hfx_d3d9_to_ir(struct ir_ctx *c, const d3d9_shader *s, bool pa
     for (uint32_t i = 0; i < s->inst_count && !t.failed; i++) {
         t.loc = (hfx_loc){s->file_index, 0, s->base + s->insts[i].offset};
         uint32_t k;
-        unsigned n = matrix_run(&t, i, &k);
-        if (n) {
-            translate_matrix_run(&t, &s->insts[i], k, n);
-            i += n - 1;
-        } else {
-            hfx_d3d9_tx_inst(&t, &s->insts[i]);
-        }
+        unsigned elem, n = matrix_run(&t, i, &k, &elem);
+        if (n) translate_matrix_run(&t, &s->insts[i], k, elem, n);
+        else if (!(n = hfx_d3d9_tx_scalar_run(&t, i))) hfx_d3d9_tx_inst(&t, &s->insts[i]);
+        if (n) i += n - 1;
     }
     if (t.failed) return NULL;
     if (t.depth != 1) { hfx_d3d9_tx_fail(&t, "flow control does not close"); return NULL; }

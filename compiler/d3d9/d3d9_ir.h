@@ -1,5 +1,5 @@
 /* d3d9_ir.h: the translator's shared state (d3d9_ir.c: registers and the interface;
- * d3d9_ir_ops.c: instructions). */
+ * d3d9_ir_ops.c: instructions; d3d9_ir_runs.c: scalar runs). */
 #ifndef HFX_D3D9_IR_H
 #define HFX_D3D9_IR_H
 
@@ -56,6 +56,11 @@ void hfx_d3d9_tx_emit(d3d9_tx *t, ir_expr *e);                        /* e as a 
 
 /* --- d3d9_ir_ops.c --- */
 void hfx_d3d9_tx_inst(d3d9_tx *t, const d3d9_inst *in);
+
+/* --- d3d9_ir_runs.c --- */
+/* A run of one scalar operation (exp, log, rcp, rsq) over components of one register from
+ * instruction i, translated as one vector operation: the instructions it took, 0 for none. */
+unsigned hfx_d3d9_tx_scalar_run(d3d9_tx *t, uint32_t i);
 
 /* --- d3d9_ir_flow.c --- */
 bool hfx_d3d9_tx_flow(d3d9_tx *t, const d3d9_inst *in);             /* if / else / loops / break: translated, true */

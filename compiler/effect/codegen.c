@@ -342,6 +342,7 @@ static int build_interface(hfx_codegen *cg, ir_shader *vs, ir_shader *ps, bool f
     io->attrs = assign_locations(a, &attrs);
     io->attr_count = attrs.count;
     const char *prof = vs && vs->compile && vs->compile->profile ? vs->compile->profile : "vs_3_0";
+    io->stages[0] = vs, io->stages[1] = ps;
     io->clamp_vs_colors = strncmp(prof, "vs_1", 4) == 0 || strncmp(prof, "vs_2", 4) == 0;
     io->clamp_ps1_texcoords = ps && ps->compile && hfx_glsl_ps1_clamps(ps->compile->profile);
     return 0;

@@ -22,6 +22,7 @@ typedef struct glsl_iface {
     /* Derived varyings (ir/lower/varyings.c): outputs the pixel entry computes itself; the
      * vertex stage does not write them, the pixel stage does not read them, neither declares them. */
     const char **derived; uint32_t derived_count;
+    const ir_shader *stages[2]; /* the program's vertex and pixel shaders (either NULL) */
     bool clamp_vs_colors;    /* vs_1_1 / vs_2_x COLOR outputs saturate as D3D9's oD0/oD1 */
     bool clamp_ps1_texcoords; /* ps_1_1..ps_1_3: TEXCOORD inputs read as values saturate (texcoord tN) */
     const hfx_fx_uniform_use *uniforms; uint32_t uniform_count; /* the program's, with their registers */

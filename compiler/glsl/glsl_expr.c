@@ -646,8 +646,17 @@ static void count_uses(ir_ctx *c, ir_expr **slot, void *data) {
     if (e && e->kind == IE_INDEX && e->a[0]->kind == IE_VAR && (k = padded_index(u->p, e->a[0]->var)) >= 0) u->uses[2 * k + 1]++;
 }
 
+/* The program's other stage declares the uniform too: GL links the two declarations only when
+ * they agree, so an array both stages read keeps its length (and its guarded reads). */
+static bool other_stage_reads(const gp *p, const ir_var *v) {
+    const ir_shader *other = p->io ? p->io->stages[p->stage == IR_VERTEX ? 1 : 0] : NULL;
+    for (uint32_t i = 0; other && i < other->global_count; i++)
+        if (other->globals[i]->kind == IRV_UNIFORM && strcmp(other->globals[i]->glsl, v->glsl) == 0) return true;
+    return false;
+}
+
 /* Only arrays read element by element: one passed whole to a function, or copied, keeps its
- * type (and its guarded reads). */
+ * type (and its guarded reads); so does one the other stage reads. */
 void hfx_glsl_find_padded(gp *p) {
     for (uint32_t i = 0; p->sh && i < p->sh->func_count; i++) hfx_ir_walk_stmt_exprs(p->c, p->sh->funcs[i]->body, note_padded, p);
     if (!p->padded_count) return;
@@ -659,7 +668,7 @@ void hfx_glsl_find_padded(gp *p) {
         if (p->sh->globals[i]->init) hfx_ir_walk_expr(p->c, &p->sh->globals[i]->init, count_uses, &u);
     uint32_t kept = 0;
     for (uint32_t k = 0; k < p->padded_count; k++)
-        if (u.uses[2 * k] == u.uses[2 * k + 1]) p->padded[kept++] = p->padded[k];
+        if (u.uses[2 * k] == u.uses[2 * k + 1] && !other_stage_reads(p, p->padded[k])) p->padded[kept++] = p->padded[k];
     p->padded_count = kept;
 }
 

@@ -67,6 +67,46 @@ static void reads_past_either_end_are_zero(void) {
     hfx_effect_destroy(fx);
 }
 
+/* Both stages read Colors, the vertex stage at an index it cannot bound: GL links a uniform only
+ * when both stages declare it alike, so neither pads it (the vertex stage keeps its guarded read;
+ * before, it declared Colors[4] against the pixel stage's Colors[3] and the link failed). The
+ * vertex colour is Colors[Index + p.z] (z = 0 on the quad), the pixel adds Colors[2] times the
+ * colour's green (a product with the varying, so Colors stays a pixel uniform, not a
+ * preshader): Index 1 gives green + blue (0, 255, 255); Index 5, past the end, zero (black). */
+static const char both_src[] =
+    "float4 Colors[3]; int Index;\n"
+    "float4 VS(float4 p : POSITION, out float4 c : COLOR0) : POSITION { c = Colors[Index + (int)p.z]; return p; }\n"
+    "float4 PS(float4 c : COLOR0) : COLOR { return c + Colors[2] * c.g + float4(0, 0, 0, 1); }\n"
+    "technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }\n";
+
+static void draw_both(hfx_effect *fx, int index, int r, int gr, int b) {
+    static const float quad[12] = {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1};
+    GLuint buffer, vao = tgl_triangles(&g, quad, 6, &buffer);
+    CHECK_INT(hfx_param_set_int(hfx_effect_param(fx, "Index"), index), HFX_OK);
+    g.ClearColor(1, 1, 1, 1);
+    g.Clear(GL_COLOR_BUFFER_BIT);
+    CHECK_INT(hfx_pass_apply(hfx_technique_pass(hfx_effect_technique(fx, "T"), 0)), HFX_OK);
+    g.DrawArrays(GL_TRIANGLES, 0, 6);
+    rt_check_pixel(gl, 2, 2, r, gr, b, 255);
+    CHECK_INT(g.GetError(), GL_NO_ERROR);
+    g.DeleteBuffers(1, &buffer);
+    g.DeleteVertexArrays(1, &vao);
+}
+
+static void an_array_both_stages_read_links(void) {
+    char *errors = NULL;
+    hfx_effect *fx = hfx_effect_load_memory(dev, both_src, sizeof both_src - 1, "both.fx", NULL, &errors);
+    if (!fx) printf("%s\n", errors ? errors : "");
+    hfx_free(errors);
+    CHECK(fx != NULL);
+    if (!fx) return;
+    static const float colors[12] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+    CHECK_INT(hfx_param_set_floats(hfx_effect_param(fx, "Colors"), colors, 12), HFX_OK);
+    draw_both(fx, 1, 0, 255, 255);
+    draw_both(fx, 5, 0, 0, 0);
+    hfx_effect_destroy(fx);
+}
+
 int main(void) {
     gl = test_gl_create(W, H);
     if (!gl) test_skip("no OSMesa context");
@@ -74,6 +114,7 @@ int main(void) {
     dev = hfx_device_create_gl(test_gl_loader);
     g.Viewport(0, 0, W, H);
     RUN(reads_past_either_end_are_zero);
+    RUN(an_array_both_stages_read_links);
     hfx_device_destroy(dev);
     test_gl_destroy(gl);
     return test_summary();

@@ -24,7 +24,7 @@ static test_gl_fns f;
 
 /* The effect whose parameters the CTABs name (its own passes are not used). */
 static const char params_fx[] =
-    "float4x4 M; float4 Tint; float Scale; float4 Colors[2]; float4 Offset; int Count;\n"
+    "float4x4 M; float4 Tint; float Scale; float4 Colors[2]; float4 Offset; int Count; float4x4 Mats[2];\n"
     "texture Tex; sampler TexSampler = sampler_state { Texture = <Tex>; MinFilter = Point; MagFilter = Point; };\n"
     "technique T { pass P { } }\n";
 
@@ -150,6 +150,9 @@ static void draw(const hfx_fx_program *p, const hfx_fx_effect *fx, unsigned char
     static const float m[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0.5f, 0, 0, 1};
     static const float tint[4] = {0.2f, 0.4f, 0.6f, 0.8f}, scale = 0.5f, offset[4] = {0.3f, 0.1f, 0.05f, 0.6f};
     static const float colors[8] = {0, 0, 0.9f, 0, 0, 0, 0.3f, 0};
+    /* Mats: the identity, then M's translation */
+    static const float mats[32] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1,
+                                   1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0.5f, 0, 0, 1};
     for (uint32_t i = 0; i < fx->top_param_count; i++) {
         const char *g = fx->params[i].glsl_name, *n = fx->params[i].name;
         if (!g) continue;
@@ -160,6 +163,7 @@ static void draw(const hfx_fx_program *p, const hfx_fx_effect *fx, unsigned char
         else if (strcmp(n, "Colors") == 0) set4(prog, g, colors, 2);
         else if (strcmp(n, "Scale") == 0 && loc >= 0) f.Uniform1fv(loc, 1, &scale);
         else if (strcmp(n, "Count") == 0 && loc >= 0) f.Uniform1i(loc, 2);
+        else if (strcmp(n, "Mats") == 0 && loc >= 0) f.UniformMatrix4fv(loc, 2, GL_FALSE, mats);
     }
     /* what the runtime's preshaders would put in their registers (pre_value) */
     for (uint32_t i = 0; i < p->preshader_count; i++) {
@@ -722,6 +726,180 @@ static void matrix_columns_drawn(void) {
     close_fixture(&x);
 }
 
+/* How many times needle occurs in text. */
+static int occurrences(const char *text, const char *needle) {
+    int n = 0;
+    for (const char *p = text; (p = strstr(p, needle)) != NULL; p++) n++;
+    return n;
+}
+
+/* fxc's dp4 runs over one element of a matrix array (CascadedShadowMask's ShadowMatrices[i]) are
+ * one product of that element too, whichever components they write: Mats (c0..c7, column-major)
+ * is the identity then M's translation; dp4 oPos.x..w, v0, c4..c7 is Mats[1] * v0;
+ * dp4 r1.y/z/w, r0, c0/c1/c2 (three of Mats[0]'s registers) is (Mats[0] * r0).xyz; a lone
+ * dp4 r1.x, r0, c4 is (Mats[1] * r0).x. */
+static size_t array_matrix_vs_tokens(uint32_t *w) {
+    static const ctab_const k[] = {{"Mats", 2, 0, 8, 3, 3, 4, 4, 2}, {"Tint", 2, 8, 1, 1, 3, 1, 4, 1}};
+    size_t n = 0;
+    w[n++] = VS(2, 0);
+    n += put_ctab(w + n, "hand", k, 2);
+    const uint32_t code[] = {
+        OP(0x1f, 2), 0x80000000u, DST(R_INPUT, 0, 0xf),
+        OP(0x01, 2), DST(R_TEMP, 0, 0xf), SRC(R_CONST, 8, XYZW),
+        OP(0x09, 3), DST(R_RASTOUT, 0, 0x1), SRC(R_INPUT, 0, XYZW), SRC(R_CONST, 4, XYZW),
+        OP(0x09, 3), DST(R_RASTOUT, 0, 0x2), SRC(R_INPUT, 0, XYZW), SRC(R_CONST, 5, XYZW),
+        OP(0x09, 3), DST(R_RASTOUT, 0, 0x4), SRC(R_INPUT, 0, XYZW), SRC(R_CONST, 6, XYZW),
+        OP(0x09, 3), DST(R_RASTOUT, 0, 0x8), SRC(R_INPUT, 0, XYZW), SRC(R_CONST, 7, XYZW),
+        OP(0x09, 3), DST(R_TEMP, 1, 0x2), SRC(R_TEMP, 0, XYZW), SRC(R_CONST, 0, XYZW),
+        OP(0x09, 3), DST(R_TEMP, 1, 0x4), SRC(R_TEMP, 0, XYZW), SRC(R_CONST, 1, XYZW),
+        OP(0x09, 3), DST(R_TEMP, 1, 0x8), SRC(R_TEMP, 0, XYZW), SRC(R_CONST, 2, XYZW),
+        OP(0x09, 3), DST(R_TEMP, 1, 0x1), SRC(R_TEMP, 0, XYZW), SRC(R_CONST, 4, XYZW),
+        OP(0x01, 2), DST(R_ATTROUT, 0, 0xf), SRC(R_TEMP, 1, XYZW),
+        END_TOKEN};
+    memcpy(w + n, code, sizeof code);
+    return n + sizeof code / 4;
+}
+
+static void array_matrix_rows_drawn(void) {
+    fixture x;
+    open_fixture(&x, false);
+    static const uint32_t ps[] = {PS(2, 0), OP(0x1f, 2), 0x80000000u, DST(R_INPUT, 0, 0xf),
+                                  OP(0x01, 2), DST(R_COLOROUT, 0, 0xf), SRC(R_INPUT, 0, XYZW), END_TOKEN};
+    uint32_t vw[256];
+    hfx_fx_program prog;
+    int rc = hfx_codegen_d3d9_program(x.cg, decode(&x, vw, array_matrix_vs_tokens(vw), 0),
+                                      decode(&x, ps, sizeof ps / 4, 1024), false, &prog);
+    CHECK_INT(rc, 0);
+    if (rc == 0) {
+        const char *vs = prog.code[0][HFX_TARGET_GLSL330].data;
+        CHECK(strstr(vs, "hfx_out_POSITION0 = Mats[1] * hfx_in_POSITION0;") != NULL);
+        CHECK(strstr(vs, "Mats[0] * hfx_r0") != NULL);
+        CHECK(strstr(vs, "Mats[1] * hfx_r0") != NULL);
+        CHECK(occurrences(vs, "dot(") == 0);
+        if (gl) {
+            unsigned char left[4], right[4];
+            draw(&prog, x.fx, left, right);
+            near(left, 0, 0, 0, 0); /* Mats[1] moved the quad right by 0.5 */
+            /* r1.yzw = the identity's product with Tint (0.2, 0.4, 0.6, 0.8): (0.2, 0.4, 0.6);
+             * r1.x = Mats[1]'s register 0 (its column (1, 0, 0, 0.5)) . Tint = 0.2 + 0.4 */
+            near(right, 0.6f, 0.2f, 0.4f, 0.6f);
+        }
+        hfx_fx_program_clear(&prog);
+    }
+    close_fixture(&x);
+}
+
+/* fxc's one-component exp / log / rcp / rsq over a register's components are one vector
+ * operation; a pair where the second reads what the first wrote stays two. def c1 = (4, 2, 1,
+ * 0.25):
+ *   rcp r0.x, c1.x; rcp r0.y, c1.y; rcp r0.z, c1.z; rcp r0.w, c1.x   r0 = (0.25, 0.5, 1, 0.25)
+ *   mov r1, c1; rsq r1.w, r1.x (0.5); rsq r1.z, r1.w (rsq 0.5 = 1.41421; together: rsq 0.25 = 2)
+ *   mul r1.z, r1.z, c1.w                                              r1.z = 0.353553 (not 0.5)
+ *   log r2.x, c1.y; log r2.y, c1.x                                    r2.xy = (1, 2)
+ *   exp r3.x, -r2.x; exp r3.y, -r2.y                                  r3.xy = (0.5, 0.25)
+ *   mul r4.x, r0.y, r0.w; mov r4.y, r1.z; mov r4.z, r3.x; mov r4.w, r3.y; mov oC0, r4
+ * The pixel: (0.125, 0.353553, 0.5, 0.25). */
+static size_t scalar_runs_ps_tokens(uint32_t *w) {
+    enum { NEG = 1 };
+    static const uint32_t code[] = {
+        PS(2, 0),
+        OP(0x51, 5), DST(R_CONST, 1, 0xf), 0x40800000u /* 4 */, 0x40000000u /* 2 */, 0x3f800000u /* 1 */,
+        0x3e800000u /* 0.25 */,
+        OP(0x06, 2), DST(R_TEMP, 0, 0x1), SRC(R_CONST, 1, 0x00),
+        OP(0x06, 2), DST(R_TEMP, 0, 0x2), SRC(R_CONST, 1, 0x55),
+        OP(0x06, 2), DST(R_TEMP, 0, 0x4), SRC(R_CONST, 1, 0xaa),
+        OP(0x06, 2), DST(R_TEMP, 0, 0x8), SRC(R_CONST, 1, 0x00),
+        OP(0x01, 2), DST(R_TEMP, 1, 0xf), SRC(R_CONST, 1, XYZW),
+        OP(0x07, 2), DST(R_TEMP, 1, 0x8), SRC(R_TEMP, 1, 0x00),
+        OP(0x07, 2), DST(R_TEMP, 1, 0x4), SRC(R_TEMP, 1, 0xff),
+        OP(0x05, 3), DST(R_TEMP, 1, 0x4), SRC(R_TEMP, 1, 0xaa), SRC(R_CONST, 1, 0xff),
+        OP(0x0f, 2), DST(R_TEMP, 2, 0x1), SRC(R_CONST, 1, 0x55),
+        OP(0x0f, 2), DST(R_TEMP, 2, 0x2), SRC(R_CONST, 1, 0x00),
+        OP(0x0e, 2), DST(R_TEMP, 3, 0x1), SRCM(R_TEMP, 2, 0x00, NEG),
+        OP(0x0e, 2), DST(R_TEMP, 3, 0x2), SRCM(R_TEMP, 2, 0x55, NEG),
+        OP(0x05, 3), DST(R_TEMP, 4, 0x1), SRC(R_TEMP, 0, 0x55), SRC(R_TEMP, 0, 0xff),
+        OP(0x01, 2), DST(R_TEMP, 4, 0x2), SRC(R_TEMP, 1, 0xaa),
+        OP(0x01, 2), DST(R_TEMP, 4, 0x4), SRC(R_TEMP, 3, 0x00),
+        OP(0x01, 2), DST(R_TEMP, 4, 0x8), SRC(R_TEMP, 3, 0x55),
+        OP(0x01, 2), DST(R_COLOROUT, 0, 0xf), SRC(R_TEMP, 4, XYZW),
+        END_TOKEN};
+    memcpy(w, code, sizeof code);
+    return sizeof code / 4;
+}
+
+static void scalar_runs_drawn(void) {
+    fixture x;
+    open_fixture(&x, false);
+    uint32_t vw[256], pw[256];
+    hfx_fx_program prog;
+    int rc = hfx_codegen_d3d9_program(x.cg, decode(&x, vw, vs_tokens(vw), 0),
+                                      decode(&x, pw, scalar_runs_ps_tokens(pw), 1024), false, &prog);
+    CHECK_INT(rc, 0);
+    if (rc == 0) {
+        const char *ps = prog.code[1][HFX_TARGET_GLSL330].data;
+        CHECK_INT(occurrences(ps, "exp2("), 1);
+        CHECK_INT(occurrences(ps, "log2("), 1);
+        CHECK_INT(occurrences(ps, "inversesqrt("), 2);
+        /* a scalar result written to one component is written as it is, not splat and picked */
+        CHECK(strstr(ps, "hfx_r1.w = min(inversesqrt(") != NULL);
+        /* a write mask narrows the operation: mul r4.x, r0.y, r0.w multiplies one component */
+        CHECK(strstr(ps, "hfx_r4.x = hfx_r0.y * hfx_r0.w;") != NULL);
+        CHECK(strstr(ps, "hfx_r1.z = hfx_r1.z * 0.25;") != NULL);
+        if (gl) {
+            unsigned char left[4], right[4];
+            draw(&prog, x.fx, left, right);
+            near(right, 0.125f, 0.353553f, 0.5f, 0.25f);
+        }
+        hfx_fx_program_clear(&prog);
+    }
+    close_fixture(&x);
+}
+
+/* _sat takes NaN to 0, as D3D10 and later hardware saturates (GLSL's clamp leaves it undefined;
+ * llvmpipe's happens to give 0 too, so the GLSL is checked for the explicit test as well):
+ * Colors[0].x (c2.x) is 0, so rcp r0.x, c2.x = +inf and mul r0.x, r0.x, c2.x = NaN, at run time.
+ *   def c0, 0, 2, -1, 0.5; def c1, 1, 0.25, 0, 0
+ *   mov r2, c0; mov r2.x, r0.x; mov_sat r3, r2        r3 = (0, 1, 0, 0.5) (NaN kept: r3.x NaN)
+ *   cmp r3.x, -r3.x, c1.x, c1.y                        -0 >= 0: 1 (NaN >= 0 is false: 0.25)
+ *   mov oC0, r3                                        the pixel: (1, 1, 0, 0.5) */
+static void saturate_nan_drawn(void) {
+    static const ctab_const k[] = {{"Colors", 2, 2, 2, 1, 3, 1, 4, 2}};
+    enum { SAT = 1, NEG = 1 };
+    uint32_t pw[256];
+    size_t n = 0;
+    pw[n++] = PS(2, 0);
+    n += put_ctab(pw + n, "hand", k, 1);
+    const uint32_t code[] = {
+        OP(0x51, 5), DST(R_CONST, 0, 0xf), 0, 0x40000000u /* 2 */, 0xbf800000u /* -1 */, 0x3f000000u /* 0.5 */,
+        OP(0x51, 5), DST(R_CONST, 1, 0xf), 0x3f800000u /* 1 */, 0x3e800000u /* 0.25 */, 0, 0,
+        OP(0x06, 2), DST(R_TEMP, 0, 0x1), SRC(R_CONST, 2, 0x00),
+        OP(0x05, 3), DST(R_TEMP, 0, 0x1), SRC(R_TEMP, 0, 0x00), SRC(R_CONST, 2, 0x00),
+        OP(0x01, 2), DST(R_TEMP, 2, 0xf), SRC(R_CONST, 0, XYZW),
+        OP(0x01, 2), DST(R_TEMP, 2, 0x1), SRC(R_TEMP, 0, 0x00),
+        OP(0x01, 2), DSTM(R_TEMP, 3, 0xf, SAT), SRC(R_TEMP, 2, XYZW),
+        OP(0x58, 4), DST(R_TEMP, 3, 0x1), SRCM(R_TEMP, 3, 0x00, NEG), SRC(R_CONST, 1, 0x00), SRC(R_CONST, 1, 0x55),
+        OP(0x01, 2), DST(R_COLOROUT, 0, 0xf), SRC(R_TEMP, 3, XYZW),
+        END_TOKEN};
+    memcpy(pw + n, code, sizeof code);
+    n += sizeof code / 4;
+    fixture x;
+    open_fixture(&x, false);
+    uint32_t vw[256];
+    hfx_fx_program prog;
+    int rc = hfx_codegen_d3d9_program(x.cg, decode(&x, vw, columns_vs_tokens(vw), 0), decode(&x, pw, n, 1024), false, &prog);
+    CHECK_INT(rc, 0);
+    if (rc == 0) {
+        CHECK(strstr(prog.code[1][HFX_TARGET_GLSL330].data, "hfx_r3 = mix(clamp(hfx_r3, 0.0, 1.0), vec4(0.0), isnan(hfx_r3));") != NULL);
+        if (gl) {
+            unsigned char left[4], right[4];
+            draw(&prog, x.fx, left, right);
+            near(right, 1, 1, 0, 0.5f);
+        }
+        hfx_fx_program_clear(&prog);
+    }
+    close_fixture(&x);
+}
+
 int main(void) {
     gl = test_gl_create(W, H);
     if (gl) CHECK_INT(test_gl_fns_load(&f), 0);
@@ -739,6 +917,9 @@ int main(void) {
     RUN(parameter_bound_loops_drawn);
     RUN(semantic_matrices_and_indexes_drawn);
     RUN(matrix_columns_drawn);
+    RUN(array_matrix_rows_drawn);
+    RUN(scalar_runs_drawn);
+    RUN(saturate_nan_drawn);
     if (gl) test_gl_destroy(gl);
     return test_summary();
 }
