@@ -220,7 +220,11 @@ void hfx_bc_dead_code(bc_gen *g) {
     g->inst_count = k;
 }
 
-/* Parameters and def registers the remaining code never reads leave the table. */
+/* Parameters and def registers the remaining code never reads leave the table, and a parameter's
+ * entry ends at the last register the code reads, as fxc's tables do: FNA's stock effects place
+ * WorldInverseTranspose at c19, inside a float4x4 World at c16 whose fourth register no shader
+ * reads; a table claiming c16..c19 for World would have the loader upload World's fourth row
+ * over it (and a reader looking c19 up would find World). */
 void hfx_bc_prune_constants(bc_gen *g) {
     bool read[BC_MAX_CONSTS] = {false}, relative = false;
     for (uint32_t i = 0; i < g->inst_count; i++)
@@ -233,10 +237,19 @@ void hfx_bc_prune_constants(bc_gen *g) {
     if (relative) return; /* c[a0.x + n] may read any of them */
     uint32_t k = 0;
     for (uint32_t i = 0; i < g->ctab_count; i++) {
-        const bc_ctab *c = &g->ctab[i];
-        bool used = c->set != D3D9_RS_FLOAT4;
-        for (unsigned r = c->reg; r < (unsigned)c->reg + c->count && r < BC_MAX_CONSTS && !used; r++) used = read[r];
-        if (used) g->ctab[k++] = *c;
+        bc_ctab c = g->ctab[i];
+        if (c.set != D3D9_RS_FLOAT4) { g->ctab[k++] = c; continue; }
+        unsigned last = 0;
+        bool used = false;
+        for (unsigned r = c.reg; r < (unsigned)c.reg + c.count && r < BC_MAX_CONSTS; r++)
+            if (read[r]) used = true, last = r;
+        if (!used) continue;
+        c.count = (uint16_t)(last - c.reg + 1);
+        for (uint32_t j = 0; j < g->ctab_count; j++) { /* another parameter's registers start inside */
+            const bc_ctab *o = &g->ctab[j];
+            if (o->set == D3D9_RS_FLOAT4 && o->reg > c.reg && o->reg < c.reg + c.count) c.count = (uint16_t)(o->reg - c.reg);
+        }
+        g->ctab[k++] = c;
     }
     g->ctab_count = k;
     k = 0;

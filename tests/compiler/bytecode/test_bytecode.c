@@ -338,6 +338,32 @@ static void ps_2_0_counter_after_loop(void) {
             "\n// approximately 3 instruction slots used (0 texture, 3 arithmetic)\n");
 }
 
+/* Registers given by hand may overlap, as FNA's stock effects place WorldInverseTranspose at c19
+ * inside a float4x4 World at c16: each table entry ends at the last register its own code
+ * reads (World's columns 0..2 for a position's xyz: c0..c2, Size 3), never inside the next
+ * parameter's, or a loader would upload World's fourth column over WIT's first row. */
+static void vs_2_0_overlapping_registers(void) {
+    listing("float4x4 World : register(c0);\nfloat3x3 WIT : register(c3);\n"
+            "void main(float4 p : POSITION, float3 n : NORMAL, out float4 oPos : POSITION, out float3 oN : TEXCOORD0) {\n"
+            "    oPos = float4(mul(p, World).xyz, 1);\n    oN = mul(n, WIT);\n}\n",
+            "vs_2_0",
+            "//   float3x3 WIT;\n//   float4x4 World;\n//\n//\n// Registers:\n//\n"
+            "//   Name         Reg   Size\n//   ------------ ----- ----\n"
+            "//   World        c0       3\n//   WIT          c3       3\n//\n\n",
+            "    vs_2_0\n"
+            "    def c6, 1, 0, 0, 0\n"
+            "    dcl_position v0\n"
+            "    dcl_normal v1\n"
+            "    dp4 oPos.x, v0, c0\n"
+            "    dp4 oPos.y, v0, c1\n"
+            "    dp4 oPos.z, v0, c2\n"
+            "    mov oPos.w, c6.x\n"
+            "    dp3 oT0.x, v1, c3\n"
+            "    dp3 oT0.y, v1, c4\n"
+            "    dp3 oT0.z, v1, c5\n"
+            "\n// approximately 7 instruction slots used\n");
+}
+
 static void refused(const char *src, const char *profile, const char *message) {
     bool ok;
     char *text = bc_listing(src, profile, &ok);
@@ -427,5 +453,6 @@ int main(void) {
     RUN(ps_2_0_tex1d);
     RUN(ps_2_0_sampler_array);
     RUN(ps_2_0_counter_after_loop);
+    RUN(vs_2_0_overlapping_registers);
     return test_summary();
 }
