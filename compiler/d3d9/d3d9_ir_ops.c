@@ -101,8 +101,8 @@ static ir_expr *ps14_coords(d3d9_tx *t, const d3d9_src *x) {
 
 /* ps_1_x: tex tN (1.1-1.3: sampler N at texture coordinates N), texld rN, src (1.4: sampler N). */
 static ir_expr *ps1_tex(d3d9_tx *t, const d3d9_inst *in) {
-    ir_expr *uv = t->s->model < D3D9_SM(1, 4) ? hfx_d3d9_tx_float4(t, hfx_d3d9_tx_var(t, hfx_d3d9_tx_texcoord(t, in->dst.num)))
-                                               : ps14_coords(t, &in->src[0]);
+    ir_var *tc = t->s->model < D3D9_SM(1, 4) ? hfx_d3d9_tx_texcoord(t, in->dst.num) : NULL;
+    ir_expr *uv = t->s->model >= D3D9_SM(1, 4) ? ps14_coords(t, &in->src[0]) : tc ? hfx_d3d9_tx_float4(t, hfx_d3d9_tx_var(t, tc)) : NULL;
     if (!uv) { hfx_d3d9_tx_fail(t, "texture coordinates of this form are not supported"); return NULL; }
     return sample(t, hfx_d3d9_tx_sampler(t, in->dst.num), uv);
 }
@@ -110,7 +110,9 @@ static ir_expr *ps1_tex(d3d9_tx *t, const d3d9_inst *in) {
 /* texcoord tN (1.1-1.3): the coordinates clamped to [0, 1], w = 1; texcrd rN, tM (1.4): as they are. */
 static ir_expr *ps1_texcoord(d3d9_tx *t, const d3d9_inst *in) {
     if (t->s->model == D3D9_SM(1, 4)) return ps14_coords(t, &in->src[0]);
-    ir_expr *c = hfx_d3d9_tx_var(t, hfx_d3d9_tx_texcoord(t, in->dst.num));
+    ir_var *tc = hfx_d3d9_tx_texcoord(t, in->dst.num); /* NULL past the model's t registers (input's error given) */
+    if (!tc) { hfx_d3d9_tx_fail(t, "t%u is no texture coordinate register of this model", in->dst.num); return NULL; }
+    ir_expr *c = hfx_d3d9_tx_var(t, tc);
     ir_expr *e = hfx_ir_new_expr(t->c, IE_CONSTRUCT, t->f4, t->loc, 2);
     e->a[0] = intrin(t, HFX_INTR_SATURATE, t->f3, 1, comps(t, c, 0, 3), NULL, NULL);
     e->a[1] = hfx_ir_const_scalar(t->c, t->f1, 1, t->loc);

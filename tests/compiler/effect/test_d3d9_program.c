@@ -621,6 +621,24 @@ static void unreadable_source_refused(void) {
     close_fixture(&x);
 }
 
+/* ps_1_1's `texcoord tN` past the model's t registers (fuzz_d3d9 in CI: the texcoord read a
+ * register the translator has no variable for and crossed a null one): refused with an error. */
+static void texcoord_past_the_registers_refused(void) {
+    fixture x;
+    open_fixture(&x, true);
+    static const uint32_t ps[] = {0xffff0101u, 0x00000040u, 0x88e4001cu, 0x40000001u, 0xb00f0000u, 0xb2ff0000u, END_TOKEN};
+    d3d9_shader *s = decode(&x, ps, sizeof ps / 4, 300);
+    CHECK(s != NULL);
+    hfx_fx_program prog;
+    memset(&prog, 0, sizeof prog);
+    if (s) CHECK_INT(hfx_codegen_d3d9_program(x.cg, NULL, s, false, &prog), -1);
+    char *text = hfx_diags_format(&x.diags, 0);
+    CHECK_STR(text, "t.fxb(0,304): error X5006: t28 is no texture coordinate register of this model\n");
+    free(text);
+    hfx_fx_program_clear(&prog);
+    close_fixture(&x);
+}
+
 /* fxc's ob# / oi# preshader outputs (d3d9_preshader_out.file B and I) drive `if b0` and
  * `rep i3`: the b register is the preshader's x != 0, the i register its components truncated.
  *     def c0, 0.25, 0.5, 0.75, 1;  def c1, 0.125, 0, 0, 0
@@ -912,6 +930,7 @@ int main(void) {
     RUN(vs_ps_3_0_flow_drawn);
     RUN(subroutines_refused_at_instruction);
     RUN(unreadable_source_refused);
+    RUN(texcoord_past_the_registers_refused);
     RUN(preshader_registers);
     RUN(preshader_bool_and_int_registers);
     RUN(parameter_bound_loops_drawn);
