@@ -208,6 +208,7 @@ static const ctab_entry *input_of(vm *m, uint32_t reg, uint32_t k, uint32_t *wor
         uint32_t rel = reg - c->reg;
         /* a matrix takes one register per column (column_major) or row; anything else one per element */
         uint32_t per = c->klass == PC_MATRIX_COLUMNS ? c->cols : c->klass == PC_MATRIX_ROWS ? c->rows : 1;
+        if (!per) return NULL; /* a table claiming a matrix of 0 columns or rows: nothing to read */
         uint32_t e = rel / per, j = rel % per, size = c->rows * c->cols;
         if (c->klass == PC_MATRIX_COLUMNS) *word = e * size + k * c->cols + j;
         else if (c->klass == PC_MATRIX_ROWS) *word = e * size + j * c->cols + k;
