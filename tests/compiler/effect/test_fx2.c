@@ -547,6 +547,37 @@ static void fxlvm_temporaries_and_outputs(void) {
     hfx_arena_free(&arena);
 }
 
+/* A table entry claiming a matrix of 0 columns (a spoiled file; fuzz_fx2 in CI divided by the
+ * column count): it reads nothing, as a register outside every parameter does. The program is
+ * mov oc0.x, c0.x with A's type record patched to class matrix-columns (3) and 0 columns: the
+ * output is 0 whatever A is. The record is the CTAB's first type, 52 bytes in (header 28, one
+ * entry 20, the name "A" 4), the CTAB 12 bytes after the program's start. */
+static void fxlvm_matrix_of_no_columns(void) {
+    hfx_arena arena;
+    hfx_diags diags;
+    fx2_reader r;
+    open_reader(&r, &arena, &diags);
+    fxb b = {0};
+    const fxb_input in[] = {{"A", 0, 1, FXB_FLOAT, 1, 1}};
+    const uint32_t code[] = {0x10000001u, 1, 0, 2, 0, 0, 4, 0};
+    uint32_t at = fxb_fxlvm(&b, in, 1, NULL, 0, 1, code, sizeof code / sizeof *code);
+    const uint16_t klass = 3, cols = 0;
+    memcpy(b.d + at + 12 + 52, &klass, 2);
+    memcpy(b.d + at + 12 + 52 + 6, &cols, 2);
+    fx2_blob blob = {b.d, b.n, 0};
+    uint32_t first = 0, words = 0;
+    CHECK(hfx_fxlvm_translate(&r, &blob, 1, HFX_EV_FLOAT, &first, &words));
+    float a = 2.5f;
+    uint32_t values[2] = {0, 0};
+    memcpy(values, &a, 4);
+    hfx_ev_value out;
+    CHECK(hfx_evc_run(r.fx->exprs + first, words, values, &out));
+    CHECK_NEAR(out.c[0], 0, 0);
+    free(b.d);
+    hfx_fx_effect_free(r.fx);
+    hfx_arena_free(&arena);
+}
+
 int main(void) {
     RUN(parameters_reflect_the_file);
     RUN(passes_and_states);
@@ -557,5 +588,6 @@ int main(void) {
     RUN(listing_of_the_test_effect);
     RUN(fxlvm_temporaries_and_outputs);
     RUN(fxlvm_bool_and_int_outputs);
+    RUN(fxlvm_matrix_of_no_columns);
     return test_summary();
 }
