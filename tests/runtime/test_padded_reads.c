@@ -25,10 +25,11 @@ static const char src[] =
     "float4 PS(float2 pos : VPOS) : COLOR { return Colors[Index + (int)pos.x] + float4(0, 0, 0, 1); }\n"
     "technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }\n";
 
-static void check_index(hfx_effect *fx, int index, int r, int gr, int b) {
+/* Index set, the quad drawn with technique T, pixel (2, 2) probed. */
+static void draw_with_index(hfx_effect *fx, int index, int r, int gr, int b) {
     static const float quad[12] = {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1};
     GLuint buffer, vao = tgl_triangles(&g, quad, 6, &buffer);
-    CHECK_INT(hfx_param_set_int(hfx_effect_param(fx, "Index"), index - 2), HFX_OK); /* probed in column 2 */
+    CHECK_INT(hfx_param_set_int(hfx_effect_param(fx, "Index"), index), HFX_OK);
     g.ClearColor(1, 1, 1, 1);
     g.Clear(GL_COLOR_BUFFER_BIT);
     CHECK_INT(hfx_pass_apply(hfx_technique_pass(hfx_effect_technique(fx, "T"), 0)), HFX_OK);
@@ -38,6 +39,9 @@ static void check_index(hfx_effect *fx, int index, int r, int gr, int b) {
     g.DeleteBuffers(1, &buffer);
     g.DeleteVertexArrays(1, &vao);
 }
+
+/* The element read at `index` in column 2 (the shader adds the column to Index). */
+static void check_index(hfx_effect *fx, int index, int r, int gr, int b) { draw_with_index(fx, index - 2, r, gr, b); }
 
 /* 0..2: the colours; 3, 100, -1, INT_MIN + 3 (Index INT_MIN + 1): black (the padding's zero, and a negative index is a
  * large uint). The program has Colors[3], and it holds zero after the uploads of Colors. */
@@ -79,20 +83,6 @@ static const char both_src[] =
     "float4 PS(float4 c : COLOR0) : COLOR { return c + Colors[2] * c.g + float4(0, 0, 0, 1); }\n"
     "technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }\n";
 
-static void draw_both(hfx_effect *fx, int index, int r, int gr, int b) {
-    static const float quad[12] = {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1};
-    GLuint buffer, vao = tgl_triangles(&g, quad, 6, &buffer);
-    CHECK_INT(hfx_param_set_int(hfx_effect_param(fx, "Index"), index), HFX_OK);
-    g.ClearColor(1, 1, 1, 1);
-    g.Clear(GL_COLOR_BUFFER_BIT);
-    CHECK_INT(hfx_pass_apply(hfx_technique_pass(hfx_effect_technique(fx, "T"), 0)), HFX_OK);
-    g.DrawArrays(GL_TRIANGLES, 0, 6);
-    rt_check_pixel(gl, 2, 2, r, gr, b, 255);
-    CHECK_INT(g.GetError(), GL_NO_ERROR);
-    g.DeleteBuffers(1, &buffer);
-    g.DeleteVertexArrays(1, &vao);
-}
-
 static void an_array_both_stages_read_links(void) {
     char *errors = NULL;
     hfx_effect *fx = hfx_effect_load_memory(dev, both_src, sizeof both_src - 1, "both.fx", NULL, &errors);
@@ -102,8 +92,8 @@ static void an_array_both_stages_read_links(void) {
     if (!fx) return;
     static const float colors[12] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
     CHECK_INT(hfx_param_set_floats(hfx_effect_param(fx, "Colors"), colors, 12), HFX_OK);
-    draw_both(fx, 1, 0, 255, 255);
-    draw_both(fx, 5, 0, 0, 0);
+    draw_with_index(fx, 1, 0, 255, 255);
+    draw_with_index(fx, 5, 0, 0, 0);
     hfx_effect_destroy(fx);
 }
 
