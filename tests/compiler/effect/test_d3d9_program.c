@@ -538,6 +538,15 @@ static void ps_1_4_drawn(void) {
     close_fixture(&x);
 }
 
+/* The program of a vertex shader's n tokens and a ps_2_0 passing its COLOR0 (v0) on; rc as
+ * hfx_codegen_d3d9_program, -1 when either does not decode. */
+static int with_colour_ps(fixture *x, const uint32_t *vw, size_t n, hfx_fx_program *prog) {
+    static const uint32_t ps[] = {PS(2, 0), OP(0x1f, 2), 0x80000000u, DST(R_INPUT, 0, 0xf),
+                                  OP(0x01, 2), DST(R_COLOROUT, 0, 0xf), SRC(R_INPUT, 0, XYZW), END_TOKEN};
+    d3d9_shader *v = decode(x, vw, n, 0), *p = decode(x, ps, sizeof ps / 4, 1024);
+    return v && p ? hfx_codegen_d3d9_program(x->cg, v, p, false, prog) : -1;
+}
+
 /* vs_1_1 (no length fields; relative sources carry no address token): mov a0.x, c8.x rounds 0.6 to
  * 1 (the reference's "rounding to nearest"; truncation would give 0); mov oD0, c6[a0.x] is
  * Colors[1] = (0, 0, 0.3, 0), which ps_2_0's mov oC0, v0 shows. */
@@ -558,11 +567,8 @@ static void vs_1_1_drawn(void) {
         END_TOKEN};
     memcpy(vw + n, code, sizeof code);
     n += sizeof code / 4;
-    static const uint32_t ps[] = {PS(2, 0), OP(0x1f, 2), 0x80000000u, DST(R_INPUT, 0, 0xf),
-                                  OP(0x01, 2), DST(R_COLOROUT, 0, 0xf), SRC(R_INPUT, 0, XYZW), END_TOKEN};
-    d3d9_shader *v = decode(&x, vw, n, 0), *p = decode(&x, ps, sizeof ps / 4, 1024);
     hfx_fx_program prog;
-    int rc = v && p ? hfx_codegen_d3d9_program(x.cg, v, p, false, &prog) : -1;
+    int rc = with_colour_ps(&x, vw, n, &prog);
     CHECK_INT(rc, 0);
     if (rc == 0 && gl) {
         unsigned char left[4], right[4];
@@ -718,12 +724,9 @@ static size_t columns_vs_tokens(uint32_t *w) {
 static void matrix_columns_drawn(void) {
     fixture x;
     open_fixture(&x, false);
-    static const uint32_t ps[] = {PS(2, 0), OP(0x1f, 2), 0x80000000u, DST(R_INPUT, 0, 0xf),
-                                  OP(0x01, 2), DST(R_COLOROUT, 0, 0xf), SRC(R_INPUT, 0, XYZW), END_TOKEN};
     uint32_t vw[256];
     hfx_fx_program prog;
-    int rc = hfx_codegen_d3d9_program(x.cg, decode(&x, vw, columns_vs_tokens(vw), 0),
-                                      decode(&x, ps, sizeof ps / 4, 1024), false, &prog);
+    int rc = with_colour_ps(&x, vw, columns_vs_tokens(vw), &prog);
     CHECK_INT(rc, 0);
     if (rc == 0) {
         const char *vs = prog.code[0][HFX_TARGET_GLSL330].data;
@@ -781,12 +784,9 @@ static size_t array_matrix_vs_tokens(uint32_t *w) {
 static void array_matrix_rows_drawn(void) {
     fixture x;
     open_fixture(&x, false);
-    static const uint32_t ps[] = {PS(2, 0), OP(0x1f, 2), 0x80000000u, DST(R_INPUT, 0, 0xf),
-                                  OP(0x01, 2), DST(R_COLOROUT, 0, 0xf), SRC(R_INPUT, 0, XYZW), END_TOKEN};
     uint32_t vw[256];
     hfx_fx_program prog;
-    int rc = hfx_codegen_d3d9_program(x.cg, decode(&x, vw, array_matrix_vs_tokens(vw), 0),
-                                      decode(&x, ps, sizeof ps / 4, 1024), false, &prog);
+    int rc = with_colour_ps(&x, vw, array_matrix_vs_tokens(vw), &prog);
     CHECK_INT(rc, 0);
     if (rc == 0) {
         const char *vs = prog.code[0][HFX_TARGET_GLSL330].data;
